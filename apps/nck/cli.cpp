@@ -1,0 +1,4 @@
+#include "nck/cli.hpp"
+namespace nck::app {
+int main_cli(int, char**) { return 0; }
+}  // namespace nck::app

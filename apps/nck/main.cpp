@@ -1,0 +1,3 @@
+#include "nck/cli.hpp"
+
+int main(int argc, char** argv) { return nck::app::main_cli(argc, argv); }

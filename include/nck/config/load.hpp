@@ -1,0 +1,20 @@
+#pragma once
+#include <filesystem>
+#include <optional>
+
+#include "nck/config/machine.hpp"
+#include "nck/core/diagnostic.hpp"
+
+namespace nck::config {
+
+struct LoadResult {
+  std::optional<Machine> machine;  // set unless a fatal error stopped loading
+  Diagnostics diagnostics;         // every warning and error, with file:line
+  bool ok() const { return machine.has_value() && !diagnostics.has_errors(); }
+};
+
+// Reads startup.lis in `folder` and every list it names, converts units,
+// runs all plausibility checks (SPEC 3.1). Never throws on bad input.
+LoadResult load_machine(const std::filesystem::path& folder);
+
+}  // namespace nck::config

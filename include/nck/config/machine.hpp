@@ -1,0 +1,206 @@
+#pragma once
+// The typed machine model: every list of a machine folder, validated and
+// converted to internal units once at load (mm, deg, s, mm/s, deg/s, mm/s^2,
+// deg/s^2; spindle speeds in rpm at the user edge). Immutable while running.
+//
+// Fields may be added; existing names are an interface other layers use.
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace nck::config {
+
+inline constexpr std::size_t kMaxChannels = 12;
+inline constexpr std::size_t kMaxPathAxes = 32;     // per channel
+inline constexpr std::size_t kMaxSpindles = 16;     // per channel
+inline constexpr std::size_t kMaxGearStages = 6;
+
+enum class AxisKind : std::uint8_t { translatory = 1, rotary = 2, spindle = 4 };
+
+// Synchronisation type bits (facts sheet B0).
+namespace sync {
+inline constexpr std::uint32_t NO_SYNCH = 0x0;
+inline constexpr std::uint32_t MOS = 0x1;
+inline constexpr std::uint32_t MVS_SVS = 0x2;
+inline constexpr std::uint32_t MVS_SNS = 0x4;
+inline constexpr std::uint32_t MNS_SNS = 0x8;
+inline constexpr std::uint32_t MNE_SNS = 0x20;
+inline constexpr std::uint32_t MVS_SLM = 0x4000;
+inline constexpr std::uint32_t MVS_SLP = 0x8000;
+inline constexpr std::uint32_t PLC_INFO = 0x20000;
+}  // namespace sync
+
+// Characteristic acceleration curve of a spindle gear stage (P-AXIS-00202...).
+struct AccelCurve {
+  std::uint32_t type = 0;        // 0 none, 1 hyperbola, 2 polynomial, 3 asynchronous drive
+  double n_grenz_deg_s = 0;      // limit speed
+  double a_konst_deg_s2 = 0;
+  double a_min_deg_s2 = 0;
+  double b1 = 0, b2 = 0, b3 = 0; // as in the list (units per seed)
+  double a_max_deg_s2 = 0;       // type 3
+  double n1_deg_s = 0, n2_deg_s = 0;
+};
+
+// One gear stage (getriebe[i]) of an axis or spindle; index 0 = stage 1.
+// Velocities in mm/s (deg/s for rotary axes and spindles), accelerations
+// in mm/s^2 (deg/s^2).
+struct GearStage {
+  double a_beschl = 1000;   // P-AXIS-00001 acceleration on feed moves
+  double a_brems = 1000;    // P-AXIS-00002 deceleration on feed moves
+  double a_grenz = 1000;    // P-AXIS-00004 acceleration for G0
+  double a_max = 1000;      // P-AXIS-00008 hard cap
+  double vb_max = 200;      // P-AXIS-00212 (list 200000 um/s)
+  double vb_eilgang = 166.666;  // P-AXIS-00209 rapid
+  double kv_1_s = 10;       // P-AXIS-00099 position-loop gain
+  double moduloo = 360, modulou = 0;  // P-AXIS-00126/00127
+  double vb_min_null = 0.1;           // P-AXIS-00216 (deg/s)
+  double vb_regelgrenze = 200;        // P-AXIS-00220 (deg/s)
+  double getr_schalt_pos = 0;         // P-AXIS-00078 (deg)
+  double pos_refpkt = 0;              // P-AXIS-00152
+  std::uint32_t wegaufz = 1, wegaufn = 1;
+  bool reverse = false;
+  AccelCurve curve;
+  bool given = false;       // true when the list names this stage
+};
+
+struct SourceRef {          // where a record came from, for diagnostics
+  std::string file;
+  std::uint32_t line = 0;
+};
+
+// One axis list (achs_mds[i]): a path axis or a spindle.
+struct AxisConfig {
+  SourceRef source;
+  std::uint32_t log_axis_nr = 0;        // kopf.achs_nr (P-AXIS-00016)
+  std::string name;                     // kopf.log_achs_name
+  AxisKind kind = AxisKind::translatory;  // kenngr.achs_typ
+  std::uint32_t achs_mode = 0x1;        // kenngr.achs_mode
+  std::uint32_t antr_typ = 4;           // kenngr.antr_typ (4 = simulation)
+  double swe_neg = -10000, swe_pos = 10000;  // software limits (mm / deg)
+  std::uint32_t initial_gear_stage = 1; // kenngr.getriebe_stufe
+  bool vorz_richtung = false;           // P-AXIS-00224
+  bool beweg_richt_positive = false;    // P-AXIS-00031
+  double vb_prozent_permille = 100;     // P-AXIS-00217 (0.1 %)
+  bool ref_ohne_nocken = false, ref_ohne_rev = false;
+  bool no_stop_by_channel_reset = false;  // P-AXIS-00455
+  std::string operation_mode = "DRIVE_DEFAULT";  // antr.operation_mode
+  std::uint32_t v_reso_num = 1, v_reso_denom = 36, v_time_base = 0;
+  std::array<GearStage, kMaxGearStages> gears{};
+
+  bool is_spindle() const { return kind == AxisKind::spindle; }
+  bool is_modulo() const { return (achs_mode & 0x4) != 0 || is_spindle(); }
+  const GearStage& gear(std::uint32_t stage_1based) const {
+    std::uint32_t i = stage_1based == 0 ? 0 : stage_1based - 1;
+    return gears[i < kMaxGearStages ? i : 0];
+  }
+};
+
+// A path axis of a channel (gruppe[0].achse[j]).
+struct ChannelAxis {
+  std::string name;               // bezeichnung, e.g. "X"
+  std::uint32_t log_axis_nr = 0;
+  int axis_index = -1;            // index into Machine::axes, -1 when none
+};
+
+struct SpindleRange {             // spindel[i].range_table[k]
+  double min_speed_rpm = 0;
+  double max_speed_rpm = 0;
+};
+
+// A spindle of a channel (spindel[i]).
+struct ChannelSpindle {
+  SourceRef source;
+  std::string name;               // bezeichnung, e.g. "S1"
+  std::uint32_t log_axis_nr = 0;
+  int axis_index = -1;            // index into Machine::axes, -1 for plc_control
+  bool plc_control = false;       // P-CHAN-00069
+  bool autom_range = false;       // P-CHAN-00004
+  std::array<SpindleRange, kMaxGearStages> range_table{};
+  std::array<std::uint8_t, kMaxGearStages> range_way{1, 2, 3, 4, 5, 6};
+  std::uint32_t s_synch = sync::MVS_SVS, m3_synch = sync::MVS_SVS, m4_synch = sync::MVS_SVS,
+                m5_synch = sync::MVS_SVS, m19_synch = sync::MVS_SVS;
+  // PLC acknowledgement timeouts in s (0 = no timeout)
+  double s_prozess_zeit_s = 0, m3_prozess_zeit_s = 0, m4_prozess_zeit_s = 0,
+         m5_prozess_zeit_s = 0, m19_prozess_zeit_s = 0;
+};
+
+struct LinkPair { std::string slave, master; std::uint32_t slave_nr = 0, master_nr = 0; };
+struct LinkGroup { std::vector<LinkPair> pairs; };
+
+struct ChannelConfig {
+  SourceRef source;
+  std::uint32_t number = 1;       // 1-based
+  std::vector<ChannelAxis> axes;  // path axes in channel order (j)
+  std::vector<ChannelSpindle> spindles;
+  std::string main_spindle_name = "S";          // P-CHAN-00053
+  std::uint32_t main_spindle_ax_nr = 0;         // P-CHAN-00051
+  bool main_spindle_gear_change = false;        // P-CHAN-00052
+  std::string default_ax_name_of_spindle;       // P-CHAN-00010
+  std::uint32_t cax_face_id = 0;
+  bool move_tool_offsets_directly = false;      // P-CHAN-00100
+  std::array<std::uint32_t, 1000> m_synch{};    // P-CHAN-00041, per M number
+  std::uint32_t decoder_function = 0;           // configuration.decoder.function bits
+  std::uint32_t max_cache_number = 0;           // configuration.decoder.max_cache_number
+  std::uint32_t max_cache_size_kb = 0;          // configuration.decoder.max_cache_size
+  LinkGroup default_link_group;                 // synchro_data.koppel_gruppe[0]
+  std::filesystem::path tool_list, zero_list, clamp_list;  // resolved, empty if none
+};
+
+// configuration.decoder.function bits used by nck.
+namespace decoder_fct {
+inline constexpr std::uint32_t FCT_USE_CACHED_FILES = 0x00000800;  // see docs/decisions.md
+inline constexpr std::uint32_t FCT_3D_DIST_CTRL = 0x00100000;      // see docs/decisions.md
+}  // namespace decoder_fct
+
+struct ToolRecord {               // wz[i]
+  double laenge_mm = 0, radius_mm = 0;
+  std::array<double, kMaxPathAxes> ax_versatz_mm{};
+  bool tool_fixed = false;
+  std::uint32_t log_ax_nr_spdl = 0;
+  double vb_min_rpm = 0, vb_max_rpm = 0, a_max_deg_s2 = 0;
+};
+
+struct ZeroOffsets {              // nullp list
+  bool g53_verfuegbar = false;
+  std::uint32_t default_index = 0;
+  // groups[i][j] offset of channel axis j in group i (mm / deg); inactive flags beside
+  std::vector<std::array<double, kMaxPathAxes>> versch;
+  std::vector<std::array<bool, kMaxPathAxes>> inaktiv;
+};
+
+struct ClampOffsets {             // pzv list
+  std::vector<std::array<double, kMaxPathAxes>> versatz;
+};
+
+struct ChannelData {              // the per-channel lists besides the channel list
+  std::vector<ToolRecord> tools;  // index = tool number
+  ZeroOffsets zero;
+  ClampOffsets clamp;
+};
+
+// Simulation parameters (sim.lis): PLC and sensor behaviour. Extended by later issues.
+struct SimConfig {
+  double plc_ack_delay_s = 0.01;
+  double gear_change_time_s = 0.5;
+};
+
+struct Machine {
+  std::filesystem::path folder;
+  std::uint32_t cycle_time_us = 1000;
+  bool ads_32_bit_comp_mode = true;  // P-STUP-00175
+  std::vector<ChannelConfig> channels;
+  std::vector<ChannelData> channel_data;  // parallel to channels
+  std::vector<AxisConfig> axes;           // all axis lists, in achs_mds order
+  SimConfig sim;
+
+  const AxisConfig* axis_by_log_nr(std::uint32_t nr) const {
+    for (const auto& a : axes)
+      if (a.log_axis_nr == nr) return &a;
+    return nullptr;
+  }
+};
+
+}  // namespace nck::config

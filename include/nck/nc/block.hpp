@@ -1,0 +1,64 @@
+#pragma once
+// A decoded NC block: every word evaluated (expressions, parameters,
+// variables), checked, and the modal state that is in force for it.
+// Control flow ($IF, $WHILE, subroutine calls) is resolved by the decoder:
+// the channel only ever sees executable blocks, in execution order.
+//
+// Fields may be added; existing names are an interface the kernel uses.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "nck/nc/hash_commands.hpp"
+#include "nck/nc/modal.hpp"
+#include "nck/nc/spindle_command.hpp"
+
+namespace nck::nc {
+
+inline constexpr std::size_t kMaxAxes = 32;  // path axes per channel
+
+struct Block {
+  // Where it came from.
+  std::uint16_t file_id = 0;    // Decoder::file_name(file_id)
+  std::uint32_t line = 0;       // 1-based line of the block's first character
+  std::optional<std::int64_t> n;  // N word
+
+  // The modal state in force for this block (after applying its own words).
+  ModalState modal;
+
+  // Per-block words, in program units (mm or deg, absolute or incremental
+  // as modal.absolute says; the channel resolves them).
+  std::array<std::optional<double>, kMaxAxes> axes{};  // index = channel axis
+  std::array<std::optional<double>, 3> ijk{};          // I, J, K
+  std::optional<double> r;                             // circle radius (R)
+  std::optional<double> f;                             // F as programmed (also kept in modal)
+  std::vector<int> g_nonmodal;   // non-modal G codes programmed here (4, 53, 74, 92, 100..)
+  std::vector<int> m;            // M functions in program order
+  std::vector<int> h;            // H functions
+  std::optional<std::int64_t> t; // T word
+  std::optional<std::int64_t> d; // D word
+  std::optional<double> dwell_s; // G4 X.. / G4 .. / #TIME ..  (seconds)
+  std::optional<double> dwell_revs;  // G4 S.. (main-spindle revolutions)
+
+  // Spindle words: DIN words of the main spindle (M3 S1000, M19 S.POS=..) are
+  // mapped onto the main spindle's entry, spindle syntax S1[..] gives one
+  // entry per bracket.
+  std::vector<SpindleCommand> spindles;
+
+  // At most one # command per block (facts sheet C3), plus #PSET / #PRESET
+  // which may share a block.
+  std::optional<HashCommand> hash;
+
+  bool program_end = false;  // M2 / M30 reached (main program level)
+  bool stop = false;         // M0 (M1 when the optional stop is enabled)
+
+  bool has_axis_words() const {
+    for (const auto& a : axes)
+      if (a) return true;
+    return false;
+  }
+};
+
+}  // namespace nck::nc

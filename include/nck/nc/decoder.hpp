@@ -1,0 +1,60 @@
+#pragma once
+// Streaming NC decoder: hands out executable blocks one at a time as the
+// channel consumes them, reading the program incrementally (bounded memory
+// for programs of millions of blocks). Setup-time code: allocates, never
+// throws on bad input, never crashes, never hangs.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "nck/core/diagnostic.hpp"
+#include "nck/nc/block.hpp"
+
+namespace nck::nc {
+
+struct DecoderConfig {
+  std::vector<std::string> axis_names;     // channel path axes, index = Block::axes index
+  std::vector<std::string> spindle_names;  // channel spindles ("S1", "S2"...)
+  std::string main_spindle_name = "S";     // the name DIN words address
+  std::string main_spindle = "S1";         // which configured spindle is the main one
+  std::uint32_t skip_mask = 0;             // active block-skip levels (/1 = bit 0 ... /10 = bit 9; "/" = bit 0)
+  bool optional_stop = false;              // M1 acts like M0
+  bool use_cached_files = false;           // FCT_USE_CACHED_FILES
+  std::uint32_t max_cache_number = 0;
+  std::uint32_t max_cache_size_kb = 0;
+  std::uint32_t max_subroutine_depth = 20;
+  std::uint64_t max_loop_iterations = 10'000'000;  // guards against endless $WHILE
+};
+
+
+class Decoder {
+ public:
+  enum class Status { block, end, error };
+  struct Result {
+    Status status = Status::end;
+    Block block;                 // valid when status == block
+  };
+
+  // Opens the main program. Errors (missing file...) are reported through
+  // diagnostics() and the first next() returns Status::error.
+  Decoder(const std::filesystem::path& program, DecoderConfig cfg);
+  ~Decoder();
+  Decoder(Decoder&&) noexcept;
+  Decoder& operator=(Decoder&&) noexcept;
+
+  // The next executable block, the end of the program (M30/M2 block is
+  // returned as a block with program_end set, then Status::end), or an error.
+  Result next();
+
+  // All diagnostics so far (warnings and the error that stopped decoding).
+  const std::vector<Diagnostic>& diagnostics() const;
+  const std::string& file_name(std::uint16_t file_id) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace nck::nc

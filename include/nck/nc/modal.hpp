@@ -1,0 +1,32 @@
+#pragma once
+// Modal state of a channel's decoder (kept apart from the per-block words).
+#include <cstdint>
+
+namespace nck::nc {
+
+enum class Motion : std::uint8_t { rapid, linear, cw, ccw, thread, tap, tap_rigid, tap_retract };
+enum class Plane : std::uint8_t { g17 = 17, g18 = 18, g19 = 19 };
+enum class FeedMode : std::uint8_t { g93 = 93, g94 = 94, g95 = 95 };
+enum class SpeedMode : std::uint8_t { g97 = 97, g96 = 96 };
+enum class RadiusComp : std::uint8_t { g40 = 40, g41 = 41, g42 = 42 };
+
+struct ModalState {
+  Motion motion = Motion::rapid;        // G0 G1 G2 G3 G33 G63 G331 G332
+  Plane plane = Plane::g17;             // G17 G18 G19
+  bool absolute = true;                 // G90 / G91
+  FeedMode feed_mode = FeedMode::g94;   // G93 G94 G95
+  SpeedMode speed_mode = SpeedMode::g97;  // G96 G97
+  RadiusComp radius_comp = RadiusComp::g40;
+  bool diameter = false;                // G51 / G52
+  bool inch = false;                    // G70 / G71
+  int zero_offset = 0;                  // 0 = G53, 1 = G54 ... 6 = G59, 7.. = G159=n
+  double feed_mm_min = 0;               // F under G94 (an F belongs to its G function)
+  double feed_mm_rev = 0;               // F under G95
+  double css_m_min = 0;                 // S under G96
+  double max_speed_rpm = 0;             // G196
+  double thread_pitch_mm = 0;           // G33 I/J/K, modal to program end
+  double r = 0;                         // circle radius, modal (older manual)
+  std::int64_t d = 0;                   // active tool offset
+};
+
+}  // namespace nck::nc

@@ -1,0 +1,37 @@
+#pragma once
+// One spindle's words in a block: DIN (main spindle: M3 S1000, M19 S.POS=..,
+// G74 S1, G167 S..) or spindle syntax (S1[M3 REV1000 ...], facts sheet B3).
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace nck::nc {
+
+enum class SpindleM : std::uint8_t { none = 0, m3 = 3, m4 = 4, m5 = 5, m19 = 19 };
+
+struct SpindleCommand {
+  std::string name;             // as programmed: "S" (main), "S1", "S2"...
+  bool din = false;             // true: DIN words of the main spindle
+  std::uint32_t column = 0;     // where it was programmed (diagnostics)
+  SpindleM m = SpindleM::none;  // M3/M4/M5/M19
+  std::optional<double> rev_rpm;      // S / REV
+  std::optional<double> pos_deg;      // S.POS / POS
+  std::optional<double> pos_shift_deg;  // S.POS_SHIFT
+  std::optional<double> offset_deg;   // S.OFFSET (G33 start angle)
+  std::optional<int> gear_stage;      // M40..M45 -> 1..6 (DIN, main spindle)
+  std::optional<int> g112_stage;      // G112 S<stage>
+  std::vector<int> user_m;            // M=.. in spindle syntax
+  std::vector<int> user_h;            // H=..
+  bool g74 = false;                   // homing
+  bool g167 = false;                  // override forced to 100 % for this speed
+  std::optional<double> g130_pct;     // acceleration weighting
+  bool g135 = false, g137 = false;    // feedforward on / off
+  std::optional<double> g136_pct;     // feedforward weighting
+  bool callax = false, putax = false;
+  bool get_dynamic_data = false;
+  bool default_dynamic_data = false;
+  std::optional<double> override_speed_fact_pct;  // OVERRIDE SPEED_FACT=
+};
+
+}  // namespace nck::nc

@@ -1,0 +1,56 @@
+#include "nck/core/diagnostic.hpp"
+
+#include <algorithm>
+#include <array>
+#include <fmt/format.h>
+
+namespace nck {
+namespace {
+
+constexpr Severity warning = Severity::warning;
+constexpr Severity error = Severity::error;
+
+constexpr std::array kErrors = {
+#define NCK_ERROR(name, number, severity, text, remedy) \
+  ErrorInfo{ErrorId::name, severity, #name, text, remedy},
+#include "nck/core/errors_config.def"
+#include "nck/core/errors_nc.def"
+#include "nck/core/errors_kernel.def"
+#include "nck/core/errors_app.def"
+#undef NCK_ERROR
+};
+
+}  // namespace
+
+std::span<const ErrorInfo> all_errors() { return kErrors; }
+
+const ErrorInfo* find_error(ErrorId id) {
+  auto it = std::find_if(kErrors.begin(), kErrors.end(),
+                         [id](const ErrorInfo& e) { return e.id == id; });
+  return it == kErrors.end() ? nullptr : &*it;
+}
+
+Diagnostic make_diagnostic(ErrorId id, SourceLoc loc, std::string message) {
+  const ErrorInfo* info = find_error(id);
+  Severity sev = info ? info->severity : Severity::error;
+  return Diagnostic{id, sev, std::move(loc), std::move(message)};
+}
+
+std::string format(const Diagnostic& d) {
+  std::string where = d.loc.file.empty() ? std::string("<input>") : d.loc.file;
+  if (d.loc.line > 0) where += fmt::format(":{}", d.loc.line);
+  if (d.loc.line > 0 && d.loc.column > 0) where += fmt::format(":{}", d.loc.column);
+  return fmt::format("{}: {} {}: {}", where,
+                     d.severity == Severity::error ? "error" : "warning",
+                     number(d.id), d.message);
+}
+
+bool Diagnostics::has_errors() const { return error_count() > 0; }
+
+std::size_t Diagnostics::error_count() const {
+  return static_cast<std::size_t>(std::count_if(
+      items_.begin(), items_.end(),
+      [](const Diagnostic& d) { return d.severity == Severity::error; }));
+}
+
+}  // namespace nck
