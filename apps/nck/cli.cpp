@@ -1,4 +1,68 @@
+// The nck command line (SPEC 2.2). Exit codes: 0 ok, 1 errors in the input
+// (NC error, plausibility errors), 2 bad usage or machine data.
 #include "nck/cli.hpp"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "run_command.hpp"
+
 namespace nck::app {
-int main_cli(int, char**) { return 0; }
+
+int main_cli(int argc, char** argv) {
+  CLI::App app{"nck - an open NC kernel: check machine data, decode and run NC programs"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "nck 0.1.0");
+
+  std::string machine;
+  auto* check = app.add_subcommand("check", "Load a machine folder and report plausibility errors");
+  check->add_option("MACHINE", machine, "machine folder (with startup.lis)")->required();
+
+  RunOptions run;
+  auto* runc = app.add_subcommand("run", "Run NC programs on a machine, cycle by cycle");
+  runc->add_option("MACHINE", run.machine, "machine folder (with startup.lis)")->required();
+  runc->add_option("PROGRAM", run.programs, "NC program per channel (PROGRAM2 runs in channel 2...)")
+      ->required();
+  runc->add_option("--events", run.events, "write events as JSON lines to FILE");
+  runc->add_option("--trace", run.trace, "write set points as CSV to FILE");
+  runc->add_option("--trace-every", run.trace_every, "trace every Nth cycle")
+      ->check(CLI::PositiveNumber);
+  runc->add_option("--final", run.final_state, "write the final state as JSON to FILE");
+  runc->add_option("--max-time", run.max_time_s, "simulated-time limit in seconds")
+      ->check(CLI::PositiveNumber);
+  runc->add_flag("--realtime", run.realtime, "pace the cycles to the wall clock");
+  runc->add_flag("!--no-progress", run.progress, "no progress display on the terminal");
+
+  ParseOptions parse;
+  auto* parsec = app.add_subcommand("parse", "Decode an NC program and print diagnostics");
+  parsec->add_option("PROGRAM", parse.program, "NC program")->required();
+  parsec->add_flag("--json", parse.json, "print the decoded blocks as JSON lines");
+  parsec->add_option("--machine", parse.machine, "take axis and spindle names from this machine");
+  parsec->add_option("--channel", parse.channel, "channel of --machine (1-based)")
+      ->check(CLI::PositiveNumber);
+
+  auto* params = app.add_subcommand("params", "Print every accepted list key as a markdown table");
+  auto* errors = app.add_subcommand("errors", "Print every diagnostic ID as a markdown table");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    fmt::print(stderr, "nck: error 940001: {}\nRun 'nck --help' for usage.\n", e.what());
+    return 2;
+  }
+  if (*check) return check_machine(machine);
+  if (*runc) return run_simulation(run);
+  if (*parsec) return parse_program(parse);
+  if (*params) return print_parameters();
+  if (*errors) return print_errors();
+  return 2;
+}
+
 }  // namespace nck::app

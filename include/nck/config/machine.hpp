@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace nck::config {
@@ -31,6 +32,15 @@ inline constexpr std::uint32_t MNE_SNS = 0x20;
 inline constexpr std::uint32_t MVS_SLM = 0x4000;
 inline constexpr std::uint32_t MVS_SLP = 0x8000;
 inline constexpr std::uint32_t PLC_INFO = 0x20000;
+inline constexpr std::uint32_t MOS_TS = 0x40000;
+inline constexpr std::uint32_t MEP_MOS = 0x100000;
+inline constexpr std::uint32_t MET_MOS = 0x200000;
+inline constexpr std::uint32_t BWD_SYNCH = 0x400000;
+inline constexpr std::uint32_t FWD_SYNCH = 0x800000;
+inline constexpr std::uint32_t MEP_SVS = 0x1000000;
+inline constexpr std::uint32_t MET_SVS = 0x2000000;
+inline constexpr std::uint32_t FAW_SYNCH = 0x10000000;
+inline constexpr std::uint32_t NOT_VALID = 0x80000000;
 }  // namespace sync
 
 // Characteristic acceleration curve of a spindle gear stage (P-AXIS-00202...).
@@ -62,6 +72,11 @@ struct GearStage {
   double pos_refpkt = 0;              // P-AXIS-00152
   std::uint32_t wegaufz = 1, wegaufn = 1;
   bool reverse = false;
+  double a_emergency = 0;             // P-AXIS-00003, 0 = use a_max
+  std::uint32_t slope_type = 0;       // P-AXIS-00270: 0 step, 1 trapezoid, 2 sine-square
+  std::uint32_t multi_gain_z = 2000, multi_gain_n = 1;  // P-AXIS-00129/00128
+  std::int32_t modulo_fehler = 0;     // P-AXIS-00124 (increments)
+  std::int32_t modulo_umdreh = 0;     // P-AXIS-00125
   AccelCurve curve;
   bool given = false;       // true when the list names this stage
 };
@@ -70,6 +85,16 @@ struct SourceRef {          // where a record came from, for diagnostics
   std::string file;
   std::uint32_t line = 0;
 };
+
+// configuration.decoder.function bits used by nck. The TF5200 documentation
+// names the symbols but publishes no numeric values, so these are nck's own.
+namespace decoder_fct {
+inline constexpr std::uint32_t FCT_DEFAULT = 0x00000000;
+inline constexpr std::uint32_t FCT_NO_DISPLAY = 0x00000400;            // accepted, no effect
+inline constexpr std::uint32_t FCT_USE_CACHED_FILES = 0x00000800;      // see docs/decisions.md
+inline constexpr std::uint32_t FCT_VOL_COMP_COMPUTATION = 0x00001000;  // accepted, no effect
+inline constexpr std::uint32_t FCT_3D_DIST_CTRL = 0x00100000;          // see docs/decisions.md
+}  // namespace decoder_fct
 
 // One axis list (achs_mds[i]): a path axis or a spindle.
 struct AxisConfig {
@@ -89,6 +114,19 @@ struct AxisConfig {
   std::string operation_mode = "DRIVE_DEFAULT";  // antr.operation_mode
   std::uint32_t v_reso_num = 1, v_reso_denom = 36, v_time_base = 0;
   std::array<GearStage, kMaxGearStages> gears{};
+  // Added by the config layer (all in internal units):
+  std::uint32_t def_cax_gear_st = 1;            // P-AXIS-00052
+  double velocity_position_control_on = 2000000;  // P-AXIS-00265 (deg/s)
+  double velocity_position_control_off = 0;       // P-AXIS-00266 (deg/s)
+  double feedforward_ta_s = 1e-6;               // P-AXIS-00225/00226 (Ta = faktor us / nenner)
+  double vb_messen = 16.666;                    // P-AXIS-00215 (mm/s, deg/s)
+  bool mod_komp = false;                        // P-AXIS-00120
+  bool distance_control_on = false;             // P-AXIS-00328
+  bool durchm_prog_abs = false;                 // P-AXIS-00058
+  bool fast_from_cam = true;                    // P-AXIS-00064
+  std::string feedhold_deceleration_mode = "DEFAULT_DECELERATION";  // P-AXIS-00556
+  std::string secondary_encoder;                // P-AXIS-00824
+  bool is_speed_controlled() const { return operation_mode.rfind("OPEN_POSITION_LOOP", 0) == 0; }
 
   bool is_spindle() const { return kind == AxisKind::spindle; }
   bool is_modulo() const { return (achs_mode & 0x4) != 0 || is_spindle(); }
@@ -119,7 +157,8 @@ struct ChannelSpindle {
   bool plc_control = false;       // P-CHAN-00069
   bool autom_range = false;       // P-CHAN-00004
   std::array<SpindleRange, kMaxGearStages> range_table{};
-  std::array<std::uint8_t, kMaxGearStages> range_way{1, 2, 3, 4, 5, 6};
+  std::array<std::uint8_t, kMaxGearStages> range_way{1, 2, 3, 4, 5, 6};  // search order (stage numbers)
+  std::uint32_t range_way_param = 0;  // P-CHAN-00074 as written: 0 bottom up, >0 top down
   std::uint32_t s_synch = sync::MVS_SVS, m3_synch = sync::MVS_SVS, m4_synch = sync::MVS_SVS,
                 m5_synch = sync::MVS_SVS, m19_synch = sync::MVS_SVS;
   // PLC acknowledgement timeouts in s (0 = no timeout)
@@ -127,8 +166,47 @@ struct ChannelSpindle {
          m5_prozess_zeit_s = 0, m19_prozess_zeit_s = 0;
 };
 
-struct LinkPair { std::string slave, master; std::uint32_t slave_nr = 0, master_nr = 0; };
+struct LinkPair {
+  std::string slave, master;       // channel names of the two axes/spindles
+  std::uint32_t slave_nr = 0, master_nr = 0;
+  std::uint32_t mode = 0;          // P-CHAN-00061: 0 path axes, 1 spindles
+};
 struct LinkGroup { std::vector<LinkPair> pairs; };
+
+enum class DistFilter : std::uint8_t { defaults, moving_average, lowpass, kalman_ma, expo_mean, kalman_expo, kalman_dyn };
+
+// 3D distance control (dist_ctrl[0], P-CHAN-00800..00827) in mm, mm/s, mm/s^2, s.
+struct DistCtrlConfig {
+  bool given = false;                 // any dist_ctrl[0] key in the list
+  std::uint32_t n_cycles = 4;
+  double max_deviation_mm = 5.0;
+  double v_max_mm_s = 5.0;
+  double a_max_mm_s2 = 0;             // must be > 0 when FCT_3D_DIST_CTRL (else 315001)
+  double max_act_value_change_mm_s = 5.0;
+  double ref_offset_mm = 0;
+  double max_pos_mm = 5.0;
+  double min_pos_mm = -5.0;
+  double tolerance_mm = 0;
+  bool check_sw_limit_switch = false;
+  bool mode_dist_use_both_encoder = false;
+  bool use_adaptive_acceleration = false;
+  double a_min_mm_s2 = 500;
+  double dist_error_a_min_mm = 0.1;
+  double dist_error_a_max_mm = 0.5;
+  bool low_pass_filter_enable = false;
+  std::uint32_t low_pass_filter_order = 4;
+  double low_pass_filter_fg_f0_hz = 25;
+  bool optimized_scheduling = false;
+  double v_weight_down = 0;           // factor (list 0.1 %), 0 = off
+  double a_weight_down = 0;           // factor (list 0.1 %), 0 = off
+  double kp = 1.0;
+  double i_tn_s = 0;
+  double d_tv_s = 0;
+  double kalman_max_dist_change = 1;
+  DistFilter filter_type = DistFilter::defaults;
+  double kalman_sigma = 4;
+  double smoothing_factor = 0.7;
+};
 
 struct ChannelConfig {
   SourceRef source;
@@ -146,16 +224,30 @@ struct ChannelConfig {
   std::uint32_t max_cache_number = 0;           // configuration.decoder.max_cache_number
   std::uint32_t max_cache_size_kb = 0;          // configuration.decoder.max_cache_size
   LinkGroup default_link_group;                 // synchro_data.koppel_gruppe[0]
+  bool preserve_coupling_after_prog_end = false;  // P-CHAN-00105
+  std::array<std::uint32_t, 2> decoder_fct_enable{};  // P-CHAN-00507 (bits)
+  std::array<std::string, 2> decoder_fct_condition{"ISG_STANDARD", "ISG_STANDARD"};  // P-CHAN-00508
+  DistCtrlConfig dist_ctrl;                     // dist_ctrl[0]
+  bool einrechnen_mit_t = false;                // P-CHAN-00014
+  bool mass_einh_inch = false;                  // P-CHAN-00054
+  std::uint32_t messtyp = 1;                    // P-CHAN-00057
+  bool versch_im_durchm = false;                // P-CHAN-00091
+  bool spindle_m_fct_free = false;              // P-CHAN-00098
+  bool modal_i_j_k_for_circle = false;          // P-CHAN-00159
+  bool display_diameter_pos = false;            // P-CHAN-00256
+  bool thread_ignore_override = false;          // P-CHAN-00836
+  bool thread_chain = false;                    // P-CHAN-00837
+  bool rotation_mode_fixed = false;             // P-CHAN-00393
+  std::string rotation_sequence = "ZYX";        // P-CHAN-00394
+  bool dist_ctrl_enabled() const {
+    return ((decoder_function | decoder_fct_enable[0] | decoder_fct_enable[1]) &
+            decoder_fct::FCT_3D_DIST_CTRL) != 0;
+  }
   std::filesystem::path tool_list, zero_list, clamp_list;  // resolved, empty if none
 };
 
-// configuration.decoder.function bits used by nck.
-namespace decoder_fct {
-inline constexpr std::uint32_t FCT_USE_CACHED_FILES = 0x00000800;  // see docs/decisions.md
-inline constexpr std::uint32_t FCT_3D_DIST_CTRL = 0x00100000;      // see docs/decisions.md
-}  // namespace decoder_fct
-
-struct ToolRecord {               // wz[i]
+struct ToolRecord {               // wz[i]; lengths in mm (inch lists converted)
+  bool given = false;
   double laenge_mm = 0, radius_mm = 0;
   std::array<double, kMaxPathAxes> ax_versatz_mm{};
   bool tool_fixed = false;
@@ -181,10 +273,33 @@ struct ChannelData {              // the per-channel lists besides the channel l
   ClampOffsets clamp;
 };
 
-// Simulation parameters (sim.lis): PLC and sensor behaviour. Extended by later issues.
+enum class SurfaceKind : std::uint8_t { flat, sine, step, ramp };
+enum class SensorFault : std::uint8_t { none, dropout, jump, freeze };
+
+// Simulation parameters (sim.lis, nck's own list): PLC and sensor behaviour.
+// List units: times in ms, lengths in 0.1 um; stored here in s and mm.
 struct SimConfig {
-  double plc_ack_delay_s = 0.01;
-  double gear_change_time_s = 0.5;
+  double plc_ack_delay_s = 0.01;      // plc_ack_delay_ms: PLC acknowledges an output after this
+  double gear_change_time_s = 0.5;    // gear_change_time_ms: PLC time to shift a gear
+  std::vector<std::pair<std::uint32_t, double>> m_ack_delay_s;  // m_ack_delay_ms[n]: per M number
+  double spindle_ack_delay_s = 0.01;  // spindle_ack_delay_ms: PLC ack of M3/M4/M5/M19/S (PLC_INFO)
+  double tool_change_time_s = 0;      // tool_change_time_ms: T/M6 acknowledgement
+  double drive_speed_time_constant_s = 0.02;  // drive.speed_time_constant_ms: actual speed lag
+  double feed_override_percent = 100;         // initial HLI feed override
+  double spindle_override_percent = 100;      // initial HLI spindle override
+  // Distance sensor: surface height along one channel axis, plus noise and one fault.
+  SurfaceKind surface = SurfaceKind::flat;    // sensor.surface
+  std::string surface_axis = "X";             // sensor.surface_axis
+  double surface_height_mm = 0;               // sensor.surface_height
+  double surface_amplitude_mm = 0;            // sensor.surface_amplitude
+  double surface_wavelength_mm = 100;         // sensor.surface_wavelength
+  double surface_start_mm = 0;                // sensor.surface_start (step/ramp begin)
+  double noise_sigma_mm = 0;                  // sensor.noise_sigma
+  std::uint32_t noise_seed = 1;               // sensor.noise_seed
+  std::uint32_t sensor_delay_cycles = 0;      // sensor.delay_cycles
+  SensorFault fault = SensorFault::none;      // sensor.fault
+  double fault_time_s = 0;                    // sensor.fault_time_ms
+  double fault_value_mm = 0;                  // sensor.fault_value
 };
 
 struct Machine {

@@ -19,6 +19,13 @@ namespace nck::nc {
 
 inline constexpr std::size_t kMaxAxes = 32;  // path axes per channel
 
+// A write to a kernel variable (V.G. / V.A.) programmed in this block; the
+// kernel applies them in order when the block executes.
+struct VariableWrite {
+  std::string name;  // normalised, e.g. "V.G.NP[1].V.X"
+  double value = 0;
+};
+
 struct Block {
   // Where it came from.
   std::uint16_t file_id = 0;    // Decoder::file_name(file_id)
@@ -34,8 +41,14 @@ struct Block {
   std::array<std::optional<double>, 3> ijk{};          // I, J, K
   std::optional<double> r;                             // circle radius (R)
   std::optional<double> f;                             // F as programmed (also kept in modal)
-  std::vector<int> g_nonmodal;   // non-modal G codes programmed here (4, 53, 74, 92, 100..)
-  std::vector<int> m;            // M functions in program order
+  // Non-modal / special G codes programmed here (4 74 92 100 101 102 106
+  // 112 130 135 136 137 167 196 200 201 202). With 74 92 100 101 102 200 201
+  // 202 the axis words above carry that function's values (order, offset,
+  // target, factor or dummy), not a motion target.
+  std::vector<int> g_nonmodal;
+  // M functions in program order, except the main spindle's DIN functions
+  // (M3 M4 M5 M19 M40..M45, in spindles[]) and M17/M29 (handled here).
+  std::vector<int> m;
   std::vector<int> h;            // H functions
   std::optional<std::int64_t> t; // T word
   std::optional<std::int64_t> d; // D word
@@ -50,6 +63,10 @@ struct Block {
   // At most one # command per block (facts sheet C3), plus #PSET / #PRESET
   // which may share a block.
   std::optional<HashCommand> hash;
+
+  // Kernel-variable assignments (V.G.NP[1].V.X = 10 ...), in program order.
+  std::vector<VariableWrite> kernel_writes;
+  std::uint8_t depth = 0;    // subroutine nesting level (0 = main program)
 
   bool program_end = false;  // M2 / M30 reached (main program level)
   bool stop = false;         // M0 (M1 when the optional stop is enabled)

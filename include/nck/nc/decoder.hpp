@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -26,6 +28,13 @@ struct DecoderConfig {
   std::uint32_t max_cache_size_kb = 0;
   std::uint32_t max_subroutine_depth = 20;
   std::uint64_t max_loop_iterations = 10'000'000;  // guards against endless $WHILE
+
+  // Added by the decoder work:
+  std::vector<int> spindle_log_axis_numbers;  // same order as spindle_names (#MAIN SPINDLE [nr])
+  int max_zero_offset_index = 96;             // highest G159 index (zero-offset groups 0..96)
+  bool dist_ctrl_available = true;            // FCT_3D_DIST_CTRL (else #DIST CTRL -> 310015)
+  bool continue_after_error = false;          // lint mode: skip a bad block and go on
+  std::size_t max_block_chars = 4000;         // facts C3
 };
 
 
@@ -51,6 +60,15 @@ class Decoder {
   // All diagnostics so far (warnings and the error that stopped decoding).
   const std::vector<Diagnostic>& diagnostics() const;
   const std::string& file_name(std::uint16_t file_id) const;
+  const DecoderConfig& config() const;
+
+  // Kernel variables (V.G. / V.A.) and program variables by name, e.g.
+  // "V.G.NP[1].V.X", "V.A.MESS.X", "V.G.AKT_PLATZ", "P1", "V.P.X".
+  // The kernel uses these to bridge measured values and offsets into the
+  // decoder. get: nullopt when unknown or not set; set: false when the name
+  // is not a known kernel variable (or declared program variable).
+  std::optional<double> get_variable(std::string_view name) const;
+  bool set_variable(std::string_view name, double value);
 
  private:
   struct Impl;

@@ -27,6 +27,12 @@ struct ModalState {
   double thread_pitch_mm = 0;           // G33 I/J/K, modal to program end
   double r = 0;                         // circle radius, modal (older manual)
   std::int64_t d = 0;                   // active tool offset
+
+  // Added by the decoder work:
+  double feed_time_s = 0;               // F under G93 (time for the block)
+  double tap_pitch_mm = 0;              // G331/G332 K (signed: the sign picks the thread hand)
+  bool circle_center_absolute = false;  // G161 (true) / G162 (false, initial)
+  bool manual_mode = false;             // G201 (true) / G202 (false, initial)
 };
 
 }  // namespace nck::nc

@@ -10,6 +10,16 @@ namespace nck::nc {
 
 enum class SpindleM : std::uint8_t { none = 0, m3 = 3, m4 = 4, m5 = 5, m19 = 19 };
 
+// FEED_LINK [ON|OFF] [[FACT=..] [CORR=..] | AUTO] [MAIN] SRC=..  (facts B3)
+struct FeedLink {
+  std::optional<bool> on;           // ON / OFF (absent: keep)
+  std::optional<double> fact_pct;   // FACT= (programmed in 0.1 %, stored in %)
+  std::optional<double> corr;       // CORR=
+  bool automatic = false;           // AUTO
+  bool main = false;                // MAIN
+  std::string src;                  // SRC= (an identifier or a number as written)
+};
+
 struct SpindleCommand {
   std::string name;             // as programmed: "S" (main), "S1", "S2"...
   bool din = false;             // true: DIN words of the main spindle
@@ -32,6 +42,10 @@ struct SpindleCommand {
   bool get_dynamic_data = false;
   bool default_dynamic_data = false;
   std::optional<double> override_speed_fact_pct;  // OVERRIDE SPEED_FACT=
+
+  // Added by the decoder work:
+  std::string target;                 // configured spindle this addresses ("S1"...), main resolved
+  std::optional<FeedLink> feed_link;  // FEED_LINK ..
 };
 
 }  // namespace nck::nc

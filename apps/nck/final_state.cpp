@@ -1,0 +1,75 @@
+// --final: the state at the end of the run as one JSON document (SPEC 2.5).
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "machine_names.hpp"
+#include "output_writers.hpp"
+
+namespace nck::app {
+namespace {
+
+using nlohmann::json;
+
+std::string motion_name(nc::Motion m) {
+  switch (m) {
+    case nc::Motion::rapid: return "G0";
+    case nc::Motion::linear: return "G1";
+    case nc::Motion::cw: return "G2";
+    case nc::Motion::ccw: return "G3";
+    case nc::Motion::thread: return "G33";
+    case nc::Motion::tap: return "G63";
+    case nc::Motion::tap_rigid: return "G331";
+    case nc::Motion::tap_retract: return "G332";
+  }
+  return "G0";
+}
+
+json modal_json(const nc::ModalState& m) {
+  return json{{"motion", motion_name(m.motion)},
+              {"plane", fmt::format("G{}", static_cast<int>(m.plane))},
+              {"distance", m.absolute ? "G90" : "G91"},
+              {"feed_mode", fmt::format("G{}", static_cast<int>(m.feed_mode))},
+              {"speed_mode", fmt::format("G{}", static_cast<int>(m.speed_mode))},
+              {"radius_comp", fmt::format("G{}", static_cast<int>(m.radius_comp))},
+              {"units", m.inch ? "G70" : "G71"},
+              {"zero_offset", m.zero_offset == 0 ? std::string("G53")
+                              : m.zero_offset <= 6 ? fmt::format("G{}", 53 + m.zero_offset)
+                                                   : fmt::format("G159={}", m.zero_offset)},
+              {"F", m.feed_mm_min}};
+}
+
+}  // namespace
+
+bool write_final(const std::string& path, const config::Machine& m, const kernel::Kernel& k,
+                 double time_s, const std::vector<FinalError>& errors) {
+  File f;
+  if (!f.open(path)) return false;
+  json channels = json::array();
+  for (std::size_t c = 0; c < m.channels.size() && c < k.channel_count(); ++c) {
+    const kernel::ChannelSnapshot s = k.snapshot(c);
+    json axes = json::object();
+    for (std::size_t j = 0; j < m.channels[c].axes.size(); ++j)
+      axes[m.channels[c].axes[j].name] = json{{"mcs", s.axis_mcs[j]}, {"pcs", s.axis_pcs[j]}};
+    channels.push_back(json{{"axes", axes},
+                            {"modal", modal_json(s.modal)},
+                            {"offsets", json::object()},
+                            {"main_spindle", main_spindle_designation(m.channels[c])},
+                            {"tool", json{{"d", s.modal.d}}}});
+  }
+  json spindles = json::object();
+  for (const SpindleName& s : machine_spindles(m))
+    spindles[s.name] = json{{"rpm", 0.0}, {"pos", 0.0}, {"mode", "stop"}, {"gear", 1}, {"homed", false}};
+  json errs = json::array();
+  for (const FinalError& e : errors)
+    errs.push_back(json{{"id", e.id}, {"ch", e.channel}, {"line", e.line}, {"file", e.file}, {"msg", e.msg}});
+  json doc{{"time", time_s},
+           {"channels", channels},
+           {"spindles", spindles},
+           {"links", json::array()},
+           {"errors", errs}};
+  f.write(doc.dump(2));
+  f.write("\n");
+  return true;
+}
+
+}  // namespace nck::app

@@ -1,0 +1,190 @@
+#include "output_writers.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "machine_names.hpp"
+
+namespace nck::app {
+
+using nlohmann::json;
+
+const std::string& RunNames::file(std::size_t ch, std::uint16_t id) const {
+  static const std::string unknown;
+  if (ch >= decoders.size() || decoders[ch] == nullptr) return unknown;
+  return decoders[ch]->file_name(id);
+}
+
+File::~File() { close(); }
+
+bool File::open(const std::string& path) {
+  close();
+  f_ = std::fopen(path.c_str(), "w");
+  return f_ != nullptr;
+}
+
+void File::write(std::string_view s) {
+  if (f_) std::fwrite(s.data(), 1, s.size(), f_);
+}
+
+void File::close() {
+  if (f_) std::fclose(f_);
+  f_ = nullptr;
+}
+
+std::string sync_name(std::uint32_t bits) {
+  namespace s = config::sync;
+  static constexpr std::pair<std::uint32_t, const char*> kNames[] = {
+      {s::MOS, "MOS"},         {s::MVS_SVS, "MVS_SVS"}, {s::MVS_SNS, "MVS_SNS"},
+      {s::MNS_SNS, "MNS_SNS"}, {s::MNE_SNS, "MNE_SNS"}, {s::MVS_SLM, "MVS_SLM"},
+      {s::MVS_SLP, "MVS_SLP"}, {s::PLC_INFO, "PLC_INFO"}};
+  std::string out;
+  for (auto [bit, name] : kNames)
+    if (bits & bit) out += (out.empty() ? "" : "|") + std::string(name);
+  return out.empty() ? "NO_SYNCH" : out;
+}
+
+namespace {
+
+const char* kind_name(kernel::EventKind k) {
+  using K = kernel::EventKind;
+  switch (k) {
+    case K::block: return "block";
+    case K::plc_out: return "plc_out";
+    case K::plc_ack: return "plc_ack";
+    case K::wait: return "wait";
+    case K::wait_end: return "wait_end";
+    case K::spindle: return "spindle";
+    case K::speed_reached: return "speed_reached";
+    case K::gear: return "gear";
+    case K::link: return "link";
+    case K::offset: return "offset";
+    case K::stop: return "stop";
+    case K::warning: return "warning";
+    case K::error: return "error";
+    case K::end: return "end";
+  }
+  return "unknown";
+}
+
+const char* end_name(kernel::EndReason r) {
+  using R = kernel::EndReason;
+  switch (r) {
+    case R::m30: return "M30";
+    case R::m2: return "M2";
+    case R::error: return "error";
+    case R::reset: return "reset";
+    case R::max_time: return "max_time";
+  }
+  return "error";
+}
+
+std::string function_name(kernel::FunctionKind fn, std::int32_t number) {
+  using F = kernel::FunctionKind;
+  switch (fn) {
+    case F::m: return fmt::format("M{}", number);
+    case F::h: return fmt::format("H{}", number);
+    case F::t: return fmt::format("T{}", number);
+    case F::s: return "S";
+    case F::none: break;
+  }
+  return "";
+}
+
+json base_event(const kernel::Event& e) {
+  json j;
+  j["t"] = e.t_s;
+  if (e.channel > 0) j["ch"] = e.channel;
+  j["ev"] = kind_name(e.kind);
+  return j;
+}
+
+}  // namespace
+
+void EventWriter::write(const kernel::Event& e, const RunNames& names) {
+  if (!file_.is_open()) return;
+  json j = base_event(e);
+  const std::size_t ch = e.channel > 0 ? e.channel - 1u : 0u;
+  using K = kernel::EventKind;
+  switch (e.kind) {
+    case K::block:
+    case K::stop:
+      j["line"] = e.line;
+      j["n"] = e.has_n ? json(e.n) : json(nullptr);
+      j["file"] = names.file(ch, e.file_id);
+      break;
+    case K::plc_out:
+    case K::plc_ack:
+      j["fn"] = function_name(e.fn, e.fn_number);
+      j["spindle"] = nullptr;
+      j["value"] = e.fn == kernel::FunctionKind::s ? json(e.value) : json(nullptr);
+      if (e.kind == K::plc_out) j["sync"] = sync_name(e.sync);
+      break;
+    case K::warning:
+    case K::error:
+      j["id"] = number(e.id);
+      j["line"] = e.line;
+      j["file"] = names.file(ch, e.file_id);
+      j["msg"] = names.kernel ? names.kernel->message(e.message_index) : std::string();
+      break;
+    case K::end:
+      j["reason"] = end_name(e.end_reason);
+      break;
+    default:
+      break;
+  }
+  file_.write(j.dump());
+  file_.write("\n");
+}
+
+void EventWriter::write_diagnostic(double t_s, std::size_t ch, const Diagnostic& d) {
+  if (!file_.is_open()) return;
+  json j;
+  j["t"] = t_s;
+  j["ch"] = ch + 1;
+  j["ev"] = d.severity == Severity::error ? "error" : "warning";
+  j["id"] = number(d.id);
+  j["line"] = d.loc.line;
+  j["file"] = d.loc.file;
+  j["msg"] = d.message;
+  file_.write(j.dump());
+  file_.write("\n");
+}
+
+std::vector<std::string> TraceWriter::column_names(const config::Machine& m) {
+  std::vector<std::string> cols{"t"};
+  for (const std::string& a : path_axis_columns(m)) cols.push_back(a);
+  for (const SpindleName& s : machine_spindles(m)) {
+    cols.push_back(s.name + ".rpm");
+    cols.push_back(s.name + ".pos");
+    cols.push_back(s.name + ".act_rpm");
+  }
+  return cols;
+}
+
+bool TraceWriter::open(const std::string& path, const config::Machine& m, std::uint64_t every) {
+  if (!file_.open(path)) return false;
+  every_ = every == 0 ? 1 : every;
+  axes_per_channel_.clear();
+  for (const auto& ch : m.channels) axes_per_channel_.push_back(ch.axes.size());
+  spindle_count_ = machine_spindles(m).size();
+  std::string header;
+  for (const std::string& c : column_names(m)) header += (header.empty() ? "" : ",") + c;
+  file_.write(header + "\n");
+  return true;
+}
+
+void TraceWriter::write(std::uint64_t cycle, const kernel::TickOutput& out) {
+  if (!file_.is_open() || cycle % every_ != 0) return;
+  row_.clear();
+  fmt::format_to(std::back_inserter(row_), "{:.6f}", out.t_s);
+  for (std::size_t c = 0; c < axes_per_channel_.size(); ++c)
+    for (std::size_t j = 0; j < axes_per_channel_[c]; ++j)
+      fmt::format_to(std::back_inserter(row_), ",{:.6f}", out.channels[c].axis_mcs[j]);
+  // Spindles are not interpolated yet: they stand still at 0.
+  for (std::size_t s = 0; s < spindle_count_; ++s) row_ += ",0,0,0";
+  row_ += '\n';
+  file_.write(row_);
+}
+
+}  // namespace nck::app

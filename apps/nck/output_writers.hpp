@@ -1,0 +1,79 @@
+#pragma once
+// The files of `nck run`: events (JSON lines), trace (CSV), final state (JSON).
+// Each writer is opened before the run and always closed complete and valid,
+// also when the program aborts.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "nck/config/machine.hpp"
+#include "nck/kernel/kernel.hpp"
+#include "nck/nc/decoder.hpp"
+
+namespace nck::app {
+
+// Names a decoded file id / event text for output.
+struct RunNames {
+  std::vector<const nc::Decoder*> decoders;  // per channel
+  const kernel::Kernel* kernel = nullptr;
+  const std::string& file(std::size_t ch, std::uint16_t id) const;
+};
+
+class File {
+ public:
+  File() = default;
+  ~File();
+  File(const File&) = delete;
+  File& operator=(const File&) = delete;
+  bool open(const std::string& path);  // false when it cannot be written
+  bool is_open() const { return f_ != nullptr; }
+  void write(std::string_view s);
+  void close();
+
+ private:
+  std::FILE* f_ = nullptr;
+};
+
+std::string sync_name(std::uint32_t sync_bits);
+
+class EventWriter {
+ public:
+  bool open(const std::string& path) { return file_.open(path); }
+  bool is_open() const { return file_.is_open(); }
+  void write(const kernel::Event& e, const RunNames& names);
+  // A diagnostic that does not come from the cycle (decoder warnings).
+  void write_diagnostic(double t_s, std::size_t ch, const Diagnostic& d);
+  void close() { file_.close(); }
+
+ private:
+  File file_;
+};
+
+// One column per path axis of every channel (MCS set point) and per spindle.
+class TraceWriter {
+ public:
+  bool open(const std::string& path, const config::Machine& m, std::uint64_t every);
+  bool is_open() const { return file_.is_open(); }
+  void write(std::uint64_t cycle, const kernel::TickOutput& out);
+  void close() { file_.close(); }
+  static std::vector<std::string> column_names(const config::Machine& m);
+
+ private:
+  File file_;
+  std::uint64_t every_ = 1;
+  std::vector<std::size_t> axes_per_channel_;
+  std::size_t spindle_count_ = 0;
+  std::string row_;
+};
+
+struct FinalError {
+  std::uint32_t id = 0;
+  std::size_t channel = 0;
+  std::uint32_t line = 0;
+  std::string file, msg;
+};
+
+bool write_final(const std::string& path, const config::Machine& m, const kernel::Kernel& k,
+                 double time_s, const std::vector<FinalError>& errors);
+
+}  // namespace nck::app

@@ -1,0 +1,182 @@
+// `nck run`: load the machine, decode each channel's program, tick the
+// kernel until every channel ends, and write events, trace and final state.
+#include "run_command.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <fmt/format.h>
+#include <thread>
+#include <unistd.h>
+
+#include "nck/config/load.hpp"
+#include "nck/kernel/decoder_setup.hpp"
+#include "output_writers.hpp"
+
+namespace nck::app {
+namespace {
+
+struct Feed {
+  nc::Decoder decoder;
+  bool done = false;
+  std::size_t diagnostics_seen = 0;
+};
+
+struct Outputs {
+  EventWriter events;
+  TraceWriter trace;
+  std::vector<FinalError> errors;
+};
+
+bool print_load_diagnostics(const config::LoadResult& r) {
+  for (const Diagnostic& d : r.diagnostics.items()) fmt::print(stderr, "{}\n", format(d));
+  return r.ok();
+}
+
+// Decoder warnings appear when decoded; errors travel through the channel
+// queue so they are raised when execution reaches them.
+void report_new_warnings(Feed& f, std::size_t ch, double t_s, Outputs& out) {
+  const auto& ds = f.decoder.diagnostics();
+  for (; f.diagnostics_seen < ds.size(); ++f.diagnostics_seen) {
+    const Diagnostic& d = ds[f.diagnostics_seen];
+    if (d.severity != Severity::warning) continue;
+    fmt::print(stderr, "{}\n", format(d));
+    out.events.write_diagnostic(t_s, ch, d);
+  }
+}
+
+void feed_channel(kernel::Kernel& k, std::size_t ch, Feed& f, double t_s, Outputs& out) {
+  while (!f.done && k.queue_space(ch) > 0) {
+    nc::Decoder::Result r = f.decoder.next();
+    report_new_warnings(f, ch, t_s, out);
+    if (r.status == nc::Decoder::Status::block) {
+      k.push_block(ch, r.block, f.decoder.file_name(r.block.file_id));
+      f.done = r.block.program_end;
+    } else if (r.status == nc::Decoder::Status::end) {
+      k.push_end_without_m30(ch, 0, 0);
+      f.done = true;
+    } else {
+      const auto& ds = f.decoder.diagnostics();
+      Diagnostic d = ds.empty() ? make_diagnostic(ErrorId::NcFileUnreadable, {}, "decoder stopped")
+                                : ds.back();
+      k.push_error(ch, d, 0);
+      f.done = true;
+    }
+  }
+}
+
+void record_events(const kernel::TickOutput& o, const RunNames& names, Outputs& out) {
+  for (const kernel::Event& e : o.events) {
+    out.events.write(e, names);
+    if (e.kind != kernel::EventKind::error) continue;
+    const std::size_t ch = e.channel - 1u;
+    FinalError fe{number(e.id), e.channel, e.line, names.file(ch, e.file_id),
+                  names.kernel->message(e.message_index)};
+    fmt::print(stderr, "{}:{}: error {}: {}\n", fe.file, fe.line, fe.id, fe.msg);
+    out.errors.push_back(std::move(fe));
+  }
+}
+
+class Progress {
+ public:
+  explicit Progress(bool enabled) : enabled_(enabled && isatty(fileno(stderr))) {}
+  void update(double t_s) {
+    if (!enabled_) return;
+    auto now = std::chrono::steady_clock::now();
+    if (now - last_ < std::chrono::milliseconds(200)) return;
+    last_ = now;
+    fmt::print(stderr, "\rnck: simulated {:.1f} s", t_s);
+    shown_ = true;
+  }
+  ~Progress() {
+    if (shown_) fmt::print(stderr, "\r\033[K");
+  }
+
+ private:
+  bool enabled_;
+  bool shown_ = false;
+  std::chrono::steady_clock::time_point last_{};
+};
+
+}  // namespace
+
+int run_simulation(const RunOptions& opt) {
+  config::LoadResult loaded = config::load_machine(opt.machine);
+  if (!print_load_diagnostics(loaded)) return 2;
+  const config::Machine& m = *loaded.machine;
+  if (opt.programs.empty() || opt.programs.size() > m.channels.size()) {
+    fmt::print(stderr, "nck: error 940001: {} program(s) given for {} channel(s); give one per channel\n",
+               opt.programs.size(), m.channels.size());
+    return 2;
+  }
+  kernel::Kernel k;
+  if (auto ok = k.configure(m); !ok) {
+    fmt::print(stderr, "{}\n", format(ok.error()));
+    return 2;
+  }
+  Outputs out;
+  if ((!opt.events.empty() && !out.events.open(opt.events)) ||
+      (!opt.trace.empty() && !out.trace.open(opt.trace, m, opt.trace_every))) {
+    fmt::print(stderr, "nck: error 940002: cannot write the output files ({} / {})\n", opt.events, opt.trace);
+    return 2;
+  }
+  std::vector<Feed> feeds;
+  RunNames names;
+  names.kernel = &k;
+  for (std::size_t ch = 0; ch < m.channels.size(); ++ch) {
+    // A channel without a program stays idle: give it an empty feed.
+    const bool has_program = ch < opt.programs.size();
+    feeds.push_back(Feed{nc::Decoder(has_program ? opt.programs[ch] : std::string(),
+                                     kernel::decoder_config(m, ch)),
+                         !has_program});
+  }
+  for (const Feed& f : feeds) names.decoders.push_back(&f.decoder);
+
+  kernel::TickInput in;
+  kernel::TickOutput o;
+  Progress progress(opt.progress);
+  const auto wall_start = std::chrono::steady_clock::now();
+  bool time_limit = false;
+  for (;;) {
+    const double t_s = static_cast<double>(k.cycles()) * k.cycle_time_s();
+    for (std::size_t ch = 0; ch < feeds.size(); ++ch) feed_channel(k, ch, feeds[ch], t_s, out);
+    k.tick(in, o);
+    record_events(o, names, out);
+    out.trace.write(k.cycles() - 1, o);
+    bool done = true;
+    for (std::size_t ch = 0; ch < opt.programs.size(); ++ch) done = done && k.channel_done(ch);
+    if (done) break;
+    if (t_s + k.cycle_time_s() >= opt.max_time_s) {
+      time_limit = true;
+      break;
+    }
+    if (opt.realtime)
+      std::this_thread::sleep_until(wall_start + std::chrono::duration<double>(t_s));
+    progress.update(t_s);
+  }
+  const double end_s = static_cast<double>(k.cycles()) * k.cycle_time_s();
+  if (time_limit) {
+    for (std::size_t ch = 0; ch < k.channel_count(); ++ch) {
+      if (k.snapshot(ch).status == kernel::ChannelStatus::ended) continue;
+      kernel::Event e;
+      e.t_s = end_s;
+      e.channel = static_cast<std::uint8_t>(ch + 1);
+      e.kind = kernel::EventKind::end;
+      e.end_reason = kernel::EndReason::max_time;
+      out.events.write(e, names);
+    }
+    fmt::print(stderr, "nck: the simulated-time limit of {} s was reached before the program end\n",
+               opt.max_time_s);
+  }
+  out.events.close();
+  out.trace.close();
+  if (!opt.final_state.empty() && !write_final(opt.final_state, m, k, end_s, out.errors)) {
+    fmt::print(stderr, "nck: error 940002: cannot write {}\n", opt.final_state);
+    return 2;
+  }
+  bool aborted = time_limit;
+  for (std::size_t ch = 0; ch < k.channel_count(); ++ch)
+    aborted = aborted || k.snapshot(ch).status == kernel::ChannelStatus::aborted;
+  return aborted ? 1 : 0;
+}
+
+}  // namespace nck::app

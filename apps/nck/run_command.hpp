@@ -1,0 +1,22 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace nck::app {
+
+struct RunOptions {
+  std::string machine;
+  std::vector<std::string> programs;  // program i runs in channel i+1
+  std::string events, trace, final_state;
+  std::uint64_t trace_every = 1;
+  double max_time_s = 86400;  // simulated seconds
+  bool realtime = false;
+  bool progress = true;       // on a terminal only
+};
+
+// Exit codes (SPEC 2.2): 0 program end reached, 1 aborted by an NC error (or
+// the time limit), 2 bad usage or machine data.
+int run_simulation(const RunOptions& opt);
+
+}  // namespace nck::app

@@ -1,0 +1,60 @@
+#pragma once
+// Events the kernel emits in the cyclic path: plain data, no strings, so
+// producing one never allocates. The application turns them into JSON lines
+// (SPEC 2.3), looking texts up by id.
+#include <cstdint>
+
+#include "nck/core/diagnostic.hpp"
+
+namespace nck::kernel {
+
+enum class EventKind : std::uint8_t {
+  block,      // a block starts executing
+  plc_out,    // a function is output to the PLC
+  plc_ack,    // the PLC acknowledged it
+  wait,       // the channel starts waiting
+  wait_end,   // ... and stops waiting
+  spindle,    // a spindle changes mode
+  speed_reached,
+  gear,
+  link,
+  offset,
+  stop,       // M0 / M1 programmed stop
+  warning,
+  error,
+  end,        // program end of a channel
+};
+
+enum class EndReason : std::uint8_t { m30, m2, error, reset, max_time };
+
+// What a plc_out/plc_ack/wait refers to; extended by the spindle work.
+enum class FunctionKind : std::uint8_t { none, m, h, s, t };
+
+struct Event {
+  double t_s = 0;             // cycle start
+  std::uint8_t channel = 0;   // 1-based, 0 = not channel-specific
+  EventKind kind = EventKind::block;
+  // block / warning / error
+  std::uint16_t file_id = 0;
+  std::uint32_t line = 0;
+  bool has_n = false;
+  std::int64_t n = 0;
+  // warning / error
+  ErrorId id{};
+  std::uint32_t message_index = 0;  // Kernel::message(), text prepared outside the cycle
+  // plc_out / plc_ack / wait
+  FunctionKind fn = FunctionKind::none;
+  std::int32_t fn_number = 0;       // M3, T5 ...
+  double value = 0;                 // S: rpm
+  std::uint32_t sync = 0;           // synchronisation type bits
+  std::int8_t spindle = -1;         // index into the channel's spindles, -1 = none
+  std::uint8_t wait_reason = 0;     // WaitReason
+  // end
+  EndReason end_reason = EndReason::m30;
+};
+
+enum class WaitReason : std::uint8_t {
+  plc_ack, speed_reached, in_position, standstill, homing, gear_change, expl_syn, dwell, feedhold
+};
+
+}  // namespace nck::kernel

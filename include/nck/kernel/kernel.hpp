@@ -1,0 +1,76 @@
+#pragma once
+// The kernel: configured once (may allocate, may fail), then run cycle by
+// cycle through tick(), which never allocates, throws, locks, does I/O or
+// reads a clock: time comes in with the cycle count.
+//
+// Blocks reach a channel through push_block() outside the cycle (the
+// decoder's work is not real-time); the channel consumes them from a
+// fixed-size queue in tick().
+#include <cstdint>
+#include <expected>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "nck/config/machine.hpp"
+#include "nck/core/diagnostic.hpp"
+#include "nck/kernel/tick_io.hpp"
+#include "nck/nc/block.hpp"
+
+namespace nck::kernel {
+
+class Channel;
+
+// What a channel knows about its programmed state, for --final.
+struct ChannelSnapshot {
+  std::array<double, config::kMaxPathAxes> axis_mcs{};
+  std::array<double, config::kMaxPathAxes> axis_pcs{};
+  nc::ModalState modal;
+  ChannelStatus status = ChannelStatus::idle;
+};
+
+class Kernel {
+ public:
+  Kernel();
+  ~Kernel();
+  Kernel(Kernel&&) noexcept;
+  Kernel& operator=(Kernel&&) noexcept;
+
+  // setup: builds channels, limits and queues from the machine.
+  std::expected<void, Diagnostic> configure(const config::Machine& machine);
+
+  std::size_t channel_count() const;
+  double cycle_time_s() const { return cycle_s_; }
+
+  // setup side (not real-time) -------------------------------------------
+  // Free places in channel ch's block queue (ch 0-based).
+  std::size_t queue_space(std::size_t ch) const;
+  // Plans a decoded block for channel ch. Planning errors (e.g. a circle
+  // whose end point is not on it) become an error the channel raises when it
+  // reaches that block. file_name names the block's file for messages.
+  void push_block(std::size_t ch, const nc::Block& block, const std::string& file_name);
+  // The decoder stopped with an error: the channel raises it after the blocks
+  // already queued.
+  void push_error(std::size_t ch, const Diagnostic& d, std::uint16_t file_id);
+  // The decoder reached the end of the program without M2/M30.
+  void push_end_without_m30(std::size_t ch, std::uint16_t file_id, std::uint32_t line);
+  // Text of an event's message_index.
+  const std::string& message(std::uint32_t index) const;
+  ChannelSnapshot snapshot(std::size_t ch) const;
+
+  // real-time side -------------------------------------------------------
+  void tick(const TickInput& in, TickOutput& out) noexcept;
+
+  bool all_channels_done() const noexcept;
+  bool channel_done(std::size_t ch) const noexcept;
+  std::uint64_t cycles() const noexcept { return cycles_; }
+
+ private:
+  std::unique_ptr<const config::Machine> machine_;  // own copy: channels refer into it
+  std::vector<std::unique_ptr<Channel>> channels_;
+  std::vector<std::string> messages_;
+  double cycle_s_ = 0.001;
+  std::uint64_t cycles_ = 0;
+};
+
+}  // namespace nck::kernel

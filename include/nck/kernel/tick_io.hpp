@@ -1,0 +1,39 @@
+#pragma once
+// The data that crosses the cyclic boundary: fixed-size, no heap.
+#include <array>
+#include <cstdint>
+
+#include "nck/config/machine.hpp"
+#include "nck/core/fixed_vector.hpp"
+#include "nck/kernel/event.hpp"
+
+namespace nck::kernel {
+
+inline constexpr std::size_t kMaxEventsPerTick = 256;
+
+struct ChannelInput {
+  double feed_override_pct = 100;  // HLI feed override 0..100 (more is clamped)
+  bool feedhold = false;
+  bool reset = false;
+};
+
+struct TickInput {
+  std::array<ChannelInput, config::kMaxChannels> channels{};
+};
+
+enum class ChannelStatus : std::uint8_t { idle, running, waiting, ended, aborted };
+
+struct ChannelOutput {
+  std::array<double, config::kMaxPathAxes> axis_mcs{};  // set points, mm / deg
+  double path_velocity_mm_s = 0;
+  ChannelStatus status = ChannelStatus::idle;
+};
+
+struct TickOutput {
+  double t_s = 0;  // start of the cycle just computed
+  std::array<ChannelOutput, config::kMaxChannels> channels{};
+  FixedVector<Event, kMaxEventsPerTick> events;
+  std::uint32_t events_dropped = 0;  // events that did not fit this cycle
+};
+
+}  // namespace nck::kernel

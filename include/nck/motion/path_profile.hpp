@@ -1,0 +1,79 @@
+#pragma once
+// Online trapezoidal velocity profile along a path of known length, stepped
+// once per cycle. It speeds up with a_acc, cruises at min(v_cmd * override,
+// v_max) and brakes with a_dec so that it stops exactly at the end.
+//
+// Discrete-time model: each step sets the velocity v_k for the whole cycle and
+// moves s by v_k * dt, so the finite differences of the set points ARE the
+// profile's velocity and acceleration. The braking speed is computed from the
+// remaining distance with the discrete sum (not v = sqrt(2ad)), so the last
+// cycles do not crawl: the final cycle covers exactly what is left.
+#include <cstddef>
+
+#include "nck/motion/limits.hpp"
+
+namespace nck::motion {
+
+struct ProfileSample {
+  double s_mm = 0.0;         // path length travelled within the segment
+  double v_mm_s = 0.0;       // velocity during the last step
+  double a_mm_s2 = 0.0;      // (v_k - v_{k-1}) / dt of the last step
+  bool finished = false;     // s_mm == length (end reached)
+};
+
+class PathProfile {
+ public:
+  // Prepares a segment. The motion continues from the current velocity (0
+  // after a stop or reset()); if the previous segment ended with v_end > 0,
+  // the distance it ran past its end is carried into this one.
+  // v_end > 0 ends the segment at that speed without stopping (for
+  // continuous-path blending; the caller must keep v_end reachable by the
+  // next segment). Returns false (and becomes finished, s = 0) when
+  // length > 0 and v_cmd or a limit is not finite and positive. rt
+  bool start(double length_mm, double v_cmd_mm_s, const PathLimits& limits,
+             double v_end_mm_s = 0.0) noexcept;
+
+  // One cycle of dt seconds. override_factor 1 = 100 %; 0 = feedhold (brakes
+  // to standstill with a_dec and stays until the override rises again);
+  // negative or NaN is taken as 0. dt <= 0 or NaN changes nothing. rt
+  ProfileSample step(double dt_s, double override_factor) noexcept;
+
+  // Back to standstill with no carried distance (e.g. after an abort). rt
+  void reset() noexcept;
+
+  double s() const noexcept { return s_mm_; }
+  double v() const noexcept { return v_mm_s_; }
+  double length() const noexcept { return length_mm_; }
+  double remaining() const noexcept { return length_mm_ - s_mm_; }
+  bool finished() const noexcept { return finished_; }
+  const PathLimits& limits() const noexcept { return limits_; }
+
+ private:
+  double target_velocity(double override_factor) const noexcept;
+  ProfileSample finish(double v_step_mm_s, double v_prev_mm_s, double dt_s, double past_end_mm) noexcept;
+
+  double length_mm_ = 0.0;
+  double v_cmd_mm_s_ = 0.0;  // min(v_cmd, v_max)
+  double v_end_mm_s_ = 0.0;
+  PathLimits limits_{};
+  double s_mm_ = 0.0;
+  double v_mm_s_ = 0.0;
+  double carry_mm_ = 0.0;  // distance run past the previous segment's end
+  bool finished_ = true;
+};
+
+// Largest velocity v for this cycle such that moving v*dt now and then
+// braking by a*dt per cycle ends at standstill within remaining_mm. Stepping
+// with it and then a*dt less each cycle ends exactly at the target. rt
+double discrete_brake_velocity(double remaining_mm, double a_mm_s2, double dt_s) noexcept;
+
+// Distance covered when braking from v to standstill in that discrete way
+// (the inverse of discrete_brake_velocity). rt
+double discrete_brake_distance(double v_mm_s, double a_mm_s2, double dt_s) noexcept;
+
+// Analytic (continuous-time) duration of a rest-to-rest trapezoid or
+// triangle: for tests and estimates. 0 for length 0; +infinity when the
+// motion cannot happen (v or a limit not positive).
+double duration_estimate(double length_mm, double v_cmd_mm_s, const PathLimits& limits) noexcept;
+
+}  // namespace nck::motion

@@ -1,0 +1,130 @@
+#pragma once
+// The geometry of one motion block in axis space: a straight line over all
+// axes, or a circular arc in a plane with the other changing axes moving
+// linearly along (helix). Built at setup time (may fail, returns the cause);
+// evaluated in the cyclic path (noexcept, no allocation).
+//
+// Parametrisation: by path length s in [0, length()]. point_at(length())
+// returns the programmed end point exactly, so the path ends where the
+// program says, bit for bit.
+#include <cstddef>
+#include <cstdint>
+#include <expected>
+#include <string_view>
+
+#include "nck/motion/axis_vector.hpp"
+
+namespace nck::motion {
+
+// Why a segment could not be built. The kernel maps these to diagnostics
+// (full_circle_with_radius is TF5200 error 20034).
+enum class ArcError : std::uint8_t {
+  invalid_axis_count,       // n_axes is 0 or greater than kMaxAxes
+  plane_axis_out_of_range,  // plane axis index >= n_axes
+  plane_axes_equal,         // both plane axes are the same axis
+  non_finite_input,         // NaN or infinity in a coordinate, radius or centre
+  start_on_center,          // start point is the centre: radius 0
+  end_point_not_on_circle,  // start and end radius differ by more than the tolerance
+  full_circle_with_radius,  // start == end programmed with R (no unique circle)
+  radius_too_small,         // |R| smaller than half the chord
+  zero_radius,              // R = 0
+};
+
+// A short English description of the cause, for diagnostics.
+std::string_view describe(ArcError e) noexcept;
+
+enum class SegmentKind : std::uint8_t { line, arc };
+
+// How far the start and end radius of a centre-programmed arc may differ:
+// accepted when |r_end - r_start| <= max(abs_mm, rel * r_start).
+struct ArcTolerance {
+  double abs_mm = 0.01;
+  double rel = 1e-4;
+};
+
+class Segment {
+ public:
+  Segment() = default;  // an empty line of length 0 with no axes
+
+  SegmentKind kind() const noexcept { return kind_; }
+  std::size_t axis_count() const noexcept { return n_axes_; }
+  const AxisVector& start_point() const noexcept { return start_; }
+  const AxisVector& end_point() const noexcept { return end_; }
+
+  // Path length (mm): Euclidean over the axes that count (see make_line);
+  // for an arc sqrt(plane_arc^2 + sum of counted tracking-axis deltas^2).
+  double length() const noexcept { return length_mm_; }
+
+  // Position at path length s (clamped to [0, length()]). Axes >= axis_count()
+  // are left untouched in out. rt
+  void point_at(double s_mm, AxisVector& out) const noexcept;
+
+  // d(position)/ds at s: the per-axis share of the path velocity. A unit
+  // vector over the counted axes; axis velocity = tangent[i] * v_path. rt
+  void tangent_at(double s_mm, AxisVector& out) const noexcept;
+
+  // Arc data (meaningless for a line). "ccw" is positive rotation from
+  // plane axis a towards plane axis b (G17: a=X b=Y; G18: a=Z b=X; G19: a=Y b=Z).
+  std::size_t plane_a() const noexcept { return plane_a_; }
+  std::size_t plane_b() const noexcept { return plane_b_; }
+  double center_a() const noexcept { return center_a_; }
+  double center_b() const noexcept { return center_b_; }
+  double radius_start() const noexcept { return r_start_mm_; }
+  double radius_end() const noexcept { return r_end_mm_; }
+  double sweep_rad() const noexcept { return sweep_rad_; }  // signed, + = ccw
+  double plane_arc_length() const noexcept { return plane_len_mm_; }
+
+ private:
+  friend std::expected<Segment, ArcError> make_line(const AxisVector&, const AxisVector&,
+                                                    std::size_t, AxisMask) noexcept;
+  friend std::expected<Segment, ArcError> make_arc_center(const AxisVector&, const AxisVector&,
+                                                          std::size_t, std::size_t, std::size_t,
+                                                          double, double, bool, int, ArcTolerance,
+                                                          AxisMask) noexcept;
+
+  double fraction(double s_mm) const noexcept;
+
+  SegmentKind kind_ = SegmentKind::line;
+  std::size_t n_axes_ = 0;
+  AxisVector start_{};
+  AxisVector end_{};
+  double length_mm_ = 0.0;
+  // arc only
+  std::size_t plane_a_ = 0;
+  std::size_t plane_b_ = 1;
+  double center_a_ = 0.0;
+  double center_b_ = 0.0;
+  double r_start_mm_ = 0.0;
+  double r_end_mm_ = 0.0;  // the arc blends linearly from r_start to r_end
+  double angle_start_rad_ = 0.0;
+  double sweep_rad_ = 0.0;
+  double plane_len_mm_ = 0.0;
+};
+
+// Straight line. Only axes in length_axes count for the path length (so F
+// can refer to the main axes while a rotary axis follows); if none of those
+// moves, all moving axes count. setup
+std::expected<Segment, ArcError> make_line(const AxisVector& start, const AxisVector& end,
+                                           std::size_t n_axes,
+                                           AxisMask length_axes = kAllAxes) noexcept;
+
+// Arc around an absolute centre (the caller resolves I/J/K, G161/G162).
+// start == end in the plane gives a full circle; extra_turns adds full turns.
+// Every other axis that changes moves linearly (helix). setup
+std::expected<Segment, ArcError> make_arc_center(const AxisVector& start, const AxisVector& end,
+                                                 std::size_t n_axes, std::size_t plane_a,
+                                                 std::size_t plane_b, double center_a,
+                                                 double center_b, bool ccw, int extra_turns = 0,
+                                                 ArcTolerance tol = {},
+                                                 AxisMask length_axes = kAllAxes) noexcept;
+
+// Arc by radius: R > 0 the shorter arc, R < 0 the longer one. A full circle
+// cannot be given by R; |R| below half the chord is an error (a radius short by
+// no more than the tolerance is taken as a half circle). setup
+std::expected<Segment, ArcError> make_arc_radius(const AxisVector& start, const AxisVector& end,
+                                                 std::size_t n_axes, std::size_t plane_a,
+                                                 std::size_t plane_b, double radius_mm, bool ccw,
+                                                 ArcTolerance tol = {},
+                                                 AxisMask length_axes = kAllAxes) noexcept;
+
+}  // namespace nck::motion

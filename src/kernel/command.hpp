@@ -1,0 +1,52 @@
+#pragma once
+// One planned step of a channel: what the cyclic executor needs, as plain
+// fixed-size data (the queue between planning and tick() holds these).
+#include <cstdint>
+
+#include "nck/core/diagnostic.hpp"
+#include "nck/core/fixed_vector.hpp"
+#include "nck/kernel/event.hpp"
+#include "nck/motion/limits.hpp"
+#include "nck/motion/segment.hpp"
+
+namespace nck::kernel {
+
+enum class CommandKind : std::uint8_t {
+  motion,    // follow `segment` at `v_cmd_mm_s`
+  dwell,     // wait `dwell_s`
+  stop,      // M0 / M1
+  end,       // M2 / M30: program end
+  error,     // raise `error_id` and abort the channel
+  nop,       // a block without motion (only its block event and outputs)
+};
+
+// A function output to the PLC with the block (M, H, T).
+struct Output {
+  FunctionKind fn = FunctionKind::none;
+  std::int32_t number = 0;
+  std::uint32_t sync = 0;
+};
+
+struct Command {
+  CommandKind kind = CommandKind::nop;
+  // the block it came from
+  std::uint16_t file_id = 0;
+  std::uint32_t line = 0;
+  bool has_n = false;
+  std::int64_t n = 0;
+  bool emit_block_event = true;  // false for follow-up commands of one block
+  // motion
+  motion::Segment segment{};
+  motion::PathLimits limits{};
+  double v_cmd_mm_s = 0;
+  // dwell
+  double dwell_s = 0;
+  // end / error
+  EndReason end_reason = EndReason::m30;
+  ErrorId error_id{};
+  std::uint32_t message_index = 0;
+  // PLC outputs of the block
+  FixedVector<Output, 8> outputs;
+};
+
+}  // namespace nck::kernel

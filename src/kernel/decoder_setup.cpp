@@ -1,0 +1,23 @@
+#include "nck/kernel/decoder_setup.hpp"
+
+namespace nck::kernel {
+
+nc::DecoderConfig decoder_config(const config::Machine& m, std::size_t ch) {
+  nc::DecoderConfig d;
+  d.main_spindle.clear();
+  const config::ChannelConfig& c = m.channels.at(ch);
+  for (const auto& ax : c.axes) d.axis_names.push_back(ax.name);
+  for (const auto& s : c.spindles) {
+    d.spindle_names.push_back(s.name);
+    if (s.log_axis_nr == c.main_spindle_ax_nr) d.main_spindle = s.name;
+  }
+  if (d.main_spindle.empty() || c.main_spindle_ax_nr == 0)
+    d.main_spindle = c.spindles.empty() ? std::string() : c.spindles.front().name;
+  d.main_spindle_name = c.main_spindle_name.empty() ? "S" : c.main_spindle_name;
+  d.use_cached_files = (c.decoder_function & config::decoder_fct::FCT_USE_CACHED_FILES) != 0;
+  d.max_cache_number = c.max_cache_number;
+  d.max_cache_size_kb = c.max_cache_size_kb;
+  return d;
+}
+
+}  // namespace nck::kernel

@@ -1,0 +1,76 @@
+#include "nck/motion/limits.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace nck::motion {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Direction components below this do not limit (an axis that hardly moves).
+constexpr double kMinShare = 1e-12;
+
+void limit_by_share(PathLimits& out, const AxisDynamics& ax, double share) noexcept {
+  if (!(share > kMinShare)) return;
+  out.v_max_mm_s = std::min(out.v_max_mm_s, ax.v_max_mm_s / share);
+  out.a_acc_mm_s2 = std::min(out.a_acc_mm_s2, ax.a_acc_mm_s2 / share);
+  out.a_dec_mm_s2 = std::min(out.a_dec_mm_s2, ax.a_dec_mm_s2 / share);
+}
+
+// Segment of length 0: nothing moves; report the smallest axis limits so the
+// result is still finite and usable.
+PathLimits standstill_limits(const Segment& seg, std::span<const AxisDynamics> axes) noexcept {
+  PathLimits out{kInf, kInf, kInf};
+  const std::size_t n = std::min(seg.axis_count(), axes.size());
+  for (std::size_t i = 0; i < n; ++i) limit_by_share(out, axes[i], 1.0);
+  if (!std::isfinite(out.v_max_mm_s)) out = PathLimits{};
+  return out;
+}
+
+void add_arc_plane(PathLimits& out, const Segment& seg, std::span<const AxisDynamics> axes) noexcept {
+  const std::size_t a = seg.plane_a(), b = seg.plane_b();
+  if (a >= axes.size() || b >= axes.size()) return;
+  const AxisDynamics& da = axes[a];
+  const AxisDynamics& db = axes[b];
+  // Share of the path velocity that runs in the plane (1 for a plain arc).
+  const double plane_share = seg.plane_arc_length() / seg.length();
+  if (!(plane_share > kMinShare)) return;
+  const double v_plane = std::min(da.v_max_mm_s, db.v_max_mm_s);
+  const double acc_plane = std::min(da.a_acc_mm_s2, db.a_acc_mm_s2);
+  const double dec_plane = std::min(da.a_dec_mm_s2, db.a_dec_mm_s2);
+  // Centripetal acceleration acts whether the path speeds up or slows down.
+  const double any_plane = std::min(acc_plane, dec_plane);
+  const double split = std::numbers::sqrt2;
+  const double r = std::min(seg.radius_start(), seg.radius_end());
+  const double v_centripetal = std::sqrt(std::max(any_plane, 0.0) * r / split);
+  out.v_max_mm_s = std::min(out.v_max_mm_s, std::min(v_plane, v_centripetal) / plane_share);
+  out.a_acc_mm_s2 = std::min(out.a_acc_mm_s2, acc_plane / split / plane_share);
+  out.a_dec_mm_s2 = std::min(out.a_dec_mm_s2, dec_plane / split / plane_share);
+}
+
+}  // namespace
+
+bool valid(const PathLimits& l) noexcept {
+  auto ok = [](double x) { return std::isfinite(x) && x > 0.0; };
+  return ok(l.v_max_mm_s) && ok(l.a_acc_mm_s2) && ok(l.a_dec_mm_s2);
+}
+
+PathLimits path_limits(const Segment& seg, std::span<const AxisDynamics> axes) noexcept {
+  const double len = seg.length();
+  if (!(len > 0.0)) return standstill_limits(seg, axes);
+  PathLimits out{kInf, kInf, kInf};
+  const bool arc = seg.kind() == SegmentKind::arc;
+  const std::size_t n = std::min(seg.axis_count(), axes.size());
+  const AxisVector& p0 = seg.start_point();
+  const AxisVector& p1 = seg.end_point();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (arc && (i == seg.plane_a() || i == seg.plane_b())) continue;
+    limit_by_share(out, axes[i], std::abs(p1[i] - p0[i]) / len);
+  }
+  if (arc) add_arc_plane(out, seg, axes);
+  return out;
+}
+
+}  // namespace nck::motion

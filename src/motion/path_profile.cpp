@@ -1,0 +1,137 @@
+#include "nck/motion/path_profile.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace nck::motion {
+namespace {
+
+// Remaining distances below this (1 nm) count as arrived: it absorbs the
+// rounding of s += v*dt so the profile never needs an extra crawling cycle.
+constexpr double kSnapMm = 1e-9;
+
+bool positive_finite(double x) noexcept { return std::isfinite(x) && x > 0.0; }
+
+}  // namespace
+
+double discrete_brake_velocity(double remaining_mm, double a_mm_s2, double dt_s) noexcept {
+  if (!(remaining_mm > 0.0) || !positive_finite(a_mm_s2) || !positive_finite(dt_s)) return 0.0;
+  const double q = a_mm_s2 * dt_s * dt_s;  // distance step of the braking staircase
+  if (!std::isfinite(remaining_mm)) return std::numeric_limits<double>::max();
+  // Braking from v = n*a*dt (then n-1, ..., 1 steps of a*dt) covers q*n(n+1)/2.
+  // n = the largest whole staircase that fits; the rest is spread over its n+1 cycles.
+  double n = std::floor((std::sqrt(1.0 + 8.0 * remaining_mm / q) - 1.0) / 2.0);
+  n = std::max(n, 0.0);
+  // The square root may be off by one ulp either way: fix n exactly.
+  if (n > 0.0 && q * n * (n + 1.0) / 2.0 > remaining_mm) n -= 1.0;
+  if (q * (n + 1.0) * (n + 2.0) / 2.0 <= remaining_mm) n += 1.0;
+  return remaining_mm / (dt_s * (n + 1.0)) + a_mm_s2 * dt_s * n / 2.0;
+}
+
+double discrete_brake_distance(double v_mm_s, double a_mm_s2, double dt_s) noexcept {
+  if (!(v_mm_s > 0.0) || !positive_finite(a_mm_s2) || !positive_finite(dt_s)) return 0.0;
+  const double dv = a_mm_s2 * dt_s;
+  const double n = std::floor(v_mm_s / dv);
+  return dt_s * (n + 1.0) * (v_mm_s - dv * n / 2.0);
+}
+
+double duration_estimate(double length_mm, double v_cmd_mm_s, const PathLimits& limits) noexcept {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  if (!(length_mm > 0.0)) return 0.0;
+  if (!std::isfinite(length_mm) || !valid(limits) || !(v_cmd_mm_s > 0.0)) return kInf;
+  const double acc = limits.a_acc_mm_s2, dec = limits.a_dec_mm_s2;
+  const double v_cruise = std::min(v_cmd_mm_s, limits.v_max_mm_s);
+  // Peak of the triangle that just fits: L = v^2/(2 acc) + v^2/(2 dec).
+  const double v_tri = std::sqrt(2.0 * length_mm * acc * dec / (acc + dec));
+  const double v = std::min(v_cruise, v_tri);
+  const double ramp_mm = v * v / (2.0 * acc) + v * v / (2.0 * dec);
+  return v / acc + v / dec + std::max(length_mm - ramp_mm, 0.0) / v;
+}
+
+void PathProfile::reset() noexcept {
+  length_mm_ = 0.0;
+  s_mm_ = 0.0;
+  v_mm_s_ = 0.0;
+  carry_mm_ = 0.0;
+  finished_ = true;
+}
+
+bool PathProfile::start(double length_mm, double v_cmd_mm_s, const PathLimits& limits,
+                        double v_end_mm_s) noexcept {
+  if (!std::isfinite(v_mm_s_) || v_mm_s_ < 0.0) v_mm_s_ = 0.0;
+  const double carry = carry_mm_;
+  carry_mm_ = 0.0;
+  limits_ = limits;
+  v_end_mm_s_ = 0.0;
+  if (!std::isfinite(length_mm) || length_mm < 0.0) {
+    length_mm_ = s_mm_ = 0.0;
+    finished_ = true;
+    return false;
+  }
+  length_mm_ = length_mm;
+  if (length_mm <= kSnapMm) {  // nothing to move: done at once
+    s_mm_ = length_mm;
+    finished_ = true;
+    return true;
+  }
+  if (!valid(limits) || !positive_finite(v_cmd_mm_s)) {
+    length_mm_ = s_mm_ = 0.0;
+    finished_ = true;
+    return false;
+  }
+  v_cmd_mm_s_ = std::min(v_cmd_mm_s, limits.v_max_mm_s);
+  if (positive_finite(v_end_mm_s)) v_end_mm_s_ = std::min(v_end_mm_s, v_cmd_mm_s_);
+  s_mm_ = std::min(carry, length_mm);
+  finished_ = false;
+  return true;
+}
+
+double PathProfile::target_velocity(double override_factor) const noexcept {
+  if (!(override_factor > 0.0)) return 0.0;  // also NaN: hold rather than guess
+  return std::min(v_cmd_mm_s_ * override_factor, limits_.v_max_mm_s);
+}
+
+ProfileSample PathProfile::finish(double v_step_mm_s, double v_prev_mm_s, double dt_s,
+                                  double past_end_mm) noexcept {
+  s_mm_ = length_mm_;
+  finished_ = true;
+  const bool flying = v_end_mm_s_ > 0.0;
+  v_mm_s_ = flying ? v_step_mm_s : 0.0;
+  carry_mm_ = flying ? std::max(past_end_mm, 0.0) : 0.0;
+  return ProfileSample{s_mm_, v_step_mm_s, (v_step_mm_s - v_prev_mm_s) / dt_s, true};
+}
+
+ProfileSample PathProfile::step(double dt_s, double override_factor) noexcept {
+  if (finished_) {
+    // Stepping past the end means the path stopped there.
+    v_mm_s_ = 0.0;
+    carry_mm_ = 0.0;
+    return ProfileSample{s_mm_, 0.0, 0.0, true};
+  }
+  if (!positive_finite(dt_s)) return ProfileSample{s_mm_, v_mm_s_, 0.0, false};
+  const double v_prev = v_mm_s_;
+  const double left_mm = length_mm_ - s_mm_;
+  if (left_mm <= kSnapMm) return finish(left_mm / dt_s, v_prev, dt_s, 0.0);
+
+  const double target = target_velocity(override_factor);
+  double v = v_prev < target ? std::min(v_prev + limits_.a_acc_mm_s2 * dt_s, target)
+                             : std::max(v_prev - limits_.a_dec_mm_s2 * dt_s, target);
+  // Braking curve: to standstill at the end, or (blending) to v_end at the
+  // end, which is the curve to standstill at a point beyond the end.
+  const double beyond_mm = discrete_brake_distance(v_end_mm_s_, limits_.a_dec_mm_s2, dt_s);
+  v = std::min(v, discrete_brake_velocity(left_mm + beyond_mm, limits_.a_dec_mm_s2, dt_s));
+  v = std::max(v, 0.0);
+
+  const double move_mm = v * dt_s;
+  if (move_mm >= left_mm - kSnapMm) {
+    // Stopping at the end: report the speed that covers exactly what was left.
+    const double v_step = v_end_mm_s_ > 0.0 ? v : left_mm / dt_s;
+    return finish(v_step, v_prev, dt_s, move_mm - left_mm);
+  }
+  s_mm_ += move_mm;
+  v_mm_s_ = v;
+  return ProfileSample{s_mm_, v, (v - v_prev) / dt_s, false};
+}
+
+}  // namespace nck::motion

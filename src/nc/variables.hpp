@@ -1,0 +1,64 @@
+#pragma once
+// Variable stores of the decoder: P parameters, program variables declared
+// in #VAR (V.L. per call level, V.P./V.S./V.CYC. program-wide) and the
+// kernel variables (V.G./V.A.) that the kernel reads and writes by name.
+// Names are normalised to upper case with evaluated indices:
+// "V.P.ARR[2][0]", "V.G.NP[1].V.X".
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+namespace nck::nc::detail {
+
+enum class VarStatus : std::uint8_t { ok, undefined, unknown_kernel, is_string, not_string,
+                                      index_out_of_range, undeclared };
+
+struct VarValue {
+  double num = 0;
+  std::string str;
+  bool is_string = false;
+};
+
+class Variables {
+ public:
+  Variables(std::vector<std::string> axis_names, int max_zero_index);
+
+  // P parameters.
+  VarStatus read_p(std::int64_t idx, double& out) const;
+  void write_p(std::int64_t idx, double v) { p_[idx] = v; }
+
+  // Any V. name (normalised key, see above).
+  VarStatus read(const std::string& key, double& out) const;
+  VarStatus write(const std::string& key, double v);
+  VarStatus write_string(const std::string& key, std::string v);
+  // Declares a variable (#VAR). dims empty = scalar. Elements start at 0 / "".
+  // Returns false when the array would be too large.
+  bool declare(const std::string& base, const std::vector<int>& dims, bool is_string);
+  bool is_kernel(std::string_view key) const;
+  bool known_kernel(const std::string& key) const;
+
+  // V.L. scope per call level.
+  void push_scope() { locals_.emplace_back(); }
+  void pop_scope() {
+    if (locals_.size() > 1) locals_.pop_back();
+  }
+
+ private:
+  using Map = std::unordered_map<std::string, VarValue>;
+  Map* scope_for(std::string_view key);
+  const Map* scope_for(std::string_view key) const;
+  VarStatus check_index(const Map& m, const std::string& key) const;
+
+  std::vector<std::string> axes_;
+  int max_zero_index_;
+  std::unordered_map<std::int64_t, double> p_;
+  std::vector<Map> locals_;  // V.L. and V.CYC., one map per call level
+  Map globals_;              // V.P., V.S.
+  std::unordered_map<std::string, double> kernel_;  // V.G., V.A.
+  // declared array dimensions by base name, for index checks
+  std::unordered_map<std::string, std::vector<int>> dims_;
+};
+
+}  // namespace nck::nc::detail

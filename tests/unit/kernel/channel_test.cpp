@@ -1,0 +1,219 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "nck/kernel/kernel.hpp"
+#include "test_machine.hpp"
+
+namespace nck::kernel {
+namespace {
+
+using testing::end_block;
+using testing::move;
+using testing::xyz_machine;
+
+struct RunLog {
+  std::vector<Event> events;
+  std::vector<std::array<double, 3>> positions;
+  double end_t = 0;
+};
+
+RunLog run_all(Kernel& k, std::size_t max_cycles = 1'000'000) {
+  RunLog r;
+  TickInput in;
+  TickOutput out;
+  for (std::size_t i = 0; i < max_cycles && !k.all_channels_done(); ++i) {
+    k.tick(in, out);
+    for (const Event& e : out.events) r.events.push_back(e);
+    r.positions.push_back({out.channels[0].axis_mcs[0], out.channels[0].axis_mcs[1],
+                           out.channels[0].axis_mcs[2]});
+    r.end_t = out.t_s;
+  }
+  return r;
+}
+
+TEST(Channel, LinearMoveEndsExactlyAtTargetWithinLimits) {
+  config::Machine m = xyz_machine(500, 2000);
+  Kernel k;
+  ASSERT_TRUE(k.configure(m));
+  k.push_block(0, move(1, nc::Motion::linear, 100.0, 50.0, {}, 6000), "t.nc");
+  k.push_block(0, end_block(2), "t.nc");
+  RunLog r = run_all(k);
+  ASSERT_TRUE(k.all_channels_done());
+  EXPECT_DOUBLE_EQ(r.positions.back()[0], 100.0);
+  EXPECT_DOUBLE_EQ(r.positions.back()[1], 50.0);
+  // F6000 mm/min = 100 mm/s along the path, never faster.
+  for (std::size_t i = 1; i < r.positions.size(); ++i) {
+    const double dx = r.positions[i][0] - r.positions[i - 1][0];
+    const double dy = r.positions[i][1] - r.positions[i - 1][1];
+    EXPECT_LE(std::hypot(dx, dy) / 0.001, 100.0 + 1e-6);
+  }
+  // Analytic trapezoid: 111.8 mm at 100 mm/s with 2000 mm/s^2 (X component
+  // limits the path acceleration: 2000 / (100/111.8)).
+  const double len = std::hypot(100.0, 50.0);
+  const double a = 2000.0 / (100.0 / len);
+  const double t_expected = len / 100.0 + 100.0 / a;
+  EXPECT_NEAR(r.end_t, t_expected, 0.01);
+}
+
+TEST(Channel, RapidMovesAtRapidVelocity) {
+  config::Machine m = xyz_machine(250, 10000);
+  Kernel k;
+  ASSERT_TRUE(k.configure(m));
+  k.push_block(0, move(1, nc::Motion::rapid, 250.0), "t.nc");
+  k.push_block(0, end_block(2), "t.nc");
+  RunLog r = run_all(k);
+  double v_max = 0;
+  for (std::size_t i = 1; i < r.positions.size(); ++i)
+    v_max = std::max(v_max, (r.positions[i][0] - r.positions[i - 1][0]) / 0.001);
+  EXPECT_NEAR(v_max, 250.0, 1e-6);
+  EXPECT_DOUBLE_EQ(r.positions.back()[0], 250.0);
+}
+
+TEST(Channel, IncrementalWordsAddToTheProgrammedPosition) {
+  Kernel k;
+  ASSERT_TRUE(k.configure(xyz_machine()));
+  k.push_block(0, move(1, nc::Motion::linear, 10.0), "t.nc");
+  nc::Block inc = move(2, nc::Motion::linear, 5.0);
+  inc.modal.absolute = false;
+  k.push_block(0, inc, "t.nc");
+  k.push_block(0, end_block(3), "t.nc");
+  RunLog r = run_all(k);
+  EXPECT_DOUBLE_EQ(r.positions.back()[0], 15.0);
+}
+
+TEST(Channel, QuarterCircleEndsOnTarget) {
+  Kernel k;
+  ASSERT_TRUE(k.configure(xyz_machine()));
+  k.push_block(0, move(1, nc::Motion::linear, 10.0, 0.0), "t.nc");
+  nc::Block arc = move(2, nc::Motion::ccw, 0.0, 10.0);
+  arc.ijk[0] = -10.0;  // centre at the origin
+  k.push_block(0, arc, "t.nc");
+  k.push_block(0, end_block(3), "t.nc");
+  RunLog r = run_all(k);
+  EXPECT_NEAR(r.positions.back()[0], 0.0, 1e-9);
+  EXPECT_NEAR(r.positions.back()[1], 10.0, 1e-9);
+  for (const auto& p : r.positions)
+    if (p[1] > 1e-9) EXPECT_NEAR(std::hypot(p[0], p[1]), 10.0, 1e-6);
+}
+
+TEST(Channel, DwellTakesItsTime) {
+  Kernel k;
+  ASSERT_TRUE(k.configure(xyz_machine()));
+  nc::Block d;
+  d.line = 1;
+  d.dwell_s = 0.25;
+  k.push_block(0, d, "t.nc");
+  k.push_block(0, end_block(2), "t.nc");
+  RunLog r = run_all(k);
+  ASSERT_FALSE(r.events.empty());
+  EXPECT_EQ(r.events.back().kind, EventKind::end);
+  EXPECT_NEAR(r.events.back().t_s, 0.25, 1e-9);
+}
+
+TEST(Channel, FeedMoveWithoutFeedIsAnErrorAtItsLine) {
+  Kernel k;
+  ASSERT_TRUE(k.configure(xyz_machine()));
+  k.push_block(0, move(7, nc::Motion::linear, 10.0, {}, {}, 0.0), "t.nc");
+  k.push_block(0, end_block(8), "t.nc");
+  RunLog r = run_all(k);
+  auto err = std::find_if(r.events.begin(), r.events.end(),
+                          [](const Event& e) { return e.kind == EventKind::error; });
+  ASSERT_NE(err, r.events.end());
+  EXPECT_EQ(err->id, ErrorId::KernelNoFeed);
+  EXPECT_EQ(err->line, 7u);
+  EXPECT_EQ(r.events.back().end_reason, EndReason::error);
+  EXPECT_EQ(k.snapshot(0).status, ChannelStatus::aborted);
+}
+
+TEST(Channel, SoftwareLimitIsAnError) {
+  config::Machine m = xyz_machine();
+  m.axes[0].swe_pos = 50;
+  Kernel k;
+  ASSERT_TRUE(k.configure(m));
+  k.push_block(0, move(3, nc::Motion::linear, 60.0), "t.nc");
+  RunLog r = run_all(k);
+  ASSERT_FALSE(r.events.empty());
+  EXPECT_EQ(r.events[0].id, ErrorId::KernelSoftwareLimit);
+  EXPECT_NE(k.message(r.events[0].message_index).find("X 60"), std::string::npos);
+}
+
+TEST(Channel, CircleWithBadEndPointIsAnError) {
+  Kernel k;
+  ASSERT_TRUE(k.configure(xyz_machine()));
+  nc::Block arc = move(4, nc::Motion::cw, 20.0, 0.0);
+  arc.ijk[0] = 5.0;  // centre (5,0): start radius 5, end radius 15
+  k.push_block(0, arc, "t.nc");
+  RunLog r = run_all(k);
+  ASSERT_FALSE(r.events.empty());
+  EXPECT_EQ(r.events[0].id, ErrorId::KernelArcEndNotOnCircle);
+}
+
+TEST(Channel, UnsupportedFunctionIsReportedNotIgnored) {
+  Kernel k;
+  ASSERT_TRUE(k.configure(xyz_machine()));
+  nc::Block b;
+  b.line = 5;
+  b.modal.zero_offset = 1;  // G54: zero offsets come with the coordinate-system work
+  b.axes[0] = 1.0;
+  k.push_block(0, b, "t.nc");
+  RunLog r = run_all(k);
+  ASSERT_FALSE(r.events.empty());
+  EXPECT_EQ(r.events[0].id, ErrorId::KernelNotYetSupported);
+  EXPECT_NE(k.message(r.events[0].message_index).find("G54"), std::string::npos);
+}
+
+TEST(Channel, FeedholdStopsAndResumes) {
+  Kernel k;
+  ASSERT_TRUE(k.configure(xyz_machine()));
+  k.push_block(0, move(1, nc::Motion::linear, 100.0), "t.nc");
+  k.push_block(0, end_block(2), "t.nc");
+  TickInput in;
+  TickOutput out;
+  for (int i = 0; i < 300; ++i) k.tick(in, out);
+  in.channels[0].feedhold = true;
+  for (int i = 0; i < 500; ++i) k.tick(in, out);
+  const double held = out.channels[0].axis_mcs[0];
+  k.tick(in, out);
+  EXPECT_DOUBLE_EQ(out.channels[0].axis_mcs[0], held);
+  EXPECT_LT(held, 100.0);
+  in.channels[0].feedhold = false;
+  for (int i = 0; i < 5000 && !k.all_channels_done(); ++i) k.tick(in, out);
+  EXPECT_TRUE(k.all_channels_done());
+  EXPECT_DOUBLE_EQ(out.channels[0].axis_mcs[0], 100.0);
+}
+
+TEST(Channel, ResetEndsTheProgram) {
+  Kernel k;
+  ASSERT_TRUE(k.configure(xyz_machine()));
+  k.push_block(0, move(1, nc::Motion::linear, 100.0), "t.nc");
+  TickInput in;
+  TickOutput out;
+  k.tick(in, out);
+  in.channels[0].reset = true;
+  k.tick(in, out);
+  ASSERT_EQ(out.events.size(), 1u);
+  EXPECT_EQ(out.events[0].end_reason, EndReason::reset);
+}
+
+TEST(Kernel, TwoChannelsTickSideBySide) {
+  config::Machine m = xyz_machine();
+  m.channels.push_back(m.channels[0]);
+  m.channels[1].number = 2;
+  m.channel_data.emplace_back();
+  Kernel k;
+  ASSERT_TRUE(k.configure(m));
+  k.push_block(0, move(1, nc::Motion::linear, 10.0), "a.nc");
+  k.push_block(0, end_block(2), "a.nc");
+  k.push_block(1, move(1, nc::Motion::linear, 20.0), "b.nc");
+  k.push_block(1, end_block(2), "b.nc");
+  TickInput in;
+  TickOutput out;
+  for (int i = 0; i < 10000 && !k.all_channels_done(); ++i) k.tick(in, out);
+  EXPECT_TRUE(k.all_channels_done());
+  EXPECT_DOUBLE_EQ(k.snapshot(0).axis_mcs[0], 10.0);
+  EXPECT_DOUBLE_EQ(k.snapshot(1).axis_mcs[0], 20.0);
+}
+
+}  // namespace
+}  // namespace nck::kernel

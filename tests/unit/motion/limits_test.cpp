@@ -1,0 +1,110 @@
+// Path limits from axis limits: lines at angles, arcs with centripetal limit.
+#include "nck/motion/limits.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace nck::motion {
+namespace {
+
+constexpr double kSqrt2 = std::numbers::sqrt2;
+
+AxisVector pt(double x, double y, double z = 0.0) {
+  AxisVector v{};
+  v[0] = x;
+  v[1] = y;
+  v[2] = z;
+  return v;
+}
+
+TEST(PathLimits, SingleAxisLineTakesThatAxis) {
+  const std::array<AxisDynamics, 2> ax{{{100, 1000, 2000}, {10, 10, 10}}};
+  auto seg = make_line(pt(0, 0), pt(50, 0), 2);
+  ASSERT_TRUE(seg);
+  const PathLimits l = path_limits(*seg, ax);
+  EXPECT_DOUBLE_EQ(l.v_max_mm_s, 100.0);  // Y does not move: its low limits do not count
+  EXPECT_DOUBLE_EQ(l.a_acc_mm_s2, 1000.0);
+  EXPECT_DOUBLE_EQ(l.a_dec_mm_s2, 2000.0);
+}
+
+TEST(PathLimits, Line45DegreesEqualAxes) {
+  const std::array<AxisDynamics, 2> ax{{{100, 1000, 1000}, {100, 1000, 1000}}};
+  auto seg = make_line(pt(0, 0), pt(10, 10), 2);
+  ASSERT_TRUE(seg);
+  const PathLimits l = path_limits(*seg, ax);
+  EXPECT_NEAR(l.v_max_mm_s, 100.0 * kSqrt2, 1e-9);
+  EXPECT_NEAR(l.a_acc_mm_s2, 1000.0 * kSqrt2, 1e-9);
+}
+
+TEST(PathLimits, Line45DegreesSlowAxisDominates) {
+  const std::array<AxisDynamics, 2> ax{{{100, 1000, 800}, {50, 2000, 300}}};
+  auto seg = make_line(pt(0, 0), pt(-10, 10), 2);
+  ASSERT_TRUE(seg);
+  const PathLimits l = path_limits(*seg, ax);
+  EXPECT_NEAR(l.v_max_mm_s, 50.0 * kSqrt2, 1e-9);
+  EXPECT_NEAR(l.a_acc_mm_s2, 1000.0 * kSqrt2, 1e-9);
+  EXPECT_NEAR(l.a_dec_mm_s2, 300.0 * kSqrt2, 1e-9);
+}
+
+TEST(PathLimits, Line3_4_12) {
+  // Direction (3,4,12)/13: Z is the limiting axis for equal limits.
+  const std::array<AxisDynamics, 3> ax{{{100, 100, 100}, {100, 100, 100}, {100, 100, 100}}};
+  auto seg = make_line(pt(0, 0, 0), pt(3, 4, 12), 3);
+  ASSERT_TRUE(seg);
+  EXPECT_NEAR(path_limits(*seg, ax).v_max_mm_s, 100.0 * 13.0 / 12.0, 1e-9);
+}
+
+TEST(PathLimits, ArcCentripetal) {
+  // r = 10, a = 1000: v <= sqrt(1000 * 10 / sqrt2) = 84.09 mm/s; tangential a/sqrt2.
+  const std::array<AxisDynamics, 2> ax{{{1000, 1000, 1000}, {1000, 1000, 1000}}};
+  auto seg = make_arc_center(pt(10, 0), pt(0, 10), 2, 0, 1, 0, 0, true);
+  ASSERT_TRUE(seg);
+  const PathLimits l = path_limits(*seg, ax);
+  EXPECT_NEAR(l.v_max_mm_s, std::sqrt(10000.0 / kSqrt2), 1e-9);
+  EXPECT_NEAR(l.v_max_mm_s, 84.0896, 1e-4);
+  EXPECT_NEAR(l.a_acc_mm_s2, 1000.0 / kSqrt2, 1e-9);
+}
+
+TEST(PathLimits, ArcBigRadiusTakesSlowerPlaneAxis) {
+  const std::array<AxisDynamics, 2> ax{{{200, 5000, 4000}, {100, 3000, 6000}}};
+  auto seg = make_arc_center(pt(1000, 0), pt(0, 1000), 2, 0, 1, 0, 0, false);
+  ASSERT_TRUE(seg);
+  const PathLimits l = path_limits(*seg, ax);
+  EXPECT_DOUBLE_EQ(l.v_max_mm_s, 100.0);  // centripetal allows ~1682 mm/s
+  EXPECT_NEAR(l.a_acc_mm_s2, 3000.0 / kSqrt2, 1e-9);
+  EXPECT_NEAR(l.a_dec_mm_s2, 4000.0 / kSqrt2, 1e-9);
+}
+
+TEST(PathLimits, HelixTrackingAxis) {
+  // Full circle r=10 (arc 62.83) with Z lead 62.83: Z share 1/sqrt2 limits v.
+  const double arc = 20.0 * std::numbers::pi;
+  const std::array<AxisDynamics, 3> ax{{{1000, 1e6, 1e6}, {1000, 1e6, 1e6}, {10, 100, 100}}};
+  auto seg = make_arc_center(pt(10, 0, 0), pt(10, 0, arc), 3, 0, 1, 0, 0, true);
+  ASSERT_TRUE(seg);
+  const PathLimits l = path_limits(*seg, ax);
+  EXPECT_NEAR(l.v_max_mm_s, 10.0 * kSqrt2, 1e-9);
+  EXPECT_NEAR(l.a_acc_mm_s2, 100.0 * kSqrt2, 1e-9);
+}
+
+TEST(PathLimits, StandstillAndValidity) {
+  const std::array<AxisDynamics, 2> ax{{{100, 1000, 2000}, {50, 3000, 700}}};
+  auto seg = make_line(pt(1, 1), pt(1, 1), 2);
+  ASSERT_TRUE(seg);
+  const PathLimits l = path_limits(*seg, ax);
+  EXPECT_DOUBLE_EQ(l.v_max_mm_s, 50.0);
+  EXPECT_DOUBLE_EQ(l.a_dec_mm_s2, 700.0);
+  EXPECT_TRUE(valid(l));
+  EXPECT_FALSE(valid(PathLimits{}));
+  EXPECT_FALSE(valid(PathLimits{std::numeric_limits<double>::infinity(), 1, 1}));
+  EXPECT_FALSE(valid(PathLimits{1, NAN, 1}));
+  // No dynamics given for the moving axes: nothing limits, so not valid.
+  auto moving = make_line(pt(0, 0), pt(1, 0), 2);
+  EXPECT_FALSE(valid(path_limits(*moving, std::span<const AxisDynamics>{})));
+}
+
+}  // namespace
+}  // namespace nck::motion
