@@ -233,11 +233,18 @@ SourceLoc ParamList::loc(std::string_view key) const {
   return v ? v->loc : SourceLoc{file_, 0, 0};
 }
 
-std::vector<std::uint32_t> ParamList::first_indices(std::string_view prefix) const {
+std::vector<std::uint32_t> ParamList::indices(std::string_view prefix, std::size_t position) const {
   std::set<std::uint32_t> seen;
   for (auto it = values_.lower_bound(prefix); it != values_.end() && it->first.starts_with(prefix); ++it)
-    seen.insert(it->second.index[0]);
+    seen.insert(it->second.index[position < 3 ? position : 0]);
   return {seen.begin(), seen.end()};
+}
+
+SourceLoc ParamList::loc_prefix(std::string_view prefix) const {
+  SourceLoc best{file_, 0, 0};
+  for (auto it = values_.lower_bound(prefix); it != values_.end() && it->first.starts_with(prefix); ++it)
+    if (best.line == 0 || it->second.loc.line < best.line) best = it->second.loc;
+  return best;
 }
 
 bool ParamList::any_with_prefix(std::string_view prefix) const {

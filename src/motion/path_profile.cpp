@@ -117,6 +117,8 @@ ProfileSample PathProfile::step(double dt_s, double override_factor) noexcept {
   const double target = target_velocity(override_factor);
   double v = v_prev < target ? std::min(v_prev + limits_.a_acc_mm_s2 * dt_s, target)
                              : std::max(v_prev - limits_.a_dec_mm_s2 * dt_s, target);
+  // Rounding must not leave a residue like 1e-14 mm/s (a "moving" feedhold).
+  if (std::abs(v - target) <= 1e-12 * std::max(1.0, target)) v = target;
   // Braking curve: to standstill at the end, or (blending) to v_end at the
   // end, which is the curve to standstill at a point beyond the end.
   const double beyond_mm = discrete_brake_distance(v_end_mm_s_, limits_.a_dec_mm_s2, dt_s);

@@ -47,8 +47,11 @@ class ParamList {
   std::string text(std::string_view key, std::string fallback) const;
   // Where a key was given; the file with line 0 when it was not.
   SourceLoc loc(std::string_view key) const;
-  // Distinct first indices of keys starting with `prefix` ("spindel[" -> {0, 1}).
-  std::vector<std::uint32_t> first_indices(std::string_view prefix) const;
+  // Distinct values of index `position` of keys starting with `prefix`
+  // ("spindel[", 0 -> {0, 1}; "gruppe[0].achse[", 1 -> {0, 1, 2}).
+  std::vector<std::uint32_t> indices(std::string_view prefix, std::size_t position = 0) const;
+  // Earliest line of a key starting with `prefix` (file, line 0 when none).
+  SourceLoc loc_prefix(std::string_view prefix) const;
   // True when any key starts with `prefix`.
   bool any_with_prefix(std::string_view prefix) const;
 

@@ -205,7 +205,7 @@ TEST(PathProfile, FeedholdDuringFinalBrakingStillEndsExactly) {
   PathProfile p;
   const PathLimits l{100.0, 1000.0, 1000.0};
   ASSERT_TRUE(p.start(10.0, 100.0, l));
-  run_checked(p, 1.0, 100);  // mid triangle
+  run_checked(p, 1.0, 60);  // speeding up, not yet on the braking curve
   run_checked(p, 0.0, 500);
   EXPECT_EQ(p.v(), 0.0);
   EXPECT_LT(p.s(), 10.0);
@@ -251,8 +251,13 @@ TEST(PathProfile, EndVelocityBrakesDownToIt) {
   ASSERT_TRUE(p.start(40.0, 80.0, l, 20.0));
   const Trace r = run_checked(p, 1.0, 100000);
   ASSERT_TRUE(r.finished);
-  EXPECT_NEAR(r.s.back() - r.s[r.s.size() - 2], 20.0 * kDt, 0.5 * 500.0 * kDt * kDt + 1e-9);
-  EXPECT_NEAR(p.v(), 20.0, 500.0 * kDt);
+  // The last full cycle runs at v_end (within one acceleration step); the final
+  // one is partial, its rest is carried into the next segment.
+  ASSERT_GE(r.s.size(), 3u);
+  EXPECT_NEAR((r.s[r.s.size() - 2] - r.s[r.s.size() - 3]) / kDt, 20.0, 2 * 500.0 * kDt);
+  // Discrete braking curve: the final cycle runs within one step above v_end.
+  EXPECT_GE(p.v(), 20.0 - 1e-9);
+  EXPECT_LE(p.v(), 20.0 + 500.0 * kDt);
 }
 
 }  // namespace

@@ -1,0 +1,147 @@
+// Axis list -> AxisConfig, with the checks that need only this one list.
+#include <fmt/format.h>
+
+#include "build.hpp"
+
+namespace nck::config::detail {
+namespace {
+
+std::string gkey(std::size_t g, std::string_view rest) { return fmt::format("getriebe[{}].{}", g, rest); }
+
+void read_curve(const ParamList& l, std::size_t g, AccelCurve& c) {
+  auto k = [g](std::string_view r) { return gkey(g, fmt::format("beschl_kennlinie.{}", r)); };
+  c.type = l.u32(k("typ"), c.type);
+  c.n_grenz_deg_s = l.num(k("n_grenz"), c.n_grenz_deg_s);
+  c.a_konst_deg_s2 = l.num(k("a_konst"), c.a_konst_deg_s2);
+  c.a_min_deg_s2 = l.num(k("a_min"), c.a_min_deg_s2);
+  c.b1 = l.num(k("b1"), c.b1);
+  c.b2 = l.num(k("b2"), c.b2);
+  c.b3 = l.num(k("b3"), c.b3);
+  c.a_max_deg_s2 = l.num(k("a_max"), c.a_max_deg_s2);
+  c.n1_deg_s = l.num(k("n1"), c.n1_deg_s);
+  c.n2_deg_s = l.num(k("n2"), c.n2_deg_s);
+}
+
+// wegaufz / wegaufn 0: the seed's warning and correction to 1.
+std::uint32_t encoder_part(const ParamList& l, const std::string& key, ErrorId id, Diagnostics& d) {
+  std::uint32_t v = l.u32(key, 1);
+  if (v != 0) return v;
+  d.add(id, l.loc(key), fmt::format("'{}' is 0; nck uses 1", key));
+  return 1;
+}
+
+void read_gear(const ParamList& l, std::size_t g, GearStage& s, Diagnostics& d) {
+  auto k = [g](std::string_view r) { return gkey(g, r); };
+  s.given = l.any_with_prefix(fmt::format("getriebe[{}].", g));
+  s.a_beschl = l.num(k("slope_profil.a_beschl"), s.a_beschl);
+  s.a_brems = l.num(k("slope_profil.a_brems"), s.a_brems);
+  s.a_grenz = l.num(k("slope_profil.a_grenz"), s.a_grenz);
+  s.a_max = l.num(k("dynamik.a_max"), s.a_max);
+  s.a_emergency = l.num(k("dynamik.a_emergency"), s.a_emergency);
+  s.vb_max = l.num(k("dynamik.vb_max"), s.vb_max);
+  s.vb_eilgang = l.num(k("vb_eilgang"), s.vb_eilgang);
+  s.kv_1_s = l.num(k("kv"), s.kv_1_s);
+  s.moduloo = l.num(k("moduloo"), s.moduloo);
+  s.modulou = l.num(k("modulou"), s.modulou);
+  s.vb_min_null = l.num(k("vb_min_null"), s.vb_min_null);
+  s.vb_regelgrenze = l.num(k("vb_regelgrenze"), s.vb_regelgrenze);
+  s.getr_schalt_pos = l.num(k("getr_schalt_pos"), s.getr_schalt_pos);
+  s.pos_refpkt = l.num(k("pos_refpkt"), s.pos_refpkt);
+  s.wegaufz = encoder_part(l, k("wegaufz"), ErrorId::ConfigWegaufzZero, d);
+  s.wegaufn = encoder_part(l, k("wegaufn"), ErrorId::ConfigWegaufnZero, d);
+  s.reverse = l.flag(k("reverse"), s.reverse);
+  s.slope_type = l.u32(k("slope_type"), s.slope_type);
+  s.multi_gain_z = l.u32(k("multi_gain_z"), s.multi_gain_z);
+  s.multi_gain_n = l.u32(k("multi_gain_n"), s.multi_gain_n);
+  s.modulo_fehler = static_cast<std::int32_t>(l.num(k("modulo_fehler"), 0));
+  s.modulo_umdreh = static_cast<std::int32_t>(l.num(k("modulo_umdreh"), 0));
+  read_curve(l, g, s.curve);
+}
+
+// Parameter relations of one gear stage (ranges that name another parameter).
+void check_gear(const ParamList& l, const AxisConfig& a, std::size_t g, Diagnostics& d) {
+  const GearStage& s = a.gears[g];
+  auto k = [g](std::string_view r) { return gkey(g, r); };
+  auto amax = k("dynamik.a_max");
+  cross_check(l, k("vb_eilgang"), k("dynamik.vb_max"), s.vb_eilgang <= s.vb_max,
+              fmt::format("{} ({}) must not exceed {} ({})", k("vb_eilgang"), s.vb_eilgang, k("dynamik.vb_max"), s.vb_max), d);
+  for (auto [key, v] : {std::pair{k("slope_profil.a_beschl"), s.a_beschl}, {k("slope_profil.a_brems"), s.a_brems},
+                        {k("slope_profil.a_grenz"), s.a_grenz}, {k("beschl_kennlinie.a_max"), s.curve.a_max_deg_s2}})
+    cross_check(l, key, amax, v <= s.a_max, fmt::format("{} ({}) must not exceed {} ({})", key, v, amax, s.a_max), d);
+  cross_check(l, k("dynamik.a_emergency"), amax, s.a_emergency <= 2 * s.a_max,
+              fmt::format("{} must not exceed 2 x {}", k("dynamik.a_emergency"), amax), d);
+  if (a.is_modulo())
+    cross_check(l, k("modulou"), k("moduloo"), s.modulou < s.moduloo,
+                fmt::format("{} ({}) must be below {} ({})", k("modulou"), s.modulou, k("moduloo"), s.moduloo), d);
+  const AccelCurve& c = s.curve;
+  auto ck = [&](std::string_view r) { return k(fmt::format("beschl_kennlinie.{}", r)); };
+  if (c.type == 1 || c.type == 2)
+    cross_check(l, ck("typ"), ck("n_grenz"), c.n_grenz_deg_s > 0,
+                fmt::format("curve type {} needs {} > 0", c.type, ck("n_grenz")), d);
+  if (c.type == 3) {
+    cross_check(l, ck("typ"), ck("a_max"), c.a_max_deg_s2 > 0,
+                fmt::format("curve type 3 needs {} > 0", ck("a_max")), d);
+    cross_check(l, ck("n1"), ck("n2"), c.n1_deg_s <= c.n2_deg_s,
+                fmt::format("{} must not exceed {}", ck("n1"), ck("n2")), d);
+    cross_check(l, ck("n2"), k("dynamik.vb_max"), c.n2_deg_s <= s.vb_max,
+                fmt::format("{} must not exceed {}", ck("n2"), k("dynamik.vb_max")), d);
+  }
+}
+
+void read_head(const ParamList& l, AxisConfig& a) {
+  a.source = SourceRef{l.file(), l.loc("kopf.achs_nr").line};
+  a.log_axis_nr = l.u32("kopf.achs_nr", 1);
+  a.name = l.text("kopf.log_achs_name", a.name);
+  a.kind = static_cast<AxisKind>(l.u32("kenngr.achs_typ", 1));
+  a.achs_mode = l.u32("kenngr.achs_mode", a.achs_mode);
+  a.antr_typ = l.u32("kenngr.antr_typ", a.antr_typ);
+  a.swe_neg = l.num("kenngr.swe_neg", a.swe_neg);
+  a.swe_pos = l.num("kenngr.swe_pos", a.swe_pos);
+  a.initial_gear_stage = l.u32("kenngr.getriebe_stufe", a.initial_gear_stage);
+  a.vorz_richtung = l.flag("kenngr.vorz_richtung", a.vorz_richtung);
+  a.beweg_richt_positive = l.flag("kenngr.beweg_richt", a.beweg_richt_positive);
+  a.vb_prozent_permille = l.num("kenngr.vb_prozent", a.vb_prozent_permille);
+  a.ref_ohne_nocken = l.flag("kenngr.ref_ohne_nocken", a.ref_ohne_nocken);
+  a.ref_ohne_rev = l.flag("kenngr.ref_ohne_rev", a.ref_ohne_rev);
+  a.no_stop_by_channel_reset = l.flag("kenngr.no_stop_by_channel_reset", a.no_stop_by_channel_reset);
+  a.def_cax_gear_st = l.u32("kenngr.def_cax_gear_st", a.def_cax_gear_st);
+  a.durchm_prog_abs = l.flag("kenngr.durchm_prog_abs", a.durchm_prog_abs);
+  a.fast_from_cam = l.flag("kenngr.fast_from_cam", a.fast_from_cam);
+  a.vb_messen = l.num("kenngr.vb_messen", a.vb_messen);
+  a.feedhold_deceleration_mode = l.text("kenngr.feedhold_deceleration_mode", a.feedhold_deceleration_mode);
+  a.mod_komp = l.flag("lr_param.mod_komp", a.mod_komp);
+  a.distance_control_on = l.flag("lr_param.distance_control_on", a.distance_control_on);
+}
+
+void read_drive(const ParamList& l, AxisConfig& a) {
+  a.operation_mode = l.text("antr.operation_mode", a.operation_mode);
+  a.v_reso_num = l.u32("antr.v_reso_num", a.v_reso_num);
+  a.v_reso_denom = l.u32("antr.v_reso_denom", a.v_reso_denom);
+  a.v_time_base = l.u32("antr.v_time_base", a.v_time_base);
+  a.velocity_position_control_on = l.num("antr.velocity_position_control_on", a.velocity_position_control_on);
+  a.velocity_position_control_off = l.num("antr.velocity_position_control_off", a.velocity_position_control_off);
+  a.secondary_encoder = l.text("antr.secondary_encoder", a.secondary_encoder);
+  double faktor_us = l.num("vorsteuer.vs_a_faktor", 1);
+  double nenner = l.num("vorsteuer.vs_a_nenner", 1);
+  a.feedforward_ta_s = faktor_us * 1e-6 / (nenner > 0 ? nenner : 1);
+}
+
+}  // namespace
+
+AxisConfig build_axis(const ParamList& l, Diagnostics& d) {
+  AxisConfig a;
+  read_head(l, a);
+  read_drive(l, a);
+  for (std::size_t g = 0; g < kMaxGearStages; ++g) read_gear(l, g, a.gears[g], d);
+  if (a.ref_ohne_nocken && !a.ref_ohne_rev)
+    d.add(ErrorId::ConfigRefWithoutCam, l.loc("kenngr.ref_ohne_nocken"),
+          "kenngr.ref_ohne_nocken 1 requires kenngr.ref_ohne_rev 1");
+  if (!a.is_modulo())
+    cross_check(l, "kenngr.swe_neg", "kenngr.swe_pos", a.swe_neg < a.swe_pos,
+                fmt::format("kenngr.swe_neg ({}) must be below kenngr.swe_pos ({})", a.swe_neg, a.swe_pos), d);
+  for (std::size_t g = 0; g < kMaxGearStages; ++g)
+    if (g == 0 || a.gears[g].given) check_gear(l, a, g, d);
+  return a;
+}
+
+}  // namespace nck::config::detail

@@ -1,0 +1,107 @@
+#pragma once
+// The staged decoding of one NC block (grblHAL-like, each stage its own file):
+//   parse_words  (block_words.cpp, spindle_syntax.cpp, hash_commands.cpp)
+//       reads every word and evaluates its value into Words;
+//   check_words  (block_check.cpp) validates the combination against the
+//       modal state, without changing anything;
+//   apply_words  (modal_apply.cpp) updates the modal state and variables and
+//       fills the output Block.
+// Nothing takes effect before the whole block has passed the check.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "expression.hpp"
+#include "nck/core/fixed_vector.hpp"
+#include "nck/nc/block.hpp"
+#include "nck/nc/decoder.hpp"
+
+namespace nck::nc::detail {
+
+struct GWord {
+  int code = 0;
+  std::uint32_t pos = 0;
+  double value = 0;  // G159=<value>
+};
+struct MWord {
+  int code = 0;
+  std::uint32_t pos = 0;
+};
+template <class T>
+struct At {  // a value and where it was written
+  std::optional<T> v;
+  std::uint32_t pos = 0;
+  void set(T x, std::size_t p) { v = x; pos = static_cast<std::uint32_t>(p); }
+};
+struct Assignment {
+  Lvalue target;
+  double value = 0;
+  bool is_string = false;
+  std::string str;
+};
+
+struct Words {
+  At<std::int64_t> n;
+  FixedVector<GWord, 24> g;
+  FixedVector<MWord, 24> m;
+  FixedVector<MWord, 16> h;
+  std::array<std::optional<double>, kMaxAxes> axes{};
+  std::array<std::uint32_t, kMaxAxes> axis_pos{};
+  int axis_count = 0;
+  At<double> f, s, t, d, r;
+  std::array<At<double>, 3> ijk{};
+  At<double> dwell_direct;       // G4 <value>
+  At<double> time_s;             // #TIME <value>
+  // DIN attributes of the main spindle.
+  At<double> s_pos, s_pos_shift, s_offset;
+  std::uint32_t din_spindle_pos = 0;
+  std::vector<SpindleCommand> brackets;  // spindle syntax S..[ ]
+  std::optional<HashCommand> hash;
+  std::uint32_t hash_pos = 0;
+  std::vector<Assignment> assigns;
+  int word_count = 0;  // words other than N and the # command itself
+
+  void clear();
+  bool has_g(int code) const {
+    for (const auto& x : g)
+      if (x.code == code) return true;
+    return false;
+  }
+  const MWord* find_m(int code) const {
+    for (const auto& x : m)
+      if (x.code == code) return &x;
+    return nullptr;
+  }
+};
+
+// Decoder state the stages read (and apply writes).
+struct BlockCtx {
+  const DecoderConfig& cfg;
+  ExprCtx& x;
+  std::string& main_target;       // configured name of the current main spindle
+  std::vector<std::string> axis_upper;  // axis names, upper case
+  // #DIST CTRL state kept by the decoder (facts D: mode changes, SET_POS).
+  int dist_state = 0;             // 0 off, 1 on surface, 2 on const, 3 freeze
+  bool dist_set_pos_known = false;
+};
+
+int find_axis(const BlockCtx& b, std::string_view name_upper);
+
+bool parse_words(Cursor& c, BlockCtx& b, Words& w);
+// Spindle words: at 'S' (DIN or S..[ ]).
+bool parse_spindle_word(Cursor& c, BlockCtx& b, Words& w);
+// '#' commands; `exclusive` tells whether the rest of the block must be empty.
+bool parse_hash(Cursor& c, BlockCtx& b, Words& w, bool& exclusive);
+bool check_words(const Words& w, BlockCtx& b, const ModalState& modal);
+// Applies to modal/variables and fills out. Returns false only on a write
+// error (e.g. an undeclared variable).
+bool apply_words(Words& w, BlockCtx& b, ModalState& modal, Block& out);
+
+// G code groups (block_check.cpp).
+enum class GGroup : std::uint8_t { motion, plane, dim, feed, speed, comp, diam, unit, zero,
+                                   center, manual, nonmodal };
+std::optional<GGroup> g_group(int code);
+
+}  // namespace nck::nc::detail
