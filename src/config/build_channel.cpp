@@ -98,7 +98,7 @@ void check_names_and_numbers(const ParamList& l, const ChannelConfig& c, Diagnos
     if (!c.axes[j].name.empty() && !names.insert(c.axes[j].name).second)
       d.add(ErrorId::ConfigDuplicateName, where, fmt::format("axis name '{}' is used twice", c.axes[j].name));
     if (c.axes[j].log_axis_nr != 0 && !path_nrs.insert(c.axes[j].log_axis_nr).second)
-      d.add(ErrorId::ConfigAxisNrDuplicate, where, fmt::format("logical axis number {} is used twice", c.axes[j].log_axis_nr));
+      d.add(ErrorId::ConfigAxisNrDuplicate, l.loc(fmt::format("gruppe[0].achse[{}].log_achs_nr", j)), fmt::format("logical axis number {} is used twice", c.axes[j].log_axis_nr));
   }
   for (std::size_t i = 0; i < c.spindles.size(); ++i) {
     const auto& s = c.spindles[i];
@@ -106,6 +106,7 @@ void check_names_and_numbers(const ParamList& l, const ChannelConfig& c, Diagnos
     if (!s.name.empty() && !names.insert(s.name).second)
       d.add(ErrorId::ConfigDuplicateName, where, fmt::format("name '{}' is used twice in the channel", s.name));
     if (s.log_axis_nr == 0) continue;
+    where = l.loc(fmt::format("spindel[{}].log_achs_nr", i));
     if (path_nrs.contains(s.log_axis_nr))
       d.add(ErrorId::ConfigAxisNrPathAndSpindle, where,
             fmt::format("logical axis number {} is both a path axis and spindle {}", s.log_axis_nr, s.name));

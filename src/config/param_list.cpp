@@ -180,6 +180,7 @@ ParamList ParamList::parse(const ListText& text, ListKind kind, Diagnostics& dia
     if (auto it = list.values_.find(canonical); it != list.values_.end())
       diags.add(ErrorId::ConfigDuplicateKey, v.loc,
                 fmt::format("'{}' was already set in line {}; this line wins", canonical, it->second.loc.line));
+    std::erase_if(pending, [&](const Pending& p) { return p.key == canonical; });
     if (ref) pending.push_back({canonical, *ref});
     list.values_[canonical] = std::move(v);
   }

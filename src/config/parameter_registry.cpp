@@ -53,8 +53,9 @@ const std::vector<ParamInfo>& table() {
   return all;
 }
 
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
+// Levenshtein distance; `row` is scratch space reused across calls.
+std::size_t edit_distance(std::string_view a, std::string_view b, std::vector<std::size_t>& row) {
+  row.resize(b.size() + 1);
   for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
   for (std::size_t i = 1; i <= a.size(); ++i) {
     std::size_t diag = row[0];
@@ -126,9 +127,11 @@ const ParamInfo* find_parameter_by_id(ListKind list, std::string_view id) {
 std::string_view nearest_key(ListKind list, std::string_view pattern) {
   std::string_view best;
   std::size_t best_d = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> row;
+  pattern = pattern.substr(0, 200);  // bounded work for absurd keys
   for (const auto& p : table()) {
     if (p.list != list) continue;
-    std::size_t d = edit_distance(pattern, p.key);
+    std::size_t d = edit_distance(pattern, p.key, row);
     if (d < best_d) best_d = d, best = p.key;
   }
   return best;

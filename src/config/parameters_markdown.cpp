@@ -32,11 +32,8 @@ std::string range_text(const ParamInfo& p) {
     case ParamType::string: return fmt::format("name, ≤ {} chars", number(p.max));
     case ParamType::path: return "file path";
     case ParamType::choice: {
-      std::string s(p.choices);
-      for (auto& c : s)
-        if (c == ' ') c = ',';
       std::string out;
-      for (char c : s) out += (c == ',') ? std::string(", ") : std::string(1, c);
+      for (char c : p.choices) out += (c == ' ') ? std::string(", ") : std::string(1, c);
       return out;
     }
     case ParamType::sync: return "sync symbols (NO_SYNCH, MOS, MVS_SVS, ... PLC_INFO) or hex, OR-ed";
@@ -44,17 +41,18 @@ std::string range_text(const ParamInfo& p) {
     case ParamType::decoder_fct: return "FCT_* symbols OR-ed, '-' = none";
     default: break;
   }
-  std::string lo = p.min == 1e-9 ? std::string("> 0") : number(p.min);
   if (std::isinf(p.min) && std::isinf(p.max)) return "any";
   if (p.min == 1e-9) return fmt::format("> 0 … {}", number(p.max));
-  return fmt::format("{} … {}", lo, number(p.max));
+  return fmt::format("{} … {}", number(p.min), number(p.max));
 }
 
 std::string index_text(const ParamInfo& p) {
   static constexpr char kLetters[] = {'i', 'j', 'k'};
   std::string out;
   for (std::size_t n = 0; n < p.index_count.size(); ++n)
-    if (p.index_count[n] > 0)
+    if (p.index_count[n] == 1)
+      out += fmt::format("{}{} = 0", out.empty() ? "; " : ", ", kLetters[n]);
+    else if (p.index_count[n] > 1)
       out += fmt::format("{}{} = 0…{}", out.empty() ? "; " : ", ", kLetters[n], p.index_count[n] - 1);
   return out;
 }

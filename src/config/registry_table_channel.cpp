@@ -29,7 +29,7 @@ constexpr ParamInfo kTable[] = {
     {"achs_kw_log_ax_nr[]", "P-STUP-00036", S, T::integer, 1, kU16, 0, 1, "—", "—", "Axis of compensation list i; accepted, not used.", {32}},
     {"ads_32_bit_comp_mode", "P-STUP-00175", S, T::integer, 0, 3, 1, 1, "—", "—", "HLI positions as scaled 32-bit values (1) or 64-bit (0, 2)."},
     {"sim_data", "nck", S, T::path, 0, 256, 0, 1, "path", "path", "Simulation list (PLC, drives, distance sensor), optional.", {}, {}, "''"},
-    {"cycle_time_us", "nck", S, T::integer, 100, 100000, 1000, 1e-6, "µs", "s", "Interpolation cycle time."},
+    {"cycle_time_us", "nck", S, T::integer, 100, 100000, 1000, 1, "µs", "µs", "Interpolation cycle time."},
 
     // ---- channel list: axes and spindles ---------------------------------
     {"grp_anzahl", "P-CHAN-00023", C, T::integer, 0, 1, 1, 1, "—", "—", "Number of axis groups (always 1); accepted."},

@@ -46,7 +46,7 @@ struct Words {
   At<std::int64_t> n;
   FixedVector<GWord, 24> g;
   FixedVector<MWord, 24> m;
-  FixedVector<MWord, 16> h;
+  FixedVector<MWord, 24> h;
   std::array<std::optional<double>, kMaxAxes> axes{};
   std::array<std::uint32_t, kMaxAxes> axis_pos{};
   int axis_count = 0;

@@ -84,7 +84,7 @@ bool parse_feed_link(Cursor& c, BlockCtx& b, SpindleCommand& sc) {
 // Checks the combination rules of one bracket (facts B3, B17).
 bool check_bracket(BlockCtx& b, const SpindleCommand& sc, int m_count, int g136_count,
                    int other_count, std::size_t pos) {
-  if (m_count > 1)
+  if (m_count > 0)
     return b.x.err.fail(ErrorId::NcSpindleMConflict, pos,
                         fmt::format("{}[..] has more than one of M3/M4/M5/M19; program one", sc.name));
   if (g136_count > 1)
@@ -111,16 +111,20 @@ bool check_bracket(BlockCtx& b, const SpindleCommand& sc, int m_count, int g136_
 bool parse_bracket(Cursor& c, BlockCtx& b, SpindleCommand& sc) {
   std::size_t open = c.pos - 1;
   int m_count = 0, g136_count = 0, other = 0;
+  bool m19 = false;
+  SpindleM dir = SpindleM::none;
   auto set_m = [&](SpindleM m, std::size_t pos) {
-    ++m_count;
-    if ((sc.m == SpindleM::m19 && m == SpindleM::m5) || (sc.m == SpindleM::m5 && m == SpindleM::m19))
-      return b.x.err.fail(ErrorId::NcM19WithM5, pos, "M19 cannot be combined with M5 for one spindle");
-    if (sc.m == SpindleM::m19 || m == SpindleM::m19) {
-      --m_count;  // M19 may carry a direction M3/M4
-      if (m == SpindleM::m19) sc.m = m;
-      return true;
+    if (m == SpindleM::m19) {
+      if (m19) ++m_count;
+      m19 = true;
+    } else {
+      if (dir != SpindleM::none) ++m_count;
+      dir = m;
     }
-    sc.m = m;
+    if (m19 && dir == SpindleM::m5)
+      return b.x.err.fail(ErrorId::NcM19WithM5, pos, "M19 cannot be combined with M5 for one spindle");
+    sc.m = m19 ? SpindleM::m19 : dir;
+    sc.direction = m19 ? dir : SpindleM::none;
     return true;
   };
   for (;;) {

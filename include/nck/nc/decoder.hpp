@@ -70,8 +70,9 @@ class Decoder {
   std::optional<double> get_variable(std::string_view name) const;
   bool set_variable(std::string_view name, double value);
 
+  struct Impl;  // opaque (src/nc/decoder_impl.hpp)
+
  private:
-  struct Impl;
   std::unique_ptr<Impl> impl_;
 };
 

@@ -44,6 +44,7 @@ struct SpindleCommand {
   std::optional<double> override_speed_fact_pct;  // OVERRIDE SPEED_FACT=
 
   // Added by the decoder work:
+  SpindleM direction = SpindleM::none;  // M3/M4 programmed together with M19
   std::string target;                 // configured spindle this addresses ("S1"...), main resolved
   std::optional<FeedLink> feed_link;  // FEED_LINK ..
 };

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <expected>
 #include <numbers>
 #include <random>
 #include <string>
@@ -140,9 +141,12 @@ TEST(ProfileProperty, AxesStayWithinTheirLimits) {
     }
     std::expected<Segment, ArcError> seg = make_line(s, e, 3);
     if (uniform(rng, 0.0, 1.0) < 0.6) {
-      const double r = log_uniform(rng, 0.5, 100.0) * (uniform(rng, 0, 1) < 0.3 ? -1.0 : 1.0);
-      seg = make_arc_radius(s, e, 3, 0, 1, std::max(std::abs(r), std::hypot(e[0] - s[0], e[1] - s[1]) / 2 + 0.1) * (r < 0 ? -1 : 1),
-                            uniform(rng, 0, 1) < 0.5);
+      // |R| at least half the chord (plus a margin), 30 % long arcs, Z as helix axis.
+      const double half_chord = std::hypot(e[0] - s[0], e[1] - s[1]) / 2.0;
+      const double r = std::max(log_uniform(rng, 0.5, 100.0), half_chord + 0.1);
+      const bool long_arc = uniform(rng, 0.0, 1.0) < 0.3;
+      const bool ccw = uniform(rng, 0.0, 1.0) < 0.5;
+      seg = make_arc_radius(s, e, 3, 0, 1, long_arc ? -r : r, ccw);
     }
     ASSERT_TRUE(seg);
     const PathLimits lim = path_limits(*seg, ax);

@@ -1,0 +1,91 @@
+#pragma once
+// Internal state of nck::nc::Decoder, shared by decoder.cpp (block loop),
+// control_flow.cpp ($ statements), subprograms.cpp (calls, returns,
+// sections) and var_declarations.cpp (#VAR).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "block_words.hpp"
+#include "file_cache.hpp"
+#include "nck/nc/decoder.hpp"
+#include "source_reader.hpp"
+
+namespace nck::nc {
+
+namespace detail {
+
+enum class CtlKind : std::uint8_t { if_, while_, for_, do_, switch_ };
+
+struct Ctl {
+  CtlKind kind = CtlKind::if_;
+  SourcePos start;           // the opening statement's block
+  SourcePos body;            // the block after it ($DO)
+  std::uint64_t iterations = 0;
+  Lvalue var;                // $FOR variable
+  double end = 0, step = 1;  // $FOR limits
+};
+
+struct Frame {
+  std::uint16_t file_id = 0;
+  std::filesystem::path path;
+  std::unique_ptr<SourceReader> reader;
+  std::shared_ptr<const std::string> mem;  // cached file text, if any
+  std::shared_ptr<const ProgramIndex> index;
+  std::vector<Ctl> ctl;
+};
+
+// What processing one block led to.
+enum class Outcome : std::uint8_t { nothing, block, error, end };
+
+}  // namespace detail
+
+struct Decoder::Impl {
+  explicit Impl(DecoderConfig c);
+
+  DecoderConfig cfg;
+  std::vector<std::string> files;
+  std::vector<Diagnostic> diags;
+  detail::Variables vars;
+  detail::ErrorSlot err;
+  detail::ExprCtx x;
+  std::string main_target;
+  detail::BlockCtx bctx;
+  ModalState modal;
+  std::vector<detail::Frame> frames;
+  detail::FileCache cache;
+  detail::Words words;
+
+  bool fatal = false;        // decoding cannot go on
+  bool ended = false;        // Status::end reached
+  bool end_pending = false;  // M30 block handed out, end comes next
+  bool return_pending = false;  // M17 block handed out, return comes next
+  bool comment_mode = false;    // inside #COMMENT BEGIN .. END
+  bool var_mode = false;        // inside #VAR .. #ENDVAR
+  detail::SourcePos comment_start;
+  bool loop_reentry = false;    // seeking back to a $WHILE/$FOR statement
+  std::uint64_t reentry_offset = 0;
+
+  Result next();
+
+  // decoder.cpp
+  detail::Outcome process_block(Block& out);
+  detail::Outcome run_words(detail::Cursor& c, std::optional<std::int64_t> n, Block& out);
+  Result error_result();
+  detail::Outcome report(ErrorId, std::size_t pos, std::string msg, bool is_fatal = false);
+  void flush_warnings();
+  SourceLoc loc(std::size_t pos) const;
+  std::uint16_t file_id(const std::string& name);
+
+  // control_flow.cpp
+  detail::Outcome control(detail::Cursor& c);
+  // subprograms.cpp
+  bool open_main(const std::filesystem::path& p);
+  detail::Outcome call(detail::Cursor& c, bool local);
+  detail::Outcome end_of_section();
+  detail::Outcome do_return();
+  // var_declarations.cpp
+  detail::Outcome declare(detail::Cursor& c);
+};
+
+}  // namespace nck::nc

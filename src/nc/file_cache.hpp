@@ -1,0 +1,65 @@
+#pragma once
+// Program structure of a file (its %L / % sections) and the cache of called
+// subprogram files (FCT_USE_CACHED_FILES): whole file texts with their
+// section index, bounded by a file count and a total size, least recently
+// used dropped first, re-read when the file's size or mtime changes.
+#include <cstdint>
+#include <filesystem>
+#include <list>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "source_reader.hpp"
+
+namespace nck::nc::detail {
+
+struct Section {
+  bool local = false;   // %L name
+  std::string name;     // upper case
+  SourcePos header;     // the % line
+  SourcePos body;       // the line after it
+};
+
+struct ProgramIndex {
+  std::vector<Section> sections;
+  const Section* main() const;
+  const Section* local(const std::string& name_upper) const;
+};
+
+// Scans a reader from its current position to the end for section headers.
+ProgramIndex scan_sections(SourceReader& r, std::size_t max_chars);
+// Name of a "%L name" / "%name" header (comments stripped, upper case).
+bool parse_header(std::string_view text, bool& local, std::string& name);
+
+class FileCache {
+ public:
+  struct Entry {
+    std::shared_ptr<const std::string> text;
+    std::shared_ptr<const ProgramIndex> index;
+  };
+  FileCache(bool enabled, std::uint32_t max_files, std::uint32_t max_kb)
+      : enabled_(enabled), max_files_(max_files), max_bytes_(std::uint64_t{max_kb} * 1024) {}
+  bool enabled() const { return enabled_ && max_files_ > 0; }
+  // The cached (or freshly loaded and cached) file; nullptr when the file is
+  // unreadable or too large to cache.
+  std::shared_ptr<const Entry> get(const std::filesystem::path& p, std::size_t max_chars);
+  std::uint64_t hits() const { return hits_; }
+  std::uint64_t loads() const { return loads_; }
+
+ private:
+  struct Slot {
+    std::string key;
+    std::filesystem::file_time_type mtime;
+    std::uintmax_t size = 0;
+    std::shared_ptr<const Entry> entry;
+  };
+  bool enabled_;
+  std::uint32_t max_files_;
+  std::uint64_t max_bytes_;
+  std::uint64_t bytes_ = 0;
+  std::uint64_t hits_ = 0, loads_ = 0;
+  std::list<Slot> slots_;  // front = most recently used
+};
+
+}  // namespace nck::nc::detail

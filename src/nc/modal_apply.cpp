@@ -1,0 +1,201 @@
+// Stage 3 of a block: the checked words take effect: modal state,
+// variables, and the output Block for the channel.
+#include <cmath>
+#include <fmt/format.h>
+
+#include "block_words.hpp"
+
+namespace nck::nc::detail {
+
+namespace {
+
+void apply_g(int code, double value, ModalState& m) {
+  switch (code) {
+    case 0: m.motion = Motion::rapid; break;
+    case 1: m.motion = Motion::linear; break;
+    case 2: m.motion = Motion::cw; break;
+    case 3: m.motion = Motion::ccw; break;
+    case 33: m.motion = Motion::thread; break;
+    case 63: m.motion = Motion::tap; break;
+    case 331: m.motion = Motion::tap_rigid; break;
+    case 332: m.motion = Motion::tap_retract; break;
+    case 17: m.plane = Plane::g17; break;
+    case 18: m.plane = Plane::g18; break;
+    case 19: m.plane = Plane::g19; break;
+    case 90: m.absolute = true; break;
+    case 91: m.absolute = false; break;
+    case 93: m.feed_mode = FeedMode::g93; break;
+    case 94: m.feed_mode = FeedMode::g94; break;
+    case 95: m.feed_mode = FeedMode::g95; break;
+    case 96: m.speed_mode = SpeedMode::g96; break;
+    case 97: m.speed_mode = SpeedMode::g97; break;
+    case 40: m.radius_comp = RadiusComp::g40; break;
+    case 41: m.radius_comp = RadiusComp::g41; break;
+    case 42: m.radius_comp = RadiusComp::g42; break;
+    case 51: m.diameter = true; break;
+    case 52: m.diameter = false; break;
+    case 70: m.inch = true; break;
+    case 71: m.inch = false; break;
+    case 159: m.zero_offset = static_cast<int>(std::lround(value)); break;
+    case 161: m.circle_center_absolute = true; break;
+    case 162: m.circle_center_absolute = false; break;
+    case 201: m.manual_mode = true; break;
+    case 202: m.manual_mode = false; break;
+    default:
+      if (code >= 53 && code <= 59) m.zero_offset = code - 53;
+      break;
+  }
+}
+
+std::optional<SpindleCommand> main_din(const Words& w, BlockCtx& b, const ModalState& m, Block& out) {
+  SpindleCommand sc;
+  bool any = false;
+  sc.name = b.cfg.main_spindle_name;
+  sc.target = b.main_target;
+  sc.din = true;
+  sc.column = w.din_spindle_pos;
+  for (const auto& mw : w.m) {
+    switch (mw.code) {
+      case 3: case 4: case 5:
+        if (sc.m == SpindleM::m19) sc.direction = static_cast<SpindleM>(mw.code);
+        else sc.m = static_cast<SpindleM>(mw.code);
+        any = true;
+        break;
+      case 19:
+        if (sc.m != SpindleM::none) sc.direction = sc.m;
+        sc.m = SpindleM::m19;
+        any = true;
+        break;
+      case 40: case 41: case 42: case 43: case 44: case 45:
+        sc.gear_stage = mw.code - 39;
+        any = true;
+        break;
+      default: break;
+    }
+  }
+  if (w.s_pos.v) { sc.pos_deg = w.s_pos.v; any = true; }
+  if (w.s_pos_shift.v) { sc.pos_shift_deg = w.s_pos_shift.v; any = true; }
+  if (w.s_offset.v) { sc.offset_deg = w.s_offset.v; any = true; }
+  if (w.s.v) {
+    double s = *w.s.v;
+    any = true;
+    if (w.has_g(4)) { out.dwell_revs = s; any = sc.m != SpindleM::none; }
+    else if (w.has_g(196)) { any = sc.m != SpindleM::none || sc.gear_stage.has_value(); }
+    else if (w.has_g(74)) sc.g74 = true;
+    else if (w.has_g(112)) sc.g112_stage = static_cast<int>(std::lround(s));
+    else if (w.has_g(130)) sc.g130_pct = s;
+    else if (w.has_g(136)) sc.g136_pct = s;
+    else if (w.has_g(135)) sc.g135 = true;
+    else if (w.has_g(137)) sc.g137 = true;
+    else if (m.speed_mode == SpeedMode::g96) any = sc.m != SpindleM::none || sc.gear_stage.has_value() || sc.pos_deg;
+    else sc.rev_rpm = s;
+  }
+  if (w.has_g(167) && w.s.v) sc.g167 = true;
+  if (!any) return std::nullopt;
+  return sc;
+}
+
+bool apply_assignments(Words& w, BlockCtx& b, Block& out) {
+  for (auto& a : w.assigns) {
+    if (a.is_string) {
+      if (a.target.is_p)
+        return b.x.err.fail(ErrorId::NcTypeMismatch, a.target.pos, "a P parameter cannot hold a string");
+      VarStatus s = b.x.vars.write_string(a.target.key, a.str);
+      if (s != VarStatus::ok) {
+        if (s == VarStatus::not_string)
+          return b.x.err.fail(ErrorId::NcTypeMismatch, a.target.pos,
+                              fmt::format("{} is numeric; a string cannot be assigned", a.target.key));
+        return write_lvalue(a.target, b.x, 0);  // reports the error
+      }
+      continue;
+    }
+    if (!write_lvalue(a.target, b.x, a.value)) return false;
+    if (!a.target.is_p && b.x.vars.is_kernel(a.target.key))
+      out.kernel_writes.push_back(VariableWrite{a.target.key, a.value});
+  }
+  return true;
+}
+
+}  // namespace
+
+ModalState preview_modal(const Words& w, const ModalState& m) {
+  ModalState r = m;
+  for (const auto& g : w.g) apply_g(g.code, g.value, r);
+  return r;
+}
+
+bool apply_words(Words& w, BlockCtx& b, ModalState& modal, Block& out) {
+  if (!apply_assignments(w, b, out)) return false;
+  for (const auto& g : w.g) {
+    apply_g(g.code, g.value, modal);
+    if (g_group(g.code) == GGroup::nonmodal) out.g_nonmodal.push_back(g.code);
+  }
+  if (w.n.v) out.n = *w.n.v;
+  if (w.f.v) {
+    out.f = w.f.v;
+    switch (modal.feed_mode) {
+      case FeedMode::g94: modal.feed_mm_min = *w.f.v; break;
+      case FeedMode::g95: modal.feed_mm_rev = *w.f.v; break;
+      case FeedMode::g93: modal.feed_time_s = *w.f.v; break;
+    }
+  }
+  if (w.r.v) { out.r = w.r.v; modal.r = *w.r.v; }
+  for (int i = 0; i < 3; ++i) out.ijk[i] = w.ijk[i].v;
+  if (modal.motion == Motion::thread) {
+    for (const auto& p : w.ijk)
+      if (p.v) { modal.thread_pitch_mm = std::fabs(*p.v); break; }
+  } else if (modal.motion == Motion::tap_rigid || modal.motion == Motion::tap_retract) {
+    for (const auto& p : w.ijk)
+      if (p.v) { modal.tap_pitch_mm = *p.v; break; }
+  }
+  if (w.t.v) out.t = static_cast<std::int64_t>(*w.t.v);
+  if (w.d.v) { out.d = static_cast<std::int64_t>(*w.d.v); modal.d = *out.d; }
+  if (w.s.v && !w.has_g(4)) {
+    if (w.has_g(196)) modal.max_speed_rpm = *w.s.v;
+    else if (modal.speed_mode == SpeedMode::g96 && !w.has_g(74) && !w.has_g(112)) modal.css_m_min = *w.s.v;
+  }
+  // Axis words: a G4 dwell axis and #PSET values are not motion.
+  int dwell_axis = -1;
+  if (w.has_g(4)) {
+    dwell_axis = modal.plane == Plane::g18 ? 2 : modal.plane == Plane::g19 ? 1 : 0;
+    if (w.dwell_direct.v) out.dwell_s = w.dwell_direct.v;
+    else if (w.axes[dwell_axis]) out.dwell_s = w.axes[dwell_axis];
+  }
+  if (w.time_s.v) out.dwell_s = w.time_s.v;
+  PSet* pset = w.hash ? std::get_if<PSet>(&*w.hash) : nullptr;
+  PReset* preset = w.hash ? std::get_if<PReset>(&*w.hash) : nullptr;
+  if (w.axis_count) {
+    for (std::size_t i = 0; i < kMaxAxes; ++i) {
+      if (!w.axes[i]) continue;
+      if (w.has_g(4)) continue;
+      if (pset) pset->axes.emplace_back(static_cast<int>(i), *w.axes[i]);
+      else if (preset) preset->axes.push_back(static_cast<int>(i));
+      else out.axes[i] = w.axes[i];
+    }
+  }
+  for (const auto& mw : w.m) {
+    int c = mw.code;
+    bool spindle = c == 3 || c == 4 || c == 5 || c == 19 || (c >= 40 && c <= 45);
+    if (c == 17 || c == 29 || spindle) continue;
+    out.m.push_back(c);
+    if (c == 0 || (c == 1 && b.cfg.optional_stop)) out.stop = true;
+    if (c == 2 || c == 30) out.program_end = true;
+  }
+  for (const auto& hw : w.h) out.h.push_back(hw.code);
+  if (auto sc = main_din(w, b, modal, out)) out.spindles.push_back(std::move(*sc));
+  for (auto& sc : w.brackets) out.spindles.push_back(std::move(sc));
+  if (w.hash) {
+    if (auto* ms = std::get_if<MainSpindle>(&*w.hash))
+      b.main_target = ms->name ? *ms->name : b.cfg.main_spindle;
+    if (auto* d = std::get_if<DistCtrl>(&*w.hash)) {
+      if (d->set_pos_mm) b.dist_set_pos_known = true;
+      if (d->op == DistCtrlOp::on) b.dist_state = d->const_dist ? 2 : 1;
+      else if (d->op == DistCtrlOp::freeze) b.dist_state = 3;
+      else if (d->op == DistCtrlOp::off) b.dist_state = 0;
+    }
+    out.hash = std::move(w.hash);
+  }
+  return true;
+}
+
+}  // namespace nck::nc::detail

@@ -1,0 +1,127 @@
+// Program sections and calls: the main program (%name, or the whole file),
+// local subroutines (%L name, called with LL name) and global subroutine
+// files (L file.nc, relative to the calling file's folder); M17/M29 and the
+// next % header return, nesting is bounded.
+#include <fmt/format.h>
+
+#include "decoder_impl.hpp"
+
+namespace nck::nc {
+
+using namespace detail;
+
+namespace {
+
+// Opens `p` for a frame: from the cache when enabled, else streamed from
+// disk with a separate pass for the section index.
+bool open_frame(Decoder::Impl& d, const std::filesystem::path& p, bool cached, Frame& f) {
+  f.path = p;
+  f.reader = std::make_unique<SourceReader>();
+  if (cached && d.cache.enabled()) {
+    if (auto e = d.cache.get(p, d.cfg.max_block_chars)) {
+      f.mem = e->text;
+      f.index = e->index;
+      f.reader->open_memory(f.mem);
+      return true;
+    }
+  }
+  SourceReader scan;
+  if (!scan.open_file(p) || !f.reader->open_file(p)) return false;
+  f.index = std::make_shared<const ProgramIndex>(scan_sections(scan, d.cfg.max_block_chars));
+  return true;
+}
+
+}  // namespace
+
+bool Decoder::Impl::open_main(const std::filesystem::path& p) {
+  Frame f;
+  f.file_id = file_id(p.string());
+  if (!open_frame(*this, p, false, f)) {
+    diags.push_back(make_diagnostic(ErrorId::NcFileUnreadable, SourceLoc{p.string(), 0, 0},
+                                    fmt::format("cannot read the NC program '{}'", p.string())));
+    fatal = true;
+    return false;
+  }
+  if (const Section* m = f.index->main()) f.reader->seek(m->body);
+  frames.push_back(std::move(f));
+  return true;
+}
+
+Outcome Decoder::Impl::call(Cursor& c, bool local) {
+  std::size_t at = c.pos;
+  c.pos += local ? 2 : 1;
+  c.skip_spaces();
+  if (c.peek_keyword("CYCLE"))
+    return report(ErrorId::NcUnsupported, at, "cycle calls (L CYCLE [..]) are not supported by nck");
+  std::string name;
+  if (local) {
+    // The name runs to a comment or the end of the block (names may hold blanks).
+    std::size_t b = c.pos;
+    std::size_t e = b;
+    while (e < c.s.size() && c.s[e] != '(' && c.s[e] != ';') ++e;
+    std::string_view n = c.s.substr(b, e - b);
+    while (!n.empty() && (n.back() == ' ' || n.back() == '\t')) n.remove_suffix(1);
+    name = to_upper(n);
+    c.pos = e;
+  } else {
+    std::size_t b = c.pos;
+    while (!c.at_end() && c.peek() != ' ' && c.peek() != '\t' && c.peek() != ';' && c.peek() != '(') ++c.pos;
+    name = std::string(c.s.substr(b, c.pos - b));
+  }
+  if (name.empty()) return report(ErrorId::NcCallSyntax, at, local ? "LL needs a subroutine name" : "L needs a file name");
+  if (!c.rest_empty())
+    return report(ErrorId::NcCallSyntax, c.pos, "a subroutine call must be alone in its block");
+  if (frames.size() > cfg.max_subroutine_depth)
+    return report(ErrorId::NcSubroutineDepth, at,
+                  fmt::format("more than {} nested subroutine calls", cfg.max_subroutine_depth), true);
+  Frame& caller = frames.back();
+  Frame f;
+  if (local) {
+    const Section* s = caller.index->local(name);
+    if (!s)
+      return report(ErrorId::NcSubroutineNotFound, at,
+                    fmt::format("no local subroutine '%L {}' in this file", name));
+    f.file_id = caller.file_id;
+    f.path = caller.path;
+    f.index = caller.index;
+    f.mem = caller.mem;
+    f.reader = std::make_unique<SourceReader>();
+    if (f.mem) f.reader->open_memory(f.mem);
+    else if (!f.reader->open_file(f.path))
+      return report(ErrorId::NcFileUnreadable, at, fmt::format("cannot reopen '{}'", f.path.string()));
+    f.reader->seek(s->body);
+  } else {
+    std::filesystem::path p(name);
+    if (p.is_relative()) p = caller.path.parent_path() / p;
+    if (!open_frame(*this, p, true, f))
+      return report(ErrorId::NcSubroutineNotFound, at,
+                    fmt::format("subroutine file '{}' not found (looked for {})", name, p.string()));
+    f.file_id = file_id(p.string());
+    if (const Section* m = f.index->main()) f.reader->seek(m->body);
+  }
+  frames.push_back(std::move(f));
+  vars.push_scope();
+  return Outcome::nothing;
+}
+
+// M17/M29 (or the end of the subroutine's section): back to the caller.
+Outcome Decoder::Impl::do_return() {
+  if (!frames.back().ctl.empty())
+    return report(ErrorId::NcUnclosedControl, 0, "a $ structure is still open at the end of the subroutine");
+  frames.pop_back();
+  vars.pop_scope();
+  return Outcome::nothing;
+}
+
+// A % header or the end of the file ends the running program or subroutine.
+Outcome Decoder::Impl::end_of_section() {
+  if (frames.size() > 1) return do_return();
+  if (!frames.back().ctl.empty())
+    return report(ErrorId::NcUnclosedControl, 0, "a $ structure is still open at the end of the program");
+  if (var_mode)
+    return report(ErrorId::NcVarDeclaration, 0, "#VAR is never closed with #ENDVAR");
+  err.warn(ErrorId::NcMissingProgramEnd, 0, "the main program ends without M30/M2");
+  return Outcome::end;
+}
+
+}  // namespace nck::nc

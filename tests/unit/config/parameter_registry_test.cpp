@@ -1,0 +1,81 @@
+#include "nck/config/parameter_registry.hpp"
+
+#include <fstream>
+#include <gtest/gtest.h>
+#include <set>
+#include <sstream>
+
+namespace nck::config {
+namespace {
+
+TEST(ParameterRegistry, DocsFileIsTheRenderedRegistry) {
+  std::ifstream in(std::string(NCK_SOURCE_DIR) + "/docs/parameters.md");
+  ASSERT_TRUE(in) << "docs/parameters.md missing; write it from parameters_markdown()";
+  std::stringstream ss;
+  ss << in.rdbuf();
+  EXPECT_EQ(ss.str(), parameters_markdown()) << "regenerate docs/parameters.md (nck params > docs/parameters.md)";
+}
+
+TEST(ParameterRegistry, HoldsEveryFactsSheetKeyWithItsId) {
+  // A sample across all lists of PARAMETER_FACTS.md rows: key -> ID.
+  const std::pair<ListKind, std::pair<const char*, const char*>> rows[] = {
+      {ListKind::startup, {"kanal_anzahl", "P-STUP-00001"}},
+      {ListKind::startup, {"ads_32_bit_comp_mode", "P-STUP-00175"}},
+      {ListKind::channel, {"spindel[].range_table[].max_speed", "P-CHAN-00055"}},
+      {ListKind::channel, {"synchro_data.koppel_gruppe[].paar[].mode", "P-CHAN-00061"}},
+      {ListKind::channel, {"dist_ctrl[].smoothing_factor", "P-CHAN-00827"}},
+      {ListKind::channel, {"thread_cutting.thread_chain", "P-CHAN-00837"}},
+      {ListKind::axis, {"getriebe[].slope_profil.a_beschl", "P-AXIS-00001"}},
+      {ListKind::axis, {"getriebe[].beschl_kennlinie.n2", "P-AXIS-00242"}},
+      {ListKind::axis, {"antr.secondary_encoder", "P-AXIS-00824"}},
+      {ListKind::tool, {"wz[].a_max", "P-TOOL-00015"}},
+      {ListKind::zero, {"np_grp[].achse[].inaktiv", "P-ZERO-00004"}},
+      {ListKind::clamp, {"pzv_grp[].achse[].versatz", "P-CLMP-00001"}},
+  };
+  for (const auto& [list, kv] : rows) {
+    const ParamInfo* p = find_parameter(list, kv.first);
+    ASSERT_NE(p, nullptr) << kv.first;
+    EXPECT_EQ(p->id, kv.second) << kv.first;
+  }
+  std::set<std::string_view> ids;
+  for (const auto& p : all_parameters())
+    if (p.id.starts_with("P-")) ids.insert(p.id);
+  EXPECT_GE(ids.size(), 175u);  // the facts sheet has 175 rows, each with its own ID
+}
+
+TEST(ParameterRegistry, KeysAreUniquePerListAndLowerCase) {
+  std::set<std::pair<int, std::string_view>> seen;
+  for (const auto& p : all_parameters()) {
+    EXPECT_TRUE(seen.emplace(static_cast<int>(p.list), p.key).second) << p.key;
+    for (char c : p.key) EXPECT_FALSE(c >= 'A' && c <= 'Z') << p.key;
+    EXPECT_FALSE(p.meaning.empty()) << p.key;
+  }
+}
+
+TEST(ParameterRegistry, DefaultsLieInsideTheirRange) {
+  for (const auto& p : all_parameters()) {
+    if (p.type != ParamType::integer && p.type != ParamType::real && p.type != ParamType::boolean) continue;
+    if (p.def == 0 && p.min == 1) continue;  // ISG default 0 = "not set" (e.g. log_achs_nr)
+    if (p.key == "dist_ctrl[].a_max") continue;  // default 0 = "not set" (315001)
+    EXPECT_GE(p.def, p.min) << p.key;
+    EXPECT_LE(p.def, p.max) << p.key;
+  }
+}
+
+TEST(ParameterRegistry, SymbolValuesOfFactsSheetB0) {
+  EXPECT_EQ(symbol_value(ParamType::sync, "MVS_SVS"), 0x2u);
+  EXPECT_EQ(symbol_value(ParamType::sync, "MNE_SNS"), 0x20u);
+  EXPECT_EQ(symbol_value(ParamType::sync, "MVS_SLP"), 0x8000u);
+  EXPECT_EQ(symbol_value(ParamType::sync, "PLC_INFO"), 0x20000u);
+  EXPECT_EQ(symbol_value(ParamType::sync, "NOT_VALID"), 0x80000000u);
+  EXPECT_EQ(symbol_value(ParamType::achstyp, "ACHSTYP_SPINDEL"), 0x4u);
+  EXPECT_FALSE(symbol_value(ParamType::sync, "MVS_XYZ"));
+}
+
+TEST(ParameterRegistry, NearestKey) {
+  EXPECT_EQ(nearest_key(ListKind::channel, "spindel[].log_achs_no"), "spindel[].log_achs_nr");
+  EXPECT_EQ(nearest_key(ListKind::startup, "cycle_time"), "cycle_time_us");
+}
+
+}  // namespace
+}  // namespace nck::config
