@@ -45,10 +45,12 @@ int parse_program(const ParseOptions& opt) {
     }
     cfg = kernel::decoder_config(*r.machine, opt.channel - 1);
   }
+  cfg.continue_after_error = true;  // lint: report every bad block, not only the first
   nc::Decoder dec(opt.program, cfg);
   std::size_t blocks = 0;
   std::size_t shown = 0;
   auto show_new = [&] {
+    std::fflush(stdout);  // keep blocks and diagnostics in order on a shared terminal
     for (; shown < dec.diagnostics().size(); ++shown)
       fmt::print(stderr, "{}\n", format(dec.diagnostics()[shown]));
   };
@@ -62,6 +64,7 @@ int parse_program(const ParseOptions& opt) {
   }
   std::size_t errors = 0;
   for (const Diagnostic& d : dec.diagnostics()) errors += d.severity == Severity::error;
+  std::fflush(stdout);
   fmt::print(stderr, "{}: {} block(s), {} error(s)\n", opt.program, blocks, errors);
   return errors == 0 ? 0 : 1;
 }

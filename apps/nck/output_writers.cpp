@@ -7,7 +7,8 @@
 
 namespace nck::app {
 
-using nlohmann::json;
+// ordered: "t", "ch", "ev" first, as SPEC 2.3 lists them
+using json = nlohmann::ordered_json;
 
 const std::string& RunNames::file(std::size_t ch, std::uint16_t id) const {
   static const std::string unknown;

@@ -137,7 +137,7 @@ int run_simulation(const RunOptions& opt) {
   const auto wall_start = std::chrono::steady_clock::now();
   bool time_limit = false;
   for (;;) {
-    const double t_s = static_cast<double>(k.cycles()) * k.cycle_time_s();
+    const double t_s = k.time_s();
     for (std::size_t ch = 0; ch < feeds.size(); ++ch) feed_channel(k, ch, feeds[ch], t_s, out);
     k.tick(in, o);
     record_events(o, names, out);
@@ -153,7 +153,7 @@ int run_simulation(const RunOptions& opt) {
       std::this_thread::sleep_until(wall_start + std::chrono::duration<double>(t_s));
     progress.update(t_s);
   }
-  const double end_s = static_cast<double>(k.cycles()) * k.cycle_time_s();
+  const double end_s = k.time_s();
   if (time_limit) {
     for (std::size_t ch = 0; ch < k.channel_count(); ++ch) {
       if (k.snapshot(ch).status == kernel::ChannelStatus::ended) continue;

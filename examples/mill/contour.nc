@@ -8,6 +8,9 @@
 M17
 
 %contour
+#VAR
+  V.L.I = 0              ; hole counter
+#ENDVAR
 N10 G17 G90 G71
 N20 G0 X0 Y0 Z10
 N30 P1 = 40            ; pocket half width
@@ -30,7 +33,6 @@ N180 G1 Z0 F600
 N190 G3 X15 Y0 Z-3 I-15 J0 F900
 N200 G0 Z10
 ; bolt-hole circle: six holes on a 30 mm radius
-N210 V.L.I = 0
 N220 $WHILE V.L.I < 6
 N230   G0 X[30 * COS[V.L.I * 60]] Y[30 * SIN[V.L.I * 60]]
 N240   LL HOLE

@@ -19,6 +19,7 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
     return std::unexpected(make_diagnostic(
         ErrorId::KernelNotYetSupported, {"startup.lis", 0, 0},
         fmt::format("{} channels configured, at most {}", machine.channels.size(), config::kMaxChannels)));
+  cycle_us_ = machine.cycle_time_us;
   cycle_s_ = machine.cycle_time_us * 1e-6;
   channels_.clear();
   machine_ = std::make_unique<const config::Machine>(machine);
@@ -68,7 +69,8 @@ ChannelSnapshot Kernel::snapshot(std::size_t ch) const {
 }
 
 void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
-  const double t_s = static_cast<double>(cycles_) * cycle_s_;
+  // From integer microseconds, so times print as the decimals they are.
+  const double t_s = static_cast<double>(cycles_ * cycle_us_) * 1e-6;
   out.t_s = t_s;
   out.events.clear();
   out.events_dropped = 0;

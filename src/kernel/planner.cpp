@@ -71,6 +71,8 @@ std::string Planner::unsupported(const nc::Block& b) const {
   for (int g : b.g_nonmodal)
     if (g != 4) return fmt::format("G{} is not executed yet", g);
   if (b.d && *b.d != 0) return fmt::format("tool offset D{} is not applied yet", *b.d);
+  if (!b.kernel_writes.empty())
+    return fmt::format("writing {} is not executed yet", b.kernel_writes.front().name);
   if (b.dwell_revs) return "a dwell in spindle revolutions (G4 S..) is not executed yet";
   const nc::ModalState& m = b.modal;
   using nc::Motion;

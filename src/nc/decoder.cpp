@@ -160,7 +160,12 @@ Outcome Decoder::Impl::process_block(Block& out) {
     c.skip_blanks();
   }
   std::optional<std::int64_t> n;
-  if (upper(c.peek()) == 'N' && is_digit(c.peek(1))) {
+  // "N10" block number, or DIN 66025's main-block mark ":" / ":10".
+  bool main_mark = c.peek() == ':';
+  if (main_mark && !is_digit(c.peek(1))) {
+    ++c.pos;
+    c.skip_blanks();
+  } else if (main_mark || (upper(c.peek()) == 'N' && is_digit(c.peek(1)))) {
     ++c.pos;
     std::int64_t v = 0;
     int digits = 0;

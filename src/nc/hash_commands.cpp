@@ -5,61 +5,11 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "block_words.hpp"
+#include "hash_parse_util.hpp"
 
 namespace nck::nc {
-
-namespace {
-struct NameOf {
-  std::string operator()(const SetAxLink& s) const { return s.by_number ? "#AX LINK NBR" : "#SET AX LINK"; }
-  std::string operator()(const EnableAxLink&) const { return "#ENABLE AX LINK"; }
-  std::string operator()(const DisableAxLink&) const { return "#DISABLE AX LINK"; }
-  std::string operator()(const MainSpindle&) const { return "#MAIN SPINDLE"; }
-  std::string operator()(const CAxis& c) const { return c.on ? "#CAX" : "#CAX OFF"; }
-  std::string operator()(const Face& c) const { return c.on ? "#FACE" : "#FACE OFF"; }
-  std::string operator()(const Cylinder& c) const { return c.on ? "#CYL" : "#CYL OFF"; }
-  std::string operator()(const ExplSyn&) const { return "#EXPL SYN"; }
-  std::string operator()(const ToolData& t) const { return t.prep ? "#TOOL PREP" : "#TOOL DATA"; }
-  std::string operator()(const CoordSystem& c) const {
-    static constexpr const char* ops[] = {"DEF", "ON", "OFF", "OFF ALL", "ADD", "SELECT", "MODE ON", "MODE OFF"};
-    return fmt::format("#{} {}", c.acs ? "ACS" : "CS", ops[static_cast<int>(c.op)]);
-  }
-  std::string operator()(const Ecs& c) const { return c.on ? "#ECS ON" : "#ECS OFF"; }
-  std::string operator()(const Mcs& c) const { return c.on ? "#MCS ON" : "#MCS OFF"; }
-  std::string operator()(const Rotation& c) const { return c.on ? "#ROTATION ON" : "#ROTATION OFF"; }
-  std::string operator()(const PSet&) const { return "#PSET"; }
-  std::string operator()(const PReset&) const { return "#PRESET"; }
-  std::string operator()(const Tlc& c) const { return c.on ? "#TLC ON" : "#TLC OFF"; }
-  std::string operator()(const SuppressOffsets&) const { return "#SUPPRESS OFFSETS"; }
-  std::string operator()(const GetManualOffsets&) const { return "#GET MANUAL OFFSETS"; }
-  std::string operator()(const DistCtrl& d) const {
-    static constexpr const char* ops[] = {"ON", "FREEZE", "OFF", ""};
-    std::string op = ops[static_cast<int>(d.op)];
-    return op.empty() ? "#DIST CTRL" : "#DIST CTRL " + op;
-  }
-};
-}  // namespace
-
-std::string hash_command_name(const HashCommand& c) { return std::visit(NameOf{}, c); }
-
 namespace detail {
 namespace {
-
-bool args_error(BlockCtx& b, std::size_t pos, std::string msg) {
-  return b.x.err.fail(ErrorId::NcHashArguments, pos, std::move(msg));
-}
-
-bool keywords(Cursor& c, std::initializer_list<std::string_view> kws) {
-  std::size_t save = c.pos;
-  for (auto k : kws) {
-    c.skip_spaces();
-    if (!c.match_keyword(k)) {
-      c.pos = save;
-      return false;
-    }
-  }
-  return true;
-}
 
 bool int_arg(Cursor& c, BlockCtx& b, int& out, int lo, int hi, std::string_view what) {
   c.skip_spaces();
@@ -289,85 +239,6 @@ bool named_list(Cursor& c, BlockCtx& b, std::vector<std::string>& names, std::si
     if (c.match(']')) break;
     if (!c.match(',') || names.size() >= max) return args_error(b, c.pos, "',' or ']' expected");
   }
-  return true;
-}
-
-bool parse_dist_ctrl(Cursor& c, BlockCtx& b, std::size_t pos, HashCommand& out) {
-  if (!b.cfg.dist_ctrl_available)
-    return b.x.err.fail(ErrorId::NcDistCtrlNotEnabled, pos,
-                        "3D distance control is not enabled: add FCT_3D_DIST_CTRL to configuration.decoder.function");
-  DistCtrl d;
-  d.op = DistCtrlOp::settings;
-  if (keywords(c, {"WAIT"})) d.wait = true;
-  if (keywords(c, {"ON"})) d.op = DistCtrlOp::on;
-  else if (keywords(c, {"DRYRUN"})) { d.op = DistCtrlOp::on; d.dryrun = true; }
-  else if (keywords(c, {"FREEZE"})) d.op = DistCtrlOp::freeze;
-  else if (keywords(c, {"OFF"})) { d.op = DistCtrlOp::off; d.no_move = keywords(c, {"NO_MOVE"}); }
-  c.skip_spaces();
-  if (c.match('[')) {
-    for (;;) {
-      c.skip_spaces();
-      if (c.match(']')) break;
-      if (c.at_end()) return args_error(b, pos, "']' expected to close the #DIST CTRL options");
-      std::size_t kp = c.pos;
-      std::string key = to_upper(c.read_ident());
-      if (key == "SURFACE") { d.const_dist = false; continue; }
-      if (key == "CONST_DIST") { d.const_dist = true; continue; }
-      c.skip_spaces();
-      if (key.empty() || !c.match('='))
-        return args_error(b, kp, "option expected as KEY=value (SET_POS= SET_DIST= KP= I_TN= D_TV= FILTER_TYPE= "
-                                 "N_CYCLES= FG_F0= ORDER= SMOOTH_FACT= KALMAN_SIGMA= SENSOR_SOURCE= SENSOR_VAR=)");
-      c.skip_spaces();
-      if (key == "FILTER_TYPE" || key == "SENSOR_SOURCE" || key == "SENSOR_VAR") {
-        std::size_t b0 = c.pos;
-        while (!c.at_end() && c.peek() != ' ' && c.peek() != ']' && c.peek() != ',') ++c.pos;
-        std::string v = to_upper(c.s.substr(b0, c.pos - b0));
-        if (key == "FILTER_TYPE") {
-          static constexpr std::string_view kTypes[] = {"MOVING_AVERAGE", "LOWPASS", "KALMAN_MA",
-                                                        "EXPO_MEAN", "KALMAN_EXPO"};
-          bool ok = false;
-          for (auto t : kTypes) ok = ok || v == t;
-          if (!ok)
-            return args_error(b, b0, fmt::format("FILTER_TYPE {} unknown: MOVING_AVERAGE, LOWPASS, KALMAN_MA, "
-                                                 "EXPO_MEAN or KALMAN_EXPO", v));
-          d.filter_type = v;
-        } else if (key == "SENSOR_SOURCE") {
-          d.sensor_source = v;
-        } else {
-          d.sensor_var = v;
-        }
-        c.match(',');
-        continue;
-      }
-      double v = 0;
-      if (!eval_value(c, b.x, v)) return false;
-      c.match(',');
-      auto positive = [&](bool ok) {
-        return ok ? true : args_error(b, kp, fmt::format("{}={} is out of range", key, v));
-      };
-      if (key == "SET_POS") d.set_pos_mm = v;
-      else if (key == "SET_DIST") { if (!positive(v >= 0)) return false; d.set_dist_mm = v; }
-      else if (key == "KP") { if (!positive(v >= 0)) return false; d.kp = v; }
-      else if (key == "I_TN") { if (!positive(v >= 0)) return false; d.i_tn = v; }
-      else if (key == "D_TV") { if (!positive(v >= 0)) return false; d.d_tv = v; }
-      else if (key == "N_CYCLES") { if (!positive(v >= 1 && v <= 100000 && v == std::round(v))) return false; d.n_cycles = static_cast<int>(v); }
-      else if (key == "ORDER") { if (!positive(v >= 1 && v <= 10 && v == std::round(v))) return false; d.order = static_cast<int>(v); }
-      else if (key == "FG_F0") { if (!positive(v > 0)) return false; d.fg_f0 = v; }
-      else if (key == "SMOOTH_FACT") { if (!positive(v > 0 && v <= 1)) return false; d.smooth_fact = v; }
-      else if (key == "KALMAN_SIGMA") { if (!positive(v > 0)) return false; d.kalman_sigma = v; }
-      else return args_error(b, kp, fmt::format("{} is not a #DIST CTRL option", key));
-    }
-  }
-  if (d.op == DistCtrlOp::on) {
-    int want = d.const_dist ? 2 : 1;
-    if ((b.dist_state == 1 || b.dist_state == 2) && b.dist_state != want)
-      return b.x.err.fail(ErrorId::NcDistCtrlModeChange, pos,
-                          "switch #DIST CTRL OFF or FREEZE before changing between SURFACE and CONST_DIST");
-    if (!d.const_dist && !d.set_pos_mm && !b.dist_set_pos_known)
-      return b.x.err.fail(ErrorId::NcDistCtrlNoSetPos, pos,
-                          "surface mode needs the surface position: #DIST CTRL ON [SURFACE SET_POS=..]");
-  }
-  out = std::move(d);
   return true;
 }
 

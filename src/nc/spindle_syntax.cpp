@@ -100,9 +100,11 @@ bool check_bracket(BlockCtx& b, const SpindleCommand& sc, int m_count, int g136_
   bool ff = sc.g135 || sc.g137;
   if (sc.g135 && sc.g137)
     return b.x.err.fail(ErrorId::NcSpindleCombination, pos, "G135 and G137 exclude each other");
-  if (ff && other_count > 1 + (sc.g136_pct ? 1 : 0))
+  // The manual's own example combines G135/G136 with M4 and REV, so only
+  // the other special functions are excluded here.
+  if (ff && (sc.g74 || sc.g130_pct || sc.g167 || sc.callax || sc.putax || dyn))
     return b.x.err.fail(ErrorId::NcSpindleCombination, pos,
-                        "G135/G137 may only be combined with G136 in a spindle command");
+                        "G135/G137 cannot share a spindle command with G74, G130, G167, CALLAX/PUTAX or dynamic data");
   if (sc.callax && sc.putax)
     return b.x.err.fail(ErrorId::NcSpindleCombination, pos, "CALLAX and PUTAX exclude each other");
   return true;

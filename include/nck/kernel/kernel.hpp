@@ -64,12 +64,15 @@ class Kernel {
   bool all_channels_done() const noexcept;
   bool channel_done(std::size_t ch) const noexcept;
   std::uint64_t cycles() const noexcept { return cycles_; }
+  // Simulated time at the start of the next cycle.
+  double time_s() const noexcept { return static_cast<double>(cycles_ * cycle_us_) * 1e-6; }
 
  private:
   std::unique_ptr<const config::Machine> machine_;  // own copy: channels refer into it
   std::vector<std::unique_ptr<Channel>> channels_;
   std::vector<std::string> messages_;
   double cycle_s_ = 0.001;
+  std::uint64_t cycle_us_ = 1000;
   std::uint64_t cycles_ = 0;
 };
 

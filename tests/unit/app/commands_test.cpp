@@ -40,7 +40,7 @@ TEST(ParseCommand, JsonPrintsOneObjectPerBlock) {
   std::size_t objects = 0;
   for (const std::string& line : split(r.output, '\n'))
     if (!line.empty() && line[0] == '{') {
-      EXPECT_NO_THROW((void)nlohmann::json::parse(line)) << line;
+      EXPECT_TRUE(nlohmann::json::accept(line)) << line;
       ++objects;
     }
   EXPECT_EQ(objects, 12u);

@@ -93,8 +93,11 @@ TEST(Channel, QuarterCircleEndsOnTarget) {
   RunLog r = run_all(k);
   EXPECT_NEAR(r.positions.back()[0], 0.0, 1e-9);
   EXPECT_NEAR(r.positions.back()[1], 10.0, 1e-9);
-  for (const auto& p : r.positions)
-    if (p[1] > 1e-9) EXPECT_NEAR(std::hypot(p[0], p[1]), 10.0, 1e-6);
+  for (const auto& p : r.positions) {
+    if (p[1] > 1e-9) {
+      EXPECT_NEAR(std::hypot(p[0], p[1]), 10.0, 1e-6);
+    }
+  }
 }
 
 TEST(Channel, DwellTakesItsTime) {

@@ -90,7 +90,7 @@ TEST(NcHash, CoordinateSystems) {
   EXPECT_DOUBLE_EQ(cmd<CoordSystem>(d, 15).values[2], 10);
   EXPECT_FALSE(cmd<CoordSystem>(d, 15).id.has_value());
   EXPECT_TRUE(decode("#CS ON [6]\n").has(ErrorId::NcHashArguments));
-  EXPECT_TRUE(decode("#CS DEF [1]\n").has(ErrorId::NcHashArguments));
+  EXPECT_TRUE(decode("#CS DEF\n").has(ErrorId::NcHashArguments));
   EXPECT_TRUE(decode("#CS ON [1][1,2,3,4,5,6,7]\n").has(ErrorId::NcHashArguments));
   EXPECT_TRUE(decode("#CS ADD [MCS][1]\n").has(ErrorId::NcHashArguments));
   EXPECT_TRUE(decode("#ECS DEF\n").has(ErrorId::NcEcsDef));

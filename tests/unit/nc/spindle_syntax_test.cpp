@@ -141,7 +141,7 @@ TEST(NcSpindle, CombinationErrors) {
   EXPECT_TRUE(decode("S2[G136=50 G136=60]\n").has(ErrorId::NcSpindleG136Twice));
   EXPECT_TRUE(decode("S2[G136=50 G130=60]\n").has(ErrorId::NcSpindleG136WithG130));
   EXPECT_TRUE(decode("S2[GET_DYNAMIC_DATA M3]\n").has(ErrorId::NcSpindleCombination));
-  EXPECT_TRUE(decode("S2[G135 REV100]\n").has(ErrorId::NcSpindleCombination));
+  EXPECT_TRUE(decode("S2[G135 G74]\n").has(ErrorId::NcSpindleCombination));
   EXPECT_TRUE(decode("S2[OVERRIDE SPEED_FACT=300]\n").has(ErrorId::NcOverrideRange));
   EXPECT_TRUE(decode("S2[REV-5]\n").has(ErrorId::NcNegativeSpeed));
   EXPECT_TRUE(decode("S2[M3 M19 POS5]\nM30\n").diags.empty());  // direction for M19
