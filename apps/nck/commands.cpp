@@ -55,8 +55,12 @@ int parse_program(const ParseOptions& opt) {
       fmt::print(stderr, "{}\n", format(dec.diagnostics()[shown]));
   };
   for (;;) {
+    const std::size_t before = dec.diagnostics().size();
     nc::Decoder::Result res = dec.next();
     show_new();
+    // In lint mode a bad block is dropped and decoding goes on; an error
+    // without a new diagnostic means the decoder cannot go on.
+    if (res.status == nc::Decoder::Status::error && dec.diagnostics().size() > before) continue;
     if (res.status != nc::Decoder::Status::block) break;
     ++blocks;
     if (opt.json) fmt::print("{}\n", nc::to_json(res.block, dec).dump());

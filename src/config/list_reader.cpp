@@ -62,7 +62,6 @@ bool parse_line(std::string_view raw, std::uint32_t line_no, const std::string& 
   std::size_t key_end = 0;
   while (key_end < s.size() && !is_blank(s[key_end])) ++key_end;
   std::string_view key = s.substr(0, key_end);
-  auto column = static_cast<std::uint32_t>(raw.find(key) + 1);
   if (lower(key) == "ende" || lower(key) == "end") {
     end_seen = true;
     return false;
@@ -70,14 +69,13 @@ bool parse_line(std::string_view raw, std::uint32_t line_no, const std::string& 
   bool key_ok = (std::isalpha(static_cast<unsigned char>(key.front())) || key.front() == '_') &&
                 std::all_of(key.begin(), key.end(), is_key_char);
   if (!key_ok) {
-    loc.column = column;
     diags.add(ErrorId::ConfigBadLine, loc,
               fmt::format("'{}' is not a key (letters, digits, '_', '.', '[n]'); line ignored",
                           key.substr(0, 40)));
     return false;
   }
   out.lines.push_back(ListLine{lower(key), std::string(strip_remark(trim(s.substr(key_end)))),
-                               line_no, column});
+                               line_no});
   return true;
 }
 

@@ -80,7 +80,7 @@ class LineParser {
   }
 
  private:
-  SourceLoc where(const ListLine& l) const { return SourceLoc{file_, l.line, l.column}; }
+  SourceLoc where(const ListLine& l) const { return SourceLoc{file_, l.line, 0}; }
   bool bad(SourceLoc loc, std::string msg) {
     diags_.add(ErrorId::ConfigBadValue, std::move(loc), std::move(msg));
     return false;
@@ -131,7 +131,7 @@ class LineParser {
 // Resolves the key of `line` to a registry entry (directly or via an alias).
 const ParamInfo* resolve_key(const ListLine& line, ListKind kind, const std::string& file,
                              detail::KeyParts& parts, std::string& canonical, Diagnostics& diags) {
-  SourceLoc loc{file, line.line, line.column};
+  SourceLoc loc{file, line.line, 0};
   canonical = line.key;
   parts = detail::split_key(canonical);
   const ParamInfo* info = parts.ok ? find_parameter(kind, parts.pattern) : nullptr;
@@ -155,7 +155,7 @@ bool index_ok(const ListLine& line, const ParamInfo& info, const detail::KeyPart
               const std::string& file, Diagnostics& diags) {
   for (std::size_t n = 0; n < parts.index_count; ++n) {
     if (parts.index[n] < info.index_count[n]) continue;
-    diags.add(ErrorId::ConfigOutOfRange, SourceLoc{file, line.line, line.column},
+    diags.add(ErrorId::ConfigOutOfRange, SourceLoc{file, line.line, 0},
               fmt::format("index {} of '{}' is too large (at most {})", parts.index[n], line.key,
                           info.index_count[n] - 1));
     return false;
@@ -174,7 +174,7 @@ ParamList ParamList::parse(const ListText& text, ListKind kind, Diagnostics& dia
     std::string canonical;
     const ParamInfo* info = resolve_key(line, kind, text.file, parts, canonical, diags);
     if (!info || !index_ok(line, *info, parts, text.file, diags)) continue;
-    ParamValue v{info, canonical, parts.index, 0, {}, SourceLoc{text.file, line.line, line.column}};
+    ParamValue v{info, canonical, parts.index, 0, {}, SourceLoc{text.file, line.line, 0}};
     std::optional<std::string> ref;
     if (!parser.convert(line, *info, v, ref)) continue;
     if (auto it = list.values_.find(canonical); it != list.values_.end())

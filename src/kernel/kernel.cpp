@@ -70,7 +70,7 @@ ChannelSnapshot Kernel::snapshot(std::size_t ch) const {
 
 void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   // From integer microseconds, so times print as the decimals they are.
-  const double t_s = static_cast<double>(cycles_ * cycle_us_) * 1e-6;
+  const double t_s = static_cast<double>(cycles_ * cycle_us_) / 1e6;
   out.t_s = t_s;
   out.events.clear();
   out.events_dropped = 0;

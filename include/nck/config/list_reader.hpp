@@ -23,7 +23,6 @@ struct ListLine {
   std::string key;     // lower case, e.g. "spindel[0].m3_synch"
   std::string value;   // text after the key, remark after '#' / '(' removed, trimmed
   std::uint32_t line = 0;
-  std::uint32_t column = 0;  // 1-based column of the key
 };
 
 struct ListText {

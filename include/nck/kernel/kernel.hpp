@@ -65,7 +65,7 @@ class Kernel {
   bool channel_done(std::size_t ch) const noexcept;
   std::uint64_t cycles() const noexcept { return cycles_; }
   // Simulated time at the start of the next cycle.
-  double time_s() const noexcept { return static_cast<double>(cycles_ * cycle_us_) * 1e-6; }
+  double time_s() const noexcept { return static_cast<double>(cycles_ * cycle_us_) / 1e6; }
 
  private:
   std::unique_ptr<const config::Machine> machine_;  // own copy: channels refer into it
