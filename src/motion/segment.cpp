@@ -1,8 +1,11 @@
 #include "nck/motion/segment.hpp"
 
+
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace nck::motion {
 namespace {
@@ -123,17 +126,24 @@ double sweep_between(double a0, double a1, bool ccw, bool full) noexcept {
 
 }  // namespace
 
+namespace {
+// The axis count and plane axes an arc needs, or what is wrong with them.
+std::optional<ArcError> plane_error(std::size_t n_axes, std::size_t plane_a,
+                                    std::size_t plane_b) noexcept {
+  if (n_axes == 0 || n_axes > kMaxAxes) return ArcError::invalid_axis_count;
+  if (plane_a >= n_axes || plane_b >= n_axes) return ArcError::plane_axis_out_of_range;
+  if (plane_a == plane_b) return ArcError::plane_axes_equal;
+  return std::nullopt;
+}
+}  // namespace
+
 std::expected<Segment, ArcError> make_arc_center(const AxisVector& start, const AxisVector& end,
                                                  std::size_t n_axes, std::size_t plane_a,
                                                  std::size_t plane_b, double center_a,
                                                  double center_b, bool ccw, int extra_turns,
                                                  ArcTolerance tol,
                                                  AxisMask length_axes) noexcept {
-  if (n_axes == 0 || n_axes > kMaxAxes) return std::unexpected(ArcError::invalid_axis_count);
-  if (plane_a >= n_axes || plane_b >= n_axes) {
-    return std::unexpected(ArcError::plane_axis_out_of_range);
-  }
-  if (plane_a == plane_b) return std::unexpected(ArcError::plane_axes_equal);
+  if (auto e = plane_error(n_axes, plane_a, plane_b)) return std::unexpected(*e);
   if (!all_finite(start, n_axes) || !all_finite(end, n_axes) || !std::isfinite(center_a) ||
       !std::isfinite(center_b)) {
     return std::unexpected(ArcError::non_finite_input);
@@ -177,11 +187,7 @@ std::expected<Segment, ArcError> make_arc_radius(const AxisVector& start, const 
                                                  std::size_t plane_b, double radius_mm, bool ccw,
                                                  ArcTolerance tol,
                                                  AxisMask length_axes) noexcept {
-  if (n_axes == 0 || n_axes > kMaxAxes) return std::unexpected(ArcError::invalid_axis_count);
-  if (plane_a >= n_axes || plane_b >= n_axes) {
-    return std::unexpected(ArcError::plane_axis_out_of_range);
-  }
-  if (plane_a == plane_b) return std::unexpected(ArcError::plane_axes_equal);
+  if (auto e = plane_error(n_axes, plane_a, plane_b)) return std::unexpected(*e);
   if (!std::isfinite(radius_mm) || !std::isfinite(start[plane_a]) ||
       !std::isfinite(start[plane_b]) || !std::isfinite(end[plane_a]) ||
       !std::isfinite(end[plane_b])) {
