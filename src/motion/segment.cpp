@@ -1,7 +1,5 @@
 #include "nck/motion/segment.hpp"
 
-
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
