@@ -16,6 +16,9 @@ constexpr std::array kErrors = {
 #include "nck/core/errors_config.def"
 #include "nck/core/errors_nc.def"
 #include "nck/core/errors_kernel.def"
+#include "nck/core/errors_spindle.def"
+#include "nck/core/errors_plc.def"
+#include "nck/core/errors_frames.def"
 #include "nck/core/errors_app.def"
 #undef NCK_ERROR
 };

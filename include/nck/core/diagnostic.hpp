@@ -16,13 +16,17 @@ enum class Severity : std::uint8_t { warning, error };
 //   NCK_ERROR(Name, number, severity, "what is wrong", "what to change")
 // Seed / TF5200 diagnosis numbers are used where the seeds give one; our own
 // IDs live in documented bands (docs/errors.md):
-//   910000-919999 configuration, 920000-929999 decoder,
+//   910000-919999 configuration, 920000-929999 decoder, 950000-959999 spindle,
+//   960000-969999 PLC simulation, 970000-979999 frames (coordinate systems),
 //   930000-939999 kernel/channel, 940000-949999 command line and files.
 enum class ErrorId : std::uint32_t {
 #define NCK_ERROR(name, number, severity, text, remedy) name = number,
 #include "nck/core/errors_config.def"
 #include "nck/core/errors_nc.def"
 #include "nck/core/errors_kernel.def"
+#include "nck/core/errors_spindle.def"
+#include "nck/core/errors_plc.def"
+#include "nck/core/errors_frames.def"
 #include "nck/core/errors_app.def"
 #undef NCK_ERROR
 };
