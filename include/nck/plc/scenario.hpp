@@ -1,0 +1,97 @@
+#pragma once
+// The --plc FILE scenario: timed HLI writes, one per line (grammar in
+// docs/plc-scenario.md). Parsed at setup into a time-sorted list; replayed in
+// the cyclic path by ScenarioPlayer without allocating.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "nck/config/machine.hpp"
+#include "nck/core/diagnostic.hpp"
+#include "nck/plc/ext_command.hpp"
+#include "nck/plc/hli.hpp"
+#include "nck/plc/plc_sim.hpp"
+
+namespace nck::plc {
+
+enum class ActionKind : std::uint8_t {
+  spindle_override,     // override S1 50 / spindle_override S1 50
+  override_valid,       // override_valid S1 on|off
+  feed_override,        // feed_override 80
+  feedhold,             // feedhold on|off            (channel)
+  spindle_feedhold,     // spindle_feedhold S1 on|off (one spindle)
+  spindle_stop_at_end,  // spindle_stop_at_end on|off [S1]  (no spindle: all of the channel)
+  reset,                // reset                      (channel reset request)
+  spindle_reset,        // spindle_reset S1
+  optional_stop,        // optional_stop on|off
+  silent,               // silent on|off              (PLC stops acknowledging)
+  spindle_cmd,          // spindle_cmd S2 M3 REV500   (external spindle command)
+};
+
+// The action's name as written in the file (the primary spelling).
+std::string_view action_name(ActionKind k) noexcept;
+
+struct ScenarioAction {
+  double t_s = 0;
+  std::uint32_t line = 0;      // 1-based line in the scenario file
+  std::uint8_t channel = 1;    // 1-based
+  ActionKind kind = ActionKind::reset;
+  std::array<char, kSpindleNameChars> spindle_name{};  // empty: none given
+  std::int8_t spindle = kNoSpindle;      // channel's spindle index (resolve_spindles)
+  std::int8_t hli_spindle = kNoSpindle;  // HLI object index (resolve_spindles)
+  double value = 0;            // percent for the overrides
+  bool on = false;             // switches
+  ExtSpindleCommand cmd;       // spindle_cmd only
+  bool has_spindle() const noexcept { return spindle_name[0] != '\0'; }
+  std::string_view spindle_view() const noexcept { return std::string_view(spindle_name.data()); }
+};
+
+struct Scenario {
+  std::string file;
+  std::vector<ScenarioAction> actions;  // sorted by time, file order within equal times
+};
+
+inline constexpr std::size_t kMaxScenarioActions = 100000;
+inline constexpr double kMaxOverridePercent = 200.0;
+
+// setup: parses the text of a scenario file. Bad lines are skipped and
+// reported in diags (ID, file, line, column); never throws on any input.
+Scenario parse_scenario(std::string_view text, std::string file, Diagnostics& diags);
+
+// setup: checks channels and spindle names against the machine and fills
+// spindle / hli_spindle (and cmd.spindle). "S" names the channel's main
+// spindle as configured (main_spindle_ax_nr). Unresolvable actions are
+// reported and removed.
+void resolve_spindles(Scenario& sc, const config::Machine& m, const SpindleMap& map,
+                      Diagnostics& diags);
+
+// rt: replays a scenario: each cycle, due(now) gives the actions whose time
+// has come (t_s <= now_s) and that were not given before, in order.
+class ScenarioPlayer {
+ public:
+  ScenarioPlayer() = default;
+  // The scenario must outlive the player (it only keeps a view).
+  explicit ScenarioPlayer(const Scenario& sc) noexcept : actions_(sc.actions) {}
+
+  std::span<const ScenarioAction> due(double now_s) noexcept;
+  bool finished() const noexcept { return next_ >= actions_.size(); }
+  void rewind() noexcept { next_ = 0; }
+
+ private:
+  std::span<const ScenarioAction> actions_;
+  std::size_t next_ = 0;
+};
+
+enum class ApplyResult : std::uint8_t { ok, ext_queue_full, no_spindle };
+
+// rt: performs one action: writes the HLI control objects, switches the
+// simulated PLC silent, or queues an external spindle command. The CNC
+// clears the reset requests after handling them.
+ApplyResult apply(const ScenarioAction& a, const SpindleMap& map, HliImage& hli, PlcSim& plc,
+                  ExtCommandQueue& ext) noexcept;
+
+}  // namespace nck::plc

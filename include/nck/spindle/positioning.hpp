@@ -1,0 +1,44 @@
+#pragma once
+// Pure spindle geometry and monitoring rules (FCT-S1 2.3.2, 2.6): modulo
+// wrapping, the travel of an M19 move, the preferred-direction check and the
+// speed-reached / zero-speed tests.
+#include <cstdint>
+#include <expected>
+
+#include "nck/config/machine.hpp"
+#include "nck/core/diagnostic.hpp"
+
+namespace nck::spindle {
+
+enum class Direction : std::int8_t { none = 0, positive = 1, negative = -1 };  // M3 +, M4 -
+
+// pos wrapped into [lo, hi); returns lo when the range is empty or pos not finite. // rt
+double wrap_modulo(double pos_deg, double lo_deg, double hi_deg) noexcept;
+
+// Error 60254 when a preferred direction is configured (vorz_richtung) and
+// `dir` is the other one; Direction::none always passes. // rt
+std::expected<void, ErrorId> check_preferred_direction(const config::AxisConfig& ax, Direction dir) noexcept;
+
+// The direction the configuration forces, or none. // rt
+Direction preferred_direction(const config::AxisConfig& ax) noexcept;
+
+// Signed travel in degrees from `current` to `target` (both wrapped into
+// [lo, hi) first) for an M19 move:
+// - programmed M3/M4: in that direction, 0 <= |travel| < range;
+// - none, rotating (speed != 0): in the current direction;
+// - none, standstill: the shorter way (a tie goes positive). // rt
+double m19_travel_deg(double current_deg, double target_deg, Direction programmed,
+                      double current_speed_deg_s, double lo_deg, double hi_deg) noexcept;
+
+// Speed reached: |act - cmd| <= vb_prozent * 0.1 % * |cmd| (P-AXIS-00217,
+// default 100 = +-10 %). Signed, so M4 speed never "reaches" an M3 command. // rt
+bool speed_reached(double act_rpm, double cmd_rpm, double vb_prozent_permille) noexcept;
+
+// Zero speed: |act| strictly below vb_min_null (P-AXIS-00216, deg/s). // rt
+bool zero_speed(double act_deg_s, double vb_min_null_deg_s) noexcept;
+
+inline constexpr double kDegPerSPerRpm = 6.0;  // 1 rpm = 360 deg / 60 s
+constexpr double rpm_to_deg_s(double rpm) { return rpm * kDegPerSPerRpm; }
+constexpr double deg_s_to_rpm(double deg_s) { return deg_s / kDegPerSPerRpm; }
+
+}  // namespace nck::spindle

@@ -1,0 +1,321 @@
+// setup: parsing of --plc scenario files (grammar: docs/plc-scenario.md).
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "nck/plc/scenario.hpp"
+#include "scenario_text.hpp"
+
+namespace nck::plc {
+namespace {
+
+using detail::iequals;
+using detail::Token;
+
+struct ActionSpelling {
+  std::string_view word;
+  ActionKind kind;
+};
+
+// Every accepted spelling; the first one of a kind is its primary name.
+constexpr std::array kActions = {
+    ActionSpelling{"override", ActionKind::spindle_override},
+    ActionSpelling{"spindle_override", ActionKind::spindle_override},
+    ActionSpelling{"override_valid", ActionKind::override_valid},
+    ActionSpelling{"feed_override", ActionKind::feed_override},
+    ActionSpelling{"feedhold", ActionKind::feedhold},
+    ActionSpelling{"spindle_feedhold", ActionKind::spindle_feedhold},
+    ActionSpelling{"spindle_stop_at_end", ActionKind::spindle_stop_at_end},
+    ActionSpelling{"reset", ActionKind::reset},
+    ActionSpelling{"spindle_reset", ActionKind::spindle_reset},
+    ActionSpelling{"optional_stop", ActionKind::optional_stop},
+    ActionSpelling{"silent", ActionKind::silent},
+    ActionSpelling{"spindle_cmd", ActionKind::spindle_cmd},
+};
+
+// Parses one line; reports its first problem and returns nothing then.
+class LineParser {
+ public:
+  LineParser(std::span<const Token> toks, const std::string& file, std::uint32_t line,
+             Diagnostics& diags)
+      : toks_(toks), file_(file), line_(line), diags_(diags) {}
+
+  std::optional<ScenarioAction> parse();
+
+ private:
+  bool fail(ErrorId id, std::uint32_t column, std::string msg) {
+    diags_.add(id, SourceLoc{file_, line_, column}, std::move(msg));
+    return false;
+  }
+  // Column just after the last token, for "missing argument" reports.
+  std::uint32_t end_column() const {
+    const Token& t = toks_.back();
+    return t.column + static_cast<std::uint32_t>(t.text.size());
+  }
+  bool at_end() const { return next_ >= toks_.size(); }
+  bool parse_time(ScenarioAction& a);
+  bool parse_channel(ScenarioAction& a);
+  bool parse_action(ScenarioAction& a);
+  bool parse_args(ScenarioAction& a);
+  bool need(std::string_view what);
+  bool take_spindle(ScenarioAction& a);
+  bool take_switch(bool& on);
+  bool take_percent(double& pct);
+  bool take_spindle_cmd(ScenarioAction& a);
+  bool take_keyword_value(std::string_view key, double& value, bool& seen);
+
+  std::span<const Token> toks_;
+  const std::string& file_;
+  std::uint32_t line_;
+  Diagnostics& diags_;
+  std::size_t next_ = 0;
+};
+
+std::optional<ScenarioAction> LineParser::parse() {
+  ScenarioAction a;
+  a.line = line_;
+  if (!parse_time(a) || !parse_channel(a) || !parse_action(a) || !parse_args(a)) return {};
+  if (!at_end()) {
+    fail(ErrorId::PlcScenarioExtraArgument, toks_[next_].column,
+         fmt::format("'{}' is one word too many for '{}'; remove it or start a comment with #",
+                     detail::printable(toks_[next_].text), action_name(a.kind)));
+    return {};
+  }
+  return a;
+}
+
+bool LineParser::parse_time(ScenarioAction& a) {
+  const Token& t = toks_[next_++];
+  auto v = detail::to_number(t.text);
+  if (!v || *v < 0)
+    return fail(ErrorId::PlcScenarioBadTime, t.column,
+                fmt::format("'{}' is not a time; a line starts with the time in seconds (>= 0), "
+                            "e.g. '0.5 feed_override 80'",
+                            detail::printable(t.text)));
+  a.t_s = *v;
+  return true;
+}
+
+bool LineParser::parse_channel(ScenarioAction& a) {
+  if (at_end()) return true;
+  const Token& t = toks_[next_];
+  std::string_view num_text;
+  std::uint32_t column = t.column;
+  if (t.text.size() > 3 && iequals(t.text.substr(0, 3), "ch=")) {
+    num_text = t.text.substr(3);
+    ++next_;
+  } else if (iequals(t.text, "channel")) {
+    ++next_;
+    if (!need("a channel number after 'channel'")) return false;
+    num_text = toks_[next_].text;
+    column = toks_[next_++].column;
+  } else {
+    return true;  // no channel prefix: channel 1
+  }
+  auto v = detail::to_number(num_text);
+  if (!v || *v < 1 || *v > static_cast<double>(config::kMaxChannels) || *v != std::floor(*v))
+    return fail(ErrorId::PlcScenarioBadChannel, column,
+                fmt::format("'{}' is not a channel number; write a whole number 1..{}",
+                            detail::printable(num_text), config::kMaxChannels));
+  a.channel = static_cast<std::uint8_t>(*v);
+  return true;
+}
+
+bool LineParser::parse_action(ScenarioAction& a) {
+  if (!need("an action after the time (e.g. feed_override 80)")) return false;
+  const Token& t = toks_[next_++];
+  for (const auto& s : kActions) {
+    if (iequals(t.text, s.word)) {
+      a.kind = s.kind;
+      return true;
+    }
+  }
+  std::string_view nearest = kActions[0].word;
+  std::size_t best = SIZE_MAX;
+  for (const auto& s : kActions) {
+    std::size_t d = detail::edit_distance(t.text, s.word);
+    if (d < best) best = d, nearest = s.word;
+  }
+  return fail(ErrorId::PlcScenarioUnknownAction, t.column,
+              fmt::format("unknown action '{}'; did you mean '{}'?", detail::printable(t.text),
+                          nearest));
+}
+
+bool LineParser::need(std::string_view what) {
+  if (!at_end()) return true;
+  return fail(ErrorId::PlcScenarioMissingArgument, end_column(),
+              fmt::format("missing {}", what));
+}
+
+bool LineParser::parse_args(ScenarioAction& a) {
+  switch (a.kind) {
+    case ActionKind::spindle_override:
+      return take_spindle(a) && take_percent(a.value);
+    case ActionKind::feed_override:
+      return take_percent(a.value);
+    case ActionKind::override_valid:
+    case ActionKind::spindle_feedhold:
+      return take_spindle(a) && take_switch(a.on);
+    case ActionKind::spindle_stop_at_end:
+      if (!take_switch(a.on)) return false;
+      return at_end() || take_spindle(a);  // optional spindle
+    case ActionKind::feedhold:
+    case ActionKind::optional_stop:
+    case ActionKind::silent:
+      return take_switch(a.on);
+    case ActionKind::reset:
+      return true;
+    case ActionKind::spindle_reset:
+      return take_spindle(a);
+    case ActionKind::spindle_cmd:
+      return take_spindle(a) && take_spindle_cmd(a);
+  }
+  return true;
+}
+
+bool LineParser::take_spindle(ScenarioAction& a) {
+  if (!need("the spindle name (e.g. S1)")) return false;
+  const Token& t = toks_[next_++];
+  if (!detail::valid_spindle_name(t.text))
+    return fail(ErrorId::PlcScenarioBadSpindleName, t.column,
+                fmt::format("'{}' is not a spindle name; write S or S followed by letters, digits "
+                            "or _ (at most {} characters), e.g. S1",
+                            detail::printable(t.text), kSpindleNameChars - 1));
+  std::copy(t.text.begin(), t.text.end(), a.spindle_name.begin());
+  a.spindle_name[t.text.size()] = '\0';
+  return true;
+}
+
+bool LineParser::take_switch(bool& on) {
+  if (!need("on or off")) return false;
+  const Token& t = toks_[next_++];
+  if (iequals(t.text, "on") || t.text == "1") {
+    on = true;
+    return true;
+  }
+  if (iequals(t.text, "off") || t.text == "0") {
+    on = false;
+    return true;
+  }
+  return fail(ErrorId::PlcScenarioBadSwitch, t.column,
+              fmt::format("'{}' is not a switch; write on or off", detail::printable(t.text)));
+}
+
+bool LineParser::take_percent(double& pct) {
+  if (!need("the percentage (0..200)")) return false;
+  const Token& t = toks_[next_++];
+  auto v = detail::to_number(t.text);
+  if (!v || *v < 0 || *v > kMaxOverridePercent)
+    return fail(ErrorId::PlcScenarioBadNumber, t.column,
+                fmt::format("'{}' is not an override; write a percentage from 0 to {}",
+                            detail::printable(t.text), kMaxOverridePercent));
+  pct = *v;
+  return true;
+}
+
+// REV / POS with the value joined (REV500, REV=500) or as the next word (REV 500).
+bool LineParser::take_keyword_value(std::string_view key, double& value, bool& seen) {
+  const Token& t = toks_[next_++];
+  if (seen)
+    return fail(ErrorId::PlcScenarioBadSpindleCommand, t.column,
+                fmt::format("{} is given twice", key));
+  std::string_view rest = t.text.substr(key.size());
+  if (!rest.empty() && rest.front() == '=') rest.remove_prefix(1);
+  std::uint32_t column = t.column;
+  if (rest.empty()) {
+    if (!need(fmt::format("the value after {}", key))) return false;
+    rest = toks_[next_].text;
+    column = toks_[next_++].column;
+  }
+  auto v = detail::to_number(rest);
+  const bool is_rev = key == "REV";
+  if (!v || (is_rev && *v < 0))
+    return fail(ErrorId::PlcScenarioBadNumber, column,
+                fmt::format("'{}' is not a valid {} value; write {}", detail::printable(rest), key,
+                            is_rev ? "a speed in rpm >= 0" : "a position in degrees"));
+  value = *v;
+  seen = true;
+  return true;
+}
+
+bool LineParser::take_spindle_cmd(ScenarioAction& a) {
+  ExtSpindleCommand& c = a.cmd;
+  c.channel = a.channel;
+  c.spindle_name = a.spindle_name;
+  bool have_fn = false;
+  while (!at_end()) {
+    const Token& t = toks_[next_];
+    if (detail::istarts_with(t.text, "REV")) {
+      if (!take_keyword_value("REV", c.rev_rpm, c.has_rev)) return false;
+    } else if (detail::istarts_with(t.text, "POS")) {
+      if (!take_keyword_value("POS", c.pos_deg, c.has_pos)) return false;
+    } else if (auto fn = detail::spindle_function(t.text)) {
+      if (have_fn)
+        return fail(ErrorId::PlcScenarioBadSpindleCommand, t.column,
+                    "only one of M3/M4/M5/M19 per command");
+      c.fn = static_cast<ExtFunction>(*fn);
+      have_fn = true;
+      ++next_;
+    } else {
+      return fail(ErrorId::PlcScenarioBadSpindleCommand, t.column,
+                  fmt::format("'{}' is not part of a spindle command; write M3|M4|M5|M19, "
+                              "REV<rpm>, POS<deg>",
+                              detail::printable(t.text)));
+    }
+  }
+  const std::uint32_t col = toks_.front().column;
+  if (!have_fn)
+    return fail(ErrorId::PlcScenarioBadSpindleCommand, col,
+                "the spindle command names no M3/M4/M5/M19");
+  if (c.fn == ExtFunction::m5 && (c.has_rev || c.has_pos))
+    return fail(ErrorId::PlcScenarioBadSpindleCommand, col, "M5 takes neither REV nor POS");
+  if (c.has_pos && c.fn != ExtFunction::m19)
+    return fail(ErrorId::PlcScenarioBadSpindleCommand, col, "POS needs M19");
+  return true;
+}
+
+}  // namespace
+
+std::string_view action_name(ActionKind k) noexcept {
+  for (const auto& s : kActions)
+    if (s.kind == k) return s.word;
+  return "?";
+}
+
+Scenario parse_scenario(std::string_view text, std::string file, Diagnostics& diags) {
+  Scenario sc;
+  sc.file = std::move(file);
+  std::uint32_t line_no = 0;
+  double last_t_s = 0;
+  std::vector<Token> toks;
+  while (!text.empty()) {
+    const std::size_t nl = text.find('\n');
+    std::string_view line = text.substr(0, nl);
+    text = nl == std::string_view::npos ? std::string_view{} : text.substr(nl + 1);
+    ++line_no;
+    detail::tokenize(line, toks);
+    if (toks.empty()) continue;
+    if (sc.actions.size() >= kMaxScenarioActions) {
+      diags.add(ErrorId::PlcScenarioTooLarge, SourceLoc{sc.file, line_no, 1},
+                fmt::format("more than {} actions; the rest of the file is ignored",
+                            kMaxScenarioActions));
+      break;
+    }
+    auto a = LineParser(toks, sc.file, line_no, diags).parse();
+    if (!a) continue;
+    if (a->t_s < last_t_s)
+      diags.add(ErrorId::PlcScenarioTimeBackwards, SourceLoc{sc.file, line_no, 1},
+                fmt::format("time {} s comes after {} s; the action is sorted in by its time",
+                            a->t_s, last_t_s));
+    last_t_s = std::max(last_t_s, a->t_s);
+    sc.actions.push_back(*a);
+  }
+  std::stable_sort(sc.actions.begin(), sc.actions.end(),
+                   [](const ScenarioAction& x, const ScenarioAction& y) { return x.t_s < y.t_s; });
+  return sc;
+}
+
+}  // namespace nck::plc

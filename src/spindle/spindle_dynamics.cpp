@@ -1,0 +1,68 @@
+// The limits the spindle interpolator works with: acceleration from the slope
+// or characteristic curve of the active gear stage, weighted by G130 and
+// capped by a_max and the tool; speed capped by vb_max and the tool.
+#include <algorithm>
+#include <cmath>
+
+#include "nck/spindle/accel_curve.hpp"
+#include "nck/spindle/spindle_axis.hpp"
+
+namespace nck::spindle {
+
+const config::GearStage& SpindleAxis::gear() const noexcept {
+  const std::uint32_t i = gear_ >= 1 && gear_ <= config::kMaxGearStages ? gear_ - 1 : 0;
+  return p_.gears[i];
+}
+
+double SpindleAxis::range_deg() const noexcept {
+  const double r = gear().moduloo - gear().modulou;
+  return r > 0 && std::isfinite(r) ? r : 360.0;
+}
+
+double SpindleAxis::accel_limit(double a_deg_s2) const noexcept {
+  double a = a_deg_s2 * accel_weight_;
+  if (gear().a_max > 0) a = std::min(a, gear().a_max);
+  if (tool_.a_max_deg_s2 > 0) a = std::min(a, tool_.a_max_deg_s2);
+  // A zero or broken parameter must not freeze the spindle for ever.
+  return std::isfinite(a) && a > 0 ? a : 1.0;
+}
+
+double SpindleAxis::accel_up(double speed_deg_s) const noexcept {
+  return accel_limit(curve_accel_deg_s2(gear().curve, speed_deg_s, gear().a_beschl));
+}
+
+double SpindleAxis::accel_down(double speed_deg_s) const noexcept {
+  return accel_limit(curve_accel_deg_s2(gear().curve, speed_deg_s, gear().a_brems));
+}
+
+double SpindleAxis::min_accel_down(double up_to_deg_s) const noexcept {
+  // Positioning brakes along sqrt(2 a s) with one a: take the lowest the
+  // curve allows on the way down (curves need not be monotonic).
+  constexpr int kSamples = 64;
+  double a = accel_down(0);
+  const double top = std::fabs(up_to_deg_s);
+  for (int i = 1; i <= kSamples; ++i) a = std::min(a, accel_down(top * i / kSamples));
+  return a;
+}
+
+double SpindleAxis::max_speed_deg_s() const noexcept {
+  double v = gear().vb_max > 0 ? gear().vb_max : 1e12;
+  if (tool_.vb_max_rpm > 0) v = std::min(v, rpm_to_deg_s(tool_.vb_max_rpm));
+  return v;
+}
+
+double SpindleAxis::override_factor() const noexcept {
+  return ignore_override_ ? 1.0 : override_pct_ / 100.0;
+}
+
+double SpindleAxis::limit_speed(double speed_deg_s) const noexcept {
+  // |speed| into [tool vb_min, vb_max]; 0 stays 0 (no rotation asked for).
+  const double s = std::fabs(speed_deg_s);
+  if (s == 0 || !std::isfinite(s)) return 0;
+  double lim = s;
+  if (tool_.vb_min_rpm > 0) lim = std::max(lim, rpm_to_deg_s(tool_.vb_min_rpm));
+  lim = std::min(lim, max_speed_deg_s());
+  return std::copysign(lim, speed_deg_s);
+}
+
+}  // namespace nck::spindle

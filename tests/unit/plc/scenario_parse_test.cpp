@@ -1,0 +1,257 @@
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "nck/plc/scenario.hpp"
+
+namespace nck::plc {
+namespace {
+
+struct Parsed {
+  Scenario sc;
+  Diagnostics diags;
+};
+
+Parsed parse(std::string_view text) {
+  Parsed p;
+  p.sc = parse_scenario(text, "s.plc", p.diags);
+  return p;
+}
+
+// The one action a single-line scenario gives, with no diagnostics.
+ScenarioAction one(std::string_view line) {
+  auto p = parse(line);
+  EXPECT_TRUE(p.diags.empty()) << line << ": " << (p.diags.empty() ? "" : format(p.diags.items()[0]));
+  EXPECT_EQ(p.sc.actions.size(), 1u) << line;
+  return p.sc.actions.empty() ? ScenarioAction{} : p.sc.actions[0];
+}
+
+// The single diagnostic a single-line scenario gives.
+Diagnostic bad(std::string_view text) {
+  auto p = parse(text);
+  EXPECT_EQ(p.diags.items().size(), 1u) << text;
+  EXPECT_TRUE(p.sc.actions.empty()) << text;
+  return p.diags.items().empty() ? Diagnostic{} : p.diags.items()[0];
+}
+
+TEST(ScenarioParse, SpecExamples) {
+  auto a = one("0.5 override S1 50");
+  EXPECT_EQ(a.kind, ActionKind::spindle_override);
+  EXPECT_DOUBLE_EQ(a.t_s, 0.5);
+  EXPECT_EQ(a.spindle_view(), "S1");
+  EXPECT_DOUBLE_EQ(a.value, 50);
+  EXPECT_EQ(a.channel, 1);
+  EXPECT_EQ(a.line, 1u);
+
+  a = one("1.0 feed_override 80");
+  EXPECT_EQ(a.kind, ActionKind::feed_override);
+  EXPECT_DOUBLE_EQ(a.value, 80);
+  EXPECT_FALSE(a.has_spindle());
+
+  a = one("1.2 feedhold on");
+  EXPECT_EQ(a.kind, ActionKind::feedhold);
+  EXPECT_TRUE(a.on);
+
+  a = one("2.0 spindle_stop_at_end on");
+  EXPECT_EQ(a.kind, ActionKind::spindle_stop_at_end);
+  EXPECT_TRUE(a.on);
+  EXPECT_FALSE(a.has_spindle());
+
+  a = one("2.5 reset");
+  EXPECT_EQ(a.kind, ActionKind::reset);
+  EXPECT_DOUBLE_EQ(a.t_s, 2.5);
+
+  a = one("3.0 spindle_cmd S2 M3 REV500");
+  EXPECT_EQ(a.kind, ActionKind::spindle_cmd);
+  EXPECT_EQ(a.spindle_view(), "S2");
+  EXPECT_EQ(a.cmd.fn, ExtFunction::m3);
+  EXPECT_TRUE(a.cmd.has_rev);
+  EXPECT_DOUBLE_EQ(a.cmd.rev_rpm, 500);
+  EXPECT_FALSE(a.cmd.has_pos);
+  EXPECT_EQ(std::string_view(a.cmd.spindle_name.data()), "S2");
+}
+
+TEST(ScenarioParse, EveryOtherAction) {
+  auto a = one("0 spindle_override S3 120.5");
+  EXPECT_EQ(a.kind, ActionKind::spindle_override);
+  EXPECT_DOUBLE_EQ(a.value, 120.5);
+  a = one("0 override_valid S1 off");
+  EXPECT_EQ(a.kind, ActionKind::override_valid);
+  EXPECT_FALSE(a.on);
+  a = one("0 feedhold off");
+  EXPECT_FALSE(a.on);
+  a = one("0 spindle_feedhold S1 1");
+  EXPECT_EQ(a.kind, ActionKind::spindle_feedhold);
+  EXPECT_TRUE(a.on);
+  a = one("0 spindle_stop_at_end off S2");
+  EXPECT_EQ(a.spindle_view(), "S2");
+  EXPECT_FALSE(a.on);
+  a = one("0 spindle_reset S1");
+  EXPECT_EQ(a.kind, ActionKind::spindle_reset);
+  a = one("0 optional_stop on");
+  EXPECT_EQ(a.kind, ActionKind::optional_stop);
+  EXPECT_TRUE(a.on);
+  a = one("4 silent on");
+  EXPECT_EQ(a.kind, ActionKind::silent);
+  EXPECT_TRUE(a.on);
+  a = one("5 silent 0");
+  EXPECT_FALSE(a.on);
+}
+
+TEST(ScenarioParse, SpindleCommandForms) {
+  auto a = one("1 spindle_cmd S1 M19 REV=200 POS=90.5");
+  EXPECT_EQ(a.cmd.fn, ExtFunction::m19);
+  EXPECT_DOUBLE_EQ(a.cmd.rev_rpm, 200);
+  EXPECT_TRUE(a.cmd.has_pos);
+  EXPECT_DOUBLE_EQ(a.cmd.pos_deg, 90.5);
+  a = one("1 spindle_cmd S1 POS 45 M19");  // any order, value as the next word
+  EXPECT_DOUBLE_EQ(a.cmd.pos_deg, 45);
+  EXPECT_FALSE(a.cmd.has_rev);
+  a = one("1 spindle_cmd s1 m04 rev1500");
+  EXPECT_EQ(a.cmd.fn, ExtFunction::m4);
+  EXPECT_DOUBLE_EQ(a.cmd.rev_rpm, 1500);
+  a = one("1 spindle_cmd S1 M05");
+  EXPECT_EQ(a.cmd.fn, ExtFunction::m5);
+  a = one("1 spindle_cmd S1 M19 POS-30");
+  EXPECT_DOUBLE_EQ(a.cmd.pos_deg, -30);
+}
+
+TEST(ScenarioParse, ChannelPrefixes) {
+  auto a = one("1 ch=2 feed_override 50");
+  EXPECT_EQ(a.channel, 2);
+  a = one("1 channel 3 spindle_cmd S1 M3 REV100");
+  EXPECT_EQ(a.channel, 3);
+  EXPECT_EQ(a.cmd.channel, 3);
+  a = one("1 CH=12 reset");
+  EXPECT_EQ(a.channel, 12);
+}
+
+TEST(ScenarioParse, CommentsBlankLinesAndCase) {
+  auto p = parse(
+      "# a PLC scenario\n"
+      "\n"
+      "   \t\r\n"
+      "0.5 OVERRIDE S1 50   # half speed\r\n"
+      "1e-1 Feed_Override +75\n");
+  ASSERT_EQ(p.diags.items().size(), 1u);  // 0.1 s after 0.5 s
+  EXPECT_EQ(p.diags.items()[0].id, ErrorId::PlcScenarioTimeBackwards);
+  ASSERT_EQ(p.sc.actions.size(), 2u);
+  EXPECT_EQ(p.sc.actions[0].kind, ActionKind::feed_override);  // sorted: 0.1 s first
+  EXPECT_EQ(p.sc.actions[0].line, 5u);
+  EXPECT_DOUBLE_EQ(p.sc.actions[0].value, 75);
+  EXPECT_EQ(p.sc.actions[1].line, 4u);
+  EXPECT_EQ(p.sc.file, "s.plc");
+}
+
+TEST(ScenarioParse, TimeGoingBackwardsIsSortedWithAWarning) {
+  auto p = parse("2 reset\n1 feedhold on\n1 feedhold off\n");
+  ASSERT_EQ(p.diags.items().size(), 2u);  // lines 2 and 3 are both before 2 s
+  EXPECT_EQ(p.diags.items()[0].id, ErrorId::PlcScenarioTimeBackwards);
+  EXPECT_EQ(p.diags.items()[0].severity, Severity::warning);
+  EXPECT_EQ(p.diags.items()[0].loc.line, 2u);
+  EXPECT_FALSE(p.diags.has_errors());
+  ASSERT_EQ(p.sc.actions.size(), 3u);
+  // Stable: equal times keep the file order.
+  EXPECT_EQ(p.sc.actions[0].line, 2u);
+  EXPECT_TRUE(p.sc.actions[0].on);
+  EXPECT_EQ(p.sc.actions[1].line, 3u);
+  EXPECT_EQ(p.sc.actions[2].kind, ActionKind::reset);
+}
+
+TEST(ScenarioParse, BadTime) {
+  auto d = bad("abc reset");
+  EXPECT_EQ(d.id, ErrorId::PlcScenarioBadTime);
+  EXPECT_EQ(d.loc.file, "s.plc");
+  EXPECT_EQ(d.loc.line, 1u);
+  EXPECT_EQ(d.loc.column, 1u);
+  EXPECT_EQ(bad("-1 reset").id, ErrorId::PlcScenarioBadTime);
+  EXPECT_EQ(bad("inf reset").id, ErrorId::PlcScenarioBadTime);
+  EXPECT_EQ(bad("nan reset").id, ErrorId::PlcScenarioBadTime);
+  EXPECT_EQ(bad("1.5s reset").id, ErrorId::PlcScenarioBadTime);
+}
+
+TEST(ScenarioParse, UnknownActionNamesTheNearest) {
+  auto d = bad("1 feed_overide 80");
+  EXPECT_EQ(d.id, ErrorId::PlcScenarioUnknownAction);
+  EXPECT_EQ(d.loc.column, 3u);
+  EXPECT_NE(d.message.find("feed_override"), std::string::npos) << d.message;
+  EXPECT_EQ(bad("1").id, ErrorId::PlcScenarioMissingArgument);
+}
+
+TEST(ScenarioParse, BadNumbers) {
+  auto d = bad("1 feed_override 250");
+  EXPECT_EQ(d.id, ErrorId::PlcScenarioBadNumber);
+  EXPECT_EQ(d.loc.column, 17u);
+  EXPECT_EQ(bad("1 override S1 -5").id, ErrorId::PlcScenarioBadNumber);
+  EXPECT_EQ(bad("1 override S1 fifty").id, ErrorId::PlcScenarioBadNumber);
+  EXPECT_EQ(bad("1 spindle_cmd S1 M3 REV-10").id, ErrorId::PlcScenarioBadNumber);
+  EXPECT_EQ(bad("1 spindle_cmd S1 M19 POSx").id, ErrorId::PlcScenarioBadNumber);
+}
+
+TEST(ScenarioParse, MissingAndExtraArguments) {
+  auto d = bad("1 override S1");
+  EXPECT_EQ(d.id, ErrorId::PlcScenarioMissingArgument);
+  EXPECT_EQ(d.loc.column, 14u);  // just after "S1"
+  EXPECT_EQ(bad("1 feedhold").id, ErrorId::PlcScenarioMissingArgument);
+  EXPECT_EQ(bad("1 spindle_cmd").id, ErrorId::PlcScenarioMissingArgument);
+  EXPECT_EQ(bad("1 spindle_cmd S1 M3 REV").id, ErrorId::PlcScenarioMissingArgument);
+  EXPECT_EQ(bad("1 channel").id, ErrorId::PlcScenarioMissingArgument);
+  d = bad("1 reset now");
+  EXPECT_EQ(d.id, ErrorId::PlcScenarioExtraArgument);
+  EXPECT_EQ(d.loc.column, 9u);
+  EXPECT_EQ(bad("1 feed_override 80 90").id, ErrorId::PlcScenarioExtraArgument);
+}
+
+TEST(ScenarioParse, BadSpindleNamesSwitchesAndChannels) {
+  auto d = bad("1 override X1 50");
+  EXPECT_EQ(d.id, ErrorId::PlcScenarioBadSpindleName);
+  EXPECT_EQ(d.loc.column, 12u);
+  EXPECT_EQ(bad("1 override S-1 50").id, ErrorId::PlcScenarioBadSpindleName);
+  EXPECT_EQ(bad("1 override S123456789012345 50").id, ErrorId::PlcScenarioBadSpindleName);
+  d = bad("1 feedhold maybe");
+  EXPECT_EQ(d.id, ErrorId::PlcScenarioBadSwitch);
+  EXPECT_EQ(d.loc.column, 12u);
+  EXPECT_EQ(bad("1 ch=0 reset").id, ErrorId::PlcScenarioBadChannel);
+  EXPECT_EQ(bad("1 ch=13 reset").id, ErrorId::PlcScenarioBadChannel);
+  EXPECT_EQ(bad("1 ch=1.5 reset").id, ErrorId::PlcScenarioBadChannel);
+  EXPECT_EQ(bad("1 channel x reset").id, ErrorId::PlcScenarioBadChannel);
+}
+
+TEST(ScenarioParse, BadSpindleCommands) {
+  EXPECT_EQ(bad("1 spindle_cmd S1 REV500").id, ErrorId::PlcScenarioBadSpindleCommand);
+  EXPECT_EQ(bad("1 spindle_cmd S1 M3 M4").id, ErrorId::PlcScenarioBadSpindleCommand);
+  EXPECT_EQ(bad("1 spindle_cmd S1 M5 REV100").id, ErrorId::PlcScenarioBadSpindleCommand);
+  EXPECT_EQ(bad("1 spindle_cmd S1 M3 POS10").id, ErrorId::PlcScenarioBadSpindleCommand);
+  EXPECT_EQ(bad("1 spindle_cmd S1 M6").id, ErrorId::PlcScenarioBadSpindleCommand);
+  EXPECT_EQ(bad("1 spindle_cmd S1 M3 REV1 REV2").id, ErrorId::PlcScenarioBadSpindleCommand);
+  auto d = bad("1 spindle_cmd S1 M3 G74");
+  EXPECT_EQ(d.loc.column, 21u);
+}
+
+TEST(ScenarioParse, BadLinesAreSkippedOthersKept) {
+  auto p = parse("0.1 feed_override 50\n0.2 bogus\n0.3 reset\n0.4 feedhold perhaps\n");
+  ASSERT_EQ(p.diags.items().size(), 2u);
+  EXPECT_EQ(p.diags.items()[0].loc.line, 2u);
+  EXPECT_EQ(p.diags.items()[1].loc.line, 4u);
+  EXPECT_EQ(p.sc.actions.size(), 2u);
+  EXPECT_EQ(format(p.diags.items()[0]).rfind("s.plc:2:5: error 960002", 0), 0u)
+      << format(p.diags.items()[0]);
+}
+
+TEST(ScenarioParse, TooManyActionsStops) {
+  std::string text;
+  for (std::size_t i = 0; i < kMaxScenarioActions + 5; ++i) text += "1 reset\n";
+  auto p = parse(text);
+  EXPECT_EQ(p.sc.actions.size(), kMaxScenarioActions);
+  ASSERT_EQ(p.diags.items().size(), 1u);
+  EXPECT_EQ(p.diags.items()[0].id, ErrorId::PlcScenarioTooLarge);
+  EXPECT_EQ(p.diags.items()[0].loc.line, kMaxScenarioActions + 1);
+}
+
+TEST(ScenarioParse, ActionNames) {
+  EXPECT_EQ(action_name(ActionKind::spindle_override), "override");
+  EXPECT_EQ(action_name(ActionKind::spindle_cmd), "spindle_cmd");
+}
+
+}  // namespace
+}  // namespace nck::plc
