@@ -19,7 +19,7 @@ void SpindleAxis::drive_model(double step_deg, double dt) noexcept {
     lag_deg_ += (v_cmd - act_v_deg_s_) * dt;
   } else {
     const double ta = p_.feedforward_ta_s;
-    const double kf = ta > 0 ? 1.0 - std::exp(-dt / ta) : 1.0;
+    const double kf = dt / (ta + dt);  // backward Euler: ramp lag is exactly a*Ta
     v_filt_deg_s_ += (v_cmd - v_filt_deg_s_) * kf;  // the drive answers with time constant Ta
     const double w = ff_on_ ? ff_weight_ : 0.0;
     const double kv = gear().kv_1_s > 0 ? gear().kv_1_s : 10.0;
