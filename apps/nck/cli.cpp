@@ -32,6 +32,7 @@ int main_cli(int argc, char** argv) {
   runc->add_option("--max-time", run.max_time_s, "simulated-time limit in seconds")
       ->check(CLI::PositiveNumber);
   runc->add_flag("--realtime", run.realtime, "pace the cycles to the wall clock");
+  runc->add_option("--clamp-index", run.clamp_index, "clamp-offset group pzv_grp[N] at program start");
   runc->add_flag("!--no-progress", run.progress, "no progress display on the terminal");
 
   ParseOptions parse;

@@ -50,9 +50,15 @@ bool write_final(const std::string& path, const config::Machine& m, const kernel
     json axes = json::object();
     for (std::size_t j = 0; j < m.channels[c].axes.size(); ++j)
       axes[m.channels[c].axes[j].name] = json{{"mcs", s.axis_mcs[j]}, {"pcs", s.axis_pcs[j]}};
+    json offsets = json::object();
+    for (const auto& [kind, values] : s.offsets) {
+      json v = json::object();
+      for (const auto& [axis, value] : values) v[axis] = value;
+      offsets[kind] = v;
+    }
     channels.push_back(json{{"axes", axes},
                             {"modal", modal_json(s.modal)},
-                            {"offsets", json::object()},
+                            {"offsets", offsets},
                             {"main_spindle", main_spindle_designation(m.channels[c])},
                             {"tool", json{{"d", s.modal.d}}}});
   }

@@ -1,5 +1,7 @@
 #include "output_writers.hpp"
 
+#include "nck/kernel/plan_store.hpp"
+
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -131,6 +133,15 @@ void EventWriter::write(const kernel::Event& e, const RunNames& names) {
     case K::end:
       j["reason"] = end_name(e.end_reason);
       break;
+    case K::offset: {
+      const kernel::OffsetPayload& p = names.kernel->offset(e.message_index);
+      j["kind"] = p.kind;
+      json values = json::object();
+      for (const auto& [axis, v] : p.values) values[axis] = v;
+      j["values"] = values;
+      j["line"] = e.line;
+      break;
+    }
     default:
       break;
   }

@@ -109,7 +109,7 @@ int run_simulation(const RunOptions& opt) {
     return 2;
   }
   kernel::Kernel k;
-  if (auto ok = k.configure(m); !ok) {
+  if (auto ok = k.configure(m, {opt.clamp_index}); !ok) {
     fmt::print(stderr, "{}\n", format(ok.error()));
     return 2;
   }
@@ -129,7 +129,11 @@ int run_simulation(const RunOptions& opt) {
                                      kernel::decoder_config(m, ch)),
                          !has_program});
   }
-  for (const Feed& f : feeds) names.decoders.push_back(&f.decoder);
+  for (Feed& f : feeds) {
+    names.decoders.push_back(&f.decoder);
+    // The program reads the clamp position it was started with.
+    (void)f.decoder.set_variable("V.G.AKT_PLATZ", static_cast<double>(opt.clamp_index));
+  }
 
   kernel::TickInput in;
   kernel::TickOutput o;

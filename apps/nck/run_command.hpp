@@ -11,6 +11,7 @@ struct RunOptions {
   std::string events, trace, final_state;
   std::uint64_t trace_every = 1;
   double max_time_s = 86400;  // simulated seconds
+  std::uint32_t clamp_index = 0;  // clamp-offset group (pzv_grp) at program start
   bool realtime = false;
   bool progress = true;       // on a terminal only
 };

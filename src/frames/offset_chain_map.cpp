@@ -112,7 +112,7 @@ PcsPoint OffsetChain::to_pcs(const McsPoint& p, SuppressMask m) const noexcept {
 
 void OffsetChain::append_deferred(ActiveOffsets& out, OffsetKind k, const Deferred& d,
                                   int id) const {
-  OffsetEntry e{k, id, d.effective, {}, 0};
+  OffsetEntry e{k, id, d.effective, {}, 0, d.selected};
   for (std::size_t j = 0; j < config_.axis_count; ++j)
     if (d.pending(j)) e.pending_axes |= 1u << j;
   out.push_back(e);
@@ -127,11 +127,13 @@ ActiveOffsets OffsetChain::active_offsets() const {
     e.values_mm[static_cast<std::size_t>(a.first)] = s.rotation.center1_mm;
     e.values_mm[static_cast<std::size_t>(a.second)] = s.rotation.center2_mm;
     e.angle_deg[2] = s.rotation.angle_deg;
+    e.selected_mm = e.values_mm;  // these act at once
     out.push_back(e);
   }
   if (s.ecs_active) {
     OffsetEntry e{OffsetKind::ecs};
     for (std::size_t j = 0; j < kMainAxes; ++j) e.values_mm[j] = s.ecs.shift_mm[j];
+    e.selected_mm = e.values_mm;  // these act at once
     out.push_back(e);
   }
   for (auto [kind, st] : {std::pair{OffsetKind::cs, &s.cs}, std::pair{OffsetKind::acs, &s.acs}}) {
@@ -139,7 +141,8 @@ ActiveOffsets OffsetChain::active_offsets() const {
       OffsetEntry e{kind, st->active(i).id};
       for (std::size_t j = 0; j < kMainAxes; ++j) e.values_mm[j] = st->active(i).values.shift_mm[j];
       e.angle_deg = st->active(i).values.angle_deg;
-      out.push_back(e);
+      e.selected_mm = e.values_mm;  // these act at once
+    out.push_back(e);
     }
   }
   auto listed = [](const Deferred& d) { return any_nonzero(d.selected) || any_nonzero(d.effective); };
@@ -147,8 +150,8 @@ ActiveOffsets OffsetChain::active_offsets() const {
   if (listed(s.g92)) append_deferred(out, OffsetKind::g92, s.g92, 0);
   if (listed(s.pset)) append_deferred(out, OffsetKind::pset, s.pset, 0);
   if (listed(s.measure)) append_deferred(out, OffsetKind::measure, s.measure, 0);
-  if (any_nonzero(s.manual)) out.push_back(OffsetEntry{OffsetKind::manual, 0, s.manual});
-  if (any_nonzero(s.clamp)) out.push_back(OffsetEntry{OffsetKind::clamp, 0, s.clamp});
+  if (any_nonzero(s.manual)) out.push_back(OffsetEntry{OffsetKind::manual, 0, s.manual, {}, 0, s.manual});
+  if (any_nonzero(s.clamp)) out.push_back(OffsetEntry{OffsetKind::clamp, 0, s.clamp, {}, 0, s.clamp});
   if (s.tool.d_number != 0 || listed(s.tool_pcs) || listed(s.tool_mcs)) {
     Deferred both;
     for (std::size_t j = 0; j < kMaxAxes; ++j) {

@@ -4,9 +4,9 @@
 
 namespace nck::kernel {
 
-Channel::Channel(const config::Machine& machine, std::size_t index,
-                 std::vector<std::string>& messages)
-    : planner_(machine, index, messages),
+Channel::Channel(const config::Machine& machine, std::size_t index, PlanStore& store,
+                 const PlannerOptions& options)
+    : planner_(machine, index, store, options),
       number_(static_cast<std::uint8_t>(index + 1)),
       n_axes_(planner_.axis_count()) {}
 
@@ -40,6 +40,19 @@ void Channel::start(const Command& c, double t_s, TickOutput& sink) noexcept {
   if (c.emit_block_event) {
     Event e = base;
     e.kind = EventKind::block;
+    emit(sink, e);
+  }
+  for (const Command::Warning& w : c.warnings) {
+    Event e = base;
+    e.kind = EventKind::warning;
+    e.id = w.id;
+    e.message_index = w.message_index;
+    emit(sink, e);
+  }
+  for (std::uint32_t payload : c.offset_events) {
+    Event e = base;
+    e.kind = EventKind::offset;
+    e.message_index = payload;
     emit(sink, e);
   }
   for (const Output& o : c.outputs) {
@@ -83,14 +96,26 @@ void Channel::start(const Command& c, double t_s, TickOutput& sink) noexcept {
   }
 }
 
+// The set point at path length s: the segment's point, mapped from program
+// to machine coordinates when a rotation acts.
+void Channel::place(double s_mm) noexcept {
+  if (!current_.mapped) {
+    current_.segment.point_at(s_mm, pos_);
+    return;
+  }
+  motion::AxisVector pcs = pos_;
+  current_.segment.point_at(s_mm, pcs);
+  current_.map.apply(pcs, pos_, n_axes_);
+}
+
 void Channel::execute(double dt_s, const ChannelInput& in) noexcept {
   if (current_.kind == CommandKind::motion) {
     const double ovr = in.feedhold ? 0.0 : std::clamp(in.feed_override_pct, 0.0, 100.0) / 100.0;
     const motion::ProfileSample st = profile_.step(dt_s, ovr);
-    current_.segment.point_at(st.s_mm, pos_);
+    place(st.s_mm);
     velocity_ = st.v_mm_s;
     if (st.finished) {
-      current_.segment.point_at(current_.segment.length(), pos_);
+      place(current_.segment.length());
       velocity_ = 0;
       active_ = false;
     }

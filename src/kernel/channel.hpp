@@ -22,7 +22,8 @@ inline constexpr std::size_t kQueueLength = 64;
 
 class Channel {
  public:
-  Channel(const config::Machine& machine, std::size_t index, std::vector<std::string>& messages);
+  Channel(const config::Machine& machine, std::size_t index, PlanStore& store,
+          const PlannerOptions& options);
 
   // setup side
   std::size_t queue_space() const { return queue_.capacity() - queue_.size(); }
@@ -44,6 +45,7 @@ class Channel {
  private:
   void start(const Command& c, double t_s, TickOutput& sink) noexcept;
   void execute(double dt_s, const ChannelInput& in) noexcept;
+  void place(double s_mm) noexcept;
   void finish(EndReason reason, double t_s, TickOutput& sink) noexcept;
   void emit(TickOutput& sink, const Event& e) noexcept;
 

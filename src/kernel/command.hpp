@@ -8,6 +8,7 @@
 #include "nck/kernel/event.hpp"
 #include "nck/motion/limits.hpp"
 #include "nck/motion/segment.hpp"
+#include "channel_frames.hpp"
 
 namespace nck::kernel {
 
@@ -35,8 +36,11 @@ struct Command {
   bool has_n = false;
   std::int64_t n = 0;
   bool emit_block_event = true;  // false for follow-up commands of one block
-  // motion
+  // motion: the segment is in machine coordinates, or in program
+  // coordinates mapped by `map` when a rotation acts (mapped == true)
   motion::Segment segment{};
+  bool mapped = false;
+  AffineMap map{};
   motion::PathLimits limits{};
   double v_cmd_mm_s = 0;
   // dwell
@@ -47,6 +51,13 @@ struct Command {
   std::uint32_t message_index = 0;
   // PLC outputs of the block
   FixedVector<Output, 8> outputs;
+  // offset events (PlanStore::offsets) and warnings raised with the block
+  FixedVector<std::uint32_t, 6> offset_events;
+  struct Warning {
+    ErrorId id{};
+    std::uint32_t message_index = 0;
+  };
+  FixedVector<Warning, 4> warnings;
 };
 
 }  // namespace nck::kernel

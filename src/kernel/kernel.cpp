@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "channel.hpp"
+#include "nck/kernel/plan_store.hpp"
 
 namespace nck::kernel {
 
@@ -11,7 +12,8 @@ Kernel::~Kernel() = default;
 Kernel::Kernel(Kernel&&) noexcept = default;
 Kernel& Kernel::operator=(Kernel&&) noexcept = default;
 
-std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine) {
+std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine,
+                                                  const KernelOptions& options) {
   if (machine.cycle_time_us == 0)
     return std::unexpected(make_diagnostic(ErrorId::KernelNotYetSupported, {"startup.lis", 0, 0},
                                            "cycle_time_us must be greater than 0"));
@@ -23,11 +25,11 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
   cycle_s_ = machine.cycle_time_us * 1e-6;
   channels_.clear();
   machine_ = std::make_unique<const config::Machine>(machine);
-  messages_.clear();
-  messages_.reserve(64);
+  store_ = std::make_unique<PlanStore>();
   cycles_ = 0;
+  const PlannerOptions planner_options{options.clamp_index};
   for (std::size_t i = 0; i < machine.channels.size(); ++i)
-    channels_.push_back(std::make_unique<Channel>(*machine_, i, messages_));
+    channels_.push_back(std::make_unique<Channel>(*machine_, i, *store_, planner_options));
   return {};
 }
 
@@ -53,16 +55,25 @@ void Kernel::push_end_without_m30(std::size_t ch, std::uint16_t file_id, std::ui
 
 const std::string& Kernel::message(std::uint32_t index) const {
   static const std::string none;
-  return index < messages_.size() ? messages_[index] : none;
+  return store_ && index < store_->messages.size() ? store_->messages[index] : none;
+}
+
+const OffsetPayload& Kernel::offset(std::uint32_t index) const {
+  static const OffsetPayload none;
+  return store_ && index < store_->offsets.size() ? store_->offsets[index] : none;
 }
 
 ChannelSnapshot Kernel::snapshot(std::size_t ch) const {
   const Channel& c = *channels_.at(ch);
   ChannelSnapshot s;
-  for (std::size_t j = 0; j < c.position().size() && j < s.axis_mcs.size(); ++j) {
+  const ChannelFrames& f = c.planner().frames();
+  const motion::AxisVector pcs = f.to_pcs(c.position());
+  for (std::size_t j = 0; j < c.planner().axis_count(); ++j) {
     s.axis_mcs[j] = c.position()[j];
-    s.axis_pcs[j] = c.position()[j];  // no offsets yet: PCS == MCS
+    s.axis_pcs[j] = pcs[j];
   }
+  for (const frames::OffsetEntry& e : f.active())
+    s.offsets.emplace_back(std::string(frames::to_string(e.kind)), f.values_of(e.kind, false));
   s.modal = c.planner().modal();
   s.status = c.status();
   return s;

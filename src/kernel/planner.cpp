@@ -3,12 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
-#include <limits>
 
 namespace nck::kernel {
 namespace {
-
-constexpr double kInchMm = 25.4;
 
 bool is_fixed_m(int m) {
   switch (m) {
@@ -19,19 +16,31 @@ bool is_fixed_m(int m) {
   }
 }
 
-// The spindle M functions belong to the spindle work (issue 3).
+// The spindle M functions belong to the spindle work.
 bool is_spindle_m(int m) { return m == 3 || m == 4 || m == 5 || m == 19 || (m >= 40 && m <= 45); }
+
+// # commands the offset chain executes.
+bool is_offset_command(const nc::HashCommand& h) {
+  return std::holds_alternative<nc::CoordSystem>(h) || std::holds_alternative<nc::Ecs>(h) ||
+         std::holds_alternative<nc::Mcs>(h) || std::holds_alternative<nc::Rotation>(h) ||
+         std::holds_alternative<nc::PSet>(h) || std::holds_alternative<nc::PReset>(h) ||
+         std::holds_alternative<nc::Tlc>(h) || std::holds_alternative<nc::SuppressOffsets>(h) ||
+         (std::holds_alternative<nc::ToolData>(h) && !std::get<nc::ToolData>(h).prep);
+}
 
 }  // namespace
 
-Planner::Planner(const config::Machine& machine, std::size_t channel_index,
-                 std::vector<std::string>& messages)
-    : machine_(machine), channel_(machine.channels[channel_index]), messages_(messages) {
-  n_axes_ = std::min(channel_.axes.size(), config::kMaxPathAxes);
+Planner::Planner(const config::Machine& machine, std::size_t channel_index, PlanStore& store,
+                 const PlannerOptions& options)
+    : channel_(machine.channels[channel_index]),
+      store_(store),
+      n_axes_(std::min(channel_.axes.size(), config::kMaxPathAxes)),
+      frames_(channel_, channel_index < machine.channel_data.size() ? machine.channel_data[channel_index]
+                                                                    : config::ChannelData{},
+              n_axes_, options.clamp_index) {
   for (std::size_t j = 0; j < n_axes_; ++j) {
     const int idx = channel_.axes[j].axis_index;
-    config::AxisConfig fallback;
-    const config::AxisConfig& ax = idx >= 0 ? machine.axes[static_cast<std::size_t>(idx)] : fallback;
+    const config::AxisConfig ax = idx >= 0 ? machine.axes[static_cast<std::size_t>(idx)] : config::AxisConfig{};
     const config::GearStage& g = ax.gear(ax.initial_gear_stage);
     // Feed moves: a_beschl up, a_brems down; rapid: a_grenz; all capped by a_max.
     feed_dyn_[j] = {g.vb_max, std::min(g.a_beschl, g.a_max), std::min(g.a_brems, g.a_max)};
@@ -40,6 +49,7 @@ Planner::Planner(const config::Machine& machine, std::size_t channel_index,
     swe_neg_[j] = ax.swe_neg;
     swe_pos_[j] = ax.swe_pos;
   }
+  pcs_ = frames_.to_pcs(mcs_);  // the clamp / default zero offset act from the start
 }
 
 Command Planner::error_command(ErrorId id, std::string message, std::uint16_t file_id,
@@ -50,8 +60,7 @@ Command Planner::error_command(ErrorId id, std::string message, std::uint16_t fi
   c.file_id = file_id;
   c.line = line;
   c.emit_block_event = false;
-  c.message_index = static_cast<std::uint32_t>(messages_.size());
-  messages_.push_back(std::move(message));
+  c.message_index = store_.add_message(std::move(message));
   return c;
 }
 
@@ -63,16 +72,16 @@ int Planner::axis_named(const char* name) const {
 
 // Names what the block asks for that this version does not execute yet, or "".
 std::string Planner::unsupported(const nc::Block& b) const {
-  if (b.hash) return fmt::format("{} is not executed yet", nc::hash_command_name(*b.hash));
+  if (b.hash && !is_offset_command(*b.hash))
+    return fmt::format("{} is not executed yet", nc::hash_command_name(*b.hash));
   if (!b.spindles.empty())
     return fmt::format("spindle function of {} is not executed yet", b.spindles.front().name);
   for (int m : b.m)
     if (is_spindle_m(m)) return fmt::format("M{} is not executed yet", m);
   for (int g : b.g_nonmodal)
-    if (g != 4) return fmt::format("G{} is not executed yet", g);
-  if (b.d && *b.d != 0) return fmt::format("tool offset D{} is not applied yet", *b.d);
-  if (!b.kernel_writes.empty())
-    return fmt::format("writing {} is not executed yet", b.kernel_writes.front().name);
+    if (g != 4 && g != 92) return fmt::format("G{} is not executed yet", g);
+  for (const nc::VariableWrite& w : b.kernel_writes)
+    if (w.name.rfind("V.G.NP[", 0) != 0) return fmt::format("writing {} is not executed yet", w.name);
   if (b.dwell_revs) return "a dwell in spindle revolutions (G4 S..) is not executed yet";
   const nc::ModalState& m = b.modal;
   using nc::Motion;
@@ -83,7 +92,7 @@ std::string Planner::unsupported(const nc::Block& b) const {
   if (m.speed_mode != nc::SpeedMode::g97) return "constant cutting speed G96 is not executed yet";
   if (m.radius_comp != nc::RadiusComp::g40) return "tool radius compensation G41/G42 is not executed yet";
   if (m.diameter) return "diameter programming G51 is not executed yet";
-  if (m.zero_offset != 0) return "zero offsets G54..G59/G159 are not applied yet";
+  if (m.manual_mode) return "manual mode G201 is not executed yet";
   return {};
 }
 
@@ -104,6 +113,27 @@ bool Planner::add_outputs(const nc::Block& b, Command& c) {
   return true;
 }
 
+// Runs the block's offset functions; on failure `error` holds the command.
+bool Planner::apply_frames(const nc::Block& b, Command& c, Command& error) {
+  auto changes = frames_.apply(b, mcs_);
+  if (!changes) {
+    error = error_command(changes.error().id, changes.error().message, b.file_id, b.line);
+    return false;
+  }
+  for (const Diagnostic& w : changes->warnings)
+    (void)c.warnings.push_back({w.id, store_.add_message(w.message)});
+  for (frames::OffsetKind k : changes->kinds) {
+    const std::string kind(frames::to_string(k));
+    const bool seen = std::any_of(c.offset_events.begin(), c.offset_events.end(),
+                                  [&](std::uint32_t i) { return store_.offsets[i].kind == kind; });
+    if (!seen) (void)c.offset_events.push_back(store_.add_offset({kind, frames_.values_of(k, true)}));
+  }
+  // After a change of coordinate system the axes stay where they are: their
+  // program position is read anew in the new system.
+  if (changes->coordinate_system_changed) pcs_ = frames_.to_pcs(mcs_);
+  return true;
+}
+
 Command Planner::plan(const nc::Block& b, const std::string& file_name) {
   modal_ = b.modal;
   if (std::string why = unsupported(b); !why.empty())
@@ -117,6 +147,8 @@ Command Planner::plan(const nc::Block& b, const std::string& file_name) {
   if (!add_outputs(b, c))
     return error_command(ErrorId::KernelQueueOverflow, "more than 8 PLC outputs in one block",
                          b.file_id, b.line);
+  Command error;
+  if (!apply_frames(b, c, error)) return error;
   if (b.program_end) {
     c.kind = CommandKind::end;
     c.end_reason = std::find(b.m.begin(), b.m.end(), 2) != b.m.end() ? EndReason::m2 : EndReason::m30;
@@ -131,9 +163,11 @@ Command Planner::plan(const nc::Block& b, const std::string& file_name) {
     c.dwell_s = std::max(0.0, *b.dwell_s);
     return c;
   }
-  if (b.has_axis_words() || b.modal.motion == nc::Motion::cw || b.modal.motion == nc::Motion::ccw)
-    if (b.has_axis_words() || b.ijk[0] || b.ijk[1] || b.ijk[2])
-      return plan_motion(b, c, file_name);
+  const bool words_are_motion =
+      std::find(b.g_nonmodal.begin(), b.g_nonmodal.end(), 92) == b.g_nonmodal.end();
+  const bool circle = b.modal.motion == nc::Motion::cw || b.modal.motion == nc::Motion::ccw;
+  if (words_are_motion && (b.has_axis_words() || (circle && (b.ijk[0] || b.ijk[1] || b.ijk[2]))))
+    return plan_motion(b, c, file_name);
   c.kind = CommandKind::nop;
   return c;
 }

@@ -1,43 +1,57 @@
 #pragma once
 // Block preparation (setup side, not real-time): turns a decoded block into
-// a Command for the cyclic executor — resolves absolute/incremental words to
-// machine positions, builds the path segment and its dynamic limits, and
-// rejects what this version cannot execute yet with a clear error.
+// a Command for the cyclic executor — runs the block's offset functions,
+// resolves absolute/incremental words through the offset chain to machine
+// positions, builds the path segment and its dynamic limits, and rejects
+// what this version cannot execute yet with a clear error.
 #include <array>
 #include <string>
 #include <vector>
 
+#include "channel_frames.hpp"
 #include "command.hpp"
 #include "nck/config/machine.hpp"
 #include "nck/nc/block.hpp"
+#include "nck/kernel/plan_store.hpp"
 
 namespace nck::kernel {
 
+struct PlannerOptions {
+  std::uint32_t clamp_index = 0;  // pzv_grp chosen at program start (--clamp-index)
+};
+
 class Planner {
  public:
-  // messages: the kernel's text store; error commands index into it.
-  Planner(const config::Machine& machine, std::size_t channel_index,
-          std::vector<std::string>& messages);
+  Planner(const config::Machine& machine, std::size_t channel_index, PlanStore& store,
+          const PlannerOptions& options);
 
   Command plan(const nc::Block& block, const std::string& file_name);
   Command error_command(ErrorId id, std::string message, std::uint16_t file_id,
-                       std::uint32_t line);
+                        std::uint32_t line);
 
-  const std::array<double, config::kMaxPathAxes>& programmed_position() const { return pos_; }
   const nc::ModalState& modal() const { return modal_; }
   std::size_t axis_count() const { return n_axes_; }
+  const ChannelFrames& frames() const { return frames_; }
+  // Where the machine axes stand when everything planned so far has run.
+  const motion::AxisVector& planned_mcs() const { return mcs_; }
 
  private:
   Command plan_motion(const nc::Block& b, Command c, const std::string& file_name);
+  std::expected<motion::Segment, Command> arc_segment(const nc::Block& b,
+                                                      const motion::AxisVector& start,
+                                                      const motion::AxisVector& target,
+                                                      const motion::AxisVector& origin);
   bool add_outputs(const nc::Block& b, Command& c);
+  bool apply_frames(const nc::Block& b, Command& c, Command& error);
   std::string unsupported(const nc::Block& b) const;
   int axis_named(const char* name) const;
 
-  const config::Machine& machine_;
   const config::ChannelConfig& channel_;
-  std::vector<std::string>& messages_;
+  PlanStore& store_;
   std::size_t n_axes_ = 0;
-  std::array<double, config::kMaxPathAxes> pos_{};  // programmed end of the last planned block
+  ChannelFrames frames_;
+  motion::AxisVector pcs_{};  // programmed position (program coordinates)
+  motion::AxisVector mcs_{};  // machine position at the end of the last planned block
   std::array<motion::AxisDynamics, config::kMaxPathAxes> feed_dyn_{}, rapid_dyn_{};
   std::array<double, config::kMaxPathAxes> swe_neg_{}, swe_pos_{};
   nc::ModalState modal_;

@@ -75,6 +75,7 @@ struct OffsetEntry {
                             // rotation: CENTER1/CENTER2 on the plane axes
   Vec3 angle_deg{};         // CS/ACS phi1..phi3; rotation: angle in [2]
   std::uint32_t pending_axes = 0;  // bit j: new value waits for axis j
+  AxisValues selected_mm{};        // what the program selected (= values_mm unless pending)
 };
 using ActiveOffsets = FixedVector<OffsetEntry, 20>;
 

@@ -20,11 +20,19 @@
 namespace nck::kernel {
 
 class Channel;
+struct PlanStore;
+struct OffsetPayload;
+
+struct KernelOptions {
+  std::uint32_t clamp_index = 0;  // clamp-offset group at program start (pzv_grp[i])
+};
 
 // What a channel knows about its programmed state, for --final.
 struct ChannelSnapshot {
   std::array<double, config::kMaxPathAxes> axis_mcs{};
   std::array<double, config::kMaxPathAxes> axis_pcs{};
+  // every active offset: kind -> per-axis values
+  std::vector<std::pair<std::string, std::vector<std::pair<std::string, double>>>> offsets;
   nc::ModalState modal;
   ChannelStatus status = ChannelStatus::idle;
 };
@@ -37,7 +45,8 @@ class Kernel {
   Kernel& operator=(Kernel&&) noexcept;
 
   // setup: builds channels, limits and queues from the machine.
-  std::expected<void, Diagnostic> configure(const config::Machine& machine);
+  std::expected<void, Diagnostic> configure(const config::Machine& machine,
+                                            const KernelOptions& options = {});
 
   std::size_t channel_count() const;
   double cycle_time_s() const { return cycle_s_; }
@@ -54,8 +63,10 @@ class Kernel {
   void push_error(std::size_t ch, const Diagnostic& d, std::uint16_t file_id);
   // The decoder reached the end of the program without M2/M30.
   void push_end_without_m30(std::size_t ch, std::uint16_t file_id, std::uint32_t line);
-  // Text of an event's message_index.
+  // Text of an event's message_index (error, warning).
   const std::string& message(std::uint32_t index) const;
+  // Kind and per-axis values of an offset event's message_index.
+  const OffsetPayload& offset(std::uint32_t index) const;
   ChannelSnapshot snapshot(std::size_t ch) const;
 
   // real-time side -------------------------------------------------------
@@ -70,7 +81,7 @@ class Kernel {
  private:
   std::unique_ptr<const config::Machine> machine_;  // own copy: channels refer into it
   std::vector<std::unique_ptr<Channel>> channels_;
-  std::vector<std::string> messages_;
+  std::unique_ptr<PlanStore> store_;
   double cycle_s_ = 0.001;
   std::uint64_t cycle_us_ = 1000;
   std::uint64_t cycles_ = 0;

@@ -157,13 +157,13 @@ TEST(Channel, UnsupportedFunctionIsReportedNotIgnored) {
   ASSERT_TRUE(k.configure(xyz_machine()));
   nc::Block b;
   b.line = 5;
-  b.modal.zero_offset = 1;  // G54: zero offsets come with the coordinate-system work
+  b.modal.speed_mode = nc::SpeedMode::g96;  // constant cutting speed comes with the spindle work
   b.axes[0] = 1.0;
   k.push_block(0, b, "t.nc");
   RunLog r = run_all(k);
   ASSERT_FALSE(r.events.empty());
   EXPECT_EQ(r.events[0].id, ErrorId::KernelNotYetSupported);
-  EXPECT_NE(k.message(r.events[0].message_index).find("G54"), std::string::npos);
+  EXPECT_NE(k.message(r.events[0].message_index).find("G96"), std::string::npos);
 }
 
 TEST(Channel, FeedholdStopsAndResumes) {

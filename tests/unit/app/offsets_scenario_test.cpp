@@ -1,0 +1,86 @@
+// examples/mill/offsets.nc through `nck run`: the machine position at the
+// end of each block, computed by hand from zero.lis (G54 X100 Y50 Z-150),
+// tools.lis (D1 length 100) and the program's own offsets.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "cli_helpers.hpp"
+
+namespace nck::app {
+namespace {
+
+using namespace testing;
+using nlohmann::json;
+
+struct Row {
+  double x, y, z;
+};
+
+TEST(OffsetsScenario, MachinePositionsAtBlockEndsMatchHandComputation) {
+  const auto dir = temp_dir("offsets");
+  const std::string ex = root() + "/examples/mill";
+  CliResult r = run_nck("run " + ex + " " + ex + "/offsets.nc --events " + (dir / "e.jsonl").string() +
+                        " --trace " + (dir / "t.csv").string() + " --final " + (dir / "f.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // trace rows by cycle time (ms)
+  std::map<long, Row> rows;
+  const auto lines = split(read_file(dir / "t.csv"), '\n');
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const auto c = split(lines[i], ',');
+    rows[std::lround(std::stod(c[0]) * 1000)] = {std::stod(c[1]), std::stod(c[2]), std::stod(c[3])};
+  }
+  // the position when block N starts = the end of everything before it
+  std::map<long, Row> at_block_start;
+  for (const json& e : read_jsonl(dir / "e.jsonl"))
+    if (e["ev"] == "block" && !e["n"].is_null()) {
+      const long t_ms = std::lround(e["t"].get<double>() * 1000);
+      at_block_start[e["n"].get<long>()] = t_ms == 0 ? Row{0, 0, 0} : rows.at(t_ms - 1);
+    }
+  const double s = std::sqrt(0.5) * 20;  // 20 mm at 45 degrees
+  const std::map<long, Row> expected = {
+      {50, {100, 50, 0}},          // after N40: G54 + D1 + Z50
+      {70, {110, 50, 0}},          // after N60: G92 X10
+      {90, {100, 50, 0}},          // after N80: G92 off
+      {110, {120, 60, 0}},         // after N100: CS shift 20, turned 90 deg
+      {120, {110, 50, 0}},         // after N110: circle end (0,10) in the CS
+      {150, {100 + s, 50 + s, 0}}, // after N140: #ROTATION 45 deg
+      {170, {100, 50, 0}},         // after N160
+      {190, {110, 50, 0}},         // after N180: #PSET X5, then X15
+      {210, {0, 0, 0}},            // after N200: G54 suppressed, tool on Z only
+  };
+  for (const auto& [n, want] : expected) {
+    ASSERT_TRUE(at_block_start.count(n)) << "N" << n;
+    const Row& got = at_block_start[n];
+    EXPECT_NEAR(got.x, want.x, 1e-6) << "before N" << n;
+    EXPECT_NEAR(got.y, want.y, 1e-6) << "before N" << n;
+    EXPECT_NEAR(got.z, want.z, 1e-6) << "before N" << n;
+  }
+  // offset events name each kind the program changed
+  std::set<std::string> kinds;
+  for (const json& e : read_jsonl(dir / "e.jsonl"))
+    if (e["ev"] == "offset") kinds.insert(e["kind"].get<std::string>());
+  for (const char* k : {"zero", "tool", "g92", "cs", "rotation", "pset"}) EXPECT_TRUE(kinds.count(k)) << k;
+  const json fin = json::parse(read_file(dir / "f.json"));
+  EXPECT_NEAR(fin["channels"][0]["axes"]["X"]["pcs"].get<double>(), 0.0, 1e-9);
+}
+
+TEST(OffsetsScenario, ClampIndexShiftsEveryPathAxisFromTheStart) {
+  const auto dir = temp_dir("clamp");
+  const auto prog = dir / "p.nc";
+  std::ofstream(prog) << "%p\nN10 G0 X0 Y0 Z0\nN20 M30\n";
+  const std::string ex = root() + "/examples/mill";
+  CliResult r = run_nck("run " + ex + " " + prog.string() + " --clamp-index 1 --final " + (dir / "f.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const json fin = json::parse(read_file(dir / "f.json"));
+  // clamp.lis group 1: X +10 mm, Y -5 mm
+  EXPECT_NEAR(fin["channels"][0]["axes"]["X"]["mcs"].get<double>(), 10.0, 1e-9);
+  EXPECT_NEAR(fin["channels"][0]["axes"]["Y"]["mcs"].get<double>(), -5.0, 1e-9);
+  EXPECT_NEAR(fin["channels"][0]["axes"]["X"]["pcs"].get<double>(), 0.0, 1e-9);
+  EXPECT_NEAR(fin["channels"][0]["offsets"]["clamp"]["X"].get<double>(), 10.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace nck::app
