@@ -29,6 +29,7 @@ int main_cli(int argc, char** argv) {
   runc->add_option("--trace-every", run.trace_every, "trace every Nth cycle")
       ->check(CLI::PositiveNumber);
   runc->add_option("--final", run.final_state, "write the final state as JSON to FILE");
+  runc->add_option("--plc", run.plc, "timed HLI actions (docs/plc-scenario.md)");
   runc->add_option("--max-time", run.max_time_s, "simulated-time limit in seconds")
       ->check(CLI::PositiveNumber);
   runc->add_flag("--realtime", run.realtime, "pace the cycles to the wall clock");
@@ -42,6 +43,17 @@ int main_cli(int argc, char** argv) {
   parsec->add_option("--machine", parse.machine, "take axis and spindle names from this machine");
   parsec->add_option("--channel", parse.channel, "channel of --machine (1-based)")
       ->check(CLI::PositiveNumber);
+
+  FitOptions fit;
+  auto* fitc = app.add_subcommand("fit-curve", "Coefficients b1 b2 b3 of a spindle acceleration curve");
+  fitc->add_option("TYPE", fit.type, "hyperbola or polynomial")
+      ->required()
+      ->check(CLI::IsMember({"hyperbola", "polynomial"}));
+  fitc->add_option("--n-grenz", fit.n_grenz_deg_s, "limit speed n_grenz in deg/s")->required();
+  fitc->add_option("--a-konst", fit.a_konst_deg_s2, "constant acceleration below n_grenz in deg/s^2")
+      ->required();
+  fitc->add_option("--point", fit.points, "speed,acceleration above n_grenz (deg/s,deg/s^2); repeat")
+      ->required();
 
   auto* params = app.add_subcommand("params", "Print every accepted list key as a markdown table");
   auto* errors = app.add_subcommand("errors", "Print every diagnostic ID as a markdown table");
@@ -61,6 +73,7 @@ int main_cli(int argc, char** argv) {
   if (*check) return check_machine(machine);
   if (*runc) return run_simulation(run);
   if (*parsec) return parse_program(parse);
+  if (*fitc) return fit_curve(fit);
   if (*params) return print_parameters();
   if (*errors) return print_errors();
   return 2;

@@ -7,6 +7,9 @@
 #include "nck/config/parameter_registry.hpp"
 #include "nck/kernel/decoder_setup.hpp"
 #include "nck/nc/block_json.hpp"
+#include "nck/spindle/accel_curve.hpp"
+
+#include <sstream>
 
 namespace nck::app {
 
@@ -71,6 +74,29 @@ int parse_program(const ParseOptions& opt) {
   std::fflush(stdout);
   fmt::print(stderr, "{}: {} block(s), {} error(s)\n", opt.program, blocks, errors);
   return errors == 0 ? 0 : 1;
+}
+
+int fit_curve(const FitOptions& opt) {
+  std::vector<spindle::CurvePoint> points;
+  for (const std::string& p : opt.points) {
+    spindle::CurvePoint cp;
+    char comma = 0;
+    std::istringstream in(p);
+    if (!(in >> cp.speed_deg_s >> comma >> cp.accel_deg_s2) || comma != ',' || !(in >> std::ws).eof()) {
+      fmt::print(stderr, "nck: error 940001: --point '{}' is not SPEED,ACCEL (deg/s,deg/s^2)\n", p);
+      return 2;
+    }
+    points.push_back(cp);
+  }
+  auto c = opt.type == "hyperbola"
+               ? spindle::fit_hyperbola(opt.n_grenz_deg_s, opt.a_konst_deg_s2, points)
+               : spindle::fit_polynomial(opt.n_grenz_deg_s, opt.a_konst_deg_s2, points);
+  if (!c) {
+    fmt::print(stderr, "nck: error 950011: {}\n", c.error());
+    return 2;
+  }
+  fmt::print("b1 {:.9E}\nb2 {:.9E}\nb3 {:.9E}\n", c->b1, c->b2, c->b3);
+  return 0;
 }
 
 int print_parameters() {

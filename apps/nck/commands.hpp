@@ -1,5 +1,6 @@
 #pragma once
 #include <string>
+#include <vector>
 
 namespace nck::app {
 
@@ -14,6 +15,15 @@ struct ParseOptions {
 };
 // nck parse PROGRAM: 0 without errors, 1 with errors, 2 bad machine.
 int parse_program(const ParseOptions& opt);
+
+struct FitOptions {
+  std::string type;  // hyperbola | polynomial
+  double n_grenz_deg_s = 0;
+  double a_konst_deg_s2 = 0;
+  std::vector<std::string> points;  // "n,a"
+};
+// nck fit-curve: prints b1 b2 b3; 0 ok, 2 bad input.
+int fit_curve(const FitOptions& opt);
 
 int print_parameters();  // docs/parameters.md
 int print_errors();      // docs/errors.md

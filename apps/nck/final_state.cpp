@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "machine_names.hpp"
+#include "nck/spindle/spindle_status.hpp"
 #include "output_writers.hpp"
 
 namespace nck::app {
@@ -63,8 +64,15 @@ bool write_final(const std::string& path, const config::Machine& m, const kernel
                             {"tool", json{{"d", s.modal.d}}}});
   }
   json spindles = json::object();
-  for (const SpindleName& s : machine_spindles(m))
-    spindles[s.name] = json{{"rpm", 0.0}, {"pos", 0.0}, {"mode", "stop"}, {"gear", 1}, {"homed", false}};
+  for (std::size_t i = 0; i < k.spindle_count(); ++i) {
+    const spindle::SpindleStatus& st = k.spindle_status(i);
+    spindles[k.spindle_name(i)] = json{{"rpm", st.set_rpm},
+                                       {"pos", st.set_pos_deg},
+                                       {"act_rpm", st.act_rpm},
+                                       {"mode", std::string(spindle::mode_name(st.mode))},
+                                       {"gear", st.gear_stage},
+                                       {"homed", st.homed}};
+  }
   json errs = json::array();
   for (const FinalError& e : errors)
     errs.push_back(json{{"id", e.id}, {"ch", e.channel}, {"line", e.line}, {"file", e.file}, {"msg", e.msg}});

@@ -26,7 +26,10 @@ std::vector<SpindleName> machine_spindles(const config::Machine& m) {
       const bool known = std::any_of(out.begin(), out.end(), [&](const SpindleName& o) {
         return s.log_axis_nr != 0 ? o.log_axis_nr == s.log_axis_nr : o.name == s.name;
       });
-      if (!known) out.push_back({s.name, s.log_axis_nr, c});
+      if (known) continue;
+      const bool open_loop =
+          s.axis_index >= 0 && m.axes[static_cast<std::size_t>(s.axis_index)].is_speed_controlled();
+      out.push_back({s.name, s.log_axis_nr, c, open_loop});
     }
   return out;
 }

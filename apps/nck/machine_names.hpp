@@ -12,6 +12,7 @@ struct SpindleName {
   std::string name;
   std::uint32_t log_axis_nr = 0;
   std::size_t channel = 0;  // first channel that lists it
+  bool speed_controlled = false;  // antr.operation_mode OPEN_POSITION_LOOP...: trace shows the drive value
 };
 
 // Axis designation per channel axis; a designation already used by an earlier

@@ -6,11 +6,23 @@
 #include <nlohmann/json.hpp>
 
 #include "machine_names.hpp"
+#include "nck/spindle/spindle_status.hpp"
 
 namespace nck::app {
 
 // ordered: "t", "ch", "ev" first, as SPEC 2.3 lists them
 using json = nlohmann::ordered_json;
+
+nlohmann::ordered_json RunNames::spindle(std::int8_t index) const {
+  if (index < 0 || !kernel || static_cast<std::size_t>(index) >= kernel->spindle_count()) return nullptr;
+  return kernel->spindle_name(static_cast<std::size_t>(index));
+}
+
+std::string RunNames::text(const kernel::Event& e) const {
+  if (e.message_index != kernel::kNoMessage && kernel) return kernel->message(e.message_index);
+  const ErrorInfo* info = find_error(e.id);
+  return info ? fmt::format("{}: {}", info->text, info->remedy) : std::string();
+}
 
 const std::string& RunNames::file(std::size_t ch, std::uint16_t id) const {
   static const std::string unknown;
@@ -70,6 +82,22 @@ const char* kind_name(kernel::EventKind k) {
   return "unknown";
 }
 
+const char* wait_reason_name(kernel::WaitReason r) {
+  using W = kernel::WaitReason;
+  switch (r) {
+    case W::plc_ack: return "plc_ack";
+    case W::speed_reached: return "speed_reached";
+    case W::in_position: return "in_position";
+    case W::standstill: return "standstill";
+    case W::homing: return "homing";
+    case W::gear_change: return "gear_change";
+    case W::expl_syn: return "expl_syn";
+    case W::dwell: return "dwell";
+    case W::feedhold: return "feedhold";
+  }
+  return "plc_ack";
+}
+
 const char* end_name(kernel::EndReason r) {
   using R = kernel::EndReason;
   switch (r) {
@@ -119,16 +147,39 @@ void EventWriter::write(const kernel::Event& e, const RunNames& names) {
     case K::plc_out:
     case K::plc_ack:
       j["fn"] = function_name(e.fn, e.fn_number);
-      j["spindle"] = nullptr;
+      j["spindle"] = names.spindle(e.spindle);
       j["value"] = e.fn == kernel::FunctionKind::s ? json(e.value) : json(nullptr);
       if (e.kind == K::plc_out) j["sync"] = sync_name(e.sync);
+      break;
+    case K::wait:
+    case K::wait_end:
+      j["reason"] = wait_reason_name(static_cast<kernel::WaitReason>(e.wait_reason));
+      j["spindle"] = names.spindle(e.spindle);
+      j["fn"] = function_name(e.fn, e.fn_number);
+      j["line"] = e.line;
+      break;
+    case K::spindle:
+      j["spindle"] = names.spindle(e.spindle);
+      j["mode"] = spindle::mode_name(static_cast<spindle::SpindleMode>(e.spindle_mode));
+      j["rpm"] = e.value;
+      j["gear"] = e.gear;
+      break;
+    case K::speed_reached:
+      j["spindle"] = names.spindle(e.spindle);
+      j["rpm"] = e.value;
+      break;
+    case K::gear:
+      j["spindle"] = names.spindle(e.spindle);
+      j["stage"] = e.gear;
+      j["fn"] = function_name(e.fn, e.fn_number);
       break;
     case K::warning:
     case K::error:
       j["id"] = number(e.id);
       j["line"] = e.line;
       j["file"] = names.file(ch, e.file_id);
-      j["msg"] = names.kernel ? names.kernel->message(e.message_index) : std::string();
+      j["msg"] = names.text(e);
+      if (e.spindle >= 0) j["spindle"] = names.spindle(e.spindle);
       break;
     case K::end:
       j["reason"] = end_name(e.end_reason);
@@ -170,6 +221,7 @@ std::vector<std::string> TraceWriter::column_names(const config::Machine& m) {
     cols.push_back(s.name + ".rpm");
     cols.push_back(s.name + ".pos");
     cols.push_back(s.name + ".act_rpm");
+    if (s.speed_controlled) cols.push_back(s.name + ".drive");  // drive output value (antr.v_reso_*)
   }
   return cols;
 }
@@ -179,7 +231,9 @@ bool TraceWriter::open(const std::string& path, const config::Machine& m, std::u
   every_ = every == 0 ? 1 : every;
   axes_per_channel_.clear();
   for (const auto& ch : m.channels) axes_per_channel_.push_back(ch.axes.size());
-  spindle_count_ = machine_spindles(m).size();
+  speed_controlled_.clear();
+  for (const SpindleName& s : machine_spindles(m)) speed_controlled_.push_back(s.speed_controlled);
+  spindle_count_ = speed_controlled_.size();
   std::string header;
   for (const std::string& c : column_names(m)) header += (header.empty() ? "" : ",") + c;
   file_.write(header + "\n");
@@ -193,8 +247,11 @@ void TraceWriter::write(std::uint64_t cycle, const kernel::TickOutput& out) {
   for (std::size_t c = 0; c < axes_per_channel_.size(); ++c)
     for (std::size_t j = 0; j < axes_per_channel_[c]; ++j)
       fmt::format_to(std::back_inserter(row_), ",{:.6f}", out.channels[c].axis_mcs[j]);
-  // Spindles are not interpolated yet: they stand still at 0.
-  for (std::size_t s = 0; s < spindle_count_; ++s) row_ += ",0,0,0";
+  for (std::size_t s = 0; s < spindle_count_; ++s) {
+    const kernel::SpindleOutput& o = out.spindles[s];
+    fmt::format_to(std::back_inserter(row_), ",{:.3f},{:.4f},{:.3f}", o.set_rpm, o.set_pos_deg, o.act_rpm);
+    if (speed_controlled_[s]) fmt::format_to(std::back_inserter(row_), ",{:.0f}", o.drive_output);
+  }
   row_ += '\n';
   file_.write(row_);
 }

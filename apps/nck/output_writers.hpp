@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "nck/config/machine.hpp"
 #include "nck/kernel/kernel.hpp"
 #include "nck/nc/decoder.hpp"
@@ -17,6 +19,10 @@ struct RunNames {
   std::vector<const nc::Decoder*> decoders;  // per channel
   const kernel::Kernel* kernel = nullptr;
   const std::string& file(std::size_t ch, std::uint16_t id) const;
+  // A spindle's designation, or null.
+  nlohmann::ordered_json spindle(std::int8_t index) const;
+  // An event's message: its own text, or the ID's text from the table.
+  std::string text(const kernel::Event& e) const;
 };
 
 class File {
@@ -63,6 +69,7 @@ class TraceWriter {
   std::uint64_t every_ = 1;
   std::vector<std::size_t> axes_per_channel_;
   std::size_t spindle_count_ = 0;
+  std::vector<bool> speed_controlled_;
   std::string row_;
 };
 

@@ -3,12 +3,16 @@
 #include "run_command.hpp"
 
 #include <chrono>
+#include <fstream>
+#include <optional>
+#include <sstream>
 #include <cstdio>
 #include <fmt/format.h>
 #include <thread>
 #include <unistd.h>
 
 #include "nck/config/load.hpp"
+#include "nck/plc/scenario.hpp"
 #include "nck/kernel/decoder_setup.hpp"
 #include "output_writers.hpp"
 
@@ -69,8 +73,7 @@ void record_events(const kernel::TickOutput& o, const RunNames& names, Outputs& 
     out.events.write(e, names);
     if (e.kind != kernel::EventKind::error) continue;
     const std::size_t ch = e.channel - 1u;
-    FinalError fe{number(e.id), e.channel, e.line, names.file(ch, e.file_id),
-                  names.kernel->message(e.message_index)};
+    FinalError fe{number(e.id), e.channel, e.line, names.file(ch, e.file_id), names.text(e)};
     fmt::print(stderr, "{}:{}: error {}: {}\n", fe.file, fe.line, fe.id, fe.msg);
     out.errors.push_back(std::move(fe));
   }
@@ -97,6 +100,23 @@ class Progress {
   std::chrono::steady_clock::time_point last_{};
 };
 
+// The --plc scenario; its diagnostics go to stderr, errors make it unusable.
+std::optional<plc::Scenario> load_scenario(const std::string& path, const config::Machine& m) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) {
+    fmt::print(stderr, "{}: error 940003: cannot read the PLC scenario\n", path);
+    return std::nullopt;
+  }
+  std::stringstream text;
+  text << f.rdbuf();
+  Diagnostics ds;
+  plc::Scenario sc = plc::parse_scenario(text.str(), path, ds);
+  plc::resolve_spindles(sc, m, plc::build_spindle_map(m), ds);
+  for (const Diagnostic& d : ds.items()) fmt::print(stderr, "{}\n", format(d));
+  if (ds.has_errors()) return std::nullopt;
+  return sc;
+}
+
 }  // namespace
 
 int run_simulation(const RunOptions& opt) {
@@ -112,6 +132,13 @@ int run_simulation(const RunOptions& opt) {
   if (auto ok = k.configure(m, {opt.clamp_index}); !ok) {
     fmt::print(stderr, "{}\n", format(ok.error()));
     return 2;
+  }
+  plc::Scenario scenario;
+  if (!opt.plc.empty()) {
+    auto loaded_scenario = load_scenario(opt.plc, m);
+    if (!loaded_scenario) return 2;
+    scenario = std::move(*loaded_scenario);
+    k.load_scenario(scenario);
   }
   Outputs out;
   if ((!opt.events.empty() && !out.events.open(opt.events)) ||

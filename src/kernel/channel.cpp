@@ -5,94 +5,105 @@
 namespace nck::kernel {
 
 Channel::Channel(const config::Machine& machine, std::size_t index, PlanStore& store,
-                 const PlannerOptions& options)
-    : planner_(machine, index, store, options),
+                 const PlannerOptions& options, std::vector<std::int8_t> spindles)
+    : planner_(machine, index, store, options, spindles),
       number_(static_cast<std::uint8_t>(index + 1)),
-      n_axes_(planner_.axis_count()) {}
+      n_axes_(planner_.axis_count()) {
+  for (std::int8_t s : spindles) (void)spindles_.push_back(s);
+}
 
 void Channel::emit(TickOutput& sink, const Event& e) noexcept {
   if (!sink.events.push_back(e)) ++sink.events_dropped;
 }
 
-void Channel::finish(EndReason reason, double t_s, TickOutput& sink) noexcept {
+Event Channel::event(EventKind k, double t_s) const noexcept {
   Event e;
   e.t_s = t_s;
   e.channel = number_;
-  e.kind = EventKind::end;
-  e.end_reason = reason;
-  emit(sink, e);
-  status_ = reason == EndReason::m30 || reason == EndReason::m2 ? ChannelStatus::ended
-                                                                 : ChannelStatus::aborted;
-  active_ = false;
-  velocity_ = 0;
+  e.kind = k;
+  e.file_id = current_.file_id;
+  e.line = current_.line;
+  e.has_n = current_.has_n;
+  e.n = current_.n;
+  return e;
 }
 
-void Channel::start(const Command& c, double t_s, TickOutput& sink) noexcept {
+void Channel::finish(EndReason reason, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept {
+  Event e = event(EventKind::end, t_s);
+  e.end_reason = reason;
+  emit(sink, e);
+  const bool ok = reason == EndReason::m30 || reason == EndReason::m2;
+  status_ = ok ? ChannelStatus::ended : ChannelStatus::aborted;
+  active_ = false;
+  velocity_ = 0;
+  waits_.clear();
+  late_.clear();
+  // Program end keeps an endless rotation unless the HLI asks to stop it; a
+  // reset or an abort stops the channel's spindles (unless P-AXIS-00455).
+  for (std::int8_t s : spindles_) {
+    if (s < 0 || static_cast<std::size_t>(s) >= ctx.spindle_count) continue;
+    SpindleUnit& u = ctx.spindles[s];
+    if (u.channel != number_) continue;
+    if (!ok) {
+      u.axis.reset();
+    } else if (ctx.hli && ctx.hli->spindle_control[static_cast<std::size_t>(s)].stop_at_program_end) {
+      (void)u.axis.stop();
+    }
+  }
+}
+
+void Channel::raise(ErrorId id, std::uint32_t message, double t_s, TickOutput& sink,
+                    ChannelContext& ctx) noexcept {
+  Event e = event(EventKind::error, t_s);
+  e.id = id;
+  e.message_index = message;
+  emit(sink, e);
+  finish(EndReason::error, t_s, sink, ctx);
+}
+
+void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept {
   current_ = c;
   active_ = true;
-  Event base;
-  base.t_s = t_s;
-  base.channel = number_;
-  base.file_id = c.file_id;
-  base.line = c.line;
-  base.has_n = c.has_n;
-  base.n = c.n;
-  if (c.emit_block_event) {
-    Event e = base;
-    e.kind = EventKind::block;
-    emit(sink, e);
-  }
+  phase_ = Phase::pre_wait;
+  if (c.emit_block_event) emit(sink, event(EventKind::block, t_s));
   for (const Command::Warning& w : c.warnings) {
-    Event e = base;
-    e.kind = EventKind::warning;
+    Event e = event(EventKind::warning, t_s);
     e.id = w.id;
     e.message_index = w.message_index;
     emit(sink, e);
   }
   for (std::uint32_t payload : c.offset_events) {
-    Event e = base;
-    e.kind = EventKind::offset;
+    Event e = event(EventKind::offset, t_s);
     e.message_index = payload;
     emit(sink, e);
   }
-  for (const Output& o : c.outputs) {
-    Event e = base;
-    e.kind = EventKind::plc_out;
-    e.fn = o.fn;
-    e.fn_number = o.number;
-    e.sync = o.sync;
-    emit(sink, e);
+  if (c.kind == CommandKind::error) {
+    raise(c.error_id, c.message_index, t_s, sink, ctx);
+    return;
   }
-  switch (c.kind) {
-    case CommandKind::motion:
-      profile_.start(c.segment.length(), c.v_cmd_mm_s, c.limits);
-      break;
-    case CommandKind::dwell:
-      dwell_left_s_ = c.dwell_s;
-      break;
-    case CommandKind::stop: {
-      // A dry run has no operator: the stop is reported and the program goes on.
-      Event e = base;
-      e.kind = EventKind::stop;
-      emit(sink, e);
-      active_ = false;
-      break;
+  if (c.feed_motion) take_late_waits(SyncPoint::late_motion);
+  if (c.expl_syn) take_late_waits(SyncPoint::late_explicit);
+  issue_all(SyncPoint::before, t_s, sink, ctx);
+}
+
+// The body of the block: motion, dwell, or nothing.
+void Channel::execute(double dt_s, const ChannelInput& in) noexcept {
+  if (current_.kind == CommandKind::motion) {
+    const double ovr = in.feedhold ? 0.0 : std::clamp(in.feed_override_pct, 0.0, 100.0) / 100.0;
+    const motion::ProfileSample st = profile_.step(dt_s, ovr);
+    place(st.s_mm);
+    velocity_ = st.v_mm_s;
+    if (st.finished) {
+      place(current_.segment.length());
+      velocity_ = 0;
+      phase_ = Phase::post_wait;
     }
-    case CommandKind::end:
-      finish(c.end_reason, t_s, sink);
-      break;
-    case CommandKind::error: {
-      Event e = base;
-      e.kind = EventKind::error;
-      e.id = c.error_id;
-      e.message_index = c.message_index;
-      emit(sink, e);
-      finish(EndReason::error, t_s, sink);
-      break;
-    }
-    case CommandKind::nop:
-      active_ = false;
-      break;
+  } else if (current_.kind == CommandKind::dwell) {
+    dwell_left_s_ -= dt_s;
+    // Half a cycle of tolerance so a dwell of k cycles takes exactly k cycles.
+    if (dwell_left_s_ <= 0.5 * dt_s) phase_ = Phase::post_wait;
+  } else {
+    phase_ = Phase::post_wait;
   }
 }
 
@@ -108,37 +119,66 @@ void Channel::place(double s_mm) noexcept {
   current_.map.apply(pcs, pos_, n_axes_);
 }
 
-void Channel::execute(double dt_s, const ChannelInput& in) noexcept {
-  if (current_.kind == CommandKind::motion) {
-    const double ovr = in.feedhold ? 0.0 : std::clamp(in.feed_override_pct, 0.0, 100.0) / 100.0;
-    const motion::ProfileSample st = profile_.step(dt_s, ovr);
-    place(st.s_mm);
-    velocity_ = st.v_mm_s;
-    if (st.finished) {
-      place(current_.segment.length());
-      velocity_ = 0;
-      active_ = false;
-    }
-  } else if (current_.kind == CommandKind::dwell) {
-    dwell_left_s_ -= dt_s;
-    // Half a cycle of tolerance so a dwell of k cycles takes exactly k cycles.
-    if (dwell_left_s_ <= 0.5 * dt_s) active_ = false;
+// After the post waits: the block is done.
+void Channel::complete(double t_s, TickOutput& sink, ChannelContext& ctx) noexcept {
+  active_ = false;
+  if (current_.kind == CommandKind::stop) {
+    // A dry run has no operator: the stop is reported and the program goes on.
+    emit(sink, event(EventKind::stop, t_s));
+  } else if (current_.kind == CommandKind::end) {
+    finish(current_.end_reason, t_s, sink, ctx);
   }
 }
 
+// Runs the current block's phases as far as this cycle allows.
+void Channel::advance(double t_s, double dt_s, const ChannelInput& in, TickOutput& sink,
+                      ChannelContext& ctx) noexcept {
+  if (phase_ == Phase::pre_wait) {
+    for (;;) {
+      if (!waits_done(SyncPoint::before, t_s, sink, ctx) || done()) return;
+      // Actions held back behind a gear change go out once it is done.
+      if (next_action_ >= current_.spindle_actions.size()) break;
+      (void)issue_spindle_actions(SyncPoint::before, t_s, sink, ctx);
+      if (done()) return;
+    }
+    phase_ = Phase::body;
+    if (current_.kind == CommandKind::motion)
+      profile_.start(current_.segment.length(), current_.v_cmd_mm_s, current_.limits);
+    if (current_.kind == CommandKind::dwell) dwell_left_s_ = current_.dwell_s;
+  }
+  if (phase_ == Phase::body) {
+    const bool timed = current_.kind == CommandKind::motion || current_.kind == CommandKind::dwell;
+    execute(dt_s, in);
+    if (phase_ != Phase::post_wait) return;
+    issue_all(SyncPoint::after, t_s, sink, ctx);
+    // A motion or dwell used this cycle; its post waits are checked next cycle.
+    if (timed) return;
+  }
+  if (phase_ == Phase::post_wait && waits_done(SyncPoint::after, t_s, sink, ctx) && !done())
+    complete(t_s, sink, ctx);
+}
+
 void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutput& out,
-                   TickOutput& sink) noexcept {
+                   TickOutput& sink, ChannelContext& ctx) noexcept {
   if (!done()) {
     if (in.reset) {
-      finish(EndReason::reset, t_s, sink);
+      finish(EndReason::reset, t_s, sink, ctx);
     } else {
-      // Blocks without duration (nop, stop) take no cycle of their own.
-      while (!active_ && !done() && !queue_.empty()) {
-        start(queue_.front(), t_s, sink);
-        queue_.pop();
+      for (;;) {
+        if (!active_) {
+          if (queue_.empty()) break;
+          start(queue_.front(), t_s, sink, ctx);
+          queue_.pop();
+          if (done()) break;
+        }
+        advance(t_s, dt_s, in, sink, ctx);
+        // Blocks without duration take no cycle of their own.
+        if (active_ || done()) break;
       }
-      if (active_) execute(dt_s, in);
-      if (!done()) status_ = active_ ? ChannelStatus::running : ChannelStatus::waiting;
+      if (!done()) {
+        const bool waiting = active_ && phase_ != Phase::body;
+        status_ = waiting ? ChannelStatus::waiting : active_ ? ChannelStatus::running : ChannelStatus::waiting;
+      }
     }
   }
   for (std::size_t j = 0; j < n_axes_; ++j) out.axis_mcs[j] = pos_[j];

@@ -9,6 +9,7 @@
 #include "nck/motion/limits.hpp"
 #include "nck/motion/segment.hpp"
 #include "channel_frames.hpp"
+#include "spindle_action.hpp"
 
 namespace nck::kernel {
 
@@ -21,11 +22,13 @@ enum class CommandKind : std::uint8_t {
   nop,       // a block without motion (only its block event and outputs)
 };
 
-// A function output to the PLC with the block (M, H, T).
+// A channel function output to the PLC with the block (M, H, T); its
+// synchronisation bits decide when it is output and waited for.
 struct Output {
   FunctionKind fn = FunctionKind::none;
   std::int32_t number = 0;
   std::uint32_t sync = 0;
+  double ack_timeout_s = 0;  // 0 = none
 };
 
 struct Command {
@@ -49,8 +52,11 @@ struct Command {
   EndReason end_reason = EndReason::m30;
   ErrorId error_id{};
   std::uint32_t message_index = 0;
-  // PLC outputs of the block
+  // PLC outputs of the block and its spindle functions, in execution order
   FixedVector<Output, 8> outputs;
+  FixedVector<SpindleAction, 16> spindle_actions;
+  bool feed_motion = false;  // G1/G2/G3: MVS_SLM functions synchronise here
+  bool expl_syn = false;     // #EXPL SYN: MVS_SLP functions synchronise here
   // offset events (PlanStore::offsets) and warnings raised with the block
   FixedVector<std::uint32_t, 6> offset_events;
   struct Warning {

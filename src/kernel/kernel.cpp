@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include "channel.hpp"
+#include "kernel_plc.hpp"
 #include "nck/kernel/plan_store.hpp"
+#include "spindle_unit.hpp"
 
 namespace nck::kernel {
 
@@ -14,26 +16,60 @@ Kernel& Kernel::operator=(Kernel&&) noexcept = default;
 
 std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine,
                                                   const KernelOptions& options) {
-  if (machine.cycle_time_us == 0)
-    return std::unexpected(make_diagnostic(ErrorId::KernelNotYetSupported, {"startup.lis", 0, 0},
-                                           "cycle_time_us must be greater than 0"));
+  auto bad = [](std::string msg) {
+    return std::unexpected(make_diagnostic(ErrorId::KernelBadMachine, {"startup.lis", 0, 0}, std::move(msg)));
+  };
+  if (machine.cycle_time_us == 0) return bad("cycle_time_us must be greater than 0");
   if (machine.channels.size() > config::kMaxChannels)
-    return std::unexpected(make_diagnostic(
-        ErrorId::KernelNotYetSupported, {"startup.lis", 0, 0},
-        fmt::format("{} channels configured, at most {}", machine.channels.size(), config::kMaxChannels)));
+    return bad(fmt::format("{} channels configured, at most {}", machine.channels.size(), config::kMaxChannels));
   cycle_us_ = machine.cycle_time_us;
   cycle_s_ = machine.cycle_time_us * 1e-6;
-  channels_.clear();
+  cycles_ = 0;
   machine_ = std::make_unique<const config::Machine>(machine);
   store_ = std::make_unique<PlanStore>();
-  cycles_ = 0;
+  plc_ = std::make_unique<KernelPlc>(*machine_);
+  if (plc_->map.count > kMaxMachineSpindles)
+    return bad(fmt::format("{} spindles configured, at most {}", plc_->map.count, kMaxMachineSpindles));
+
+  // One unit per machine spindle, in the HLI map's order.
+  spindles_ = std::vector<SpindleUnit>(plc_->map.count);
+  spindle_names_.assign(plc_->map.count, std::string());
+  std::vector<std::vector<std::int8_t>> per_channel(machine_->channels.size());
+  for (std::size_t c = 0; c < machine_->channels.size(); ++c) {
+    const config::ChannelConfig& ch = machine_->channels[c];
+    for (std::size_t i = 0; i < ch.spindles.size(); ++i) {
+      const std::int8_t k = plc_->map.at(c + 1, static_cast<std::int32_t>(i));
+      per_channel[c].push_back(k);
+      if (k < 0 || !spindle_names_[static_cast<std::size_t>(k)].empty()) continue;
+      const config::ChannelSpindle& sp = ch.spindles[i];
+      const config::AxisConfig* ax =
+          sp.axis_index >= 0 ? &machine_->axes[static_cast<std::size_t>(sp.axis_index)] : nullptr;
+      SpindleUnit& u = spindles_[static_cast<std::size_t>(k)];
+      if (auto ok = u.axis.configure(ax, sp, machine_->sim, cycle_s_); !ok) return std::unexpected(ok.error());
+      u.plc_spindle = sp.plc_control || (ax && (ax->achs_mode & 0x40000u) != 0);
+      u.channel = static_cast<std::uint8_t>(c + 1);
+      u.channel_index = static_cast<std::int8_t>(i);
+      u.last_gear = u.axis.status().gear_stage;
+      spindle_names_[static_cast<std::size_t>(k)] = sp.name;
+    }
+  }
+  channels_.clear();
   const PlannerOptions planner_options{options.clamp_index};
-  for (std::size_t i = 0; i < machine.channels.size(); ++i)
-    channels_.push_back(std::make_unique<Channel>(*machine_, i, *store_, planner_options));
+  for (std::size_t i = 0; i < machine_->channels.size(); ++i)
+    channels_.push_back(std::make_unique<Channel>(*machine_, i, *store_, planner_options, per_channel[i]));
   return {};
 }
 
 std::size_t Kernel::channel_count() const { return channels_.size(); }
+std::size_t Kernel::spindle_count() const { return spindles_.size(); }
+const std::string& Kernel::spindle_name(std::size_t index) const { return spindle_names_.at(index); }
+const spindle::SpindleStatus& Kernel::spindle_status(std::size_t index) const {
+  return spindles_.at(index).axis.status();
+}
+
+void Kernel::load_scenario(const plc::Scenario& scenario) {
+  plc_->player = plc::ScenarioPlayer(scenario);
+}
 
 std::size_t Kernel::queue_space(std::size_t ch) const { return channels_.at(ch)->queue_space(); }
 
@@ -85,8 +121,20 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   out.t_s = t_s;
   out.events.clear();
   out.events_dropped = 0;
-  for (std::size_t i = 0; i < channels_.size(); ++i)
-    channels_[i]->tick(t_s, cycle_s_, in.channels[i], out.channels[i], out);
+  tick_plc(t_s, out);
+  tick_external_commands(t_s, out);
+  ChannelContext ctx{spindles_.data(), spindles_.size(), &plc_->sim, &plc_->hli};
+  for (std::size_t i = 0; i < channels_.size(); ++i) {
+    // The integrator's inputs and the HLI's act together.
+    plc::ChannelControl& hc = plc_->hli.channel[i];
+    ChannelInput ci = in.channels[i];
+    ci.feed_override_pct = ci.feed_override_pct * hc.feed_override_percent / 100.0;
+    ci.feedhold = ci.feedhold || hc.feedhold;
+    ci.reset = ci.reset || hc.reset;
+    hc.reset = false;
+    channels_[i]->tick(t_s, cycle_s_, ci, out.channels[i], out, ctx);
+  }
+  tick_spindles(t_s, out);
   ++cycles_;
 }
 

@@ -16,11 +16,10 @@ bool is_fixed_m(int m) {
   }
 }
 
-// The spindle M functions belong to the spindle work.
-bool is_spindle_m(int m) { return m == 3 || m == 4 || m == 5 || m == 19 || (m >= 40 && m <= 45); }
-
-// # commands the offset chain executes.
-bool is_offset_command(const nc::HashCommand& h) {
+// # commands this version executes: the offset chain's, #EXPL SYN and
+// #MAIN SPINDLE (whose name mapping the decoder does).
+bool is_executed_command(const nc::HashCommand& h) {
+  if (std::holds_alternative<nc::ExplSyn>(h) || std::holds_alternative<nc::MainSpindle>(h)) return true;
   return std::holds_alternative<nc::CoordSystem>(h) || std::holds_alternative<nc::Ecs>(h) ||
          std::holds_alternative<nc::Mcs>(h) || std::holds_alternative<nc::Rotation>(h) ||
          std::holds_alternative<nc::PSet>(h) || std::holds_alternative<nc::PReset>(h) ||
@@ -31,13 +30,14 @@ bool is_offset_command(const nc::HashCommand& h) {
 }  // namespace
 
 Planner::Planner(const config::Machine& machine, std::size_t channel_index, PlanStore& store,
-                 const PlannerOptions& options)
+                 const PlannerOptions& options, const std::vector<std::int8_t>& spindles)
     : channel_(machine.channels[channel_index]),
       store_(store),
       n_axes_(std::min(channel_.axes.size(), config::kMaxPathAxes)),
       frames_(channel_, channel_index < machine.channel_data.size() ? machine.channel_data[channel_index]
                                                                     : config::ChannelData{},
-              n_axes_, options.clamp_index) {
+              n_axes_, options.clamp_index),
+      spindles_(machine, channel_index, std::vector<int>(spindles.begin(), spindles.end())) {
   for (std::size_t j = 0; j < n_axes_; ++j) {
     const int idx = channel_.axes[j].axis_index;
     const config::AxisConfig ax = idx >= 0 ? machine.axes[static_cast<std::size_t>(idx)] : config::AxisConfig{};
@@ -72,14 +72,24 @@ int Planner::axis_named(const char* name) const {
 
 // Names what the block asks for that this version does not execute yet, or "".
 std::string Planner::unsupported(const nc::Block& b) const {
-  if (b.hash && !is_offset_command(*b.hash))
+  if (b.hash && !is_executed_command(*b.hash))
     return fmt::format("{} is not executed yet", nc::hash_command_name(*b.hash));
-  if (!b.spindles.empty())
-    return fmt::format("spindle function of {} is not executed yet", b.spindles.front().name);
-  for (int m : b.m)
-    if (is_spindle_m(m)) return fmt::format("M{} is not executed yet", m);
-  for (int g : b.g_nonmodal)
-    if (g != 4 && g != 92) return fmt::format("G{} is not executed yet", g);
+  for (const nc::SpindleCommand& s : b.spindles) {
+    if (s.callax || s.putax) return fmt::format("CALLAX/PUTAX of {} are not executed yet", s.name);
+    if (s.feed_link) return fmt::format("FEED_LINK of {} is not executed yet", s.name);
+    if (s.override_speed_fact_pct) return fmt::format("OVERRIDE SPEED_FACT of {} is not executed yet", s.name);
+  }
+  for (int g : b.g_nonmodal) {
+    switch (g) {
+      case 4: case 92: case 112: case 130: case 135: case 136: case 137: case 167:
+        continue;
+      case 74:  // spindle homing runs; homing path axes does not yet
+        if (!b.has_axis_words()) continue;
+        return "homing path axes (G74 X..) is not executed yet";
+      default:
+        return fmt::format("G{} is not executed yet", g);
+    }
+  }
   for (const nc::VariableWrite& w : b.kernel_writes)
     if (w.name.rfind("V.G.NP[", 0) != 0) return fmt::format("writing {} is not executed yet", w.name);
   if (b.dwell_revs) return "a dwell in spindle revolutions (G4 S..) is not executed yet";
@@ -149,6 +159,10 @@ Command Planner::plan(const nc::Block& b, const std::string& file_name) {
                          b.file_id, b.line);
   Command error;
   if (!apply_frames(b, c, error)) return error;
+  auto actions = spindles_.plan(b);
+  if (!actions) return error_command(actions.error().id, actions.error().message, b.file_id, b.line);
+  c.spindle_actions = *actions;
+  c.expl_syn = b.hash && std::holds_alternative<nc::ExplSyn>(*b.hash);
   if (b.program_end) {
     c.kind = CommandKind::end;
     c.end_reason = std::find(b.m.begin(), b.m.end(), 2) != b.m.end() ? EndReason::m2 : EndReason::m30;
@@ -166,8 +180,10 @@ Command Planner::plan(const nc::Block& b, const std::string& file_name) {
   const bool words_are_motion =
       std::find(b.g_nonmodal.begin(), b.g_nonmodal.end(), 92) == b.g_nonmodal.end();
   const bool circle = b.modal.motion == nc::Motion::cw || b.modal.motion == nc::Motion::ccw;
-  if (words_are_motion && (b.has_axis_words() || (circle && (b.ijk[0] || b.ijk[1] || b.ijk[2]))))
+  if (words_are_motion && (b.has_axis_words() || (circle && (b.ijk[0] || b.ijk[1] || b.ijk[2])))) {
+    c.feed_motion = b.modal.motion != nc::Motion::rapid;
     return plan_motion(b, c, file_name);
+  }
   c.kind = CommandKind::nop;
   return c;
 }

@@ -13,6 +13,7 @@
 #include "nck/config/machine.hpp"
 #include "nck/nc/block.hpp"
 #include "nck/kernel/plan_store.hpp"
+#include "spindle_planner.hpp"
 
 namespace nck::kernel {
 
@@ -22,8 +23,9 @@ struct PlannerOptions {
 
 class Planner {
  public:
+  // spindles: the kernel spindle index of each of the channel's spindles.
   Planner(const config::Machine& machine, std::size_t channel_index, PlanStore& store,
-          const PlannerOptions& options);
+          const PlannerOptions& options, const std::vector<std::int8_t>& spindles);
 
   Command plan(const nc::Block& block, const std::string& file_name);
   Command error_command(ErrorId id, std::string message, std::uint16_t file_id,
@@ -50,6 +52,7 @@ class Planner {
   PlanStore& store_;
   std::size_t n_axes_ = 0;
   ChannelFrames frames_;
+  SpindlePlanner spindles_;
   motion::AxisVector pcs_{};  // programmed position (program coordinates)
   motion::AxisVector mcs_{};  // machine position at the end of the last planned block
   std::array<motion::AxisDynamics, config::kMaxPathAxes> feed_dyn_{}, rapid_dyn_{};

@@ -25,6 +25,8 @@ enum class EventKind : std::uint8_t {
   end,        // program end of a channel
 };
 
+inline constexpr std::uint32_t kNoMessage = 0xFFFFFFFFu;
+
 enum class EndReason : std::uint8_t { m30, m2, error, reset, max_time };
 
 // What a plc_out/plc_ack/wait refers to; extended by the spindle work.
@@ -42,13 +44,17 @@ struct Event {
   // warning / error
   ErrorId id{};
   std::uint32_t message_index = 0;  // Kernel::message(), text prepared outside the cycle
+                                    // (kNoMessage: the ID's table text)
   // plc_out / plc_ack / wait
   FunctionKind fn = FunctionKind::none;
   std::int32_t fn_number = 0;       // M3, T5 ...
   double value = 0;                 // S: rpm
   std::uint32_t sync = 0;           // synchronisation type bits
-  std::int8_t spindle = -1;         // index into the channel's spindles, -1 = none
+  std::int8_t spindle = -1;         // kernel spindle index (Kernel::spindle_name), -1 = none
   std::uint8_t wait_reason = 0;     // WaitReason
+  // spindle / gear
+  std::uint8_t spindle_mode = 0;    // spindle::SpindleMode
+  std::uint32_t gear = 0;           // gear stage 1..6
   // end
   EndReason end_reason = EndReason::m30;
 };

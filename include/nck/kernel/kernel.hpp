@@ -16,10 +16,14 @@
 #include "nck/core/diagnostic.hpp"
 #include "nck/kernel/tick_io.hpp"
 #include "nck/nc/block.hpp"
+#include "nck/plc/scenario.hpp"
+#include "nck/spindle/spindle_status.hpp"
 
 namespace nck::kernel {
 
 class Channel;
+struct SpindleUnit;
+struct KernelPlc;
 struct PlanStore;
 struct OffsetPayload;
 
@@ -49,6 +53,13 @@ class Kernel {
                                             const KernelOptions& options = {});
 
   std::size_t channel_count() const;
+  // The machine's spindles (a spindle shared by channels is one), in the
+  // order of plc::build_spindle_map.
+  std::size_t spindle_count() const;
+  const std::string& spindle_name(std::size_t index) const;
+  const spindle::SpindleStatus& spindle_status(std::size_t index) const;
+  // setup: a PLC scenario (--plc); it must stay alive while the kernel runs.
+  void load_scenario(const plc::Scenario& scenario);
   double cycle_time_s() const { return cycle_s_; }
 
   // setup side (not real-time) -------------------------------------------
@@ -79,7 +90,14 @@ class Kernel {
   double time_s() const noexcept { return static_cast<double>(cycles_ * cycle_us_) / 1e6; }
 
  private:
+  void tick_plc(double t_s, TickOutput& out) noexcept;
+  void tick_external_commands(double t_s, TickOutput& out) noexcept;
+  void tick_spindles(double t_s, TickOutput& out) noexcept;
+
   std::unique_ptr<const config::Machine> machine_;  // own copy: channels refer into it
+  std::vector<SpindleUnit> spindles_;
+  std::vector<std::string> spindle_names_;
+  std::unique_ptr<KernelPlc> plc_;
   std::vector<std::unique_ptr<Channel>> channels_;
   std::unique_ptr<PlanStore> store_;
   double cycle_s_ = 0.001;

@@ -29,9 +29,19 @@ struct ChannelOutput {
   ChannelStatus status = ChannelStatus::idle;
 };
 
+inline constexpr std::size_t kMaxMachineSpindles = 32;
+
+struct SpindleOutput {
+  double set_rpm = 0;       // signed set-point speed
+  double set_pos_deg = 0;   // set-point position in the modulo range
+  double act_rpm = 0;       // simulated actual speed
+  double drive_output = 0;  // speed command in drive units (antr.v_reso_*)
+};
+
 struct TickOutput {
   double t_s = 0;  // start of the cycle just computed
   std::array<ChannelOutput, config::kMaxChannels> channels{};
+  std::array<SpindleOutput, kMaxMachineSpindles> spindles{};  // by kernel spindle index
   FixedVector<Event, kMaxEventsPerTick> events;
   std::uint32_t events_dropped = 0;  // events that did not fit this cycle
 };

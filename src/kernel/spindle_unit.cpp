@@ -1,0 +1,103 @@
+#include "spindle_unit.hpp"
+
+#include <cmath>
+
+namespace nck::kernel {
+namespace {
+
+void push(TickOutput& out, const Event& e) noexcept {
+  if (!out.events.push_back(e)) ++out.events_dropped;
+}
+
+Event spindle_event(const SpindleUnit& u, std::int8_t index, double t_s, EventKind k) noexcept {
+  Event e;
+  e.t_s = t_s;
+  e.channel = u.channel;
+  e.kind = k;
+  e.spindle = index;
+  return e;
+}
+
+}  // namespace
+
+void report_spindle_changes(SpindleUnit& u, std::int8_t index, double t_s, TickOutput& out) noexcept {
+  const spindle::SpindleStatus& s = u.axis.status();
+  if (s.mode != u.last_mode || s.cmd_rpm != u.last_cmd_rpm) {
+    Event e = spindle_event(u, index, t_s, EventKind::spindle);
+    e.spindle_mode = static_cast<std::uint8_t>(s.mode);
+    e.value = s.cmd_rpm;
+    e.gear = s.gear_stage;
+    push(out, e);
+    u.last_mode = s.mode;
+    u.last_cmd_rpm = s.cmd_rpm;
+  }
+  const bool reached = s.mode == spindle::SpindleMode::rotate && s.cmd_rpm != 0 && s.speed_reached;
+  if (reached && !u.last_speed_reached) {
+    Event e = spindle_event(u, index, t_s, EventKind::speed_reached);
+    e.value = s.act_rpm;
+    push(out, e);
+  }
+  u.last_speed_reached = reached;
+  if (s.error != ErrorId{} && s.error != u.last_error) {
+    Event e = spindle_event(u, index, t_s, EventKind::error);
+    e.id = s.error;
+    e.message_index = kNoMessage;
+    push(out, e);
+  }
+  u.last_error = s.error;
+}
+
+void advance_gear_job(SpindleUnit& u, std::int8_t index, plc::PlcSim& plc, double t_s,
+                      TickOutput& out) noexcept {
+  const std::int32_t m = static_cast<std::int32_t>(39 + u.gear_stage);  // stage 1 = M40
+  if (u.gear_job == GearJob::approaching && u.axis.status().gear_change_ready) {
+    plc::TechOutput o;
+    o.kind = plc::TechKind::m;
+    o.number = m;
+    o.channel = u.channel;
+    o.spindle = u.channel_index;
+    o.sync = config::sync::MVS_SVS;
+    u.gear_handle = plc.submit(o, t_s);
+    Event e = spindle_event(u, index, t_s, EventKind::plc_out);
+    e.fn = FunctionKind::m;
+    e.fn_number = m;
+    e.sync = config::sync::MVS_SVS;
+    push(out, e);
+    u.gear_job = GearJob::shifting;
+  } else if (u.gear_job == GearJob::shifting && u.gear_acked) {
+    (void)u.axis.finish_gear_change();
+    Event e = spindle_event(u, index, t_s, EventKind::gear);
+    e.gear = u.gear_stage;
+    e.fn = FunctionKind::m;
+    e.fn_number = m;
+    push(out, e);
+    u.last_gear = u.gear_stage;
+    u.gear_job = GearJob::done;
+  }
+}
+
+void fill_hli_status(const SpindleUnit& u, plc::SpindleStatus& h) noexcept {
+  const spindle::SpindleStatus& s = u.axis.status();
+  using spindle::SpindleMode;
+  namespace bits = plc::spindle_mode;
+  switch (s.mode) {
+    case SpindleMode::rotate: h.mode_bits = s.cmd_rpm < 0 ? bits::M04 : bits::M03; break;
+    case SpindleMode::position: h.mode_bits = bits::M19; break;
+    case SpindleMode::homing: h.mode_bits = bits::HOMING; break;
+    default: h.mode_bits = bits::M05; break;
+  }
+  h.nominal_rpm = s.set_rpm;
+  h.actual_rpm = s.act_rpm;
+  h.programmed_rpm = s.programmed_rpm;
+  h.target_pos_deg = s.target_pos_deg;
+  h.actual_pos_deg = s.act_pos_deg;
+  h.distance_to_go_deg = s.distance_to_go_deg;
+  h.gear_stage = static_cast<std::uint8_t>(s.gear_stage);
+  h.speed_monitoring_active = s.mode == SpindleMode::rotate;
+  h.speed_reached = s.speed_reached;
+  h.stopped = s.standstill;
+  h.monitoring_invalid = s.reference_lost;
+  h.job_error = s.error != ErrorId{};
+}
+
+}  // namespace nck::kernel

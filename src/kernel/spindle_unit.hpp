@@ -1,0 +1,52 @@
+#pragma once
+// One spindle of the machine as the kernel runs it: the interpolator, what
+// the channels' events need to notice changes, and the gear-change job
+// (approach the change position, let the PLC shift, take the new data).
+// A spindle known to several channels is one unit.
+#include <cstdint>
+
+#include "nck/kernel/tick_io.hpp"
+#include "nck/plc/hli.hpp"
+#include "nck/plc/plc_sim.hpp"
+#include "nck/spindle/spindle_axis.hpp"
+
+namespace nck::kernel {
+
+enum class GearJob : std::uint8_t { none, approaching, shifting, done };
+
+struct SpindleUnit {
+  spindle::SpindleAxis axis;
+  bool plc_spindle = false;      // commanded over the HLI, acknowledged by the PLC
+  std::uint8_t channel = 1;      // the channel that commanded it last (1-based)
+  std::int8_t channel_index = 0; // its index in that channel's spindle list
+
+  // gear change in progress
+  GearJob gear_job = GearJob::none;
+  std::uint32_t gear_stage = 0;
+  plc::OutputHandle gear_handle = plc::kNoHandle;
+  bool gear_acked = false;
+
+  // external command (HLI) in progress: its sequence number, 0 = none
+  std::uint32_t ext_seq = 0;
+
+  // what was last reported, to emit events on change
+  spindle::SpindleMode last_mode = spindle::SpindleMode::stop;
+  double last_cmd_rpm = 0;
+  bool last_speed_reached = false;
+  std::uint32_t last_gear = 1;
+  ErrorId last_error{};
+};
+
+// Emits spindle / speed_reached / gear / error events for what changed since
+// the last cycle. rt
+void report_spindle_changes(SpindleUnit& u, std::int8_t index, double t_s, TickOutput& out) noexcept;
+
+// Advances a gear change: at the change position the function goes to the
+// PLC; its acknowledgement (gear_acked) finishes the change. rt
+void advance_gear_job(SpindleUnit& u, std::int8_t index, plc::PlcSim& plc, double t_s,
+                      TickOutput& out) noexcept;
+
+// The HLI status object of a spindle. rt
+void fill_hli_status(const SpindleUnit& u, plc::SpindleStatus& s) noexcept;
+
+}  // namespace nck::kernel
