@@ -84,7 +84,10 @@ TEST(ZeroAllocation, CountingHookSeesAllocations) {
 TEST(ZeroAllocation, WholeExamplesRunThroughTickWithoutHeap) {
   const Example examples[] = {
       {"examples/mill", {"examples/mill/contour.nc"}},
+      {"examples/mill", {"examples/mill/offsets.nc"}},
+      {"examples/mill", {"examples/mill/spindle.nc"}},
       {"examples/lathe", {"examples/lathe/turn.nc"}},
+      {"examples/lathe", {"examples/lathe/gears.nc"}},
       {"examples/two-channel", {"examples/two-channel/channel1.nc", "examples/two-channel/channel2.nc"}},
   };
   for (const Example& ex : examples) {

@@ -1,0 +1,235 @@
+// Spindle functions end to end through `nck run`: the seed's examples as
+// events (FCT-S1 2.4.1 override, 2.5.2 synchronisation, 2.8.2 gear change),
+// drive scaling in the trace, and the errors of bad input.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "cli_helpers.hpp"
+
+namespace nck::app {
+namespace {
+
+using namespace testing;
+using nlohmann::json;
+
+// A copy of an example machine with extra lines added before "Ende" of one list.
+std::filesystem::path patched(const std::string& example, const std::string& name,
+                              const std::string& file, const std::string& lines) {
+  const auto dir = temp_dir(name);
+  std::filesystem::copy(root() + "/examples/" + example, dir, std::filesystem::copy_options::recursive);
+  std::string text = read_file(dir / file);
+  const auto ende = text.rfind("Ende");
+  text.insert(ende == std::string::npos ? text.size() : ende, lines + "\n");
+  std::ofstream(dir / file) << text;
+  return dir;
+}
+
+struct RunResult {
+  int exit_code;
+  std::string output;
+  std::vector<json> events;
+  std::filesystem::path dir;
+};
+
+RunResult run(const std::filesystem::path& machine, const std::string& program_text, const std::string& args = "") {
+  RunResult r;
+  r.dir = temp_dir("prog");
+  std::ofstream(r.dir / "p.nc") << program_text;
+  CliResult c = run_nck("run " + machine.string() + " " + (r.dir / "p.nc").string() + " --events " +
+                        (r.dir / "e.jsonl").string() + " " + args);
+  r.exit_code = c.exit_code;
+  r.output = c.output;
+  r.events = read_jsonl(r.dir / "e.jsonl");
+  return r;
+}
+
+std::vector<json> of_kind(const std::vector<json>& events, const std::string& ev) {
+  std::vector<json> out;
+  std::copy_if(events.begin(), events.end(), std::back_inserter(out),
+               [&](const json& e) { return e["ev"] == ev; });
+  return out;
+}
+
+double block_time(const std::vector<json>& events, long n) {
+  for (const json& e : events)
+    if (e["ev"] == "block" && e["n"] == n) return e["t"].get<double>();
+  return -1;
+}
+
+TEST(SpindleScenario, OverrideAndG167FollowTheSeedExample) {
+  const std::string ex = root() + "/examples/mill";
+  const auto dir = temp_dir("ovr");
+  CliResult c = run_nck("run " + ex + " " + ex + "/spindle.nc --plc " + ex + "/spindle.plc --events " +
+                        (dir / "e.jsonl").string());
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  std::vector<double> s1;
+  for (const json& e : read_jsonl(dir / "e.jsonl"))
+    if (e["ev"] == "spindle" && e["spindle"] == "S1" && e["mode"] == "rotate") s1.push_back(e["rpm"]);
+  // 50 % override: 1000 -> 500; G167: 1000; the next speed 3000 -> 1500.
+  ASSERT_GE(s1.size(), 3u);
+  EXPECT_DOUBLE_EQ(s1[0], 500.0);
+  EXPECT_DOUBLE_EQ(s1[1], 1000.0);
+  EXPECT_DOUBLE_EQ(s1[2], 1500.0);
+}
+
+// FCT-S1 2.5.2: s_synch MVS_SVS, m3_synch MOS.
+std::filesystem::path sync_example_machine(const std::string& name) {
+  return patched("mill", name, "channel1.lis",
+                 "spindel[0].s_synch MVS_SVS\nspindel[0].m3_synch MOS\n");
+}
+
+TEST(SpindleScenario, SeedSyncExample1PathDoesNotWaitBecauseOfM3) {
+  RunResult r = run(sync_example_machine("sync1"),
+              "%s\nN10 X0 Y0 G0\nN20 X40 Y40 G1 F1500 M3 S500\nN30 M3 S100 X0 Y0\nN40 M30\n");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(of_kind(r.events, "wait").empty());  // M3 (MOS) decides over S: no wait
+  // N30 starts when N20's motion ends, not when the spindle reaches 500 rpm.
+  const double n20 = block_time(r.events, 20), n30 = block_time(r.events, 30);
+  const double travel_s = std::hypot(40.0, 40.0) / (1500.0 / 60.0);
+  EXPECT_NEAR(n30 - n20, travel_s, 0.05);
+}
+
+TEST(SpindleScenario, SeedSyncExample2PathWaitsForSpeedReached) {
+  RunResult r = run(sync_example_machine("sync2"),
+              "%s\nN5 S200\nN10 M3 X0 Y0 G0\nN20 X40 Y40 G1 F1500 S500\nN30 S100 X0 Y0\nN40 M30\n");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::vector<long> waited;
+  for (const json& e : of_kind(r.events, "wait")) {
+    EXPECT_EQ(e["reason"], "speed_reached");
+    EXPECT_EQ(e["spindle"], "S1");
+    waited.push_back(e["line"].get<long>());
+  }
+  EXPECT_EQ(waited, (std::vector<long>{4, 5}));  // N20 and N30, before their motion
+  // The motion of N20 starts only after speed reached.
+  double reached = -1;
+  for (const json& e : of_kind(r.events, "wait_end"))
+    if (e["line"] == 4) reached = e["t"].get<double>();
+  ASSERT_GT(reached, 0);
+  EXPECT_GT(block_time(r.events, 30) - reached, std::hypot(40.0, 40.0) / 25.0 - 0.05);
+}
+
+TEST(SpindleScenario, AutomaticGearChangeOnTheLathe) {
+  const std::string ex = root() + "/examples/lathe";
+  const auto dir = temp_dir("gears");
+  CliResult c = run_nck("run " + ex + " " + ex + "/gears.nc --events " + (dir / "e.jsonl").string());
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  const auto events = read_jsonl(dir / "e.jsonl");
+  std::vector<std::string> changes;
+  for (const json& e : of_kind(events, "gear")) changes.push_back(e["fn"]);
+  EXPECT_EQ(changes, (std::vector<std::string>{"M41", "M42"}));  // S700 keeps stage 1
+  // The change waits for the PLC (gear_change_time_ms 800 in sim.lis).
+  double out = -1, ack = -1;
+  for (const json& e : events) {
+    if (e["ev"] == "plc_out" && e["fn"] == "M41") out = e["t"];
+    if (e["ev"] == "plc_ack" && e["fn"] == "M41") ack = e["t"];
+  }
+  EXPECT_NEAR(ack - out, 0.8, 1e-6);
+}
+
+TEST(SpindleScenario, SensorlessSpindleDriveValueFollowsTheSeedScaling) {
+  const std::string ex = root() + "/examples/mill";
+  const auto dir = temp_dir("drive");
+  CliResult c = run_nck("run " + ex + " " + ex + "/spindle.nc --trace " + (dir / "t.csv").string());
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  const auto lines = split(read_file(dir / "t.csv"), '\n');
+  const auto header = split(lines[0], ',');
+  const auto rpm = std::find(header.begin(), header.end(), "S2.rpm") - header.begin();
+  const auto drive = std::find(header.begin(), header.end(), "S2.drive") - header.begin();
+  ASSERT_LT(static_cast<std::size_t>(drive), header.size());
+  bool seen = false;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const auto c2 = split(lines[i], ',');
+    if (std::stod(c2[static_cast<std::size_t>(rpm)]) == -3000.0) {
+      EXPECT_EQ(c2[static_cast<std::size_t>(drive)], "-32767");  // 3000 rpm <-> 32767
+      seen = true;
+    }
+  }
+  EXPECT_TRUE(seen);
+}
+
+TEST(SpindleScenario, SilentPlcEndsInATimeoutNotAHang) {
+  const auto dir = temp_dir("silent");
+  std::ofstream(dir / "silent.plc") << "0 silent on\n";
+  RunResult r = run(root() + "/examples/mill", "%s\nN10 S1000 M3\nN20 G1 X10 F1000\nN30 M30\n",
+              "--plc " + (dir / "silent.plc").string() + " --max-time 60");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  const auto errors = of_kind(r.events, "error");
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0]["id"], 960021);
+  EXPECT_EQ(errors[0]["line"], 2);  // N10: its M3 waits for the PLC before any motion
+  EXPECT_NEAR(errors[0]["t"].get<double>(), 2.0, 0.01);  // m3_prozess_zeit 2 s
+}
+
+TEST(SpindleScenario, BadSpindleInputIsAnNcErrorWithItsLine) {
+  const std::string mill = root() + "/examples/mill";
+  struct Case {
+    const char* program;
+    std::uint32_t id;
+    int line;
+  } cases[] = {
+      {"%s\nN10 M19 S.POS=90\nN20 M30\n", 930101, 2},        // M19 without speed
+      {"%s\nN10 M3\nN20 M30\n", 930100, 2},                   // M3 without speed
+      {"%s\nN10 S9[M3 REV100]\nN20 M30\n", 0, 2},             // unknown spindle (decoder)
+      {"%s\nN10 S1000 M3 M4\nN20 M30\n", 0, 2},               // conflicting M functions
+      {"%s\nN10 S2[M19 REV100 POS10]\nN20 M30\n", 70252, 2},  // sensorless S2 cannot position
+  };
+  for (const Case& c : cases) {
+    RunResult r = run(mill, c.program);
+    EXPECT_EQ(r.exit_code, 1) << c.program << r.output;
+    const auto errors = of_kind(r.events, "error");
+    ASSERT_FALSE(errors.empty()) << c.program;
+    if (c.id != 0) {
+      EXPECT_EQ(errors[0]["id"], c.id) << c.program;
+    }
+    EXPECT_EQ(errors[0]["line"], c.line) << c.program;
+    EXPECT_EQ(r.events.back()["ev"], "end");
+  }
+}
+
+TEST(SpindleScenario, PreferredDirectionRejectsTheOtherOne) {
+  const auto m = patched("mill", "pref", "s1.lis", "kenngr.vorz_richtung 1\nkenngr.beweg_richt 1\n");
+  RunResult ok = run(m, "%s\nN10 S500 M3\nN20 M30\n");
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+  RunResult bad = run(m, "%s\nN10 S500 M4\nN20 M30\n");
+  EXPECT_EQ(bad.exit_code, 1);
+  const auto errors = of_kind(bad.events, "error");
+  ASSERT_FALSE(errors.empty());
+  EXPECT_EQ(errors[0]["id"], 60254);
+}
+
+TEST(SpindleScenario, ProgramEndKeepsRotationUnlessThePlcSaysStop) {
+  const auto dir = temp_dir("end");
+  std::ofstream(dir / "stop.plc") << "0 spindle_stop_at_end on S1\n";
+  const std::string prog = "%s\nN10 S800 M3\nN20 G4 X0.5\nN30 M30\n";
+  RunResult keep = run(root() + "/examples/mill", prog, "--final " + (dir / "keep.json").string());
+  ASSERT_EQ(keep.exit_code, 0) << keep.output;
+  EXPECT_EQ(json::parse(read_file(dir / "keep.json"))["spindles"]["S1"]["mode"], "rotate");
+  RunResult stop = run(root() + "/examples/mill", prog,
+                 "--plc " + (dir / "stop.plc").string() + " --final " + (dir / "stop.json").string());
+  ASSERT_EQ(stop.exit_code, 0) << stop.output;
+  EXPECT_EQ(json::parse(read_file(dir / "stop.json"))["spindles"]["S1"]["mode"], "stop");
+}
+
+TEST(FitCurve, ReproducesTheSeedCoefficients) {
+  const std::string pts = " --n-grenz 12000 --a-konst 16000 --point 24000,8000 --point 36000,4000 --point 48000,2000";
+  CliResult poly = run_nck("fit-curve polynomial" + pts);
+  ASSERT_EQ(poly.exit_code, 0) << poly.output;
+  auto value = [](const std::string& out, const std::string& key) {
+    const auto p = out.find(key + " ");
+    return p == std::string::npos ? 0.0 : std::stod(out.substr(p + key.size() + 1));
+  };
+  EXPECT_NEAR(value(poly.output, "b3"), -1.92901234E-10, 1e-18);
+  EXPECT_NEAR(value(poly.output, "b2"), 2.08333333E-5, 1e-13);
+  EXPECT_NEAR(value(poly.output, "b1"), -0.88888888, 1e-8);
+  CliResult hyp = run_nck("fit-curve hyperbola --n-grenz 12000 --a-konst 16000 --point 24000,8000 --point 36000,4000");
+  ASSERT_EQ(hyp.exit_code, 0) << hyp.output;
+  EXPECT_NEAR(value(hyp.output, "b2"), 0.4166666, 1e-6);
+  EXPECT_NEAR(value(hyp.output, "b3"), 0.02857142, 1e-7);
+  EXPECT_NEAR(value(hyp.output, "b1"), 22857.14, 0.01);
+  EXPECT_EQ(run_nck("fit-curve polynomial --n-grenz 12000 --a-konst 16000 --point x").exit_code, 2);
+}
+
+}  // namespace
+}  // namespace nck::app
