@@ -38,7 +38,11 @@ class Channel {
           const PlannerOptions& options, std::vector<std::int8_t> spindles);
 
   // setup side
-  std::size_t queue_space() const { return queue_.capacity() - queue_.size(); }
+  // Blocks that fit: one block may plan into up to 4 commands (G74 homing).
+  std::size_t queue_space() const {
+    const std::size_t free = queue_.capacity() - queue_.size();
+    return free >= 4 ? free - 3 : 0;
+  }
   bool push(const Command& c) { return queue_.push(c); }
   Planner& planner() { return planner_; }
   const Planner& planner() const { return planner_; }

@@ -44,6 +44,8 @@ class ChannelFrames {
 
   // Axis j (channel index) is programmed absolutely: pending offsets act.
   void commit_axis(std::size_t j);
+  // G74 homed axis j: its #PSET preset is cleared.
+  void preset_axis(std::size_t j) { (void)chain_.preset(to_chain_[j]); }
   motion::AxisVector to_mcs(const motion::AxisVector& pcs, frames::SuppressMask m) const;
   motion::AxisVector to_pcs(const motion::AxisVector& mcs,
                             frames::SuppressMask m = frames::SuppressMask::none()) const;

@@ -75,7 +75,7 @@ std::size_t Kernel::queue_space(std::size_t ch) const { return channels_.at(ch)-
 
 void Kernel::push_block(std::size_t ch, const nc::Block& block, const std::string& file_name) {
   Channel& c = *channels_.at(ch);
-  c.push(c.planner().plan(block, file_name));
+  for (const Command& cmd : c.planner().plan(block, file_name)) c.push(cmd);
 }
 
 void Kernel::push_error(std::size_t ch, const Diagnostic& d, std::uint16_t file_id) {

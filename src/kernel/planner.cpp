@@ -48,6 +48,7 @@ Planner::Planner(const config::Machine& machine, std::size_t channel_index, Plan
     rapid_dyn_[j] = {std::min(g.vb_eilgang, g.vb_max), a_rapid, a_rapid};
     swe_neg_[j] = ax.swe_neg;
     swe_pos_[j] = ax.swe_pos;
+    ref_pos_[j] = g.pos_refpkt;
   }
   pcs_ = frames_.to_pcs(mcs_);  // the clamp / default zero offset act from the start
 }
@@ -83,9 +84,8 @@ std::string Planner::unsupported(const nc::Block& b) const {
     switch (g) {
       case 4: case 92: case 112: case 130: case 135: case 136: case 137: case 167:
         continue;
-      case 74:  // spindle homing runs; homing path axes does not yet
-        if (!b.has_axis_words()) continue;
-        return "homing path axes (G74 X..) is not executed yet";
+      case 74:
+        continue;
       default:
         return fmt::format("G{} is not executed yet", g);
     }
@@ -144,7 +144,59 @@ bool Planner::apply_frames(const nc::Block& b, Command& c, Command& error) {
   return true;
 }
 
-Command Planner::plan(const nc::Block& b, const std::string& file_name) {
+Planner::Commands Planner::plan(const nc::Block& b, const std::string& file_name) {
+  Commands out;
+  const bool homing = b.has_axis_words() &&
+                      std::find(b.g_nonmodal.begin(), b.g_nonmodal.end(), 74) != b.g_nonmodal.end();
+  Command c = plan_one(b, file_name);
+  if (homing && c.kind == CommandKind::nop) {
+    plan_homing(b, c, out);
+  } else {
+    (void)out.push_back(c);
+  }
+  return out;
+}
+
+// Homing path axes (G74 X<order> Y<order>..): the axes with the same order
+// number move together at rapid to their reference position (pos_refpkt),
+// group after group; the block's other functions go with the first group.
+// Homing clears #PSET of the homed axes.
+void Planner::plan_homing(const nc::Block& b, Command first, Commands& out) {
+  std::array<double, config::kMaxPathAxes> order{};
+  std::vector<double> groups;
+  for (std::size_t j = 0; j < n_axes_; ++j)
+    if (b.axes[j]) {
+      order[j] = *b.axes[j];
+      if (std::find(groups.begin(), groups.end(), order[j]) == groups.end()) groups.push_back(order[j]);
+    }
+  std::sort(groups.begin(), groups.end());
+  if (groups.size() > out.capacity()) groups.resize(out.capacity());
+  Command c = first;
+  for (double g : groups) {
+    motion::AxisVector target = mcs_;
+    for (std::size_t j = 0; j < n_axes_; ++j)
+      if (b.axes[j] && order[j] == g) target[j] = ref_pos_[j];
+    auto seg = motion::make_line(mcs_, target, n_axes_);
+    if (seg && seg->length() > 0) {
+      c.kind = CommandKind::motion;
+      c.segment = *seg;
+      c.mapped = false;
+      c.limits = motion::path_limits(c.segment, std::span<const motion::AxisDynamics>(rapid_dyn_.data(), n_axes_));
+      c.v_cmd_mm_s = c.limits.v_max_mm_s;
+    }
+    mcs_ = target;
+    (void)out.push_back(c);
+    c = Command{};  // the following groups: motion only
+    c.file_id = b.file_id;
+    c.line = b.line;
+    c.emit_block_event = false;
+  }
+  for (std::size_t j = 0; j < n_axes_; ++j)
+    if (b.axes[j]) frames_.preset_axis(j);
+  pcs_ = frames_.to_pcs(mcs_);
+}
+
+Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
   modal_ = b.modal;
   if (std::string why = unsupported(b); !why.empty())
     return error_command(ErrorId::KernelNotYetSupported, why + " in this version of nck",
@@ -177,8 +229,9 @@ Command Planner::plan(const nc::Block& b, const std::string& file_name) {
     c.dwell_s = std::max(0.0, *b.dwell_s);
     return c;
   }
+  // With G92 and G74 the axis words are that function's values.
   const bool words_are_motion =
-      std::find(b.g_nonmodal.begin(), b.g_nonmodal.end(), 92) == b.g_nonmodal.end();
+      std::none_of(b.g_nonmodal.begin(), b.g_nonmodal.end(), [](int g) { return g == 92 || g == 74; });
   const bool circle = b.modal.motion == nc::Motion::cw || b.modal.motion == nc::Motion::ccw;
   if (words_are_motion && (b.has_axis_words() || (circle && (b.ijk[0] || b.ijk[1] || b.ijk[2])))) {
     c.feed_motion = b.modal.motion != nc::Motion::rapid;

@@ -27,7 +27,10 @@ class Planner {
   Planner(const config::Machine& machine, std::size_t channel_index, PlanStore& store,
           const PlannerOptions& options, const std::vector<std::int8_t>& spindles);
 
-  Command plan(const nc::Block& block, const std::string& file_name);
+  // One block becomes one command, or several for G74 homing of path axes
+  // (one per homing order group).
+  using Commands = FixedVector<Command, 4>;
+  Commands plan(const nc::Block& block, const std::string& file_name);
   Command error_command(ErrorId id, std::string message, std::uint16_t file_id,
                         std::uint32_t line);
 
@@ -38,7 +41,9 @@ class Planner {
   const motion::AxisVector& planned_mcs() const { return mcs_; }
 
  private:
+  Command plan_one(const nc::Block& block, const std::string& file_name);
   Command plan_motion(const nc::Block& b, Command c, const std::string& file_name);
+  void plan_homing(const nc::Block& b, Command first, Commands& out);
   std::expected<motion::Segment, Command> arc_segment(const nc::Block& b,
                                                       const motion::AxisVector& start,
                                                       const motion::AxisVector& target,
@@ -57,6 +62,7 @@ class Planner {
   motion::AxisVector mcs_{};  // machine position at the end of the last planned block
   std::array<motion::AxisDynamics, config::kMaxPathAxes> feed_dyn_{}, rapid_dyn_{};
   std::array<double, config::kMaxPathAxes> swe_neg_{}, swe_pos_{};
+  std::array<double, config::kMaxPathAxes> ref_pos_{};  // pos_refpkt: where G74 homes an axis
   nc::ModalState modal_;
 };
 

@@ -212,6 +212,49 @@ TEST(SpindleScenario, ProgramEndKeepsRotationUnlessThePlcSaysStop) {
   EXPECT_EQ(json::parse(read_file(dir / "stop.json"))["spindles"]["S1"]["mode"], "stop");
 }
 
+// FCT-S1 2.7, examples 1-3: spindle homing never holds up the channel.
+double spindle_homing_start(const std::vector<json>& events) {
+  for (const json& e : events)
+    if (e["ev"] == "spindle" && e["spindle"] == "S1" && e["mode"] == "homing") return e["t"];
+  return -1;
+}
+
+TEST(SpindleScenario, HomingExamplesOfTheSeed) {
+  const std::string mill = root() + "/examples/mill";
+  const std::string start = "%h\nN5 G0 X100 Y80 Z10\n";
+  // 1: spindle homing starts with the Y axis (order 1); X (order 2) follows.
+  RunResult one = run(mill, start + "N10 G74 X2 Y1 S1\nN20 G0 X10\nN30 M30\n");
+  ASSERT_EQ(one.exit_code, 0) << one.output;
+  EXPECT_DOUBLE_EQ(spindle_homing_start(one.events), block_time(one.events, 10));
+  // 2: the next block starts at once, X homes while the spindle does.
+  RunResult two = run(mill, start + "N10 G74 S1\nN15 G74 X1 Y2\nN20 G0 X10\nN30 M30\n");
+  ASSERT_EQ(two.exit_code, 0) << two.output;
+  EXPECT_DOUBLE_EQ(block_time(two.events, 15), block_time(two.events, 10));
+  EXPECT_DOUBLE_EQ(spindle_homing_start(two.events), block_time(two.events, 10));
+  // 3: the axes first, then the spindle; the block after it does not wait.
+  RunResult three = run(mill, start + "N10 G74 X1 Y2\nN15 G74 S1\nN20 G0 X10\nN30 M30\n");
+  ASSERT_EQ(three.exit_code, 0) << three.output;
+  EXPECT_GT(block_time(three.events, 15), block_time(three.events, 10) + 0.3);
+  EXPECT_DOUBLE_EQ(spindle_homing_start(three.events), block_time(three.events, 15));
+  EXPECT_DOUBLE_EQ(block_time(three.events, 20), block_time(three.events, 15));
+}
+
+TEST(SpindleScenario, PlcSpindleIsAcknowledgedByThePlc) {
+  const std::string ex = root() + "/examples/two-channel";
+  const auto dir = temp_dir("plcspindle");
+  std::ofstream(dir / "a.nc") << "%a\nN10 S3[M3 REV1000]\nN20 G1 X10 F2000\nN30 M30\n";
+  std::ofstream(dir / "b.nc") << "%b\nN10 G4 X0.1\nN20 M30\n";
+  CliResult c = run_nck("run " + ex + " " + (dir / "a.nc").string() + " " + (dir / "b.nc").string() +
+                        " --events " + (dir / "e.jsonl").string());
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  const auto events = read_jsonl(dir / "e.jsonl");
+  const auto waits = of_kind(events, "wait");
+  ASSERT_EQ(waits.size(), 1u);
+  EXPECT_EQ(waits[0]["reason"], "plc_ack");  // only the PLC acknowledges a PLC spindle
+  EXPECT_EQ(waits[0]["spindle"], "S3");
+  EXPECT_EQ(of_kind(events, "plc_ack").size(), 1u);
+}
+
 TEST(FitCurve, ReproducesTheSeedCoefficients) {
   const std::string pts = " --n-grenz 12000 --a-konst 16000 --point 24000,8000 --point 36000,4000 --point 48000,2000";
   CliResult poly = run_nck("fit-curve polynomial" + pts);
