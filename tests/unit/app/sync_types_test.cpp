@@ -1,0 +1,109 @@
+// Every synchronisation type of FCT-S1 2.5 through `nck run`: the mill's S1
+// gets the type as m3_synch, and the events show when M3 is executed and
+// where the path waits for speed reached.
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "cli_helpers.hpp"
+
+namespace nck::app {
+namespace {
+
+using namespace testing;
+using nlohmann::json;
+
+// N20 moves only 0.5 mm, so the spindle (6000 rpm, about 1.8 s run-up) is
+// still accelerating at every later block.
+constexpr const char* kProgram =
+    "%sync\nN10 G0 X0\nN20 G1 X0.5 F3000 S6000 M3\nN30 G0 X20\nN40 G1 X30\nN50 #EXPL SYN\nN60 M30\n";
+
+struct Timeline {
+  std::map<long, double> block_t;       // N -> start time
+  std::vector<std::pair<long, double>> waits;  // line -> time of each wait event
+  double spindle_start = -1;            // first S1 rotate event
+  bool plc_out = false;
+};
+
+Timeline run_with(const std::string& sync, const std::string& name) {
+  const auto dir = temp_dir(name);
+  std::filesystem::copy(root() + "/examples/mill", dir / "m", std::filesystem::copy_options::recursive);
+  std::string ch = read_file(dir / "m" / "channel1.lis");
+  ch.insert(ch.rfind("Ende"), "spindel[0].m3_synch " + sync + "\n");
+  std::ofstream(dir / "m" / "channel1.lis") << ch;
+  std::ofstream(dir / "p.nc") << kProgram;
+  CliResult r = run_nck("run " + (dir / "m").string() + " " + (dir / "p.nc").string() + " --events " +
+                        (dir / "e.jsonl").string());
+  EXPECT_EQ(r.exit_code, 0) << sync << "\n" << r.output;
+  Timeline tl;
+  for (const json& e : read_jsonl(dir / "e.jsonl")) {
+    if (e["ev"] == "block" && !e["n"].is_null()) tl.block_t[e["n"].get<long>()] = e["t"];
+    if (e["ev"] == "wait") tl.waits.emplace_back(e["line"].get<long>(), e["t"].get<double>());
+    if (e["ev"] == "spindle" && e["mode"] == "rotate" && tl.spindle_start < 0) tl.spindle_start = e["t"];
+    if (e["ev"] == "plc_out" && e["fn"] == "M3") tl.plc_out = true;
+  }
+  return tl;
+}
+
+TEST(SyncTypes, NoSynchDoesNotExecuteTheFunction) {
+  Timeline t = run_with("NO_SYNCH", "nosynch");
+  EXPECT_LT(t.spindle_start, 0);
+  EXPECT_TRUE(t.waits.empty());
+}
+
+TEST(SyncTypes, MosStartsWithoutWaitingAndWithoutOutput) {
+  Timeline t = run_with("MOS", "mos");
+  EXPECT_DOUBLE_EQ(t.spindle_start, t.block_t[20]);
+  EXPECT_TRUE(t.waits.empty());
+  EXPECT_FALSE(t.plc_out);  // NC spindle: only PLC_INFO outputs to the PLC
+}
+
+TEST(SyncTypes, MvsSvsWaitsBeforeTheMotion) {
+  Timeline t = run_with("MVS_SVS", "svs");
+  ASSERT_EQ(t.waits.size(), 1u);
+  EXPECT_EQ(t.waits[0].first, 3);  // line of N20
+  EXPECT_DOUBLE_EQ(t.waits[0].second, t.block_t[20]);
+  EXPECT_GT(t.block_t[30] - t.block_t[20], 1.5);  // run-up, then 0.5 mm
+}
+
+TEST(SyncTypes, MvsSnsOutputsBeforeAndWaitsAfterTheMotion) {
+  Timeline t = run_with("MVS_SNS", "sns");
+  EXPECT_DOUBLE_EQ(t.spindle_start, t.block_t[20]);
+  ASSERT_EQ(t.waits.size(), 1u);
+  EXPECT_GT(t.waits[0].second, t.block_t[20]);  // at the end of N20's motion
+  EXPECT_LT(t.waits[0].second, t.block_t[20] + 0.1);
+  EXPECT_GT(t.block_t[30] - t.block_t[20], 1.5);
+}
+
+TEST(SyncTypes, MnsSnsOutputsAfterTheMotion) {
+  Timeline t = run_with("MNS_SNS", "mns");
+  EXPECT_GT(t.spindle_start, t.block_t[20]);
+  ASSERT_EQ(t.waits.size(), 1u);
+  EXPECT_NEAR(t.waits[0].second, t.spindle_start, 0.0015);  // the wait is checked in the next cycle
+  EXPECT_GT(t.block_t[30] - t.block_t[20], 1.5);
+}
+
+TEST(SyncTypes, MvsSlmWaitsAtTheNextFeedMove) {
+  Timeline t = run_with("MVS_SLM", "slm");
+  EXPECT_DOUBLE_EQ(t.spindle_start, t.block_t[20]);
+  ASSERT_EQ(t.waits.size(), 1u);
+  EXPECT_EQ(t.waits[0].first, 5);  // N40 G1 (N30 is G0: no synchronisation there)
+  EXPECT_LT(t.block_t[30] - t.block_t[20], 0.1);
+}
+
+TEST(SyncTypes, MvsSlpWaitsAtExplSyn) {
+  Timeline t = run_with("MVS_SLP", "slp");
+  EXPECT_DOUBLE_EQ(t.spindle_start, t.block_t[20]);
+  ASSERT_EQ(t.waits.size(), 1u);
+  EXPECT_EQ(t.waits[0].first, 6);  // N50 #EXPL SYN
+}
+
+TEST(SyncTypes, PlcInfoAddsTheAcknowledgement) {
+  Timeline t = run_with("PLC_INFO | MVS_SVS", "plcinfo");
+  EXPECT_TRUE(t.plc_out);
+  ASSERT_EQ(t.waits.size(), 2u);  // first for the PLC, then for speed reached
+  EXPECT_EQ(t.waits[0].first, 3);
+}
+
+}  // namespace
+}  // namespace nck::app
