@@ -106,6 +106,22 @@ std::string Planner::unsupported(const nc::Block& b) const {
   return {};
 }
 
+// A spindle commanded over the channel HLI (plc_control 1) knows only its
+// speed and M3/M4/M5/M19 (FCT-S1 2.2.2.2).
+std::string Planner::plc_control_violation(const nc::Block& b) const {
+  for (const nc::SpindleCommand& s : b.spindles) {
+    const auto sp = std::find_if(channel_.spindles.begin(), channel_.spindles.end(),
+                                 [&](const config::ChannelSpindle& c) { return c.name == s.target; });
+    if (sp == channel_.spindles.end() || !sp->plc_control) continue;
+    if (s.g74 || s.g167 || s.g130_pct || s.g135 || s.g137 || s.g136_pct || s.gear_stage || s.g112_stage ||
+        s.get_dynamic_data || s.default_dynamic_data || !s.user_m.empty() || !s.user_h.empty())
+      return fmt::format("{} is a PLC spindle over the channel interface: only its speed and "
+                         "M3/M4/M5/M19 can be programmed",
+                         sp->name);
+  }
+  return {};
+}
+
 bool Planner::add_outputs(const nc::Block& b, Command& c) {
   for (int m : b.m) {
     if (is_fixed_m(m)) continue;
@@ -211,6 +227,8 @@ Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
                          b.file_id, b.line);
   Command error;
   if (!apply_frames(b, c, error)) return error;
+  if (std::string why = plc_control_violation(b); !why.empty())
+    return error_command(ErrorId::KernelPlcSpindleFunction, why, b.file_id, b.line);
   auto actions = spindles_.plan(b);
   if (!actions) return error_command(actions.error().id, actions.error().message, b.file_id, b.line);
   c.spindle_actions = *actions;

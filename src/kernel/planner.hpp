@@ -51,6 +51,7 @@ class Planner {
   bool add_outputs(const nc::Block& b, Command& c);
   bool apply_frames(const nc::Block& b, Command& c, Command& error);
   std::string unsupported(const nc::Block& b) const;
+  std::string plc_control_violation(const nc::Block& b) const;
   int axis_named(const char* name) const;
 
   const config::ChannelConfig& channel_;

@@ -184,7 +184,7 @@ TEST(SpindleScenario, BadSpindleInputIsAnNcErrorWithItsLine) {
       EXPECT_EQ(errors[0]["id"], c.id) << c.program;
     }
     EXPECT_EQ(errors[0]["line"], c.line) << c.program;
-    EXPECT_EQ(r.events.back()["ev"], "end");
+    EXPECT_EQ(of_kind(r.events, "end").size(), 1u);
   }
 }
 
@@ -253,6 +253,72 @@ TEST(SpindleScenario, PlcSpindleIsAcknowledgedByThePlc) {
   EXPECT_EQ(waits[0]["reason"], "plc_ack");  // only the PLC acknowledges a PLC spindle
   EXPECT_EQ(waits[0]["spindle"], "S3");
   EXPECT_EQ(of_kind(events, "plc_ack").size(), 1u);
+}
+
+TEST(SpindleScenario, ToolDynamicsLimitTheNextStart) {
+  // tools.lis: wz[5] gives S1 (log_ax_nr_spdl 4) at most 500 rpm.
+  RunResult r = run(root() + "/examples/mill",
+                    "%t\nN10 D5\nN20 S1000 M3\nN30 M5\nN40 S[DEFAULT_DYNAMIC_DATA]\nN50 S1000 M3\nN60 M30\n");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::vector<double> rpm;
+  for (const json& e : of_kind(r.events, "spindle"))
+    if (e["mode"] == "rotate") rpm.push_back(e["rpm"]);
+  ASSERT_EQ(rpm.size(), 2u);
+  EXPECT_DOUBLE_EQ(rpm[0], 500.0);   // the tool's vb_max
+  EXPECT_DOUBLE_EQ(rpm[1], 1000.0);  // back to the axis data
+}
+
+TEST(SpindleScenario, ResetStopsSpindlesUnlessConfiguredToKeepThem) {
+  const auto dir = temp_dir("reset");
+  std::ofstream(dir / "reset.plc") << "0.5 reset\n";
+  const std::string prog = "%r\nN10 S800 M3\nN20 G4 X2\nN30 M30\n";
+  const std::string args = "--plc " + (dir / "reset.plc").string() + " --final ";
+  RunResult stop = run(root() + "/examples/mill", prog, args + (dir / "a.json").string());
+  EXPECT_EQ(stop.exit_code, 1);
+  ASSERT_EQ(of_kind(stop.events, "end").size(), 1u);
+  EXPECT_EQ(of_kind(stop.events, "end")[0]["reason"], "reset");
+  EXPECT_EQ(json::parse(read_file(dir / "a.json"))["spindles"]["S1"]["mode"], "stop");
+  const auto keep_machine = patched("mill", "keep", "s1.lis", "kenngr.no_stop_by_channel_reset 1");
+  RunResult keep = run(keep_machine, prog, args + (dir / "b.json").string());
+  EXPECT_EQ(keep.exit_code, 1) << keep.output;
+  EXPECT_EQ(json::parse(read_file(dir / "b.json"))["spindles"]["S1"]["mode"], "rotate");
+}
+
+TEST(SpindleScenario, MainSpindleCanBeChanged) {
+  RunResult r = run(root() + "/examples/mill",
+                    "%m\nN10 #MAIN SPINDLE [S2]\nN20 S500 M3\nN30 S1[M3 REV200]\nN40 #MAIN SPINDLE\nN50 S300\nN60 M30\n");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::vector<std::pair<std::string, double>> seen;
+  for (const json& e : of_kind(r.events, "spindle")) seen.emplace_back(e["spindle"], e["rpm"]);
+  ASSERT_GE(seen.size(), 3u);
+  EXPECT_EQ(seen[0], (std::pair<std::string, double>{"S2", 500}));
+  EXPECT_EQ(seen[1], (std::pair<std::string, double>{"S1", 200}));
+  EXPECT_EQ(seen[2], (std::pair<std::string, double>{"S1", 300}));  // S is S1 again
+}
+
+TEST(SpindleScenario, GearErrorsOnTheLathe) {
+  const std::string lathe = root() + "/examples/lathe";
+  RunResult wrong = run(lathe, "%g\nN10 M40 S3000 M3\nN20 M30\n");  // stage 1 covers 20..800
+  EXPECT_EQ(wrong.exit_code, 1) << wrong.output;
+  ASSERT_FALSE(of_kind(wrong.events, "error").empty());
+  EXPECT_EQ(of_kind(wrong.events, "error")[0]["line"], 2);
+  RunResult high = run(lathe, "%g\nN10 S9000 M3\nN20 M30\n");  // no stage covers 9000
+  EXPECT_EQ(high.exit_code, 1) << high.output;
+  ASSERT_FALSE(of_kind(high.events, "error").empty());
+  EXPECT_NE(of_kind(high.events, "error")[0]["id"], of_kind(wrong.events, "error")[0]["id"]);
+}
+
+TEST(SpindleScenario, ChannelPlcSpindleKnowsOnlySpeedAndSpindleM) {
+  const auto m = patched("mill", "plcctl", "channel1.lis",
+                         "spdl_anzahl 3\nspindel[2].bezeichnung S3\nspindel[2].log_achs_nr 9\n"
+                         "spindel[2].plc_control 1\n");
+  RunResult ok = run(m, "%p\nN10 S3[M3 REV700]\nN20 S3[M19 REV100 POS10]\nN30 M30\n");
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+  EXPECT_EQ(of_kind(ok.events, "plc_out").size(), 2u);
+  RunResult bad = run(m, "%p\nN10 S3[G74]\nN20 M30\n");
+  EXPECT_EQ(bad.exit_code, 1);
+  ASSERT_FALSE(of_kind(bad.events, "error").empty());
+  EXPECT_EQ(of_kind(bad.events, "error")[0]["id"], 930013);
 }
 
 TEST(FitCurve, ReproducesTheSeedCoefficients) {
