@@ -107,3 +107,38 @@ TEST(SyncTypes, PlcInfoAddsTheAcknowledgement) {
 
 }  // namespace
 }  // namespace nck::app
+
+namespace nck::app {
+namespace {
+
+using namespace testing;
+using nlohmann::json;
+
+// Channel M functions synchronise by m_synch[n] (mill: M6 MVS_SVS with a
+// 1.5 s acknowledgement in sim.lis, M8 MOS, M10 PLC_INFO MVS_SNS).
+TEST(SyncTypes, ChannelMFunctionsFollowTheirMSynch) {
+  const auto dir = temp_dir("msynch");
+  std::ofstream(dir / "p.nc") << "%m\nN10 M6 G1 X1 F600\nN20 M8 X2\nN30 M10 X3\nN40 M30\n";
+  CliResult r = run_nck("run " + root() + "/examples/mill " + (dir / "p.nc").string() + " --events " +
+                        (dir / "e.jsonl").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::map<std::string, double> out_t, ack_t, wait_t;
+  std::map<long, double> block_t;
+  for (const json& e : read_jsonl(dir / "e.jsonl")) {
+    const std::string ev = e["ev"];
+    if (ev == "plc_out") out_t[e["fn"]] = e["t"];
+    if (ev == "plc_ack") ack_t[e["fn"]] = e["t"];
+    if (ev == "wait") wait_t[e["fn"]] = e["t"];
+    if (ev == "block") block_t[e["n"].get<long>()] = e["t"];
+  }
+  EXPECT_NEAR(ack_t["M6"] - out_t["M6"], 1.5, 1e-9);       // m_ack_delay_ms[6]
+  EXPECT_DOUBLE_EQ(wait_t["M6"], block_t[10]);             // before the motion
+  EXPECT_GE(block_t[20] - block_t[10], 1.5);
+  EXPECT_EQ(wait_t.count("M8"), 0u);                       // MOS: no wait
+  EXPECT_DOUBLE_EQ(out_t["M10"], block_t[30]);             // output before the motion ...
+  EXPECT_GT(ack_t["M10"], out_t["M10"]);
+  EXPECT_GE(block_t[40], ack_t["M10"]);                    // ... synchronised after it
+}
+
+}  // namespace
+}  // namespace nck::app
