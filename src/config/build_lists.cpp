@@ -102,6 +102,8 @@ SimConfig build_sim(const ParamList& l) {
                                 : SensorFault::none;
   s.fault_time_s = l.num("sensor.fault_time_ms", s.fault_time_s);
   s.fault_value_mm = l.num("sensor.fault_value", s.fault_value_mm);
+  s.probe_axis = l.text("probe.axis", s.probe_axis);
+  s.probe_position_mm = l.num("probe.position", s.probe_position_mm);
   return s;
 }
 

@@ -52,6 +52,8 @@ constexpr ParamInfo kTable[] = {
     {"sensor.fault", "nck", M, T::choice, 0, 0, 0, 1, "—", "—", "Sensor fault injected at fault_time_ms.", {}, "NONE DROPOUT JUMP FREEZE", "NONE"},
     {"sensor.fault_time_ms", "nck", M, T::real, 0, 1e9, 0, 1e-3, "ms", "s", "Simulated time at which the fault starts."},
     {"sensor.fault_value", "nck", M, T::integer, kS32Min, kS32, 0, 1e-4, "0.1 µm", "mm", "JUMP size (DROPOUT reads 0, FREEZE holds)."},
+    {"probe.axis", "nck", M, T::string, 0, 16, 0, 1, "—", "—", "Channel axis whose machine position switches the measuring probe (G100); empty: the probe never switches.", {}, {}, ""},
+    {"probe.position", "nck", M, T::integer, kS32Min, kS32, 0, 1e-4, "0.1 µm", "mm", "Machine position of probe.axis at which the probe switches."},
 };
 
 }  // namespace

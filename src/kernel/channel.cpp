@@ -10,6 +10,7 @@ Channel::Channel(const config::Machine& machine, std::size_t index, PlanStore& s
       number_(static_cast<std::uint8_t>(index + 1)),
       n_axes_(planner_.axis_count()) {
   for (std::int8_t s : spindles) (void)spindles_.push_back(s);
+  planner_.set_measurement(&measure_);
 }
 
 void Channel::emit(TickOutput& sink, const Event& e) noexcept {
@@ -91,12 +92,23 @@ void Channel::execute(double dt_s, const ChannelInput& in) noexcept {
   if (current_.kind == CommandKind::motion) {
     const double ovr = in.feedhold ? 0.0 : std::clamp(in.feed_override_pct, 0.0, 100.0) / 100.0;
     const motion::ProfileSample st = profile_.step(dt_s, ovr);
+    const motion::AxisVector before = pos_;
     place(st.s_mm);
     velocity_ = st.v_mm_s;
+    if (current_.measure && probe_switched(before)) {
+      velocity_ = 0;
+      phase_ = Phase::post_wait;
+      return;
+    }
     if (st.finished) {
       place(current_.segment.length());
       velocity_ = 0;
       phase_ = Phase::post_wait;
+      if (current_.measure) {  // the probe never switched: the run ends at its target
+        measure_.triggered = false;
+        measure_.mcs = pos_;
+        ++measure_.count;
+      }
     }
   } else if (current_.kind == CommandKind::dwell) {
     dwell_left_s_ -= dt_s;
@@ -105,6 +117,22 @@ void Channel::execute(double dt_s, const ChannelInput& in) noexcept {
   } else {
     phase_ = Phase::post_wait;
   }
+}
+
+// G100: has the probe axis reached the switching position during this step?
+// Then the axes stop at the switching point and the rest of the path is
+// dropped (measuring type 1).
+bool Channel::probe_switched(const motion::AxisVector& before) noexcept {
+  if (current_.probe_axis < 0) return false;
+  const auto a = static_cast<std::size_t>(current_.probe_axis);
+  const double p = current_.probe_pos_mm, d = pos_[a] - before[a];
+  if (d == 0 || (before[a] - p) * (pos_[a] - p) > 0) return false;
+  const double f = (p - before[a]) / d;
+  for (std::size_t j = 0; j < n_axes_; ++j) pos_[j] = before[j] + f * (pos_[j] - before[j]);
+  measure_.triggered = true;
+  measure_.mcs = pos_;
+  ++measure_.count;
+  return true;
 }
 
 // The set point at path length s: the segment's point, mapped from program

@@ -17,6 +17,7 @@
 #include "nck/motion/path_profile.hpp"
 #include "nck/plc/hli.hpp"
 #include "nck/plc/plc_sim.hpp"
+#include "measure.hpp"
 #include "planner.hpp"
 #include "spindle_unit.hpp"
 
@@ -58,6 +59,8 @@ class Channel {
     return status_ == ChannelStatus::ended || status_ == ChannelStatus::aborted;
   }
   const motion::AxisVector& position() const noexcept { return pos_; }
+  const MeasureResult& measurement() const noexcept { return measure_; }
+  MeasureResult& measurement() noexcept { return measure_; }
   std::uint8_t number() const noexcept { return number_; }
 
  private:
@@ -82,6 +85,7 @@ class Channel {
                ChannelContext& ctx) noexcept;
   void execute(double dt_s, const ChannelInput& in) noexcept;
   void place(double s_mm) noexcept;
+  bool probe_switched(const motion::AxisVector& before) noexcept;
   void complete(double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
   void finish(EndReason reason, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
   void raise(ErrorId id, std::uint32_t message, double t_s, TickOutput& sink,
@@ -116,6 +120,7 @@ class Channel {
   motion::AxisVector pos_{};
   FixedVector<Wait, 24> waits_;  // of the current block
   FixedVector<Wait, 16> late_;   // MVS_SLM / MVS_SLP, carried to a later block
+  MeasureResult measure_{};
 };
 
 }  // namespace nck::kernel

@@ -75,6 +75,20 @@ std::expected<FrameChanges, Diagnostic> ChannelFrames::apply(const nc::Block& b,
   return out;
 }
 
+std::optional<Diagnostic> ChannelFrames::measure_apply(std::size_t j, double factor,
+                                                       std::optional<double> measured_mm,
+                                                       double target_mm, const nc::Block& b) {
+  auto r = chain_.measure_apply(to_chain_[j], factor, measured_mm, target_mm);
+  if (r) return std::nullopt;
+  return frame_diagnostic(r.error(), b, names_, to_channel_.data());
+}
+
+std::optional<Diagnostic> ChannelFrames::measure_clear(std::optional<std::size_t> j, const nc::Block& b) {
+  auto r = chain_.measure_clear(j ? std::optional<int>(to_chain_[*j]) : std::nullopt);
+  if (r) return std::nullopt;
+  return frame_diagnostic(r.error(), b, names_, to_channel_.data());
+}
+
 Result ChannelFrames::apply_words(const nc::Block& b, FrameChanges& out) {
   const double unit = b.modal.inch ? kInchMm : 1.0;
   for (const nc::VariableWrite& w : b.kernel_writes) {

@@ -56,6 +56,10 @@ struct Command {
   FixedVector<Output, 8> outputs;
   FixedVector<SpindleAction, 16> spindle_actions;
   bool feed_motion = false;  // G1/G2/G3: MVS_SLM functions synchronise here
+  // G100: the motion stops where the probe switches (probe_axis reaches probe_pos_mm)
+  bool measure = false;
+  std::int8_t probe_axis = -1;
+  double probe_pos_mm = 0;
   bool expl_syn = false;     // #EXPL SYN: MVS_SLP functions synchronise here
   // offset events (PlanStore::offsets) and warnings raised with the block
   FixedVector<std::uint32_t, 6> offset_events;

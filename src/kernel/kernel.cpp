@@ -89,6 +89,14 @@ void Kernel::push_end_without_m30(std::size_t ch, std::uint16_t file_id, std::ui
                                    "the program has no M30 (or M2) at its end", file_id, line));
 }
 
+std::uint64_t Kernel::measure_count(std::size_t ch) const {
+  return channels_.at(ch)->measurement().count;
+}
+
+std::vector<std::pair<std::string, double>> Kernel::take_measurement(std::size_t ch) {
+  return channels_.at(ch)->planner().take_measurement();
+}
+
 const std::string& Kernel::message(std::uint32_t index) const {
   static const std::string none;
   return store_ && index < store_->messages.size() ? store_->messages[index] : none;

@@ -49,6 +49,10 @@ Planner::Planner(const config::Machine& machine, std::size_t channel_index, Plan
     swe_neg_[j] = ax.swe_neg;
     swe_pos_[j] = ax.swe_pos;
     ref_pos_[j] = g.pos_refpkt;
+    if (!machine.sim.probe_axis.empty() && channel_.axes[j].name == machine.sim.probe_axis) {
+      probe_axis_ = static_cast<std::int8_t>(j);
+      probe_pos_mm_ = machine.sim.probe_position_mm;
+    }
   }
   pcs_ = frames_.to_pcs(mcs_);  // the clamp / default zero offset act from the start
 }
@@ -82,7 +86,7 @@ std::string Planner::unsupported(const nc::Block& b) const {
   }
   for (int g : b.g_nonmodal) {
     switch (g) {
-      case 4: case 92: case 112: case 130: case 135: case 136: case 137: case 167:
+      case 4: case 92: case 100: case 101: case 102: case 112: case 130: case 135: case 136: case 137: case 167:
         continue;
       case 74:
         continue;
@@ -227,6 +231,7 @@ Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
                          b.file_id, b.line);
   Command error;
   if (!apply_frames(b, c, error)) return error;
+  if (!apply_measure_offset(b, c, error)) return error;
   if (std::string why = plc_control_violation(b); !why.empty())
     return error_command(ErrorId::KernelPlcSpindleFunction, why, b.file_id, b.line);
   auto actions = spindles_.plan(b);
@@ -247,9 +252,12 @@ Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
     c.dwell_s = std::max(0.0, *b.dwell_s);
     return c;
   }
-  // With G92 and G74 the axis words are that function's values.
-  const bool words_are_motion =
-      std::none_of(b.g_nonmodal.begin(), b.g_nonmodal.end(), [](int g) { return g == 92 || g == 74; });
+  if (std::find(b.g_nonmodal.begin(), b.g_nonmodal.end(), 100) != b.g_nonmodal.end())
+    return plan_measuring_run(b, c, file_name);
+  // With G92, G74, G101 and G102 the axis words are that function's values.
+  const bool words_are_motion = std::none_of(b.g_nonmodal.begin(), b.g_nonmodal.end(), [](int g) {
+    return g == 92 || g == 74 || g == 101 || g == 102;
+  });
   const bool circle = b.modal.motion == nc::Motion::cw || b.modal.motion == nc::Motion::ccw;
   if (words_are_motion && (b.has_axis_words() || (circle && (b.ijk[0] || b.ijk[1] || b.ijk[2])))) {
     c.feed_motion = b.modal.motion != nc::Motion::rapid;

@@ -13,6 +13,7 @@
 #include "nck/config/machine.hpp"
 #include "nck/nc/block.hpp"
 #include "nck/kernel/plan_store.hpp"
+#include "measure.hpp"
 #include "spindle_planner.hpp"
 
 namespace nck::kernel {
@@ -39,10 +40,18 @@ class Planner {
   const ChannelFrames& frames() const { return frames_; }
   // Where the machine axes stand when everything planned so far has run.
   const motion::AxisVector& planned_mcs() const { return mcs_; }
+  // The channel's G100 result, which G101 reads.
+  void set_measurement(MeasureResult* m) { measure_ = m; }
+  // After a G100 run (the caller held further blocks back until it ended):
+  // planning goes on from where the axes stopped; fills the result's program
+  // coordinates and returns the decoder's V.A.MESS/MERF/MOFFS variables.
+  std::vector<std::pair<std::string, double>> take_measurement();
 
  private:
   Command plan_one(const nc::Block& block, const std::string& file_name);
   Command plan_motion(const nc::Block& b, Command c, const std::string& file_name);
+  Command plan_measuring_run(const nc::Block& b, Command c, const std::string& file_name);
+  bool apply_measure_offset(const nc::Block& b, Command& c, Command& error);
   void plan_homing(const nc::Block& b, Command first, Commands& out);
   std::expected<motion::Segment, Command> arc_segment(const nc::Block& b,
                                                       const motion::AxisVector& start,
@@ -65,6 +74,10 @@ class Planner {
   std::array<double, config::kMaxPathAxes> swe_neg_{}, swe_pos_{};
   std::array<double, config::kMaxPathAxes> ref_pos_{};  // pos_refpkt: where G74 homes an axis
   nc::ModalState modal_;
+  MeasureResult* measure_ = nullptr;
+  motion::AxisVector measure_target_pcs_{};
+  std::int8_t probe_axis_ = -1;
+  double probe_pos_mm_ = 0;
 };
 
 }  // namespace nck::kernel

@@ -300,6 +300,10 @@ struct SimConfig {
   SensorFault fault = SensorFault::none;      // sensor.fault
   double fault_time_s = 0;                    // sensor.fault_time_ms
   double fault_value_mm = 0;                  // sensor.fault_value
+  // Measuring probe (G100): it switches when this channel axis reaches this
+  // machine position; no axis = it never switches.
+  std::string probe_axis;                     // probe.axis
+  double probe_position_mm = 0;               // probe.position
 };
 
 struct Machine {

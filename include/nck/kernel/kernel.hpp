@@ -74,6 +74,12 @@ class Kernel {
   void push_error(std::size_t ch, const Diagnostic& d, std::uint16_t file_id);
   // The decoder reached the end of the program without M2/M30.
   void push_end_without_m30(std::size_t ch, std::uint16_t file_id, std::uint32_t line);
+  // G100 measuring runs that channel ch has finished.
+  std::uint64_t measure_count(std::size_t ch) const;
+  // After a G100 run ended (the caller held the channel's later blocks back
+  // until then): planning goes on from where the axes stopped. Returns the
+  // measuring variables for the decoder (V.A.MESS/MERF/MOFFS.<axis>).
+  std::vector<std::pair<std::string, double>> take_measurement(std::size_t ch);
   // Text of an event's message_index (error, warning).
   const std::string& message(std::uint32_t index) const;
   // Kind and per-axis values of an offset event's message_index.

@@ -84,3 +84,69 @@ TEST(OffsetsScenario, ClampIndexShiftsEveryPathAxisFromTheStart) {
 
 }  // namespace
 }  // namespace nck::app
+
+namespace nck::app {
+namespace {
+
+using namespace testing;
+using nlohmann::json;
+
+// Z set points at the start of each N (the end of what came before).
+std::map<long, double> z_at_blocks(const std::filesystem::path& dir) {
+  std::map<long, double> z_by_ms;
+  const auto lines = split(read_file(dir / "t.csv"), '\n');
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const auto c = split(lines[i], ',');
+    z_by_ms[std::lround(std::stod(c[0]) * 1000)] = std::stod(c[3]);
+  }
+  std::map<long, double> out;
+  for (const json& e : read_jsonl(dir / "e.jsonl"))
+    if (e["ev"] == "block" && !e["n"].is_null()) {
+      const long ms = std::lround(e["t"].get<double>() * 1000);
+      out[e["n"].get<long>()] = ms == 0 ? 0.0 : z_by_ms.at(ms - 1);
+    }
+  return out;
+}
+
+TEST(MeasureScenario, G100StopsAtTheProbeAndG101OffsetsByTheDifference) {
+  const auto dir = temp_dir("measure");
+  const std::string ex = root() + "/examples/mill";
+  CliResult r = run_nck("run " + ex + " " + ex + "/measure.nc --events " + (dir / "e.jsonl").string() +
+                        " --trace " + (dir / "t.csv").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto z = z_at_blocks(dir);
+  EXPECT_NEAR(z.at(20), -100.0, 1e-9);  // G54 Z-150 + D1 100 + PCS -50
+  EXPECT_NEAR(z.at(40), -123.0, 1e-9);  // the probe switched at machine Z -123
+  EXPECT_NEAR(z.at(60), -116.0, 1e-9);  // PCS -73 plus the 7 mm measuring offset
+  bool measure_event = false;
+  for (const json& e : read_jsonl(dir / "e.jsonl"))
+    if (e["ev"] == "offset" && e["kind"] == "measure" && e["values"]["Z"] == 7.0) measure_event = true;
+  EXPECT_TRUE(measure_event);
+}
+
+TEST(MeasureScenario, NoSwitchingMeansMerf0AndTheTargetReached) {
+  const auto dir = temp_dir("nomeasure");
+  std::ofstream(dir / "p.nc") << "%m\nN10 G0 X0 Y0 Z0\nN20 G100 Z-10 F600\nN30 P1 = V.A.MERF.Z\n"
+                                 "$IF P1 == 0\nN40 G0 Z5\n$ENDIF\nN50 M30\n";
+  std::ofstream(dir / "e.jsonl");
+  CliResult r = run_nck("run " + root() + "/examples/mill " + (dir / "p.nc").string() + " --events " +
+                        (dir / "e.jsonl").string() + " --trace " + (dir / "t.csv").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto z = z_at_blocks(dir);
+  EXPECT_NEAR(z.at(40), -10.0, 1e-9);  // reached the target; V.A.MERF.Z = 0 chose N40
+}
+
+TEST(MeasureScenario, G101WithNothingMeasuredIsAnError) {
+  const auto dir = temp_dir("g101");
+  std::ofstream(dir / "p.nc") << "%m\nN10 G0 Z0\nN20 G101 Z1\nN30 M30\n";
+  CliResult r = run_nck("run " + root() + "/examples/mill " + (dir / "p.nc").string() + " --events " +
+                        (dir / "e.jsonl").string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  bool found = false;
+  for (const json& e : read_jsonl(dir / "e.jsonl"))
+    if (e["ev"] == "error" && e["line"] == 3) found = true;
+  EXPECT_TRUE(found) << r.output;
+}
+
+}  // namespace
+}  // namespace nck::app
