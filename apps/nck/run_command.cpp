@@ -2,7 +2,6 @@
 // kernel until every channel ends, and write events, trace and final state.
 #include "run_command.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <optional>
@@ -24,10 +23,10 @@ struct Feed {
   nc::Decoder decoder;
   bool done = false;
   std::size_t diagnostics_seen = 0;
-  // A G100 block holds the next blocks back until its run has ended: they may
-  // read the measured values (V.A.MESS...) and start where the axes stopped.
-  bool measuring = false;
-  std::uint64_t measure_count = 0;
+  // A G100 or #GET MANUAL OFFSETS block holds the next blocks back until it
+  // has run: they may read what it found (V.A.MESS..., V.A.MANUAL_OFFSETS...).
+  bool syncing = false;
+  std::uint64_t sync_count = 0;
 };
 
 struct Outputs {
@@ -54,20 +53,19 @@ void report_new_warnings(Feed& f, std::size_t ch, double t_s, Outputs& out) {
 }
 
 void feed_channel(kernel::Kernel& k, std::size_t ch, Feed& f, double t_s, Outputs& out) {
-  if (f.measuring) {
-    if (k.measure_count(ch) == f.measure_count && !k.channel_done(ch)) return;
-    for (const auto& [name, value] : k.take_measurement(ch)) (void)f.decoder.set_variable(name, value);
-    f.measuring = false;
+  if (f.syncing) {
+    if (k.sync_count(ch) == f.sync_count && !k.channel_done(ch)) return;
+    for (const auto& [name, value] : k.take_sync_values(ch)) (void)f.decoder.set_variable(name, value);
+    f.syncing = false;
   }
-  while (!f.done && !f.measuring && k.queue_space(ch) > 0) {
+  while (!f.done && !f.syncing && k.queue_space(ch) > 0) {
     nc::Decoder::Result r = f.decoder.next();
     report_new_warnings(f, ch, t_s, out);
     if (r.status == nc::Decoder::Status::block) {
-      f.measure_count = k.measure_count(ch);
+      f.sync_count = k.sync_count(ch);
       k.push_block(ch, r.block, f.decoder.file_name(r.block.file_id));
       f.done = r.block.program_end;
-      f.measuring = std::find(r.block.g_nonmodal.begin(), r.block.g_nonmodal.end(), 100) !=
-                    r.block.g_nonmodal.end();
+      f.syncing = kernel::Kernel::needs_sync(r.block);
     } else if (r.status == nc::Decoder::Status::end) {
       k.push_end_without_m30(ch, 0, 0);
       f.done = true;

@@ -82,6 +82,11 @@ void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelConte
     raise(c.error_id, c.message_index, t_s, sink, ctx);
     return;
   }
+  manual_mask_ = (manual_mask_ | c.manual_on) & ~c.manual_off;
+  if (c.get_manual_offsets) {
+    ++manual_fetches_;
+    last_sync_measure_ = false;
+  }
   if (c.feed_motion) take_late_waits(SyncPoint::late_motion);
   if (c.expl_syn) take_late_waits(SyncPoint::late_explicit);
   issue_all(SyncPoint::before, t_s, sink, ctx);
@@ -108,6 +113,7 @@ void Channel::execute(double dt_s, const ChannelInput& in) noexcept {
         measure_.triggered = false;
         measure_.mcs = pos_;
         ++measure_.count;
+        last_sync_measure_ = true;
       }
     }
   } else if (current_.kind == CommandKind::dwell) {
@@ -117,6 +123,17 @@ void Channel::execute(double dt_s, const ChannelInput& in) noexcept {
   } else {
     phase_ = Phase::post_wait;
   }
+}
+
+motion::AxisVector Channel::machine_position() const noexcept {
+  motion::AxisVector m = pos_;
+  for (std::size_t j = 0; j < n_axes_; ++j) m[j] += manual_mm_[j];
+  return m;
+}
+
+void Channel::handwheel(std::int8_t axis, double mm) noexcept {
+  if (axis < 0 || static_cast<std::size_t>(axis) >= n_axes_) return;
+  if ((manual_mask_ >> axis) & 1u) manual_target_mm_[static_cast<std::size_t>(axis)] += mm;
 }
 
 // G100: has the probe axis reached the switching position during this step?
@@ -132,6 +149,7 @@ bool Channel::probe_switched(const motion::AxisVector& before) noexcept {
   measure_.triggered = true;
   measure_.mcs = pos_;
   ++measure_.count;
+  last_sync_measure_ = true;
   return true;
 }
 
@@ -209,7 +227,13 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
       }
     }
   }
-  for (std::size_t j = 0; j < n_axes_; ++j) out.axis_mcs[j] = pos_[j];
+  // The handwheel offset is travelled at a limited speed (docs/decisions.md).
+  const double step = kHandwheelSpeed_mm_s * dt_s;
+  for (std::size_t j = 0; j < n_axes_; ++j) {
+    const double d = manual_target_mm_[j] - manual_mm_[j];
+    manual_mm_[j] += std::clamp(d, -step, step);
+    out.axis_mcs[j] = pos_[j] + manual_mm_[j];
+  }
   out.path_velocity_mm_s = velocity_;
   out.status = status_;
 }

@@ -24,6 +24,7 @@
 namespace nck::kernel {
 
 inline constexpr std::size_t kQueueLength = 64;
+inline constexpr double kHandwheelSpeed_mm_s = 10.0;  // how fast a handwheel offset is travelled
 
 // What a channel reaches besides itself during a cycle.
 struct ChannelContext {
@@ -58,9 +59,17 @@ class Channel {
   bool done() const noexcept {
     return status_ == ChannelStatus::ended || status_ == ChannelStatus::aborted;
   }
+  // The path's set point (what the program commanded) and the machine set
+  // point (plus the handwheel's manual offset).
   const motion::AxisVector& position() const noexcept { return pos_; }
-  const MeasureResult& measurement() const noexcept { return measure_; }
-  MeasureResult& measurement() noexcept { return measure_; }
+  motion::AxisVector machine_position() const noexcept;
+  const motion::AxisVector& manual_offsets() const noexcept { return manual_mm_; }
+  // Points where the decoder must wait for values from execution: finished
+  // G100 runs and executed #GET MANUAL OFFSETS blocks.
+  std::uint64_t sync_count() const noexcept { return measure_.count + manual_fetches_; }
+  bool last_sync_was_measure() const noexcept { return last_sync_measure_; }
+  // A handwheel turned by mm on axis j: moves it while it is in manual mode (G201). rt
+  void handwheel(std::int8_t axis, double mm) noexcept;
   std::uint8_t number() const noexcept { return number_; }
 
  private:
@@ -121,6 +130,11 @@ class Channel {
   FixedVector<Wait, 24> waits_;  // of the current block
   FixedVector<Wait, 16> late_;   // MVS_SLM / MVS_SLP, carried to a later block
   MeasureResult measure_{};
+  std::uint64_t manual_fetches_ = 0;
+  bool last_sync_measure_ = false;
+  std::uint32_t manual_mask_ = 0;     // axes in manual mode (G201)
+  motion::AxisVector manual_mm_{};    // handwheel offset reached so far
+  motion::AxisVector manual_target_mm_{};
 };
 
 }  // namespace nck::kernel

@@ -56,6 +56,9 @@ struct Command {
   FixedVector<Output, 8> outputs;
   FixedVector<SpindleAction, 16> spindle_actions;
   bool feed_motion = false;  // G1/G2/G3: MVS_SLM functions synchronise here
+  // G201 / G202: axes entering / leaving manual (handwheel) mode, bit j = axis j
+  std::uint32_t manual_on = 0, manual_off = 0;
+  bool get_manual_offsets = false;  // #GET MANUAL OFFSETS: the decoder reads them after this block
   // G100: the motion stops where the probe switches (probe_axis reaches probe_pos_mm)
   bool measure = false;
   std::int8_t probe_axis = -1;

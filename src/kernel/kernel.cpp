@@ -1,5 +1,6 @@
 #include "nck/kernel/kernel.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 #include "channel.hpp"
@@ -89,12 +90,20 @@ void Kernel::push_end_without_m30(std::size_t ch, std::uint16_t file_id, std::ui
                                    "the program has no M30 (or M2) at its end", file_id, line));
 }
 
-std::uint64_t Kernel::measure_count(std::size_t ch) const {
-  return channels_.at(ch)->measurement().count;
+bool Kernel::needs_sync(const nc::Block& b) {
+  return std::find(b.g_nonmodal.begin(), b.g_nonmodal.end(), 100) != b.g_nonmodal.end() ||
+         (b.hash && std::holds_alternative<nc::GetManualOffsets>(*b.hash));
 }
 
-std::vector<std::pair<std::string, double>> Kernel::take_measurement(std::size_t ch) {
-  return channels_.at(ch)->planner().take_measurement();
+std::uint64_t Kernel::sync_count(std::size_t ch) const { return channels_.at(ch)->sync_count(); }
+
+std::vector<std::pair<std::string, double>> Kernel::take_sync_values(std::size_t ch) {
+  Channel& c = *channels_.at(ch);
+  if (c.last_sync_was_measure()) return c.planner().take_measurement();
+  std::vector<std::pair<std::string, double>> vars;
+  for (std::size_t j = 0; j < c.planner().axis_count(); ++j)
+    vars.emplace_back("V.A.MANUAL_OFFSETS." + c.planner().frames().axis_name(j), c.manual_offsets()[j]);
+  return vars;
 }
 
 const std::string& Kernel::message(std::uint32_t index) const {
@@ -112,12 +121,18 @@ ChannelSnapshot Kernel::snapshot(std::size_t ch) const {
   ChannelSnapshot s;
   const ChannelFrames& f = c.planner().frames();
   const motion::AxisVector pcs = f.to_pcs(c.position());
+  const motion::AxisVector mcs = c.machine_position();
+  std::vector<std::pair<std::string, double>> manual;
+  bool any_manual = false;
   for (std::size_t j = 0; j < c.planner().axis_count(); ++j) {
-    s.axis_mcs[j] = c.position()[j];
+    s.axis_mcs[j] = mcs[j];
     s.axis_pcs[j] = pcs[j];
+    manual.emplace_back(f.axis_name(j), c.manual_offsets()[j]);
+    any_manual = any_manual || c.manual_offsets()[j] != 0;
   }
   for (const frames::OffsetEntry& e : f.active())
     s.offsets.emplace_back(std::string(frames::to_string(e.kind)), f.values_of(e.kind, false));
+  if (any_manual) s.offsets.emplace_back("manual", std::move(manual));
   s.modal = c.planner().modal();
   s.status = c.status();
   return s;

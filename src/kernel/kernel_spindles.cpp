@@ -28,6 +28,8 @@ void push(TickOutput& out, const Event& e) noexcept {
 void Kernel::tick_plc(double t_s, TickOutput& out) noexcept {
   KernelPlc& p = *plc_;
   for (const plc::ScenarioAction& a : p.player.due(t_s)) {
+    if (a.kind == plc::ActionKind::handwheel && a.channel >= 1 && a.channel <= channels_.size())
+      channels_[a.channel - 1u]->handwheel(a.axis, a.value);
     if (plc::apply(a, p.map, p.hli, p.sim, p.ext) == plc::ApplyResult::ext_queue_full) {
       Event e;
       e.t_s = t_s;

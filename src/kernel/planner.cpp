@@ -19,7 +19,9 @@ bool is_fixed_m(int m) {
 // # commands this version executes: the offset chain's, #EXPL SYN and
 // #MAIN SPINDLE (whose name mapping the decoder does).
 bool is_executed_command(const nc::HashCommand& h) {
-  if (std::holds_alternative<nc::ExplSyn>(h) || std::holds_alternative<nc::MainSpindle>(h)) return true;
+  if (std::holds_alternative<nc::ExplSyn>(h) || std::holds_alternative<nc::MainSpindle>(h) ||
+      std::holds_alternative<nc::GetManualOffsets>(h))
+    return true;
   return std::holds_alternative<nc::CoordSystem>(h) || std::holds_alternative<nc::Ecs>(h) ||
          std::holds_alternative<nc::Mcs>(h) || std::holds_alternative<nc::Rotation>(h) ||
          std::holds_alternative<nc::PSet>(h) || std::holds_alternative<nc::PReset>(h) ||
@@ -106,7 +108,6 @@ std::string Planner::unsupported(const nc::Block& b) const {
   if (m.speed_mode != nc::SpeedMode::g97) return "constant cutting speed G96 is not executed yet";
   if (m.radius_comp != nc::RadiusComp::g40) return "tool radius compensation G41/G42 is not executed yet";
   if (m.diameter) return "diameter programming G51 is not executed yet";
-  if (m.manual_mode) return "manual mode G201 is not executed yet";
   return {};
 }
 
@@ -238,6 +239,14 @@ Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
   if (!actions) return error_command(actions.error().id, actions.error().message, b.file_id, b.line);
   c.spindle_actions = *actions;
   c.expl_syn = b.hash && std::holds_alternative<nc::ExplSyn>(*b.hash);
+  c.get_manual_offsets = b.hash && std::holds_alternative<nc::GetManualOffsets>(*b.hash);
+  if (b.manual_g) {
+    std::uint32_t mask = 0;
+    for (std::size_t j = 0; j < n_axes_; ++j)
+      if (b.axes[j]) mask |= 1u << j;
+    if (*b.manual_g == 201) c.manual_on = mask;
+    else c.manual_off = mask != 0 ? mask : ~0u;  // G202 without axes: all
+  }
   if (b.program_end) {
     c.kind = CommandKind::end;
     c.end_reason = std::find(b.m.begin(), b.m.end(), 2) != b.m.end() ? EndReason::m2 : EndReason::m30;
@@ -254,8 +263,8 @@ Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
   }
   if (std::find(b.g_nonmodal.begin(), b.g_nonmodal.end(), 100) != b.g_nonmodal.end())
     return plan_measuring_run(b, c, file_name);
-  // With G92, G74, G101 and G102 the axis words are that function's values.
-  const bool words_are_motion = std::none_of(b.g_nonmodal.begin(), b.g_nonmodal.end(), [](int g) {
+  // With G92, G74, G101, G102 and G201/G202 the axis words are that function's values.
+  const bool words_are_motion = !b.manual_g && std::none_of(b.g_nonmodal.begin(), b.g_nonmodal.end(), [](int g) {
     return g == 92 || g == 74 || g == 101 || g == 102;
   });
   const bool circle = b.modal.motion == nc::Motion::cw || b.modal.motion == nc::Motion::ccw;

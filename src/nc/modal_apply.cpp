@@ -129,6 +129,7 @@ bool apply_words(Words& w, BlockCtx& b, ModalState& modal, Block& out) {
   for (const auto& g : w.g) {
     apply_g(g.code, g.value, modal);
     if (g_group(g.code) == GGroup::nonmodal) out.g_nonmodal.push_back(g.code);
+    if (g.code == 201 || g.code == 202) out.manual_g = g.code;
   }
   if (w.n.v) out.n = *w.n.v;
   if (w.f.v) {

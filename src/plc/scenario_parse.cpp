@@ -1,4 +1,5 @@
 // setup: parsing of --plc scenario files (grammar: docs/plc-scenario.md).
+#include <cctype>
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -34,6 +35,7 @@ constexpr std::array kActions = {
     ActionSpelling{"optional_stop", ActionKind::optional_stop},
     ActionSpelling{"silent", ActionKind::silent},
     ActionSpelling{"spindle_cmd", ActionKind::spindle_cmd},
+    ActionSpelling{"handwheel", ActionKind::handwheel},
 };
 
 // Parses one line; reports its first problem and returns nothing then.
@@ -65,6 +67,7 @@ class LineParser {
   bool take_switch(bool& on);
   bool take_percent(double& pct);
   bool take_spindle_cmd(ScenarioAction& a);
+  bool take_handwheel(ScenarioAction& a);
   bool take_keyword_value(std::string_view key, double& value, bool& seen);
 
   std::span<const Token> toks_;
@@ -172,7 +175,29 @@ bool LineParser::parse_args(ScenarioAction& a) {
       return take_spindle(a);
     case ActionKind::spindle_cmd:
       return take_spindle(a) && take_spindle_cmd(a);
+    case ActionKind::handwheel:
+      return take_handwheel(a);
   }
+  return true;
+}
+
+// handwheel <axis> <mm>: the axis name as the channel knows it, the distance signed.
+bool LineParser::take_handwheel(ScenarioAction& a) {
+  if (!need("the axis name (e.g. X)")) return false;
+  const Token& axis = toks_[next_++];
+  if (axis.text.empty() || axis.text.size() >= a.axis_name.size() ||
+      !std::isalpha(static_cast<unsigned char>(axis.text[0])))
+    return fail(ErrorId::PlcScenarioBadNumber, axis.column,
+                fmt::format("'{}' is not an axis name; write e.g. X", detail::printable(axis.text)));
+  std::copy(axis.text.begin(), axis.text.end(), a.axis_name.begin());
+  a.axis_name[axis.text.size()] = '\0';
+  if (!need("the handwheel distance in mm")) return false;
+  const Token& t = toks_[next_++];
+  auto v = detail::to_number(t.text);
+  if (!v)
+    return fail(ErrorId::PlcScenarioBadNumber, t.column,
+                fmt::format("'{}' is not a distance; write mm, e.g. 0.5", detail::printable(t.text)));
+  a.value = *v;
   return true;
 }
 

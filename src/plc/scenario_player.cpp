@@ -44,8 +44,17 @@ bool resolve_one(ScenarioAction& a, const config::Machine& m, const SpindleMap& 
                           m.channels.size()));
     return false;
   }
-  if (!a.has_spindle()) return !needs_spindle(a.kind);
   const auto& ch = m.channels[a.channel - 1];
+  if (a.kind == ActionKind::handwheel) {
+    const std::string_view name(a.axis_name.data());
+    for (std::size_t j = 0; j < ch.axes.size(); ++j)
+      if (detail::iequals(ch.axes[j].name, name)) a.axis = static_cast<std::int8_t>(j);
+    if (a.axis >= 0) return true;
+    diags.add(ErrorId::PlcScenarioUnknownAxis, SourceLoc{file, a.line, 0},
+              fmt::format("channel {} has no path axis '{}'", a.channel, name));
+    return false;
+  }
+  if (!a.has_spindle()) return !needs_spindle(a.kind);
   a.spindle = find_spindle(ch, a.spindle_view());
   if (a.spindle == kNoSpindle) {
     std::string known;
@@ -115,6 +124,7 @@ ApplyResult apply(const ScenarioAction& a, const SpindleMap& map, HliImage& hli,
     case ActionKind::reset: ch.reset = true; return ApplyResult::ok;
     case ActionKind::optional_stop: ch.optional_stop = a.on; return ApplyResult::ok;
     case ActionKind::silent: plc.set_silent(a.on); return ApplyResult::ok;
+    case ActionKind::handwheel: return ApplyResult::ok;  // the kernel moves the axis
     case ActionKind::spindle_cmd:
       if (a.spindle == kNoSpindle) return ApplyResult::no_spindle;
       return ext.push(a.cmd) != 0 ? ApplyResult::ok : ApplyResult::ext_queue_full;

@@ -74,12 +74,14 @@ class Kernel {
   void push_error(std::size_t ch, const Diagnostic& d, std::uint16_t file_id);
   // The decoder reached the end of the program without M2/M30.
   void push_end_without_m30(std::size_t ch, std::uint16_t file_id, std::uint32_t line);
-  // G100 measuring runs that channel ch has finished.
-  std::uint64_t measure_count(std::size_t ch) const;
-  // After a G100 run ended (the caller held the channel's later blocks back
-  // until then): planning goes on from where the axes stopped. Returns the
-  // measuring variables for the decoder (V.A.MESS/MERF/MOFFS.<axis>).
-  std::vector<std::pair<std::string, double>> take_measurement(std::size_t ch);
+  // Blocks after which the decoder needs values from execution: a G100
+  // measuring run and #GET MANUAL OFFSETS. The caller holds the channel's
+  // later blocks back until sync_count(ch) has grown, then takes the values.
+  static bool needs_sync(const nc::Block& b);
+  std::uint64_t sync_count(std::size_t ch) const;
+  // The decoder variables (V.A.MESS/MERF/MOFFS.<axis> after G100 — planning
+  // then goes on from where the axes stopped —, V.A.MANUAL_OFFSETS.<axis>).
+  std::vector<std::pair<std::string, double>> take_sync_values(std::size_t ch);
   // Text of an event's message_index (error, warning).
   const std::string& message(std::uint32_t index) const;
   // Kind and per-axis values of an offset event's message_index.

@@ -68,6 +68,10 @@ struct Block {
   std::vector<VariableWrite> kernel_writes;
   std::uint8_t depth = 0;    // subroutine nesting level (0 = main program)
 
+  // G201 / G202 programmed in this block (the manual-mode group is modal, so
+  // modal.manual_mode alone cannot tell); its axis words select the axes.
+  std::optional<int> manual_g;
+
   bool program_end = false;  // M2 / M30 reached (main program level)
   bool stop = false;         // M0 (M1 when the optional stop is enabled)
 

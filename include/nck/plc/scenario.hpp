@@ -30,6 +30,7 @@ enum class ActionKind : std::uint8_t {
   optional_stop,        // optional_stop on|off
   silent,               // silent on|off              (PLC stops acknowledging)
   spindle_cmd,          // spindle_cmd S2 M3 REV500   (external spindle command)
+  handwheel,            // handwheel X 0.5            (mm moved by the handwheel in G201 manual mode)
 };
 
 // The action's name as written in the file (the primary spelling).
@@ -46,6 +47,8 @@ struct ScenarioAction {
   double value = 0;            // percent for the overrides
   bool on = false;             // switches
   ExtSpindleCommand cmd;       // spindle_cmd only
+  std::array<char, kSpindleNameChars> axis_name{};  // handwheel: the path axis
+  std::int8_t axis = -1;       // handwheel: channel axis index (resolve_spindles)
   bool has_spindle() const noexcept { return spindle_name[0] != '\0'; }
   std::string_view spindle_view() const noexcept { return std::string_view(spindle_name.data()); }
 };

@@ -150,3 +150,36 @@ TEST(MeasureScenario, G101WithNothingMeasuredIsAnError) {
 
 }  // namespace
 }  // namespace nck::app
+
+namespace nck::app {
+namespace {
+
+using namespace testing;
+using nlohmann::json;
+
+json run_manual(const std::string& name, const std::string& scenario) {
+  const auto dir = temp_dir(name);
+  std::ofstream(dir / "s.plc") << scenario;
+  const std::string ex = root() + "/examples/mill";
+  CliResult r = run_nck("run " + ex + " " + ex + "/manual.nc --plc " + (dir / "s.plc").string() +
+                        " --final " + (dir / "f.json").string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  return json::parse(read_file(dir / "f.json"));
+}
+
+TEST(ManualScenario, HandwheelOffsetActsInG201AndReachesTheProgram) {
+  const json fin = run_manual("manual", "0.5 handwheel X 1.5\n");
+  // #GET MANUAL OFFSETS gave 1.5 -> the program moved to X3; the offset stays: MCS 4.5
+  EXPECT_NEAR(fin["channels"][0]["axes"]["X"]["pcs"].get<double>(), 3.0, 1e-9);
+  EXPECT_NEAR(fin["channels"][0]["axes"]["X"]["mcs"].get<double>(), 4.5, 1e-9);
+  EXPECT_NEAR(fin["channels"][0]["offsets"]["manual"]["X"].get<double>(), 1.5, 1e-9);
+}
+
+TEST(ManualScenario, HandwheelOutsideManualModeDoesNothing) {
+  const json fin = run_manual("nomanual", "0.5 handwheel Y 2\n2.5 handwheel X 1\n");  // Y not in G201; X after G202
+  EXPECT_NEAR(fin["channels"][0]["axes"]["X"]["mcs"].get<double>(), 0.0, 1e-9);
+  EXPECT_NEAR(fin["channels"][0]["axes"]["Y"]["mcs"].get<double>(), 0.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace nck::app
