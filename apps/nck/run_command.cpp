@@ -167,10 +167,10 @@ int run_simulation(const RunOptions& opt) {
                                      kernel::decoder_config(m, ch)),
                          !has_program});
   }
-  for (Feed& f : feeds) {
-    names.decoders.push_back(&f.decoder);
-    // The program reads the clamp position it was started with.
-    (void)f.decoder.set_variable("V.G.AKT_PLATZ", static_cast<double>(opt.clamp_index));
+  for (std::size_t ch = 0; ch < feeds.size(); ++ch) {
+    names.decoders.push_back(&feeds[ch].decoder);
+    for (const auto& [name, value] : kernel::initial_variables(m, ch, opt.clamp_index))
+      (void)feeds[ch].decoder.set_variable(name, value);
   }
 
   kernel::TickInput in;

@@ -1,5 +1,7 @@
 #include "nck/kernel/decoder_setup.hpp"
 
+#include <fmt/format.h>
+
 namespace nck::kernel {
 
 nc::DecoderConfig decoder_config(const config::Machine& m, std::size_t ch) {
@@ -18,6 +20,18 @@ nc::DecoderConfig decoder_config(const config::Machine& m, std::size_t ch) {
   d.max_cache_number = c.max_cache_number;
   d.max_cache_size_kb = c.max_cache_size_kb;
   return d;
+}
+
+std::vector<std::pair<std::string, double>> initial_variables(const config::Machine& m, std::size_t ch,
+                                                              std::uint32_t clamp_index) {
+  std::vector<std::pair<std::string, double>> vars{{"V.G.AKT_PLATZ", static_cast<double>(clamp_index)}};
+  if (ch >= m.channel_data.size()) return vars;
+  const config::ChannelConfig& c = m.channels.at(ch);
+  const auto& groups = m.channel_data[ch].zero.versch;
+  for (std::size_t i = 0; i < groups.size(); ++i)
+    for (std::size_t j = 0; j < c.axes.size() && j < groups[i].size(); ++j)
+      if (groups[i][j] != 0) vars.emplace_back(fmt::format("V.G.NP[{}].V.{}", i, c.axes[j].name), groups[i][j]);
+  return vars;
 }
 
 }  // namespace nck::kernel

@@ -183,3 +183,78 @@ TEST(ManualScenario, HandwheelOutsideManualModeDoesNothing) {
 
 }  // namespace
 }  // namespace nck::app
+
+namespace nck::app {
+namespace {
+
+using namespace testing;
+using nlohmann::json;
+
+struct Outcome {
+  int exit_code;
+  std::vector<json> events;
+  json final_state;
+};
+
+Outcome run_program(const std::string& name, const std::string& blocks, const std::string& args = "") {
+  const auto dir = temp_dir(name);
+  std::ofstream(dir / "p.nc") << "%p\n" << blocks << "N90 M30\n";
+  CliResult r = run_nck("run " + root() + "/examples/mill " + (dir / "p.nc").string() + " --events " +
+                        (dir / "e.jsonl").string() + " --final " + (dir / "f.json").string() + " " + args);
+  return {r.exit_code, read_jsonl(dir / "e.jsonl"), json::parse(read_file(dir / "f.json"))};
+}
+
+TEST(OffsetErrors, EachIsAnNcErrorWithItsIdAndLine) {
+  struct Case {
+    const char* blocks;
+    std::uint32_t id;
+    int line;
+  } cases[] = {
+      {"N10 #CS ON [1][10,0,0,0,0,0]\nN20 #ECS ON\n", 20774, 3},   // #ECS with a CS active
+      {"N10 #PSET X5 G1 Y10 F100\n", 20607, 2},                    // #PSET with a path condition
+      {"N10 G159=99\n", 20149, 2},                                 // beyond the zero table
+      {"N10 #CS ON [3]\n", 970002, 2},                             // never defined
+      {"N10 #CS ON [1,0,0]\nN11 #CS ON [1,0,0]\nN12 #CS ON [1,0,0]\nN13 #CS ON [1,0,0]\n"
+       "N14 #CS ON [1,0,0]\nN15 #CS ON [1,0,0]\n", 970003, 7},    // more than 5 nested
+      {"N10 #SUPPRESS OFFSETS G91 X1\n", 20985, 2},                // needs G90
+      {"N10 D42\n", 930011, 2},                                    // not in the tool list
+  };
+  for (const Case& c : cases) {
+    Outcome o = run_program("ofserr", c.blocks);
+    EXPECT_EQ(o.exit_code, 1) << c.blocks;
+    const json* err = nullptr;
+    for (const json& e : o.events)
+      if (e["ev"] == "error" && !err) err = &e;
+    ASSERT_NE(err, nullptr) << c.blocks;
+    EXPECT_EQ((*err)["id"], c.id) << c.blocks;
+    EXPECT_EQ((*err)["line"], c.line) << c.blocks;
+    ASSERT_EQ(o.events.back()["ev"], "end");  // the events file is complete
+  }
+}
+
+TEST(OffsetErrors, PlaneChangeSwitchesRotationOffWithWarning21143) {
+  Outcome o = run_program("w21143", "N10 #ROTATION ON [ANGLE=10]\nN20 G18\n");
+  EXPECT_EQ(o.exit_code, 0);
+  bool warned = false;
+  for (const json& e : o.events)
+    if (e["ev"] == "warning" && e["id"] == 21143 && e["line"] == 3) warned = true;
+  EXPECT_TRUE(warned);
+}
+
+TEST(OffsetVariables, ProgramReadsTheZeroTableAndTheClampPosition) {
+  Outcome o = run_program("vars", "N10 G54\nN20 P1 = V.G.NP[1].V.X\nN25 P2 = V.G.AKT_PLATZ\nN30 G0 X[P1 + P2]\n",
+                          "--clamp-index 1");
+  ASSERT_EQ(o.exit_code, 0);
+  const json& x = o.final_state["channels"][0]["axes"]["X"];
+  EXPECT_NEAR(x["pcs"].get<double>(), 101.0, 1e-9);        // 100 (G54 X) + 1 (clamp index)
+  EXPECT_NEAR(x["mcs"].get<double>(), 101.0 + 100 + 10, 1e-9);  // + G54 + clamp group 1
+}
+
+TEST(OffsetVariables, WritingTheZeroTableMovesTheNextAbsolutePosition) {
+  Outcome o = run_program("npwrite", "N10 G54 G0 X0\nN20 V.G.NP[1].V.X = 20\nN30 G0 X0\n");
+  ASSERT_EQ(o.exit_code, 0);
+  EXPECT_NEAR(o.final_state["channels"][0]["axes"]["X"]["mcs"].get<double>(), 20.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace nck::app
