@@ -1,6 +1,9 @@
 #pragma once
 // Running the nck binary from tests and reading what it wrote.
+#include <array>
+#include <cmath>
 #include <cstdlib>
+#include <map>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -58,6 +61,37 @@ inline std::vector<std::string> split(const std::string& s, char sep) {
   std::stringstream ss(s);
   for (std::string item; std::getline(ss, item, sep);) out.push_back(item);
   return out;
+}
+
+}  // namespace nck::app::testing
+
+namespace nck::app::testing {
+
+// From a run's trace (t.csv, every cycle) and events (e.jsonl) in dir: the
+// first three axis set points when each numbered block starts, i.e. where
+// everything before it ended.
+inline std::map<long, std::array<double, 3>> positions_at_blocks(const std::filesystem::path& dir) {
+  std::map<long, std::array<double, 3>> by_ms;
+  const auto lines = split(read_file(dir / "t.csv"), '\n');
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const auto c = split(lines[i], ',');
+    by_ms[std::lround(std::stod(c[0]) * 1000)] = {std::stod(c[1]), std::stod(c[2]), std::stod(c[3])};
+  }
+  std::map<long, std::array<double, 3>> out;
+  for (const nlohmann::json& e : read_jsonl(dir / "e.jsonl"))
+    if (e["ev"] == "block" && !e["n"].is_null()) {
+      const long ms = std::lround(e["t"].get<double>() * 1000);
+      out[e["n"].get<long>()] = ms == 0 ? std::array<double, 3>{} : by_ms.at(ms - 1);
+    }
+  return out;
+}
+
+// Runs an example program with events and an every-cycle trace into dir.
+inline CliResult run_example(const std::string& machine, const std::string& program,
+                             const std::filesystem::path& dir, const std::string& args = "") {
+  const std::string ex = root() + "/examples/" + machine;
+  return run_nck("run " + ex + " " + ex + "/" + program + " --events " + (dir / "e.jsonl").string() +
+                 " --trace " + (dir / "t.csv").string() + " " + args);
 }
 
 }  // namespace nck::app::testing

@@ -21,24 +21,9 @@ struct Row {
 
 TEST(OffsetsScenario, MachinePositionsAtBlockEndsMatchHandComputation) {
   const auto dir = temp_dir("offsets");
-  const std::string ex = root() + "/examples/mill";
-  CliResult r = run_nck("run " + ex + " " + ex + "/offsets.nc --events " + (dir / "e.jsonl").string() +
-                        " --trace " + (dir / "t.csv").string() + " --final " + (dir / "f.json").string());
+  CliResult r = run_example("mill", "offsets.nc", dir, "--final " + (dir / "f.json").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  // trace rows by cycle time (ms)
-  std::map<long, Row> rows;
-  const auto lines = split(read_file(dir / "t.csv"), '\n');
-  for (std::size_t i = 1; i < lines.size(); ++i) {
-    const auto c = split(lines[i], ',');
-    rows[std::lround(std::stod(c[0]) * 1000)] = {std::stod(c[1]), std::stod(c[2]), std::stod(c[3])};
-  }
-  // the position when block N starts = the end of everything before it
-  std::map<long, Row> at_block_start;
-  for (const json& e : read_jsonl(dir / "e.jsonl"))
-    if (e["ev"] == "block" && !e["n"].is_null()) {
-      const long t_ms = std::lround(e["t"].get<double>() * 1000);
-      at_block_start[e["n"].get<long>()] = t_ms == 0 ? Row{0, 0, 0} : rows.at(t_ms - 1);
-    }
+  const auto at_block_start = positions_at_blocks(dir);
   const double s = std::sqrt(0.5) * 20;  // 20 mm at 45 degrees
   const std::map<long, Row> expected = {
       {50, {100, 50, 0}},          // after N40: G54 + D1 + Z50
@@ -53,10 +38,10 @@ TEST(OffsetsScenario, MachinePositionsAtBlockEndsMatchHandComputation) {
   };
   for (const auto& [n, want] : expected) {
     ASSERT_TRUE(at_block_start.count(n)) << "N" << n;
-    const Row& got = at_block_start[n];
-    EXPECT_NEAR(got.x, want.x, 1e-6) << "before N" << n;
-    EXPECT_NEAR(got.y, want.y, 1e-6) << "before N" << n;
-    EXPECT_NEAR(got.z, want.z, 1e-6) << "before N" << n;
+    const auto& got = at_block_start.at(n);
+    EXPECT_NEAR(got[0], want.x, 1e-6) << "before N" << n;
+    EXPECT_NEAR(got[1], want.y, 1e-6) << "before N" << n;
+    EXPECT_NEAR(got[2], want.z, 1e-6) << "before N" << n;
   }
   // offset events name each kind the program changed
   std::set<std::string> kinds;
@@ -91,33 +76,14 @@ namespace {
 using namespace testing;
 using nlohmann::json;
 
-// Z set points at the start of each N (the end of what came before).
-std::map<long, double> z_at_blocks(const std::filesystem::path& dir) {
-  std::map<long, double> z_by_ms;
-  const auto lines = split(read_file(dir / "t.csv"), '\n');
-  for (std::size_t i = 1; i < lines.size(); ++i) {
-    const auto c = split(lines[i], ',');
-    z_by_ms[std::lround(std::stod(c[0]) * 1000)] = std::stod(c[3]);
-  }
-  std::map<long, double> out;
-  for (const json& e : read_jsonl(dir / "e.jsonl"))
-    if (e["ev"] == "block" && !e["n"].is_null()) {
-      const long ms = std::lround(e["t"].get<double>() * 1000);
-      out[e["n"].get<long>()] = ms == 0 ? 0.0 : z_by_ms.at(ms - 1);
-    }
-  return out;
-}
-
 TEST(MeasureScenario, G100StopsAtTheProbeAndG101OffsetsByTheDifference) {
   const auto dir = temp_dir("measure");
-  const std::string ex = root() + "/examples/mill";
-  CliResult r = run_nck("run " + ex + " " + ex + "/measure.nc --events " + (dir / "e.jsonl").string() +
-                        " --trace " + (dir / "t.csv").string());
+  CliResult r = run_example("mill", "measure.nc", dir);
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto z = z_at_blocks(dir);
-  EXPECT_NEAR(z.at(20), -100.0, 1e-9);  // G54 Z-150 + D1 100 + PCS -50
-  EXPECT_NEAR(z.at(40), -123.0, 1e-9);  // the probe switched at machine Z -123
-  EXPECT_NEAR(z.at(60), -116.0, 1e-9);  // PCS -73 plus the 7 mm measuring offset
+  const auto p = positions_at_blocks(dir);
+  EXPECT_NEAR(p.at(20)[2], -100.0, 1e-9);  // G54 Z-150 + D1 100 + PCS -50
+  EXPECT_NEAR(p.at(40)[2], -123.0, 1e-9);  // the probe switched at machine Z -123
+  EXPECT_NEAR(p.at(60)[2], -116.0, 1e-9);  // PCS -73 plus the 7 mm measuring offset
   bool measure_event = false;
   for (const json& e : read_jsonl(dir / "e.jsonl"))
     if (e["ev"] == "offset" && e["kind"] == "measure" && e["values"]["Z"] == 7.0) measure_event = true;
@@ -132,8 +98,7 @@ TEST(MeasureScenario, NoSwitchingMeansMerf0AndTheTargetReached) {
   CliResult r = run_nck("run " + root() + "/examples/mill " + (dir / "p.nc").string() + " --events " +
                         (dir / "e.jsonl").string() + " --trace " + (dir / "t.csv").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto z = z_at_blocks(dir);
-  EXPECT_NEAR(z.at(40), -10.0, 1e-9);  // reached the target; V.A.MERF.Z = 0 chose N40
+  EXPECT_NEAR(positions_at_blocks(dir).at(40)[2], -10.0, 1e-9);  // target reached; V.A.MERF.Z = 0 chose N40
 }
 
 TEST(MeasureScenario, G101WithNothingMeasuredIsAnError) {
@@ -254,6 +219,41 @@ TEST(OffsetVariables, WritingTheZeroTableMovesTheNextAbsolutePosition) {
   Outcome o = run_program("npwrite", "N10 G54 G0 X0\nN20 V.G.NP[1].V.X = 20\nN30 G0 X0\n");
   ASSERT_EQ(o.exit_code, 0);
   EXPECT_NEAR(o.final_state["channels"][0]["axes"]["X"]["mcs"].get<double>(), 20.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace nck::app
+
+namespace nck::app {
+namespace {
+
+using namespace testing;
+
+TEST(CoordinatesScenario, CsChainAcsAndMcsMatchHandComputation) {
+  const auto dir = temp_dir("coordinates");
+  ASSERT_EQ(run_example("mill", "coordinates.nc", dir).exit_code, 0);
+  const auto p = positions_at_blocks(dir);
+  const double c = std::cos(2 * M_PI / 180), s = std::sin(2 * M_PI / 180);
+  // HOLE X10 Y0 -> PART (5,5)+R90(10,0) = (5,15) -> ACS (25,25) turned 2 deg, + G54
+  EXPECT_NEAR(p.at(70)[0], 100 + 25 * c - 25 * s, 1e-6);
+  EXPECT_NEAR(p.at(70)[1], 50 + 25 * s + 25 * c, 1e-6);
+  // PART X0 Y0 -> ACS (20,10) turned 2 deg, + G54
+  EXPECT_NEAR(p.at(90)[0], 100 + 20 * c - 10 * s, 1e-6);
+  EXPECT_NEAR(p.at(90)[1], 50 + 20 * s + 10 * c, 1e-6);
+  EXPECT_NEAR(p.at(110)[2], 0.0, 1e-9);    // #MCS ON: machine Z0
+  EXPECT_NEAR(p.at(130)[2], -100.0, 1e-9); // #MCS OFF restored G54: -150 + 50
+  EXPECT_NEAR(p.at(160)[0], 100.0, 1e-9);  // all CS off: G54 only
+}
+
+TEST(ToolsScenario, ToolLengthG91RuleAndTlc) {
+  const auto dir = temp_dir("tools");
+  ASSERT_EQ(run_example("mill", "tools.nc", dir).exit_code, 0);
+  const auto p = positions_at_blocks(dir);
+  EXPECT_NEAR(p.at(40)[2], 100.0, 1e-9);  // D1 (100 mm) at the absolute Z0
+  EXPECT_NEAR(p.at(60)[2], 90.0, 1e-9);   // G91: D2 waits, Z moved -10
+  EXPECT_NEAR(p.at(70)[2], 115.0, 1e-9);  // absolute Z-10 with D2 (125 mm)
+  EXPECT_NEAR(p.at(90)[2], 115.5, 1e-9);  // #TLC ON [0.5]
+  EXPECT_NEAR(p.at(110)[2], 0.0, 1e-9);   // D0
 }
 
 }  // namespace

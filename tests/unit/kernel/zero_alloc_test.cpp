@@ -85,6 +85,8 @@ TEST(ZeroAllocation, WholeExamplesRunThroughTickWithoutHeap) {
   const Example examples[] = {
       {"examples/mill", {"examples/mill/contour.nc"}},
       {"examples/mill", {"examples/mill/offsets.nc"}},
+      {"examples/mill", {"examples/mill/coordinates.nc"}},
+      {"examples/mill", {"examples/mill/tools.nc"}},
       {"examples/mill", {"examples/mill/spindle.nc"}},
       {"examples/lathe", {"examples/lathe/turn.nc"}},
       {"examples/lathe", {"examples/lathe/gears.nc"}},
