@@ -15,12 +15,12 @@ struct Setup {
   std::unique_ptr<nck::nc::Decoder> decoder;
   bool fed = false;
 
-  Setup() {
+  explicit Setup(const char* program = "contour.nc") {
     auto r = nck::config::load_machine(std::string(NCK_SOURCE_DIR) + "/examples/mill");
     machine = *r.machine;
     (void)kernel.configure(machine);
     decoder = std::make_unique<nck::nc::Decoder>(
-        std::string(NCK_SOURCE_DIR) + "/examples/mill/contour.nc",
+        std::string(NCK_SOURCE_DIR) + "/examples/mill/" + program,
         nck::kernel::decoder_config(machine, 0));
   }
   void feed() {
@@ -33,14 +33,16 @@ struct Setup {
   }
 };
 
+// state.range(0): 0 = contour.nc (path only), 1 = spindle.nc (path + S1/S2 running)
 void BM_Tick(benchmark::State& state) {
-  auto s = std::make_unique<Setup>();
+  const char* program = state.range(0) == 0 ? "contour.nc" : "spindle.nc";
+  auto s = std::make_unique<Setup>(program);
   nck::kernel::TickInput in;
   nck::kernel::TickOutput out;
   for (auto _ : state) {
     if (s->kernel.all_channels_done()) {
       state.PauseTiming();
-      s = std::make_unique<Setup>();
+      s = std::make_unique<Setup>(program);
       state.ResumeTiming();
     }
     s->feed();  // a no-op once the whole program is queued
@@ -48,7 +50,7 @@ void BM_Tick(benchmark::State& state) {
     benchmark::DoNotOptimize(out);
   }
 }
-BENCHMARK(BM_Tick);
+BENCHMARK(BM_Tick)->Arg(0)->Arg(1);
 
 void BM_WholeRun(benchmark::State& state) {
   double simulated_s = 0;

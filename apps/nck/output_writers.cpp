@@ -54,8 +54,11 @@ std::string sync_name(std::uint32_t bits) {
       {s::MNS_SNS, "MNS_SNS"}, {s::MNE_SNS, "MNE_SNS"}, {s::MVS_SLM, "MVS_SLM"},
       {s::MVS_SLP, "MVS_SLP"}, {s::PLC_INFO, "PLC_INFO"}};
   std::string out;
-  for (auto [bit, name] : kNames)
-    if (bits & bit) out += (out.empty() ? "" : "|") + std::string(name);
+  for (auto [bit, name] : kNames) {
+    if (!(bits & bit)) continue;
+    if (!out.empty()) out += '|';
+    out += name;
+  }
   return out.empty() ? "NO_SYNCH" : out;
 }
 

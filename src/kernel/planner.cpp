@@ -41,8 +41,9 @@ Planner::Planner(const config::Machine& machine, std::size_t channel_index, Plan
               n_axes_, options.clamp_index),
       spindles_(machine, channel_index, std::vector<int>(spindles.begin(), spindles.end())) {
   for (std::size_t j = 0; j < n_axes_; ++j) {
+    static const config::AxisConfig kNoAxisList;  // defaults for an axis without a list
     const int idx = channel_.axes[j].axis_index;
-    const config::AxisConfig ax = idx >= 0 ? machine.axes[static_cast<std::size_t>(idx)] : config::AxisConfig{};
+    const config::AxisConfig& ax = idx >= 0 ? machine.axes[static_cast<std::size_t>(idx)] : kNoAxisList;
     const config::GearStage& g = ax.gear(ax.initial_gear_stage);
     // Feed moves: a_beschl up, a_brems down; rapid: a_grenz; all capped by a_max.
     feed_dyn_[j] = {g.vb_max, std::min(g.a_beschl, g.a_max), std::min(g.a_brems, g.a_max)};

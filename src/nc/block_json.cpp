@@ -1,5 +1,7 @@
 #include "nck/nc/block_json.hpp"
 
+#include <fmt/format.h>
+
 namespace nck::nc {
 
 namespace {
@@ -103,11 +105,11 @@ struct HashJson {
 
 json to_json(const ModalState& m) {
   return json{{"motion", motion_name(m.motion)},
-              {"plane", "G" + std::to_string(static_cast<int>(m.plane))},
+              {"plane", fmt::format("G{}", static_cast<int>(m.plane))},
               {"absolute", m.absolute},
-              {"feed_mode", "G" + std::to_string(static_cast<int>(m.feed_mode))},
-              {"speed_mode", "G" + std::to_string(static_cast<int>(m.speed_mode))},
-              {"radius_comp", "G" + std::to_string(static_cast<int>(m.radius_comp))},
+              {"feed_mode", fmt::format("G{}", static_cast<int>(m.feed_mode))},
+              {"speed_mode", fmt::format("G{}", static_cast<int>(m.speed_mode))},
+              {"radius_comp", fmt::format("G{}", static_cast<int>(m.radius_comp))},
               {"diameter", m.diameter},
               {"inch", m.inch},
               {"zero_offset", m.zero_offset},
@@ -121,8 +123,8 @@ json to_json(const ModalState& m) {
 
 json to_json(const SpindleCommand& s) {
   json j{{"name", s.name}, {"target", s.target}, {"din", s.din}};
-  if (s.m != SpindleM::none) j["m"] = "M" + std::to_string(static_cast<int>(s.m));
-  if (s.direction != SpindleM::none) j["direction"] = "M" + std::to_string(static_cast<int>(s.direction));
+  if (s.m != SpindleM::none) j["m"] = fmt::format("M{}", static_cast<int>(s.m));
+  if (s.direction != SpindleM::none) j["direction"] = fmt::format("M{}", static_cast<int>(s.direction));
   put(j, "rev_rpm", s.rev_rpm);
   put(j, "pos_deg", s.pos_deg);
   put(j, "pos_shift_deg", s.pos_shift_deg);

@@ -1,3 +1,4 @@
+#include <fmt/format.h>
 #include "variables.hpp"
 
 #include "lexer.hpp"
@@ -172,7 +173,7 @@ bool Variables::declare(const std::string& base, const std::vector<int>& dims, b
   std::vector<int> idx(dims.size(), 0);
   for (std::size_t n = 0; n < total; ++n) {
     std::string key = base;
-    for (int i : idx) key += "[" + std::to_string(i) + "]";
+    for (int i : idx) key += fmt::format("[{}]", i);
     (*m)[key] = init;
     for (std::size_t k = dims.size(); k-- > 0;) {
       if (++idx[k] < dims[k]) break;
