@@ -178,12 +178,12 @@ void Channel::issue_output(const Output& o, double t_s, TickOutput& sink, Channe
   e.fn_number = o.number;
   e.sync = o.sync;
   emit(sink, e);
-  add_wait(w, sync_point(o.sync));
+  add_wait(w, sync_point(o.sync).value_or(SyncPoint::none));
 }
 
 void Channel::issue_all(SyncPoint phase, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept {
   for (const Output& o : current_.outputs) {
-    if (!issued_in(sync_point(o.sync), phase)) continue;
+    if (!issued_in(sync_point(o.sync).value_or(SyncPoint::none), phase)) continue;
     issue_output(o, t_s, sink, ctx);
     if (done()) return;
   }

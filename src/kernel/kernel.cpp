@@ -6,6 +6,7 @@
 #include "channel.hpp"
 #include "kernel_plc.hpp"
 #include "nck/kernel/plan_store.hpp"
+#include "spindle_planner.hpp"
 #include "spindle_unit.hpp"
 
 namespace nck::kernel {
@@ -47,7 +48,7 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
           sp.axis_index >= 0 ? &machine_->axes[static_cast<std::size_t>(sp.axis_index)] : nullptr;
       SpindleUnit& u = spindles_[static_cast<std::size_t>(k)];
       if (auto ok = u.axis.configure(ax, sp, machine_->sim, cycle_s_); !ok) return std::unexpected(ok.error());
-      u.plc_spindle = sp.plc_control || (ax && (ax->achs_mode & 0x40000u) != 0);
+      u.plc_spindle = detail::is_plc_spindle(*machine_, sp);
       u.channel = static_cast<std::uint8_t>(c + 1);
       u.channel_index = static_cast<std::int8_t>(i);
       u.last_gear = u.axis.status().gear_stage;

@@ -3,6 +3,7 @@
 // channel executes in the cycle: the spindle command itself, whether it is
 // output to the PLC, and when the channel synchronises with it.
 #include <cstdint>
+#include <optional>
 
 #include "nck/config/machine.hpp"
 #include "nck/spindle/positioning.hpp"
@@ -38,15 +39,21 @@ enum class SyncPoint : std::uint8_t {
   late_explicit, // MVS_SLP: output now, wait at #EXPL SYN
 };
 
-// The sync point of configured synchronisation bits (PLC_INFO aside).
-constexpr SyncPoint sync_point(std::uint32_t bits) noexcept {
+// The sync point of configured synchronisation bits (facts sheet B0);
+// nullopt = NO_SYNCH (no output; a spindle M function is then not executed).
+constexpr std::optional<SyncPoint> sync_point(std::uint32_t bits) noexcept {
   namespace s = config::sync;
-  if (bits & s::MVS_SVS) return SyncPoint::before;
-  if (bits & s::MVS_SNS) return SyncPoint::before_after;
-  if (bits & (s::MNS_SNS | s::MNE_SNS)) return SyncPoint::after;
-  if (bits & s::MVS_SLM) return SyncPoint::late_motion;
-  if (bits & s::MVS_SLP) return SyncPoint::late_explicit;
-  return SyncPoint::none;  // MOS
+  // PLC_INFO is additive; what is left is the synchronisation type proper.
+  const std::uint32_t type = bits & ~s::PLC_INFO;
+  if (type & (s::MVS_SVS | s::MEP_SVS | s::MET_SVS)) return SyncPoint::before;
+  if (type & s::MVS_SNS) return SyncPoint::before_after;
+  if (type & (s::MNS_SNS | s::MNE_SNS)) return SyncPoint::after;
+  if (type & s::MVS_SLM) return SyncPoint::late_motion;
+  if (type & s::MVS_SLP) return SyncPoint::late_explicit;
+  // MOS and its variants (MOS_TS, MEP_MOS, MET_MOS) output without waiting;
+  // so does any other bit we do not model, rather than dropping the function.
+  if (type != s::NO_SYNCH) return SyncPoint::none;
+  return std::nullopt;
 }
 
 // What the wait is for: the spindle's own acknowledgement.

@@ -127,7 +127,7 @@ std::optional<SpindleAction> speed_only(const nc::SpindleCommand& c, const confi
   }
   SpindleAction a = plain(kidx, SpindleOp::store_speed);
   a.g167 = c.g167;
-  const std::optional<SyncPoint> s_point = detail::sync_point(sp.s_synch);
+  const std::optional<SyncPoint> s_point = sync_point(sp.s_synch);
   const bool rotating = st.motion == PlannedMotion::m3 || st.motion == PlannedMotion::m4;
   if (rotating && s_point) {
     const bool cw = st.motion == PlannedMotion::m3;
@@ -156,7 +156,7 @@ std::expected<std::optional<SpindleAction>, Diagnostic> main_action(const nc::Bl
   SpindleM m = c.m;
   std::optional<SyncPoint> point;
   if (m != SpindleM::none) {
-    point = detail::sync_point(bits_for(sp, m));
+    point = sync_point(bits_for(sp, m));
     if (!point) m = SpindleM::none;  // NO_SYNCH: the M function is not executed (SPEC 3.3)
   }
   // S / REV, POS and POS_SHIFT are modal whatever the function does (S with M5 is kept).

@@ -33,9 +33,6 @@ struct PlannedSpindle {
 };
 
 namespace detail {
-// The synchronisation point of configured sync bits (facts sheet B0);
-// nullopt = NO_SYNCH (no output; an M function is then not executed at all).
-std::optional<SyncPoint> sync_point(std::uint32_t bits) noexcept;
 // PLC spindle: plc_control 1 or an axis list with achs_mode 0x40000.
 bool is_plc_spindle(const config::Machine& m, const config::ChannelSpindle& sp) noexcept;
 }  // namespace detail

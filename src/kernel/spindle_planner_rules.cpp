@@ -1,5 +1,4 @@
-// Spindle planning, the configuration-driven rules: sync bits to SyncPoint,
-// PLC spindle detection, gear selection of the main spindle (FCT-S1 2.8.2,
+// Spindle planning, the configuration-driven rules: PLC spindle detection, gear selection of the main spindle (FCT-S1 2.8.2,
 // SPEC 3.3 with its erratum) and tool-related dynamic limits (FCT-S1 2.8.5).
 #include <cctype>
 #include <string_view>
@@ -12,21 +11,6 @@
 namespace nck::kernel {
 
 namespace detail {
-
-std::optional<SyncPoint> sync_point(std::uint32_t bits) noexcept {
-  namespace s = config::sync;
-  // PLC_INFO is additive; what is left is the synchronisation type proper.
-  const std::uint32_t type = bits & ~s::PLC_INFO;
-  if (type & (s::MVS_SVS | s::MEP_SVS | s::MET_SVS)) return SyncPoint::before;
-  if (type & s::MVS_SNS) return SyncPoint::before_after;
-  if (type & (s::MNS_SNS | s::MNE_SNS)) return SyncPoint::after;
-  if (type & s::MVS_SLM) return SyncPoint::late_motion;
-  if (type & s::MVS_SLP) return SyncPoint::late_explicit;
-  // MOS and its variants (MOS_TS, MEP_MOS, MET_MOS) output without waiting;
-  // so does any other bit we do not model, rather than dropping the function.
-  if (type != s::NO_SYNCH) return SyncPoint::none;
-  return std::nullopt;
-}
 
 bool is_plc_spindle(const config::Machine& m, const config::ChannelSpindle& sp) noexcept {
   if (sp.plc_control) return true;

@@ -174,16 +174,16 @@ TEST(SpindlePlanner, M19PositionSpeedAndDirection) {
 }
 
 TEST(SpindlePlanner, SyncBitsMapToSyncPoints) {
-  EXPECT_FALSE(detail::sync_point(sync::NO_SYNCH));
-  EXPECT_EQ(detail::sync_point(sync::MOS), SyncPoint::none);
-  EXPECT_EQ(detail::sync_point(sync::MVS_SVS), SyncPoint::before);
-  EXPECT_EQ(detail::sync_point(sync::MVS_SNS), SyncPoint::before_after);
-  EXPECT_EQ(detail::sync_point(sync::MNS_SNS), SyncPoint::after);
-  EXPECT_EQ(detail::sync_point(sync::MNE_SNS), SyncPoint::after);
-  EXPECT_EQ(detail::sync_point(sync::MVS_SLM), SyncPoint::late_motion);
-  EXPECT_EQ(detail::sync_point(sync::MVS_SLP), SyncPoint::late_explicit);
-  EXPECT_EQ(detail::sync_point(sync::MVS_SNS | sync::PLC_INFO), SyncPoint::before_after);
-  EXPECT_FALSE(detail::sync_point(sync::PLC_INFO));  // no type: NO_SYNCH
+  EXPECT_FALSE(sync_point(sync::NO_SYNCH));
+  EXPECT_EQ(sync_point(sync::MOS), SyncPoint::none);
+  EXPECT_EQ(sync_point(sync::MVS_SVS), SyncPoint::before);
+  EXPECT_EQ(sync_point(sync::MVS_SNS), SyncPoint::before_after);
+  EXPECT_EQ(sync_point(sync::MNS_SNS), SyncPoint::after);
+  EXPECT_EQ(sync_point(sync::MNE_SNS), SyncPoint::after);
+  EXPECT_EQ(sync_point(sync::MVS_SLM), SyncPoint::late_motion);
+  EXPECT_EQ(sync_point(sync::MVS_SLP), SyncPoint::late_explicit);
+  EXPECT_EQ(sync_point(sync::MVS_SNS | sync::PLC_INFO), SyncPoint::before_after);
+  EXPECT_FALSE(sync_point(sync::PLC_INFO));  // no type: NO_SYNCH
 }
 
 TEST(SpindlePlanner, PlcInfoAndPlcSpindlesOutputAndTimeouts) {
