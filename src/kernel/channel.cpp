@@ -222,8 +222,9 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
         if (active_ || done()) break;
       }
       if (!done()) {
-        const bool waiting = active_ && phase_ != Phase::body;
-        status_ = waiting ? ChannelStatus::waiting : active_ ? ChannelStatus::running : ChannelStatus::waiting;
+        // Running while a block's motion or dwell runs; waiting for a
+        // synchronisation or for blocks otherwise.
+        status_ = active_ && phase_ == Phase::body ? ChannelStatus::running : ChannelStatus::waiting;
       }
     }
   }
