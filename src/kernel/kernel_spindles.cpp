@@ -72,7 +72,8 @@ void Kernel::tick_plc(double t_s, TickOutput& out) noexcept {
 // spindle; each is acknowledged when the spindle has done it.
 void Kernel::tick_external_commands(double t_s, TickOutput& out) noexcept {
   KernelPlc& p = *plc_;
-  for (SpindleUnit& u : spindles_) {
+  for (std::size_t i = 0; i < spindles_.size(); ++i) {
+    SpindleUnit& u = spindles_[i];
     if (u.ext_seq == 0) continue;
     const spindle::SpindleStatus& s = u.axis.status();
     const bool done = s.mode == spindle::SpindleMode::rotate ? s.speed_reached
@@ -81,6 +82,14 @@ void Kernel::tick_external_commands(double t_s, TickOutput& out) noexcept {
     if (!done && s.mode != spindle::SpindleMode::error) continue;
     p.ext.acknowledge(u.ext_seq);
     u.ext_seq = 0;
+    Event e;  // the PLC learns that its command is done
+    e.t_s = t_s;
+    e.channel = u.channel;
+    e.kind = EventKind::plc_ack;
+    e.fn = FunctionKind::m;
+    e.fn_number = u.ext_m;
+    e.spindle = static_cast<std::int8_t>(i);
+    push(out, e);
   }
   // Strictly in order of arrival: the next command waits until the last one is done.
   for (const SpindleUnit& u : spindles_)
@@ -100,6 +109,11 @@ void Kernel::tick_external_commands(double t_s, TickOutput& out) noexcept {
       break;
   }
   u.ext_seq = cmd.seq;
+  u.channel = cmd.channel;
+  u.ext_m = cmd.fn == plc::ExtFunction::m3   ? 3
+            : cmd.fn == plc::ExtFunction::m4 ? 4
+            : cmd.fn == plc::ExtFunction::m5 ? 5
+                                             : 19;
   if (!r.ok()) {
     Event e;
     e.t_s = t_s;

@@ -26,8 +26,9 @@ struct SpindleUnit {
   plc::OutputHandle gear_handle = plc::kNoHandle;
   bool gear_acked = false;
 
-  // external command (HLI) in progress: its sequence number, 0 = none
+  // external command (HLI) in progress: its sequence number (0 = none) and M function
   std::uint32_t ext_seq = 0;
+  std::int32_t ext_m = 0;
 
   // what was last reported, to emit events on change
   spindle::SpindleMode last_mode = spindle::SpindleMode::stop;

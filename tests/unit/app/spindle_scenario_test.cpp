@@ -321,6 +321,27 @@ TEST(SpindleScenario, ChannelPlcSpindleKnowsOnlySpeedAndSpindleM) {
   EXPECT_EQ(of_kind(bad.events, "error")[0]["id"], 930013);
 }
 
+TEST(SpindleScenario, ExternalCommandsRunInOrderOfArrivalEachAcknowledged) {
+  const auto dir = temp_dir("ext");
+  std::ofstream(dir / "x.plc") << "0 spindle_cmd S2 M3 REV1500\n0 spindle_cmd S1 M4 REV300\n"
+                                  "0 spindle_cmd S1 M19 POS90 REV100\n";
+  RunResult r = run(root() + "/examples/mill", "%x\nN10 G4 X4\nN20 M30\n", "--plc " + (dir / "x.plc").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::vector<std::string> acks;
+  std::vector<double> ack_t;
+  for (const json& e : of_kind(r.events, "plc_ack")) {
+    acks.push_back(e["spindle"].get<std::string>() + " " + e["fn"].get<std::string>());
+    ack_t.push_back(e["t"]);
+  }
+  EXPECT_EQ(acks, (std::vector<std::string>{"S2 M3", "S1 M4", "S1 M19"}));
+  // each command starts only when the one before it is done
+  double s1_start = -1;
+  for (const json& e : of_kind(r.events, "spindle"))
+    if (e["spindle"] == "S1" && s1_start < 0) s1_start = e["t"];
+  ASSERT_EQ(ack_t.size(), 3u);
+  EXPECT_DOUBLE_EQ(s1_start, ack_t[0]);
+}
+
 TEST(FitCurve, ReproducesTheSeedCoefficients) {
   const std::string pts = " --n-grenz 12000 --a-konst 16000 --point 24000,8000 --point 36000,4000 --point 48000,2000";
   CliResult poly = run_nck("fit-curve polynomial" + pts);
