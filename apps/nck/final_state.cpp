@@ -73,6 +73,22 @@ bool write_final(const std::string& path, const config::Machine& m, const kernel
                                        {"gear", st.gear_stage},
                                        {"homed", st.homed}};
   }
+  // The spindles' HLI status objects, positions in the format P-STUP-00175 selects.
+  const plc::HliImage& h = k.hli();
+  const plc::PositionFormat fmt_pos = plc::position_format(h.ads_32_bit_comp_mode);
+  json hli_spindles = json::object();
+  for (std::size_t i = 0; i < k.spindle_count(); ++i) {
+    const plc::SpindleStatus& st = h.spindle_status[i];
+    hli_spindles[k.spindle_name(i)] = json{{"mode_r", st.mode_bits},
+                                           {"active_rev_r", plc::to_hli_speed(st.nominal_rpm)},
+                                           {"current_rev_r", plc::to_hli_speed(st.actual_rpm)},
+                                           {"rev_erreicht_r", st.speed_reached},
+                                           {"rev_null_r", st.stopped},
+                                           {"actual_pos", plc::encode_position(st.actual_pos_deg, fmt_pos).raw}};
+  }
+  json hli{{"position_format", fmt_pos == plc::PositionFormat::scaled_32bit ? "32-bit, 0.0001 deg"
+                                                                             : "64-bit, 1e-7 deg"},
+           {"spindles", hli_spindles}};
   json errs = json::array();
   for (const FinalError& e : errors)
     errs.push_back(json{{"id", e.id}, {"ch", e.channel}, {"line", e.line}, {"file", e.file}, {"msg", e.msg}});
@@ -80,6 +96,7 @@ bool write_final(const std::string& path, const config::Machine& m, const kernel
            {"channels", channels},
            {"spindles", spindles},
            {"links", json::array()},
+           {"hli", hli},
            {"errors", errs}};
   f.write(doc.dump(2));
   f.write("\n");

@@ -69,6 +69,8 @@ const spindle::SpindleStatus& Kernel::spindle_status(std::size_t index) const {
   return spindles_.at(index).axis.status();
 }
 
+const plc::HliImage& Kernel::hli() const { return plc_->hli; }
+
 void Kernel::load_scenario(const plc::Scenario& scenario) {
   plc_->player = plc::ScenarioPlayer(scenario);
 }

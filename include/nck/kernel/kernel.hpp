@@ -16,6 +16,7 @@
 #include "nck/core/diagnostic.hpp"
 #include "nck/kernel/tick_io.hpp"
 #include "nck/nc/block.hpp"
+#include "nck/plc/hli.hpp"
 #include "nck/plc/scenario.hpp"
 #include "nck/spindle/spindle_status.hpp"
 
@@ -58,6 +59,8 @@ class Kernel {
   std::size_t spindle_count() const;
   const std::string& spindle_name(std::size_t index) const;
   const spindle::SpindleStatus& spindle_status(std::size_t index) const;
+  // The HLI image as the PLC sees it (status written every cycle).
+  const plc::HliImage& hli() const;
   // setup: a PLC scenario (--plc); it must stay alive while the kernel runs.
   void load_scenario(const plc::Scenario& scenario);
   double cycle_time_s() const { return cycle_s_; }

@@ -342,6 +342,23 @@ TEST(SpindleScenario, ExternalCommandsRunInOrderOfArrivalEachAcknowledged) {
   EXPECT_DOUBLE_EQ(s1_start, ack_t[0]);
 }
 
+TEST(SpindleScenario, HliPositionsFollowPStup00175) {
+  const std::string prog = "%h\nN10 M19 S.POS=90 S100\nN20 G4 X0.5\nN30 M30\n";
+  const auto dir = temp_dir("hli");
+  RunResult r32 = run(root() + "/examples/mill", prog, "--final " + (dir / "a.json").string());
+  ASSERT_EQ(r32.exit_code, 0) << r32.output;
+  const json a = json::parse(read_file(dir / "a.json"))["hli"];
+  EXPECT_EQ(a["position_format"], "32-bit, 0.0001 deg");
+  EXPECT_NEAR(a["spindles"]["S1"]["actual_pos"].get<double>(), 900000, 2);  // 90 deg
+  EXPECT_EQ(a["spindles"]["S1"]["mode_r"], 8);                               // M19
+  const auto m64 = patched("mill", "hli64", "startup.lis", "ads_32_bit_comp_mode 0");
+  RunResult r64 = run(m64, prog, "--final " + (dir / "b.json").string());
+  ASSERT_EQ(r64.exit_code, 0) << r64.output;
+  const json b = json::parse(read_file(dir / "b.json"))["hli"];
+  EXPECT_EQ(b["position_format"], "64-bit, 1e-7 deg");
+  EXPECT_NEAR(b["spindles"]["S1"]["actual_pos"].get<double>(), 900000000, 2000);
+}
+
 TEST(FitCurve, ReproducesTheSeedCoefficients) {
   const std::string pts = " --n-grenz 12000 --a-konst 16000 --point 24000,8000 --point 36000,4000 --point 48000,2000";
   CliResult poly = run_nck("fit-curve polynomial" + pts);
