@@ -69,6 +69,38 @@ void BM_Decode1MPeakMemory(benchmark::State& state) {
 }
 BENCHMARK(BM_Decode1MPeakMemory)->Unit(benchmark::kMillisecond)->Iterations(1);
 
+// A main program calling one global subroutine file 5,000 times, decoded
+// with and without the file cache (FCT_USE_CACHED_FILES); range(0) = cache on.
+void BM_DecodeRepeatedCalls(benchmark::State& state) {
+  const auto dir = std::filesystem::temp_directory_path() / "nck_bench_calls";
+  std::filesystem::create_directories(dir);
+  {
+    std::FILE* sub = std::fopen((dir / "sub.nc").c_str(), "w");
+    fmt::print(sub, "%sub\n");
+    for (int i = 0; i < 20; ++i) fmt::print(sub, "N{} G1 X{} Y{}\n", i, i, i * 0.5);
+    fmt::print(sub, "M17\n");
+    std::fclose(sub);
+    std::FILE* main = std::fopen((dir / "main.nc").c_str(), "w");
+    fmt::print(main, "%main\nG1 F1000\n$FOR P1 = 1, 5000, 1\nL sub.nc\n$ENDFOR\nM30\n");
+    std::fclose(main);
+  }
+  nck::nc::DecoderConfig c = config();
+  c.use_cached_files = state.range(0) != 0;
+  c.max_cache_number = 4;
+  c.max_cache_size_kb = 1024;
+  std::size_t blocks = 0;
+  for (auto _ : state) {
+    nck::nc::Decoder d(dir / "main.nc", c);
+    for (;;) {
+      auto r = d.next();
+      if (r.status != nck::nc::Decoder::Status::block || r.block.program_end) break;
+      ++blocks;
+    }
+  }
+  state.counters["blocks_per_s"] = benchmark::Counter(static_cast<double>(blocks), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_DecodeRepeatedCalls)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 
 BENCHMARK_MAIN();
