@@ -273,6 +273,14 @@ Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
     c.feed_motion = b.modal.motion != nc::Motion::rapid;
     return plan_motion(b, c, file_name);
   }
+  // P-CHAN-00100 move_tool_offsets_directly 1: a new tool offset is moved
+  // with the D word itself (DIN 66025), at rapid.
+  if (channel_.move_tool_offsets_directly && (b.d || (b.hash && std::holds_alternative<nc::ToolData>(*b.hash)))) {
+    nc::Block move = b;
+    move.modal.motion = nc::Motion::rapid;
+    move.axes = {};
+    return plan_motion(move, c, file_name);
+  }
   c.kind = CommandKind::nop;
   return c;
 }

@@ -258,3 +258,28 @@ TEST(ToolsScenario, ToolLengthG91RuleAndTlc) {
 
 }  // namespace
 }  // namespace nck::app
+
+namespace nck::app {
+namespace {
+
+using namespace testing;
+
+// P-CHAN-00100: 0 (mill default) moves a new tool length at the next absolute
+// position; 1 moves it with the D word.
+TEST(ToolsScenario, MoveToolOffsetsDirectly) {
+  const auto dir = temp_dir("direct");
+  std::filesystem::copy(root() + "/examples/mill", dir / "m", std::filesystem::copy_options::recursive);
+  std::string ch = read_file(dir / "m" / "channel1.lis");
+  ch.insert(ch.rfind("Ende"), "move_tool_offsets_directly 1\n");
+  std::ofstream(dir / "m" / "channel1.lis") << ch;
+  std::ofstream(dir / "p.nc") << "%d\nN10 G0 X0 Y0 Z0\nN20 D1\nN30 G0 X10\nN40 M30\n";
+  CliResult r = run_nck("run " + (dir / "m").string() + " " + (dir / "p.nc").string() + " --events " +
+                        (dir / "e.jsonl").string() + " --trace " + (dir / "t.csv").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto p = positions_at_blocks(dir);
+  EXPECT_NEAR(p.at(30)[2], 100.0, 1e-9);  // the D1 block itself moved Z by the tool length
+  EXPECT_NEAR(p.at(30)[0], 0.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace nck::app
