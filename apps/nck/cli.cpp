@@ -30,6 +30,7 @@ int main_cli(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   runc->add_option("--final", run.final_state, "write the final state as JSON to FILE");
   runc->add_option("--plc", run.plc, "timed HLI actions (docs/plc-scenario.md)");
+  runc->add_option("--report", run.report, "write a self-contained HTML report with plots to FILE");
   runc->add_option("--max-time", run.max_time_s, "simulated-time limit in seconds")
       ->check(CLI::PositiveNumber);
   runc->add_flag("--realtime", run.realtime, "pace the cycles to the wall clock");

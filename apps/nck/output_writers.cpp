@@ -135,8 +135,12 @@ json base_event(const kernel::Event& e) {
 
 }  // namespace
 
-void EventWriter::write(const kernel::Event& e, const RunNames& names) {
-  if (!file_.is_open()) return;
+void EventWriter::write_line(const std::string& line) {
+  file_.write(line);
+  file_.write("\n");
+}
+
+std::string EventWriter::line(const kernel::Event& e, const RunNames& names) {
   json j = base_event(e);
   const std::size_t ch = e.channel > 0 ? e.channel - 1u : 0u;
   using K = kernel::EventKind;
@@ -199,12 +203,10 @@ void EventWriter::write(const kernel::Event& e, const RunNames& names) {
     default:
       break;
   }
-  file_.write(j.dump());
-  file_.write("\n");
+  return j.dump();
 }
 
-void EventWriter::write_diagnostic(double t_s, std::size_t ch, const Diagnostic& d) {
-  if (!file_.is_open()) return;
+std::string EventWriter::line(double t_s, std::size_t ch, const Diagnostic& d) {
   json j;
   j["t"] = t_s;
   j["ch"] = ch + 1;
@@ -213,8 +215,7 @@ void EventWriter::write_diagnostic(double t_s, std::size_t ch, const Diagnostic&
   j["line"] = d.loc.line;
   j["file"] = d.loc.file;
   j["msg"] = d.message;
-  file_.write(j.dump());
-  file_.write("\n");
+  return j.dump();
 }
 
 std::vector<std::string> TraceWriter::column_names(const config::Machine& m) {

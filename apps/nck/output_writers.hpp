@@ -46,9 +46,11 @@ class EventWriter {
  public:
   bool open(const std::string& path) { return file_.open(path); }
   bool is_open() const { return file_.is_open(); }
-  void write(const kernel::Event& e, const RunNames& names);
+  // An event as one JSON line (without the newline).
+  static std::string line(const kernel::Event& e, const RunNames& names);
   // A diagnostic that does not come from the cycle (decoder warnings).
-  void write_diagnostic(double t_s, std::size_t ch, const Diagnostic& d);
+  static std::string line(double t_s, std::size_t ch, const Diagnostic& d);
+  void write_line(const std::string& line);
   void close() { file_.close(); }
 
  private:

@@ -15,6 +15,7 @@
 #include "nck/plc/scenario.hpp"
 #include "nck/kernel/decoder_setup.hpp"
 #include "output_writers.hpp"
+#include "report_writer.hpp"
 
 namespace nck::app {
 namespace {
@@ -32,7 +33,15 @@ struct Feed {
 struct Outputs {
   EventWriter events;
   TraceWriter trace;
+  ReportWriter report;
   std::vector<FinalError> errors;
+
+  // Events are rendered only when a file wants them.
+  bool wants_events() const { return events.is_open() || report.enabled(); }
+  void event(const std::string& line, bool is_error) {
+    events.write_line(line);
+    report.event(line, is_error);
+  }
 };
 
 bool print_load_diagnostics(const config::LoadResult& r) {
@@ -48,7 +57,7 @@ void report_new_warnings(Feed& f, std::size_t ch, double t_s, Outputs& out) {
     const Diagnostic& d = ds[f.diagnostics_seen];
     if (d.severity != Severity::warning) continue;
     fmt::print(stderr, "{}\n", format(d));
-    out.events.write_diagnostic(t_s, ch, d);
+    if (out.wants_events()) out.event(EventWriter::line(t_s, ch, d), false);
   }
 }
 
@@ -81,7 +90,7 @@ void feed_channel(kernel::Kernel& k, std::size_t ch, Feed& f, double t_s, Output
 
 void record_events(const kernel::TickOutput& o, const RunNames& names, Outputs& out) {
   for (const kernel::Event& e : o.events) {
-    out.events.write(e, names);
+    if (out.wants_events()) out.event(EventWriter::line(e, names), e.kind == kernel::EventKind::error);
     if (e.kind != kernel::EventKind::error) continue;
     const std::size_t ch = e.channel - 1u;
     FinalError fe{number(e.id), e.channel, e.line, names.file(ch, e.file_id), names.text(e)};
@@ -157,6 +166,7 @@ int run_simulation(const RunOptions& opt) {
     fmt::print(stderr, "nck: error 940002: cannot write the output files ({} / {})\n", opt.events, opt.trace);
     return 2;
   }
+  out.report.start(m, opt.programs, !opt.report.empty());
   std::vector<Feed> feeds;
   RunNames names;
   names.kernel = &k;
@@ -184,6 +194,7 @@ int run_simulation(const RunOptions& opt) {
     k.tick(in, o);
     record_events(o, names, out);
     out.trace.write(k.cycles() - 1, o);
+    out.report.sample(o);
     bool done = true;
     for (std::size_t ch = 0; ch < opt.programs.size(); ++ch) done = done && k.channel_done(ch);
     if (done) break;
@@ -204,21 +215,26 @@ int run_simulation(const RunOptions& opt) {
       e.channel = static_cast<std::uint8_t>(ch + 1);
       e.kind = kernel::EventKind::end;
       e.end_reason = kernel::EndReason::max_time;
-      out.events.write(e, names);
+      out.event(EventWriter::line(e, names), false);
     }
     fmt::print(stderr, "nck: the simulated-time limit of {} s was reached before the program end\n",
                opt.max_time_s);
   }
   out.events.close();
   out.trace.close();
+  bool aborted = time_limit;
+  for (std::size_t ch = 0; ch < k.channel_count(); ++ch)
+    aborted = aborted || k.snapshot(ch).status == kernel::ChannelStatus::aborted;
+  const int exit_code = aborted ? 1 : 0;
+  if (!opt.report.empty() && !out.report.write(opt.report, end_s, exit_code)) {
+    fmt::print(stderr, "nck: error 940002: cannot write {}\n", opt.report);
+    return 2;
+  }
   if (!opt.final_state.empty() && !write_final(opt.final_state, m, k, end_s, out.errors)) {
     fmt::print(stderr, "nck: error 940002: cannot write {}\n", opt.final_state);
     return 2;
   }
-  bool aborted = time_limit;
-  for (std::size_t ch = 0; ch < k.channel_count(); ++ch)
-    aborted = aborted || k.snapshot(ch).status == kernel::ChannelStatus::aborted;
-  return aborted ? 1 : 0;
+  return exit_code;
 }
 
 }  // namespace nck::app

@@ -9,7 +9,8 @@ struct RunOptions {
   std::string machine;
   std::vector<std::string> programs;  // program i runs in channel i+1
   std::string events, trace, final_state;
-  std::string plc;  // --plc scenario file
+  std::string plc;     // --plc scenario file
+  std::string report;  // --report FILE.html
   std::uint64_t trace_every = 1;
   double max_time_s = 86400;  // simulated seconds
   std::uint32_t clamp_index = 0;  // clamp-offset group (pzv_grp) at program start
