@@ -218,9 +218,21 @@ std::string EventWriter::line(double t_s, std::size_t ch, const Diagnostic& d) {
   return j.dump();
 }
 
+namespace {
+bool has_dist_ctrl(const config::ChannelConfig& ch) {
+  return (ch.decoder_function & config::decoder_fct::FCT_3D_DIST_CTRL) != 0;
+}
+}  // namespace
+
 std::vector<std::string> TraceWriter::column_names(const config::Machine& m) {
   std::vector<std::string> cols{"t"};
   for (const std::string& a : path_axis_columns(m)) cols.push_back(a);
+  bool first = true;  // dist.offset, then 2.dist.offset ... for later channels
+  for (std::size_t c = 0; c < m.channels.size(); ++c) {
+    if (!has_dist_ctrl(m.channels[c])) continue;
+    cols.push_back(first ? std::string("dist.offset") : fmt::format("{}.dist.offset", c + 1));
+    first = false;
+  }
   for (const SpindleName& s : machine_spindles(m)) {
     cols.push_back(s.name + ".rpm");
     cols.push_back(s.name + ".pos");
@@ -234,7 +246,11 @@ bool TraceWriter::open(const std::string& path, const config::Machine& m, std::u
   if (!file_.open(path)) return false;
   every_ = every == 0 ? 1 : every;
   axes_per_channel_.clear();
-  for (const auto& ch : m.channels) axes_per_channel_.push_back(ch.axes.size());
+  dist_ctrl_.clear();
+  for (const auto& ch : m.channels) {
+    axes_per_channel_.push_back(ch.axes.size());
+    dist_ctrl_.push_back(has_dist_ctrl(ch));
+  }
   speed_controlled_.clear();
   for (const SpindleName& s : machine_spindles(m)) speed_controlled_.push_back(s.speed_controlled);
   spindle_count_ = speed_controlled_.size();
@@ -251,6 +267,8 @@ void TraceWriter::write(std::uint64_t cycle, const kernel::TickOutput& out) {
   for (std::size_t c = 0; c < axes_per_channel_.size(); ++c)
     for (std::size_t j = 0; j < axes_per_channel_[c]; ++j)
       fmt::format_to(std::back_inserter(row_), ",{:.6f}", out.channels[c].axis_mcs[j]);
+  for (std::size_t c = 0; c < dist_ctrl_.size(); ++c)
+    if (dist_ctrl_[c]) fmt::format_to(std::back_inserter(row_), ",{:.6f}", out.channels[c].dist_offset_mm);
   for (std::size_t s = 0; s < spindle_count_; ++s) {
     const kernel::SpindleOutput& o = out.spindles[s];
     fmt::format_to(std::back_inserter(row_), ",{:.3f},{:.4f},{:.3f}", o.set_rpm, o.set_pos_deg, o.act_rpm);

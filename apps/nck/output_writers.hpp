@@ -72,6 +72,7 @@ class TraceWriter {
   std::vector<std::size_t> axes_per_channel_;
   std::size_t spindle_count_ = 0;
   std::vector<bool> speed_controlled_;
+  std::vector<bool> dist_ctrl_;  // per channel: FCT_3D_DIST_CTRL configured
   std::string row_;
 };
 

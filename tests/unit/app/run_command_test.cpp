@@ -49,6 +49,8 @@ TEST(RunCommand, MillExampleRunsToM30WithAllOutputs) {
   EXPECT_EQ(header[3], "Z");
   EXPECT_NE(std::find(header.begin(), header.end(), "S1.rpm"), header.end());
   EXPECT_NE(std::find(header.begin(), header.end(), "S2.act_rpm"), header.end());
+  // the mill configures 3D distance control (FCT_3D_DIST_CTRL): its offset is traced
+  EXPECT_NE(std::find(header.begin(), header.end(), "dist.offset"), header.end());
   for (std::size_t i = 1; i < lines.size(); ++i) EXPECT_EQ(split(lines[i], ',').size(), header.size());
   // final state: X0 Y0 and Z at 10 + 20 (G91 retract) ... whatever the program says
   const json fin = json::parse(read_file(f.final_state));
