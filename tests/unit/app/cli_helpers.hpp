@@ -1,5 +1,6 @@
 #pragma once
 // Running the nck binary from tests and reading what it wrote.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -84,6 +85,25 @@ inline std::map<long, std::array<double, 3>> positions_at_blocks(const std::file
       out[e["n"].get<long>()] = ms == 0 ? std::array<double, 3>{} : by_ms.at(ms - 1);
     }
   return out;
+}
+
+// A copy of an example machine (in dir/name) with `lines` added before the
+// final "Ende" of one list; returns the folder and the first added line's number.
+struct PatchedMachine {
+  std::filesystem::path dir;
+  std::size_t line = 0;
+};
+inline PatchedMachine patched_example(const std::string& example, const std::string& name,
+                                      const std::string& file, const std::string& lines) {
+  const auto dir = temp_dir(name) / example;
+  std::filesystem::copy(root() + "/examples/" + example, dir, std::filesystem::copy_options::recursive);
+  std::string text = read_file(dir / file);
+  std::size_t at = text.rfind("Ende");
+  if (at == std::string::npos) at = text.size();
+  const auto line = static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n')) + 1;
+  text.insert(at, lines + "\n");
+  std::ofstream(dir / file) << text;
+  return {dir, line};
 }
 
 // Runs an example program with events and an every-cycle trace into dir.

@@ -60,32 +60,8 @@ TEST(Docs, ParametersMarkdownIsUpToDate) {
       << "regenerate with: nck params > docs/parameters.md";
 }
 
-}  // namespace
-}  // namespace nck::app
-
-namespace nck::app {
-namespace {
-
-using namespace testing;
-
-// A copy of the mill with one line added before the final "Ende" of a list;
-// returns the folder and the added line's number.
-std::pair<std::filesystem::path, std::size_t> broken_mill(const std::string& name,
-                                                          const std::string& file,
-                                                          const std::string& extra_line) {
-  const auto dir = temp_dir(name);
-  std::filesystem::copy(root() + "/examples/mill", dir, std::filesystem::copy_options::recursive);
-  std::vector<std::string> lines = split(read_file(dir / file), '\n');
-  auto ende = std::find(lines.begin(), lines.end(), "Ende");
-  const auto at = static_cast<std::size_t>(ende - lines.begin());
-  lines.insert(ende, extra_line);
-  std::ofstream out(dir / file);
-  for (const std::string& l : lines) out << l << "\n";
-  return {dir, at + 1};
-}
-
 TEST(CheckCommand, ReportsPlausibilityErrorAtFileAndLine) {
-  const auto [dir, line] = broken_mill("check_err", "x.lis", "kenngr.ref_ohne_nocken 1");
+  const auto [dir, line] = patched_example("mill", "check_err", "x.lis", "kenngr.ref_ohne_nocken 1");
   CliResult r = run_nck("check " + dir.string());
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("x.lis:" + std::to_string(line) + ": error 910018:"), std::string::npos)
@@ -93,7 +69,7 @@ TEST(CheckCommand, ReportsPlausibilityErrorAtFileAndLine) {
 }
 
 TEST(CheckCommand, WarningsAloneExitZero) {
-  const auto [dir, line] = broken_mill("check_warn", "x.lis", "getriebe[0].wegaufz 0");
+  const auto [dir, line] = patched_example("mill", "check_warn", "x.lis", "getriebe[0].wegaufz 0");
   CliResult r = run_nck("check " + dir.string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("x.lis:" + std::to_string(line) + ": warning 110386:"), std::string::npos)
@@ -101,7 +77,7 @@ TEST(CheckCommand, WarningsAloneExitZero) {
 }
 
 TEST(CheckCommand, UnknownKeyNamesTheNearestKnownKey) {
-  const auto [dir, line] = broken_mill("check_unknown", "x.lis", "getriebe[0].dynamik.vb_maks 1000");
+  const auto [dir, line] = patched_example("mill", "check_unknown", "x.lis", "getriebe[0].dynamik.vb_maks 1000");
   CliResult r = run_nck("check " + dir.string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("x.lis:" + std::to_string(line) + ": warning 910002"), std::string::npos)

@@ -67,14 +67,6 @@ TEST(OffsetsScenario, ClampIndexShiftsEveryPathAxisFromTheStart) {
   EXPECT_NEAR(fin["channels"][0]["offsets"]["clamp"]["X"].get<double>(), 10.0, 1e-9);
 }
 
-}  // namespace
-}  // namespace nck::app
-
-namespace nck::app {
-namespace {
-
-using namespace testing;
-using nlohmann::json;
 
 TEST(MeasureScenario, G100StopsAtTheProbeAndG101OffsetsByTheDifference) {
   const auto dir = temp_dir("measure");
@@ -113,14 +105,6 @@ TEST(MeasureScenario, G101WithNothingMeasuredIsAnError) {
   EXPECT_TRUE(found) << r.output;
 }
 
-}  // namespace
-}  // namespace nck::app
-
-namespace nck::app {
-namespace {
-
-using namespace testing;
-using nlohmann::json;
 
 json run_manual(const std::string& name, const std::string& scenario) {
   const auto dir = temp_dir(name);
@@ -146,14 +130,6 @@ TEST(ManualScenario, HandwheelOutsideManualModeDoesNothing) {
   EXPECT_NEAR(fin["channels"][0]["axes"]["Y"]["mcs"].get<double>(), 0.0, 1e-9);
 }
 
-}  // namespace
-}  // namespace nck::app
-
-namespace nck::app {
-namespace {
-
-using namespace testing;
-using nlohmann::json;
 
 struct Outcome {
   int exit_code;
@@ -221,13 +197,6 @@ TEST(OffsetVariables, WritingTheZeroTableMovesTheNextAbsolutePosition) {
   EXPECT_NEAR(o.final_state["channels"][0]["axes"]["X"]["mcs"].get<double>(), 20.0, 1e-9);
 }
 
-}  // namespace
-}  // namespace nck::app
-
-namespace nck::app {
-namespace {
-
-using namespace testing;
 
 TEST(CoordinatesScenario, CsChainAcsAndMcsMatchHandComputation) {
   const auto dir = temp_dir("coordinates");
@@ -256,24 +225,14 @@ TEST(ToolsScenario, ToolLengthG91RuleAndTlc) {
   EXPECT_NEAR(p.at(110)[2], 0.0, 1e-9);   // D0
 }
 
-}  // namespace
-}  // namespace nck::app
-
-namespace nck::app {
-namespace {
-
-using namespace testing;
 
 // P-CHAN-00100: 0 (mill default) moves a new tool length at the next absolute
 // position; 1 moves it with the D word.
 TEST(ToolsScenario, MoveToolOffsetsDirectly) {
-  const auto dir = temp_dir("direct");
-  std::filesystem::copy(root() + "/examples/mill", dir / "m", std::filesystem::copy_options::recursive);
-  std::string ch = read_file(dir / "m" / "channel1.lis");
-  ch.insert(ch.rfind("Ende"), "move_tool_offsets_directly 1\n");
-  std::ofstream(dir / "m" / "channel1.lis") << ch;
+  const auto machine = patched_example("mill", "direct", "channel1.lis", "move_tool_offsets_directly 1").dir;
+  const auto dir = machine.parent_path();
   std::ofstream(dir / "p.nc") << "%d\nN10 G0 X0 Y0 Z0\nN20 D1\nN30 G0 X10\nN40 M30\n";
-  CliResult r = run_nck("run " + (dir / "m").string() + " " + (dir / "p.nc").string() + " --events " +
+  CliResult r = run_nck("run " + machine.string() + " " + (dir / "p.nc").string() + " --events " +
                         (dir / "e.jsonl").string() + " --trace " + (dir / "t.csv").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto p = positions_at_blocks(dir);

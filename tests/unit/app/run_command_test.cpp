@@ -142,13 +142,6 @@ TEST(RunCommand, UnwritableOutputIsExit2) {
   EXPECT_NE(r.output.find("940002"), std::string::npos);
 }
 
-}  // namespace
-}  // namespace nck::app
-
-namespace nck::app {
-namespace {
-
-using namespace testing;
 
 std::size_t count(const std::string& s, const std::string& what) {
   std::size_t n = 0;

@@ -14,16 +14,9 @@ namespace {
 using namespace testing;
 using nlohmann::json;
 
-// A copy of an example machine with extra lines added before "Ende" of one list.
 std::filesystem::path patched(const std::string& example, const std::string& name,
                               const std::string& file, const std::string& lines) {
-  const auto dir = temp_dir(name);
-  std::filesystem::copy(root() + "/examples/" + example, dir, std::filesystem::copy_options::recursive);
-  std::string text = read_file(dir / file);
-  const auto ende = text.rfind("Ende");
-  text.insert(ende == std::string::npos ? text.size() : ende, lines + "\n");
-  std::ofstream(dir / file) << text;
-  return dir;
+  return patched_example(example, name, file, lines).dir;
 }
 
 struct RunResult {

@@ -26,13 +26,10 @@ struct Timeline {
 };
 
 Timeline run_with(const std::string& sync, const std::string& name) {
-  const auto dir = temp_dir(name);
-  std::filesystem::copy(root() + "/examples/mill", dir / "m", std::filesystem::copy_options::recursive);
-  std::string ch = read_file(dir / "m" / "channel1.lis");
-  ch.insert(ch.rfind("Ende"), "spindel[0].m3_synch " + sync + "\n");
-  std::ofstream(dir / "m" / "channel1.lis") << ch;
+  const auto machine = patched_example("mill", name, "channel1.lis", "spindel[0].m3_synch " + sync).dir;
+  const auto dir = machine.parent_path();
   std::ofstream(dir / "p.nc") << kProgram;
-  CliResult r = run_nck("run " + (dir / "m").string() + " " + (dir / "p.nc").string() + " --events " +
+  CliResult r = run_nck("run " + machine.string() + " " + (dir / "p.nc").string() + " --events " +
                         (dir / "e.jsonl").string());
   EXPECT_EQ(r.exit_code, 0) << sync << "\n" << r.output;
   Timeline tl;
@@ -105,14 +102,6 @@ TEST(SyncTypes, PlcInfoAddsTheAcknowledgement) {
   EXPECT_EQ(t.waits[0].first, 3);
 }
 
-}  // namespace
-}  // namespace nck::app
-
-namespace nck::app {
-namespace {
-
-using namespace testing;
-using nlohmann::json;
 
 // Channel M functions synchronise by m_synch[n] (mill: M6 MVS_SVS with a
 // 1.5 s acknowledgement in sim.lis, M8 MOS, M10 PLC_INFO MVS_SNS).
