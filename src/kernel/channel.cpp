@@ -13,10 +13,6 @@ Channel::Channel(const config::Machine& machine, std::size_t index, PlanStore& s
   planner_.set_measurement(&measure_);
 }
 
-void Channel::emit(TickOutput& sink, const Event& e) noexcept {
-  if (!sink.events.push_back(e)) ++sink.events_dropped;
-}
-
 Event Channel::event(EventKind k, double t_s) const noexcept {
   Event e;
   e.t_s = t_s;
@@ -32,7 +28,7 @@ Event Channel::event(EventKind k, double t_s) const noexcept {
 void Channel::finish(EndReason reason, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept {
   Event e = event(EventKind::end, t_s);
   e.end_reason = reason;
-  emit(sink, e);
+  sink.emit(e);
   const bool ok = reason == EndReason::m30 || reason == EndReason::m2;
   status_ = ok ? ChannelStatus::ended : ChannelStatus::aborted;
   active_ = false;
@@ -58,7 +54,7 @@ void Channel::raise(ErrorId id, std::uint32_t message, double t_s, TickOutput& s
   Event e = event(EventKind::error, t_s);
   e.id = id;
   e.message_index = message;
-  emit(sink, e);
+  sink.emit(e);
   finish(EndReason::error, t_s, sink, ctx);
 }
 
@@ -66,17 +62,17 @@ void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelConte
   current_ = c;
   active_ = true;
   phase_ = Phase::pre_wait;
-  if (c.emit_block_event) emit(sink, event(EventKind::block, t_s));
+  if (c.emit_block_event) sink.emit(event(EventKind::block, t_s));
   for (const Command::Warning& w : c.warnings) {
     Event e = event(EventKind::warning, t_s);
     e.id = w.id;
     e.message_index = w.message_index;
-    emit(sink, e);
+    sink.emit(e);
   }
   for (std::uint32_t payload : c.offset_events) {
     Event e = event(EventKind::offset, t_s);
     e.message_index = payload;
-    emit(sink, e);
+    sink.emit(e);
   }
   if (c.kind == CommandKind::error) {
     raise(c.error_id, c.message_index, t_s, sink, ctx);
@@ -170,7 +166,7 @@ void Channel::complete(double t_s, TickOutput& sink, ChannelContext& ctx) noexce
   active_ = false;
   if (current_.kind == CommandKind::stop) {
     // A dry run has no operator: the stop is reported and the program goes on.
-    emit(sink, event(EventKind::stop, t_s));
+    sink.emit(event(EventKind::stop, t_s));
   } else if (current_.kind == CommandKind::end) {
     finish(current_.end_reason, t_s, sink, ctx);
   }

@@ -99,7 +99,6 @@ class Channel {
   void finish(EndReason reason, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
   void raise(ErrorId id, std::uint32_t message, double t_s, TickOutput& sink,
              ChannelContext& ctx) noexcept;
-  void emit(TickOutput& sink, const Event& e) noexcept;
   Event event(EventKind k, double t_s) const noexcept;
 
   // synchronisation (channel_sync.cpp)

@@ -5,15 +5,6 @@
 namespace nck::kernel {
 namespace {
 
-plc::TechKind tech_kind(FunctionKind fn) {
-  switch (fn) {
-    case FunctionKind::h: return plc::TechKind::h;
-    case FunctionKind::s: return plc::TechKind::s;
-    case FunctionKind::t: return plc::TechKind::t;
-    default: return plc::TechKind::m;
-  }
-}
-
 FunctionKind function_kind(char fn) {
   return fn == 'S' ? FunctionKind::s : fn == 'H' ? FunctionKind::h : FunctionKind::m;
 }
@@ -118,7 +109,7 @@ bool Channel::issue_spindle(const SpindleAction& a, double t_s, TickOutput& sink
     e.id = r.id;
     e.message_index = kNoMessage;
     e.spindle = a.spindle;
-    emit(sink, e);
+    sink.emit(e);
   }
   if (a.op == SpindleOp::gear_change) {
     u.gear_job = GearJob::approaching;
@@ -152,7 +143,7 @@ bool Channel::issue_spindle(const SpindleAction& a, double t_s, TickOutput& sink
     e.spindle = a.spindle;
     e.value = o.value;
     e.sync = a.sync_bits;
-    emit(sink, e);
+    sink.emit(e);
   }
   if (w.what != SpindleWait::none || w.handle != plc::kNoHandle) add_wait(w, a.sync);
   return true;
@@ -177,7 +168,7 @@ void Channel::issue_output(const Output& o, double t_s, TickOutput& sink, Channe
   e.fn = o.fn;
   e.fn_number = o.number;
   e.sync = o.sync;
-  emit(sink, e);
+  sink.emit(e);
   add_wait(w, sync_point(o.sync).value_or(SyncPoint::none));
 }
 
@@ -241,7 +232,7 @@ bool Channel::waits_done(SyncPoint phase, double t_s, TickOutput& sink, ChannelC
     if (satisfied(w, ctx) || (w.announced && now != w.reason)) {
       if (w.announced) {  // ends the wait, or its reason changes (PLC acknowledged, speed not yet)
         e.kind = EventKind::wait_end;
-        emit(sink, e);
+        sink.emit(e);
         w.announced = false;
       }
       if (satisfied(w, ctx)) continue;
@@ -261,7 +252,7 @@ bool Channel::waits_done(SyncPoint phase, double t_s, TickOutput& sink, ChannelC
       return false;
     }
     if (!w.announced) {
-      emit(sink, e);
+      sink.emit(e);
       w.announced = true;
     }
     waits_[keep++] = w;

@@ -7,23 +7,6 @@
 #include "spindle_unit.hpp"
 
 namespace nck::kernel {
-namespace {
-
-FunctionKind function_kind(plc::TechKind k) {
-  switch (k) {
-    case plc::TechKind::h: return FunctionKind::h;
-    case plc::TechKind::s: return FunctionKind::s;
-    case plc::TechKind::t: return FunctionKind::t;
-    case plc::TechKind::m: break;
-  }
-  return FunctionKind::m;
-}
-
-void push(TickOutput& out, const Event& e) noexcept {
-  if (!out.events.push_back(e)) ++out.events_dropped;
-}
-
-}  // namespace
 
 void Kernel::tick_plc(double t_s, TickOutput& out) noexcept {
   KernelPlc& p = *plc_;
@@ -36,7 +19,7 @@ void Kernel::tick_plc(double t_s, TickOutput& out) noexcept {
       e.kind = EventKind::warning;
       e.id = ErrorId::PlcExtCommandQueueFull;
       e.message_index = kNoMessage;
-      push(out, e);
+      out.emit(e);
     }
   }
   p.sim.tick(t_s);
@@ -50,7 +33,7 @@ void Kernel::tick_plc(double t_s, TickOutput& out) noexcept {
     e.fn = function_kind(a.output.kind);
     e.fn_number = a.output.number;
     e.spindle = p.map.at(a.output.channel, a.output.spindle);
-    push(out, e);
+    out.emit(e);
     for (auto& c : channels_) c->on_ack(a.handle);
     for (SpindleUnit& u : spindles_)
       if (u.gear_handle == a.handle) u.gear_acked = true;
@@ -89,7 +72,7 @@ void Kernel::tick_external_commands(double t_s, TickOutput& out) noexcept {
     e.fn = FunctionKind::m;
     e.fn_number = u.ext_m;
     e.spindle = static_cast<std::int8_t>(i);
-    push(out, e);
+    out.emit(e);
   }
   // Strictly in order of arrival: the next command waits until the last one is done.
   for (const SpindleUnit& u : spindles_)
@@ -122,7 +105,7 @@ void Kernel::tick_external_commands(double t_s, TickOutput& out) noexcept {
     e.id = r.id;
     e.message_index = kNoMessage;
     e.spindle = k;
-    push(out, e);
+    out.emit(e);
   }
 }
 

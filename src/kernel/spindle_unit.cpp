@@ -5,10 +5,6 @@
 namespace nck::kernel {
 namespace {
 
-void push(TickOutput& out, const Event& e) noexcept {
-  if (!out.events.push_back(e)) ++out.events_dropped;
-}
-
 Event spindle_event(const SpindleUnit& u, std::int8_t index, double t_s, EventKind k) noexcept {
   Event e;
   e.t_s = t_s;
@@ -27,7 +23,7 @@ void report_spindle_changes(SpindleUnit& u, std::int8_t index, double t_s, TickO
     e.spindle_mode = static_cast<std::uint8_t>(s.mode);
     e.value = s.cmd_rpm;
     e.gear = s.gear_stage;
-    push(out, e);
+    out.emit(e);
     u.last_mode = s.mode;
     u.last_cmd_rpm = s.cmd_rpm;
   }
@@ -35,14 +31,14 @@ void report_spindle_changes(SpindleUnit& u, std::int8_t index, double t_s, TickO
   if (reached && !u.last_speed_reached) {
     Event e = spindle_event(u, index, t_s, EventKind::speed_reached);
     e.value = s.act_rpm;
-    push(out, e);
+    out.emit(e);
   }
   u.last_speed_reached = reached;
   if (s.error != ErrorId{} && s.error != u.last_error) {
     Event e = spindle_event(u, index, t_s, EventKind::error);
     e.id = s.error;
     e.message_index = kNoMessage;
-    push(out, e);
+    out.emit(e);
   }
   u.last_error = s.error;
 }
@@ -62,7 +58,7 @@ void advance_gear_job(SpindleUnit& u, std::int8_t index, plc::PlcSim& plc, doubl
     e.fn = FunctionKind::m;
     e.fn_number = m;
     e.sync = config::sync::MVS_SVS;
-    push(out, e);
+    out.emit(e);
     u.gear_job = GearJob::shifting;
   } else if (u.gear_job == GearJob::shifting && u.gear_acked) {
     (void)u.axis.finish_gear_change();
@@ -70,7 +66,7 @@ void advance_gear_job(SpindleUnit& u, std::int8_t index, plc::PlcSim& plc, doubl
     e.gear = u.gear_stage;
     e.fn = FunctionKind::m;
     e.fn_number = m;
-    push(out, e);
+    out.emit(e);
     u.last_gear = u.gear_stage;
     u.gear_job = GearJob::done;
   }

@@ -45,6 +45,11 @@ struct TickOutput {
   std::array<SpindleOutput, kMaxMachineSpindles> spindles{};  // by kernel spindle index
   FixedVector<Event, kMaxEventsPerTick> events;
   std::uint32_t events_dropped = 0;  // events that did not fit this cycle
+
+  // Adds an event, or counts it as dropped when the cycle's list is full. rt
+  void emit(const Event& e) noexcept {
+    if (!events.push_back(e)) ++events_dropped;
+  }
 };
 
 }  // namespace nck::kernel
