@@ -1,5 +1,7 @@
 #include "machine_names.hpp"
 
+#include "nck/plc/hli.hpp"
+
 #include <algorithm>
 #include <fmt/format.h>
 
@@ -19,17 +21,19 @@ std::vector<std::string> path_axis_columns(const config::Machine& m) {
   return cols;
 }
 
+// In the kernel's spindle order (plc::build_spindle_map), so position i is
+// TickOutput::spindles[i].
 std::vector<SpindleName> machine_spindles(const config::Machine& m) {
-  std::vector<SpindleName> out;
+  const plc::SpindleMap map = plc::build_spindle_map(m);
+  std::vector<SpindleName> out(map.count);
   for (std::size_t c = 0; c < m.channels.size(); ++c)
-    for (const auto& s : m.channels[c].spindles) {
-      const bool known = std::any_of(out.begin(), out.end(), [&](const SpindleName& o) {
-        return s.log_axis_nr != 0 ? o.log_axis_nr == s.log_axis_nr : o.name == s.name;
-      });
-      if (known) continue;
+    for (std::size_t i = 0; i < m.channels[c].spindles.size(); ++i) {
+      const std::int8_t k = map.at(c + 1, static_cast<std::int32_t>(i));
+      if (k < 0 || !out[static_cast<std::size_t>(k)].name.empty()) continue;
+      const config::ChannelSpindle& s = m.channels[c].spindles[i];
       const bool open_loop =
           s.axis_index >= 0 && m.axes[static_cast<std::size_t>(s.axis_index)].is_speed_controlled();
-      out.push_back({s.name, s.log_axis_nr, c, open_loop});
+      out[static_cast<std::size_t>(k)] = {s.name, s.log_axis_nr, c, open_loop};
     }
   return out;
 }

@@ -70,8 +70,9 @@ void ReportWriter::start(const config::Machine& m, std::vector<std::string> prog
   programs_ = std::move(programs);
   for (const std::string& name : path_axis_columns(m)) series_.push_back({name, "mm / deg", {}});
   for (const auto& ch : m.channels) axis_count_.push_back(ch.axes.size());
-  for (const SpindleName& s : machine_spindles(m)) series_.push_back({s.name + ".rpm", "rpm", {}});
-  spindle_count_ = machine_spindles(m).size();
+  const std::vector<SpindleName> spindles = machine_spindles(m);
+  for (const SpindleName& s : spindles) series_.push_back({s.name + ".rpm", "rpm", {}});
+  spindle_count_ = spindles.size();
 }
 
 void ReportWriter::sample(const kernel::TickOutput& out) {
