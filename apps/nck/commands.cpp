@@ -5,7 +5,7 @@
 
 #include "nck/config/load.hpp"
 #include "nck/config/parameter_registry.hpp"
-#include "nck/kernel/decoder_setup.hpp"
+#include "nck/prep/decoder_setup.hpp"
 #include "nck/nc/block_json.hpp"
 #include "nck/spindle/accel_curve.hpp"
 
@@ -46,7 +46,7 @@ int parse_program(const ParseOptions& opt) {
       fmt::print(stderr, "nck: error 940001: cannot use channel {} of machine {}\n", opt.channel, opt.machine);
       return 2;
     }
-    cfg = kernel::decoder_config(*r.machine, opt.channel - 1);
+    cfg = prep::decoder_config(*r.machine, opt.channel - 1);
   }
   cfg.continue_after_error = true;  // lint: report every bad block, not only the first
   nc::Decoder dec(opt.program, cfg);

@@ -41,13 +41,14 @@ json modal_json(const nc::ModalState& m) {
 
 }  // namespace
 
-bool write_final(const std::string& path, const config::Machine& m, const kernel::Kernel& k,
+bool write_final(const std::string& path, const config::Machine& m, const sim::DryRun& run,
                  double time_s, const std::vector<FinalError>& errors) {
+  const kernel::Kernel& k = run.kernel();
   File f;
   if (!f.open(path)) return false;
   json channels = json::array();
   for (std::size_t c = 0; c < m.channels.size() && c < k.channel_count(); ++c) {
-    const kernel::ChannelSnapshot s = k.snapshot(c);
+    const sim::ChannelSnapshot s = run.snapshot(c);
     json axes = json::object();
     for (std::size_t j = 0; j < m.channels[c].axes.size(); ++j)
       axes[m.channels[c].axes[j].name] = json{{"mcs", s.axis_mcs[j]}, {"pcs", s.axis_pcs[j]}};
@@ -74,7 +75,7 @@ bool write_final(const std::string& path, const config::Machine& m, const kernel
                                        {"homed", st.homed}};
   }
   // The spindles' HLI status objects, positions in the format P-STUP-00175 selects.
-  const plc::HliImage& h = k.hli();
+  const plc::HliImage& h = run.machine().hli();
   const plc::PositionFormat fmt_pos = plc::position_format(h.ads_32_bit_comp_mode);
   json hli_spindles = json::object();
   for (std::size_t i = 0; i < k.spindle_count(); ++i) {

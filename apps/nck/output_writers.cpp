@@ -1,6 +1,5 @@
 #include "output_writers.hpp"
 
-#include "nck/kernel/plan_store.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -14,20 +13,20 @@ namespace nck::app {
 using json = nlohmann::ordered_json;
 
 nlohmann::ordered_json RunNames::spindle(std::int8_t index) const {
-  if (index < 0 || !kernel || static_cast<std::size_t>(index) >= kernel->spindle_count()) return nullptr;
-  return kernel->spindle_name(static_cast<std::size_t>(index));
+  if (index < 0 || !run || static_cast<std::size_t>(index) >= run->kernel().spindle_count()) return nullptr;
+  return run->kernel().spindle_name(static_cast<std::size_t>(index));
 }
 
 std::string RunNames::text(const kernel::Event& e) const {
-  if (e.message_index != kernel::kNoMessage && kernel) return kernel->message(e.message_index);
+  if (e.message_index != kernel::kNoMessage && run) return run->message(e.message_index);
   const ErrorInfo* info = find_error(e.id);
   return info ? fmt::format("{}: {}", info->text, info->remedy) : std::string();
 }
 
 const std::string& RunNames::file(std::size_t ch, std::uint16_t id) const {
   static const std::string unknown;
-  if (ch >= decoders.size() || decoders[ch] == nullptr) return unknown;
-  return decoders[ch]->file_name(id);
+  const nc::Decoder* d = run && ch < run->channel_count() ? run->prep(ch).decoder() : nullptr;
+  return d ? d->file_name(id) : unknown;
 }
 
 File::~File() { close(); }
@@ -192,7 +191,7 @@ std::string EventWriter::line(const kernel::Event& e, const RunNames& names) {
       j["reason"] = end_name(e.end_reason);
       break;
     case K::offset: {
-      const kernel::OffsetPayload& p = names.kernel->offset(e.message_index);
+      const prep::OffsetPayload& p = names.run->offset(e.message_index);
       j["kind"] = p.kind;
       json values = json::object();
       for (const auto& [axis, v] : p.values) values[axis] = v;

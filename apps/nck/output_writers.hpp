@@ -11,13 +11,13 @@
 #include "nck/config/machine.hpp"
 #include "nck/kernel/kernel.hpp"
 #include "nck/nc/decoder.hpp"
+#include "nck/sim/dry_run.hpp"
 
 namespace nck::app {
 
 // Names a decoded file id / event text for output.
 struct RunNames {
-  std::vector<const nc::Decoder*> decoders;  // per channel
-  const kernel::Kernel* kernel = nullptr;
+  const sim::DryRun* run = nullptr;
   const std::string& file(std::size_t ch, std::uint16_t id) const;
   // A spindle's designation, or null.
   nlohmann::ordered_json spindle(std::int8_t index) const;
@@ -83,7 +83,7 @@ struct FinalError {
   std::string file, msg;
 };
 
-bool write_final(const std::string& path, const config::Machine& m, const kernel::Kernel& k,
+bool write_final(const std::string& path, const config::Machine& m, const sim::DryRun& run,
                  double time_s, const std::vector<FinalError>& errors);
 
 }  // namespace nck::app

@@ -3,6 +3,8 @@
 #include "run_command.hpp"
 
 #include <chrono>
+#include <filesystem>
+#include <memory>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -13,22 +15,12 @@
 
 #include "nck/config/load.hpp"
 #include "nck/plc/scenario.hpp"
-#include "nck/kernel/decoder_setup.hpp"
+#include "nck/sim/dry_run.hpp"
 #include "output_writers.hpp"
 #include "report_writer.hpp"
 
 namespace nck::app {
 namespace {
-
-struct Feed {
-  nc::Decoder decoder;
-  bool done = false;
-  std::size_t diagnostics_seen = 0;
-  // A G100 or #GET MANUAL OFFSETS block holds the next blocks back until it
-  // has run: they may read what it found (V.A.MESS..., V.A.MANUAL_OFFSETS...).
-  bool syncing = false;
-  std::uint64_t sync_count = 0;
-};
 
 struct Outputs {
   EventWriter events;
@@ -51,41 +43,26 @@ bool print_load_diagnostics(const config::LoadResult& r) {
 
 // Decoder warnings appear when decoded; errors travel through the channel
 // queue so they are raised when execution reaches them.
-void report_new_warnings(Feed& f, std::size_t ch, double t_s, Outputs& out) {
-  const auto& ds = f.decoder.diagnostics();
-  for (; f.diagnostics_seen < ds.size(); ++f.diagnostics_seen) {
-    const Diagnostic& d = ds[f.diagnostics_seen];
-    if (d.severity != Severity::warning) continue;
-    fmt::print(stderr, "{}\n", format(d));
-    if (out.wants_events()) out.event(EventWriter::line(t_s, ch, d), false);
-  }
+void report_new_warnings(const sim::DryRun& run, double t_s, Outputs& out) {
+  for (std::size_t ch = 0; ch < run.channel_count(); ++ch)
+    for (const Diagnostic& d : run.new_warnings(ch)) {
+      fmt::print(stderr, "{}\n", format(d));
+      if (out.wants_events()) out.event(EventWriter::line(t_s, ch, d), false);
+    }
 }
 
-void feed_channel(kernel::Kernel& k, std::size_t ch, Feed& f, double t_s, Outputs& out) {
-  if (f.syncing) {
-    if (k.sync_count(ch) == f.sync_count && !k.channel_done(ch)) return;
-    for (const auto& [name, value] : k.take_sync_values(ch)) (void)f.decoder.set_variable(name, value);
-    f.syncing = false;
-  }
-  while (!f.done && !f.syncing && k.queue_space(ch) > 0) {
-    nc::Decoder::Result r = f.decoder.next();
-    report_new_warnings(f, ch, t_s, out);
-    if (r.status == nc::Decoder::Status::block) {
-      f.sync_count = k.sync_count(ch);
-      k.push_block(ch, r.block, f.decoder.file_name(r.block.file_id));
-      f.done = r.block.program_end;
-      f.syncing = kernel::Kernel::needs_sync(r.block);
-    } else if (r.status == nc::Decoder::Status::end) {
-      k.push_end_without_m30(ch, 0, 0);
-      f.done = true;
-    } else {
-      const auto& ds = f.decoder.diagnostics();
-      Diagnostic d = ds.empty() ? make_diagnostic(ErrorId::NcFileUnreadable, {}, "decoder stopped")
-                                : ds.back();
-      k.push_error(ch, d, 0);
-      f.done = true;
-    }
-  }
+// A cycle whose events did not all fit its output: never lost silently.
+void report_dropped_events(const kernel::TickOutput& o, const RunNames& names, Outputs& out) {
+  if (o.events_dropped == 0) return;
+  kernel::Event e;
+  e.t_s = o.t_s;
+  e.kind = kernel::EventKind::warning;
+  e.id = ErrorId::KernelEventsDropped;
+  e.message_index = kernel::kNoMessage;
+  e.value = o.events_dropped;
+  fmt::print(stderr, "nck: warning {}: {} event(s) of the cycle at {} s were not recorded\n",
+             number(e.id), o.events_dropped, o.t_s);
+  if (out.wants_events()) out.event(EventWriter::line(e, names), false);
 }
 
 void record_events(const kernel::TickOutput& o, const RunNames& names, Outputs& out) {
@@ -148,17 +125,19 @@ int run_simulation(const RunOptions& opt) {
                opt.programs.size(), m.channels.size());
     return 2;
   }
-  kernel::Kernel k;
-  if (auto ok = k.configure(m, {opt.clamp_index}); !ok) {
-    fmt::print(stderr, "{}\n", format(ok.error()));
+  std::vector<std::filesystem::path> programs(opt.programs.begin(), opt.programs.end());
+  auto created = sim::DryRun::create(m, programs, {opt.clamp_index});
+  if (!created) {
+    fmt::print(stderr, "{}\n", format(created.error()));
     return 2;
   }
+  sim::DryRun& run = *created;
   plc::Scenario scenario;
   if (!opt.plc.empty()) {
     auto loaded_scenario = load_scenario(opt.plc, m);
     if (!loaded_scenario) return 2;
     scenario = std::move(*loaded_scenario);
-    k.load_scenario(scenario);
+    run.load_scenario(scenario);
   }
   Outputs out;
   if ((!opt.events.empty() && !out.events.open(opt.events)) ||
@@ -167,38 +146,24 @@ int run_simulation(const RunOptions& opt) {
     return 2;
   }
   out.report.start(m, opt.programs, !opt.report.empty());
-  std::vector<Feed> feeds;
   RunNames names;
-  names.kernel = &k;
-  for (std::size_t ch = 0; ch < m.channels.size(); ++ch) {
-    // A channel without a program stays idle: give it an empty feed.
-    const bool has_program = ch < opt.programs.size();
-    feeds.push_back(Feed{nc::Decoder(has_program ? opt.programs[ch] : std::string(),
-                                     kernel::decoder_config(m, ch)),
-                         !has_program});
-  }
-  for (std::size_t ch = 0; ch < feeds.size(); ++ch) {
-    names.decoders.push_back(&feeds[ch].decoder);
-    for (const auto& [name, value] : kernel::initial_variables(m, ch, opt.clamp_index))
-      (void)feeds[ch].decoder.set_variable(name, value);
-  }
+  names.run = &run;
 
-  kernel::TickInput in;
-  kernel::TickOutput o;
+  auto o = std::make_unique<kernel::TickOutput>();
   Progress progress(opt.progress);
   const auto wall_start = std::chrono::steady_clock::now();
   bool time_limit = false;
   for (;;) {
-    const double t_s = k.time_s();
-    for (std::size_t ch = 0; ch < feeds.size(); ++ch) feed_channel(k, ch, feeds[ch], t_s, out);
-    k.tick(in, o);
-    record_events(o, names, out);
-    out.trace.write(k.cycles() - 1, o);
-    out.report.sample(o);
-    bool done = true;
-    for (std::size_t ch = 0; ch < opt.programs.size(); ++ch) done = done && k.channel_done(ch);
-    if (done) break;
-    if (t_s + k.cycle_time_s() >= opt.max_time_s) {
+    const double t_s = run.time_s();
+    run.prepare();
+    report_new_warnings(run, t_s, out);
+    run.cycle(*o);
+    record_events(*o, names, out);
+    report_dropped_events(*o, names, out);
+    out.trace.write(run.kernel().cycles() - 1, *o);
+    out.report.sample(*o);
+    if (run.done()) break;
+    if (t_s + run.kernel().cycle_time_s() >= opt.max_time_s) {
       time_limit = true;
       break;
     }
@@ -206,10 +171,11 @@ int run_simulation(const RunOptions& opt) {
       std::this_thread::sleep_until(wall_start + std::chrono::duration<double>(t_s));
     progress.update(t_s);
   }
-  const double end_s = k.time_s();
+  const double end_s = run.time_s();
+  const kernel::Kernel& k = run.kernel();
   if (time_limit) {
     for (std::size_t ch = 0; ch < k.channel_count(); ++ch) {
-      if (k.snapshot(ch).status == kernel::ChannelStatus::ended) continue;
+      if (k.channel_state(ch).status == kernel::ChannelStatus::ended) continue;
       kernel::Event e;
       e.t_s = end_s;
       e.channel = static_cast<std::uint8_t>(ch + 1);
@@ -224,13 +190,13 @@ int run_simulation(const RunOptions& opt) {
   out.trace.close();
   bool aborted = time_limit;
   for (std::size_t ch = 0; ch < k.channel_count(); ++ch)
-    aborted = aborted || k.snapshot(ch).status == kernel::ChannelStatus::aborted;
+    aborted = aborted || k.channel_state(ch).status == kernel::ChannelStatus::aborted;
   const int exit_code = aborted ? 1 : 0;
   if (!opt.report.empty() && !out.report.write(opt.report, end_s, exit_code)) {
     fmt::print(stderr, "nck: error 940002: cannot write {}\n", opt.report);
     return 2;
   }
-  if (!opt.final_state.empty() && !write_final(opt.final_state, m, k, end_s, out.errors)) {
+  if (!opt.final_state.empty() && !write_final(opt.final_state, m, run, end_s, out.errors)) {
     fmt::print(stderr, "nck: error 940002: cannot write {}\n", opt.final_state);
     return 2;
   }

@@ -4,13 +4,13 @@
 
 namespace nck::kernel {
 
-Channel::Channel(const config::Machine& machine, std::size_t index, PlanStore& store,
-                 const PlannerOptions& options, std::vector<std::int8_t> spindles)
-    : planner_(machine, index, store, options, spindles),
+Channel::Channel(std::size_t index, std::size_t n_axes, const std::vector<std::int8_t>& spindles,
+                 CommandQueue& commands, FeedbackQueue& feedback)
+    : commands_(&commands),
+      feedback_(&feedback),
       number_(static_cast<std::uint8_t>(index + 1)),
-      n_axes_(planner_.axis_count()) {
+      n_axes_(n_axes) {
   for (std::int8_t s : spindles) (void)spindles_.push_back(s);
-  planner_.set_measurement(&measure_);
 }
 
 Event Channel::event(EventKind k, double t_s) const noexcept {
@@ -25,7 +25,7 @@ Event Channel::event(EventKind k, double t_s) const noexcept {
   return e;
 }
 
-void Channel::finish(EndReason reason, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept {
+void Channel::end_program(EndReason reason, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept {
   Event e = event(EventKind::end, t_s);
   e.end_reason = reason;
   sink.emit(e);
@@ -43,7 +43,7 @@ void Channel::finish(EndReason reason, double t_s, TickOutput& sink, ChannelCont
     if (u.channel != number_) continue;
     if (!ok) {
       u.axis.reset();
-    } else if (ctx.hli && ctx.hli->spindle_control[static_cast<std::size_t>(s)].stop_at_program_end) {
+    } else if (ctx.spindle_controls && (*ctx.spindle_controls)[static_cast<std::size_t>(s)].stop_at_program_end) {
       (void)u.axis.stop();
     }
   }
@@ -55,7 +55,7 @@ void Channel::raise(ErrorId id, std::uint32_t message, double t_s, TickOutput& s
   e.id = id;
   e.message_index = message;
   sink.emit(e);
-  finish(EndReason::error, t_s, sink, ctx);
+  end_program(EndReason::error, t_s, sink, ctx);
 }
 
 void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept {
@@ -79,39 +79,32 @@ void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelConte
     return;
   }
   manual_mask_ = (manual_mask_ | c.manual_on) & ~c.manual_off;
-  if (c.get_manual_offsets) {
-    ++manual_fetches_;
-    last_sync_measure_ = false;
-  }
+  if (c.get_manual_offsets) manual_fetch_pending_ = true;
   if (c.feed_motion) take_late_waits(SyncPoint::late_motion);
   if (c.expl_syn) take_late_waits(SyncPoint::late_explicit);
   issue_all(SyncPoint::before, t_s, sink, ctx);
 }
 
 // The body of the block: motion, dwell, or nothing.
-void Channel::execute(double dt_s, const ChannelInput& in) noexcept {
+void Channel::execute(double dt_s, const ChannelInput& in, TickOutput& sink) noexcept {
   if (current_.kind == CommandKind::motion) {
-    const double ovr = in.feedhold ? 0.0 : std::clamp(in.feed_override_pct, 0.0, 100.0) / 100.0;
-    const motion::ProfileSample st = profile_.step(dt_s, ovr);
-    const motion::AxisVector before = pos_;
-    place(st.s_mm);
-    velocity_ = st.v_mm_s;
-    if (current_.measure && probe_switched(before)) {
-      velocity_ = 0;
-      phase_ = Phase::post_wait;
+    // A switch counts once this run has moved (not one left from the block before).
+    if (current_.measure && (awaiting_probe_ || (in.probe_switched && probe_armed_))) {
+      end_measuring_run(in, sink);
       return;
     }
-    if (st.finished) {
-      place(current_.segment.length());
-      velocity_ = 0;
-      phase_ = Phase::post_wait;
-      if (current_.measure) {  // the probe never switched: the run ends at its target
-        measure_.triggered = false;
-        measure_.mcs = pos_;
-        ++measure_.count;
-        last_sync_measure_ = true;
-      }
-    }
+    const double ovr = in.feedhold ? 0.0 : std::clamp(in.feed_override_pct, 0.0, 100.0) / 100.0;
+    const motion::ProfileSample st = profile_.step(dt_s, ovr);
+    probe_armed_ = current_.measure;
+    place(st.s_mm);
+    velocity_ = st.v_mm_s;
+    if (!st.finished) return;
+    place(current_.segment.length());
+    velocity_ = 0;
+    // The probe reports a switch one cycle after it happened: a G100 run
+    // that reached its end point looks one cycle longer before it ends.
+    if (current_.measure) awaiting_probe_ = true;
+    else phase_ = Phase::post_wait;
   } else if (current_.kind == CommandKind::dwell) {
     dwell_left_s_ -= dt_s;
     // Half a cycle of tolerance so a dwell of k cycles takes exactly k cycles.
@@ -121,32 +114,37 @@ void Channel::execute(double dt_s, const ChannelInput& in) noexcept {
   }
 }
 
+// G100 ends where the probe switched (the axes stop at the latched point and
+// the rest of the path is dropped: measuring type 1) or, without a switch,
+// at its end point. Preparation learns the result through the feedback queue.
+void Channel::end_measuring_run(const ChannelInput& in, TickOutput& sink) noexcept {
+  Feedback f;
+  f.kind = FeedbackKind::measured;
+  f.measure.triggered = in.probe_switched && probe_armed_;
+  if (f.measure.triggered)
+    for (std::size_t j = 0; j < n_axes_; ++j) pos_[j] = in.probe_latched_mcs[j] - manual_mm_[j];
+  f.measure.mcs = pos_;
+  velocity_ = 0;
+  awaiting_probe_ = false;
+  probe_armed_ = false;
+  phase_ = Phase::post_wait;
+  send_feedback(f, sink);
+}
+
+// The queue holds more records than can be in flight (queues.hpp); a full
+// queue is still reported, never dropped silently.
+void Channel::send_feedback(const Feedback& f, TickOutput& sink) noexcept {
+  if (feedback_->push(f)) return;
+  Event e = event(EventKind::error, sink.t_s);
+  e.id = ErrorId::KernelFeedbackOverflow;
+  e.message_index = kNoMessage;
+  sink.emit(e);
+}
+
 motion::AxisVector Channel::machine_position() const noexcept {
   motion::AxisVector m = pos_;
   for (std::size_t j = 0; j < n_axes_; ++j) m[j] += manual_mm_[j];
   return m;
-}
-
-void Channel::handwheel(std::int8_t axis, double mm) noexcept {
-  if (axis < 0 || static_cast<std::size_t>(axis) >= n_axes_) return;
-  if ((manual_mask_ >> axis) & 1u) manual_target_mm_[static_cast<std::size_t>(axis)] += mm;
-}
-
-// G100: has the probe axis reached the switching position during this step?
-// Then the axes stop at the switching point and the rest of the path is
-// dropped (measuring type 1).
-bool Channel::probe_switched(const motion::AxisVector& before) noexcept {
-  if (current_.probe_axis < 0) return false;
-  const auto a = static_cast<std::size_t>(current_.probe_axis);
-  const double p = current_.probe_pos_mm, d = pos_[a] - before[a];
-  if (d == 0 || (before[a] - p) * (pos_[a] - p) > 0) return false;
-  const double f = (p - before[a]) / d;
-  for (std::size_t j = 0; j < n_axes_; ++j) pos_[j] = before[j] + f * (pos_[j] - before[j]);
-  measure_.triggered = true;
-  measure_.mcs = pos_;
-  ++measure_.count;
-  last_sync_measure_ = true;
-  return true;
 }
 
 // The set point at path length s: the segment's point, mapped from program
@@ -162,13 +160,14 @@ void Channel::place(double s_mm) noexcept {
 }
 
 // After the post waits: the block is done.
-void Channel::complete(double t_s, TickOutput& sink, ChannelContext& ctx) noexcept {
+void Channel::end_block(double t_s, const ChannelInput& in, TickOutput& sink, ChannelContext& ctx) noexcept {
   active_ = false;
   if (current_.kind == CommandKind::stop) {
-    // A dry run has no operator: the stop is reported and the program goes on.
-    sink.emit(event(EventKind::stop, t_s));
+    // A dry run has no operator: the stop is reported and the program goes
+    // on. M1 stops only while the HLI's optional-stop switch is on.
+    if (!current_.optional_stop || in.optional_stop) sink.emit(event(EventKind::stop, t_s));
   } else if (current_.kind == CommandKind::end) {
-    finish(current_.end_reason, t_s, sink, ctx);
+    end_program(current_.end_reason, t_s, sink, ctx);
   }
 }
 
@@ -190,27 +189,27 @@ void Channel::advance(double t_s, double dt_s, const ChannelInput& in, TickOutpu
   }
   if (phase_ == Phase::body) {
     const bool timed = current_.kind == CommandKind::motion || current_.kind == CommandKind::dwell;
-    execute(dt_s, in);
+    execute(dt_s, in, sink);
     if (phase_ != Phase::post_wait) return;
     issue_all(SyncPoint::after, t_s, sink, ctx);
     // A motion or dwell used this cycle; its post waits are checked next cycle.
     if (timed) return;
   }
   if (phase_ == Phase::post_wait && waits_done(SyncPoint::after, t_s, sink, ctx) && !done())
-    complete(t_s, sink, ctx);
+    end_block(t_s, in, sink, ctx);
 }
 
 void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutput& out,
                    TickOutput& sink, ChannelContext& ctx) noexcept {
   if (!done()) {
     if (in.reset) {
-      finish(EndReason::reset, t_s, sink, ctx);
+      end_program(EndReason::reset, t_s, sink, ctx);
     } else {
       for (;;) {
         if (!active_) {
-          if (queue_.empty()) break;
-          start(queue_.front(), t_s, sink, ctx);
-          queue_.pop();
+          if (commands_->empty()) break;
+          start(commands_->front(), t_s, sink, ctx);
+          commands_->pop();
           if (done()) break;
         }
         advance(t_s, dt_s, in, sink, ctx);
@@ -224,15 +223,28 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
       }
     }
   }
-  // The handwheel offset is travelled at a limited speed (docs/decisions.md).
-  const double step = kHandwheelSpeed_mm_s * dt_s;
-  for (std::size_t j = 0; j < n_axes_; ++j) {
-    const double d = manual_target_mm_[j] - manual_mm_[j];
-    manual_mm_[j] += std::clamp(d, -step, step);
-    out.axis_mcs[j] = pos_[j] + manual_mm_[j];
-  }
+  follow_handwheel(dt_s, in, sink);
+  for (std::size_t j = 0; j < n_axes_; ++j) out.axis_mcs[j] = pos_[j] + manual_mm_[j];
   out.path_velocity_mm_s = velocity_;
   out.status = status_;
+}
+
+// Handwheel turns move the axes that are in manual mode (G201); the offset
+// is travelled at a limited speed (docs/decisions.md). #GET MANUAL OFFSETS
+// reports the offsets reached at the end of its cycle.
+void Channel::follow_handwheel(double dt_s, const ChannelInput& in, TickOutput& sink) noexcept {
+  const double step = kHandwheelSpeed_mm_s * dt_s;
+  for (std::size_t j = 0; j < n_axes_; ++j) {
+    if ((manual_mask_ >> j) & 1u) manual_target_mm_[j] += in.handwheel_mm[j];
+    const double d = manual_target_mm_[j] - manual_mm_[j];
+    manual_mm_[j] += std::clamp(d, -step, step);
+  }
+  if (!manual_fetch_pending_) return;
+  manual_fetch_pending_ = false;
+  Feedback f;
+  f.kind = FeedbackKind::manual_offsets;
+  f.manual_offsets_mm = manual_mm_;
+  send_feedback(f, sink);
 }
 
 }  // namespace nck::kernel

@@ -1,8 +1,9 @@
 #pragma once
-// A channel's cyclic executor: takes planned commands from its queue and
-// runs each through its phases — outputs and waits before the motion, the
-// motion (or dwell), outputs and waits after it — stopping exactly at each
-// block end.
+// A channel's cyclic executor: takes planned commands from its command queue
+// and runs each through its phases — outputs and waits before the motion,
+// the motion (or dwell), outputs and waits after it — stopping exactly at
+// each block end. What preparation needs back (G100 results, handwheel
+// offsets) leaves through the feedback queue.
 //
 // Continuous-path blending is not done yet: every block ends at standstill
 // (exact stop, like G60). The profile already takes an end velocity, so
@@ -11,43 +12,31 @@
 #include <string>
 #include <vector>
 
-#include "command.hpp"
-#include "nck/core/ring_buffer.hpp"
+#include "nck/kernel/command.hpp"
+#include "nck/kernel/queues.hpp"
 #include "nck/kernel/tick_io.hpp"
 #include "nck/motion/path_profile.hpp"
 #include "nck/plc/hli.hpp"
-#include "nck/plc/plc_sim.hpp"
-#include "measure.hpp"
-#include "planner.hpp"
+#include "plc_outputs.hpp"
 #include "spindle_unit.hpp"
 
 namespace nck::kernel {
 
-inline constexpr std::size_t kQueueLength = 64;
 inline constexpr double kHandwheelSpeed_mm_s = 10.0;  // how fast a handwheel offset is travelled
 
 // What a channel reaches besides itself during a cycle.
 struct ChannelContext {
   SpindleUnit* spindles = nullptr;  // the machine's spindles, by kernel index
   std::size_t spindle_count = 0;
-  plc::PlcSim* plc = nullptr;
-  plc::HliImage* hli = nullptr;
+  PlcOutputs* plc = nullptr;
+  const std::array<plc::SpindleControl, kMaxMachineSpindles>* spindle_controls = nullptr;
 };
 
 class Channel {
  public:
-  Channel(const config::Machine& machine, std::size_t index, PlanStore& store,
-          const PlannerOptions& options, std::vector<std::int8_t> spindles);
-
-  // setup side
-  // Blocks that fit: one block may plan into up to 4 commands (G74 homing).
-  std::size_t queue_space() const {
-    const std::size_t free = queue_.capacity() - queue_.size();
-    return free >= 4 ? free - 3 : 0;
-  }
-  bool push(const Command& c) { return queue_.push(c); }
-  Planner& planner() { return planner_; }
-  const Planner& planner() const { return planner_; }
+  // setup: spindles holds the kernel spindle index of each channel spindle.
+  Channel(std::size_t index, std::size_t n_axes, const std::vector<std::int8_t>& spindles,
+          CommandQueue& commands, FeedbackQueue& feedback);
 
   // real-time side
   void tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutput& out,
@@ -64,12 +53,6 @@ class Channel {
   const motion::AxisVector& position() const noexcept { return pos_; }
   motion::AxisVector machine_position() const noexcept;
   const motion::AxisVector& manual_offsets() const noexcept { return manual_mm_; }
-  // Points where the decoder must wait for values from execution: finished
-  // G100 runs and executed #GET MANUAL OFFSETS blocks.
-  std::uint64_t sync_count() const noexcept { return measure_.count + manual_fetches_; }
-  bool last_sync_was_measure() const noexcept { return last_sync_measure_; }
-  // A handwheel turned by mm on axis j: moves it while it is in manual mode (G201). rt
-  void handwheel(std::int8_t axis, double mm) noexcept;
   std::uint8_t number() const noexcept { return number_; }
 
  private:
@@ -92,11 +75,13 @@ class Channel {
   void start(const Command& c, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
   void advance(double t_s, double dt_s, const ChannelInput& in, TickOutput& sink,
                ChannelContext& ctx) noexcept;
-  void execute(double dt_s, const ChannelInput& in) noexcept;
+  void execute(double dt_s, const ChannelInput& in, TickOutput& sink) noexcept;
   void place(double s_mm) noexcept;
-  bool probe_switched(const motion::AxisVector& before) noexcept;
-  void complete(double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
-  void finish(EndReason reason, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
+  void end_measuring_run(const ChannelInput& in, TickOutput& sink) noexcept;
+  void send_feedback(const Feedback& f, TickOutput& sink) noexcept;
+  void follow_handwheel(double dt_s, const ChannelInput& in, TickOutput& sink) noexcept;
+  void end_block(double t_s, const ChannelInput& in, TickOutput& sink, ChannelContext& ctx) noexcept;
+  void end_program(EndReason reason, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
   void raise(ErrorId id, std::uint32_t message, double t_s, TickOutput& sink,
              ChannelContext& ctx) noexcept;
   Event event(EventKind k, double t_s) const noexcept;
@@ -106,14 +91,14 @@ class Channel {
   bool issue_spindle_actions(SyncPoint phase, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
   bool issue_spindle(const SpindleAction& a, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
   void issue_output(const Output& o, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
-  void add_wait(const Wait& w, SyncPoint sync) noexcept;
+  bool add_wait(const Wait& w, SyncPoint sync) noexcept;
   void take_late_waits(SyncPoint which) noexcept;
   bool waits_done(SyncPoint phase, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
   bool satisfied(const Wait& w, const ChannelContext& ctx) const noexcept;
   std::int8_t local_index(std::int8_t spindle) const noexcept;
 
-  Planner planner_;
-  RingBuffer<Command, kQueueLength> queue_;
+  CommandQueue* commands_ = nullptr;
+  FeedbackQueue* feedback_ = nullptr;
   std::uint8_t number_ = 1;
   std::size_t n_axes_ = 0;
   FixedVector<std::int8_t, config::kMaxSpindles> spindles_;  // kernel index per channel spindle
@@ -126,11 +111,15 @@ class Channel {
   double dwell_left_s_ = 0;
   double velocity_ = 0;
   motion::AxisVector pos_{};
-  FixedVector<Wait, 24> waits_;  // of the current block
-  FixedVector<Wait, 16> late_;   // MVS_SLM / MVS_SLP, carried to a later block
-  MeasureResult measure_{};
-  std::uint64_t manual_fetches_ = 0;
-  bool last_sync_measure_ = false;
+  // Every output and spindle action of a block may wait once, and the late
+  // waits (MVS_SLM / MVS_SLP) carried from earlier blocks join them; late
+  // waits beyond kMaxLateWaits raise KernelWaitOverflow.
+  static constexpr std::size_t kMaxLateWaits = 16;
+  FixedVector<Wait, Command::kMaxOutputs + Command::kMaxSpindleActions + kMaxLateWaits> waits_;
+  FixedVector<Wait, kMaxLateWaits> late_;
+  bool probe_armed_ = false;           // the G100 run has moved: a probe switch is its own
+  bool awaiting_probe_ = false;        // G100 reached its end point: one more cycle for the probe
+  bool manual_fetch_pending_ = false;  // #GET MANUAL OFFSETS: send them at the end of this cycle
   std::uint32_t manual_mask_ = 0;     // axes in manual mode (G201)
   motion::AxisVector manual_mm_{};    // handwheel offset reached so far
   motion::AxisVector manual_target_mm_{};

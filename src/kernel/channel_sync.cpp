@@ -58,17 +58,20 @@ std::int8_t Channel::local_index(std::int8_t spindle) const noexcept {
   return -1;
 }
 
-void Channel::add_wait(const Wait& w, SyncPoint sync) noexcept {
+// False when the wait does not fit (only late waits can pile up: the
+// current block's fit by construction, see channel.hpp).
+bool Channel::add_wait(const Wait& w, SyncPoint sync) noexcept {
   Wait x = w;
   x.when = sync;
   switch (sync) {
-    case SyncPoint::none: return;
-    case SyncPoint::before: x.when = SyncPoint::before; (void)waits_.push_back(x); return;
+    case SyncPoint::none: return true;
+    case SyncPoint::before: x.when = SyncPoint::before; return waits_.push_back(x);
     case SyncPoint::before_after:
-    case SyncPoint::after: x.when = SyncPoint::after; (void)waits_.push_back(x); return;
+    case SyncPoint::after: x.when = SyncPoint::after; return waits_.push_back(x);
     case SyncPoint::late_motion:
-    case SyncPoint::late_explicit: (void)late_.push_back(x); return;
+    case SyncPoint::late_explicit: return late_.push_back(x);
   }
+  return true;
 }
 
 // Late functions synchronise before this block's motion.
@@ -132,7 +135,7 @@ bool Channel::issue_spindle(const SpindleAction& a, double t_s, TickOutput& sink
     o.spindle = u.channel_index;
     o.value = a.op == SpindleOp::position ? a.pos_deg : a.rpm;
     o.sync = a.sync_bits;
-    w.handle = ctx.plc ? ctx.plc->submit(o, t_s) : plc::kNoHandle;
+    w.handle = ctx.plc ? ctx.plc->submit(o, sink) : plc::kNoHandle;
     if (w.handle == plc::kNoHandle) {
       raise(ErrorId::PlcOutputQueueFull, kNoMessage, t_s, sink, ctx);
       return false;
@@ -145,7 +148,10 @@ bool Channel::issue_spindle(const SpindleAction& a, double t_s, TickOutput& sink
     e.sync = a.sync_bits;
     sink.emit(e);
   }
-  if (w.what != SpindleWait::none || w.handle != plc::kNoHandle) add_wait(w, a.sync);
+  if ((w.what != SpindleWait::none || w.handle != plc::kNoHandle) && !add_wait(w, a.sync)) {
+    raise(ErrorId::KernelWaitOverflow, kNoMessage, t_s, sink, ctx);
+    return false;
+  }
   return true;
 }
 
@@ -159,7 +165,7 @@ void Channel::issue_output(const Output& o, double t_s, TickOutput& sink, Channe
   w.fn = o.fn;
   w.fn_number = o.number;
   w.deadline_s = o.ack_timeout_s > 0 ? t_s + o.ack_timeout_s : 0;
-  w.handle = ctx.plc ? ctx.plc->submit(t, t_s) : plc::kNoHandle;
+  w.handle = ctx.plc ? ctx.plc->submit(t, sink) : plc::kNoHandle;
   if (w.handle == plc::kNoHandle) {
     raise(ErrorId::PlcOutputQueueFull, kNoMessage, t_s, sink, ctx);
     return;
@@ -169,7 +175,8 @@ void Channel::issue_output(const Output& o, double t_s, TickOutput& sink, Channe
   e.fn_number = o.number;
   e.sync = o.sync;
   sink.emit(e);
-  add_wait(w, sync_point(o.sync).value_or(SyncPoint::none));
+  if (!add_wait(w, sync_point(o.sync).value_or(SyncPoint::none)))
+    raise(ErrorId::KernelWaitOverflow, kNoMessage, t_s, sink, ctx);
 }
 
 void Channel::issue_all(SyncPoint phase, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept {

@@ -1,60 +1,62 @@
-// The kernel's per-cycle work besides the channels: the PLC (scenario,
-// acknowledgements), external spindle commands, and the spindles.
+// The kernel's per-cycle work besides the channels: the PLC's inputs
+// (acknowledgements, spindle controls, external spindle commands) and the
+// spindles.
 #include "nck/kernel/kernel.hpp"
 
 #include "channel.hpp"
-#include "kernel_plc.hpp"
 #include "spindle_unit.hpp"
 
 namespace nck::kernel {
 
-void Kernel::tick_plc(double t_s, TickOutput& out) noexcept {
-  KernelPlc& p = *plc_;
-  for (const plc::ScenarioAction& a : p.player.due(t_s)) {
-    if (a.kind == plc::ActionKind::handwheel && a.channel >= 1 && a.channel <= channels_.size())
-      channels_[a.channel - 1u]->handwheel(a.axis, a.value);
-    if (plc::apply(a, p.map, p.hli, p.sim, p.ext) == plc::ApplyResult::ext_queue_full) {
-      Event e;
-      e.t_s = t_s;
-      e.kind = EventKind::warning;
-      e.id = ErrorId::PlcExtCommandQueueFull;
-      e.message_index = kNoMessage;
-      out.emit(e);
-    }
-  }
-  p.sim.tick(t_s);
-  p.acks.clear();
-  p.sim.drain_acks(p.acks);
-  for (const plc::PlcAck& a : p.acks) {
+void Kernel::take_acknowledgements(const TickInput& in, double t_s, TickOutput& out) noexcept {
+  for (const plc::PlcAck& a : in.acks) {
+    plc_outputs_->acknowledged();
     Event e;
     e.t_s = t_s;
     e.channel = a.output.channel;
     e.kind = EventKind::plc_ack;
     e.fn = function_kind(a.output.kind);
     e.fn_number = a.output.number;
-    e.spindle = p.map.at(a.output.channel, a.output.spindle);
+    e.spindle = spindle_map_.at(a.output.channel, a.output.spindle);
     out.emit(e);
     for (auto& c : channels_) c->on_ack(a.handle);
     for (SpindleUnit& u : spindles_)
       if (u.gear_handle == a.handle) u.gear_acked = true;
-    p.sim.release(a.handle);
   }
-  // Spindle controls of the HLI: override, feedhold, reset.
+}
+
+// The HLI's spindle controls: override, feedhold, reset request.
+void Kernel::take_spindle_controls(const TickInput& in) noexcept {
   for (std::size_t i = 0; i < spindles_.size(); ++i) {
-    plc::SpindleControl& c = p.hli.spindle_control[i];
+    const plc::SpindleControl& c = in.spindles[i];
     spindles_[i].axis.set_override_pct(c.effective_override_percent());
     spindles_[i].axis.set_feedhold(c.feedhold);
-    if (c.reset) {
-      spindles_[i].axis.reset();
-      c.reset = false;
-    }
+    if (c.reset) spindles_[i].axis.reset();
   }
+}
+
+void Kernel::take_external_commands(const TickInput& in, double t_s, TickOutput& out) noexcept {
+  std::uint32_t lost = in.ext_commands_lost;
+  std::uint8_t channel = 1;
+  for (const plc::ExtSpindleCommand& cmd : in.ext_commands) {
+    if (ext_commands_.push(cmd) != 0) continue;
+    ++lost;
+    channel = cmd.channel;
+  }
+  if (lost == 0) return;
+  Event e;
+  e.t_s = t_s;
+  e.channel = channel;
+  e.kind = EventKind::warning;
+  e.id = ErrorId::PlcExtCommandQueueFull;
+  e.message_index = kNoMessage;
+  e.value = lost;  // how many commands were dropped
+  out.emit(e);
 }
 
 // External spindle commands run in order of arrival, one at a time per
 // spindle; each is acknowledged when the spindle has done it.
-void Kernel::tick_external_commands(double t_s, TickOutput& out) noexcept {
-  KernelPlc& p = *plc_;
+void Kernel::run_external_commands(double t_s, TickOutput& out) noexcept {
   for (std::size_t i = 0; i < spindles_.size(); ++i) {
     SpindleUnit& u = spindles_[i];
     if (u.ext_seq == 0) continue;
@@ -63,7 +65,7 @@ void Kernel::tick_external_commands(double t_s, TickOutput& out) noexcept {
                       : s.mode == spindle::SpindleMode::position ? s.in_position
                                                                  : s.standstill;
     if (!done && s.mode != spindle::SpindleMode::error) continue;
-    p.ext.acknowledge(u.ext_seq);
+    ext_commands_.acknowledge(u.ext_seq);
     u.ext_seq = 0;
     Event e;  // the PLC learns that its command is done
     e.t_s = t_s;
@@ -78,8 +80,8 @@ void Kernel::tick_external_commands(double t_s, TickOutput& out) noexcept {
   for (const SpindleUnit& u : spindles_)
     if (u.ext_seq != 0) return;
   plc::ExtSpindleCommand cmd;
-  if (!p.ext.pop(cmd)) return;
-  const std::int8_t k = p.map.at(cmd.channel, cmd.spindle);
+  if (!ext_commands_.pop(cmd)) return;
+  const std::int8_t k = spindle_map_.at(cmd.channel, cmd.spindle);
   if (k < 0 || static_cast<std::size_t>(k) >= spindles_.size()) return;
   SpindleUnit& u = spindles_[static_cast<std::size_t>(k)];
   spindle::SpindleResult r;
@@ -110,14 +112,13 @@ void Kernel::tick_external_commands(double t_s, TickOutput& out) noexcept {
 }
 
 void Kernel::tick_spindles(double t_s, TickOutput& out) noexcept {
-  KernelPlc& p = *plc_;
   for (std::size_t i = 0; i < spindles_.size(); ++i) {
     SpindleUnit& u = spindles_[i];
     const auto idx = static_cast<std::int8_t>(i);
-    advance_gear_job(u, idx, p.sim, t_s, out);
+    advance_gear_job(u, idx, *plc_outputs_, t_s, out);
     u.axis.tick(cycle_s_);
     report_spindle_changes(u, idx, t_s, out);
-    fill_hli_status(u, p.hli.spindle_status[i]);
+    fill_hli_status(u, out.hli_spindles[i]);
     const spindle::SpindleStatus& s = u.axis.status();
     out.spindles[i] = {s.set_rpm, s.set_pos_deg, s.act_rpm, s.drive_output};
   }

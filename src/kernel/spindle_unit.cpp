@@ -43,7 +43,7 @@ void report_spindle_changes(SpindleUnit& u, std::int8_t index, double t_s, TickO
   u.last_error = s.error;
 }
 
-void advance_gear_job(SpindleUnit& u, std::int8_t index, plc::PlcSim& plc, double t_s,
+void advance_gear_job(SpindleUnit& u, std::int8_t index, PlcOutputs& plc, double t_s,
                       TickOutput& out) noexcept {
   const std::int32_t m = static_cast<std::int32_t>(39 + u.gear_stage);  // stage 1 = M40
   if (u.gear_job == GearJob::approaching && u.axis.status().gear_change_ready) {
@@ -53,7 +53,18 @@ void advance_gear_job(SpindleUnit& u, std::int8_t index, plc::PlcSim& plc, doubl
     o.channel = u.channel;
     o.spindle = u.channel_index;
     o.sync = config::sync::MVS_SVS;
-    u.gear_handle = plc.submit(o, t_s);
+    u.gear_handle = plc.submit(o, out);
+    if (u.gear_handle == plc::kNoHandle) {  // tried again next cycle
+      if (!u.gear_output_delayed) {
+        Event w = spindle_event(u, index, t_s, EventKind::warning);
+        w.id = ErrorId::KernelPlcOutputsFull;
+        w.message_index = kNoMessage;
+        out.emit(w);
+      }
+      u.gear_output_delayed = true;
+      return;
+    }
+    u.gear_output_delayed = false;
     Event e = spindle_event(u, index, t_s, EventKind::plc_out);
     e.fn = FunctionKind::m;
     e.fn_number = m;

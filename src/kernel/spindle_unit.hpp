@@ -7,7 +7,7 @@
 
 #include "nck/kernel/tick_io.hpp"
 #include "nck/plc/hli.hpp"
-#include "nck/plc/plc_sim.hpp"
+#include "plc_outputs.hpp"
 #include "nck/spindle/spindle_axis.hpp"
 
 namespace nck::kernel {
@@ -25,6 +25,7 @@ struct SpindleUnit {
   std::uint32_t gear_stage = 0;
   plc::OutputHandle gear_handle = plc::kNoHandle;
   bool gear_acked = false;
+  bool gear_output_delayed = false;  // reported once: the PLC's outputs were full
 
   // external command (HLI) in progress: its sequence number (0 = none) and M function
   std::uint32_t ext_seq = 0;
@@ -63,7 +64,7 @@ void report_spindle_changes(SpindleUnit& u, std::int8_t index, double t_s, TickO
 
 // Advances a gear change: at the change position the function goes to the
 // PLC; its acknowledgement (gear_acked) finishes the change. rt
-void advance_gear_job(SpindleUnit& u, std::int8_t index, plc::PlcSim& plc, double t_s,
+void advance_gear_job(SpindleUnit& u, std::int8_t index, PlcOutputs& plc, double t_s,
                       TickOutput& out) noexcept;
 
 // The HLI status object of a spindle. rt

@@ -192,6 +192,7 @@ json to_json(const Block& b, const Decoder& d) {
   }
   if (b.program_end) j["program_end"] = true;
   if (b.stop) j["stop"] = true;
+  if (b.optional_stop) j["optional_stop"] = true;
   if (b.depth) j["depth"] = b.depth;
   j["modal"] = to_json(b.modal);
   return j;

@@ -242,7 +242,7 @@ Outcome Decoder::Impl::run_words(Cursor& c, std::optional<std::int64_t> n, Block
   bool content = out.has_axis_words() || out.ijk[0] || out.ijk[1] || out.ijk[2] || out.r || out.f ||
                  !words.g.empty() || !out.m.empty() || !out.h.empty() || out.t || out.d ||
                  out.dwell_s || out.dwell_revs || !out.spindles.empty() || out.hash ||
-                 !out.kernel_writes.empty() || out.program_end || out.stop;
+                 !out.kernel_writes.empty() || out.program_end || out.stop || out.optional_stop;
   if (ret) {
     if (!content) return do_return();
     return_pending = true;

@@ -179,7 +179,8 @@ bool apply_words(Words& w, BlockCtx& b, ModalState& modal, Block& out) {
     bool spindle = c == 3 || c == 4 || c == 5 || c == 19 || (c >= 40 && c <= 45);
     if (c == 17 || c == 29 || spindle) continue;
     out.m.push_back(c);
-    if (c == 0 || (c == 1 && b.cfg.optional_stop)) out.stop = true;
+    if (c == 0) out.stop = true;
+    if (c == 1) out.optional_stop = true;
     if (c == 2 || c == 30) out.program_end = true;
   }
   for (const auto& hw : w.h) out.h.push_back(hw.code);

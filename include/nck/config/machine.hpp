@@ -322,4 +322,12 @@ struct Machine {
   }
 };
 
+// A PLC spindle: plc_control 1 (no axis list) or an axis list with
+// achs_mode 0x40000; the PLC commands and acknowledges it.
+inline bool is_plc_spindle(const Machine& m, const ChannelSpindle& sp) noexcept {
+  if (sp.plc_control) return true;
+  if (sp.axis_index < 0 || static_cast<std::size_t>(sp.axis_index) >= m.axes.size()) return false;
+  return (m.axes[static_cast<std::size_t>(sp.axis_index)].achs_mode & 0x40000u) != 0;
+}
+
 }  // namespace nck::config

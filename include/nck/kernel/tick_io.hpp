@@ -1,24 +1,51 @@
 #pragma once
 // The data that crosses the cyclic boundary: fixed-size, no heap.
+//
+// Like ros2_control's read -> update -> write: whatever stands for the
+// machine (the simulated one in nck/sim, or an integrator's real I/O) fills
+// a TickInput before each cycle — the PLC's HLI controls and
+// acknowledgements, external spindle commands, handwheel and probe — and
+// takes the TickOutput after it — set points, technology functions for the
+// PLC, the HLI spindle status, events. The kernel sees nothing else.
 #include <array>
 #include <cstdint>
 
 #include "nck/config/machine.hpp"
 #include "nck/core/fixed_vector.hpp"
 #include "nck/kernel/event.hpp"
+#include "nck/plc/ext_command.hpp"
+#include "nck/plc/hli.hpp"
 
 namespace nck::kernel {
 
 inline constexpr std::size_t kMaxEventsPerTick = 256;
+inline constexpr std::size_t kMaxMachineSpindles = 32;
+static_assert(kMaxMachineSpindles == plc::kMaxHliSpindles, "one HLI spindle object per kernel spindle");
+// Technology functions waiting for the PLC's acknowledgement at one time;
+// one more raises PlcOutputQueueFull (so the PLC side never overflows).
+inline constexpr std::size_t kMaxPendingOutputs = 64;
 
 struct ChannelInput {
   double feed_override_pct = 100;  // HLI feed override 0..100 (more is clamped)
   bool feedhold = false;
-  bool reset = false;
+  bool reset = false;          // a request, acted on in this cycle
+  bool optional_stop = false;  // M1 stops the program only while this is on
+  // The measuring probe switched during the last cycle, with the axes'
+  // machine positions latched at that instant.
+  bool probe_switched = false;
+  std::array<double, config::kMaxPathAxes> probe_latched_mcs{};
+  // Handwheel travel during the last cycle per path axis, mm (G201 manual mode).
+  std::array<double, config::kMaxPathAxes> handwheel_mm{};
 };
 
 struct TickInput {
   std::array<ChannelInput, config::kMaxChannels> channels{};
+  std::array<plc::SpindleControl, kMaxMachineSpindles> spindles{};  // by kernel spindle index
+  // Outputs the PLC acknowledged since the last cycle (by the handle the
+  // kernel gave them), and external spindle commands that arrived.
+  FixedVector<plc::PlcAck, kMaxPendingOutputs> acks;
+  FixedVector<plc::ExtSpindleCommand, plc::ExtCommandQueue::kCapacity> ext_commands;
+  std::uint32_t ext_commands_lost = 0;  // arrived but did not fit (reported as PlcExtCommandQueueFull)
 };
 
 enum class ChannelStatus : std::uint8_t { idle, running, waiting, ended, aborted };
@@ -30,8 +57,6 @@ struct ChannelOutput {
   ChannelStatus status = ChannelStatus::idle;
 };
 
-inline constexpr std::size_t kMaxMachineSpindles = 32;
-
 struct SpindleOutput {
   double set_rpm = 0;       // signed set-point speed
   double set_pos_deg = 0;   // set-point position in the modulo range
@@ -39,10 +64,18 @@ struct SpindleOutput {
   double drive_output = 0;  // speed command in drive units (antr.v_reso_*)
 };
 
+// A technology function handed to the PLC in this cycle.
+struct TechRequest {
+  plc::OutputHandle handle = plc::kNoHandle;
+  plc::TechOutput output;
+};
+
 struct TickOutput {
   double t_s = 0;  // start of the cycle just computed
   std::array<ChannelOutput, config::kMaxChannels> channels{};
   std::array<SpindleOutput, kMaxMachineSpindles> spindles{};  // by kernel spindle index
+  std::array<plc::SpindleStatus, kMaxMachineSpindles> hli_spindles{};  // HLI status objects
+  FixedVector<TechRequest, kMaxPendingOutputs> tech_outputs;
   FixedVector<Event, kMaxEventsPerTick> events;
   std::uint32_t events_dropped = 0;  // events that did not fit this cycle
 

@@ -73,7 +73,8 @@ struct Block {
   std::optional<int> manual_g;
 
   bool program_end = false;  // M2 / M30 reached (main program level)
-  bool stop = false;         // M0 (M1 when the optional stop is enabled)
+  bool stop = false;           // M0
+  bool optional_stop = false;  // M1: the kernel stops only while the HLI's optional-stop switch is on
 
   bool has_axis_words() const {
     for (const auto& a : axes)

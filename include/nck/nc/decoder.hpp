@@ -22,7 +22,6 @@ struct DecoderConfig {
   std::string main_spindle_name = "S";     // the name DIN words address
   std::string main_spindle = "S1";         // which configured spindle is the main one
   std::uint32_t skip_mask = 0;             // active block-skip levels (/1 = bit 0 ... /10 = bit 9; "/" = bit 0)
-  bool optional_stop = false;              // M1 acts like M0
   bool use_cached_files = false;           // FCT_USE_CACHED_FILES
   std::uint32_t max_cache_number = 0;
   std::uint32_t max_cache_size_kb = 0;

@@ -87,6 +87,22 @@ struct TechUnit {
   bool done = false;    // PLC: acknowledged
 };
 
+// The handshake of one technology function: the CNC numbers each output
+// (0 is never a valid handle) and the PLC acknowledges it by that number.
+using OutputHandle = std::uint32_t;
+inline constexpr OutputHandle kNoHandle = 0;
+
+struct PlcAck {
+  OutputHandle handle = kNoHandle;
+  TechOutput output;
+  double t_ack_s = 0;  // time of the cycle that acknowledged it
+};
+
+// True for M40..M45 (gear stage 1..6).
+constexpr bool is_gear_function(const TechOutput& o) noexcept {
+  return o.kind == TechKind::m && o.number >= 40 && o.number <= 45;
+}
+
 // Which HLI spindle object belongs to a channel's spindle. Built at setup:
 // spindles of all channels in channel order; a spindle that another channel
 // already listed (same logical axis number) reuses that object.

@@ -1,11 +1,10 @@
 #pragma once
 // The --plc FILE scenario: timed HLI writes, one per line (grammar in
 // docs/plc-scenario.md). Parsed at setup into a time-sorted list; replayed in
-// the cyclic path by ScenarioPlayer without allocating.
+// the cyclic path by the simulated machine (nck/sim/scenario_player.hpp).
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,7 +13,6 @@
 #include "nck/core/diagnostic.hpp"
 #include "nck/plc/ext_command.hpp"
 #include "nck/plc/hli.hpp"
-#include "nck/plc/plc_sim.hpp"
 
 namespace nck::plc {
 
@@ -71,30 +69,5 @@ Scenario parse_scenario(std::string_view text, std::string file, Diagnostics& di
 // reported and removed.
 void resolve_spindles(Scenario& sc, const config::Machine& m, const SpindleMap& map,
                       Diagnostics& diags);
-
-// rt: replays a scenario: each cycle, due(now) gives the actions whose time
-// has come (t_s <= now_s) and that were not given before, in order.
-class ScenarioPlayer {
- public:
-  ScenarioPlayer() = default;
-  // The scenario must outlive the player (it only keeps a view).
-  explicit ScenarioPlayer(const Scenario& sc) noexcept : actions_(sc.actions) {}
-
-  std::span<const ScenarioAction> due(double now_s) noexcept;
-  bool finished() const noexcept { return next_ >= actions_.size(); }
-  void rewind() noexcept { next_ = 0; }
-
- private:
-  std::span<const ScenarioAction> actions_;
-  std::size_t next_ = 0;
-};
-
-enum class ApplyResult : std::uint8_t { ok, ext_queue_full, no_spindle };
-
-// rt: performs one action: writes the HLI control objects, switches the
-// simulated PLC silent, or queues an external spindle command. The CNC
-// clears the reset requests after handling them.
-ApplyResult apply(const ScenarioAction& a, const SpindleMap& map, HliImage& hli, PlcSim& plc,
-                  ExtCommandQueue& ext) noexcept;
 
 }  // namespace nck::plc

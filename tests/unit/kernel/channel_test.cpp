@@ -9,6 +9,7 @@ namespace nck::kernel {
 namespace {
 
 using testing::end_block;
+using testing::KernelRig;
 using testing::move;
 using testing::xyz_machine;
 
@@ -34,10 +35,10 @@ RunLog run_all(Kernel& k, std::size_t max_cycles = 1'000'000) {
 
 TEST(Channel, LinearMoveEndsExactlyAtTargetWithinLimits) {
   config::Machine m = xyz_machine(500, 2000);
-  Kernel k;
-  ASSERT_TRUE(k.configure(m));
-  k.push_block(0, move(1, nc::Motion::linear, 100.0, 50.0, {}, 6000), "t.nc");
-  k.push_block(0, end_block(2), "t.nc");
+  KernelRig rig(m);
+  Kernel& k = rig.k;
+  rig.push_block(0, move(1, nc::Motion::linear, 100.0, 50.0, {}, 6000), "t.nc");
+  rig.push_block(0, end_block(2), "t.nc");
   RunLog r = run_all(k);
   ASSERT_TRUE(k.all_channels_done());
   EXPECT_DOUBLE_EQ(r.positions.back()[0], 100.0);
@@ -58,10 +59,10 @@ TEST(Channel, LinearMoveEndsExactlyAtTargetWithinLimits) {
 
 TEST(Channel, RapidMovesAtRapidVelocity) {
   config::Machine m = xyz_machine(250, 10000);
-  Kernel k;
-  ASSERT_TRUE(k.configure(m));
-  k.push_block(0, move(1, nc::Motion::rapid, 250.0), "t.nc");
-  k.push_block(0, end_block(2), "t.nc");
+  KernelRig rig(m);
+  Kernel& k = rig.k;
+  rig.push_block(0, move(1, nc::Motion::rapid, 250.0), "t.nc");
+  rig.push_block(0, end_block(2), "t.nc");
   RunLog r = run_all(k);
   double v_max = 0;
   for (std::size_t i = 1; i < r.positions.size(); ++i)
@@ -71,25 +72,25 @@ TEST(Channel, RapidMovesAtRapidVelocity) {
 }
 
 TEST(Channel, IncrementalWordsAddToTheProgrammedPosition) {
-  Kernel k;
-  ASSERT_TRUE(k.configure(xyz_machine()));
-  k.push_block(0, move(1, nc::Motion::linear, 10.0), "t.nc");
+  KernelRig rig(xyz_machine());
+  Kernel& k = rig.k;
+  rig.push_block(0, move(1, nc::Motion::linear, 10.0), "t.nc");
   nc::Block inc = move(2, nc::Motion::linear, 5.0);
   inc.modal.absolute = false;
-  k.push_block(0, inc, "t.nc");
-  k.push_block(0, end_block(3), "t.nc");
+  rig.push_block(0, inc, "t.nc");
+  rig.push_block(0, end_block(3), "t.nc");
   RunLog r = run_all(k);
   EXPECT_DOUBLE_EQ(r.positions.back()[0], 15.0);
 }
 
 TEST(Channel, QuarterCircleEndsOnTarget) {
-  Kernel k;
-  ASSERT_TRUE(k.configure(xyz_machine()));
-  k.push_block(0, move(1, nc::Motion::linear, 10.0, 0.0), "t.nc");
+  KernelRig rig(xyz_machine());
+  Kernel& k = rig.k;
+  rig.push_block(0, move(1, nc::Motion::linear, 10.0, 0.0), "t.nc");
   nc::Block arc = move(2, nc::Motion::ccw, 0.0, 10.0);
   arc.ijk[0] = -10.0;  // centre at the origin
-  k.push_block(0, arc, "t.nc");
-  k.push_block(0, end_block(3), "t.nc");
+  rig.push_block(0, arc, "t.nc");
+  rig.push_block(0, end_block(3), "t.nc");
   RunLog r = run_all(k);
   EXPECT_NEAR(r.positions.back()[0], 0.0, 1e-9);
   EXPECT_NEAR(r.positions.back()[1], 10.0, 1e-9);
@@ -101,13 +102,13 @@ TEST(Channel, QuarterCircleEndsOnTarget) {
 }
 
 TEST(Channel, DwellTakesItsTime) {
-  Kernel k;
-  ASSERT_TRUE(k.configure(xyz_machine()));
+  KernelRig rig(xyz_machine());
+  Kernel& k = rig.k;
   nc::Block d;
   d.line = 1;
   d.dwell_s = 0.25;
-  k.push_block(0, d, "t.nc");
-  k.push_block(0, end_block(2), "t.nc");
+  rig.push_block(0, d, "t.nc");
+  rig.push_block(0, end_block(2), "t.nc");
   RunLog r = run_all(k);
   ASSERT_FALSE(r.events.empty());
   EXPECT_EQ(r.events.back().kind, EventKind::end);
@@ -115,10 +116,10 @@ TEST(Channel, DwellTakesItsTime) {
 }
 
 TEST(Channel, FeedMoveWithoutFeedIsAnErrorAtItsLine) {
-  Kernel k;
-  ASSERT_TRUE(k.configure(xyz_machine()));
-  k.push_block(0, move(7, nc::Motion::linear, 10.0, {}, {}, 0.0), "t.nc");
-  k.push_block(0, end_block(8), "t.nc");
+  KernelRig rig(xyz_machine());
+  Kernel& k = rig.k;
+  rig.push_block(0, move(7, nc::Motion::linear, 10.0, {}, {}, 0.0), "t.nc");
+  rig.push_block(0, end_block(8), "t.nc");
   RunLog r = run_all(k);
   auto err = std::find_if(r.events.begin(), r.events.end(),
                           [](const Event& e) { return e.kind == EventKind::error; });
@@ -126,51 +127,51 @@ TEST(Channel, FeedMoveWithoutFeedIsAnErrorAtItsLine) {
   EXPECT_EQ(err->id, ErrorId::KernelNoFeed);
   EXPECT_EQ(err->line, 7u);
   EXPECT_EQ(r.events.back().end_reason, EndReason::error);
-  EXPECT_EQ(k.snapshot(0).status, ChannelStatus::aborted);
+  EXPECT_EQ(k.channel_state(0).status, ChannelStatus::aborted);
 }
 
 TEST(Channel, SoftwareLimitIsAnError) {
   config::Machine m = xyz_machine();
   m.axes[0].swe_pos = 50;
-  Kernel k;
-  ASSERT_TRUE(k.configure(m));
-  k.push_block(0, move(3, nc::Motion::linear, 60.0), "t.nc");
+  KernelRig rig(m);
+  Kernel& k = rig.k;
+  rig.push_block(0, move(3, nc::Motion::linear, 60.0), "t.nc");
   RunLog r = run_all(k);
   ASSERT_FALSE(r.events.empty());
   EXPECT_EQ(r.events[0].id, ErrorId::KernelSoftwareLimit);
-  EXPECT_NE(k.message(r.events[0].message_index).find("X 60"), std::string::npos);
+  EXPECT_NE(rig.message(r.events[0].message_index).find("X 60"), std::string::npos);
 }
 
 TEST(Channel, CircleWithBadEndPointIsAnError) {
-  Kernel k;
-  ASSERT_TRUE(k.configure(xyz_machine()));
+  KernelRig rig(xyz_machine());
+  Kernel& k = rig.k;
   nc::Block arc = move(4, nc::Motion::cw, 20.0, 0.0);
   arc.ijk[0] = 5.0;  // centre (5,0): start radius 5, end radius 15
-  k.push_block(0, arc, "t.nc");
+  rig.push_block(0, arc, "t.nc");
   RunLog r = run_all(k);
   ASSERT_FALSE(r.events.empty());
   EXPECT_EQ(r.events[0].id, ErrorId::KernelArcEndNotOnCircle);
 }
 
 TEST(Channel, UnsupportedFunctionIsReportedNotIgnored) {
-  Kernel k;
-  ASSERT_TRUE(k.configure(xyz_machine()));
+  KernelRig rig(xyz_machine());
+  Kernel& k = rig.k;
   nc::Block b;
   b.line = 5;
   b.modal.speed_mode = nc::SpeedMode::g96;  // constant cutting speed comes with the spindle work
   b.axes[0] = 1.0;
-  k.push_block(0, b, "t.nc");
+  rig.push_block(0, b, "t.nc");
   RunLog r = run_all(k);
   ASSERT_FALSE(r.events.empty());
   EXPECT_EQ(r.events[0].id, ErrorId::KernelNotYetSupported);
-  EXPECT_NE(k.message(r.events[0].message_index).find("G96"), std::string::npos);
+  EXPECT_NE(rig.message(r.events[0].message_index).find("G96"), std::string::npos);
 }
 
 TEST(Channel, FeedholdStopsAndResumes) {
-  Kernel k;
-  ASSERT_TRUE(k.configure(xyz_machine()));
-  k.push_block(0, move(1, nc::Motion::linear, 100.0), "t.nc");
-  k.push_block(0, end_block(2), "t.nc");
+  KernelRig rig(xyz_machine());
+  Kernel& k = rig.k;
+  rig.push_block(0, move(1, nc::Motion::linear, 100.0), "t.nc");
+  rig.push_block(0, end_block(2), "t.nc");
   TickInput in;
   TickOutput out;
   for (int i = 0; i < 300; ++i) k.tick(in, out);
@@ -187,9 +188,9 @@ TEST(Channel, FeedholdStopsAndResumes) {
 }
 
 TEST(Channel, ResetEndsTheProgram) {
-  Kernel k;
-  ASSERT_TRUE(k.configure(xyz_machine()));
-  k.push_block(0, move(1, nc::Motion::linear, 100.0), "t.nc");
+  KernelRig rig(xyz_machine());
+  Kernel& k = rig.k;
+  rig.push_block(0, move(1, nc::Motion::linear, 100.0), "t.nc");
   TickInput in;
   TickOutput out;
   k.tick(in, out);
@@ -204,18 +205,18 @@ TEST(Kernel, TwoChannelsTickSideBySide) {
   m.channels.push_back(m.channels[0]);
   m.channels[1].number = 2;
   m.channel_data.emplace_back();
-  Kernel k;
-  ASSERT_TRUE(k.configure(m));
-  k.push_block(0, move(1, nc::Motion::linear, 10.0), "a.nc");
-  k.push_block(0, end_block(2), "a.nc");
-  k.push_block(1, move(1, nc::Motion::linear, 20.0), "b.nc");
-  k.push_block(1, end_block(2), "b.nc");
+  KernelRig rig(m);
+  Kernel& k = rig.k;
+  rig.push_block(0, move(1, nc::Motion::linear, 10.0), "a.nc");
+  rig.push_block(0, end_block(2), "a.nc");
+  rig.push_block(1, move(1, nc::Motion::linear, 20.0), "b.nc");
+  rig.push_block(1, end_block(2), "b.nc");
   TickInput in;
   TickOutput out;
   for (int i = 0; i < 10000 && !k.all_channels_done(); ++i) k.tick(in, out);
   EXPECT_TRUE(k.all_channels_done());
-  EXPECT_DOUBLE_EQ(k.snapshot(0).axis_mcs[0], 10.0);
-  EXPECT_DOUBLE_EQ(k.snapshot(1).axis_mcs[0], 20.0);
+  EXPECT_DOUBLE_EQ(k.channel_state(0).axis_mcs[0], 10.0);
+  EXPECT_DOUBLE_EQ(k.channel_state(1).axis_mcs[0], 20.0);
 }
 
 }  // namespace

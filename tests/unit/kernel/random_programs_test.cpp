@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "nck/config/load.hpp"
-#include "nck/kernel/decoder_setup.hpp"
+#include "nck/sim/dry_run.hpp"
 #include "nck/kernel/kernel.hpp"
 #include "nck/nc/decoder.hpp"
 
@@ -57,31 +57,15 @@ TEST(RandomPrograms, KernelEndsCleanlyWithFiniteSetPoints) {
     std::mt19937 rng(static_cast<std::uint32_t>(7000 + i));
     const auto program = dir / "p.nc";
     std::ofstream(program) << mutate(sources[static_cast<std::size_t>(i) % std::size(sources)], rng);
-    Kernel k;
-    ASSERT_TRUE(k.configure(*mill.machine));
-    nc::Decoder d(program, decoder_config(*mill.machine, 0));
-    bool fed = false;
-    TickInput in;
-    TickOutput out;
-    for (int cycle = 0; cycle < 60'000 && !k.all_channels_done(); ++cycle) {
-      while (!fed && k.queue_space(0) > 0) {
-        nc::Decoder::Result r = d.next();
-        if (r.status == nc::Decoder::Status::block) {
-          k.push_block(0, r.block, d.file_name(r.block.file_id));
-          fed = r.block.program_end || Kernel::needs_sync(r.block);
-        } else {
-          if (r.status == nc::Decoder::Status::error && !d.diagnostics().empty())
-            k.push_error(0, d.diagnostics().back(), 0);
-          else
-            k.push_end_without_m30(0, 0, 0);
-          fed = true;
-        }
-      }
-      k.tick(in, out);
+    auto run = sim::DryRun::create(*mill.machine, {program});
+    ASSERT_TRUE(run.has_value());
+    auto out = std::make_unique<TickOutput>();
+    for (int cycle = 0; cycle < 60'000 && !run->done(); ++cycle) {
+      run->step(*out);
       for (std::size_t j = 0; j < 3; ++j)
-        ASSERT_TRUE(std::isfinite(out.channels[0].axis_mcs[j])) << "seed " << 7000 + i;
-      for (std::size_t s = 0; s < k.spindle_count(); ++s)
-        ASSERT_TRUE(std::isfinite(out.spindles[s].set_rpm)) << "seed " << 7000 + i;
+        ASSERT_TRUE(std::isfinite(out->channels[0].axis_mcs[j])) << "seed " << 7000 + i;
+      for (std::size_t s = 0; s < run->kernel().spindle_count(); ++s)
+        ASSERT_TRUE(std::isfinite(out->spindles[s].set_rpm)) << "seed " << 7000 + i;
     }
   }
   std::filesystem::remove_all(dir);

@@ -1,7 +1,15 @@
 #pragma once
 // A small hand-built machine for kernel tests: one channel, X Y Z.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
 #include "nck/config/machine.hpp"
+#include "nck/kernel/kernel.hpp"
 #include "nck/nc/block.hpp"
+#include "nck/prep/channel_prep.hpp"
 
 namespace nck::kernel::testing {
 
@@ -47,5 +55,23 @@ inline nc::Block end_block(std::uint32_t line) {
   b.program_end = true;
   return b;
 }
+
+// A kernel with one preparation per channel that takes hand-made blocks
+// instead of decoding a program.
+struct KernelRig {
+  explicit KernelRig(const config::Machine& machine) : m(std::make_unique<config::Machine>(machine)) {
+    EXPECT_TRUE(k.configure(*m));
+    for (std::size_t ch = 0; ch < m->channels.size(); ++ch) preps.emplace_back(*m, ch, "", store, prep::PrepOptions{});
+  }
+  void push_block(std::size_t ch, const nc::Block& b, const std::string& file) {
+    EXPECT_TRUE(preps[ch].prepare(b, file, k.commands(ch)));
+  }
+  const std::string& message(std::uint32_t index) const { return store.messages.at(index); }
+
+  std::unique_ptr<config::Machine> m;
+  Kernel k;
+  prep::PlanStore store;
+  std::vector<prep::ChannelPrep> preps;
+};
 
 }  // namespace nck::kernel::testing

@@ -171,10 +171,9 @@ TEST(NcWords, MFunctionsAndStops) {
   ASSERT_EQ(d.blocks.size(), 4u) << dump(d);
   EXPECT_TRUE(d.blocks[0].stop);
   EXPECT_FALSE(d.blocks[1].stop);
+  EXPECT_TRUE(d.blocks[1].optional_stop);  // M1: the kernel decides with the HLI switch
   EXPECT_EQ(d.blocks[2].m, (std::vector<int>{8, 80}));
   EXPECT_EQ(d.blocks[2].h, std::vector<int>{5});
-  cfg.optional_stop = true;
-  EXPECT_TRUE(decode("M1\nM30\n", cfg).blocks[0].stop);
   EXPECT_TRUE(decode("M-3\n").has(ErrorId::NcBadMFunction));
 }
 

@@ -1,0 +1,81 @@
+#pragma once
+// One planned step of a channel: what the cyclic executor needs, as plain
+// fixed-size data (the queue between planning and tick() holds these).
+#include <cstdint>
+
+#include "nck/core/diagnostic.hpp"
+#include "nck/core/fixed_vector.hpp"
+#include "nck/kernel/event.hpp"
+#include "nck/motion/limits.hpp"
+#include "nck/motion/segment.hpp"
+#include "nck/kernel/affine_map.hpp"
+#include "nck/kernel/spindle_action.hpp"
+
+namespace nck::kernel {
+
+enum class CommandKind : std::uint8_t {
+  motion,    // follow `segment` at `v_cmd_mm_s`
+  dwell,     // wait `dwell_s`
+  stop,      // M0 / M1 (`optional_stop`: M1 stops only while the HLI asks)
+  end,       // M2 / M30: program end
+  error,     // raise `error_id` and abort the channel
+  nop,       // a block without motion (only its block event and outputs)
+};
+
+// A channel function output to the PLC with the block (M, H, T); its
+// synchronisation bits decide when it is output and waited for.
+struct Output {
+  FunctionKind fn = FunctionKind::none;
+  std::int32_t number = 0;
+  std::uint32_t sync = 0;
+  double ack_timeout_s = 0;  // 0 = none
+};
+
+struct Command {
+  static constexpr std::size_t kMaxOutputs = 8;
+  static constexpr std::size_t kMaxSpindleActions = 16;
+
+  CommandKind kind = CommandKind::nop;
+  // the block it came from
+  std::uint16_t file_id = 0;
+  std::uint32_t line = 0;
+  bool has_n = false;
+  std::int64_t n = 0;
+  bool emit_block_event = true;  // false for follow-up commands of one block
+  // motion: the segment is in machine coordinates, or in program
+  // coordinates mapped by `map` when a rotation acts (mapped == true)
+  motion::Segment segment{};
+  bool mapped = false;
+  AffineMap map{};
+  motion::PathLimits limits{};
+  double v_cmd_mm_s = 0;
+  // dwell
+  double dwell_s = 0;
+  // stop
+  bool optional_stop = false;
+  // end / error
+  EndReason end_reason = EndReason::m30;
+  ErrorId error_id{};
+  std::uint32_t message_index = 0;
+  // PLC outputs of the block and its spindle functions, in execution order
+  FixedVector<Output, kMaxOutputs> outputs;
+  FixedVector<SpindleAction, kMaxSpindleActions> spindle_actions;
+  bool feed_motion = false;  // G1/G2/G3: MVS_SLM functions synchronise here
+  // G201 / G202: axes entering / leaving manual (handwheel) mode, bit j = axis j
+  std::uint32_t manual_on = 0, manual_off = 0;
+  bool get_manual_offsets = false;  // #GET MANUAL OFFSETS: the decoder reads them after this block
+  // G100: the motion stops where the probe switches (probe_axis reaches probe_pos_mm)
+  bool measure = false;
+  std::int8_t probe_axis = -1;
+  double probe_pos_mm = 0;
+  bool expl_syn = false;     // #EXPL SYN: MVS_SLP functions synchronise here
+  // offset events (PlanStore::offsets) and warnings raised with the block
+  FixedVector<std::uint32_t, 6> offset_events;
+  struct Warning {
+    ErrorId id{};
+    std::uint32_t message_index = 0;
+  };
+  FixedVector<Warning, 4> warnings;
+};
+
+}  // namespace nck::kernel

@@ -1,0 +1,41 @@
+#pragma once
+// The two queues between a channel's block preparation (setup side, nck/prep)
+// and its cyclic executor (kernel::Channel):
+//   commands  prep -> channel: planned, immutable commands;
+//   feedback  channel -> prep: what execution found that decoding needs
+//             (a G100 measuring result, the handwheel offsets at
+//             #GET MANUAL OFFSETS), as typed records.
+// Both are single-producer / single-consumer and lock-free, so preparation
+// may run in a thread of its own (docs/decisions.md, "threading contract").
+#include <cstdint>
+
+#include "nck/core/spsc_queue.hpp"
+#include "nck/kernel/command.hpp"
+#include "nck/kernel/measure.hpp"
+
+namespace nck::kernel {
+
+inline constexpr std::size_t kCommandQueueLength = 64;
+// One block plans into at most this many commands (G74 homing: one per
+// order group); preparation plans a block only when this many slots are free.
+inline constexpr std::size_t kMaxCommandsPerBlock = 4;
+
+using CommandQueue = SpscQueue<Command, kCommandQueueLength>;
+
+enum class FeedbackKind : std::uint8_t {
+  measured,        // a G100 run ended: `measure`
+  manual_offsets,  // #GET MANUAL OFFSETS ran: `manual_offsets_mm`
+};
+
+struct Feedback {
+  FeedbackKind kind = FeedbackKind::measured;
+  MeasureResult measure{};
+  motion::AxisVector manual_offsets_mm{};
+};
+
+// Preparation holds further blocks back after each block that needs
+// feedback, so at most one record is in flight per channel; the spare slots
+// make an overflow impossible rather than unlikely.
+using FeedbackQueue = SpscQueue<Feedback, 4>;
+
+}  // namespace nck::kernel

@@ -1,0 +1,78 @@
+#pragma once
+// A channel's block preparation (setup side: may allocate, never called from
+// tick()): decoder -> look-ahead window -> planner -> the channel's command
+// queue, and the feedback queue back into the decoder's variables.
+//
+// Threading contract: a ChannelPrep and its PlanStore belong to one thread
+// (the "prep thread"); the kernel's tick() runs in another (or the same).
+// They share only the two SPSC queues of nck/kernel/queues.hpp: this class is
+// the only producer of commands and the only consumer of feedback.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "nck/config/machine.hpp"
+#include "nck/core/diagnostic.hpp"
+#include "nck/kernel/queues.hpp"
+#include "nck/nc/block.hpp"
+#include "nck/nc/decoder.hpp"
+#include "nck/prep/lookahead_window.hpp"
+#include "nck/prep/plan_store.hpp"
+
+namespace nck::prep {
+
+class Planner;
+
+struct PrepOptions {
+  std::uint32_t clamp_index = 0;  // clamp-offset group at program start (pzv_grp[i], --clamp-index)
+};
+
+class ChannelPrep {
+ public:
+  // setup: program empty = the channel has no program and stays idle.
+  ChannelPrep(const config::Machine& m, std::size_t ch, const std::filesystem::path& program,
+              PlanStore& store, const PrepOptions& options);
+  ~ChannelPrep();
+  ChannelPrep(ChannelPrep&&) noexcept;
+  ChannelPrep& operator=(ChannelPrep&&) noexcept;
+
+  // Decodes and plans while the command queue has room, until the program
+  // ends or a block needs feedback from execution (G100, #GET MANUAL
+  // OFFSETS); takes that feedback when it has come. channel_done: the
+  // channel ended (no feedback will come any more).
+  void feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& feedback, bool channel_done);
+  // Plans one decoded block into the queue through the window (feed() uses
+  // it; tests call it with blocks of their own). False when the queue has
+  // no room for it.
+  bool prepare(const nc::Block& b, const std::string& file_name, kernel::CommandQueue& commands);
+
+  bool has_program() const { return decoder_.has_value(); }
+  // Everything up to the program end (or the error that stopped decoding)
+  // is in the command queue.
+  bool done() const { return done_; }
+  // Decoder warnings found by the last feed() (for the caller to report).
+  const std::vector<Diagnostic>& new_warnings() const { return new_warnings_; }
+  const nc::Decoder* decoder() const { return decoder_ ? &*decoder_ : nullptr; }
+  const Planner& planner() const { return *planner_; }
+
+  // Does executing b produce feedback that later blocks may read?
+  static bool needs_feedback(const nc::Block& b);
+
+ private:
+  void take_feedback(const kernel::Feedback& f);
+  void hand_over(const kernel::Command& c, kernel::CommandQueue& commands);
+  void collect_warnings();
+
+  std::optional<nc::Decoder> decoder_;
+  std::unique_ptr<Planner> planner_;
+  LookAheadWindow<8> window_;
+  std::vector<Diagnostic> new_warnings_;
+  std::size_t diagnostics_seen_ = 0;
+  bool done_ = false;
+  bool awaiting_feedback_ = false;
+};
+
+}  // namespace nck::prep

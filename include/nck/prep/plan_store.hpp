@@ -1,0 +1,29 @@
+#pragma once
+// Texts and values that events refer to by index: prepared while planning
+// (setup side, may allocate) so the cyclic path only copies an index.
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace nck::prep {
+
+struct OffsetPayload {
+  std::string kind;                                   // "zero", "g92", "cs" ...
+  std::vector<std::pair<std::string, double>> values;  // per axis (and angles)
+};
+
+struct PlanStore {
+  std::vector<std::string> messages;
+  std::vector<OffsetPayload> offsets;
+
+  std::uint32_t add_message(std::string m) {
+    messages.push_back(std::move(m));
+    return static_cast<std::uint32_t>(messages.size() - 1);
+  }
+  std::uint32_t add_offset(OffsetPayload p) {
+    offsets.push_back(std::move(p));
+    return static_cast<std::uint32_t>(offsets.size() - 1);
+  }
+};
+
+}  // namespace nck::prep

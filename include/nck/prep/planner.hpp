@@ -1,0 +1,89 @@
+#pragma once
+// Block preparation (setup side, not real-time): turns a decoded block into
+// a Command for the cyclic executor — runs the block's offset functions,
+// resolves absolute/incremental words through the offset chain to machine
+// positions, builds the path segment and its dynamic limits, and rejects
+// what this version cannot execute yet with a clear error.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "nck/prep/channel_frames.hpp"
+#include "nck/prep/kernel_vocabulary.hpp"
+#include "nck/config/machine.hpp"
+#include "nck/nc/block.hpp"
+#include "nck/prep/plan_store.hpp"
+#include "nck/kernel/measure.hpp"
+#include "nck/prep/lookahead_window.hpp"
+#include "nck/prep/spindle_planner.hpp"
+
+namespace nck::prep {
+
+struct PlannerOptions {
+  std::uint32_t clamp_index = 0;  // pzv_grp chosen at program start (--clamp-index)
+};
+
+class Planner {
+ public:
+  // spindles: the kernel spindle index of each of the channel's spindles.
+  Planner(const config::Machine& machine, std::size_t channel_index, PlanStore& store,
+          const PlannerOptions& options, const std::vector<std::int8_t>& spindles);
+
+  // One block becomes one command, or several for G74 homing of path axes
+  // (one per homing order group).
+  using Commands = PlannedBlock;
+  Commands plan(const nc::Block& block, const std::string& file_name);
+  Command error_command(ErrorId id, std::string message, std::uint16_t file_id,
+                        std::uint32_t line);
+
+  const nc::ModalState& modal() const { return modal_; }
+  std::size_t axis_count() const { return n_axes_; }
+  const ChannelFrames& frames() const { return frames_; }
+  // Where the machine axes stand when everything planned so far has run.
+  const motion::AxisVector& planned_mcs() const { return mcs_; }
+  // After a G100 run (the caller held further blocks back until it ended):
+  // planning goes on from where the axes stopped; G101 uses the result.
+  // Returns the decoder's V.A.MESS/MERF/MOFFS variables.
+  std::vector<std::pair<std::string, double>> take_measurement(const kernel::MeasureResult& r);
+
+ private:
+  Command plan_one(const nc::Block& block, const std::string& file_name);
+  Command plan_motion(const nc::Block& b, Command c, const std::string& file_name);
+  Command plan_measuring_run(const nc::Block& b, Command c, const std::string& file_name);
+  bool apply_measure_offset(const nc::Block& b, Command& c, Command& error);
+  void plan_homing(const nc::Block& b, Command first, Commands& out);
+  std::expected<motion::Segment, Command> arc_segment(const nc::Block& b,
+                                                      const motion::AxisVector& start,
+                                                      const motion::AxisVector& target,
+                                                      const motion::AxisVector& origin);
+  bool add_outputs(const nc::Block& b, Command& c);
+  bool apply_frames(const nc::Block& b, Command& c, Command& error);
+  std::string unsupported(const nc::Block& b) const;
+  std::string plc_control_violation(const nc::Block& b) const;
+  int axis_named(const char* name) const;
+
+  const config::ChannelConfig& channel_;
+  PlanStore& store_;
+  std::size_t n_axes_ = 0;
+  ChannelFrames frames_;
+  SpindlePlanner spindles_;
+  motion::AxisVector pcs_{};  // programmed position (program coordinates)
+  motion::AxisVector mcs_{};  // machine position at the end of the last planned block
+  std::array<motion::AxisDynamics, config::kMaxPathAxes> feed_dyn_{}, rapid_dyn_{};
+  std::array<double, config::kMaxPathAxes> swe_neg_{}, swe_pos_{};
+  std::array<double, config::kMaxPathAxes> ref_pos_{};  // pos_refpkt: where G74 homes an axis
+  nc::ModalState modal_;
+  // The last G100 run, in program coordinates (G101 reads it).
+  struct Measured {
+    bool any = false;        // a G100 run has ended
+    bool triggered = false;  // and its probe switched
+    motion::AxisVector measured_pcs{};
+    motion::AxisVector target_pcs{};
+  };
+  Measured measured_{};
+  motion::AxisVector measure_target_pcs_{};
+  std::int8_t probe_axis_ = -1;
+  double probe_pos_mm_ = 0;
+};
+
+}  // namespace nck::prep

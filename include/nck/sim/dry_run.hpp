@@ -1,0 +1,94 @@
+#pragma once
+// A whole dry run, as `nck run`, the tests and the benchmarks drive it: per
+// channel a block preparation (nck/prep) feeding the kernel through its
+// queues, the kernel, and the simulated machine around it (MachineSim).
+//
+//   run.prepare();        // setup side: decode and plan what fits (allocates)
+//   run.cycle(out);       // rt: sim.read -> kernel.tick -> sim.write
+//
+// A threaded integration keeps the same shape: prepare() in the prep thread,
+// cycle() (with real I/O instead of MachineSim) in the real-time thread; they
+// share only the kernel's SPSC queues (docs/decisions.md).
+#include <cstdint>
+#include <expected>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "nck/config/machine.hpp"
+#include "nck/core/diagnostic.hpp"
+#include "nck/kernel/kernel.hpp"
+#include "nck/nc/modal.hpp"
+#include "nck/plc/scenario.hpp"
+#include "nck/prep/channel_prep.hpp"
+#include "nck/prep/plan_store.hpp"
+#include "nck/sim/machine_sim.hpp"
+
+namespace nck::sim {
+
+struct DryRunOptions {
+  std::uint32_t clamp_index = 0;  // clamp-offset group at program start (--clamp-index)
+};
+
+// What a channel knows about its programmed state, for --final.
+struct ChannelSnapshot {
+  std::array<double, config::kMaxPathAxes> axis_mcs{};
+  std::array<double, config::kMaxPathAxes> axis_pcs{};
+  // every active offset: kind -> per-axis values
+  std::vector<std::pair<std::string, std::vector<std::pair<std::string, double>>>> offsets;
+  nc::ModalState modal;
+  kernel::ChannelStatus status = kernel::ChannelStatus::idle;
+};
+
+class DryRun {
+ public:
+  // setup: programs[i] runs in channel i; channels without one stay idle.
+  static std::expected<DryRun, Diagnostic> create(const config::Machine& m,
+                                                  const std::vector<std::filesystem::path>& programs,
+                                                  const DryRunOptions& options = {});
+  ~DryRun();
+  DryRun(DryRun&&) noexcept;
+  DryRun& operator=(DryRun&&) noexcept;
+
+  // setup: the --plc scenario; it must stay alive while the run goes on.
+  void load_scenario(const plc::Scenario& scenario) { sim_->load_scenario(scenario); }
+
+  // setup side: every channel's preparation decodes and plans what fits.
+  // Decoder warnings it found are in new_warnings(ch) until the next call.
+  void prepare();
+  // rt: one cycle of the simulated machine and the kernel.
+  void cycle(kernel::TickOutput& out) noexcept;
+  // Both, as a dry run does them every cycle.
+  void step(kernel::TickOutput& out) {
+    prepare();
+    cycle(out);
+  }
+
+  // Every channel that has a program has ended.
+  bool done() const noexcept;
+  double time_s() const noexcept { return kernel_->time_s(); }
+
+  std::size_t channel_count() const { return preps_.size(); }
+  const std::vector<Diagnostic>& new_warnings(std::size_t ch) const { return preps_.at(ch).new_warnings(); }
+  const prep::ChannelPrep& prep(std::size_t ch) const { return preps_.at(ch); }
+  const kernel::Kernel& kernel() const { return *kernel_; }
+  const MachineSim& machine() const { return *sim_; }
+  ChannelSnapshot snapshot(std::size_t ch) const;
+  // Texts and offset values that events refer to by message_index.
+  const std::string& message(std::uint32_t index) const;
+  const prep::OffsetPayload& offset(std::uint32_t index) const;
+
+ private:
+  DryRun() = default;
+
+  std::unique_ptr<const config::Machine> machine_;
+  std::unique_ptr<kernel::Kernel> kernel_;
+  std::unique_ptr<MachineSim> sim_;
+  std::unique_ptr<prep::PlanStore> store_;
+  std::vector<prep::ChannelPrep> preps_;
+  std::unique_ptr<kernel::TickInput> in_;
+};
+
+}  // namespace nck::sim

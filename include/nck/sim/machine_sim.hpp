@@ -1,0 +1,59 @@
+#pragma once
+// The simulated machine around the kernel, in ros2_control's read -> update
+// -> write order: read() fills the kernel's TickInput before a cycle (the
+// PLC's HLI controls and acknowledgements, external spindle commands from
+// the --plc scenario, handwheel turns, the measuring probe), write() takes
+// the TickOutput after it (technology functions to acknowledge, the HLI
+// spindle status, the axes' set points that the probe watches).
+//
+// An integrator replaces this class with real I/O; the kernel cannot tell
+// the difference. Real-time contract: read() and write() never allocate,
+// lock or throw.
+#include <array>
+#include <cstdint>
+
+#include "nck/config/machine.hpp"
+#include "nck/kernel/tick_io.hpp"
+#include "nck/plc/hli.hpp"
+#include "nck/plc/scenario.hpp"
+#include "nck/sim/plc_sim.hpp"
+#include "nck/sim/probe.hpp"
+#include "nck/sim/scenario_player.hpp"
+
+namespace nck::sim {
+
+static_assert(kernel::kMaxPendingOutputs <= PlcSim::kCapacity,
+              "the simulated PLC holds every output the kernel may have outstanding");
+
+class MachineSim {
+ public:
+  explicit MachineSim(const config::Machine& m);  // setup
+  // setup: the --plc scenario; it must stay alive while the sim runs.
+  void load_scenario(const plc::Scenario& scenario);
+
+  // rt: the machine's inputs for the cycle starting at t_s.
+  void read(double t_s, kernel::TickInput& in) noexcept;
+  // rt: the kernel's outputs of the cycle just computed.
+  void write(const kernel::TickOutput& out) noexcept;
+
+  // The HLI image as the PLC sees it: controls as the PLC (scenario) set
+  // them, spindle status as the CNC last wrote it.
+  const plc::HliImage& hli() const noexcept { return hli_; }
+
+ private:
+  void apply(const plc::ScenarioAction& a, kernel::TickInput& in) noexcept;
+  void apply_to_spindle(const plc::ScenarioAction& a) noexcept;
+
+  PlcSim plc_;
+  plc::HliImage hli_;
+  plc::SpindleMap map_;
+  ScenarioPlayer player_;
+  std::array<Probe, config::kMaxChannels> probes_{};
+  std::array<bool, config::kMaxChannels> probe_switched_{};  // in the last cycle
+  std::size_t channels_ = 0;
+  std::size_t spindles_ = 0;
+  double t_s_ = 0;  // start of the cycle being computed
+  PlcSim::AckList acks_;
+};
+
+}  // namespace nck::sim

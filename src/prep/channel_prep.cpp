@@ -1,0 +1,106 @@
+#include "nck/prep/channel_prep.hpp"
+
+#include <algorithm>
+
+#include "nck/plc/hli.hpp"
+#include "nck/prep/decoder_setup.hpp"
+#include "nck/prep/planner.hpp"
+
+namespace nck::prep {
+namespace {
+
+// The kernel spindle index of each of channel ch's spindles (the kernel
+// numbers spindles in the HLI map's order).
+std::vector<std::int8_t> kernel_spindles(const config::Machine& m, std::size_t ch) {
+  const plc::SpindleMap map = plc::build_spindle_map(m);
+  std::vector<std::int8_t> out;
+  for (std::size_t i = 0; i < m.channels[ch].spindles.size(); ++i)
+    out.push_back(map.at(ch + 1, static_cast<std::int32_t>(i)));
+  return out;
+}
+
+}  // namespace
+
+ChannelPrep::ChannelPrep(const config::Machine& m, std::size_t ch, const std::filesystem::path& program,
+                         PlanStore& store, const PrepOptions& options)
+    : planner_(std::make_unique<Planner>(m, ch, store, PlannerOptions{options.clamp_index},
+                                         kernel_spindles(m, ch))) {
+  if (program.empty()) {
+    done_ = true;
+    return;
+  }
+  decoder_.emplace(program, decoder_config(m, ch));
+  for (const auto& [name, value] : initial_variables(m, ch, options.clamp_index))
+    (void)decoder_->set_variable(name, value);
+}
+
+ChannelPrep::~ChannelPrep() = default;
+ChannelPrep::ChannelPrep(ChannelPrep&&) noexcept = default;
+ChannelPrep& ChannelPrep::operator=(ChannelPrep&&) noexcept = default;
+
+bool ChannelPrep::needs_feedback(const nc::Block& b) {
+  return std::find(b.g_nonmodal.begin(), b.g_nonmodal.end(), 100) != b.g_nonmodal.end() ||
+         (b.hash && std::holds_alternative<nc::GetManualOffsets>(*b.hash));
+}
+
+void ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& feedback, bool channel_done) {
+  new_warnings_.clear();
+  if (awaiting_feedback_) {
+    if (feedback.empty() && !channel_done) return;
+    if (!feedback.empty()) {
+      take_feedback(feedback.front());
+      feedback.pop();
+    }
+    awaiting_feedback_ = false;
+  }
+  while (!done_ && !awaiting_feedback_ && commands.free_slots() >= kernel::kMaxCommandsPerBlock) {
+    nc::Decoder::Result r = decoder_->next();
+    collect_warnings();
+    if (r.status == nc::Decoder::Status::block) {
+      (void)prepare(r.block, decoder_->file_name(r.block.file_id), commands);
+      done_ = r.block.program_end;
+      awaiting_feedback_ = needs_feedback(r.block);
+    } else if (r.status == nc::Decoder::Status::end) {
+      hand_over(planner_->error_command(ErrorId::KernelMissingProgramEnd,
+                                        "the program has no M30 (or M2) at its end", 0, 0),
+                commands);
+      done_ = true;
+    } else {
+      const auto& ds = decoder_->diagnostics();
+      const Diagnostic d = ds.empty() ? make_diagnostic(ErrorId::NcFileUnreadable, {}, "decoder stopped")
+                                      : ds.back();
+      hand_over(planner_->error_command(d.id, d.message, 0, d.loc.line), commands);
+      done_ = true;
+    }
+  }
+}
+
+bool ChannelPrep::prepare(const nc::Block& b, const std::string& file_name, kernel::CommandQueue& commands) {
+  if (window_.full() && !window_.release(commands, false)) return false;
+  (void)window_.push(planner_->plan(b, file_name));
+  // A block that needs feedback, and the program end, must reach the channel now.
+  return window_.release(commands, needs_feedback(b) || b.program_end);
+}
+
+// An error or the missing program end comes after every block before it.
+void ChannelPrep::hand_over(const kernel::Command& c, kernel::CommandQueue& commands) {
+  (void)window_.release(commands, true);
+  (void)commands.push(c);  // room: feed() decodes only with kMaxCommandsPerBlock slots free
+}
+
+void ChannelPrep::take_feedback(const kernel::Feedback& f) {
+  if (f.kind == kernel::FeedbackKind::measured) {
+    for (const auto& [name, value] : planner_->take_measurement(f.measure)) (void)decoder_->set_variable(name, value);
+    return;
+  }
+  for (std::size_t j = 0; j < planner_->axis_count(); ++j)
+    (void)decoder_->set_variable("V.A.MANUAL_OFFSETS." + planner_->frames().axis_name(j), f.manual_offsets_mm[j]);
+}
+
+void ChannelPrep::collect_warnings() {
+  const auto& ds = decoder_->diagnostics();
+  for (; diagnostics_seen_ < ds.size(); ++diagnostics_seen_)
+    if (ds[diagnostics_seen_].severity == Severity::warning) new_warnings_.push_back(ds[diagnostics_seen_]);
+}
+
+}  // namespace nck::prep

@@ -1,0 +1,289 @@
+#include "nck/prep/planner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace nck::prep {
+namespace {
+
+bool is_fixed_m(int m) {
+  switch (m) {
+    case 0: case 1: case 2: case 17: case 29: case 30:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// # commands this version executes: the offset chain's, #EXPL SYN and
+// #MAIN SPINDLE (whose name mapping the decoder does).
+bool is_executed_command(const nc::HashCommand& h) {
+  if (std::holds_alternative<nc::ExplSyn>(h) || std::holds_alternative<nc::MainSpindle>(h) ||
+      std::holds_alternative<nc::GetManualOffsets>(h))
+    return true;
+  return std::holds_alternative<nc::CoordSystem>(h) || std::holds_alternative<nc::Ecs>(h) ||
+         std::holds_alternative<nc::Mcs>(h) || std::holds_alternative<nc::Rotation>(h) ||
+         std::holds_alternative<nc::PSet>(h) || std::holds_alternative<nc::PReset>(h) ||
+         std::holds_alternative<nc::Tlc>(h) || std::holds_alternative<nc::SuppressOffsets>(h) ||
+         (std::holds_alternative<nc::ToolData>(h) && !std::get<nc::ToolData>(h).prep);
+}
+
+}  // namespace
+
+Planner::Planner(const config::Machine& machine, std::size_t channel_index, PlanStore& store,
+                 const PlannerOptions& options, const std::vector<std::int8_t>& spindles)
+    : channel_(machine.channels[channel_index]),
+      store_(store),
+      n_axes_(std::min(channel_.axes.size(), config::kMaxPathAxes)),
+      frames_(channel_, channel_index < machine.channel_data.size() ? machine.channel_data[channel_index]
+                                                                    : config::ChannelData{},
+              n_axes_, options.clamp_index),
+      spindles_(machine, channel_index, std::vector<int>(spindles.begin(), spindles.end())) {
+  for (std::size_t j = 0; j < n_axes_; ++j) {
+    static const config::AxisConfig kNoAxisList;  // defaults for an axis without a list
+    const int idx = channel_.axes[j].axis_index;
+    const config::AxisConfig& ax = idx >= 0 ? machine.axes[static_cast<std::size_t>(idx)] : kNoAxisList;
+    const config::GearStage& g = ax.gear(ax.initial_gear_stage);
+    // Feed moves: a_beschl up, a_brems down; rapid: a_grenz; all capped by a_max.
+    feed_dyn_[j] = {g.vb_max, std::min(g.a_beschl, g.a_max), std::min(g.a_brems, g.a_max)};
+    const double a_rapid = std::min(g.a_grenz, g.a_max);
+    rapid_dyn_[j] = {std::min(g.vb_eilgang, g.vb_max), a_rapid, a_rapid};
+    swe_neg_[j] = ax.swe_neg;
+    swe_pos_[j] = ax.swe_pos;
+    ref_pos_[j] = g.pos_refpkt;
+    if (!machine.sim.probe_axis.empty() && channel_.axes[j].name == machine.sim.probe_axis) {
+      probe_axis_ = static_cast<std::int8_t>(j);
+      probe_pos_mm_ = machine.sim.probe_position_mm;
+    }
+  }
+  pcs_ = frames_.to_pcs(mcs_);  // the clamp / default zero offset act from the start
+}
+
+Command Planner::error_command(ErrorId id, std::string message, std::uint16_t file_id,
+                               std::uint32_t line) {
+  Command c;
+  c.kind = CommandKind::error;
+  c.error_id = id;
+  c.file_id = file_id;
+  c.line = line;
+  c.emit_block_event = false;
+  c.message_index = store_.add_message(std::move(message));
+  return c;
+}
+
+int Planner::axis_named(const char* name) const {
+  for (std::size_t j = 0; j < n_axes_; ++j)
+    if (channel_.axes[j].name == name) return static_cast<int>(j);
+  return -1;
+}
+
+// Names what the block asks for that this version does not execute yet, or "".
+std::string Planner::unsupported(const nc::Block& b) const {
+  if (b.hash && !is_executed_command(*b.hash))
+    return fmt::format("{} is not executed yet", nc::hash_command_name(*b.hash));
+  for (const nc::SpindleCommand& s : b.spindles) {
+    if (s.callax || s.putax) return fmt::format("CALLAX/PUTAX of {} are not executed yet", s.name);
+    if (s.feed_link) return fmt::format("FEED_LINK of {} is not executed yet", s.name);
+    if (s.override_speed_fact_pct) return fmt::format("OVERRIDE SPEED_FACT of {} is not executed yet", s.name);
+  }
+  for (int g : b.g_nonmodal) {
+    switch (g) {
+      case 4: case 92: case 100: case 101: case 102: case 112: case 130: case 135: case 136: case 137: case 167:
+        continue;
+      case 74:
+        continue;
+      default:
+        return fmt::format("G{} is not executed yet", g);
+    }
+  }
+  for (const nc::VariableWrite& w : b.kernel_writes)
+    if (w.name.rfind("V.G.NP[", 0) != 0) return fmt::format("writing {} is not executed yet", w.name);
+  if (b.dwell_revs) return "a dwell in spindle revolutions (G4 S..) is not executed yet";
+  const nc::ModalState& m = b.modal;
+  using nc::Motion;
+  if (m.motion != Motion::rapid && m.motion != Motion::linear && m.motion != Motion::cw &&
+      m.motion != Motion::ccw)
+    return "thread cutting and tapping (G33/G63/G331/G332) are not executed yet";
+  if (m.feed_mode != nc::FeedMode::g94) return "feed modes G93/G95 are not executed yet";
+  if (m.speed_mode != nc::SpeedMode::g97) return "constant cutting speed G96 is not executed yet";
+  if (m.radius_comp != nc::RadiusComp::g40) return "tool radius compensation G41/G42 is not executed yet";
+  if (m.diameter) return "diameter programming G51 is not executed yet";
+  return {};
+}
+
+// A spindle commanded over the channel HLI (plc_control 1) knows only its
+// speed and M3/M4/M5/M19 (FCT-S1 2.2.2.2).
+std::string Planner::plc_control_violation(const nc::Block& b) const {
+  for (const nc::SpindleCommand& s : b.spindles) {
+    const auto sp = std::find_if(channel_.spindles.begin(), channel_.spindles.end(),
+                                 [&](const config::ChannelSpindle& c) { return c.name == s.target; });
+    if (sp == channel_.spindles.end() || !sp->plc_control) continue;
+    if (s.g74 || s.g167 || s.g130_pct || s.g135 || s.g137 || s.g136_pct || s.gear_stage || s.g112_stage ||
+        s.get_dynamic_data || s.default_dynamic_data || !s.user_m.empty() || !s.user_h.empty())
+      return fmt::format("{} is a PLC spindle over the channel interface: only its speed and "
+                         "M3/M4/M5/M19 can be programmed",
+                         sp->name);
+  }
+  return {};
+}
+
+bool Planner::add_outputs(const nc::Block& b, Command& c) {
+  for (int m : b.m) {
+    if (is_fixed_m(m)) continue;
+    const std::uint32_t sync = m >= 0 && static_cast<std::size_t>(m) < channel_.m_synch.size()
+                                   ? channel_.m_synch[static_cast<std::size_t>(m)]
+                                   : config::sync::MOS;
+    // A channel M function with NO_SYNCH is not output (FCT-S1 2.5).
+    if (sync == config::sync::NO_SYNCH) continue;
+    if (!c.outputs.push_back({FunctionKind::m, m, sync})) return false;
+  }
+  for (int h : b.h)
+    if (!c.outputs.push_back({FunctionKind::h, h, config::sync::MOS})) return false;
+  if (b.t && !c.outputs.push_back({FunctionKind::t, static_cast<std::int32_t>(*b.t), config::sync::MOS}))
+    return false;
+  return true;
+}
+
+// Runs the block's offset functions; on failure `error` holds the command.
+bool Planner::apply_frames(const nc::Block& b, Command& c, Command& error) {
+  auto changes = frames_.apply(b, mcs_);
+  if (!changes) {
+    error = error_command(changes.error().id, changes.error().message, b.file_id, b.line);
+    return false;
+  }
+  for (const Diagnostic& w : changes->warnings)
+    (void)c.warnings.push_back({w.id, store_.add_message(w.message)});
+  for (frames::OffsetKind k : changes->kinds) {
+    const std::string kind(frames::to_string(k));
+    const bool seen = std::any_of(c.offset_events.begin(), c.offset_events.end(),
+                                  [&](std::uint32_t i) { return store_.offsets[i].kind == kind; });
+    if (!seen) (void)c.offset_events.push_back(store_.add_offset({kind, frames_.values_of(k, true)}));
+  }
+  // After a change of coordinate system the axes stay where they are: their
+  // program position is read anew in the new system.
+  if (changes->coordinate_system_changed) pcs_ = frames_.to_pcs(mcs_);
+  return true;
+}
+
+Planner::Commands Planner::plan(const nc::Block& b, const std::string& file_name) {
+  Commands out;
+  const bool homing = b.has_axis_words() &&
+                      std::find(b.g_nonmodal.begin(), b.g_nonmodal.end(), 74) != b.g_nonmodal.end();
+  Command c = plan_one(b, file_name);
+  if (homing && c.kind == CommandKind::nop) {
+    plan_homing(b, c, out);
+  } else {
+    (void)out.push_back(c);
+  }
+  return out;
+}
+
+// Homing path axes (G74 X<order> Y<order>..): the axes with the same order
+// number move together at rapid to their reference position (pos_refpkt),
+// group after group; the block's other functions go with the first group.
+// Homing clears #PSET of the homed axes.
+void Planner::plan_homing(const nc::Block& b, Command first, Commands& out) {
+  std::array<double, config::kMaxPathAxes> order{};
+  std::vector<double> groups;
+  for (std::size_t j = 0; j < n_axes_; ++j)
+    if (b.axes[j]) {
+      order[j] = *b.axes[j];
+      if (std::find(groups.begin(), groups.end(), order[j]) == groups.end()) groups.push_back(order[j]);
+    }
+  std::sort(groups.begin(), groups.end());
+  if (groups.size() > out.capacity()) groups.resize(out.capacity());
+  Command c = first;
+  for (double g : groups) {
+    motion::AxisVector target = mcs_;
+    for (std::size_t j = 0; j < n_axes_; ++j)
+      if (b.axes[j] && order[j] == g) target[j] = ref_pos_[j];
+    auto seg = motion::make_line(mcs_, target, n_axes_);
+    if (seg && seg->length() > 0) {
+      c.kind = CommandKind::motion;
+      c.segment = *seg;
+      c.mapped = false;
+      c.limits = motion::path_limits(c.segment, std::span<const motion::AxisDynamics>(rapid_dyn_.data(), n_axes_));
+      c.v_cmd_mm_s = c.limits.v_max_mm_s;
+    }
+    mcs_ = target;
+    (void)out.push_back(c);
+    c = Command{};  // the following groups: motion only
+    c.file_id = b.file_id;
+    c.line = b.line;
+    c.emit_block_event = false;
+  }
+  for (std::size_t j = 0; j < n_axes_; ++j)
+    if (b.axes[j]) frames_.preset_axis(j);
+  pcs_ = frames_.to_pcs(mcs_);
+}
+
+Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
+  modal_ = b.modal;
+  if (std::string why = unsupported(b); !why.empty())
+    return error_command(ErrorId::KernelNotYetSupported, why + " in this version of nck",
+                         b.file_id, b.line);
+  Command c;
+  c.file_id = b.file_id;
+  c.line = b.line;
+  c.has_n = b.n.has_value();
+  c.n = b.n.value_or(0);
+  if (!add_outputs(b, c))
+    return error_command(ErrorId::KernelQueueOverflow, "more than 8 PLC outputs in one block",
+                         b.file_id, b.line);
+  Command error;
+  if (!apply_frames(b, c, error)) return error;
+  if (!apply_measure_offset(b, c, error)) return error;
+  if (std::string why = plc_control_violation(b); !why.empty())
+    return error_command(ErrorId::KernelPlcSpindleFunction, why, b.file_id, b.line);
+  auto actions = spindles_.plan(b);
+  if (!actions) return error_command(actions.error().id, actions.error().message, b.file_id, b.line);
+  c.spindle_actions = *actions;
+  c.expl_syn = b.hash && std::holds_alternative<nc::ExplSyn>(*b.hash);
+  c.get_manual_offsets = b.hash && std::holds_alternative<nc::GetManualOffsets>(*b.hash);
+  if (b.manual_g) {
+    std::uint32_t mask = 0;
+    for (std::size_t j = 0; j < n_axes_; ++j)
+      if (b.axes[j]) mask |= 1u << j;
+    if (*b.manual_g == 201) c.manual_on = mask;
+    else c.manual_off = mask != 0 ? mask : ~0u;  // G202 without axes: all
+  }
+  if (b.program_end) {
+    c.kind = CommandKind::end;
+    c.end_reason = std::find(b.m.begin(), b.m.end(), 2) != b.m.end() ? EndReason::m2 : EndReason::m30;
+    return c;
+  }
+  if (b.stop || b.optional_stop) {
+    c.kind = CommandKind::stop;
+    c.optional_stop = !b.stop;  // M0 and M1 together: M0 wins
+    return c;
+  }
+  if (b.dwell_s) {
+    c.kind = CommandKind::dwell;
+    c.dwell_s = std::max(0.0, *b.dwell_s);
+    return c;
+  }
+  if (std::find(b.g_nonmodal.begin(), b.g_nonmodal.end(), 100) != b.g_nonmodal.end())
+    return plan_measuring_run(b, c, file_name);
+  // With G92, G74, G101, G102 and G201/G202 the axis words are that function's values.
+  const bool words_are_motion = !b.manual_g && std::none_of(b.g_nonmodal.begin(), b.g_nonmodal.end(), [](int g) {
+    return g == 92 || g == 74 || g == 101 || g == 102;
+  });
+  const bool circle = b.modal.motion == nc::Motion::cw || b.modal.motion == nc::Motion::ccw;
+  if (words_are_motion && (b.has_axis_words() || (circle && (b.ijk[0] || b.ijk[1] || b.ijk[2])))) {
+    c.feed_motion = b.modal.motion != nc::Motion::rapid;
+    return plan_motion(b, c, file_name);
+  }
+  // P-CHAN-00100 move_tool_offsets_directly 1: a new tool offset is moved
+  // with the D word itself (DIN 66025), at rapid.
+  if (channel_.move_tool_offsets_directly && (b.d || (b.hash && std::holds_alternative<nc::ToolData>(*b.hash)))) {
+    nc::Block move = b;
+    move.modal.motion = nc::Motion::rapid;
+    move.axes = {};
+    return plan_motion(move, c, file_name);
+  }
+  c.kind = CommandKind::nop;
+  return c;
+}
+
+}  // namespace nck::prep

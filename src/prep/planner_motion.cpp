@@ -1,0 +1,180 @@
+// Planning of G0/G1/G2/G3 blocks: program words through the offset chain to
+// machine targets, the path segment and its dynamic limits.
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "nck/prep/planner.hpp"
+
+namespace nck::prep {
+namespace {
+
+constexpr double kInchMm = 25.4;
+
+// Plane axis names per G17/G18/G19 (first, second) and the I/J/K index of each.
+struct PlaneAxes {
+  const char* first;
+  const char* second;
+  std::size_t first_ijk;
+  std::size_t second_ijk;
+};
+
+PlaneAxes plane_axes(nc::Plane p) {
+  switch (p) {
+    case nc::Plane::g18: return {"Z", "X", 2, 0};
+    case nc::Plane::g19: return {"Y", "Z", 1, 2};
+    case nc::Plane::g17: default: return {"X", "Y", 0, 1};
+  }
+}
+
+ErrorId arc_error_id(motion::ArcError e) {
+  switch (e) {
+    case motion::ArcError::radius_too_small: return ErrorId::KernelArcRadiusTooSmall;
+    case motion::ArcError::full_circle_with_radius: return ErrorId::KernelArcFullCircleWithR;
+    default: return ErrorId::KernelArcEndNotOnCircle;
+  }
+}
+
+frames::SuppressMask suppress_mask(const nc::Block& b) {
+  const auto* s = b.hash ? std::get_if<nc::SuppressOffsets>(&*b.hash) : nullptr;
+  if (!s) return frames::SuppressMask::none();
+  if (s->all) return frames::SuppressMask::all();
+  using M = frames::SuppressMask;
+  std::uint8_t bits = 0;
+  if (s->zero) bits |= M::kZero;
+  if (s->add_zero) bits |= M::kAddZero;
+  if (s->pset) bits |= M::kPset;
+  if (s->clamp) bits |= M::kClamp;
+  if (s->tool) bits |= M::kTool;
+  if (s->measure) bits |= M::kMeasure;
+  if (s->manual) bits |= M::kManual;
+  return M{bits};
+}
+
+}  // namespace
+
+// A circle in the working plane, built in program coordinates and mapped
+// to the machine by the block's affine map (a pure shift in the usual case).
+std::expected<motion::Segment, Command> Planner::arc_segment(const nc::Block& b,
+                                                             const motion::AxisVector& start,
+                                                             const motion::AxisVector& target,
+                                                             const motion::AxisVector& origin) {
+  const double unit = b.modal.inch ? kInchMm : 1.0;
+  const PlaneAxes pa = plane_axes(b.modal.plane);
+  const int a = axis_named(pa.first), bb = axis_named(pa.second);
+  if (a < 0 || bb < 0)
+    return std::unexpected(error_command(
+        ErrorId::KernelAxisNotInPlane,
+        fmt::format("G{} needs axes {} and {}", static_cast<int>(b.modal.plane), pa.first, pa.second),
+        b.file_id, b.line));
+  const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(bb);
+  const bool ccw = b.modal.motion == nc::Motion::ccw;
+  const auto& ci = b.ijk[pa.first_ijk];
+  const auto& cj = b.ijk[pa.second_ijk];
+  std::expected<motion::Segment, motion::ArcError> seg;
+  if (ci || cj) {
+    // G161: the centre is absolute (in the program's origin), G162: relative to the start.
+    const bool abs = b.modal.circle_center_absolute;
+    const double ca = (abs ? origin[ua] : start[ua]) + ci.value_or(0) * unit;
+    const double cb = (abs ? origin[ub] : start[ub]) + cj.value_or(0) * unit;
+    seg = motion::make_arc_center(start, target, n_axes_, ua, ub, ca, cb, ccw);
+  } else if (b.r) {
+    seg = motion::make_arc_radius(start, target, n_axes_, ua, ub, *b.r * unit, ccw);
+  } else {
+    return std::unexpected(
+        error_command(ErrorId::KernelArcNoCenter, "program I/J/K or R with G2/G3", b.file_id, b.line));
+  }
+  if (!seg)
+    return std::unexpected(error_command(arc_error_id(seg.error()),
+                                         fmt::format("circle: {}", motion::describe(seg.error())),
+                                         b.file_id, b.line));
+  return *seg;
+}
+
+Command Planner::plan_motion(const nc::Block& b, Command c, const std::string& file_name) {
+  const double unit = b.modal.inch ? kInchMm : 1.0;
+  const frames::SuppressMask mask = suppress_mask(b);
+  if (mask.bits != 0)
+    if (auto r = frames::OffsetChain::check_suppress(!b.modal.absolute); !r)
+      return error_command(r.error().id, "#SUPPRESS OFFSETS needs absolute dimensions (G90)",
+                           b.file_id, b.line);
+  for (std::size_t j = 0; j < n_axes_; ++j) {
+    if (!b.axes[j]) continue;
+    const double v = *b.axes[j] * unit;
+    if (b.modal.absolute) {
+      pcs_[j] = v;
+      frames_.commit_axis(j);  // G91 rule: new offsets act at the next absolute position
+    } else {
+      pcs_[j] += v;
+    }
+  }
+  motion::AxisVector target = frames_.to_mcs(pcs_, mask);
+  // #SUPPRESS OFFSETS acts on the programmed axes only; the others stay put.
+  if (mask.bits != 0)
+    for (std::size_t j = 0; j < n_axes_; ++j)
+      if (!b.axes[j]) target[j] = mcs_[j];
+  for (std::size_t j = 0; j < n_axes_; ++j)
+    if (target[j] < swe_neg_[j] - 1e-9 || target[j] > swe_pos_[j] + 1e-9)
+      return error_command(
+          ErrorId::KernelSoftwareLimit,
+          fmt::format("{} {:.4f} is outside the software limits [{:.4f}, {:.4f}] ({}:{})",
+                      channel_.axes[j].name, target[j], swe_neg_[j], swe_pos_[j], file_name, b.line),
+          b.file_id, b.line);
+
+  const bool rapid = b.modal.motion == nc::Motion::rapid;
+  const bool arc = b.modal.motion == nc::Motion::cw || b.modal.motion == nc::Motion::ccw;
+  auto dyn = rapid ? rapid_dyn_ : feed_dyn_;
+  if (arc) {
+    const AffineMap map = frames_.affine(mask);
+    // Start and end in program coordinates of this block's map; the start is
+    // where the axes are, so a changed offset never makes the path jump.
+    const motion::AxisVector start_pcs = map.pure_translation ? mcs_ : frames_.to_pcs(mcs_, mask);
+    const motion::AxisVector end_pcs = map.pure_translation ? target : pcs_;
+    const motion::AxisVector origin = map.pure_translation ? map.shift : motion::AxisVector{};
+    auto seg = arc_segment(b, start_pcs, end_pcs, origin);
+    if (!seg) return seg.error();
+    c.segment = *seg;
+    if (!map.pure_translation) {
+      c.mapped = true;
+      c.map = map;
+      // A rotated circle loads the main axes in turn: every main axis gets
+      // the smallest main-axis limit.
+      motion::AxisDynamics lo = dyn[0];
+      for (int k : map.main)
+        if (k >= 0) {
+          const auto& d = dyn[static_cast<std::size_t>(k)];
+          lo = {std::min(lo.v_max_mm_s, d.v_max_mm_s), std::min(lo.a_acc_mm_s2, d.a_acc_mm_s2),
+                std::min(lo.a_dec_mm_s2, d.a_dec_mm_s2)};
+        }
+      for (int k : map.main)
+        if (k >= 0) dyn[static_cast<std::size_t>(k)] = lo;
+    }
+  } else {
+    auto seg = motion::make_line(mcs_, target, n_axes_);
+    if (!seg) return error_command(ErrorId::KernelBadDynamics, "degenerate line", b.file_id, b.line);
+    c.segment = *seg;
+  }
+
+  double v_cmd = 0;  // rapid: the path limit (set below)
+  if (!rapid) {
+    const double f_mm_min = b.modal.feed_mm_min * unit;
+    if (f_mm_min <= 0)
+      return error_command(ErrorId::KernelNoFeed, "F is 0: program a feed in mm/min", b.file_id,
+                           b.line);
+    v_cmd = f_mm_min / 60.0;
+  }
+  mcs_ = target;
+  if (c.segment.length() <= 0) {
+    c.kind = CommandKind::nop;
+    return c;
+  }
+  c.kind = CommandKind::motion;
+  c.limits = motion::path_limits(c.segment, std::span<const motion::AxisDynamics>(dyn.data(), n_axes_));
+  if (!motion::valid(c.limits))
+    return error_command(ErrorId::KernelBadDynamics, "the axes of this block cannot move", b.file_id,
+                         b.line);
+  c.v_cmd_mm_s = rapid ? c.limits.v_max_mm_s : v_cmd;
+  return c;
+}
+
+}  // namespace nck::prep

@@ -1,0 +1,76 @@
+#include "nck/sim/dry_run.hpp"
+
+#include "nck/prep/planner.hpp"
+
+namespace nck::sim {
+
+std::expected<DryRun, Diagnostic> DryRun::create(const config::Machine& m,
+                                                 const std::vector<std::filesystem::path>& programs,
+                                                 const DryRunOptions& options) {
+  DryRun run;
+  run.machine_ = std::make_unique<const config::Machine>(m);
+  run.kernel_ = std::make_unique<kernel::Kernel>();
+  if (auto ok = run.kernel_->configure(*run.machine_); !ok) return std::unexpected(ok.error());
+  run.sim_ = std::make_unique<MachineSim>(*run.machine_);
+  run.store_ = std::make_unique<prep::PlanStore>();
+  run.in_ = std::make_unique<kernel::TickInput>();
+  for (std::size_t ch = 0; ch < run.machine_->channels.size(); ++ch)
+    run.preps_.emplace_back(*run.machine_, ch, ch < programs.size() ? programs[ch] : std::filesystem::path(),
+                            *run.store_, prep::PrepOptions{options.clamp_index});
+  return run;
+}
+
+DryRun::~DryRun() = default;
+DryRun::DryRun(DryRun&&) noexcept = default;
+DryRun& DryRun::operator=(DryRun&&) noexcept = default;
+
+void DryRun::prepare() {
+  for (std::size_t ch = 0; ch < preps_.size(); ++ch)
+    preps_[ch].feed(kernel_->commands(ch), kernel_->feedback(ch), kernel_->channel_done(ch));
+}
+
+void DryRun::cycle(kernel::TickOutput& out) noexcept {
+  sim_->read(kernel_->time_s(), *in_);
+  kernel_->tick(*in_, out);
+  sim_->write(out);
+}
+
+bool DryRun::done() const noexcept {
+  for (std::size_t ch = 0; ch < preps_.size(); ++ch)
+    if (preps_[ch].has_program() && !kernel_->channel_done(ch)) return false;
+  return true;
+}
+
+ChannelSnapshot DryRun::snapshot(std::size_t ch) const {
+  const kernel::ChannelState state = kernel_->channel_state(ch);
+  const prep::Planner& planner = preps_.at(ch).planner();
+  const prep::ChannelFrames& f = planner.frames();
+  const motion::AxisVector pcs = f.to_pcs(state.path_mcs);
+  ChannelSnapshot s;
+  std::vector<std::pair<std::string, double>> manual;
+  bool any_manual = false;
+  for (std::size_t j = 0; j < planner.axis_count(); ++j) {
+    s.axis_mcs[j] = state.axis_mcs[j];
+    s.axis_pcs[j] = pcs[j];
+    manual.emplace_back(f.axis_name(j), state.manual_offsets[j]);
+    any_manual = any_manual || state.manual_offsets[j] != 0;
+  }
+  for (const frames::OffsetEntry& e : f.active())
+    s.offsets.emplace_back(std::string(frames::to_string(e.kind)), f.values_of(e.kind, false));
+  if (any_manual) s.offsets.emplace_back("manual", std::move(manual));
+  s.modal = planner.modal();
+  s.status = state.status;
+  return s;
+}
+
+const std::string& DryRun::message(std::uint32_t index) const {
+  static const std::string none;
+  return index < store_->messages.size() ? store_->messages[index] : none;
+}
+
+const prep::OffsetPayload& DryRun::offset(std::uint32_t index) const {
+  static const prep::OffsetPayload none;
+  return index < store_->offsets.size() ? store_->offsets[index] : none;
+}
+
+}  // namespace nck::sim

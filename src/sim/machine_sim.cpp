@@ -1,0 +1,107 @@
+#include "nck/sim/machine_sim.hpp"
+
+namespace nck::sim {
+namespace {
+
+// The probe of channel ch: the channel axis named by sim.lis probe.axis.
+Probe make_probe(const config::Machine& m, std::size_t ch) {
+  const config::ChannelConfig& c = m.channels[ch];
+  if (m.sim.probe_axis.empty()) return Probe{};
+  for (std::size_t j = 0; j < c.axes.size(); ++j)
+    if (c.axes[j].name == m.sim.probe_axis)
+      return Probe{static_cast<int>(j), m.sim.probe_position_mm, c.axes.size()};
+  return Probe{};
+}
+
+}  // namespace
+
+MachineSim::MachineSim(const config::Machine& m)
+    : plc_(m.sim), hli_(plc::make_hli_image(m)), map_(plc::build_spindle_map(m)) {
+  channels_ = std::min(m.channels.size(), config::kMaxChannels);
+  spindles_ = std::min(map_.count, kernel::kMaxMachineSpindles);
+  for (std::size_t ch = 0; ch < channels_; ++ch) probes_[ch] = make_probe(m, ch);
+}
+
+void MachineSim::load_scenario(const plc::Scenario& scenario) { player_ = ScenarioPlayer(scenario); }
+
+void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
+  t_s_ = t_s;
+  in.ext_commands.clear();
+  in.ext_commands_lost = 0;
+  for (std::size_t ch = 0; ch < channels_; ++ch) in.channels[ch].handwheel_mm.fill(0.0);
+  for (const plc::ScenarioAction& a : player_.due(t_s)) apply(a, in);
+
+  plc_.tick(t_s);
+  plc_.drain_acks(acks_);
+  in.acks.clear();
+  for (const plc::PlcAck& a : acks_) (void)in.acks.push_back(a);  // fits: same capacity
+
+  for (std::size_t ch = 0; ch < channels_; ++ch) {
+    plc::ChannelControl& c = hli_.channel[ch];
+    kernel::ChannelInput& ci = in.channels[ch];
+    ci.feed_override_pct = c.feed_override_percent;
+    ci.feedhold = c.feedhold;
+    ci.optional_stop = c.optional_stop;
+    ci.reset = c.reset;
+    c.reset = false;  // a request: handed over once
+    ci.probe_switched = probe_switched_[ch];
+    if (probe_switched_[ch]) ci.probe_latched_mcs = probes_[ch].latched();
+  }
+  for (std::size_t i = 0; i < spindles_; ++i) {
+    in.spindles[i] = hli_.spindle_control[i];
+    hli_.spindle_control[i].reset = false;
+  }
+}
+
+void MachineSim::write(const kernel::TickOutput& out) noexcept {
+  for (const kernel::TechRequest& r : out.tech_outputs) (void)plc_.submit(r.handle, r.output, t_s_);
+  for (std::size_t i = 0; i < spindles_; ++i) hli_.spindle_status[i] = out.hli_spindles[i];
+  for (std::size_t ch = 0; ch < channels_; ++ch) probe_switched_[ch] = probes_[ch].watch(out.channels[ch].axis_mcs);
+}
+
+// One scenario action: the PLC writes its HLI controls, falls silent,
+// passes an external spindle command on, or a handwheel is turned.
+void MachineSim::apply(const plc::ScenarioAction& a, kernel::TickInput& in) noexcept {
+  const std::size_t c = a.channel >= 1 && a.channel <= channels_ ? a.channel - 1u : 0u;
+  plc::ChannelControl& ch = hli_.channel[c];
+  switch (a.kind) {
+    case plc::ActionKind::feed_override: ch.feed_override_percent = a.value; return;
+    case plc::ActionKind::feedhold: ch.feedhold = a.on; return;
+    case plc::ActionKind::reset: ch.reset = true; return;
+    case plc::ActionKind::optional_stop: ch.optional_stop = a.on; return;
+    case plc::ActionKind::silent: plc_.set_silent(a.on); return;
+    case plc::ActionKind::handwheel:
+      if (a.axis >= 0) in.channels[c].handwheel_mm[static_cast<std::size_t>(a.axis)] += a.value;
+      return;
+    case plc::ActionKind::spindle_cmd:
+      if (!in.ext_commands.push_back(a.cmd)) ++in.ext_commands_lost;
+      return;
+    case plc::ActionKind::spindle_stop_at_end:
+      if (!a.has_spindle()) {  // every spindle of the channel
+        for (std::int32_t i = 0; i < static_cast<std::int32_t>(config::kMaxSpindles); ++i) {
+          const std::int8_t h = map_.at(a.channel, i);
+          if (h >= 0 && static_cast<std::size_t>(h) < spindles_)
+            hli_.spindle_control[static_cast<std::size_t>(h)].stop_at_program_end = a.on;
+        }
+        return;
+      }
+      apply_to_spindle(a);
+      return;
+    default: apply_to_spindle(a); return;
+  }
+}
+
+void MachineSim::apply_to_spindle(const plc::ScenarioAction& a) noexcept {
+  if (a.hli_spindle < 0 || static_cast<std::size_t>(a.hli_spindle) >= spindles_) return;
+  plc::SpindleControl& sc = hli_.spindle_control[static_cast<std::size_t>(a.hli_spindle)];
+  switch (a.kind) {
+    case plc::ActionKind::spindle_override: sc.override_percent = a.value; sc.override_valid = true; return;
+    case plc::ActionKind::override_valid: sc.override_valid = a.on; return;
+    case plc::ActionKind::spindle_feedhold: sc.feedhold = a.on; return;
+    case plc::ActionKind::spindle_stop_at_end: sc.stop_at_program_end = a.on; return;
+    case plc::ActionKind::spindle_reset: sc.reset = true; return;
+    default: return;
+  }
+}
+
+}  // namespace nck::sim
