@@ -152,8 +152,18 @@ bool Planner::apply_frames(const nc::Block& b, Command& c, Command& error) {
     error = error_command(changes.error().id, changes.error().message, b.file_id, b.line);
     return false;
   }
-  for (const Diagnostic& w : changes->warnings)
-    (void)c.warnings.push_back({w.id, store_.add_message(w.message)});
+  for (std::size_t i = 0; i < changes->warnings.size(); ++i) {
+    const Diagnostic& w = changes->warnings[i];
+    if (c.warnings.size() + 1 < Command::kMaxWarnings || i + 1 == changes->warnings.size()) {
+      (void)c.warnings.push_back({w.id, store_.add_message(w.message)});
+      continue;
+    }
+    const std::size_t more = changes->warnings.size() - i;  // this one and the rest
+    (void)c.warnings.push_back({ErrorId::KernelWarningsDropped,
+                                store_.add_message(fmt::format("{} more warning(s) of this block, the first: {}",
+                                                               more, w.message))});
+    break;
+  }
   for (frames::OffsetKind k : changes->kinds) {
     const std::string kind(frames::to_string(k));
     const bool seen = std::any_of(c.offset_events.begin(), c.offset_events.end(),
@@ -192,7 +202,13 @@ void Planner::plan_homing(const nc::Block& b, Command first, Commands& out) {
       if (std::find(groups.begin(), groups.end(), order[j]) == groups.end()) groups.push_back(order[j]);
     }
   std::sort(groups.begin(), groups.end());
-  if (groups.size() > out.capacity()) groups.resize(out.capacity());
+  if (groups.size() > out.capacity()) {
+    (void)out.push_back(error_command(ErrorId::KernelTooManyHomingGroups,
+                                      fmt::format("G74 orders {} homing groups; at most {} per block",
+                                                  groups.size(), out.capacity()),
+                                      b.file_id, b.line));
+    return;
+  }
   Command c = first;
   for (double g : groups) {
     motion::AxisVector target = mcs_;

@@ -63,6 +63,7 @@ struct SuppressMask {
 enum class OffsetKind : std::uint8_t {
   rotation, ecs, cs, acs, zero, g92, pset, measure, manual, clamp, tool, tlc
 };
+inline constexpr std::size_t kOffsetKinds = 12;  // values of OffsetKind
 std::string_view to_string(OffsetKind k);  // "rotation", "cs", "zero" ...
 
 enum class CsFamily : std::uint8_t { cs, acs };

@@ -5,6 +5,7 @@
 
 #include "nck/core/diagnostic.hpp"
 #include "nck/core/fixed_vector.hpp"
+#include "nck/frames/offset_chain.hpp"
 #include "nck/kernel/event.hpp"
 #include "nck/motion/limits.hpp"
 #include "nck/motion/segment.hpp"
@@ -69,13 +70,15 @@ struct Command {
   std::int8_t probe_axis = -1;
   double probe_pos_mm = 0;
   bool expl_syn = false;     // #EXPL SYN: MVS_SLP functions synchronise here
-  // offset events (PlanStore::offsets) and warnings raised with the block
-  FixedVector<std::uint32_t, 6> offset_events;
+  // offset events (PlanStore::offsets, at most one per kind) and warnings
+  // raised with the block (beyond kMaxWarnings the last says how many more)
+  FixedVector<std::uint32_t, frames::kOffsetKinds> offset_events;
   struct Warning {
     ErrorId id{};
     std::uint32_t message_index = 0;
   };
-  FixedVector<Warning, 4> warnings;
+  static constexpr std::size_t kMaxWarnings = 4;
+  FixedVector<Warning, kMaxWarnings> warnings;
 };
 
 }  // namespace nck::kernel

@@ -219,5 +219,30 @@ TEST(Kernel, TwoChannelsTickSideBySide) {
   EXPECT_DOUBLE_EQ(k.channel_state(1).axis_mcs[0], 20.0);
 }
 
+// A block homes at most kMaxCommandsPerBlock order groups in sequence; one
+// more is an error, not a silently dropped group.
+TEST(Channel, HomingMoreOrderGroupsThanABlockHoldsIsAnError) {
+  config::Machine m = xyz_machine();
+  for (std::uint32_t i = 3; i < 5; ++i) {
+    config::AxisConfig ax = m.axes[0];
+    ax.log_axis_nr = i + 1;
+    ax.name = i == 3 ? "U" : "V";
+    m.axes.push_back(ax);
+    m.channels[0].axes.push_back({ax.name, i + 1, static_cast<int>(i)});
+  }
+  KernelRig rig(m);
+  nc::Block b;
+  b.line = 4;
+  b.g_nonmodal = {74};
+  for (std::size_t j = 0; j < 5; ++j) b.axes[j] = static_cast<double>(j + 1);  // five groups
+  rig.push_block(0, b, "t.nc");
+  RunLog r = run_all(rig.k);
+  ASSERT_FALSE(r.events.empty());
+  EXPECT_EQ(r.events.back().kind, EventKind::end);
+  bool error = false;
+  for (const Event& e : r.events) error = error || (e.kind == EventKind::error && e.id == ErrorId::KernelTooManyHomingGroups);
+  EXPECT_TRUE(error);
+}
+
 }  // namespace
 }  // namespace nck::kernel
