@@ -5,10 +5,27 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
 #include "commands.hpp"
+#include "nck/core/diagnostic.hpp"
 #include "run_command.hpp"
 
 namespace nck::app {
+namespace {
+
+// What a command printed on stdout must have arrived (a full disk, a closed
+// pipe): checked once, at the end, for every command.
+bool stdout_written() {
+  if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return true;
+  fmt::print(stderr, "nck: error {}: cannot write to stdout: {}\n", number(ErrorId::AppOutputFile),
+             std::strerror(errno != 0 ? errno : EIO));
+  return false;
+}
+
+}  // namespace
 
 int main_cli(int argc, char** argv) {
   CLI::App app{"nck - an open NC kernel: check machine data, decode and run NC programs"};
@@ -33,6 +50,7 @@ int main_cli(int argc, char** argv) {
   runc->add_option("--report", run.report, "write a self-contained HTML report with plots to FILE");
   runc->add_option("--max-time", run.max_time_s, "simulated-time limit in seconds")
       ->check(CLI::PositiveNumber);
+  runc->add_option("--max-wall", run.max_wall_s, "wall-clock limit in seconds")->check(CLI::PositiveNumber);
   runc->add_flag("--realtime", run.realtime, "pace the cycles to the wall clock");
   runc->add_option("--clamp-index", run.clamp_index, "clamp-offset group pzv_grp[N] at program start");
   runc->add_flag("!--no-progress", run.progress, "no progress display on the terminal");
@@ -71,13 +89,19 @@ int main_cli(int argc, char** argv) {
     fmt::print(stderr, "nck: error 940001: {}\nRun 'nck --help' for usage.\n", e.what());
     return 2;
   }
-  if (*check) return check_machine(machine);
-  if (*runc) return run_simulation(run);
-  if (*parsec) return parse_program(parse);
-  if (*fitc) return fit_curve(fit);
-  if (*params) return print_parameters();
-  if (*errors) return print_errors();
-  return 2;
+  int code = 2;
+  try {
+    if (*check) code = check_machine(machine);
+    if (*runc) code = run_simulation(run);
+    if (*parsec) code = parse_program(parse);
+    if (*fitc) code = fit_curve(fit);
+    if (*params) code = print_parameters();
+    if (*errors) code = print_errors();
+  } catch (const std::exception& e) {  // never an abort: a diagnostic and exit 2
+    fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppInternalError), e.what());
+    return 2;
+  }
+  return stdout_written() ? code : 2;
 }
 
 }  // namespace nck::app

@@ -8,6 +8,7 @@
 #include "nck/prep/decoder_setup.hpp"
 #include "nck/nc/block_json.hpp"
 #include "nck/spindle/accel_curve.hpp"
+#include "output_file.hpp"
 
 #include <sstream>
 
@@ -17,11 +18,11 @@ int check_machine(const std::string& folder) {
   const config::LoadResult r = config::load_machine(folder);
   std::size_t warnings = 0;
   for (const Diagnostic& d : r.diagnostics.items()) {
-    fmt::print("{}\n", format(d));
+    fmt::print(stderr, "{}\n", format(d));
     warnings += d.severity == Severity::warning;
   }
   const std::size_t errors = r.diagnostics.error_count();
-  fmt::print("{}: {} error(s), {} warning(s)\n", folder, errors, warnings);
+  fmt::print(stderr, "{}: {} error(s), {} warning(s)\n", folder, errors, warnings);
   return r.ok() ? 0 : 1;
 }
 
@@ -66,7 +67,8 @@ int parse_program(const ParseOptions& opt) {
     if (res.status == nc::Decoder::Status::error && dec.diagnostics().size() > before) continue;
     if (res.status != nc::Decoder::Status::block) break;
     ++blocks;
-    if (opt.json) fmt::print("{}\n", nc::to_json(res.block, dec).dump());
+    if (opt.json)
+      (void)write_stdout(nc::to_json(res.block, dec).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     if (res.block.program_end) break;
   }
   std::size_t errors = 0;
@@ -95,12 +97,12 @@ int fit_curve(const FitOptions& opt) {
     fmt::print(stderr, "nck: error 950011: {}\n", c.error());
     return 2;
   }
-  fmt::print("b1 {:.9E}\nb2 {:.9E}\nb3 {:.9E}\n", c->b1, c->b2, c->b3);
+  (void)write_stdout(fmt::format("b1 {:.9E}\nb2 {:.9E}\nb3 {:.9E}\n", c->b1, c->b2, c->b3));
   return 0;
 }
 
 int print_parameters() {
-  fmt::print("{}", config::parameters_markdown());
+  (void)write_stdout(config::parameters_markdown());
   return 0;
 }
 
@@ -119,7 +121,7 @@ std::string errors_markdown() {
 }
 
 int print_errors() {
-  fmt::print("{}", errors_markdown());
+  (void)write_stdout(errors_markdown());
   return 0;
 }
 

@@ -6,6 +6,8 @@
 #include "nck/spindle/spindle_status.hpp"
 #include "output_writers.hpp"
 
+#include "nck/core/utf8.hpp"
+
 namespace nck::app {
 namespace {
 
@@ -41,11 +43,12 @@ json modal_json(const nc::ModalState& m) {
 
 }  // namespace
 
-bool write_final(const std::string& path, const config::Machine& m, const sim::DryRun& run,
-                 double time_s, const std::vector<FinalError>& errors) {
+std::optional<std::string> write_final(const std::string& path, const config::Machine& m,
+                                       const sim::DryRun& run, double time_s, const std::string& end_reason,
+                                       const std::vector<FinalError>& errors) {
   const kernel::Kernel& k = run.kernel();
-  File f;
-  if (!f.open(path)) return false;
+  OutputFile f;
+  if (auto err = f.open(path)) return err;
   json channels = json::array();
   for (std::size_t c = 0; c < m.channels.size() && c < k.channel_count(); ++c) {
     const sim::ChannelSnapshot s = run.snapshot(c);
@@ -92,16 +95,17 @@ bool write_final(const std::string& path, const config::Machine& m, const sim::D
            {"spindles", hli_spindles}};
   json errs = json::array();
   for (const FinalError& e : errors)
-    errs.push_back(json{{"id", e.id}, {"ch", e.channel}, {"line", e.line}, {"file", e.file}, {"msg", e.msg}});
+    errs.push_back(json{{"id", e.id}, {"ch", e.channel}, {"line", e.line}, {"file", to_utf8(e.file)}, {"msg", to_utf8(e.msg)}});
   json doc{{"time", time_s},
+           {"end", end_reason},
            {"channels", channels},
            {"spindles", spindles},
            {"links", json::array()},
            {"hli", hli},
            {"errors", errs}};
-  f.write(doc.dump(2));
+  f.write(dump_json(doc, 2));
   f.write("\n");
-  return true;
+  return f.commit();
 }
 
 }  // namespace nck::app

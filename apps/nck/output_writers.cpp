@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "machine_names.hpp"
+#include "nck/core/utf8.hpp"
 #include "nck/spindle/spindle_status.hpp"
 
 namespace nck::app {
@@ -17,33 +18,20 @@ nlohmann::ordered_json RunNames::spindle(std::int8_t index) const {
   return run->kernel().spindle_name(static_cast<std::size_t>(index));
 }
 
+std::string dump_json(const nlohmann::ordered_json& j, int indent) {
+  // Every string put in is UTF-8 already (to_utf8); replacing is the backstop.
+  return j.dump(indent, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+}
+
 std::string RunNames::text(const kernel::Event& e) const {
-  if (e.message_index != kernel::kNoMessage && run) return run->message(e.message_index);
+  if (e.message_index != kernel::kNoMessage && run) return to_utf8(run->message(e.message_index));
   const ErrorInfo* info = find_error(e.id);
   return info ? fmt::format("{}: {}", info->text, info->remedy) : std::string();
 }
 
-const std::string& RunNames::file(std::size_t ch, std::uint16_t id) const {
-  static const std::string unknown;
+std::string RunNames::file(std::size_t ch, std::uint16_t id) const {
   const nc::Decoder* d = run && ch < run->channel_count() ? run->prep(ch).decoder() : nullptr;
-  return d ? d->file_name(id) : unknown;
-}
-
-File::~File() { close(); }
-
-bool File::open(const std::string& path) {
-  close();
-  f_ = std::fopen(path.c_str(), "w");
-  return f_ != nullptr;
-}
-
-void File::write(std::string_view s) {
-  if (f_) std::fwrite(s.data(), 1, s.size(), f_);
-}
-
-void File::close() {
-  if (f_) std::fclose(f_);
-  f_ = nullptr;
+  return d ? to_utf8(d->file_name(id)) : std::string();
 }
 
 std::string sync_name(std::uint32_t bits) {
@@ -100,6 +88,8 @@ const char* wait_reason_name(kernel::WaitReason r) {
   return "plc_ack";
 }
 
+}  // namespace
+
 const char* end_name(kernel::EndReason r) {
   using R = kernel::EndReason;
   switch (r) {
@@ -108,9 +98,13 @@ const char* end_name(kernel::EndReason r) {
     case R::error: return "error";
     case R::reset: return "reset";
     case R::max_time: return "max_time";
+    case R::max_wall: return "max_wall";
+    case R::interrupted: return "interrupted";
   }
   return "error";
 }
+
+namespace {
 
 std::string function_name(kernel::FunctionKind fn, std::int32_t number) {
   using F = kernel::FunctionKind;
@@ -202,7 +196,7 @@ std::string EventWriter::line(const kernel::Event& e, const RunNames& names) {
     default:
       break;
   }
-  return j.dump();
+  return dump_json(j);
 }
 
 std::string EventWriter::line(double t_s, std::size_t ch, const Diagnostic& d) {
@@ -212,9 +206,9 @@ std::string EventWriter::line(double t_s, std::size_t ch, const Diagnostic& d) {
   j["ev"] = d.severity == Severity::error ? "error" : "warning";
   j["id"] = number(d.id);
   j["line"] = d.loc.line;
-  j["file"] = d.loc.file;
-  j["msg"] = d.message;
-  return j.dump();
+  j["file"] = to_utf8(d.loc.file);
+  j["msg"] = to_utf8(d.message);
+  return dump_json(j);
 }
 
 namespace {
@@ -241,8 +235,9 @@ std::vector<std::string> TraceWriter::column_names(const config::Machine& m) {
   return cols;
 }
 
-bool TraceWriter::open(const std::string& path, const config::Machine& m, std::uint64_t every) {
-  if (!file_.open(path)) return false;
+std::optional<std::string> TraceWriter::open(const std::string& path, bool live, const config::Machine& m,
+                                             std::uint64_t every) {
+  if (auto err = file_.open(path, live)) return err;
   every_ = every == 0 ? 1 : every;
   axes_per_channel_.clear();
   dist_ctrl_.clear();
@@ -255,8 +250,8 @@ bool TraceWriter::open(const std::string& path, const config::Machine& m, std::u
   spindle_count_ = speed_controlled_.size();
   std::string header;
   for (const std::string& c : column_names(m)) header += (header.empty() ? "" : ",") + c;
-  file_.write(header + "\n");
-  return true;
+  file_.write(to_utf8(header) + "\n");
+  return std::nullopt;
 }
 
 void TraceWriter::write(std::uint64_t cycle, const kernel::TickOutput& out) {

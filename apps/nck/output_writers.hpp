@@ -3,6 +3,7 @@
 // Each writer is opened before the run and always closed complete and valid,
 // also when the program aborts.
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,62 +13,55 @@
 #include "nck/kernel/kernel.hpp"
 #include "nck/nc/decoder.hpp"
 #include "nck/sim/dry_run.hpp"
+#include "output_file.hpp"
 
 namespace nck::app {
 
 // Names a decoded file id / event text for output.
 struct RunNames {
   const sim::DryRun* run = nullptr;
-  const std::string& file(std::size_t ch, std::uint16_t id) const;
+  std::string file(std::size_t ch, std::uint16_t id) const;
   // A spindle's designation, or null.
   nlohmann::ordered_json spindle(std::int8_t index) const;
   // An event's message: its own text, or the ID's text from the table.
   std::string text(const kernel::Event& e) const;
 };
 
-class File {
- public:
-  File() = default;
-  ~File();
-  File(const File&) = delete;
-  File& operator=(const File&) = delete;
-  bool open(const std::string& path);  // false when it cannot be written
-  bool is_open() const { return f_ != nullptr; }
-  void write(std::string_view s);
-  void close();
-
- private:
-  std::FILE* f_ = nullptr;
-};
 
 std::string sync_name(std::uint32_t sync_bits);
+// "M30", "error", "interrupted" ... as SPEC 2.3 names them.
+const char* end_name(kernel::EndReason r);
+
+// JSON text that never throws (invalid UTF-8 is replaced, not an abort).
+std::string dump_json(const nlohmann::ordered_json& j, int indent = -1);
 
 class EventWriter {
  public:
-  bool open(const std::string& path) { return file_.open(path); }
+  std::optional<std::string> open(const std::string& path, bool live) { return file_.open(path, live); }
   bool is_open() const { return file_.is_open(); }
   // An event as one JSON line (without the newline).
   static std::string line(const kernel::Event& e, const RunNames& names);
   // A diagnostic that does not come from the cycle (decoder warnings).
   static std::string line(double t_s, std::size_t ch, const Diagnostic& d);
   void write_line(const std::string& line);
-  void close() { file_.close(); }
+  std::optional<std::string> commit() { return file_.commit(); }
 
  private:
-  File file_;
+  OutputFile file_;
 };
 
 // One column per path axis of every channel (MCS set point) and per spindle.
 class TraceWriter {
  public:
-  bool open(const std::string& path, const config::Machine& m, std::uint64_t every);
+  std::optional<std::string> open(const std::string& path, bool live, const config::Machine& m,
+                                  std::uint64_t every);
   bool is_open() const { return file_.is_open(); }
   void write(std::uint64_t cycle, const kernel::TickOutput& out);
-  void close() { file_.close(); }
+  std::optional<std::string> commit() { return file_.commit(); }
   static std::vector<std::string> column_names(const config::Machine& m);
 
  private:
-  File file_;
+  OutputFile file_;
   std::uint64_t every_ = 1;
   std::vector<std::size_t> axes_per_channel_;
   std::size_t spindle_count_ = 0;
@@ -83,7 +77,9 @@ struct FinalError {
   std::string file, msg;
 };
 
-bool write_final(const std::string& path, const config::Machine& m, const sim::DryRun& run,
-                 double time_s, const std::vector<FinalError>& errors);
+// The error text when it cannot be written.
+std::optional<std::string> write_final(const std::string& path, const config::Machine& m,
+                                       const sim::DryRun& run, double time_s, const std::string& end_reason,
+                                       const std::vector<FinalError>& errors);
 
 }  // namespace nck::app

@@ -1,5 +1,8 @@
 #include "report_writer.hpp"
 
+#include "nck/core/utf8.hpp"
+#include "output_file.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -12,7 +15,7 @@ namespace {
 
 std::string escape(const std::string& s) {
   std::string out;
-  for (char c : s) {
+  for (char c : to_utf8(s)) {
     switch (c) {
       case '<': out += "&lt;"; break;
       case '>': out += "&gt;"; break;
@@ -102,10 +105,10 @@ void ReportWriter::event(const std::string& json_line, bool is_error) {
   else ++events_dropped_;
 }
 
-bool ReportWriter::write(const std::string& path, double end_s, int exit_code) const {
-  if (!enabled_) return true;
-  File f;
-  if (!f.open(path)) return false;
+std::optional<std::string> ReportWriter::write(const std::string& path, double end_s, int exit_code) const {
+  if (!enabled_) return std::nullopt;
+  OutputFile f;
+  if (auto err = f.open(path)) return err;
   std::string h =
       "<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>nck run report</title>"
       "<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse}"
@@ -146,7 +149,7 @@ bool ReportWriter::write(const std::string& path, double end_s, int exit_code) c
   if (events_dropped_ > 0) h += fmt::format("... {} more events (see --events)\n", events_dropped_);
   h += "</pre></body></html>\n";
   f.write(h);
-  return true;
+  return f.commit();
 }
 
 }  // namespace nck::app

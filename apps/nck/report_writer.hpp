@@ -2,6 +2,7 @@
 // --report FILE.html: a self-contained report of a run — summary, errors,
 // the event log, and plots (inline SVG, no scripts or network) of every
 // path axis and every spindle's speed over time.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,8 @@ class ReportWriter {
   void sample(const kernel::TickOutput& out);
   // One line of the event log (the JSON text of an event).
   void event(const std::string& json_line, bool is_error);
-  bool write(const std::string& path, double end_s, int exit_code) const;
+  // The error text when it cannot be written.
+  std::optional<std::string> write(const std::string& path, double end_s, int exit_code) const;
   bool enabled() const { return enabled_; }
 
   static constexpr std::size_t kMaxPoints = 2000;

@@ -1,5 +1,6 @@
 // `nck run`: load the machine, decode each channel's program, tick the
-// kernel until every channel ends, and write events, trace and final state.
+// kernel until every channel ends (or a limit or a signal stops the run), and
+// write events, trace, report and final state, always complete.
 #include "run_command.hpp"
 
 #include <chrono>
@@ -10,6 +11,7 @@
 #include <sstream>
 #include <cstdio>
 #include <fmt/format.h>
+#include <csignal>
 #include <thread>
 #include <unistd.h>
 
@@ -17,24 +19,10 @@
 #include "nck/plc/scenario.hpp"
 #include "nck/sim/dry_run.hpp"
 #include "output_writers.hpp"
-#include "report_writer.hpp"
+#include "run_outputs.hpp"
 
 namespace nck::app {
 namespace {
-
-struct Outputs {
-  EventWriter events;
-  TraceWriter trace;
-  ReportWriter report;
-  std::vector<FinalError> errors;
-
-  // Events are rendered only when a file wants them.
-  bool wants_events() const { return events.is_open() || report.enabled(); }
-  void event(const std::string& line, bool is_error) {
-    events.write_line(line);
-    report.event(line, is_error);
-  }
-};
 
 bool print_load_diagnostics(const config::LoadResult& r) {
   for (const Diagnostic& d : r.diagnostics.items()) fmt::print(stderr, "{}\n", format(d));
@@ -43,7 +31,7 @@ bool print_load_diagnostics(const config::LoadResult& r) {
 
 // Decoder warnings appear when decoded; errors travel through the channel
 // queue so they are raised when execution reaches them.
-void report_new_warnings(const sim::DryRun& run, double t_s, Outputs& out) {
+void report_new_warnings(const sim::DryRun& run, double t_s, RunOutputs& out) {
   for (std::size_t ch = 0; ch < run.channel_count(); ++ch)
     for (const Diagnostic& d : run.new_warnings(ch)) {
       fmt::print(stderr, "{}\n", format(d));
@@ -52,7 +40,7 @@ void report_new_warnings(const sim::DryRun& run, double t_s, Outputs& out) {
 }
 
 // A cycle whose events did not all fit its output: never lost silently.
-void report_dropped_events(const kernel::TickOutput& o, const RunNames& names, Outputs& out) {
+void report_dropped_events(const kernel::TickOutput& o, const RunNames& names, RunOutputs& out) {
   if (o.events_dropped == 0) return;
   kernel::Event e;
   e.t_s = o.t_s;
@@ -65,7 +53,7 @@ void report_dropped_events(const kernel::TickOutput& o, const RunNames& names, O
   if (out.wants_events()) out.event(EventWriter::line(e, names), false);
 }
 
-void record_events(const kernel::TickOutput& o, const RunNames& names, Outputs& out) {
+void record_events(const kernel::TickOutput& o, const RunNames& names, RunOutputs& out) {
   for (const kernel::Event& e : o.events) {
     if (out.wants_events()) out.event(EventWriter::line(e, names), e.kind == kernel::EventKind::error);
     if (e.kind != kernel::EventKind::error) continue;
@@ -114,9 +102,126 @@ std::optional<plc::Scenario> load_scenario(const std::string& path, const config
   return sc;
 }
 
+// SIGINT / SIGTERM stop the run at the next cycle (the only global state of
+// nck: a signal handler can reach nothing else).
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+void on_stop_signal(int sig) { g_stop_signal = sig; }
+
+class StopSignals {
+ public:
+  StopSignals() {
+    g_stop_signal = 0;
+    struct sigaction sa{};
+    sa.sa_handler = on_stop_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_int_);
+    sigaction(SIGTERM, &sa, &old_term_);
+  }
+  ~StopSignals() {
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
+  }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+
+ private:
+  struct sigaction old_int_{}, old_term_{};
+};
+
+// Why the loop stopped before every channel ended, if it did.
+std::optional<kernel::EndReason> run_loop(sim::DryRun& run, const RunOptions& opt, const RunNames& names,
+                                          RunOutputs& out) {
+  auto o = std::make_unique<kernel::TickOutput>();
+  Progress progress(opt.progress);
+  const auto wall_start = std::chrono::steady_clock::now();
+  const auto wall_limit = std::chrono::duration<double>(opt.max_wall_s);
+  for (std::uint64_t cycle = 0;; ++cycle) {
+    const double t_s = run.time_s();
+    run.prepare();
+    report_new_warnings(run, t_s, out);
+    run.cycle(*o);
+    record_events(*o, names, out);
+    report_dropped_events(*o, names, out);
+    out.trace.write(run.kernel().cycles() - 1, *o);
+    out.report.sample(*o);
+    if (run.done()) return std::nullopt;
+    if (g_stop_signal != 0) return kernel::EndReason::interrupted;
+    if (t_s + run.kernel().cycle_time_s() >= opt.max_time_s) return kernel::EndReason::max_time;
+    // The clock is read every 1024 cycles only: a run's cycle takes well under a microsecond.
+    if (opt.max_wall_s > 0 && cycle % 1024 == 0 && std::chrono::steady_clock::now() - wall_start >= wall_limit)
+      return kernel::EndReason::max_wall;
+    if (opt.realtime) std::this_thread::sleep_until(wall_start + std::chrono::duration<double>(t_s));
+    progress.update(t_s);
+  }
+}
+
+// Every channel still running ends with the loop's reason; stderr says why.
+void end_unfinished_channels(const sim::DryRun& run, kernel::EndReason reason, const RunOptions& opt,
+                             const RunNames& names, RunOutputs& out) {
+  const kernel::Kernel& k = run.kernel();
+  for (std::size_t ch = 0; ch < k.channel_count(); ++ch) {
+    const kernel::ChannelStatus st = k.channel_state(ch).status;
+    if (st == kernel::ChannelStatus::ended || st == kernel::ChannelStatus::aborted) continue;
+    kernel::Event e;
+    e.t_s = run.time_s();
+    e.channel = static_cast<std::uint8_t>(ch + 1);
+    e.kind = kernel::EventKind::end;
+    e.end_reason = reason;
+    out.event(EventWriter::line(e, names), false);
+  }
+  if (reason == kernel::EndReason::max_time)
+    fmt::print(stderr, "nck: the simulated-time limit of {} s was reached before the program end\n", opt.max_time_s);
+  else if (reason == kernel::EndReason::max_wall)
+    fmt::print(stderr, "nck: error {}: the wall-clock limit of {} s was reached before the program end\n",
+               number(ErrorId::AppWallTimeLimit), opt.max_wall_s);
+  else if (reason == kernel::EndReason::interrupted)
+    fmt::print(stderr, "nck: interrupted at {} s (simulated); the output files are complete\n", run.time_s());
+}
+
+bool any_channel_aborted(const sim::DryRun& run) {
+  for (std::size_t ch = 0; ch < run.kernel().channel_count(); ++ch)
+    if (run.kernel().channel_state(ch).status == kernel::ChannelStatus::aborted) return true;
+  return false;
+}
+
+// SPEC 2.2: 0 program end, 1 NC error or a limit, 130/143 SIGINT/SIGTERM.
+int exit_code_of(const sim::DryRun& run, std::optional<kernel::EndReason> stopped) {
+  if (stopped == kernel::EndReason::interrupted) return g_stop_signal == SIGTERM ? 143 : 130;
+  return stopped || any_channel_aborted(run) ? 1 : 0;
+}
+
+// The final state's "end": why the run ended.
+std::string end_of_run(const sim::DryRun& run, std::optional<kernel::EndReason> stopped) {
+  if (stopped) return end_name(*stopped);
+  return any_channel_aborted(run) ? "error" : "program_end";
+}
+
+// Completes every output file; a file that cannot be written is error 940002
+// and exit 2 (an interrupted run keeps 130/143).
+int finish_outputs(const sim::DryRun& run, const RunOptions& opt, const config::Machine& m,
+                   std::optional<kernel::EndReason> stopped, RunOutputs& out) {
+  int code = exit_code_of(run, stopped);
+  const double end_s = run.time_s();
+  std::vector<std::string> failures;
+  if (auto e = out.events.commit()) failures.push_back(*e);
+  if (auto e = out.trace.commit()) failures.push_back(*e);
+  if (auto e = out.report.write(opt.report, end_s, code)) failures.push_back(*e);
+  if (!opt.final_state.empty())
+    if (auto e = write_final(opt.final_state, m, run, end_s, end_of_run(run, stopped), out.errors))
+      failures.push_back(*e);
+  for (const std::string& f : failures) fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppOutputFile), f);
+  if (!failures.empty() && code != 130 && code != 143) code = 2;
+  return code;
+}
+
 }  // namespace
 
 int run_simulation(const RunOptions& opt) {
+  if (auto conflict = output_path_conflict(opt)) {
+    fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppOutputPathConflict), *conflict);
+    return 2;
+  }
   config::LoadResult loaded = config::load_machine(opt.machine);
   if (!print_load_diagnostics(loaded)) return 2;
   const config::Machine& m = *loaded.machine;
@@ -139,68 +244,25 @@ int run_simulation(const RunOptions& opt) {
     scenario = std::move(*loaded_scenario);
     run.load_scenario(scenario);
   }
-  Outputs out;
-  if ((!opt.events.empty() && !out.events.open(opt.events)) ||
-      (!opt.trace.empty() && !out.trace.open(opt.trace, m, opt.trace_every))) {
-    fmt::print(stderr, "nck: error 940002: cannot write the output files ({} / {})\n", opt.events, opt.trace);
+  RunOutputs out;
+  std::optional<std::string> open_error;
+  if (!opt.events.empty()) open_error = out.events.open(opt.events, opt.realtime);
+  if (!open_error && !opt.trace.empty()) open_error = out.trace.open(opt.trace, opt.realtime, m, opt.trace_every);
+  if (open_error) {
+    fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppOutputFile), *open_error);
     return 2;
   }
   out.report.start(m, opt.programs, !opt.report.empty());
   RunNames names;
   names.run = &run;
 
-  auto o = std::make_unique<kernel::TickOutput>();
-  Progress progress(opt.progress);
-  const auto wall_start = std::chrono::steady_clock::now();
-  bool time_limit = false;
-  for (;;) {
-    const double t_s = run.time_s();
-    run.prepare();
-    report_new_warnings(run, t_s, out);
-    run.cycle(*o);
-    record_events(*o, names, out);
-    report_dropped_events(*o, names, out);
-    out.trace.write(run.kernel().cycles() - 1, *o);
-    out.report.sample(*o);
-    if (run.done()) break;
-    if (t_s + run.kernel().cycle_time_s() >= opt.max_time_s) {
-      time_limit = true;
-      break;
-    }
-    if (opt.realtime)
-      std::this_thread::sleep_until(wall_start + std::chrono::duration<double>(t_s));
-    progress.update(t_s);
+  std::optional<kernel::EndReason> stopped;
+  {
+    StopSignals signals;
+    stopped = run_loop(run, opt, names, out);
   }
-  const double end_s = run.time_s();
-  const kernel::Kernel& k = run.kernel();
-  if (time_limit) {
-    for (std::size_t ch = 0; ch < k.channel_count(); ++ch) {
-      if (k.channel_state(ch).status == kernel::ChannelStatus::ended) continue;
-      kernel::Event e;
-      e.t_s = end_s;
-      e.channel = static_cast<std::uint8_t>(ch + 1);
-      e.kind = kernel::EventKind::end;
-      e.end_reason = kernel::EndReason::max_time;
-      out.event(EventWriter::line(e, names), false);
-    }
-    fmt::print(stderr, "nck: the simulated-time limit of {} s was reached before the program end\n",
-               opt.max_time_s);
-  }
-  out.events.close();
-  out.trace.close();
-  bool aborted = time_limit;
-  for (std::size_t ch = 0; ch < k.channel_count(); ++ch)
-    aborted = aborted || k.channel_state(ch).status == kernel::ChannelStatus::aborted;
-  const int exit_code = aborted ? 1 : 0;
-  if (!opt.report.empty() && !out.report.write(opt.report, end_s, exit_code)) {
-    fmt::print(stderr, "nck: error 940002: cannot write {}\n", opt.report);
-    return 2;
-  }
-  if (!opt.final_state.empty() && !write_final(opt.final_state, m, run, end_s, out.errors)) {
-    fmt::print(stderr, "nck: error 940002: cannot write {}\n", opt.final_state);
-    return 2;
-  }
-  return exit_code;
+  if (stopped) end_unfinished_channels(run, *stopped, opt, names, out);
+  return finish_outputs(run, opt, m, stopped, out);
 }
 
 }  // namespace nck::app

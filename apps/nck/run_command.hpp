@@ -13,13 +13,15 @@ struct RunOptions {
   std::string report;  // --report FILE.html
   std::uint64_t trace_every = 1;
   double max_time_s = 86400;  // simulated seconds
+  double max_wall_s = 0;      // wall-clock seconds (0 = no limit)
   std::uint32_t clamp_index = 0;  // clamp-offset group (pzv_grp) at program start
   bool realtime = false;
   bool progress = true;       // on a terminal only
 };
 
-// Exit codes (SPEC 2.2): 0 program end reached, 1 aborted by an NC error (or
-// the time limit), 2 bad usage or machine data.
+// Exit codes (SPEC 2.2): 0 program end reached, 1 aborted by an NC error or a
+// limit, 2 bad usage, machine data or an output that cannot be written,
+// 130/143 interrupted by SIGINT/SIGTERM (every output file complete).
 int run_simulation(const RunOptions& opt);
 
 }  // namespace nck::app

@@ -27,7 +27,7 @@ enum class EventKind : std::uint8_t {
 
 inline constexpr std::uint32_t kNoMessage = 0xFFFFFFFFu;
 
-enum class EndReason : std::uint8_t { m30, m2, error, reset, max_time };
+enum class EndReason : std::uint8_t { m30, m2, error, reset, max_time, max_wall, interrupted };
 
 // What a plc_out/plc_ack/wait refers to; extended by the spindle work.
 enum class FunctionKind : std::uint8_t { none, m, h, s, t };
