@@ -321,6 +321,138 @@ TEST(ChannelSync, MvsSlpWaitsAtExplicitSynchronisationOnly) {
   EXPECT_EQ(cycle_of(r.of(EventKind::end).at(0).t_s), 25);
 }
 
+// --- spindle functions ----------------------------------------------------
+
+// X Y Z plus one spindle S1 (log 6, the main spindle "S", kernel index 0),
+// built so its speed can be followed by hand: speed-controlled with no drive
+// lag (the actual speed is the set speed), 60000 deg/s^2 = 10 rpm more per
+// cycle, at most 6000 deg/s = 1000 rpm, "speed reached" within 9.5 % of the
+// commanded speed (vb_prozent 95 permille).
+config::Machine spindle_machine() {
+  config::Machine m = fast_machine();
+  config::AxisConfig ax;
+  ax.log_axis_nr = 6;
+  ax.name = "S1";
+  ax.kind = config::AxisKind::spindle;
+  ax.operation_mode = "OPEN_POSITION_LOOP";
+  ax.vb_prozent_permille = 95;
+  for (auto& g : ax.gears) {
+    g.vb_max = 6000;
+    g.a_beschl = g.a_brems = g.a_grenz = g.a_max = 60000;
+  }
+  m.axes.push_back(ax);
+  config::ChannelSpindle sp;
+  sp.name = "S1";
+  sp.log_axis_nr = 6;
+  sp.axis_index = static_cast<int>(m.axes.size() - 1);
+  m.channels[0].spindles.push_back(sp);
+  m.channels[0].main_spindle_ax_nr = 6;
+  m.sim.drive_speed_time_constant_s = 0;
+  return m;
+}
+
+// A feed move to x with M3 S<rpm> of the main spindle in the same block.
+nc::Block move_with_m3(std::uint32_t line, double x, double rpm) {
+  nc::Block b = move(line, nc::Motion::linear, x);
+  nc::SpindleCommand c;
+  c.name = "S";
+  c.target = "S1";
+  c.din = true;
+  c.m = nc::SpindleM::m3;
+  c.rev_rpm = rpm;
+  b.spindles.push_back(c);
+  return b;
+}
+
+// A spindle started in cycle s gains 10 rpm in each cycle from s on (the
+// spindle runs after the channel in the same cycle): 10 * (i - s + 1) rpm
+// after cycle i. Speed reached for M3 S1000 means at least 905 rpm: first
+// after cycle s + 90 (910 rpm; 900 after s + 89 is outside the band). The
+// channel reads the status of the cycle before, so its wait ends in s + 91.
+constexpr int kSpeedReachedAfter = 90;
+
+// N1 M3 S1000 G1 X1 (default m3_synch MVS_SVS, not output): the block waits
+// for speed reached from cycle 0, moves from cycle 91 on (cycles 91..100)
+// and M30 runs in cycle 101.
+TEST(ChannelSync, SpindleWaitEndsInTheCycleAfterSpeedReached) {
+  KernelRig rig(spindle_machine());
+  ASSERT_EQ(rig.k.spindle_count(), 1u);
+  rig.push_block(0, move_with_m3(1, 1.0, 1000), "t.nc");
+  rig.push_block(0, end_block(2), "t.nc");
+  const Log r = run(rig.k, never());
+  EXPECT_TRUE(r.issued.empty());
+  int reached = -1;
+  for (int i = 0; i < r.cycles() && reached < 0; ++i)
+    if (r.speed_reached[static_cast<std::size_t>(i)]) reached = i;
+  EXPECT_EQ(reached, kSpeedReachedAfter);
+  const auto waits = r.of(EventKind::wait), ends = r.of(EventKind::wait_end);
+  ASSERT_EQ(waits.size(), 1u);
+  ASSERT_EQ(ends.size(), 1u);
+  EXPECT_EQ(cycle_of(waits[0].t_s), 0);
+  EXPECT_EQ(waits[0].wait_reason, static_cast<std::uint8_t>(WaitReason::speed_reached));
+  EXPECT_EQ(waits[0].spindle, 0);
+  EXPECT_EQ(waits[0].fn, FunctionKind::m);
+  EXPECT_EQ(waits[0].fn_number, 3);
+  EXPECT_EQ(cycle_of(ends[0].t_s), kSpeedReachedAfter + 1);
+  EXPECT_EQ(r.motion_start(), kSpeedReachedAfter + 1);
+  EXPECT_EQ(cycle_of(r.of(EventKind::end).at(0).t_s), kSpeedReachedAfter + 1 + kOneMm);
+}
+
+// M3 with PLC_INFO is output and waits for the PLC, with m3_prozess_zeit
+// 5 ms as its acknowledgement timeout. N1 G1 X1 takes cycles 0..9; N2
+// M3 S1000 G1 X2 starts in cycle 10: output, wait, deadline 10 + 5 ms.
+Log timeout_run(const AckPolicy& plc) {
+  config::Machine m = spindle_machine();
+  m.channels[0].spindles[0].m3_synch = sync::MVS_SVS | sync::PLC_INFO;
+  m.channels[0].spindles[0].m3_prozess_zeit_s = 0.005;
+  KernelRig rig(m);
+  rig.push_block(0, move(1, nc::Motion::linear, 1.0), "t.nc");
+  rig.push_block(0, move_with_m3(2, 2.0, 1000), "t.nc");
+  rig.push_block(0, end_block(3), "t.nc");
+  return run(rig.k, plc);
+}
+
+// Never acknowledged: PlcAckTimeout in cycle 15 (t = 15 ms >= the deadline),
+// not before; the channel aborts there without moving on.
+TEST(ChannelSync, UnacknowledgedOutputTimesOutAtItsDeadline) {
+  const Log r = timeout_run(never());
+  ASSERT_EQ(r.issued.size(), 1u);
+  EXPECT_EQ(r.issued[0].cycle, kOneMm);
+  EXPECT_EQ(r.issued[0].output.number, 3);
+  EXPECT_EQ(r.issued[0].output.value, 1000.0);
+  const auto errors = r.of(EventKind::error);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].id, ErrorId::PlcAckTimeout);
+  EXPECT_EQ(errors[0].line, 2u);
+  EXPECT_EQ(cycle_of(errors[0].t_s), kOneMm + 5);
+  EXPECT_EQ(r.cycles(), kOneMm + 6);  // done after cycle 15
+  EXPECT_EQ(r.status[kOneMm + 4], ChannelStatus::waiting);
+  EXPECT_EQ(r.status.back(), ChannelStatus::aborted);
+  EXPECT_DOUBLE_EQ(r.x.back(), 1.0);
+}
+
+// Acknowledged in cycle 14, one cycle before the deadline: no timeout. The
+// wait's reason changes there from the PLC to the speed (wait_end, then a
+// new wait); the spindle, started in cycle 10, reaches its speed after
+// cycle 100, so N2 moves from cycle 101.
+TEST(ChannelSync, AcknowledgedInTimeThenWaitsForTheSpeed) {
+  const Log r = timeout_run(after(4));
+  EXPECT_TRUE(r.of(EventKind::error).empty());
+  const auto waits = r.of(EventKind::wait), ends = r.of(EventKind::wait_end);
+  ASSERT_EQ(waits.size(), 2u);
+  ASSERT_EQ(ends.size(), 2u);
+  EXPECT_EQ(cycle_of(waits[0].t_s), kOneMm);
+  EXPECT_EQ(waits[0].wait_reason, static_cast<std::uint8_t>(WaitReason::plc_ack));
+  EXPECT_EQ(cycle_of(ends[0].t_s), 14);
+  EXPECT_EQ(cycle_of(waits[1].t_s), 14);
+  EXPECT_EQ(waits[1].wait_reason, static_cast<std::uint8_t>(WaitReason::speed_reached));
+  const int moves = kOneMm + kSpeedReachedAfter + 1;
+  EXPECT_EQ(cycle_of(ends[1].t_s), moves);
+  EXPECT_DOUBLE_EQ(r.x[static_cast<std::size_t>(moves - 1)], 1.0);
+  EXPECT_NEAR(r.x[static_cast<std::size_t>(moves)], 1.0 + kStep_mm, 1e-12);
+  EXPECT_EQ(r.of(EventKind::end).at(0).end_reason, EndReason::m30);
+}
+
 // --- programmed stops -----------------------------------------------------
 
 // N1 M1, N2 M0, N3 M30, all without duration (cycle 0). M0 always reports a
