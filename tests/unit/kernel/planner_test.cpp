@@ -354,5 +354,116 @@ TEST(Planner, OffsetChangesAreRecordedForTheirEvents) {
   EXPECT_DOUBLE_EQ(tool.values[2].second, 100.0);
 }
 
+TEST(Planner, IncrementalArcResolvesEndAndCentreFromTheStart) {
+  PlannerRig r("mill");
+  // From (5, 5): G91 end +20/0 -> (25, 5); centre start + (10, 0) = (15, 5).
+  auto c = r.plan("G0 X5 Y5\nG91 G3 X20 Y0 I10 J0 F600\nM30\n");
+  const motion::Segment& s = c[1].segment;
+  ASSERT_EQ(s.kind(), motion::SegmentKind::arc);
+  EXPECT_NEAR(s.center_a(), 15, 1e-9);
+  EXPECT_NEAR(s.center_b(), 5, 1e-9);
+  expect_end(c[1], 25, 5, 0);
+}
+
+TEST(Planner, AbsoluteCentreG161IsInProgramCoordinates) {
+  PlannerRig r("mill");
+  // G54, G161: I10 J0 is the PCS point (10, 0) = MCS (110, 50).
+  auto c = r.plan("G54 G0 X0 Y0 Z0\nG161 G2 X20 Y0 I10 J0 F600\nM30\n");
+  const motion::Segment& s = c[1].segment;
+  ASSERT_EQ(s.kind(), motion::SegmentKind::arc);
+  EXPECT_NEAR(s.center_a(), 110, 1e-9);
+  EXPECT_NEAR(s.center_b(), 50, 1e-9);
+  EXPECT_NEAR(s.sweep_rad(), -kPi, 1e-9);
+  expect_end(c[1], 120, 50, -150);
+}
+
+TEST(Planner, InchArcScalesCentreWords) {
+  PlannerRig r("mill");
+  // G70: X2 = 50.8 mm, I1 = 25.4 mm.
+  auto c = r.plan("G70 G3 X2 Y0 I1 J0 F10\nM30\n");
+  const motion::Segment& s = c[0].segment;
+  ASSERT_EQ(s.kind(), motion::SegmentKind::arc);
+  EXPECT_NEAR(s.center_a(), 25.4, 1e-9);
+  EXPECT_NEAR(s.radius_start(), 25.4, 1e-9);
+  expect_end(c[0], 50.8, 0, 0);
+}
+
+TEST(Planner, HelixLengthCountsTheThirdAxis) {
+  PlannerRig r("mill");
+  // contour.nc N190: a full turn of radius 15 down 3 mm.
+  auto c = r.plan("G0 X15 Y0\nG3 X15 Y0 Z-3 I-15 J0 F900\nM30\n");
+  const motion::Segment& s = c[1].segment;
+  ASSERT_EQ(s.kind(), motion::SegmentKind::arc);
+  EXPECT_NEAR(s.sweep_rad(), 2 * kPi, 1e-9);
+  EXPECT_NEAR(s.length(), std::hypot(2 * kPi * 15, 3.0), 1e-9);
+  expect_end(c[1], 15, 0, -3);
+}
+
+TEST(Planner, ArcUnderRotationIsMappedFromProgramCoordinates) {
+  PlannerRig r("mill");
+  // #ROTATION 90: the arc is planned in PCS and mapped; its end (20, 0)
+  // turned 90 deg is MCS (0, 20).
+  auto c = r.plan("G0 X0 Y0\n#ROTATION ON [ANGLE=90]\nG3 X20 Y0 I10 J0 F600\nM30\n");
+  ASSERT_EQ(c[2].kind, CommandKind::motion);
+  EXPECT_TRUE(c[2].mapped);
+  motion::AxisVector m{};
+  c[2].map.apply(c[2].segment.end_point(), m, 3);
+  EXPECT_NEAR(m[0], 0, 1e-9);
+  EXPECT_NEAR(m[1], 20, 1e-9);
+}
+
+TEST(Planner, HomingClearsThePreset) {
+  PlannerRig r("mill");
+  // #PSET X5 at MCS X100 shifts X by -5; G74 homes X (to MCS 0) and clears
+  // it: G0 X0 is MCS 100 again (not 95).
+  auto c = r.plan("G54 G0 X0 Y0 Z0\n#PSET X5\nG74 X1\nG0 X0\nM30\n");
+  expect_end(c[2], 0, 50, -150);
+  expect_end(c[3], 100, 50, -150);
+}
+
+TEST(Planner, IncrementalG92AddsToTheShift) {
+  PlannerRig r("mill");
+  // G92 X10, then G91 G92 X5: 15 mm in all; G90 X0 -> MCS 15.
+  auto c = r.plan("G92 X10\nG91 G92 X5\nG90 G1 X0 F1000\nM30\n");
+  expect_end(c[2], 15, 0, 0);
+}
+
+TEST(Planner, SoftwareLimitAppliesToTheMachinePositionAfterOffsets) {
+  PlannerRig r("mill");
+  // G55 X301 is MCS 501, beyond swe_pos 500; X299 (MCS 499) is fine.
+  auto c = r.plan("G55 G0 X299\nG0 X301\nM30\n");
+  expect_end(c[0], 499, 0, 0);
+  expect_error(c[1], ErrorId::KernelSoftwareLimit, 2);
+}
+
+TEST(Planner, IncrementalMoveAfterCsOnRunsAlongTheTurnedAxis) {
+  PlannerRig r("mill");
+  // The axes stay at MCS (0, 0) when the CS (turned 90 deg) comes on; G91
+  // X10 is 10 mm along the CS X axis, which is the machine's +Y.
+  auto c = r.plan("G0 X0 Y0\n#CS ON [1][0,0,0,0,0,90]\nG91 G1 X10 F1000\nM30\n");
+  expect_end(c[2], 0, 10, 0);
+}
+
+TEST(Planner, ZeroOffsetUnderG91WaitsForTheNextAbsoluteWord) {
+  PlannerRig r("mill");
+  // G91 G54 X10 moves 10 mm (G54 waits); G90 X0 then lands on G54's X100;
+  // Y was never programmed absolutely and stays.
+  auto c = r.plan("G91 G54 G0 X10\nG90 X0\nM30\n");
+  expect_end(c[0], 10, 0, 0);
+  expect_end(c[1], 100, 0, 0);
+}
+
+TEST(Planner, CircleWithoutCentreOrRadiusIsError930005) {
+  PlannerRig r("mill");
+  auto c = r.plan("G0 X0 Y0\nG2 X10 Y0 F600\nM30\n");
+  expect_error(c[1], ErrorId::KernelArcNoCenter, 2);
+}
+
+TEST(Planner, ProgramStopIsAStopCommand) {
+  PlannerRig r("mill");
+  auto c = r.plan("M0\nM30\n");
+  EXPECT_EQ(c[0].kind, CommandKind::stop);
+}
+
 }  // namespace
 }  // namespace nck::kernel
