@@ -239,5 +239,34 @@ TEST(ChannelFrames, LatheAxesMapToTheChainsXAndZ) {
   EXPECT_NEAR(p[1], -240, 1e-9);
 }
 
+TEST(ChannelFrames, ChainedCoordinateSystemsAddUp) {
+  FramesRig r("mill");
+  // coordinates.nc without the #ACS: PART (20, 10) and HOLE (5, 5) turned
+  // 90 deg on top of it. In HOLE, (10, 0) -> (0, 10) + (5, 5) = (5, 15) in
+  // PART -> (25, 25) + G54 (100, 50) = (125, 75).
+  r.load("G54\n#CS ADD [PART][20,10,0,0,0,0]\n#CS ADD [HOLE][5,5,0,0,0,90]\n#CS SELECT [HOLE]\n"
+         "#CS SELECT [PART]\n#CS OFF ALL\nM30\n");
+  r.next();
+  r.next();
+  r.next();
+  FrameChanges c = r.next();
+  EXPECT_TRUE(c.coordinate_system_changed);
+  expect_xyz(r.mcs(10, 0, 0), 125, 75, -150);
+  expect_round_trip(r);
+  r.next();
+  expect_xyz(r.mcs(0, 0, 0), 120, 60, -150);
+  r.next();
+  expect_xyz(r.mcs(0, 0, 0), 100, 50, -150);
+}
+
+TEST(ChannelFrames, WritingTheSelectedZeroOffsetActsAtOnce) {
+  FramesRig r("mill");
+  r.load("G54\nV.G.NP[1].V.X = 120\nM30\n");
+  r.next();
+  FrameChanges c = r.next();
+  EXPECT_TRUE(has_kind(c, frames::OffsetKind::zero));
+  expect_xyz(r.mcs(0, 0, 0), 120, 50, -150);
+}
+
 }  // namespace
 }  // namespace nck::kernel
