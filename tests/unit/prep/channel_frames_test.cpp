@@ -9,10 +9,10 @@
 #include <cmath>
 #include <string>
 
-#include "../../../src/kernel/channel_frames.hpp"
+#include "nck/prep/channel_frames.hpp"
 #include "example_blocks.hpp"
 
-namespace nck::kernel {
+namespace nck::prep {
 namespace {
 
 using testing::decode_blocks;
@@ -269,4 +269,4 @@ TEST(ChannelFrames, WritingTheSelectedZeroOffsetActsAtOnce) {
 }
 
 }  // namespace
-}  // namespace nck::kernel
+}  // namespace nck::prep

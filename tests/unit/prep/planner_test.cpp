@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "../../../src/kernel/planner.hpp"
+#include "nck/prep/planner.hpp"
 #include "example_blocks.hpp"
 
-namespace nck::kernel {
+namespace nck::prep {
 namespace {
 
 using testing::decode_blocks;
@@ -466,4 +466,4 @@ TEST(Planner, ProgramStopIsAStopCommand) {
 }
 
 }  // namespace
-}  // namespace nck::kernel
+}  // namespace nck::prep

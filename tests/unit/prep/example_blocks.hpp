@@ -12,9 +12,9 @@
 
 #include "../nc/nc_test_util.hpp"
 #include "nck/config/load.hpp"
-#include "nck/kernel/decoder_setup.hpp"
+#include "nck/prep/decoder_setup.hpp"
 
-namespace nck::kernel::testing {
+namespace nck::prep::testing {
 
 // examples/<name>, loaded and checked once per test program.
 inline const config::Machine& example_machine(const std::string& name) {
@@ -30,9 +30,9 @@ inline const config::Machine& example_machine(const std::string& name) {
 // fails the test (the text is meant to be valid).
 inline std::vector<nc::Block> decode_blocks(const config::Machine& m, const std::string& text,
                                             std::size_t ch = 0) {
-  nc::test::Decoded d = nc::test::decode(text, decoder_config(m, ch));
+  nc::test::Decoded d = nc::test::decode(text, prep::decoder_config(m, ch));
   EXPECT_EQ(d.errors(), 0u) << nc::test::dump(d);
   return d.blocks;
 }
 
-}  // namespace nck::kernel::testing
+}  // namespace nck::prep::testing
