@@ -87,8 +87,9 @@ class Progress {
 
 // The --plc scenario; its diagnostics go to stderr, errors make it unusable.
 std::optional<plc::Scenario> load_scenario(const std::string& path, const config::Machine& m) {
+  std::error_code ec;
   std::ifstream f(path, std::ios::binary);
-  if (!f) {
+  if (!std::filesystem::is_regular_file(path, ec) || !f) {
     fmt::print(stderr, "{}: error 940003: cannot read the PLC scenario\n", path);
     return std::nullopt;
   }
