@@ -19,8 +19,7 @@ Direction preferred_direction(const config::AxisConfig& ax) noexcept {
 }
 
 std::expected<void, ErrorId> check_preferred_direction(const config::AxisConfig& ax, Direction dir) noexcept {
-  const Direction pref = preferred_direction(ax);
-  if (pref != Direction::none && dir != Direction::none && dir != pref)
+  if (!direction_allowed(preferred_direction(ax), dir))
     return std::unexpected(ErrorId::SpindlePreferredDirection);
   return {};
 }
@@ -40,9 +39,9 @@ double m19_travel_deg(double current_deg, double target_deg, Direction programme
   return ahead <= range / 2 ? ahead : ahead - range;
 }
 
-bool speed_reached(double act_rpm, double cmd_rpm, double vb_prozent_permille) noexcept {
+bool speed_reached(double act_rpm, double cmd_rpm, double tolerance_permille) noexcept {
   if (!std::isfinite(act_rpm) || !std::isfinite(cmd_rpm)) return false;
-  const double band = vb_prozent_permille * std::fabs(cmd_rpm) / 1000.0;  // exact at the edges
+  const double band = tolerance_permille * std::fabs(cmd_rpm) / 1000.0;  // exact at the edges
   return std::fabs(act_rpm - cmd_rpm) <= band;
 }
 

@@ -35,9 +35,9 @@ std::expected<void, Diagnostic> SpindleAxis::configure(const config::AxisConfig*
                                            fmt::format("spindle {}: cycle time {} s is not positive",
                                                        sp.name, cycle_s)));
   *this = SpindleAxis{};
-  p_ = SpindleParams::from(axis, sp, sim, cycle_s);
-  gear_ = p_.initial_gear;
-  pos_deg_ = wrap_modulo(0, gear().modulou, gear().moduloo);
+  cfg_ = SpindleConfig::from(axis, sp, sim, cycle_s);
+  gear_ = cfg_.initial_gear;
+  set_.pos_deg = gear().wrap(0);
   configured_ = true;
   update_status();
   return {};
@@ -60,22 +60,22 @@ SpindleResult SpindleAxis::fail(ErrorId id) noexcept {
 
 void SpindleAxis::adopt_pending_tool() noexcept {
   // Tool limits take effect on the way from standstill into motion (2.8.5).
-  if (tool_has_pending_ && v_deg_s_ == 0) {
-    tool_ = tool_pending_;
-    tool_has_pending_ = false;
+  if (tool_.has_pending && set_.vel_deg_s == 0) {
+    tool_.active = tool_.pending;
+    tool_.has_pending = false;
   }
 }
 
 SpindleResult SpindleAxis::rotate(double rpm, bool g167) noexcept {
   if (auto g = guard(); !g.ok()) return g;
   if (!std::isfinite(rpm)) return err(ErrorId::SpindleBadValue);
-  const int dir = sign_of(rpm);
-  if (dir != 0 && !check_preferred_direction_ok(dir)) return fail(ErrorId::SpindlePreferredDirection);
+  if (!direction_allowed(cfg_.preferred_direction, static_cast<Direction>(sign_of(rpm))))
+    return fail(ErrorId::SpindlePreferredDirection);
   adopt_pending_tool();
-  programmed_rpm_ = rpm;
-  ignore_override_ = g167;  // a new speed ends a former G167 (2.4.1)
+  speed_.programmed_rpm = rpm;
+  speed_.ignore_override = g167;  // a new speed ends a former G167 (2.4.1)
   mode_ = SpindleMode::rotate;
-  planned_ = pos_done_ = false;
+  pos_.planned = pos_.done = false;
   SpindleResult r;
   if (std::fabs(rpm_to_deg_s(rpm)) > max_speed_deg_s()) r = SpindleResult{ErrorId::SpindleSpeedLimited, true};
   update_status();
@@ -84,10 +84,10 @@ SpindleResult SpindleAxis::rotate(double rpm, bool g167) noexcept {
 
 SpindleResult SpindleAxis::stop() noexcept {
   if (auto g = guard(); !g.ok()) return g;
-  planned_ = pos_done_ = false;
+  pos_.planned = pos_.done = false;
   // After the control limit the reference is lost: M5 homes on the way down.
-  if (ref_lost_ && p_.can_position && !p_.open_loop && v_deg_s_ != 0) {
-    begin_homing(After::stop, Direction::none);
+  if (ref_.lost && cfg_.can_position && !cfg_.open_loop && set_.vel_deg_s != 0) {
+    begin_homing(AfterHoming::stop, Direction::none);
   } else {
     mode_ = SpindleMode::stop;
   }
@@ -97,21 +97,20 @@ SpindleResult SpindleAxis::stop() noexcept {
 
 SpindleResult SpindleAxis::position(double target_deg, Direction dir, double rpm, bool g167) noexcept {
   if (auto g = guard(); !g.ok()) return g;
-  if (!p_.can_position) return err(ErrorId::SpindleSensorlessPositioning);
+  if (!cfg_.can_position) return err(ErrorId::SpindleSensorlessPositioning);
   if (!std::isfinite(target_deg) || !std::isfinite(rpm) || rpm == 0) return err(ErrorId::SpindleBadValue);
-  if (dir != Direction::none && !check_preferred_direction_ok(static_cast<int>(dir)))
-    return fail(ErrorId::SpindlePreferredDirection);
-  if (dir == Direction::none && v_deg_s_ == 0 && preferred() != 0)
-    dir = static_cast<Direction>(preferred());  // shortest path may not break the preference
+  if (!direction_allowed(cfg_.preferred_direction, dir)) return fail(ErrorId::SpindlePreferredDirection);
+  if (dir == Direction::none && set_.vel_deg_s == 0)
+    dir = cfg_.preferred_direction;  // shortest path may not break the preference
   adopt_pending_tool();
-  ignore_override_ = g167;
+  speed_.ignore_override = g167;
   const double speed = std::fabs(rpm_to_deg_s(rpm));
-  if (!homed_) {
-    home_target_deg_ = target_deg;
-    home_target_dir_ = dir;
-    home_target_speed_ = speed;
-    home_target_overridable_ = true;
-    begin_homing(After::target, dir);
+  if (!ref_.homed) {
+    homing_.target_deg = target_deg;
+    homing_.target_dir = dir;
+    homing_.target_speed_deg_s = speed;
+    homing_.target_overridable = true;
+    begin_homing(AfterHoming::go_to_target, dir);
   } else {
     begin_positioning(SpindleMode::position, target_deg, dir, speed, true);
   }
@@ -121,50 +120,50 @@ SpindleResult SpindleAxis::position(double target_deg, Direction dir, double rpm
 
 SpindleResult SpindleAxis::home() noexcept {
   if (auto g = guard(); !g.ok()) return g;
-  if (!p_.can_position) return err(ErrorId::SpindleSensorlessPositioning);
+  if (!cfg_.can_position) return err(ErrorId::SpindleSensorlessPositioning);
   adopt_pending_tool();
-  begin_homing(After::refpkt, Direction::none);
+  begin_homing(AfterHoming::go_to_reference, Direction::none);
   update_status();
   return {};
 }
 
-void SpindleAxis::begin_homing(After after, Direction dir) noexcept {
+void SpindleAxis::begin_homing(AfterHoming after, Direction dir) noexcept {
   mode_ = SpindleMode::homing;
-  after_home_ = after;
-  mark_found_ = false;
-  planned_ = pos_done_ = false;
+  homing_.after = after;
+  homing_.mark_found = false;
+  pos_.planned = pos_.done = false;
   int d = static_cast<int>(dir);
-  if (d == 0) d = sign_of(v_deg_s_);
-  if (d == 0) d = preferred();
-  home_dir_ = d == 0 ? 1 : d;
+  if (d == 0) d = sign_of(set_.vel_deg_s);
+  if (d == 0) d = static_cast<int>(cfg_.preferred_direction);
+  homing_.dir = d == 0 ? 1 : d;
 }
 
 void SpindleAxis::begin_positioning(SpindleMode mode, double target_deg, Direction dir,
                                     double speed_deg_s, bool overridable) noexcept {
   mode_ = mode;
-  target_deg_ = wrap_modulo(target_deg, gear().modulou, gear().moduloo);
-  pos_dir_req_ = dir;
-  pos_speed_deg_s_ = speed_deg_s;
-  pos_overridable_ = overridable;
-  planned_ = false;
-  pos_done_ = false;
-  remaining_deg_ = 0;
+  pos_.target_deg = gear().wrap(target_deg);
+  pos_.requested_dir = dir;
+  pos_.speed_deg_s = speed_deg_s;
+  pos_.overridable = overridable;
+  pos_.planned = false;
+  pos_.done = false;
+  pos_.remaining_deg = 0;
 }
 
 SpindleResult SpindleAxis::start_gear_change(std::uint32_t stage) noexcept {
   if (auto g = guard(); !g.ok()) return g;
   if (stage < 1 || stage > config::kMaxGearStages) return err(ErrorId::SpindleGearStageInvalid);
-  gc_stage_ = stage;
-  if (!p_.can_position) {
+  pos_.gear_change_stage = stage;
+  if (!cfg_.can_position) {
     // Nothing to position: the spindle just stops, then the PLC shifts.
     mode_ = SpindleMode::gear_change;
-    planned_ = true;
-    pos_done_ = false;
-    remaining_deg_ = 0;
-    pos_dir_ = 0;
+    pos_.planned = true;
+    pos_.done = false;
+    pos_.remaining_deg = 0;
+    pos_.dir = 0;
   } else {
-    Direction dir = static_cast<Direction>(preferred());
-    begin_positioning(SpindleMode::gear_change, gear().getr_schalt_pos, dir, gear().vb_eilgang, false);
+    begin_positioning(SpindleMode::gear_change, gear().gear_change_pos_deg, cfg_.preferred_direction,
+                      gear().rapid_speed_deg_s, false);
   }
   update_status();
   return {};
@@ -174,10 +173,10 @@ SpindleResult SpindleAxis::finish_gear_change() noexcept {
   if (!configured_) return err(ErrorId::SpindleNotConfigured);
   if (mode_ != SpindleMode::gear_change || !status_.gear_change_ready)
     return err(ErrorId::SpindleGearChangeState);
-  gear_ = gc_stage_;
-  pos_deg_ = wrap_modulo(pos_deg_, gear().modulou, gear().moduloo);
+  gear_ = pos_.gear_change_stage;
+  set_.pos_deg = gear().wrap(set_.pos_deg);
   mode_ = SpindleMode::stop;
-  planned_ = pos_done_ = false;
+  pos_.planned = pos_.done = false;
   update_status();
   return {};
 }
@@ -185,9 +184,9 @@ SpindleResult SpindleAxis::finish_gear_change() noexcept {
 SpindleResult SpindleAxis::load_gear_data(std::uint32_t stage) noexcept {
   if (auto g = guard(); !g.ok()) return g;
   if (stage < 1 || stage > config::kMaxGearStages) return err(ErrorId::SpindleGearStageInvalid);
-  if (v_deg_s_ != 0) return err(ErrorId::SpindleNotAtStandstill);
+  if (set_.vel_deg_s != 0) return err(ErrorId::SpindleNotAtStandstill);
   gear_ = stage;
-  pos_deg_ = wrap_modulo(pos_deg_, gear().modulou, gear().moduloo);
+  set_.pos_deg = gear().wrap(set_.pos_deg);
   update_status();
   return {};
 }

@@ -11,29 +11,30 @@
 namespace nck::spindle {
 
 void SpindleAxis::drive_model(double step_deg, double dt) noexcept {
+  DriveModel& d = drive_;
   const double v_cmd = step_deg / dt;  // what the set point really moved this cycle
-  if (p_.open_loop) {
-    const double t = p_.speed_time_constant_s;
+  if (cfg_.open_loop) {
+    const double t = cfg_.speed_time_constant_s;
     const double k = t > 0 ? 1.0 - std::exp(-dt / t) : 1.0;
-    act_v_deg_s_ += (v_cmd - act_v_deg_s_) * k;
-    lag_deg_ += (v_cmd - act_v_deg_s_) * dt;
+    d.act_vel_deg_s += (v_cmd - d.act_vel_deg_s) * k;
+    d.lag_deg += (v_cmd - d.act_vel_deg_s) * dt;
   } else {
-    const double ta = p_.feedforward_ta_s;
+    const double ta = cfg_.feedforward_ta_s;
     const double kf = dt / (ta + dt);  // backward Euler: ramp lag is exactly a*Ta
-    v_filt_deg_s_ += (v_cmd - v_filt_deg_s_) * kf;  // the drive answers with time constant Ta
-    const double w = ff_on_ ? ff_weight_ : 0.0;
+    d.filtered_vel_deg_s += (v_cmd - d.filtered_vel_deg_s) * kf;  // the drive answers with time constant Ta
+    const double w = ff_.on ? ff_.weight : 0.0;
     const double kv = gear().kv_1_s > 0 ? gear().kv_1_s : 10.0;
     // Exact solution of d(lag)/dt = v_cmd - w*v_filt - kv*lag over one cycle:
     // stable for any kv*dt.
     const double e = std::exp(-kv * dt);
-    const double lag_new = lag_deg_ * e + (v_cmd - w * v_filt_deg_s_) * (1.0 - e) / kv;
-    act_v_deg_s_ = v_cmd - (lag_new - lag_deg_) / dt;
-    lag_deg_ = lag_new;
+    const double lag_new = d.lag_deg * e + (v_cmd - w * d.filtered_vel_deg_s) * (1.0 - e) / kv;
+    d.act_vel_deg_s = v_cmd - (lag_new - d.lag_deg) / dt;
+    d.lag_deg = lag_new;
   }
-  if (!std::isfinite(lag_deg_) || !std::isfinite(act_v_deg_s_)) {  // never let NaN out
-    lag_deg_ = 0;
-    act_v_deg_s_ = v_cmd;
-    v_filt_deg_s_ = v_cmd;
+  if (!std::isfinite(d.lag_deg) || !std::isfinite(d.act_vel_deg_s)) {  // never let NaN out
+    d.lag_deg = 0;
+    d.act_vel_deg_s = v_cmd;
+    d.filtered_vel_deg_s = v_cmd;
   }
 }
 
@@ -43,33 +44,35 @@ void SpindleAxis::update_status() noexcept {
   s.mode = mode_;
   s.gear_stage = gear_;
   s.error = error_;
-  s.set_rpm = deg_s_to_rpm(v_deg_s_);
-  s.set_pos_deg = pos_deg_;
-  s.act_rpm = deg_s_to_rpm(act_v_deg_s_);
-  s.act_pos_deg = wrap_modulo(pos_deg_ - lag_deg_, g.modulou, g.moduloo);
-  s.lag_deg = lag_deg_;
-  s.set_accel_deg_s2 = a_deg_s2_;
-  s.programmed_rpm = programmed_rpm_;
-  s.override_pct = ignore_override_ ? 100.0 : override_pct_;
-  s.feedhold = feedhold_;
-  s.homed = homed_;
-  s.reference_lost = ref_lost_;
+  s.set_rpm = deg_s_to_rpm(set_.vel_deg_s);
+  s.set_pos_deg = set_.pos_deg;
+  s.act_rpm = deg_s_to_rpm(drive_.act_vel_deg_s);
+  s.act_pos_deg = g.wrap(set_.pos_deg - drive_.lag_deg);
+  s.lag_deg = drive_.lag_deg;
+  s.set_accel_deg_s2 = set_.accel_deg_s2;
+  s.programmed_rpm = speed_.programmed_rpm;
+  s.override_pct = speed_.ignore_override ? 100.0 : speed_.override_pct;
+  s.feedhold = speed_.feedhold;
+  s.homed = ref_.homed;
+  s.reference_lost = ref_.lost;
   const bool rotating = mode_ == SpindleMode::rotate;
-  s.cmd_rpm = rotating ? deg_s_to_rpm(limit_speed(rpm_to_deg_s(programmed_rpm_) * override_factor())) : 0.0;
-  s.standstill = v_deg_s_ == 0 && zero_speed(act_v_deg_s_, g.vb_min_null);
+  s.cmd_rpm =
+      rotating ? deg_s_to_rpm(limit_speed(rpm_to_deg_s(speed_.programmed_rpm) * override_factor())) : 0.0;
+  s.standstill = set_.vel_deg_s == 0 && zero_speed(drive_.act_vel_deg_s, g.zero_speed_deg_s);
   if (rotating)
-    s.speed_reached = s.cmd_rpm == 0 ? s.standstill : speed_reached(s.act_rpm, s.cmd_rpm, p_.vb_prozent_permille);
+    s.speed_reached = s.cmd_rpm == 0 ? s.standstill
+                                     : speed_reached(s.act_rpm, s.cmd_rpm, cfg_.speed_reached_tolerance_permille);
   else
     s.speed_reached = mode_ == SpindleMode::stop && s.standstill;
   const bool positioning = mode_ == SpindleMode::position || mode_ == SpindleMode::gear_change ||
                            mode_ == SpindleMode::homing;
-  s.target_pos_deg = positioning ? target_deg_ : pos_deg_;
-  s.distance_to_go_deg = positioning && planned_ ? pos_dir_ * remaining_deg_ : 0.0;
-  s.in_position = mode_ == SpindleMode::position && pos_done_ &&
-                  std::fabs(lag_deg_) <= p_.in_position_window_deg;
-  s.gear_change_ready = mode_ == SpindleMode::gear_change && pos_done_ && s.standstill;
-  const double out_rpm = p_.open_loop ? s.set_rpm : s.act_rpm;
-  s.drive_output = drive_output_value(p_.v_reso_num, p_.v_reso_denom, p_.v_time_base, out_rpm, p_.cycle_s);
+  s.target_pos_deg = positioning ? pos_.target_deg : set_.pos_deg;
+  s.distance_to_go_deg = positioning && pos_.planned ? pos_.dir * pos_.remaining_deg : 0.0;
+  s.in_position = mode_ == SpindleMode::position && pos_.done &&
+                  std::fabs(drive_.lag_deg) <= cfg_.in_position_window_deg;
+  s.gear_change_ready = mode_ == SpindleMode::gear_change && pos_.done && s.standstill;
+  const double out_rpm = cfg_.open_loop ? s.set_rpm : s.act_rpm;
+  s.drive_output = drive_output_value(cfg_.drive_speed_scaling, out_rpm, cfg_.cycle_s);
 }
 
 }  // namespace nck::spindle

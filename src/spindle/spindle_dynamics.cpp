@@ -9,30 +9,25 @@
 
 namespace nck::spindle {
 
-const config::GearStage& SpindleAxis::gear() const noexcept {
+const GearConfig& SpindleAxis::gear() const noexcept {
   const std::uint32_t i = gear_ >= 1 && gear_ <= config::kMaxGearStages ? gear_ - 1 : 0;
-  return p_.gears[i];
-}
-
-double SpindleAxis::range_deg() const noexcept {
-  const double r = gear().moduloo - gear().modulou;
-  return r > 0 && std::isfinite(r) ? r : 360.0;
+  return cfg_.gears[i];
 }
 
 double SpindleAxis::accel_limit(double a_deg_s2) const noexcept {
-  double a = a_deg_s2 * accel_weight_;
-  if (gear().a_max > 0) a = std::min(a, gear().a_max);
-  if (tool_.a_max_deg_s2 > 0) a = std::min(a, tool_.a_max_deg_s2);
+  double a = a_deg_s2 * speed_.accel_weight;
+  if (gear().accel_max_deg_s2 > 0) a = std::min(a, gear().accel_max_deg_s2);
+  if (tool_.active.a_max_deg_s2 > 0) a = std::min(a, tool_.active.a_max_deg_s2);
   // A zero or broken parameter must not freeze the spindle for ever.
   return std::isfinite(a) && a > 0 ? a : 1.0;
 }
 
 double SpindleAxis::accel_up(double speed_deg_s) const noexcept {
-  return accel_limit(curve_accel_deg_s2(gear().curve, speed_deg_s, gear().a_beschl));
+  return accel_limit(curve_accel_deg_s2(gear().accel_curve, speed_deg_s, gear().accel_deg_s2));
 }
 
 double SpindleAxis::accel_down(double speed_deg_s) const noexcept {
-  return accel_limit(curve_accel_deg_s2(gear().curve, speed_deg_s, gear().a_brems));
+  return accel_limit(curve_accel_deg_s2(gear().accel_curve, speed_deg_s, gear().decel_deg_s2));
 }
 
 double SpindleAxis::min_accel_down(double up_to_deg_s) const noexcept {
@@ -46,13 +41,13 @@ double SpindleAxis::min_accel_down(double up_to_deg_s) const noexcept {
 }
 
 double SpindleAxis::max_speed_deg_s() const noexcept {
-  double v = gear().vb_max > 0 ? gear().vb_max : 1e12;
-  if (tool_.vb_max_rpm > 0) v = std::min(v, rpm_to_deg_s(tool_.vb_max_rpm));
+  double v = gear().speed_max_deg_s > 0 ? gear().speed_max_deg_s : 1e12;
+  if (tool_.active.vb_max_rpm > 0) v = std::min(v, rpm_to_deg_s(tool_.active.vb_max_rpm));
   return v;
 }
 
 double SpindleAxis::override_factor() const noexcept {
-  return ignore_override_ ? 1.0 : override_pct_ / 100.0;
+  return speed_.ignore_override ? 1.0 : speed_.override_pct / 100.0;
 }
 
 double SpindleAxis::limit_speed(double speed_deg_s) const noexcept {
@@ -60,7 +55,7 @@ double SpindleAxis::limit_speed(double speed_deg_s) const noexcept {
   const double s = std::fabs(speed_deg_s);
   if (s == 0 || !std::isfinite(s)) return 0;
   double lim = s;
-  if (tool_.vb_min_rpm > 0) lim = std::max(lim, rpm_to_deg_s(tool_.vb_min_rpm));
+  if (tool_.active.vb_min_rpm > 0) lim = std::max(lim, rpm_to_deg_s(tool_.active.vb_min_rpm));
   lim = std::min(lim, max_speed_deg_s());
   return std::copysign(lim, speed_deg_s);
 }

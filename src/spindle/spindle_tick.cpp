@@ -12,8 +12,8 @@ int sign_of(double v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
 
 void SpindleAxis::tick(double dt) noexcept {
   if (!configured_ || !(dt > 0) || !std::isfinite(dt)) return;
-  const double v_old = v_deg_s_;
-  step_deg_ = 0;
+  const double v_old = set_.vel_deg_s;
+  set_.step_deg = 0;
   switch (mode_) {
     case SpindleMode::stop:
     case SpindleMode::error: ramp_to(0, dt); break;
@@ -22,171 +22,175 @@ void SpindleAxis::tick(double dt) noexcept {
     case SpindleMode::gear_change: tick_position(dt); break;
     case SpindleMode::homing: tick_homing(dt); break;
     case SpindleMode::axis:
-      v_deg_s_ = axis_vel_deg_s_;
-      step_deg_ = axis_step_deg_;
-      axis_step_deg_ = 0;
+      set_.vel_deg_s = axis_.vel_deg_s;
+      set_.step_deg = axis_.step_deg;
+      axis_.step_deg = 0;
       break;
   }
-  a_deg_s2_ = (v_deg_s_ - v_old) / dt;
-  drive_model(step_deg_, dt);
+  set_.accel_deg_s2 = (set_.vel_deg_s - v_old) / dt;
+  drive_model(set_.step_deg, dt);
   update_status();
 }
 
-void SpindleAxis::advance(double step, double) noexcept {
-  pos_deg_ = wrap_modulo(pos_deg_ + step, gear().modulou, gear().moduloo);
-  step_deg_ += step;
+void SpindleAxis::advance(double step_deg) noexcept {
+  set_.pos_deg = gear().wrap(set_.pos_deg + step_deg);
+  set_.step_deg += step_deg;
 }
 
 void SpindleAxis::ramp_to(double target, double dt) noexcept {
-  const double v = v_deg_s_;
+  const double v = set_.vel_deg_s;
   // Reversing goes through standstill: brake to 0 first.
   const double goal = (v != 0 && sign_of(target) == -sign_of(v)) ? 0.0 : target;
   const double diff = goal - v;
   const bool faster = std::fabs(goal) > std::fabs(v);
   const double a = faster ? accel_up(v) : accel_down(v);
   const double dv = std::min(std::fabs(diff), a * dt);
-  v_deg_s_ = v + std::copysign(dv, diff);
-  advance(v_deg_s_ * dt, dt);
+  set_.vel_deg_s = v + std::copysign(dv, diff);
+  advance(set_.vel_deg_s * dt);
 }
 
 void SpindleAxis::tick_rotate(double dt) noexcept {
-  const double target = feedhold_ ? 0.0 : limit_speed(rpm_to_deg_s(programmed_rpm_) * override_factor());
+  const double target =
+      speed_.feedhold ? 0.0 : limit_speed(rpm_to_deg_s(speed_.programmed_rpm) * override_factor());
   ramp_to(target, dt);
   // Above the control limit the encoder signal is not valid: the loop opens
   // and the reference is lost (FCT-S1 2.4.2).
-  const double limit = gear().vb_regelgrenze;
-  if (!p_.open_loop && limit > 0 && std::fabs(v_deg_s_) > limit) {
-    ref_lost_ = true;
-    homed_ = false;
+  const double limit = gear().control_limit_deg_s;
+  if (!cfg_.open_loop && limit > 0 && std::fabs(set_.vel_deg_s) > limit) {
+    ref_.lost = true;
+    ref_.homed = false;
   }
 }
 
 double SpindleAxis::positioning_speed_deg_s() const noexcept {
-  const double f = pos_overridable_ ? override_factor() : 1.0;
-  return feedhold_ ? 0.0 : std::fabs(limit_speed(pos_speed_deg_s_ * f));
+  const double f = pos_.overridable ? override_factor() : 1.0;
+  return speed_.feedhold ? 0.0 : std::fabs(limit_speed(pos_.speed_deg_s * f));
 }
 
 void SpindleAxis::tick_position(double dt) noexcept {
-  if (pos_done_) {
-    v_deg_s_ = 0;
+  if (pos_.done) {
+    set_.vel_deg_s = 0;
     return;
   }
-  if (mode_ == SpindleMode::gear_change && !p_.can_position) {
+  if (mode_ == SpindleMode::gear_change && !cfg_.can_position) {
     ramp_to(0, dt);  // nothing to position: standstill is the change position
-    if (v_deg_s_ == 0) pos_done_ = true;
+    if (set_.vel_deg_s == 0) pos_.done = true;
     return;
   }
-  if (!planned_) {
-    const int req = static_cast<int>(pos_dir_req_);
-    if (req != 0 && v_deg_s_ * req < 0) {  // turning the wrong way: stop first
+  if (!pos_.planned) {
+    const int req = static_cast<int>(pos_.requested_dir);
+    if (req != 0 && set_.vel_deg_s * req < 0) {  // turning the wrong way: stop first
       ramp_to(0, dt);
       return;
     }
     plan_positioning(dt);
-    if (pos_done_) return;
+    if (pos_.done) return;
   }
   step_positioning(dt);
 }
 
 void SpindleAxis::plan_positioning(double dt) noexcept {
-  const double travel = m19_travel_deg(pos_deg_, target_deg_, pos_dir_req_, v_deg_s_, gear().modulou,
-                                       gear().moduloo);
+  const double travel = m19_travel_deg(set_.pos_deg, pos_.target_deg, pos_.requested_dir, set_.vel_deg_s,
+                                       gear().modulo_low_deg, gear().modulo_high_deg);
   int d = sign_of(travel);
-  if (d == 0) d = static_cast<int>(pos_dir_req_);
-  if (d == 0) d = sign_of(v_deg_s_);
-  const double u = std::fabs(v_deg_s_);
-  planned_ = true;
+  if (d == 0) d = static_cast<int>(pos_.requested_dir);
+  if (d == 0) d = sign_of(set_.vel_deg_s);
+  const double u = std::fabs(set_.vel_deg_s);
+  pos_.planned = true;
   if (d == 0) {  // standing on the target already
-    pos_done_ = true;
-    remaining_deg_ = 0;
+    pos_.done = true;
+    pos_.remaining_deg = 0;
     return;
   }
-  pos_dir_ = d;
-  pos_speed_cap_ = std::max(u, positioning_speed_deg_s());
-  pos_accel_ = min_accel_down(pos_speed_cap_);
+  pos_.dir = d;
+  pos_.speed_cap_deg_s = std::max(u, positioning_speed_deg_s());
+  pos_.brake_accel_deg_s2 = min_accel_down(pos_.speed_cap_deg_s);
   // Too close to stop in time: go round once more (or several times).
   double s = std::fabs(travel);
-  const double a = pos_accel_;
+  const double a = pos_.brake_accel_deg_s2;
   const double stop = u * (u + a * dt) / (2 * a);
-  if (s < stop) s += std::ceil((stop - s) / range_deg()) * range_deg();
-  remaining_deg_ = s;
+  const double range = gear().range_deg();
+  if (s < stop) s += std::ceil((stop - s) / range) * range;
+  pos_.remaining_deg = s;
 }
 
 void SpindleAxis::step_positioning(double dt) noexcept {
-  const double s = remaining_deg_;
-  const double u = std::max(0.0, v_deg_s_ * pos_dir_);
+  const double s = pos_.remaining_deg;
+  const double u = std::max(0.0, set_.vel_deg_s * pos_.dir);
   if (s <= 0) {  // arrived in the last cycle; the set speed returns to 0
-    v_deg_s_ = 0;
-    pos_done_ = true;
+    set_.vel_deg_s = 0;
+    pos_.done = true;
     return;
   }
-  const double a = pos_accel_;
-  const double vmax = std::min(positioning_speed_deg_s(), pos_speed_cap_);
+  const double a = pos_.brake_accel_deg_s2;
+  const double vmax = std::min(positioning_speed_deg_s(), pos_.speed_cap_deg_s);
   const double up = u < vmax ? std::min(u + accel_up(u) * dt, vmax) : std::max(u - a * dt, vmax);
   // Highest speed from which braking with a, one cycle at a time, ends
   // exactly on the target: s = v (v + a dt) / (2 a).
   const double brake = a * dt * (std::sqrt(0.25 + 2 * s / (a * dt * dt)) - 0.5);
   const double nu = std::max({std::min(up, brake), u - a * dt, 0.0});
-  v_deg_s_ = pos_dir_ * nu;
+  set_.vel_deg_s = pos_.dir * nu;
   if (nu * dt >= s) {  // the last step lands on the target, never beyond
-    advance(pos_dir_ * s, dt);
-    remaining_deg_ = 0;
+    advance(pos_.dir * s);
+    pos_.remaining_deg = 0;
   } else {
-    advance(pos_dir_ * nu * dt, dt);
-    remaining_deg_ = s - nu * dt;
+    advance(pos_.dir * nu * dt);
+    pos_.remaining_deg = s - nu * dt;
   }
 }
 
 double SpindleAxis::homing_speed_deg_s() const noexcept {
-  double v = std::min(gear().vb_eilgang > 0 ? gear().vb_eilgang : 1.0, max_speed_deg_s());
-  if (gear().vb_regelgrenze > 0) v = std::min(v, gear().vb_regelgrenze);  // the encoder must be valid
+  const double rapid = gear().rapid_speed_deg_s;
+  double v = std::min(rapid > 0 ? rapid : 1.0, max_speed_deg_s());
+  const double limit = gear().control_limit_deg_s;
+  if (limit > 0) v = std::min(v, limit);  // the encoder must be valid
   return v;
 }
 
 bool SpindleAxis::crossed_mark(double from_deg, double step_deg) const noexcept {
   if (step_deg == 0) return false;
-  const double mark = wrap_modulo(gear().pos_refpkt, gear().modulou, gear().moduloo);
-  const double r = range_deg();
+  const double mark = gear().wrap(gear().reference_pos_deg);
+  const double r = gear().range_deg();
   const double ahead = step_deg > 0 ? wrap_modulo(mark - from_deg, 0, r) : wrap_modulo(from_deg - mark, 0, r);
   return ahead <= std::fabs(step_deg);
 }
 
 void SpindleAxis::tick_homing(double dt) noexcept {
-  if (mark_found_) {  // reference set: position onto pos_refpkt
+  if (homing_.mark_found) {  // reference set: position onto the reference position
     tick_position(dt);
-    if (pos_done_) {
+    if (pos_.done) {
       mode_ = SpindleMode::stop;
-      pos_done_ = planned_ = false;
+      pos_.done = pos_.planned = false;
     }
     return;
   }
-  const double from = pos_deg_;
-  const double v_old = std::fabs(v_deg_s_);
-  ramp_to(feedhold_ ? 0.0 : home_dir_ * homing_speed_deg_s(), dt);
-  const double limit = gear().vb_regelgrenze;
-  const bool encoder_valid = limit <= 0 || std::max(v_old, std::fabs(v_deg_s_)) <= limit;
-  if (encoder_valid && step_deg_ * home_dir_ > 0 && crossed_mark(from, step_deg_)) on_reference(dt);
+  const double from = set_.pos_deg;
+  const double v_old = std::fabs(set_.vel_deg_s);
+  ramp_to(speed_.feedhold ? 0.0 : homing_.dir * homing_speed_deg_s(), dt);
+  const double limit = gear().control_limit_deg_s;
+  const bool encoder_valid = limit <= 0 || std::max(v_old, std::fabs(set_.vel_deg_s)) <= limit;
+  if (encoder_valid && set_.step_deg * homing_.dir > 0 && crossed_mark(from, set_.step_deg)) on_reference();
 }
 
-void SpindleAxis::on_reference(double) noexcept {
-  // The simulated zero mark sits at pos_refpkt, so the set position needs
-  // no jump; the reference is simply known from now on.
-  homed_ = true;
-  ref_lost_ = false;
-  mark_found_ = true;
-  switch (after_home_) {
-    case After::target:
-      begin_positioning(SpindleMode::position, home_target_deg_, home_target_dir_, home_target_speed_,
-                        home_target_overridable_);
+void SpindleAxis::on_reference() noexcept {
+  // The simulated zero mark sits at the reference position, so the set
+  // position needs no jump; the reference is simply known from now on.
+  ref_.homed = true;
+  ref_.lost = false;
+  homing_.mark_found = true;
+  switch (homing_.after) {
+    case AfterHoming::go_to_target:
+      begin_positioning(SpindleMode::position, homing_.target_deg, homing_.target_dir,
+                        homing_.target_speed_deg_s, homing_.target_overridable);
       break;
-    case After::stop: mode_ = SpindleMode::stop; break;
-    case After::refpkt:
-    case After::none:
-      begin_positioning(SpindleMode::homing, gear().pos_refpkt, static_cast<Direction>(home_dir_),
+    case AfterHoming::stop: mode_ = SpindleMode::stop; break;
+    case AfterHoming::go_to_reference:
+    case AfterHoming::none:
+      begin_positioning(SpindleMode::homing, gear().reference_pos_deg, static_cast<Direction>(homing_.dir),
                         homing_speed_deg_s(), false);
       break;
   }
-  after_home_ = After::none;
+  homing_.after = AfterHoming::none;
 }
 
 }  // namespace nck::spindle

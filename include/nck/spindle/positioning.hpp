@@ -15,6 +15,11 @@ enum class Direction : std::int8_t { none = 0, positive = 1, negative = -1 };  /
 // pos wrapped into [lo, hi); returns lo when the range is empty or pos not finite. // rt
 double wrap_modulo(double pos_deg, double lo_deg, double hi_deg) noexcept;
 
+// False when a preferred direction is set and `dir` is the other one. // rt
+constexpr bool direction_allowed(Direction preferred, Direction dir) noexcept {
+  return preferred == Direction::none || dir == Direction::none || dir == preferred;
+}
+
 // Error 60254 when a preferred direction is configured (vorz_richtung) and
 // `dir` is the other one; Direction::none always passes. // rt
 std::expected<void, ErrorId> check_preferred_direction(const config::AxisConfig& ax, Direction dir) noexcept;
@@ -30,9 +35,9 @@ Direction preferred_direction(const config::AxisConfig& ax) noexcept;
 double m19_travel_deg(double current_deg, double target_deg, Direction programmed,
                       double current_speed_deg_s, double lo_deg, double hi_deg) noexcept;
 
-// Speed reached: |act - cmd| <= vb_prozent * 0.1 % * |cmd| (P-AXIS-00217,
+// Speed reached: |act - cmd| <= tolerance_permille * 0.1 % * |cmd| (vb_prozent, P-AXIS-00217,
 // default 100 = +-10 %). Signed, so M4 speed never "reaches" an M3 command. // rt
-bool speed_reached(double act_rpm, double cmd_rpm, double vb_prozent_permille) noexcept;
+bool speed_reached(double act_rpm, double cmd_rpm, double tolerance_permille) noexcept;
 
 // Zero speed: |act| strictly below vb_min_null (P-AXIS-00216, deg/s). // rt
 bool zero_speed(double act_deg_s, double vb_min_null_deg_s) noexcept;

@@ -134,8 +134,8 @@ void check_m19(SpindleAxis& s, Checker& chk, double target, Direction dir, doubl
     last_dist = st.distance_to_go_deg;
   }
   ASSERT_TRUE(s.status().in_position) << "never arrived";
-  const auto& g = s.params().gears[0];
-  EXPECT_NEAR(s.status().set_pos_deg, wrap_modulo(target, g.modulou, g.moduloo), 1e-7);
+  const auto& g = s.config().gears[0];
+  EXPECT_NEAR(s.status().set_pos_deg, g.wrap(target), 1e-7);
 }
 
 TEST(SpindleProperty, LimitsTargetsAndNoNaN) {

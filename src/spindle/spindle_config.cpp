@@ -1,0 +1,57 @@
+// The config -> spindle conversion: the only place that reads the German
+// list names of an axis for the spindle interpolator.
+#include "nck/spindle/spindle_config.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace nck::spindle {
+
+GearConfig GearConfig::from(const config::GearStage& g) noexcept {
+  GearConfig c;
+  c.accel_deg_s2 = g.a_beschl;
+  c.decel_deg_s2 = g.a_brems;
+  c.accel_max_deg_s2 = g.a_max;
+  c.speed_max_deg_s = g.vb_max;
+  c.rapid_speed_deg_s = g.vb_eilgang;
+  c.kv_1_s = g.kv_1_s;
+  c.modulo_low_deg = g.modulou;
+  c.modulo_high_deg = g.moduloo;
+  c.zero_speed_deg_s = g.vb_min_null;
+  c.control_limit_deg_s = g.vb_regelgrenze;
+  c.gear_change_pos_deg = g.getr_schalt_pos;
+  c.reference_pos_deg = g.pos_refpkt;
+  c.accel_curve = g.curve;
+  return c;
+}
+
+double GearConfig::range_deg() const noexcept {
+  const double r = modulo_high_deg - modulo_low_deg;
+  return r > 0 && std::isfinite(r) ? r : 360.0;
+}
+
+SpindleConfig SpindleConfig::from(const config::AxisConfig* axis, const config::ChannelSpindle& sp,
+                                  const config::SimConfig& sim, double cycle_s) {
+  SpindleConfig c;
+  c.plc_control = sp.plc_control;
+  c.cycle_s = cycle_s;
+  c.speed_time_constant_s = std::max(0.0, sim.drive_speed_time_constant_s);
+  // Without an axis list the gear stages keep the machine model's defaults.
+  const auto stages = axis != nullptr ? axis->gears : decltype(axis->gears){};
+  std::ranges::transform(stages, c.gears.begin(), GearConfig::from);
+  if (axis == nullptr) return c;
+  c.initial_gear = std::clamp<std::uint32_t>(axis->initial_gear_stage, 1, config::kMaxGearStages);
+  c.preferred_direction = spindle::preferred_direction(*axis);
+  c.speed_reached_tolerance_permille = axis->vb_prozent_permille;
+  c.keep_running_on_reset = axis->no_stop_by_channel_reset;
+  c.open_loop = axis->is_speed_controlled();
+  // Of the open-loop modes only the one with position feedback knows where
+  // the spindle is; the others (and the seed's sensorless example) cannot
+  // position or home.
+  c.can_position = !c.open_loop || axis->operation_mode == "OPEN_POSITION_LOOP_POS_FEEDBACK";
+  c.feedforward_ta_s = std::max(0.0, axis->feedforward_ta_s);
+  c.drive_speed_scaling = SpeedScaling{axis->v_reso_num, axis->v_reso_denom, axis->v_time_base};
+  return c;
+}
+
+}  // namespace nck::spindle
