@@ -101,7 +101,7 @@ ListText read_list_text(std::string_view text, std::string file, Diagnostics& di
     if (nl == std::string_view::npos) break;
     pos = nl + 1;
   }
-  if (out.lines.empty())  // a truncated or wrong file, most likely: say so
+  if (out.lines.empty() && local.empty())  // a truncated or wrong file, most likely: say so
     local.add(ErrorId::ConfigEmptyList, SourceLoc{out.file, 1, 0},
               "the list file has no parameter lines; every parameter keeps its default");
   diags.append(local);
