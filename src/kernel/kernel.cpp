@@ -94,7 +94,7 @@ void Kernel::push_end_without_m30(std::size_t ch, std::uint16_t file_id, std::ui
 }
 
 bool Kernel::needs_sync(const nc::Block& b) {
-  return std::find(b.g_nonmodal.begin(), b.g_nonmodal.end(), 100) != b.g_nonmodal.end() ||
+  return b.g_nonmodal.has(nc::GCode::g100) ||
          (b.hash && std::holds_alternative<nc::GetManualOffsets>(*b.hash));
 }
 

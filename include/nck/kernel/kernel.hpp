@@ -34,8 +34,8 @@ struct KernelOptions {
 
 // What a channel knows about its programmed state, for --final.
 struct ChannelSnapshot {
-  std::array<double, config::kMaxPathAxes> axis_mcs{};
-  std::array<double, config::kMaxPathAxes> axis_pcs{};
+  AxisArray axis_mcs{};
+  AxisArray axis_pcs{};
   // every active offset: kind -> per-axis values
   std::vector<std::pair<std::string, std::vector<std::pair<std::string, double>>>> offsets;
   nc::ModalState modal;

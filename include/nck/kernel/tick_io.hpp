@@ -24,7 +24,7 @@ struct TickInput {
 enum class ChannelStatus : std::uint8_t { idle, running, waiting, ended, aborted };
 
 struct ChannelOutput {
-  std::array<double, config::kMaxPathAxes> axis_mcs{};  // set points, mm / deg
+  AxisArray axis_mcs{};  // set points, mm / deg
   double path_velocity_mm_s = 0;
   double dist_offset_mm = 0;  // 3D distance control's offset on the tool axis (0 while inactive)
   ChannelStatus status = ChannelStatus::idle;
