@@ -6,7 +6,7 @@
 namespace nck::config::detail {
 namespace {
 
-using Row = std::array<double, kMaxPathAxes>;
+using Row = AxisArray;
 
 // Groups of "<prefix>[i].achse[j].<field>" as rows of axis values.
 std::vector<Row> read_groups(const ParamList& l, std::string_view prefix, std::string_view field) {
@@ -60,7 +60,7 @@ ZeroOffsets build_zero(const ParamList& l) {
   z.versch.resize(groups, Row{});
   z.inaktiv.resize(groups);
   for (std::size_t i = 0; i < inactive.size(); ++i)
-    for (std::size_t j = 0; j < kMaxPathAxes; ++j) z.inaktiv[i][j] = inactive[i][j] != 0;
+    for (std::size_t j = 0; j < kMaxAxes; ++j) z.inaktiv[i][j] = inactive[i][j] != 0;
   return z;
 }
 

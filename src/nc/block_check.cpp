@@ -1,30 +1,39 @@
 // Stage 2 of a block: check the combination of words against the modal
 // state. Reads only; the first violation becomes the block's error.
 #include <cmath>
+#include <limits>
+#include <type_traits>
 #include <fmt/format.h>
 
 #include "block_words.hpp"
 
 namespace nck::nc::detail {
 
-std::optional<GGroup> g_group(int code) {
+std::optional<GGroup> g_group(GCode code) {
+  using enum GCode;
   switch (code) {
-    case 0: case 1: case 2: case 3: case 33: case 63: case 331: case 332: return GGroup::motion;
-    case 17: case 18: case 19: return GGroup::plane;
-    case 90: case 91: return GGroup::dim;
-    case 93: case 94: case 95: return GGroup::feed;
-    case 96: case 97: return GGroup::speed;
-    case 40: case 41: case 42: return GGroup::comp;
-    case 51: case 52: return GGroup::diam;
-    case 70: case 71: return GGroup::unit;
-    case 53: case 54: case 55: case 56: case 57: case 58: case 59: case 159: return GGroup::zero;
-    case 161: case 162: return GGroup::center;
-    case 201: case 202: return GGroup::manual;
-    case 4: case 74: case 92: case 100: case 101: case 102: case 106: case 112: case 130:
-    case 135: case 136: case 137: case 167: case 196: case 200:
-      return GGroup::nonmodal;
-    default: return std::nullopt;
+    case g0: case g1: case g2: case g3: case g33: case g63: case g331: case g332: return GGroup::motion;
+    case g17: case g18: case g19: return GGroup::plane;
+    case g90: case g91: return GGroup::dim;
+    case g93: case g94: case g95: return GGroup::feed;
+    case g96: case g97: return GGroup::speed;
+    case g40: case g41: case g42: return GGroup::comp;
+    case g51: case g52: return GGroup::diam;
+    case g70: case g71: return GGroup::unit;
+    case g53: case g54: case g55: case g56: case g57: case g58: case g59: case g159: return GGroup::zero;
+    case g161: case g162: return GGroup::center;
+    case g201: case g202: return GGroup::manual;
+    default: break;  // the non-modal codes are listed once, in GCodeSet
   }
+  if (GCodeSet::is_nonmodal(code)) return GGroup::nonmodal;
+  return std::nullopt;
+}
+
+std::optional<GCode> to_gcode(int number) {
+  if (number < 0 || number > std::numeric_limits<std::underlying_type_t<GCode>>::max()) return std::nullopt;
+  const auto code = static_cast<GCode>(number);
+  if (!g_group(code)) return std::nullopt;  // a number between the enumerators
+  return code;
 }
 
 namespace {
@@ -41,10 +50,10 @@ bool check_groups(const Words& w, BlockCtx& b) {
       if (g_group(w.g[j].code) == gi)
         return fail(b, ErrorId::NcModalConflict, w.g[j].pos,
                     fmt::format("G{} and G{} belong to the same group; program one of them",
-                                w.g[i].code, w.g[j].code));
+                                g_number(w.g[i].code), g_number(w.g[j].code)));
   }
   for (const auto& g : w.g) {
-    if (g.code != 159) continue;
+    if (g.code != GCode::g159) continue;
     double r = std::round(g.value);
     if (r < 0 || std::fabs(r - g.value) > 1e-9)
       return fail(b, ErrorId::NcZeroOffsetIndexInvalid, g.pos,
@@ -56,19 +65,16 @@ bool check_groups(const Words& w, BlockCtx& b) {
   return true;
 }
 
-// The first main axis of the plane (G17 X, G18 Z, G19 Y by channel index).
-int first_main_axis(Plane p) { return p == Plane::g18 ? 2 : p == Plane::g19 ? 1 : 0; }
-
 bool check_dwell(const Words& w, BlockCtx& b, const ModalState& modal) {
-  if (!w.has_g(4)) {
+  if (!w.has_g(GCode::g4)) {
     if (w.time_s.v && w.word_count > 0)
       return fail(b, ErrorId::NcDwellNotAlone, w.time_s.pos, "#TIME must be alone in its block");
     return true;
   }
   std::uint32_t gpos = 0;
   for (const auto& g : w.g)
-    if (g.code == 4) gpos = g.pos;
-  int axis = first_main_axis(modal.plane);
+    if (g.code == GCode::g4) gpos = g.pos;
+  const int axis = plane_axes(modal.plane).first;  // G4 reads the plane's first main axis
   int values = (w.dwell_direct.v ? 1 : 0) + (w.s.v ? 1 : 0) + (w.axes[axis] ? 1 : 0);
   if (values > 1)
     return fail(b, ErrorId::NcDwellTwoValues, gpos, "G4 has more than one dwell value; program one");
@@ -105,7 +111,7 @@ bool check_spindle_m(const Words& w, BlockCtx& b, const ModalState& after) {
   }
   if (m19 && dir && dir->code == 5)
     return fail(b, ErrorId::NcM19WithM5, dir->pos, "M19 cannot be combined with M5");
-  bool g74 = w.has_g(74);
+  bool g74 = w.has_g(GCode::g74);
   if (g74 && gear)
     return fail(b, ErrorId::NcGearChangeWithG74, gear->pos, "gear change and G74 homing in one block");
   bool bracket_m = false;
@@ -122,7 +128,7 @@ bool check_spindle_m(const Words& w, BlockCtx& b, const ModalState& after) {
   // DIN and spindle syntax for the main spindle in one block.
   bool din = dir || m19 || gear || w.s.v || w.s_pos.v || w.s_offset.v || w.s_pos_shift.v;
   for (const auto& sc : w.brackets)
-    if (din && sc.target == b.main_target && !w.has_g(4))
+    if (din && sc.target == b.main_target && !w.has_g(GCode::g4))
       return fail(b, ErrorId::NcSpindleTwice, sc.column, "the main spindle is programmed twice (DIN and S[..])");
   return true;
 }
@@ -136,13 +142,12 @@ bool check_values(const Words& w, BlockCtx& b, const ModalState& before, const M
   if (w.r.v && (w.ijk[0].v || w.ijk[1].v || w.ijk[2].v) && after.motion != Motion::thread &&
       after.motion != Motion::tap_rigid && after.motion != Motion::tap_retract)
     return fail(b, ErrorId::NcRadiusWithCenter, w.r.pos, "R and I/J/K in one circle block: program one");
-  bool g63_new = w.has_g(63);
+  bool g63_new = w.has_g(GCode::g63);
   if (g63_new && after.feed_mode == FeedMode::g95)
     return fail(b, ErrorId::NcTapWithG95, w.g[0].pos, "G63 needs G94: deselect G95 first");
   if (g63_new && after.speed_mode == SpeedMode::g96)
     return fail(b, ErrorId::NcTapWithG96, w.g[0].pos, "G63 needs G97: deselect G96 first");
-  bool special_s = w.has_g(4) || w.has_g(74) || w.has_g(112) || w.has_g(196) || w.has_g(130) ||
-                   w.has_g(136) || w.has_g(135) || w.has_g(137);
+  const bool special_s = w.has_any_g(kGCodesTakingS);
   if (w.s.v && !special_s) {
     bool tap = after.motion == Motion::tap;
     if (tap && *w.s.v == 0)
@@ -155,7 +160,7 @@ bool check_values(const Words& w, BlockCtx& b, const ModalState& before, const M
                   fmt::format("S{} is negative; only G63 tapping takes a negative S (retract)", *w.s.v));
     }
   }
-  if (w.has_g(196) && (!w.s.v || *w.s.v <= 0))
+  if (w.has_g(GCode::g196) && (!w.s.v || *w.s.v <= 0))
     return fail(b, ErrorId::NcG196MaxNotPositive, w.s.v ? w.s.pos : 0,
                 "G196 needs S<max rpm> greater than 0");
   // Thread pitch: G33 needs a pitch when selected, G331 a K.
@@ -163,22 +168,22 @@ bool check_values(const Words& w, BlockCtx& b, const ModalState& before, const M
   if (after.motion == Motion::thread) {
     for (const auto& p : w.ijk)
       if (p.v && *p.v == 0) return fail(b, ErrorId::NcThreadPitchZero, p.pos, "G33 pitch must not be 0");
-    if (!ijk && before.thread_pitch_mm == 0 && w.has_g(33))
+    if (!ijk && before.thread_pitch_mm == 0 && w.has_g(GCode::g33))
       return fail(b, ErrorId::NcThreadPitchZero, w.g[0].pos, "G33 needs a pitch: program I, J or K");
   }
   if (after.motion == Motion::tap_rigid || after.motion == Motion::tap_retract) {
     for (const auto& p : w.ijk)
       if (p.v && *p.v == 0) return fail(b, ErrorId::NcThreadPitchZero, p.pos, "G331 pitch must not be 0");
-    if (!ijk && before.tap_pitch_mm == 0 && w.has_g(331))
+    if (!ijk && before.tap_pitch_mm == 0 && w.has_g(GCode::g331))
       return fail(b, ErrorId::NcThreadPitchZero, w.g[0].pos, "G331 needs the pitch K");
   }
-  if (w.has_g(201) && w.axis_count == 0)
+  if (w.has_g(GCode::g201) && w.axis_count == 0)
     return fail(b, ErrorId::NcG201WithoutAxis, w.g[0].pos, "G201 needs at least one axis, e.g. G201 X1");
   if (w.hash && (std::holds_alternative<PSet>(*w.hash) || std::holds_alternative<PReset>(*w.hash))) {
     for (const auto& g : w.g)
       if (g_group(g.code) == GGroup::motion)
         return fail(b, ErrorId::NcPsetWithPathCondition, g.pos,
-                    fmt::format("G{} cannot share a block with #PSET/#PRESET", g.code));
+                    fmt::format("G{} cannot share a block with #PSET/#PRESET", g_number(g.code)));
     if (std::holds_alternative<PSet>(*w.hash) && w.axis_count == 0)
       return fail(b, ErrorId::NcHashArguments, w.hash_pos, "#PSET needs at least one axis value, e.g. #PSET X20");
   }

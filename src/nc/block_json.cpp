@@ -174,7 +174,11 @@ json to_json(const Block& b, const Decoder& d) {
     if (b.ijk[i]) j[ijk[i]] = *b.ijk[i];
   put(j, "R", b.r);
   put(j, "F", b.f);
-  if (!b.g_nonmodal.empty()) j["g_nonmodal"] = b.g_nonmodal;
+  if (!b.g_nonmodal.empty()) {
+    json g = json::array();  // G numbers, ascending
+    for (GCode code : b.g_nonmodal) g.push_back(g_number(code));
+    j["g_nonmodal"] = std::move(g);
+  }
   if (!b.m.empty()) j["m"] = b.m;
   if (!b.h.empty()) j["h"] = b.h;
   put(j, "T", b.t);

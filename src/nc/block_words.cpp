@@ -108,7 +108,7 @@ bool parse_letter_word(Cursor& c, BlockCtx& b, Words& w) {
     }
     if (name == "G159") {
       if (!word_value(c, b, v, 'G')) return false;
-      w.g.push_back(GWord{159, static_cast<std::uint32_t>(pos), v});
+      w.g.push_back(GWord{GCode::g159, static_cast<std::uint32_t>(pos), v});
       ++w.word_count;
       return true;
     }
@@ -144,10 +144,11 @@ bool parse_letter_word(Cursor& c, BlockCtx& b, Words& w) {
       int code = 0;
       if (!integer_code(v, code))
         return b.x.err.fail(ErrorId::NcUnknownGCode, pos, fmt::format("G{} is not a G code", v));
-      if (!g_group(code))
+      const std::optional<GCode> g = to_gcode(code);
+      if (!g)
         return b.x.err.fail(ErrorId::NcUnknownGCode, pos,
                             fmt::format("G{} is unknown to nck; see docs/nc-language.md", code));
-      if (!w.g.push_back(GWord{code, static_cast<std::uint32_t>(pos), 0}))
+      if (!w.g.push_back(GWord{*g, static_cast<std::uint32_t>(pos), 0}))
         return b.x.err.fail(ErrorId::NcModalConflict, pos, "too many G codes in one block");
       ++w.word_count;
       return true;
@@ -200,7 +201,7 @@ bool parse_words(Cursor& c, BlockCtx& b, Words& w) {
       exclusive_hash = exclusive;
       continue;
     }
-    bool dwell_slot = w.has_g(4) && !w.dwell_direct.v;
+    bool dwell_slot = w.has_g(GCode::g4) && !w.dwell_direct.v;
     if (dwell_slot && (is_digit(ch) || ch == '.' || ch == '[' || ch == '-' || ch == '+' ||
                        (looks_like_lvalue(c) && c.s.find('=', c.pos) == std::string_view::npos))) {
       double v = 0;

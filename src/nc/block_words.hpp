@@ -21,7 +21,7 @@
 namespace nck::nc::detail {
 
 struct GWord {
-  int code = 0;
+  GCode code = GCode::g0;
   std::uint32_t pos = 0;
   double value = 0;  // G159=<value>
 };
@@ -64,9 +64,14 @@ struct Words {
   int word_count = 0;  // words other than N and the # command itself
 
   void clear();
-  bool has_g(int code) const {
+  bool has_g(GCode code) const {
     for (const auto& x : g)
       if (x.code == code) return true;
+    return false;
+  }
+  bool has_any_g(GCodeSet codes) const {
+    for (const auto& x : g)
+      if (codes.has(x.code)) return true;
     return false;
   }
   const MWord* find_m(int code) const {
@@ -75,6 +80,11 @@ struct Words {
     return nullptr;
   }
 };
+
+// Non-modal G functions whose S word is their value (dwell revolutions,
+// homing, gear stage, limits, ...), not a spindle speed.
+inline constexpr GCodeSet kGCodesTakingS{GCode::g4,   GCode::g74,  GCode::g112, GCode::g130,
+                                         GCode::g135, GCode::g136, GCode::g137, GCode::g196};
 
 // Decoder state the stages read (and apply writes).
 struct BlockCtx {
@@ -98,10 +108,15 @@ bool check_words(const Words& w, BlockCtx& b, const ModalState& modal);
 // Applies to modal/variables and fills out. Returns false only on a write
 // error (e.g. an undeclared variable).
 bool apply_words(Words& w, BlockCtx& b, ModalState& modal, Block& out);
+// Under G70 (inch_to_mm.cpp): the words' lengths, then the kernel writes, to mm.
+void words_to_mm(Words& w, const ModalState& modal);
+void kernel_writes_to_mm(std::vector<VariableWrite>& writes);
 
 // G code groups (block_check.cpp).
 enum class GGroup : std::uint8_t { motion, plane, dim, feed, speed, comp, diam, unit, zero,
                                    center, manual, nonmodal };
-std::optional<GGroup> g_group(int code);
+std::optional<GGroup> g_group(GCode code);
+// The import stage's only integer-to-G step: nullopt for a number nck does not know.
+std::optional<GCode> to_gcode(int number);
 
 }  // namespace nck::nc::detail

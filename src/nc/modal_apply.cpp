@@ -9,41 +9,44 @@ namespace nck::nc::detail {
 
 namespace {
 
-void apply_g(int code, double value, ModalState& m) {
+void apply_g(GCode code, double value, ModalState& m) {
+  using enum GCode;
   switch (code) {
-    case 0: m.motion = Motion::rapid; break;
-    case 1: m.motion = Motion::linear; break;
-    case 2: m.motion = Motion::cw; break;
-    case 3: m.motion = Motion::ccw; break;
-    case 33: m.motion = Motion::thread; break;
-    case 63: m.motion = Motion::tap; break;
-    case 331: m.motion = Motion::tap_rigid; break;
-    case 332: m.motion = Motion::tap_retract; break;
-    case 17: m.plane = Plane::g17; break;
-    case 18: m.plane = Plane::g18; break;
-    case 19: m.plane = Plane::g19; break;
-    case 90: m.absolute = true; break;
-    case 91: m.absolute = false; break;
-    case 93: m.feed_mode = FeedMode::g93; break;
-    case 94: m.feed_mode = FeedMode::g94; break;
-    case 95: m.feed_mode = FeedMode::g95; break;
-    case 96: m.speed_mode = SpeedMode::g96; break;
-    case 97: m.speed_mode = SpeedMode::g97; break;
-    case 40: m.radius_comp = RadiusComp::g40; break;
-    case 41: m.radius_comp = RadiusComp::g41; break;
-    case 42: m.radius_comp = RadiusComp::g42; break;
-    case 51: m.diameter = true; break;
-    case 52: m.diameter = false; break;
-    case 70: m.inch = true; break;
-    case 71: m.inch = false; break;
-    case 159: m.zero_offset = static_cast<int>(std::lround(value)); break;
-    case 161: m.circle_center_absolute = true; break;
-    case 162: m.circle_center_absolute = false; break;
-    case 201: m.manual_mode = true; break;
-    case 202: m.manual_mode = false; break;
-    default:
-      if (code >= 53 && code <= 59) m.zero_offset = code - 53;
+    case g0: m.motion = Motion::rapid; break;
+    case g1: m.motion = Motion::linear; break;
+    case g2: m.motion = Motion::cw; break;
+    case g3: m.motion = Motion::ccw; break;
+    case g33: m.motion = Motion::thread; break;
+    case g63: m.motion = Motion::tap; break;
+    case g331: m.motion = Motion::tap_rigid; break;
+    case g332: m.motion = Motion::tap_retract; break;
+    case g17: m.plane = Plane::g17; break;
+    case g18: m.plane = Plane::g18; break;
+    case g19: m.plane = Plane::g19; break;
+    case g90: m.absolute = true; break;
+    case g91: m.absolute = false; break;
+    case g93: m.feed_mode = FeedMode::g93; break;
+    case g94: m.feed_mode = FeedMode::g94; break;
+    case g95: m.feed_mode = FeedMode::g95; break;
+    case g96: m.speed_mode = SpeedMode::g96; break;
+    case g97: m.speed_mode = SpeedMode::g97; break;
+    case g40: m.radius_comp = RadiusComp::g40; break;
+    case g41: m.radius_comp = RadiusComp::g41; break;
+    case g42: m.radius_comp = RadiusComp::g42; break;
+    case g51: m.diameter = true; break;
+    case g52: m.diameter = false; break;
+    case g70: m.inch = true; break;
+    case g71: m.inch = false; break;
+    // G53 selects entry 0 of the zero-offset table, G54..G59 entries 1..6.
+    case g53: case g54: case g55: case g56: case g57: case g58: case g59:
+      m.zero_offset = g_number(code) - g_number(g53);
       break;
+    case g159: m.zero_offset = static_cast<int>(std::lround(value)); break;
+    case g161: m.circle_center_absolute = true; break;
+    case g162: m.circle_center_absolute = false; break;
+    case g201: m.manual_mode = true; break;
+    case g202: m.manual_mode = false; break;
+    default: break;  // non-modal codes leave the modal state alone
   }
 }
 
@@ -79,20 +82,28 @@ std::optional<SpindleCommand> main_din(const Words& w, BlockCtx& b, const ModalS
   if (w.s.v) {
     double s = *w.s.v;
     any = true;
-    if (w.has_g(4)) { out.dwell_revs = s; any = sc.m != SpindleM::none; }
-    else if (w.has_g(196)) { any = sc.m != SpindleM::none || sc.gear_stage.has_value(); }
-    else if (w.has_g(74)) sc.g74 = true;
-    else if (w.has_g(112)) sc.g112_stage = static_cast<int>(std::lround(s));
-    else if (w.has_g(130)) sc.g130_pct = s;
-    else if (w.has_g(136)) sc.g136_pct = s;
-    else if (w.has_g(135)) sc.g135 = true;
-    else if (w.has_g(137)) sc.g137 = true;
+    if (w.has_g(GCode::g4)) { out.dwell_revs = s; any = sc.m != SpindleM::none; }
+    else if (w.has_g(GCode::g196)) { any = sc.m != SpindleM::none || sc.gear_stage.has_value(); }
+    else if (w.has_g(GCode::g74)) sc.g74 = true;
+    else if (w.has_g(GCode::g112)) sc.g112_stage = static_cast<int>(std::lround(s));
+    else if (w.has_g(GCode::g130)) sc.g130_pct = s;
+    else if (w.has_g(GCode::g136)) sc.g136_pct = s;
+    else if (w.has_g(GCode::g135)) sc.g135 = true;
+    else if (w.has_g(GCode::g137)) sc.g137 = true;
     else if (m.speed_mode == SpeedMode::g96) any = sc.m != SpindleM::none || sc.gear_stage.has_value() || sc.pos_deg;
     else sc.rev_rpm = s;
   }
-  if (w.has_g(167) && w.s.v) sc.g167 = true;
+  if (w.has_g(GCode::g167) && w.s.v) sc.g167 = true;
   if (!any) return std::nullopt;
   return sc;
+}
+
+// The channel spindle `sc` addresses, as an index into cfg.spindle_names.
+std::optional<std::uint8_t> spindle_index(const DecoderConfig& cfg, const SpindleCommand& sc) {
+  const std::string& want = sc.target.empty() ? sc.name : sc.target;
+  for (std::size_t i = 0; i < cfg.spindle_names.size() && i <= UINT8_MAX; ++i)
+    if (iequals(cfg.spindle_names[i], want)) return static_cast<std::uint8_t>(i);
+  return std::nullopt;
 }
 
 bool apply_assignments(Words& w, BlockCtx& b, Block& out) {
@@ -128,8 +139,12 @@ bool apply_words(Words& w, BlockCtx& b, ModalState& modal, Block& out) {
   if (!apply_assignments(w, b, out)) return false;
   for (const auto& g : w.g) {
     apply_g(g.code, g.value, modal);
-    if (g_group(g.code) == GGroup::nonmodal) out.g_nonmodal.push_back(g.code);
-    if (g.code == 201 || g.code == 202) out.manual_g = g.code;
+    out.g_nonmodal.add(g.code);  // ignores the modal ones
+    if (g_group(g.code) == GGroup::manual) out.manual_g = g.code;
+  }
+  if (modal.inch) {  // from here on every length is in mm
+    words_to_mm(w, modal);
+    kernel_writes_to_mm(out.kernel_writes);
   }
   if (w.n.v) out.n = *w.n.v;
   if (w.f.v) {
@@ -151,14 +166,14 @@ bool apply_words(Words& w, BlockCtx& b, ModalState& modal, Block& out) {
   }
   if (w.t.v) out.t = static_cast<std::int64_t>(*w.t.v);
   if (w.d.v) { out.d = static_cast<std::int64_t>(*w.d.v); modal.d = *out.d; }
-  if (w.s.v && !w.has_g(4)) {
-    if (w.has_g(196)) modal.max_speed_rpm = *w.s.v;
-    else if (modal.speed_mode == SpeedMode::g96 && !w.has_g(74) && !w.has_g(112)) modal.css_m_min = *w.s.v;
+  if (w.s.v && !w.has_g(GCode::g4)) {
+    if (w.has_g(GCode::g196)) modal.max_speed_rpm = *w.s.v;
+    else if (modal.speed_mode == SpeedMode::g96 && !w.has_g(GCode::g74) && !w.has_g(GCode::g112)) modal.css_m_min = *w.s.v;
   }
   // Axis words: a G4 dwell axis and #PSET values are not motion.
   int dwell_axis = -1;
-  if (w.has_g(4)) {
-    dwell_axis = modal.plane == Plane::g18 ? 2 : modal.plane == Plane::g19 ? 1 : 0;
+  if (w.has_g(GCode::g4)) {
+    dwell_axis = plane_axes(modal.plane).first;
     if (w.dwell_direct.v) out.dwell_s = w.dwell_direct.v;
     else if (w.axes[dwell_axis]) out.dwell_s = w.axes[dwell_axis];
   }
@@ -168,7 +183,7 @@ bool apply_words(Words& w, BlockCtx& b, ModalState& modal, Block& out) {
   if (w.axis_count) {
     for (std::size_t i = 0; i < kMaxAxes; ++i) {
       if (!w.axes[i]) continue;
-      if (w.has_g(4)) continue;
+      if (w.has_g(GCode::g4)) continue;
       if (pset) pset->axes.emplace_back(static_cast<int>(i), *w.axes[i]);
       else if (preset) preset->axes.push_back(static_cast<int>(i));
       else out.axes[i] = w.axes[i];
@@ -186,6 +201,7 @@ bool apply_words(Words& w, BlockCtx& b, ModalState& modal, Block& out) {
   for (const auto& hw : w.h) out.h.push_back(hw.code);
   if (auto sc = main_din(w, b, modal, out)) out.spindles.push_back(std::move(*sc));
   for (auto& sc : w.brackets) out.spindles.push_back(std::move(sc));
+  for (auto& sc : out.spindles) sc.spindle_index = spindle_index(b.cfg, sc);
   if (w.hash) {
     if (auto* ms = std::get_if<MainSpindle>(&*w.hash))
       b.main_target = ms->name ? *ms->name : b.cfg.main_spindle;

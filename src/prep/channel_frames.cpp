@@ -52,7 +52,7 @@ ChannelFrames::ChannelFrames(const config::ChannelConfig& ch, const config::Chan
 }
 
 frames::AxisValues ChannelFrames::to_chain_order(
-    const std::array<double, config::kMaxPathAxes>& v) const {
+    const AxisArray& v) const {
   frames::AxisValues out{};
   for (std::size_t j = 0; j < n_axes_; ++j) out[static_cast<std::size_t>(to_chain_[j])] = v[j];
   return out;

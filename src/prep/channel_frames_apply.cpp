@@ -7,29 +7,15 @@
 namespace nck::prep {
 namespace {
 
-constexpr double kInchMm = 25.4;
 using Result = std::expected<void, Diagnostic>;
 
-frames::CsValues cs_values(const nc::CoordSystem& c, double unit) {
+frames::CsValues cs_values(const nc::CoordSystem& c) {
   frames::CsValues v;
   for (std::size_t i = 0; i < 3; ++i) {
-    v.shift_mm[i] = c.values[i] * unit;
+    v.shift_mm[i] = c.values[i];
     v.angle_deg[i] = c.values[i + 3];
   }
   return v;
-}
-
-frames::Plane frames_plane(nc::Plane p) {
-  switch (p) {
-    case nc::Plane::g18: return frames::Plane::g18;
-    case nc::Plane::g19: return frames::Plane::g19;
-    case nc::Plane::g17: break;
-  }
-  return frames::Plane::g17;
-}
-
-bool has_g(const nc::Block& b, int g) {
-  return std::find(b.g_nonmodal.begin(), b.g_nonmodal.end(), g) != b.g_nonmodal.end();
 }
 
 }  // namespace
@@ -60,7 +46,7 @@ std::expected<FrameChanges, Diagnostic> ChannelFrames::apply(const nc::Block& b,
     (void)out.kinds.push_back(k);
     return {};
   };
-  if (auto w = chain_.set_plane(frames_plane(b.modal.plane))) {
+  if (auto w = chain_.set_plane(b.modal.plane)) {
     out.warnings.push_back(frame_diagnostic(*w, b, names_, to_channel_.data()));
     (void)out.kinds.push_back(frames::OffsetKind::rotation);
   }
@@ -90,7 +76,6 @@ std::optional<Diagnostic> ChannelFrames::measure_clear(std::optional<std::size_t
 }
 
 Result ChannelFrames::apply_words(const nc::Block& b, FrameChanges& out) {
-  const double unit = b.modal.inch ? kInchMm : 1.0;
   for (const nc::VariableWrite& w : b.kernel_writes) {
     // V.G.NP[i].V.<axis>: a zero-offset table entry (mm).
     int group = -1;
@@ -104,17 +89,17 @@ Result ChannelFrames::apply_words(const nc::Block& b, FrameChanges& out) {
                                              fmt::format("{}: the channel has no axis {}", w.name, axis)));
     if (static_cast<std::size_t>(group) >= zero_table_.groups.size()) zero_table_.groups.resize(static_cast<std::size_t>(group) + 1);
     const int c = to_chain_[static_cast<std::size_t>(it - names_.begin())];
-    zero_table_.groups[static_cast<std::size_t>(group)].offset_mm[static_cast<std::size_t>(c)] = w.value * unit;
+    zero_table_.groups[static_cast<std::size_t>(group)].offset_mm[static_cast<std::size_t>(c)] = w.value;
     if (group == chain_.zero_index()) {
       if (!chain_.select_zero_offset(zero_table_, group))
         return std::unexpected(make_diagnostic(ErrorId::KernelNotYetSupported, {"", b.line, 0}, w.name));
       (void)out.kinds.push_back(frames::OffsetKind::zero);
     }
   }
-  if (has_g(b, 92)) {
+  if (b.g_nonmodal.has(nc::GCode::g92)) {
     for (std::size_t j = 0; j < n_axes_; ++j) {
       if (!b.axes[j]) continue;
-      auto r = chain_.set_g92(to_chain_[j], *b.axes[j] * unit, !b.modal.absolute);
+      auto r = chain_.set_g92(to_chain_[j], *b.axes[j], !b.modal.absolute);
       if (!r) return std::unexpected(frame_diagnostic(r.error(), b, names_, to_channel_.data()));
     }
     (void)out.kinds.push_back(frames::OffsetKind::g92);
@@ -143,7 +128,6 @@ Result ChannelFrames::apply_words(const nc::Block& b, FrameChanges& out) {
 
 Result ChannelFrames::apply_hash(const nc::HashCommand& h, const nc::Block& b,
                                  const motion::AxisVector& mcs_now, FrameChanges& out) {
-  const double unit = b.modal.inch ? kInchMm : 1.0;
   auto fail = [&](const frames::FrameError& e) -> Result {
     return std::unexpected(frame_diagnostic(e, b, names_, to_channel_.data()));
   };
@@ -160,7 +144,7 @@ Result ChannelFrames::apply_hash(const nc::HashCommand& h, const nc::Block& b,
   if (const auto* c = std::get_if<nc::CoordSystem>(&h)) {
     const frames::CsFamily f = c->acs ? frames::CsFamily::acs : frames::CsFamily::cs;
     const frames::OffsetKind k = c->acs ? frames::OffsetKind::acs : frames::OffsetKind::cs;
-    const frames::CsValues v = cs_values(*c, unit);
+    const frames::CsValues v = cs_values(*c);
     switch (c->op) {
       case nc::CsOp::def: return done(chain_.cs_define(f, c->id, v), k, false);
       case nc::CsOp::on:
@@ -187,8 +171,8 @@ Result ChannelFrames::apply_hash(const nc::HashCommand& h, const nc::Block& b,
       chain_.rotation_off();
       return done({}, frames::OffsetKind::rotation, true);
     }
-    return done(chain_.rotation_on(r->angle_deg.value_or(0), r->center1_mm.value_or(0) * unit,
-                                   r->center2_mm.value_or(0) * unit),
+    return done(chain_.rotation_on(r->angle_deg.value_or(0), r->center1_mm.value_or(0),
+                                   r->center2_mm.value_or(0)),
                 frames::OffsetKind::rotation, true);
   }
   if (const auto* p = std::get_if<nc::PSet>(&h)) {
@@ -196,7 +180,7 @@ Result ChannelFrames::apply_hash(const nc::HashCommand& h, const nc::Block& b,
     for (std::size_t j = 0; j < n_axes_; ++j) actual.pos_mm[static_cast<std::size_t>(to_chain_[j])] = mcs_now[j];
     for (const auto& [axis, value] : p->axes) {
       if (axis < 0 || static_cast<std::size_t>(axis) >= n_axes_) continue;
-      if (auto r = chain_.pset(to_chain_[static_cast<std::size_t>(axis)], value * unit, actual); !r) return fail(r.error());
+      if (auto r = chain_.pset(to_chain_[static_cast<std::size_t>(axis)], value, actual); !r) return fail(r.error());
     }
     return done({}, frames::OffsetKind::pset, false);
   }
@@ -208,7 +192,7 @@ Result ChannelFrames::apply_hash(const nc::HashCommand& h, const nc::Block& b,
     return done({}, frames::OffsetKind::pset, false);
   }
   if (const auto* t = std::get_if<nc::Tlc>(&h))
-    return done(t->on ? chain_.tlc_on(t->delta_mm * unit) : chain_.tlc_off(), frames::OffsetKind::tlc, false);
+    return done(t->on ? chain_.tlc_on(t->delta_mm) : chain_.tlc_off(), frames::OffsetKind::tlc, false);
   return {};  // other # commands are not offsets
 }
 

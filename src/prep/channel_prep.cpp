@@ -1,6 +1,5 @@
 #include "nck/prep/channel_prep.hpp"
 
-#include <algorithm>
 
 #include "nck/plc/hli.hpp"
 #include "nck/prep/decoder_setup.hpp"
@@ -39,7 +38,7 @@ ChannelPrep::ChannelPrep(ChannelPrep&&) noexcept = default;
 ChannelPrep& ChannelPrep::operator=(ChannelPrep&&) noexcept = default;
 
 bool ChannelPrep::needs_feedback(const nc::Block& b) {
-  return std::find(b.g_nonmodal.begin(), b.g_nonmodal.end(), 100) != b.g_nonmodal.end() ||
+  return b.g_nonmodal.has(nc::GCode::g100) ||
          (b.hash && std::holds_alternative<nc::GetManualOffsets>(*b.hash));
 }
 

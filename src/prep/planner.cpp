@@ -29,13 +29,22 @@ bool is_executed_command(const nc::HashCommand& h) {
          (std::holds_alternative<nc::ToolData>(h) && !std::get<nc::ToolData>(h).prep);
 }
 
+// The non-modal G functions this version executes.
+constexpr nc::GCodeSet kExecutedNonModal{nc::GCode::g4,   nc::GCode::g74,  nc::GCode::g92,  nc::GCode::g100,
+                                         nc::GCode::g101, nc::GCode::g102, nc::GCode::g112, nc::GCode::g130,
+                                         nc::GCode::g135, nc::GCode::g136, nc::GCode::g137, nc::GCode::g167};
+
+// With these the axis words are the function's values (homing order, G92
+// offset, G101 factor, G102 selection), not a motion target.
+constexpr nc::GCodeSet kAxisWordsAreValues{nc::GCode::g74, nc::GCode::g92, nc::GCode::g101, nc::GCode::g102};
+
 }  // namespace
 
 Planner::Planner(const config::Machine& machine, std::size_t channel_index, PlanStore& store,
                  const PlannerOptions& options, const std::vector<std::int8_t>& spindles)
     : channel_(machine.channels[channel_index]),
       store_(store),
-      n_axes_(std::min(channel_.axes.size(), config::kMaxPathAxes)),
+      n_axes_(std::min(channel_.axes.size(), kMaxAxes)),
       frames_(channel_, channel_index < machine.channel_data.size() ? machine.channel_data[channel_index]
                                                                     : config::ChannelData{},
               n_axes_, options.clamp_index),
@@ -87,16 +96,8 @@ std::string Planner::unsupported(const nc::Block& b) const {
     if (s.feed_link) return fmt::format("FEED_LINK of {} is not executed yet", s.name);
     if (s.override_speed_fact_pct) return fmt::format("OVERRIDE SPEED_FACT of {} is not executed yet", s.name);
   }
-  for (int g : b.g_nonmodal) {
-    switch (g) {
-      case 4: case 92: case 100: case 101: case 102: case 112: case 130: case 135: case 136: case 137: case 167:
-        continue;
-      case 74:
-        continue;
-      default:
-        return fmt::format("G{} is not executed yet", g);
-    }
-  }
+  for (nc::GCode g : b.g_nonmodal)
+    if (!kExecutedNonModal.has(g)) return fmt::format("G{} is not executed yet", nc::g_number(g));
   for (const nc::VariableWrite& w : b.kernel_writes)
     if (w.name.rfind("V.G.NP[", 0) != 0) return fmt::format("writing {} is not executed yet", w.name);
   if (b.dwell_revs) return "a dwell in spindle revolutions (G4 S..) is not executed yet";
@@ -116,9 +117,9 @@ std::string Planner::unsupported(const nc::Block& b) const {
 // speed and M3/M4/M5/M19 (FCT-S1 2.2.2.2).
 std::string Planner::plc_control_violation(const nc::Block& b) const {
   for (const nc::SpindleCommand& s : b.spindles) {
-    const auto sp = std::find_if(channel_.spindles.begin(), channel_.spindles.end(),
-                                 [&](const config::ChannelSpindle& c) { return c.name == s.target; });
-    if (sp == channel_.spindles.end() || !sp->plc_control) continue;
+    if (!s.spindle_index || *s.spindle_index >= channel_.spindles.size()) continue;
+    const config::ChannelSpindle* sp = &channel_.spindles[*s.spindle_index];
+    if (!sp->plc_control) continue;
     if (s.g74 || s.g167 || s.g130_pct || s.g135 || s.g137 || s.g136_pct || s.gear_stage || s.g112_stage ||
         s.get_dynamic_data || s.default_dynamic_data || !s.user_m.empty() || !s.user_h.empty())
       return fmt::format("{} is a PLC spindle over the channel interface: only its speed and "
@@ -178,8 +179,7 @@ bool Planner::apply_frames(const nc::Block& b, Command& c, Command& error) {
 
 Planner::Commands Planner::plan(const nc::Block& b, const std::string& file_name) {
   Commands out;
-  const bool homing = b.has_axis_words() &&
-                      std::find(b.g_nonmodal.begin(), b.g_nonmodal.end(), 74) != b.g_nonmodal.end();
+  const bool homing = b.has_axis_words() && b.g_nonmodal.has(nc::GCode::g74);
   Command c = plan_one(b, file_name);
   if (homing && c.kind == CommandKind::nop) {
     plan_homing(b, c, out);
@@ -194,7 +194,7 @@ Planner::Commands Planner::plan(const nc::Block& b, const std::string& file_name
 // group after group; the block's other functions go with the first group.
 // Homing clears #PSET of the homed axes.
 void Planner::plan_homing(const nc::Block& b, Command first, Commands& out) {
-  std::array<double, config::kMaxPathAxes> order{};
+  AxisArray order{};
   std::vector<double> groups;
   for (std::size_t j = 0; j < n_axes_; ++j)
     if (b.axes[j]) {
@@ -261,7 +261,7 @@ Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
     std::uint32_t mask = 0;
     for (std::size_t j = 0; j < n_axes_; ++j)
       if (b.axes[j]) mask |= 1u << j;
-    if (*b.manual_g == 201) c.manual_on = mask;
+    if (*b.manual_g == nc::GCode::g201) c.manual_on = mask;
     else c.manual_off = mask != 0 ? mask : ~0u;  // G202 without axes: all
   }
   if (b.program_end) {
@@ -279,12 +279,9 @@ Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
     c.dwell_s = std::max(0.0, *b.dwell_s);
     return c;
   }
-  if (std::find(b.g_nonmodal.begin(), b.g_nonmodal.end(), 100) != b.g_nonmodal.end())
-    return plan_measuring_run(b, c, file_name);
-  // With G92, G74, G101, G102 and G201/G202 the axis words are that function's values.
-  const bool words_are_motion = !b.manual_g && std::none_of(b.g_nonmodal.begin(), b.g_nonmodal.end(), [](int g) {
-    return g == 92 || g == 74 || g == 101 || g == 102;
-  });
+  if (b.g_nonmodal.has(nc::GCode::g100)) return plan_measuring_run(b, c, file_name);
+  // With G201/G202 the axis words select the axes.
+  const bool words_are_motion = !b.manual_g && !b.g_nonmodal.has_any(kAxisWordsAreValues);
   const bool circle = b.modal.motion == nc::Motion::cw || b.modal.motion == nc::Motion::ccw;
   if (words_are_motion && (b.has_axis_words() || (circle && (b.ijk[0] || b.ijk[1] || b.ijk[2])))) {
     c.feed_motion = b.modal.motion != nc::Motion::rapid;

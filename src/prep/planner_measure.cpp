@@ -37,8 +37,8 @@ std::vector<std::pair<std::string, double>> Planner::take_measurement(const kern
 // G101 X<factor>..: (measured - target) * factor as an offset; G102 [X..]
 // removes it. Both act at the axis's next absolute position.
 bool Planner::apply_measure_offset(const nc::Block& b, Command& c, Command& error) {
-  const bool g101 = std::find(b.g_nonmodal.begin(), b.g_nonmodal.end(), 101) != b.g_nonmodal.end();
-  const bool g102 = std::find(b.g_nonmodal.begin(), b.g_nonmodal.end(), 102) != b.g_nonmodal.end();
+  const bool g101 = b.g_nonmodal.has(nc::GCode::g101);
+  const bool g102 = b.g_nonmodal.has(nc::GCode::g102);
   if (!g101 && !g102) return true;
   std::optional<Diagnostic> fail;
   if (g102 && !b.has_axis_words()) fail = frames_.measure_clear(std::nullopt, b);

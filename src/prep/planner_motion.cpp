@@ -9,23 +9,9 @@
 namespace nck::prep {
 namespace {
 
-constexpr double kInchMm = 25.4;
-
-// Plane axis names per G17/G18/G19 (first, second) and the I/J/K index of each.
-struct PlaneAxes {
-  const char* first;
-  const char* second;
-  std::size_t first_ijk;
-  std::size_t second_ijk;
-};
-
-PlaneAxes plane_axes(nc::Plane p) {
-  switch (p) {
-    case nc::Plane::g18: return {"Z", "X", 2, 0};
-    case nc::Plane::g19: return {"Y", "Z", 1, 2};
-    case nc::Plane::g17: default: return {"X", "Y", 0, 1};
-  }
-}
+// The circle plane's axes are found by name: the main axis names X Y Z in
+// the order of plane_axes' indices (which are also the I J K indices).
+constexpr const char* kMainAxisNames[] = {"X", "Y", "Z"};
 
 ErrorId arc_error_id(motion::ArcError e) {
   switch (e) {
@@ -59,27 +45,28 @@ std::expected<motion::Segment, Command> Planner::arc_segment(const nc::Block& b,
                                                              const motion::AxisVector& start,
                                                              const motion::AxisVector& target,
                                                              const motion::AxisVector& origin) {
-  const double unit = b.modal.inch ? kInchMm : 1.0;
   const PlaneAxes pa = plane_axes(b.modal.plane);
-  const int a = axis_named(pa.first), bb = axis_named(pa.second);
+  const char* first_name = kMainAxisNames[pa.first];
+  const char* second_name = kMainAxisNames[pa.second];
+  const int a = axis_named(first_name), bb = axis_named(second_name);
   if (a < 0 || bb < 0)
     return std::unexpected(error_command(
         ErrorId::KernelAxisNotInPlane,
-        fmt::format("G{} needs axes {} and {}", static_cast<int>(b.modal.plane), pa.first, pa.second),
+        fmt::format("G{} needs axes {} and {}", static_cast<int>(b.modal.plane), first_name, second_name),
         b.file_id, b.line));
   const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(bb);
   const bool ccw = b.modal.motion == nc::Motion::ccw;
-  const auto& ci = b.ijk[pa.first_ijk];
-  const auto& cj = b.ijk[pa.second_ijk];
+  const auto& ci = b.ijk[static_cast<std::size_t>(pa.first)];
+  const auto& cj = b.ijk[static_cast<std::size_t>(pa.second)];
   std::expected<motion::Segment, motion::ArcError> seg;
   if (ci || cj) {
     // G161: the centre is absolute (in the program's origin), G162: relative to the start.
     const bool abs = b.modal.circle_center_absolute;
-    const double ca = (abs ? origin[ua] : start[ua]) + ci.value_or(0) * unit;
-    const double cb = (abs ? origin[ub] : start[ub]) + cj.value_or(0) * unit;
+    const double ca = (abs ? origin[ua] : start[ua]) + ci.value_or(0);
+    const double cb = (abs ? origin[ub] : start[ub]) + cj.value_or(0);
     seg = motion::make_arc_center(start, target, n_axes_, ua, ub, ca, cb, ccw);
   } else if (b.r) {
-    seg = motion::make_arc_radius(start, target, n_axes_, ua, ub, *b.r * unit, ccw);
+    seg = motion::make_arc_radius(start, target, n_axes_, ua, ub, *b.r, ccw);
   } else {
     return std::unexpected(
         error_command(ErrorId::KernelArcNoCenter, "program I/J/K or R with G2/G3", b.file_id, b.line));
@@ -92,7 +79,6 @@ std::expected<motion::Segment, Command> Planner::arc_segment(const nc::Block& b,
 }
 
 Command Planner::plan_motion(const nc::Block& b, Command c, const std::string& file_name) {
-  const double unit = b.modal.inch ? kInchMm : 1.0;
   const frames::SuppressMask mask = suppress_mask(b);
   if (mask.bits != 0)
     if (auto r = frames::OffsetChain::check_suppress(!b.modal.absolute); !r)
@@ -100,7 +86,7 @@ Command Planner::plan_motion(const nc::Block& b, Command c, const std::string& f
                            b.file_id, b.line);
   for (std::size_t j = 0; j < n_axes_; ++j) {
     if (!b.axes[j]) continue;
-    const double v = *b.axes[j] * unit;
+    const double v = *b.axes[j];
     if (b.modal.absolute) {
       pcs_[j] = v;
       frames_.commit_axis(j);  // G91 rule: new offsets act at the next absolute position
@@ -157,7 +143,7 @@ Command Planner::plan_motion(const nc::Block& b, Command c, const std::string& f
 
   double v_cmd = 0;  // rapid: the path limit (set below)
   if (!rapid) {
-    const double f_mm_min = b.modal.feed_mm_min * unit;
+    const double f_mm_min = b.modal.feed_mm_min;
     if (f_mm_min <= 0)
       return error_command(ErrorId::KernelNoFeed, "F is 0: program a feed in mm/min", b.file_id,
                            b.line);

@@ -1,6 +1,5 @@
 // Spindle planning, the configuration-driven rules: PLC spindle detection, gear selection of the main spindle (FCT-S1 2.8.2,
 // SPEC 3.3 with its erratum) and tool-related dynamic limits (FCT-S1 2.8.5).
-#include <cctype>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -12,14 +11,6 @@ namespace nck::prep {
 
 
 namespace {
-
-bool same_name(std::string_view a, std::string_view b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (std::toupper(static_cast<unsigned char>(a[i])) != std::toupper(static_cast<unsigned char>(b[i])))
-      return false;
-  return true;
-}
 
 // What to change, for the gear selection errors of the spindle layer.
 std::string gear_message(ErrorId id, const nc::SpindleCommand& c, double speed_rpm,
@@ -57,17 +48,11 @@ std::string gear_message(ErrorId id, const nc::SpindleCommand& c, double speed_r
 
 }  // namespace
 
+// The decoder resolved the name to the channel spindle index (its spindle
+// names are the channel list's, decoder_setup.cpp); only the range is checked.
 std::optional<std::size_t> SpindlePlanner::find_spindle(const nc::SpindleCommand& c) const {
-  if (!channel_) return std::nullopt;
-  const auto& sps = channel_->spindles;
-  const std::string_view want = c.target.empty() ? std::string_view(c.name) : std::string_view(c.target);
-  for (std::size_t i = 0; i < sps.size(); ++i)
-    if (same_name(sps[i].name, want)) return i;
-  // DIN words without a resolved target: the configured main spindle.
-  if (c.target.empty() && c.din)
-    for (std::size_t i = 0; i < sps.size(); ++i)
-      if (sps[i].log_axis_nr == channel_->main_spindle_ax_nr) return i;
-  return std::nullopt;
+  if (!channel_ || !c.spindle_index || *c.spindle_index >= channel_->spindles.size()) return std::nullopt;
+  return *c.spindle_index;
 }
 
 std::expected<void, Diagnostic> SpindlePlanner::plan_gear(Step& s, std::optional<double> speed_rpm) const {

@@ -12,10 +12,12 @@
 #include <utility>
 #include <vector>
 
+#include "nck/core/axes.hpp"
+
 namespace nck::config {
 
 inline constexpr std::size_t kMaxChannels = 12;
-inline constexpr std::size_t kMaxPathAxes = 32;     // per channel
+// Path axes per channel: core kMaxAxes (nck/core/axes.hpp).
 inline constexpr std::size_t kMaxSpindles = 16;     // per channel
 inline constexpr std::size_t kMaxGearStages = 6;
 
@@ -249,7 +251,7 @@ struct ChannelConfig {
 struct ToolRecord {               // wz[i]; lengths in mm (inch lists converted)
   bool given = false;
   double laenge_mm = 0, radius_mm = 0;
-  std::array<double, kMaxPathAxes> ax_versatz_mm{};
+  AxisArray ax_versatz_mm{};
   bool tool_fixed = false;
   std::uint32_t log_ax_nr_spdl = 0;
   double vb_min_rpm = 0, vb_max_rpm = 0, a_max_deg_s2 = 0;
@@ -259,12 +261,12 @@ struct ZeroOffsets {              // nullp list
   bool g53_verfuegbar = false;
   std::uint32_t default_index = 0;
   // groups[i][j] offset of channel axis j in group i (mm / deg); inactive flags beside
-  std::vector<std::array<double, kMaxPathAxes>> versch;
-  std::vector<std::array<bool, kMaxPathAxes>> inaktiv;
+  std::vector<AxisArray> versch;
+  std::vector<std::array<bool, kMaxAxes>> inaktiv;
 };
 
 struct ClampOffsets {             // pzv list
-  std::vector<std::array<double, kMaxPathAxes>> versatz;
+  std::vector<AxisArray> versatz;
 };
 
 struct ChannelData {              // the per-channel lists besides the channel list

@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "nck/config/machine.hpp"
+#include "nck/core/axes.hpp"
 #include "nck/core/fixed_vector.hpp"
 #include "nck/kernel/event.hpp"
 #include "nck/plc/ext_command.hpp"
@@ -33,9 +34,9 @@ struct ChannelInput {
   // The measuring probe switched during the last cycle, with the axes'
   // machine positions latched at that instant.
   bool probe_switched = false;
-  std::array<double, config::kMaxPathAxes> probe_latched_mcs{};
+  AxisArray probe_latched_mcs{};
   // Handwheel travel during the last cycle per path axis, mm (G201 manual mode).
-  std::array<double, config::kMaxPathAxes> handwheel_mm{};
+  AxisArray handwheel_mm{};
 };
 
 struct TickInput {
@@ -51,7 +52,7 @@ struct TickInput {
 enum class ChannelStatus : std::uint8_t { idle, running, waiting, ended, aborted };
 
 struct ChannelOutput {
-  std::array<double, config::kMaxPathAxes> axis_mcs{};  // set points, mm / deg
+  AxisArray axis_mcs{};  // set points, mm / deg
   double path_velocity_mm_s = 0;
   double dist_offset_mm = 0;  // 3D distance control's offset on the tool axis (0 while inactive)
   ChannelStatus status = ChannelStatus::idle;

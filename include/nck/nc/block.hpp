@@ -11,13 +11,13 @@
 #include <string>
 #include <vector>
 
+#include "nck/core/axes.hpp"
+#include "nck/nc/gcode.hpp"
 #include "nck/nc/hash_commands.hpp"
 #include "nck/nc/modal.hpp"
 #include "nck/nc/spindle_command.hpp"
 
 namespace nck::nc {
-
-inline constexpr std::size_t kMaxAxes = 32;  // path axes per channel
 
 // A write to a kernel variable (V.G. / V.A.) programmed in this block; the
 // kernel applies them in order when the block executes.
@@ -41,11 +41,11 @@ struct Block {
   std::array<std::optional<double>, 3> ijk{};          // I, J, K
   std::optional<double> r;                             // circle radius (R)
   std::optional<double> f;                             // F as programmed (also kept in modal)
-  // Non-modal / special G codes programmed here (4 74 92 100 101 102 106
-  // 112 130 135 136 137 167 196 200 201 202). With 74 92 100 101 102 200 201
-  // 202 the axis words above carry that function's values (order, offset,
-  // target, factor or dummy), not a motion target.
-  std::vector<int> g_nonmodal;
+  // Non-modal / special G codes programmed here (GCodeSet::kCodes). With 74
+  // 92 100 101 102 200 (and manual_g below) the axis words above carry that
+  // function's values (order, offset, target, factor or dummy), not a motion
+  // target.
+  GCodeSet g_nonmodal;
   // M functions in program order, except the main spindle's DIN functions
   // (M3 M4 M5 M19 M40..M45, in spindles[]) and M17/M29 (handled here).
   std::vector<int> m;
@@ -70,7 +70,7 @@ struct Block {
 
   // G201 / G202 programmed in this block (the manual-mode group is modal, so
   // modal.manual_mode alone cannot tell); its axis words select the axes.
-  std::optional<int> manual_g;
+  std::optional<GCode> manual_g;
 
   bool program_end = false;  // M2 / M30 reached (main program level)
   bool stop = false;           // M0

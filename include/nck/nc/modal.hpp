@@ -2,10 +2,11 @@
 // Modal state of a channel's decoder (kept apart from the per-block words).
 #include <cstdint>
 
+#include "nck/core/plane.hpp"
+
 namespace nck::nc {
 
 enum class Motion : std::uint8_t { rapid, linear, cw, ccw, thread, tap, tap_rigid, tap_retract };
-enum class Plane : std::uint8_t { g17 = 17, g18 = 18, g19 = 19 };
 enum class FeedMode : std::uint8_t { g93 = 93, g94 = 94, g95 = 95 };
 enum class SpeedMode : std::uint8_t { g97 = 97, g96 = 96 };
 enum class RadiusComp : std::uint8_t { g40 = 40, g41 = 41, g42 = 42 };

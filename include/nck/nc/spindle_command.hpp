@@ -46,6 +46,10 @@ struct SpindleCommand {
   // Added by the decoder work:
   SpindleM direction = SpindleM::none;  // M3/M4 programmed together with M19
   std::string target;                 // configured spindle this addresses ("S1"...), main resolved
+  // The same spindle as an index into DecoderConfig::spindle_names (the
+  // channel's spindle list), resolved once by the decoder so that planning
+  // never compares names; empty when target is not a channel spindle.
+  std::optional<std::uint8_t> spindle_index;
   std::optional<FeedLink> feed_link;  // FEED_LINK ..
 };
 

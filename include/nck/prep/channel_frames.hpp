@@ -56,7 +56,7 @@ class ChannelFrames {
   int chain_index(std::size_t j) const { return to_chain_[j]; }
 
  private:
-  frames::AxisValues to_chain_order(const std::array<double, config::kMaxPathAxes>& v) const;
+  frames::AxisValues to_chain_order(const AxisArray& v) const;
   frames::PcsPoint pcs_point(const motion::AxisVector& v) const;
   motion::AxisVector channel_order(const frames::AxisValues& v) const;
   std::expected<void, Diagnostic> apply_hash(const nc::HashCommand& h, const nc::Block& b,
@@ -69,8 +69,8 @@ class ChannelFrames {
   std::vector<std::string> names_;
   std::size_t n_axes_ = 0;
   int zero_modal_ = 0;  // the program's G53..G59/G159 state (not the default index)
-  std::array<int, config::kMaxPathAxes> to_chain_{};    // channel j -> chain index
-  std::array<int, frames::kMaxAxes> to_channel_{};      // chain index -> channel j (-1)
+  std::array<int, kMaxAxes> to_chain_{};    // channel j -> chain index
+  std::array<int, kMaxAxes> to_channel_{};      // chain index -> channel j (-1)
 };
 
 }  // namespace nck::prep

@@ -69,9 +69,9 @@ class Planner {
   SpindlePlanner spindles_;
   motion::AxisVector pcs_{};  // programmed position (program coordinates)
   motion::AxisVector mcs_{};  // machine position at the end of the last planned block
-  std::array<motion::AxisDynamics, config::kMaxPathAxes> feed_dyn_{}, rapid_dyn_{};
-  std::array<double, config::kMaxPathAxes> swe_neg_{}, swe_pos_{};
-  std::array<double, config::kMaxPathAxes> ref_pos_{};  // pos_refpkt: where G74 homes an axis
+  std::array<motion::AxisDynamics, kMaxAxes> feed_dyn_{}, rapid_dyn_{};
+  AxisArray swe_neg_{}, swe_pos_{};
+  AxisArray ref_pos_{};  // pos_refpkt: where G74 homes an axis
   nc::ModalState modal_;
   // The last G100 run, in program coordinates (G101 reads it).
   struct Measured {

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "nck/config/machine.hpp"
+#include "nck/core/axes.hpp"
 #include "nck/core/diagnostic.hpp"
 #include "nck/kernel/kernel.hpp"
 #include "nck/nc/modal.hpp"
@@ -34,8 +35,8 @@ struct DryRunOptions {
 
 // What a channel knows about its programmed state, for --final.
 struct ChannelSnapshot {
-  std::array<double, config::kMaxPathAxes> axis_mcs{};
-  std::array<double, config::kMaxPathAxes> axis_pcs{};
+  AxisArray axis_mcs{};
+  AxisArray axis_pcs{};
   // every active offset: kind -> per-axis values
   std::vector<std::pair<std::string, std::vector<std::pair<std::string, double>>>> offsets;
   nc::ModalState modal;

@@ -8,12 +8,13 @@
 #include <cstddef>
 
 #include "nck/config/machine.hpp"
+#include "nck/core/axes.hpp"
 
 namespace nck::sim {
 
 class Probe {
  public:
-  using Positions = std::array<double, config::kMaxPathAxes>;
+  using Positions = AxisArray;
 
   Probe() = default;
   // setup: axis = channel axis index (-1: this channel has no probe).

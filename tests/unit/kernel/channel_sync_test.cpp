@@ -357,6 +357,7 @@ nc::Block move_with_m3(std::uint32_t line, double x, double rpm) {
   nc::SpindleCommand c;
   c.name = "S";
   c.target = "S1";
+  c.spindle_index = 0;  // resolved by the decoder in a real run
   c.din = true;
   c.m = nc::SpindleM::m3;
   c.rev_rpm = rpm;

@@ -233,7 +233,7 @@ TEST(Channel, HomingMoreOrderGroupsThanABlockHoldsIsAnError) {
   KernelRig rig(m);
   nc::Block b;
   b.line = 4;
-  b.g_nonmodal = {74};
+  (void)b.g_nonmodal.add(nc::GCode::g74);
   for (std::size_t j = 0; j < 5; ++j) b.axes[j] = static_cast<double>(j + 1);  // five groups
   rig.push_block(0, b, "t.nc");
   RunLog r = run_all(rig.k);

@@ -136,9 +136,9 @@ TEST(NcWords, G159Range) {
 TEST(NcWords, NonModalGCodesAreListed) {
   auto d = decode("G74 X2 Y1\nG92 X10 Z30\nG100 X10 F500\nG101 X1\nG102 X0\nG201 X1\nG202\nM30\n");
   ASSERT_EQ(d.blocks.size(), 8u) << dump(d);
-  EXPECT_EQ(d.blocks[0].g_nonmodal, std::vector<int>{74});
+  EXPECT_EQ(d.blocks[0].g_nonmodal, GCodeSet{GCode::g74});
   EXPECT_DOUBLE_EQ(*d.blocks[0].axes[1], 1);
-  EXPECT_EQ(d.blocks[1].g_nonmodal, std::vector<int>{92});
+  EXPECT_EQ(d.blocks[1].g_nonmodal, GCodeSet{GCode::g92});
   EXPECT_TRUE(d.blocks[5].modal.manual_mode);
   EXPECT_FALSE(d.blocks[6].modal.manual_mode);
   EXPECT_TRUE(decode("G201\n").has(ErrorId::NcG201WithoutAxis));

@@ -57,6 +57,7 @@ nc::Block din(std::uint32_t line, SpindleM m, std::optional<double> s = {},
   nc::SpindleCommand c;
   c.name = "S";
   c.target = "S1";
+  c.spindle_index = 0;  // as the decoder resolves it
   c.din = true;
   c.column = 5;
   c.m = m;
@@ -71,6 +72,7 @@ nc::Block s2(std::uint32_t line, SpindleM m, std::optional<double> rev = {}) {
   nc::Block b = din(line, m, rev);
   b.spindles[0].name = "S2";
   b.spindles[0].target = "S2";
+  b.spindles[0].spindle_index = 1;
   b.spindles[0].din = false;
   return b;
 }
@@ -532,6 +534,7 @@ TEST(SpindlePlanner, BadInputBecomesDiagnostics) {
   auto p = planner(m);
   nc::Block b = s2(1, SpindleM::m3, 100);
   b.spindles[0].target = "S9";
+  b.spindles[0].spindle_index.reset();  // not a spindle of the channel
   b.spindles[0].name = "S9";
   EXPECT_EQ(fails(p, b).id, ErrorId::KernelSpindleUnknown);
   b = din(2, SpindleM::m3, std::numeric_limits<double>::quiet_NaN());
