@@ -28,7 +28,10 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
   t_s_ = t_s;
   in.ext_commands.clear();
   in.ext_commands_lost = 0;
-  for (std::size_t ch = 0; ch < channels_; ++ch) in.channels[ch].handwheel_mm.fill(0.0);
+  if (handwheel_turned_) {  // last cycle's travel is handed over once
+    for (std::size_t ch = 0; ch < channels_; ++ch) in.channels[ch].handwheel_mm.fill(0.0);
+    handwheel_turned_ = false;
+  }
   for (const plc::ScenarioAction& a : player_.due(t_s)) apply(a, in);
 
   plc_.tick(t_s);
@@ -72,6 +75,7 @@ void MachineSim::apply(const plc::ScenarioAction& a, kernel::TickInput& in) noex
     case plc::ActionKind::silent: plc_.set_silent(a.on); return;
     case plc::ActionKind::handwheel:
       if (a.axis >= 0) in.channels[c].handwheel_mm[static_cast<std::size_t>(a.axis)] += a.value;
+      handwheel_turned_ = true;
       return;
     case plc::ActionKind::spindle_cmd:
       if (!in.ext_commands.push_back(a.cmd)) ++in.ext_commands_lost;

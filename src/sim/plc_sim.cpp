@@ -58,6 +58,7 @@ bool PlcSim::submit(OutputHandle h, const TechOutput& out, double now_s) noexcep
   for (auto& s : slots_) {
     if (s.handle != kNoHandle) continue;
     s.handle = h;
+    ++used_;
     s.output = out;
     s.due_s = (std::isfinite(now_s) ? now_s : 0.0) + ack_delay_s(out);
     s.acked = false;
@@ -68,11 +69,12 @@ bool PlcSim::submit(OutputHandle h, const TechOutput& out, double now_s) noexcep
 }
 
 void PlcSim::tick(double now_s) noexcept {
-  if (silent_) return;
+  if (silent_ || used_ == acked_) return;  // nothing waits: no slot to look at
   for (auto& s : slots_) {
     if (s.handle == kNoHandle || s.acked) continue;
     if (now_s + kTimeEps_s >= s.due_s) {
       s.acked = true;
+      ++acked_;
       s.t_ack_s = now_s;
       on_ack(s);
     }
@@ -107,11 +109,18 @@ bool PlcSim::pending(OutputHandle h) const noexcept {
 }
 
 void PlcSim::release(OutputHandle h) noexcept {
-  if (Slot* s = find(h)) *s = Slot{};
+  if (Slot* s = find(h)) free_slot(*s);
+}
+
+void PlcSim::free_slot(Slot& s) noexcept {
+  --used_;
+  if (s.acked) --acked_;
+  s = Slot{};
 }
 
 std::size_t PlcSim::drain_acks(AckList& out) noexcept {
   out.clear();
+  if (acked_ == 0) return 0;
   // Oldest first: handles grow with submission order (wrap-around aside).
   while (true) {
     Slot* oldest = nullptr;
@@ -120,12 +129,13 @@ std::size_t PlcSim::drain_acks(AckList& out) noexcept {
         oldest = &s;
     if (oldest == nullptr) break;
     out.push_back(PlcAck{oldest->handle, oldest->output, oldest->t_ack_s});
-    *oldest = Slot{};
+    free_slot(*oldest);
   }
   return out.size();
 }
 
 void PlcSim::clear() noexcept {
+  used_ = acked_ = 0;
   for (auto& s : slots_) s = Slot{};
 }
 

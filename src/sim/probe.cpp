@@ -3,18 +3,17 @@
 namespace nck::sim {
 
 bool Probe::watch(const Positions& now) noexcept {
-  const Positions before = last_;
-  last_ = now;
-  if (axis_ < 0 || !started_) {
-    started_ = true;
-    return false;
-  }
+  if (axis_ < 0) return false;
   const auto a = static_cast<std::size_t>(axis_);
-  const double p = switch_pos_mm_, d = now[a] - before[a];
-  if (d == 0 || (before[a] - p) * (now[a] - p) > 0) return false;
-  const double f = (p - before[a]) / d;
-  for (std::size_t j = 0; j < n_axes_; ++j) latched_[j] = before[j] + f * (now[j] - before[j]);
-  return true;
+  const double p = switch_pos_mm_, d = now[a] - last_[a];
+  const bool switched = started_ && d != 0 && (last_[a] - p) * (now[a] - p) <= 0;
+  if (switched) {
+    const double f = (p - last_[a]) / d;
+    for (std::size_t j = 0; j < n_axes_; ++j) latched_[j] = last_[j] + f * (now[j] - last_[j]);
+  }
+  for (std::size_t j = 0; j < n_axes_; ++j) last_[j] = now[j];
+  started_ = true;
+  return switched;
 }
 
 }  // namespace nck::sim

@@ -53,6 +53,7 @@ class MachineSim {
   std::size_t channels_ = 0;
   std::size_t spindles_ = 0;
   double t_s_ = 0;  // start of the cycle being computed
+  bool handwheel_turned_ = false;  // in the last read: clear its travel in the next
   PlcSim::AckList acks_;
 };
 

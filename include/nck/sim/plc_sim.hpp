@@ -82,12 +82,17 @@ class PlcSim {
   Slot* find(OutputHandle h) noexcept;
   const Slot* find(OutputHandle h) const noexcept;
   void on_ack(const Slot& s) noexcept;
+  void free_slot(Slot& s) noexcept;
 
   std::array<Slot, kCapacity> slots_{};
   std::array<double, kMaxMNumber> m_delay_s_{};  // < 0: not configured
   double default_delay_s_ = 0, spindle_delay_s_ = 0, tool_delay_s_ = 0, gear_delay_s_ = 0;
   std::array<std::array<std::uint8_t, config::kMaxSpindles>, plc::kMaxHliChannels> gear_{};
   bool silent_ = false;
+  // Slots in use and of those acknowledged: the cyclic calls skip the scan
+  // of all kCapacity slots when there is nothing to do.
+  std::size_t used_ = 0;
+  std::size_t acked_ = 0;
 };
 
 }  // namespace nck::sim
