@@ -20,8 +20,9 @@ namespace {
 // pipe): checked once, at the end, for every command.
 bool stdout_written() {
   if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return true;
-  fmt::print(stderr, "nck: error {}: cannot write to stdout: {}\n", number(ErrorId::AppOutputFile),
-             std::strerror(errno != 0 ? errno : EIO));
+  // fprintf, not fmt::print: a broken stderr too must not throw here.
+  std::fprintf(stderr, "nck: error %u: cannot write to stdout: %s\n", number(ErrorId::AppOutputFile),
+               std::strerror(errno != 0 ? errno : EIO));
   return false;
 }
 
@@ -97,8 +98,8 @@ int main_cli(int argc, char** argv) {
     if (*fitc) code = fit_curve(fit);
     if (*params) code = print_parameters();
     if (*errors) code = print_errors();
-  } catch (const std::exception& e) {  // never an abort: a diagnostic and exit 2
-    fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppInternalError), e.what());
+  } catch (const std::exception& e) {  // never an abort: a diagnostic (if stderr takes it) and exit 2
+    std::fprintf(stderr, "nck: error %u: %s\n", number(ErrorId::AppInternalError), e.what());
     return 2;
   }
   return stdout_written() ? code : 2;

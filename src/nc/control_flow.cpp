@@ -137,14 +137,15 @@ struct Flow {
     return Outcome::nothing;
   }
 
-  bool count_iteration(Ctl& t, std::size_t pos) {
-    if (++t.iterations > d.cfg.max_loop_iterations) {
-      fail(ErrorId::NcLoopLimit, pos,
-           fmt::format("the loop ran {} times; check its condition (limit max_loop_iterations)",
-                       d.cfg.max_loop_iterations), true);
-      return false;
-    }
-    return true;
+  // One budget for every loop of the run, so nested loops cannot multiply it.
+  bool count_iteration(const Ctl& t, std::size_t pos) {
+    if (++d.loop_iterations <= d.cfg.max_loop_iterations) return true;
+    fail(ErrorId::NcLoopLimit, pos,
+         fmt::format("the program's loops ran {} iterations in all, the run's limit, while repeating the loop "
+                     "of line {}; check its condition",
+                     d.cfg.max_loop_iterations, t.start.line),
+         true);
+    return false;
   }
 
   // $IF false or $ELSEIF false: find the branch to run.
@@ -365,5 +366,11 @@ struct Flow {
 }  // namespace
 
 Outcome Decoder::Impl::control(Cursor& c) { return Flow{*this}.run(c); }
+
+// M30 inside a structure is fine ($IF .. M30 .. $ENDIF), but only when its
+// closing statements follow: read on to them (the program ends anyway).
+bool Decoder::Impl::open_structures_closed_later() {
+  return Flow{*this}.leave(frames.back().ctl.size());
+}
 
 }  // namespace nck::nc

@@ -13,7 +13,7 @@ using namespace detail;
 
 Decoder::Impl::Impl(DecoderConfig c)
     : cfg(std::move(c)),
-      vars(cfg.axis_names, cfg.max_zero_offset_index),
+      vars(cfg.axis_names, cfg.max_zero_offset_index, cfg.max_variable_elements),
       x{vars, err, 0},
       main_target(cfg.main_spindle),
       bctx{cfg, x, main_target, {}, 0, false},
@@ -28,6 +28,16 @@ SourceLoc Decoder::Impl::loc(std::size_t pos) const {
   l.file = files[f.file_id];
   f.reader->locate(pos, l.line, l.column);
   return l;
+}
+
+// ", called from main.nc line 12" for an error in a subroutine (innermost
+// caller first), like a compiler's "included from".
+std::string Decoder::Impl::call_chain() const {
+  std::string out;
+  for (std::size_t i = frames.size(); i-- > 1;)
+    out += fmt::format(", called from {} line {}", files[frames[i - 1].file_id],
+                       frames[i - 1].reader->block_pos().line);
+  return out;
 }
 
 std::uint16_t Decoder::Impl::file_id(const std::string& name) {
@@ -52,8 +62,12 @@ Outcome Decoder::Impl::report(ErrorId id, std::size_t pos, std::string msg, bool
 Decoder::Result Decoder::Impl::error_result() {
   flush_warnings();
   if (err.error) {
-    diags.push_back(make_diagnostic(err.error->id, loc(err.error->pos), std::move(err.error->message)));
+    Diagnostic d = make_diagnostic(err.error->id, loc(err.error->pos), err.error->message + call_chain());
     err.error.reset();
+    // Lint goes on after an error; an error met again (a loop body, a
+    // subroutine called many times) is reported once.
+    if (!cfg.continue_after_error || reported.emplace(number(d.id), d.loc.file, d.loc.line).second)
+      diags.push_back(std::move(d));
   }
   if (!cfg.continue_after_error) fatal = true;
   return Result{Status::error, {}};
@@ -234,6 +248,10 @@ Outcome Decoder::Impl::run_words(Cursor& c, std::optional<std::int64_t> n, Block
   out.modal = modal;
   out.depth = static_cast<std::uint8_t>(frames.size() - 1);
   if (out.program_end) {
+    if (!frames.back().ctl.empty() && !open_structures_closed_later()) {
+      err.clear();  // one message for the program: this one
+      return report(ErrorId::NcUnclosedControl, 0, "a $ structure before M30/M2 is never closed", true);
+    }
     if (frames.size() > 1)
       err.warn(ErrorId::NcEndInSubroutine, words.find_m(30) ? words.find_m(30)->pos : 0,
                "M30/M2 in a subroutine ends the whole program");
@@ -251,6 +269,12 @@ Outcome Decoder::Impl::run_words(Cursor& c, std::optional<std::int64_t> n, Block
 }
 
 // ---------------------------------------------------------------- public API
+
+std::optional<std::uint16_t> Decoder::file_id(std::string_view name) const {
+  for (std::size_t i = 0; i < impl_->files.size(); ++i)
+    if (impl_->files[i] == name) return static_cast<std::uint16_t>(i);
+  return std::nullopt;
+}
 
 Decoder::Decoder(const std::filesystem::path& program, DecoderConfig cfg)
     : impl_(std::make_unique<Impl>(std::move(cfg))) {

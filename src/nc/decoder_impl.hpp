@@ -3,6 +3,8 @@
 // control_flow.cpp ($ statements), subprograms.cpp (calls, returns,
 // sections) and var_declarations.cpp (#VAR).
 #include <memory>
+#include <set>
+#include <tuple>
 #include <string>
 #include <vector>
 
@@ -21,7 +23,6 @@ struct Ctl {
   CtlKind kind = CtlKind::if_;
   SourcePos start;           // the opening statement's block
   SourcePos body;            // the block after it ($DO)
-  std::uint64_t iterations = 0;
   Lvalue var;                // $FOR variable
   double end = 0, step = 1;  // $FOR limits
 };
@@ -64,6 +65,8 @@ struct Decoder::Impl {
   bool var_mode = false;        // inside #VAR .. #ENDVAR
   detail::SourcePos comment_start;
   bool loop_reentry = false;    // seeking back to a $WHILE/$FOR statement
+  std::uint64_t loop_iterations = 0;  // of all loops of the run: one budget (max_loop_iterations)
+  std::set<std::tuple<std::uint32_t, std::string, std::uint32_t>> reported;  // lint: id, file, line once
   std::uint64_t reentry_offset = 0;
 
   Result next();
@@ -75,15 +78,19 @@ struct Decoder::Impl {
   detail::Outcome report(ErrorId, std::size_t pos, std::string msg, bool is_fatal = false);
   void flush_warnings();
   SourceLoc loc(std::size_t pos) const;
+  std::string call_chain() const;
   std::uint16_t file_id(const std::string& name);
 
   // control_flow.cpp
   detail::Outcome control(detail::Cursor& c);
+  // At M30/M2: are the open structures closed further down the file?
+  bool open_structures_closed_later();
   // subprograms.cpp
   bool open_main(const std::filesystem::path& p);
   detail::Outcome call(detail::Cursor& c, bool local);
   detail::Outcome end_of_section();
   detail::Outcome do_return();
+  std::string unclosed_message(std::string_view section) const;
   // var_declarations.cpp
   detail::Outcome declare(detail::Cursor& c);
 };

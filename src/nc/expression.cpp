@@ -210,7 +210,8 @@ bool eval_primary(Cursor& c, ExprCtx& x, double& out) {
 bool eval_unary(Cursor& c, ExprCtx& x, double& out) {
   if (++x.depth > kMaxDepth) {
     --x.depth;
-    return fail(x, ErrorId::NcExprSyntax, c.pos, "expression nested too deeply");
+    return fail(x, ErrorId::NcExprTooDeep, c.pos,
+                fmt::format("the expression nests more than {} brackets or operators deep; split it", kMaxDepth));
   }
   c.skip_spaces();
   bool ok;
@@ -336,7 +337,8 @@ bool eval_or(Cursor& c, ExprCtx& x, double& out) {
 bool eval_expr(Cursor& c, ExprCtx& x, double& out) {
   if (++x.depth > kMaxDepth) {
     --x.depth;
-    return fail(x, ErrorId::NcExprSyntax, c.pos, "expression nested too deeply");
+    return fail(x, ErrorId::NcExprTooDeep, c.pos,
+                fmt::format("the expression nests more than {} brackets or operators deep; split it", kMaxDepth));
   }
   bool ok = eval_or(c, x, out);
   --x.depth;

@@ -105,21 +105,27 @@ Outcome Decoder::Impl::call(Cursor& c, bool local) {
 }
 
 // M17/M29 (or the end of the subroutine's section): back to the caller.
+// An open structure at the end of a section cannot be recovered from: the
+// error is fatal, also in lint mode (which would meet it again and again).
 Outcome Decoder::Impl::do_return() {
   if (!frames.back().ctl.empty())
-    return report(ErrorId::NcUnclosedControl, 0, "a $ structure is still open at the end of the subroutine");
+    return report(ErrorId::NcUnclosedControl, 0, unclosed_message("subroutine"), true);
   frames.pop_back();
   vars.pop_scope();
   return Outcome::nothing;
+}
+
+std::string Decoder::Impl::unclosed_message(std::string_view section) const {
+  return fmt::format("the $ structure opened at line {} is not closed before the end of the {}",
+                     frames.back().ctl.back().start.line, section);
 }
 
 // A % header or the end of the file ends the running program or subroutine.
 Outcome Decoder::Impl::end_of_section() {
   if (frames.size() > 1) return do_return();
   if (!frames.back().ctl.empty())
-    return report(ErrorId::NcUnclosedControl, 0, "a $ structure is still open at the end of the program");
-  if (var_mode)
-    return report(ErrorId::NcVarDeclaration, 0, "#VAR is never closed with #ENDVAR");
+    return report(ErrorId::NcUnclosedControl, 0, unclosed_message("program"), true);
+  if (var_mode) return report(ErrorId::NcVarDeclaration, 0, "#VAR is never closed with #ENDVAR", true);
   err.warn(ErrorId::NcMissingProgramEnd, 0, "the main program ends without M30/M2");
   return Outcome::end;
 }

@@ -61,7 +61,14 @@ Outcome Decoder::Impl::declare(Cursor& c) {
       if (!c.match(']')) return bad(c.pos, "']' expected after the string length");
     }
   }
-  if (!vars.declare(base, dims, is_string)) return bad(at, "the array is too large (at most 100000 elements)");
+  switch (vars.declare(base, dims, is_string)) {
+    case Variables::Declared::ok: break;
+    case Variables::Declared::array_too_large: return bad(at, "the array is too large (at most 100000 elements)");
+    case Variables::Declared::memory_cap:
+      return report(ErrorId::NcVariableMemory, at,
+                    fmt::format("declaring {} would take the program's variables past {} elements", base,
+                                cfg.max_variable_elements));
+  }
   c.skip_spaces();
   if (!c.match('=')) return c.rest_empty() ? Outcome::nothing : bad(c.pos, "'=' or end of declaration expected");
   c.skip_spaces();

@@ -35,8 +35,8 @@ bool split_indices(std::string_view key, std::string_view& base, std::vector<int
 }
 }  // namespace
 
-Variables::Variables(std::vector<std::string> axis_names, int max_zero_index)
-    : axes_(std::move(axis_names)), max_zero_index_(max_zero_index) {
+Variables::Variables(std::vector<std::string> axis_names, int max_zero_index, std::size_t max_elements)
+    : axes_(std::move(axis_names)), max_zero_index_(max_zero_index), max_elements_(max_elements) {
   for (auto& a : axes_) a = to_upper(a);
   locals_.emplace_back();
 }
@@ -154,20 +154,27 @@ VarStatus Variables::write_string(const std::string& key, std::string v) {
   return VarStatus::ok;
 }
 
-bool Variables::declare(const std::string& base, const std::vector<int>& dims, bool is_string) {
+std::size_t Variables::declared_elements() const {
+  std::size_t n = globals_.size();
+  for (const Map& m : locals_) n += m.size();
+  return n;
+}
+
+Variables::Declared Variables::declare(const std::string& base, const std::vector<int>& dims, bool is_string) {
   Map* m = scope_for(base);
-  if (!m) return false;
+  if (!m) return Declared::array_too_large;
   std::size_t total = 1;
   for (int d : dims) {
-    if (d < 1) return false;
+    if (d < 1) return Declared::array_too_large;
     total *= static_cast<std::size_t>(d);
-    if (total > kMaxArrayElements) return false;
+    if (total > kMaxArrayElements) return Declared::array_too_large;
   }
+  if (declared_elements() + total > max_elements_) return Declared::memory_cap;
   VarValue init;
   init.is_string = is_string;
   if (dims.empty()) {
     (*m)[base] = init;
-    return true;
+    return Declared::ok;
   }
   dims_[base] = dims;
   std::vector<int> idx(dims.size(), 0);
@@ -180,7 +187,7 @@ bool Variables::declare(const std::string& base, const std::vector<int>& dims, b
       idx[k] = 0;
     }
   }
-  return true;
+  return Declared::ok;
 }
 
 }  // namespace nck::nc::detail

@@ -23,7 +23,9 @@ struct VarValue {
 
 class Variables {
  public:
-  Variables(std::vector<std::string> axis_names, int max_zero_index);
+  // max_elements: the cap on declared program variables (elements of every
+  // scope together), so that a program cannot take unbounded memory.
+  Variables(std::vector<std::string> axis_names, int max_zero_index, std::size_t max_elements);
 
   // P parameters.
   VarStatus read_p(std::int64_t idx, double& out) const;
@@ -34,8 +36,8 @@ class Variables {
   VarStatus write(const std::string& key, double v);
   VarStatus write_string(const std::string& key, std::string v);
   // Declares a variable (#VAR). dims empty = scalar. Elements start at 0 / "".
-  // Returns false when the array would be too large.
-  bool declare(const std::string& base, const std::vector<int>& dims, bool is_string);
+  enum class Declared : std::uint8_t { ok, array_too_large, memory_cap };
+  Declared declare(const std::string& base, const std::vector<int>& dims, bool is_string);
   bool is_kernel(std::string_view key) const;
   bool known_kernel(const std::string& key) const;
 
@@ -51,8 +53,11 @@ class Variables {
   const Map* scope_for(std::string_view key) const;
   VarStatus check_index(const Map& m, const std::string& key) const;
 
+  std::size_t declared_elements() const;
+
   std::vector<std::string> axes_;
   int max_zero_index_;
+  std::size_t max_elements_;
   std::unordered_map<std::int64_t, double> p_;
   std::vector<Map> locals_;  // V.L. and V.CYC., one map per call level
   Map globals_;              // V.P., V.S.

@@ -68,7 +68,9 @@ void ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& fe
       const auto& ds = decoder_->diagnostics();
       const Diagnostic d = ds.empty() ? make_diagnostic(ErrorId::NcFileUnreadable, {}, "decoder stopped")
                                       : ds.back();
-      hand_over(planner_->error_command(d.id, d.message, 0, d.loc.line), commands);
+      // The error names the file its line is in (a subroutine's, not the main program's).
+      hand_over(planner_->error_command(d.id, d.message, decoder_->file_id(d.loc.file).value_or(0), d.loc.line),
+                commands);
       done_ = true;
     }
   }

@@ -26,7 +26,11 @@ struct DecoderConfig {
   std::uint32_t max_cache_number = 0;
   std::uint32_t max_cache_size_kb = 0;
   std::uint32_t max_subroutine_depth = 20;
-  std::uint64_t max_loop_iterations = 10'000'000;  // guards against endless $WHILE
+  // One budget for all loop iterations of a run (nested loops share it):
+  // guards against endless $WHILE / $FOR / $DO.
+  std::uint64_t max_loop_iterations = 10'000'000;
+  // Declared program variables (#VAR, every scope together): bounded memory.
+  std::size_t max_variable_elements = 1'000'000;
 
   // Added by the decoder work:
   std::vector<int> spindle_log_axis_numbers;  // same order as spindle_names (#MAIN SPINDLE [nr])
@@ -59,6 +63,8 @@ class Decoder {
   // All diagnostics so far (warnings and the error that stopped decoding).
   const std::vector<Diagnostic>& diagnostics() const;
   const std::string& file_name(std::uint16_t file_id) const;
+  // The id of a file named in a diagnostic (SourceLoc::file), if decoded.
+  std::optional<std::uint16_t> file_id(std::string_view name) const;
   const DecoderConfig& config() const;
 
   // Kernel variables (V.G. / V.A.) and program variables by name, e.g.

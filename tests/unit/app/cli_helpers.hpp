@@ -23,8 +23,9 @@ struct CliResult {
   std::string output;  // stdout and stderr
 };
 
-inline CliResult run_nck(const std::string& args) {
-  const std::string cmd = std::string(NCK_BINARY) + " " + args + " 2>&1";
+// args may carry shell redirections of their own.
+inline CliResult run_nck_raw(const std::string& args) {
+  const std::string cmd = std::string(NCK_BINARY) + " " + args;
   CliResult r;
   FILE* p = popen(cmd.c_str(), "r");
   if (!p) return r;
@@ -34,6 +35,9 @@ inline CliResult run_nck(const std::string& args) {
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
 }
+
+// stdout and stderr together.
+inline CliResult run_nck(const std::string& args) { return run_nck_raw(args + " 2>&1"); }
 
 inline std::filesystem::path temp_dir(const std::string& name) {
   auto d = std::filesystem::temp_directory_path() / ("nck_test_" + name + "_" + std::to_string(getpid()));

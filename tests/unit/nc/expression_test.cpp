@@ -79,7 +79,7 @@ TEST(NcExpression, Errors) {
   EXPECT_TRUE(decode("X[5 MOD 0]\n").has(ErrorId::NcDivisionByZero));
   EXPECT_TRUE(decode("XP7\n").has(ErrorId::NcUndefinedVariable));
   EXPECT_TRUE(decode("X[V.L.NOPE]\n").has(ErrorId::NcUndefinedVariable));
-  EXPECT_TRUE(decode("X" + std::string(200, '[') + "1" + std::string(200, ']') + "\n").has(ErrorId::NcExprSyntax));
+  EXPECT_TRUE(decode("X" + std::string(200, '[') + "1" + std::string(200, ']') + "\n").has(ErrorId::NcExprTooDeep));
 }
 
 }  // namespace
