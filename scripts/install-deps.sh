@@ -4,7 +4,8 @@
 set -euo pipefail
 pkgs=(build-essential g++ cmake ninja-build pkg-config
       libfmt-dev libcli11-dev nlohmann-json3-dev
-      libgtest-dev libgmock-dev googletest libbenchmark-dev)
+      libgtest-dev libgmock-dev googletest libbenchmark-dev
+      clang-14 libclang-rt-14-dev)  # clang 14 + libFuzzer: the fuzz preset
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -33,8 +33,7 @@ struct Pending {
 
 class LineParser {
  public:
-  LineParser(ListKind kind, const std::string& file, Diagnostics& diags)
-      : kind_(kind), file_(file), diags_(diags) {}
+  LineParser(const std::string& file, Diagnostics& diags) : file_(file), diags_(diags) {}
 
   // Converts the value of `line` for parameter `info`; false on a diagnostic.
   bool convert(const ListLine& line, const ParamInfo& info, ParamValue& out, std::optional<std::string>& ref) {
@@ -123,7 +122,6 @@ class LineParser {
     return true;
   }
 
-  ListKind kind_;
   const std::string& file_;
   Diagnostics& diags_;
 };
@@ -167,7 +165,7 @@ bool index_ok(const ListLine& line, const ParamInfo& info, const detail::KeyPart
 
 ParamList ParamList::parse(const ListText& text, ListKind kind, Diagnostics& diags) {
   ParamList list(kind, text.file);
-  LineParser parser(kind, text.file, diags);
+  LineParser parser(text.file, diags);
   std::vector<Pending> pending;
   for (const auto& line : text.lines) {
     detail::KeyParts parts;

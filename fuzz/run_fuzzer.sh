@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Runs one libFuzzer target for SECONDS over its seed corpus and prints
+# libFuzzer's final statistics. The seeds come from examples/, tests/ and
+# ../shared/isg-samples (a missing ../shared is a failure, never a skip).
+# usage: fuzz/run_fuzzer.sh FUZZER decoder|list|scenario SECONDS [CORPUS_DIR]
+set -euo pipefail
+fuzzer=$1 kind=$2 seconds=$3
+root="$(cd "$(dirname "$0")/.." && pwd)"
+corpus=${4:-"$(mktemp -d)"}
+seeds="$(mktemp -d)"
+case "$kind" in
+  decoder)
+    if [ ! -d "$root/../shared/isg-samples" ]; then
+      echo "fuzz: ../shared/isg-samples is missing (the decoder's seed corpus needs it)" >&2
+      exit 1
+    fi
+    find "$root/examples" "$root/tests" "$root/../shared/isg-samples" -type f -name '*.nc' -exec cp -t "$seeds" --backup=numbered {} +
+    dict="$root/fuzz/nc.dict" ;;
+  list)
+    find "$root/examples" "$root/tests" -type f -name '*.lis' -exec cp -t "$seeds" --backup=numbered {} +
+    dict="$root/fuzz/list.dict" ;;
+  scenario)
+    find "$root/examples" "$root/tests" -type f -name '*.plc' -exec cp -t "$seeds" --backup=numbered {} +
+    dict="$root/fuzz/plc.dict" ;;
+  *) echo "fuzz: unknown target kind $kind" >&2; exit 2 ;;
+esac
+mkdir -p "$corpus"
+log="$seeds.log"
+trap 'rm -rf "$seeds" "$log"' EXIT
+# -timeout: one input may take 10 s at most (a hang otherwise); -rss_limit_mb: memory per input.
+rc=0
+"$fuzzer" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 \
+  -dict="$dict" -print_final_stats=1 "$corpus" "$seeds" >"$log" 2>&1 || rc=$?
+# libFuzzer's final statistics, and everything a failure said.
+if [ "$rc" -eq 0 ]; then grep -E '^(stat::|Done [0-9]+ runs)' "$log" || true; else tail -n 60 "$log"; fi
+exit "$rc"
