@@ -49,14 +49,21 @@ TEST(ArchitectureStep, DistanceControlWithoutTheFunctionFlagIs310015) {
   EXPECT_TRUE(found);
 }
 
-// MVS_SLM functions wait at the next feed motion; a channel holds 16 such
-// late waits, the 17th is error 930014 instead of a silently lost wait.
-TEST(ArchitectureStep, TooManyLateWaitsIsAnErrorNotALostWait) {
-  const auto m = patched_example("mill", "late_waits", "channel1.lis", "m_synch[20]  MVS_SLM");
+// The mill with M20 as an MVS_SLM function (waited for at the next feed
+// motion), and a program with `late` M20 blocks before its first G1.
+PatchedMachine late_waits(const std::string& name, int late) {
+  const auto m = patched_example("mill", name, "channel1.lis", "m_synch[20]  MVS_SLM");
   std::string program = "N1 G0 X0\n";
-  for (int i = 0; i < 17; ++i) program += "M20\n";
+  for (int i = 0; i < late; ++i) program += "M20\n";
   program += "G1 X10 F1000\nM30\n";
   std::ofstream(m.dir / "p.nc") << program;
+  return m;
+}
+
+// A channel holds 16 late waits; the 17th is error 930014 instead of a
+// silently lost wait.
+TEST(ArchitectureStep, TooManyLateWaitsIsAnErrorNotALostWait) {
+  const auto m = late_waits("late_waits", 17);
   CliResult r = run_nck("run " + m.dir.string() + " " + (m.dir / "p.nc").string() + " --events " +
                         (m.dir / "e.jsonl").string());
   EXPECT_EQ(r.exit_code, 1) << r.output;
@@ -70,11 +77,7 @@ TEST(ArchitectureStep, TooManyLateWaitsIsAnErrorNotALostWait) {
 
 // 16 late waits fit and are all taken at the G1 (the bound is exact).
 TEST(ArchitectureStep, SixteenLateWaitsFit) {
-  const auto m = patched_example("mill", "late_waits_fit", "channel1.lis", "m_synch[20]  MVS_SLM");
-  std::string program = "N1 G0 X0\n";
-  for (int i = 0; i < 16; ++i) program += "M20\n";
-  program += "G1 X10 F1000\nM30\n";
-  std::ofstream(m.dir / "p.nc") << program;
+  const auto m = late_waits("late_waits_fit", 16);
   CliResult r = run_nck("run " + m.dir.string() + " " + (m.dir / "p.nc").string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
 }
