@@ -10,6 +10,7 @@
 #include "nck/spindle/accel_curve.hpp"
 #include "output_file.hpp"
 
+#include <filesystem>
 #include <sstream>
 
 namespace nck::app {
@@ -48,6 +49,11 @@ int parse_program(const ParseOptions& opt) {
       return 2;
     }
     cfg = prep::decoder_config(*r.machine, opt.channel - 1);
+  }
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(opt.program, ec)) {  // bad usage, not an NC error
+    fmt::print(stderr, "nck: error 940001: the program {} does not exist or is not a file\n", opt.program);
+    return 2;
   }
   cfg.continue_after_error = true;  // lint: report every bad block, not only the first
   nc::Decoder dec(opt.program, cfg);

@@ -59,7 +59,7 @@ void record_events(const kernel::TickOutput& o, const RunNames& names, RunOutput
     if (e.kind != kernel::EventKind::error) continue;
     const std::size_t ch = e.channel - 1u;
     FinalError fe{number(e.id), e.channel, e.line, names.file(ch, e.file_id), names.text(e)};
-    fmt::print(stderr, "{}:{}: error {}: {}\n", fe.file, fe.line, fe.id, fe.msg);
+    fmt::print(stderr, "{}\n", format(Diagnostic{e.id, Severity::error, SourceLoc{fe.file, fe.line, 0}, fe.msg}));
     out.errors.push_back(std::move(fe));
   }
 }
@@ -222,6 +222,14 @@ int run_simulation(const RunOptions& opt) {
   if (auto conflict = output_path_conflict(opt)) {
     fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppOutputPathConflict), *conflict);
     return 2;
+  }
+  for (const std::string& p : opt.programs) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(p, ec)) {  // bad usage, not an NC error
+      fmt::print(stderr, "nck: error {}: the program {} does not exist or is not a file\n",
+                 number(ErrorId::AppBadUsage), p);
+      return 2;
+    }
   }
   config::LoadResult loaded = config::load_machine(opt.machine);
   if (!print_load_diagnostics(loaded)) return 2;

@@ -82,6 +82,7 @@ bool parse_line(std::string_view raw, std::uint32_t line_no, const std::string& 
 }  // namespace
 
 ListText read_list_text(std::string_view text, std::string file, Diagnostics& diags) {
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // a UTF-8 byte-order mark
   ListText out;
   out.file = std::move(file);
   Diagnostics local;

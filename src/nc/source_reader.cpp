@@ -123,6 +123,9 @@ bool SourceReader::read_block(std::size_t max_chars) {
     std::uint32_t seg_line = line_;
     std::size_t room = max_chars + 1 > text_.size() ? max_chars + 1 - text_.size() : 0;
     if (!next_line(room)) return !first;
+    // A UTF-8 byte-order mark at the start of the file is not part of the
+    // program (editors on Windows write one); blanks keep the columns.
+    if (block_pos_.offset == 0 && first && text_.starts_with("\xEF\xBB\xBF")) text_.replace(0, 3, "   ");
     first = false;
     segs_.push_back(Segment{static_cast<std::uint32_t>(seg_start), seg_line, 0});
     if (!text_.empty() && text_.back() == '\r') text_.pop_back();

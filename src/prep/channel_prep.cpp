@@ -56,12 +56,14 @@ void ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& fe
     nc::Decoder::Result r = decoder_->next();
     collect_warnings();
     if (r.status == nc::Decoder::Status::block) {
+      if (r.block.depth == 0) last_main_line_ = r.block.line;
       (void)prepare(r.block, decoder_->file_name(r.block.file_id), commands);
       done_ = r.block.program_end;
       awaiting_feedback_ = needs_feedback(r.block);
     } else if (r.status == nc::Decoder::Status::end) {
+      // Where the program ends: its last block (file 0 is the main program).
       hand_over(planner_->error_command(ErrorId::KernelMissingProgramEnd,
-                                        "the program has no M30 (or M2) at its end", 0, 0),
+                                        "the program has no M30 (or M2) at its end", 0, last_main_line_),
                 commands);
       done_ = true;
     } else {

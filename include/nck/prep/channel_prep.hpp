@@ -73,6 +73,7 @@ class ChannelPrep {
   std::size_t diagnostics_seen_ = 0;
   bool done_ = false;
   bool awaiting_feedback_ = false;
+  std::uint32_t last_main_line_ = 0;  // of the main program's last block decoded
 };
 
 }  // namespace nck::prep
