@@ -75,8 +75,11 @@ int main_cli(int argc, char** argv) {
   fitc->add_option("--point", fit.points, "speed,acceleration above n_grenz (deg/s,deg/s^2); repeat")
       ->required();
 
+  std::string lookup;
   auto* params = app.add_subcommand("params", "Print every accepted list key as a markdown table");
+  params->add_option("KEY", lookup, "only the keys containing KEY (or with this P-... ID)");
   auto* errors = app.add_subcommand("errors", "Print every diagnostic ID as a markdown table");
+  errors->add_option("ID", lookup, "only this ID (or the names containing it)");
 
   try {
     app.parse(argc, argv);
@@ -96,8 +99,8 @@ int main_cli(int argc, char** argv) {
     if (*runc) code = run_simulation(run);
     if (*parsec) code = parse_program(parse);
     if (*fitc) code = fit_curve(fit);
-    if (*params) code = print_parameters();
-    if (*errors) code = print_errors();
+    if (*params) code = print_parameters(lookup);
+    if (*errors) code = print_errors(lookup);
   } catch (const std::exception& e) {  // never an abort: a diagnostic (if stderr takes it) and exit 2
     std::fprintf(stderr, "nck: error %u: %s\n", number(ErrorId::AppInternalError), e.what());
     return 2;

@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <sstream>
+#include <vector>
 
 namespace nck::app {
 
@@ -107,9 +108,44 @@ int fit_curve(const FitOptions& opt) {
   return 0;
 }
 
-int print_parameters() {
-  (void)write_stdout(config::parameters_markdown());
+namespace {
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// The table rows of a generated markdown page whose first two columns
+// contain `lookup`, under the page's table header.
+int print_matching_rows(const std::string& markdown, const std::string& lookup, const char* what) {
+  if (lookup.empty()) {
+    (void)write_stdout(markdown);
+    return 0;
+  }
+  std::vector<std::string> lines;
+  std::istringstream in(markdown);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  std::string header, rows;
+  const std::string needle = lower(lookup);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const bool is_header = i + 1 < lines.size() && lines[i + 1].starts_with("|---");
+    if (is_header && header.empty()) header = lines[i] + "\n" + lines[i + 1] + "\n";
+    if (is_header || !lines[i].starts_with("| ")) continue;
+    const std::size_t second_bar = lines[i].find('|', lines[i].find('|', 1) + 1);
+    if (lower(lines[i].substr(0, second_bar)).find(needle) != std::string::npos) rows += lines[i] + "\n";
+  }
+  if (rows.empty()) {
+    fmt::print(stderr, "nck: no {} matches '{}'\n", what, lookup);
+    return 1;
+  }
+  (void)write_stdout(header + rows);
   return 0;
+}
+
+}  // namespace
+
+int print_parameters(const std::string& lookup) {
+  return print_matching_rows(config::parameters_markdown(), lookup, "list key");
 }
 
 std::string errors_markdown() {
@@ -126,9 +162,6 @@ std::string errors_markdown() {
   return out;
 }
 
-int print_errors() {
-  (void)write_stdout(errors_markdown());
-  return 0;
-}
+int print_errors(const std::string& lookup) { return print_matching_rows(errors_markdown(), lookup, "diagnostic ID"); }
 
 }  // namespace nck::app

@@ -25,8 +25,10 @@ struct FitOptions {
 // nck fit-curve: prints b1 b2 b3; 0 ok, 2 bad input.
 int fit_curve(const FitOptions& opt);
 
-int print_parameters();  // docs/parameters.md
-int print_errors();      // docs/errors.md
+// docs/parameters.md / docs/errors.md, or only the table rows matching
+// `lookup` (case-insensitive; exit 1 when none does).
+int print_parameters(const std::string& lookup = "");
+int print_errors(const std::string& lookup = "");
 std::string errors_markdown();
 
 }  // namespace nck::app

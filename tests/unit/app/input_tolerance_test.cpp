@@ -43,3 +43,22 @@ TEST(InputTolerance, MissingProgramEndPointsAtTheLastLine) {
 
 }  // namespace
 }  // namespace nck::app::testing
+
+namespace nck::app::testing {
+namespace {
+
+// `nck errors ID` and `nck params KEY` show the matching entries only.
+TEST(Lookups, OneErrorIdAndTheKeysOfAName) {
+  CliResult e = run_nck_raw("errors 930001");
+  EXPECT_EQ(e.exit_code, 0);
+  EXPECT_EQ(count_lines(e.output), 3u) << e.output;  // header, separator, the entry
+  EXPECT_NE(e.output.find("| 930001 | error | KernelNotYetSupported"), std::string::npos);
+  CliResult p = run_nck_raw("params getriebe[i].dynamik.vb_max");
+  EXPECT_EQ(p.exit_code, 0);
+  EXPECT_EQ(count_lines(p.output), 3u) << p.output;
+  EXPECT_NE(p.output.find("P-AXIS-00212"), std::string::npos);
+  EXPECT_EQ(run_nck("params no_such_key").exit_code, 1);
+}
+
+}  // namespace
+}  // namespace nck::app::testing
