@@ -72,6 +72,9 @@ const char* kind_name(kernel::EventKind k) {
   return "unknown";
 }
 
+
+}  // namespace
+
 const char* wait_reason_name(kernel::WaitReason r) {
   using W = kernel::WaitReason;
   switch (r) {
@@ -87,8 +90,6 @@ const char* wait_reason_name(kernel::WaitReason r) {
   }
   return "plc_ack";
 }
-
-}  // namespace
 
 const char* end_name(kernel::EndReason r) {
   using R = kernel::EndReason;

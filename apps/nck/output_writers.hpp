@@ -31,6 +31,8 @@ struct RunNames {
 std::string sync_name(std::uint32_t sync_bits);
 // "M30", "error", "interrupted" ... as SPEC 2.3 names them.
 const char* end_name(kernel::EndReason r);
+// "plc_ack", "speed_reached" ... as SPEC 2.3 names them.
+const char* wait_reason_name(kernel::WaitReason r);
 
 // JSON text that never throws (invalid UTF-8 is replaced, not an abort).
 std::string dump_json(const nlohmann::ordered_json& j, int indent = -1);

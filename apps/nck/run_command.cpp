@@ -34,6 +34,7 @@ bool print_load_diagnostics(const config::LoadResult& r) {
 void report_new_warnings(const sim::DryRun& run, double t_s, RunOutputs& out) {
   for (std::size_t ch = 0; ch < run.channel_count(); ++ch)
     for (const Diagnostic& d : run.new_warnings(ch)) {
+      out.summary.warning();
       fmt::print(stderr, "{}\n", format(d));
       if (out.wants_events()) out.event(EventWriter::line(t_s, ch, d), false);
     }
@@ -55,6 +56,7 @@ void report_dropped_events(const kernel::TickOutput& o, const RunNames& names, R
 
 void record_events(const kernel::TickOutput& o, const RunNames& names, RunOutputs& out) {
   for (const kernel::Event& e : o.events) {
+    out.summary.take(e);
     if (out.wants_events()) out.event(EventWriter::line(e, names), e.kind == kernel::EventKind::error);
     if (e.kind != kernel::EventKind::error) continue;
     const std::size_t ch = e.channel - 1u;
@@ -212,6 +214,7 @@ int finish_outputs(const sim::DryRun& run, const RunOptions& opt, const config::
     if (auto e = write_final(opt.final_state, m, run, end_s, end_of_run(run, stopped), out.errors))
       failures.push_back(*e);
   for (const std::string& f : failures) fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppOutputFile), f);
+  fmt::print(stderr, "{}\n", out.summary.text(end_of_run(run, stopped), end_s));
   if (!failures.empty() && code != 130 && code != 143) code = 2;
   return code;
 }

@@ -6,6 +6,7 @@
 
 #include "output_writers.hpp"
 #include "report_writer.hpp"
+#include "run_summary.hpp"
 #include "run_command.hpp"
 
 namespace nck::app {
@@ -15,6 +16,7 @@ struct RunOutputs {
   TraceWriter trace;
   ReportWriter report;
   std::vector<FinalError> errors;
+  RunSummary summary;
 
   // Events are rendered only when a file wants them.
   bool wants_events() const { return events.is_open() || report.enabled(); }

@@ -3,6 +3,8 @@
 // location never says line 0.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include "cli_helpers.hpp"
 
 namespace nck::app::testing {
@@ -58,6 +60,45 @@ TEST(Lookups, OneErrorIdAndTheKeysOfAName) {
   EXPECT_EQ(count_lines(p.output), 3u) << p.output;
   EXPECT_NE(p.output.find("P-AXIS-00212"), std::string::npos);
   EXPECT_EQ(run_nck("params no_such_key").exit_code, 1);
+}
+
+}  // namespace
+}  // namespace nck::app::testing
+
+namespace nck::app::testing {
+namespace {
+
+// h:mm:ss.mmm, computed here independently of the app.
+std::string clock_text(double s) {
+  const long ms = std::lround(s * 1000);
+  return fmt::format("{}:{:02}:{:02}.{:03}", ms / 3600000, ms / 60000 % 60, ms / 1000 % 60, ms % 1000);
+}
+
+// The last line on stderr sums the run up: end reason, cycle time, blocks,
+// errors, warnings and the time spent waiting per reason, all consistent
+// with the events file.
+TEST(EndOfRunSummary, LastLineAgreesWithTheEvents) {
+  const auto dir = temp_dir("summary");
+  const std::string ex = root() + "/examples/mill";
+  CliResult r = run_nck_raw("run " + ex + " " + ex + "/spindle.nc --plc " + ex + "/spindle.plc --events " +
+                            (dir / "e.jsonl").string() + " --final " + (dir / "f.json").string() + " 2>&1 >/dev/null");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto lines = split(r.output, '\n');
+  ASSERT_FALSE(lines.empty());
+  const std::string& last = lines.back();
+  std::size_t blocks = 0;
+  double waited_ack = 0;
+  std::map<std::string, double> since;
+  for (const auto& e : read_jsonl(dir / "e.jsonl")) {
+    blocks += e["ev"] == "block";
+    const std::string key = e.value("reason", "") + e.value("fn", "") + e["spindle"].dump();
+    if (e["ev"] == "wait") since[key] = e["t"].get<double>();
+    if (e["ev"] == "wait_end" && e["reason"] == "plc_ack") waited_ack += e["t"].get<double>() - since[key];
+  }
+  const double end_s = nlohmann::json::parse(read_file(dir / "f.json"))["time"].get<double>();
+  EXPECT_NE(last.find(fmt::format("program_end after {} simulated", clock_text(end_s))), std::string::npos) << last;
+  EXPECT_NE(last.find(fmt::format("; {} block(s), 0 error(s), 0 warning(s)", blocks)), std::string::npos) << last;
+  EXPECT_NE(last.find(fmt::format("plc_ack {:.3f} s", waited_ack)), std::string::npos) << last;
 }
 
 }  // namespace

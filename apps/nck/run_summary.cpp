@@ -1,0 +1,47 @@
+#include "run_summary.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "output_writers.hpp"
+
+namespace nck::app {
+
+std::string clock_time(double s) {
+  const auto ms = static_cast<std::uint64_t>(std::llround(std::max(0.0, s) * 1000));
+  return fmt::format("{}:{:02}:{:02}.{:03}", ms / 3'600'000, ms / 60'000 % 60, ms / 1000 % 60, ms % 1000);
+}
+
+void RunSummary::take(const kernel::Event& e) {
+  using K = kernel::EventKind;
+  switch (e.kind) {
+    case K::block: ++blocks_; break;
+    case K::error: ++errors_; break;
+    case K::warning: ++warnings_; break;
+    case K::wait: open_.push_back({e.channel, e.spindle, e.fn, e.fn_number, e.wait_reason, e.t_s}); break;
+    case K::wait_end: {
+      auto it = std::find_if(open_.begin(), open_.end(), [&](const OpenWait& w) {
+        return w.channel == e.channel && w.spindle == e.spindle && w.fn == e.fn && w.fn_number == e.fn_number &&
+               w.reason == e.wait_reason;
+      });
+      if (it == open_.end()) break;
+      if (it->reason < waited_s_.size()) waited_s_[it->reason] += e.t_s - it->since_s;
+      open_.erase(it);
+      break;
+    }
+    default: break;
+  }
+}
+
+std::string RunSummary::text(const std::string& end_reason, double end_s) const {
+  std::string waits;
+  for (std::size_t r = 0; r < waited_s_.size(); ++r)
+    if (waited_s_[r] > 0)
+      waits += fmt::format("{} {} {:.3f} s", waits.empty() ? "; waited" : ",",
+                           wait_reason_name(static_cast<kernel::WaitReason>(r)), waited_s_[r]);
+  return fmt::format("nck: {} after {} simulated; {} block(s), {} error(s), {} warning(s){}", end_reason,
+                     clock_time(end_s), blocks_, errors_, warnings_, waits);
+}
+
+}  // namespace nck::app
