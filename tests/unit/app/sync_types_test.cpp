@@ -102,6 +102,32 @@ TEST(SyncTypes, PlcInfoAddsTheAcknowledgement) {
   EXPECT_EQ(t.waits[0].first, 3);
 }
 
+// NO_SYNCH means "no output of S/M function to PLC" (FCT-S1 2.5): the speed
+// itself is still commanded (only M3/M4/M5/M19 are not executed), nothing is
+// output or waited for, and `nck check` says so with 910029 on the list line.
+TEST(SyncTypes, NoSynchSpeedIsCommandedWithoutOutputAndCheckExplains) {
+  const auto patched = patched_example("mill", "snosynch", "channel1.lis", "spindel[0].s_synch NO_SYNCH");
+  const auto dir = patched.dir.parent_path();
+  std::ofstream(dir / "p.nc") << "M3 S1000\nG4 X1\nS2000\nG4 X1\nM30\n";
+  CliResult r = run_nck("run " + patched.dir.string() + " " + (dir / "p.nc").string() + " --events " +
+                        (dir / "e.jsonl").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::vector<double> rpm;
+  bool s_out = false, s_wait = false;
+  for (const json& e : read_jsonl(dir / "e.jsonl")) {
+    if (e["ev"] == "spindle" && e["mode"] == "rotate") rpm.push_back(e["rpm"]);
+    if (e["ev"] == "plc_out" && e["fn"] == "S") s_out = true;
+    if (e["ev"] == "wait" && e["fn"] == "S") s_wait = true;
+  }
+  EXPECT_EQ(rpm, (std::vector<double>{1000, 2000}));
+  EXPECT_FALSE(s_out);
+  EXPECT_FALSE(s_wait);
+  CliResult c = run_nck("check " + patched.dir.string());
+  EXPECT_EQ(c.exit_code, 0) << c.output;
+  EXPECT_NE(c.output.find("channel1.lis:" + std::to_string(patched.line) + ": warning 910029"),
+            std::string::npos)
+      << c.output;
+}
 
 // Channel M functions synchronise by m_synch[n] (mill: M6 MVS_SVS with a
 // 1.5 s acknowledgement in sim.lis, M8 MOS, M10 PLC_INFO MVS_SNS).
