@@ -98,5 +98,21 @@ TEST(SpindleState, SChangesASpeedThePlcStarted) {
   EXPECT_EQ(rotations(r, "S1"), (std::vector<double>{500, 800}));
 }
 
+// Facts B4: #MAIN SPINDLE [<spindle_name> | <log_axis_nr>]. In the mill S2
+// has log_achs_nr 5: it becomes S, the former main spindle S1 stays still.
+TEST(SpindleState, MainSpindleByLogicalAxisNumber) {
+  SpindleRun r = run_programs(example("mill"), {"#MAIN SPINDLE [5]\nM3 S1000\nG4 X0.5\nM30\n"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(rotations(r, "S2"), (std::vector<double>{1000}));
+  EXPECT_TRUE(rotations(r, "S1").empty());
+}
+
+TEST(SpindleState, MainSpindleWithAnUnknownLogicalAxisNumberIsReported) {
+  SpindleRun r = run_programs(example("mill"), {"#MAIN SPINDLE [9]\nM3 S1000\nM30\n"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("error 920063"), std::string::npos) << r.output;
+  EXPECT_TRUE(rotations(r, "S1").empty());
+}
+
 }  // namespace
 }  // namespace nck::app
