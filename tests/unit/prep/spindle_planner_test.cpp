@@ -400,8 +400,9 @@ TEST(SpindlePlanner, GearStartsAtInitialStageAndOnlyForMainDin) {
   m.channels[0].spindles[1].autom_range = true;
   auto q = planner(m);
   EXPECT_EQ(ok(q, s2(2, SpindleM::m3, 6000)).size(), 1u);
-  // Gear change disabled: M41 is a free M function, output without waiting.
+  // Gear change disabled: M41 is a free M function, synchronised by m_synch[41].
   m.channels[0].main_spindle_gear_change = false;
+  m.channels[0].m_synch[41] = sync::MOS;
   auto r = planner(m);
   a = ok(r, din(3, SpindleM::m3, 8000, 2));
   ASSERT_EQ(a.size(), 2u);
