@@ -78,9 +78,15 @@ void read_spindles(const ParamList& l, ChannelConfig& c, Diagnostics& d) {
 }
 
 void warn_no_synch(const ParamList& l, const ChannelConfig& c, Diagnostics& d) {
-  if (c.spindle_m_fct_free) return;  // M3..M19 are plain M functions then
   for (std::size_t n = 0; n < c.spindles.size(); ++n) {
     const auto& s = c.spindles[n];
+    // Unlike M3..M19, S under NO_SYNCH is still executed: say what is lost.
+    if ((s.s_synch & ~sync::PLC_INFO) == sync::NO_SYNCH)
+      d.add(ErrorId::ConfigNoSynchSpeed, l.loc(fmt::format("spindel[{}].s_synch", n)),
+            fmt::format("spindel[{}].s_synch of spindle {} is NO_SYNCH: S changes the speed but is "
+                        "not output to the PLC and the path does not wait for the speed",
+                        n, s.name));
+    if (c.spindle_m_fct_free) continue;  // M3..M19 are plain M functions then
     for (auto [fn, v] : {std::pair{"m3", s.m3_synch}, {"m4", s.m4_synch}, {"m5", s.m5_synch}, {"m19", s.m19_synch}}) {
       if (v != sync::NO_SYNCH) continue;
       auto key = fmt::format("spindel[{}].{}_synch", n, fn);

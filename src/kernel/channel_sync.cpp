@@ -29,7 +29,7 @@ bool issued_in(SyncPoint sync, SyncPoint phase) {
 spindle::SpindleResult run(spindle::SpindleAxis& ax, const SpindleAction& a) noexcept {
   switch (a.op) {
     case SpindleOp::rotate: return ax.rotate(a.rpm, a.g167);
-    case SpindleOp::store_speed: return {};
+    case SpindleOp::speed: return {};  // only stored: resolved in issue_spindle
     case SpindleOp::stop: return ax.stop();
     case SpindleOp::position: return ax.position(a.pos_deg, a.direction, a.rpm, a.g167);
     case SpindleOp::home: return ax.home();
@@ -48,6 +48,20 @@ spindle::SpindleResult run(spindle::SpindleAxis& ax, const SpindleAction& a) noe
     case SpindleOp::user_function: return {};
   }
   return {};
+}
+
+// An S alone, decided from what the spindle really does now: a rotation
+// takes the new speed; otherwise it is only stored and nothing moves, so
+// there is no speed to wait for (a PLC acknowledgement still is).
+SpindleAction resolve_speed(const SpindleUnit& u, const SpindleAction& a) noexcept {
+  SpindleAction resolved = a;
+  if (const std::optional<double> rpm = speed_change_rpm(u, a.rpm)) {
+    resolved.op = SpindleOp::rotate;
+    resolved.rpm = *rpm;
+  } else {
+    resolved.wait = SpindleWait::none;
+  }
+  return resolved;
 }
 
 }  // namespace
@@ -102,7 +116,9 @@ bool Channel::issue_spindle(const SpindleAction& a, double t_s, TickOutput& sink
   SpindleUnit& u = ctx.spindles[a.spindle];
   u.channel = number_;
   u.channel_index = local_index(a.spindle);
-  const spindle::SpindleResult r = run(u.axis, a);
+  const SpindleAction now = a.op == SpindleOp::speed ? resolve_speed(u, a) : a;
+  note_rotation(u, a);  // before the command: a gear change needs the state it interrupts
+  const spindle::SpindleResult r = run(u.axis, now);
   if (!r.ok()) {
     raise(r.id, kNoMessage, t_s, sink, ctx);
     return false;
@@ -121,7 +137,7 @@ bool Channel::issue_spindle(const SpindleAction& a, double t_s, TickOutput& sink
   }
   Wait w;
   w.spindle = a.spindle;
-  w.what = a.wait;
+  w.what = now.wait;
   w.fn = function_kind(a.fn);
   w.fn_number = a.fn_number;
   w.deadline_s = a.ack_timeout_s > 0 ? t_s + a.ack_timeout_s : 0;
@@ -133,7 +149,7 @@ bool Channel::issue_spindle(const SpindleAction& a, double t_s, TickOutput& sink
     o.number = a.fn_number;
     o.channel = number_;
     o.spindle = u.channel_index;
-    o.value = a.op == SpindleOp::position ? a.pos_deg : a.rpm;
+    o.value = a.op == SpindleOp::position ? a.pos_deg : now.rpm;
     o.sync = a.sync_bits;
     w.handle = ctx.plc ? ctx.plc->submit(o, sink) : plc::kNoHandle;
     if (w.handle == plc::kNoHandle) {

@@ -83,6 +83,36 @@ void advance_gear_job(SpindleUnit& u, std::int8_t index, PlcOutputs& plc, double
   }
 }
 
+std::optional<double> speed_change_rpm(const SpindleUnit& u, double rpm) noexcept {
+  const spindle::SpindleStatus& s = u.axis.status();
+  if (s.mode == spindle::SpindleMode::rotate) {
+    // Started by the PLC or another channel: its own direction counts.
+    const int dir = s.programmed_rpm > 0 ? 1 : s.programmed_rpm < 0 ? -1 : u.rotation_dir;
+    return dir * rpm;
+  }
+  if (s.mode == spindle::SpindleMode::stop && u.rotation_across_gear_change) return u.rotation_dir * rpm;
+  return std::nullopt;
+}
+
+void note_rotation(SpindleUnit& u, const SpindleAction& a) noexcept {
+  const spindle::SpindleStatus& s = u.axis.status();
+  switch (a.op) {
+    case SpindleOp::gear_change:
+      u.rotation_across_gear_change = s.mode == spindle::SpindleMode::rotate;
+      if (s.programmed_rpm != 0) u.rotation_dir = s.programmed_rpm > 0 ? 1 : -1;
+      return;
+    case SpindleOp::rotate:
+      u.rotation_dir = a.direction == spindle::Direction::negative ? -1 : 1;
+      u.rotation_across_gear_change = false;
+      return;
+    case SpindleOp::speed:
+    case SpindleOp::stop:
+    case SpindleOp::position:
+    case SpindleOp::home: u.rotation_across_gear_change = false; return;
+    default: return;  // G130, G135, tool data... leave the rotation alone
+  }
+}
+
 void fill_hli_status(const SpindleUnit& u, plc::SpindleStatus& h) noexcept {
   const spindle::SpindleStatus& s = u.axis.status();
   using spindle::SpindleMode;

@@ -4,7 +4,9 @@
 // (approach the change position, let the PLC shift, take the new data).
 // A spindle known to several channels is one unit.
 #include <cstdint>
+#include <optional>
 
+#include "nck/kernel/spindle_action.hpp"
 #include "nck/kernel/tick_io.hpp"
 #include "nck/plc/hli.hpp"
 #include "plc_outputs.hpp"
@@ -26,6 +28,13 @@ struct SpindleUnit {
   plc::OutputHandle gear_handle = plc::kNoHandle;
   bool gear_acked = false;
   bool gear_output_delayed = false;  // reported once: the PLC's outputs were full
+
+  // Endless rotation as the channels left it, beyond what the interpolator's
+  // mode tells: the direction of the last M3/M4 (a spindle may turn at 0 rpm
+  // after M3 without a speed), and whether a gear change interrupted a
+  // rotation (only M5, G74 and M19 end it, FCT-S1 2.3.1).
+  std::int8_t rotation_dir = 1;
+  bool rotation_across_gear_change = false;
 
   // external command (HLI) in progress: its sequence number (0 = none) and M function
   std::uint32_t ext_seq = 0;
@@ -66,6 +75,14 @@ void report_spindle_changes(SpindleUnit& u, std::int8_t index, double t_s, TickO
 // PLC; its acknowledgement (gear_acked) finishes the change. rt
 void advance_gear_job(SpindleUnit& u, std::int8_t index, PlcOutputs& plc, double t_s,
                       TickOutput& out) noexcept;
+
+// The signed speed an S word alone commands now, or nullopt when it only
+// stores the speed: it changes the speed of a spindle in endless rotation,
+// whoever started it. rt
+std::optional<double> speed_change_rpm(const SpindleUnit& u, double rpm) noexcept;
+
+// Records what a channel's spindle action does to the endless rotation. rt
+void note_rotation(SpindleUnit& u, const SpindleAction& a) noexcept;
 
 // The HLI status object of a spindle. rt
 void fill_hli_status(const SpindleUnit& u, plc::SpindleStatus& s) noexcept;

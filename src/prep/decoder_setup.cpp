@@ -11,6 +11,7 @@ nc::DecoderConfig decoder_config(const config::Machine& m, std::size_t ch) {
   for (const auto& ax : c.axes) d.axis_names.push_back(ax.name);
   for (const auto& s : c.spindles) {
     d.spindle_names.push_back(s.name);
+    d.spindle_log_axis_numbers.push_back(static_cast<int>(s.log_axis_nr));  // #MAIN SPINDLE [nr]
     if (s.log_axis_nr == c.main_spindle_ax_nr) d.main_spindle = s.name;
   }
   if (d.main_spindle.empty() || c.main_spindle_ax_nr == 0)

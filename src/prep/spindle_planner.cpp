@@ -114,9 +114,11 @@ std::expected<SpindleActions, Diagnostic> SpindlePlanner::plan(const nc::Block& 
 
 namespace {
 
-// S alone: a rotating spindle takes the new speed in its direction; a
-// stopped or positioned one only remembers it. NO_SYNCH on S: remembered,
-// not output. G167 without a speed only suspends the override.
+// S alone. Whether it changes the running speed or only stores it depends
+// on what the spindle is really doing when the block executes, which
+// preparation cannot know (a PLC command, another channel, a PLC reset may
+// come first): the kernel decides (speed_change_rpm). G167 without a speed
+// only suspends the override.
 std::optional<SpindleAction> speed_only(const nc::SpindleCommand& c, const config::ChannelSpindle& sp,
                                         std::int8_t kidx, bool plc, const PlannedSpindle& st) {
   if (!c.rev_rpm) {
@@ -125,21 +127,11 @@ std::optional<SpindleAction> speed_only(const nc::SpindleCommand& c, const confi
     g.g167 = true;
     return g;
   }
-  SpindleAction a = plain(kidx, SpindleOp::store_speed);
+  SpindleAction a = plain(kidx, SpindleOp::speed);
   a.g167 = c.g167;
-  const std::optional<SyncPoint> s_point = sync_point(sp.s_synch);
-  const bool rotating = st.motion == PlannedMotion::m3 || st.motion == PlannedMotion::m4;
-  if (rotating && s_point) {
-    const bool cw = st.motion == PlannedMotion::m3;
-    a.op = SpindleOp::rotate;
-    a.direction = cw ? spindle::Direction::positive : spindle::Direction::negative;
-    a.rpm = cw ? *st.speed_rpm : -*st.speed_rpm;
-    synchronise(a, sp.s_synch, *s_point, SpindleWait::speed_reached, sp.s_prozess_zeit_s, plc);
-    return a;
-  }
   a.rpm = *st.speed_rpm;
-  // A stored speed moves nothing, so there is nothing to wait for.
-  synchronise(a, sp.s_synch, s_point.value_or(SyncPoint::none), SpindleWait::none,
+  const std::optional<SyncPoint> s_point = sync_point(sp.s_synch);
+  synchronise(a, sp.s_synch, s_point.value_or(SyncPoint::none), SpindleWait::speed_reached,
               sp.s_prozess_zeit_s, plc);
   if (!s_point) a.output = false;
   return a;
@@ -185,7 +177,6 @@ std::expected<std::optional<SpindleAction>, Diagnostic> main_action(const nc::Bl
       a.rpm = *st.speed_rpm;
       a.direction = direction_of(c.direction);
       synchronise(a, bits, *point, SpindleWait::in_position, timeout_s, plc);
-      st.motion = PlannedMotion::positioned;
       return a;
     case SpindleM::m3:
     case SpindleM::m4:
@@ -201,12 +192,10 @@ std::expected<std::optional<SpindleAction>, Diagnostic> main_action(const nc::Bl
       a.direction = direction_of(m);
       a.rpm = m == SpindleM::m3 ? *st.speed_rpm : -*st.speed_rpm;
       synchronise(a, bits, *point, SpindleWait::speed_reached, timeout_s, plc);
-      st.motion = m == SpindleM::m3 ? PlannedMotion::m3 : PlannedMotion::m4;
       return a;
     case SpindleM::m5:
       a.op = SpindleOp::stop;
       synchronise(a, bits, *point, SpindleWait::standstill, timeout_s, plc);
-      st.motion = PlannedMotion::stopped;
       return a;
     default: break;
   }
@@ -233,7 +222,7 @@ std::expected<void, Diagnostic> SpindlePlanner::plan_command(const nc::Block& b,
   auto main = main_action(b, c, sp, s.kernel_spindle, s.plc, s.st);
   if (!main) return std::unexpected(main.error());
   const bool moves = *main && ((*main)->op == SpindleOp::rotate || (*main)->op == SpindleOp::position ||
-                               (*main)->op == SpindleOp::store_speed);
+                               (*main)->op == SpindleOp::speed);
   auto push = [&](const SpindleAction& a) -> std::expected<void, Diagnostic> {
     if (out.push_back(a)) return {};
     return std::unexpected(diag(b, c, ErrorId::KernelSpindleTooManyActions,

@@ -66,7 +66,8 @@ std::expected<void, Diagnostic> SpindlePlanner::plan_gear(Step& s, std::optional
                 "too many spindle actions in one block; split the spindle commands over several blocks");
   };
   // Gear changes exist only for the main spindle in DIN syntax and only when
-  // enabled; otherwise M40..M45 are ordinary M functions, output to the PLC.
+  // enabled; otherwise M40..M45 are free M functions (facts B6),
+  // synchronised by their m_synch[n] like any other (NO_SYNCH: no output).
   if (!c.din || !channel_->main_spindle_gear_change) {
     if (!c.gear_stage) return {};
     SpindleAction a;
@@ -74,8 +75,11 @@ std::expected<void, Diagnostic> SpindlePlanner::plan_gear(Step& s, std::optional
     a.op = SpindleOp::user_function;
     a.fn = 'M';
     a.fn_number = 39 + *c.gear_stage;
-    a.sync_bits = config::sync::MOS;
-    a.output = true;
+    a.sync_bits = channel_->m_synch[static_cast<std::size_t>(a.fn_number)];
+    const std::optional<SyncPoint> point = sync_point(a.sync_bits);
+    if (!point) return {};
+    a.sync = *point;
+    a.output = true;  // the PLC acknowledgement is its only wait
     return push(a);
   }
   if (!c.gear_stage && !speed_rpm) return {};

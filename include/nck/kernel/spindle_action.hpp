@@ -12,7 +12,9 @@ namespace nck::kernel {
 
 enum class SpindleOp : std::uint8_t {
   rotate,            // M3 / M4 / S while rotating: rpm signed (+ M3, - M4)
-  store_speed,       // S while stopped: remembered, no motion (still output / synchronised per s_synch)
+  speed,             // S alone, rpm unsigned: the channel decides when it executes it
+                     // (speed_change_rpm): a spindle in endless rotation takes the new
+                     // speed in its direction, any other only stores it
   stop,              // M5
   position,          // M19: pos_deg, direction, rpm
   home,              // G74 (the channel never waits for it)

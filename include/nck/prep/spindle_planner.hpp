@@ -2,8 +2,11 @@
 // Spindle planning (setup side): turns the spindle words of one decoded block
 // into SpindleActions in execution order. The planner runs ahead of the
 // cyclic execution, so it keeps its own PLANNED modal state per spindle
-// (direction, speed, POS, gear stage) and decides from that state alone:
-// rotate or store a speed, which gear stage, which synchronisation.
+// (speed, POS, gear stage) and decides from it which gear stage and which
+// synchronisation. Whether the spindle turns is not part of that state:
+// the PLC, another channel or a reset may stop or start it in between, so
+// whether an S alone changes the running speed is decided at execution
+// (SpindleOp::speed).
 #include <cstdint>
 #include <expected>
 #include <optional>
@@ -19,12 +22,8 @@ namespace nck::prep {
 
 using SpindleActions = FixedVector<SpindleAction, Command::kMaxSpindleActions>;
 
-// What the planner believes a spindle will be doing once everything planned
-// so far has executed.
-enum class PlannedMotion : std::uint8_t { stopped, m3, m4, positioned };
-
+// The modal spindle data of the program, as planned so far.
 struct PlannedSpindle {
-  PlannedMotion motion = PlannedMotion::stopped;  // M5 is the start-up state
   std::optional<double> speed_rpm;   // last S / REV (modal, unsigned as programmed)
   std::optional<double> pos_deg;     // last POS / S.POS (modal)
   double pos_shift_deg = 0;          // S.POS_SHIFT (modal, added to every POS)
@@ -44,7 +43,7 @@ class SpindlePlanner {
   // The diagnostic carries the block's line (file left empty). // setup
   std::expected<SpindleActions, Diagnostic> plan(const nc::Block& b);
 
-  // Back to the start-up state (all stopped, no speed, initial gear stage).
+  // Back to the start-up state (no speed, no POS, initial gear stage).
   void reset();
 
   std::size_t spindle_count() const { return state_.size(); }

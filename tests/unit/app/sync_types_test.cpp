@@ -102,6 +102,59 @@ TEST(SyncTypes, PlcInfoAddsTheAcknowledgement) {
   EXPECT_EQ(t.waits[0].first, 3);
 }
 
+// NO_SYNCH means "no output of S/M function to PLC" (FCT-S1 2.5): the speed
+// itself is still commanded (only M3/M4/M5/M19 are not executed), nothing is
+// output or waited for, and `nck check` says so with 910029 on the list line.
+TEST(SyncTypes, NoSynchSpeedIsCommandedWithoutOutputAndCheckExplains) {
+  const auto patched = patched_example("mill", "snosynch", "channel1.lis", "spindel[0].s_synch NO_SYNCH");
+  const auto dir = patched.dir.parent_path();
+  std::ofstream(dir / "p.nc") << "M3 S1000\nG4 X1\nS2000\nG4 X1\nM30\n";
+  CliResult r = run_nck("run " + patched.dir.string() + " " + (dir / "p.nc").string() + " --events " +
+                        (dir / "e.jsonl").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::vector<double> rpm;
+  bool s_out = false, s_wait = false;
+  for (const json& e : read_jsonl(dir / "e.jsonl")) {
+    if (e["ev"] == "spindle" && e["mode"] == "rotate") rpm.push_back(e["rpm"]);
+    if (e["ev"] == "plc_out" && e["fn"] == "S") s_out = true;
+    if (e["ev"] == "wait" && e["fn"] == "S") s_wait = true;
+  }
+  EXPECT_EQ(rpm, (std::vector<double>{1000, 2000}));
+  EXPECT_FALSE(s_out);
+  EXPECT_FALSE(s_wait);
+  CliResult c = run_nck("check " + patched.dir.string());
+  EXPECT_EQ(c.exit_code, 0) << c.output;
+  EXPECT_NE(c.output.find("channel1.lis:" + std::to_string(patched.line) + ": warning 910029"),
+            std::string::npos)
+      << c.output;
+}
+
+// With gear change off, M40..M45 are free M functions (facts B6, FCT-S1
+// 2.8.2): m_synch[41] MVS_SVS with a 1 s acknowledgement holds the path.
+TEST(SyncTypes, FreeGearMFunctionFollowsItsMSynch) {
+  const auto patched = patched_example("mill", "m41synch", "channel1.lis", "m_synch[41] MVS_SVS");
+  const auto dir = patched.dir.parent_path();
+  std::string sim = read_file(patched.dir / "sim.lis");
+  sim.insert(sim.rfind("Ende"), "m_ack_delay_ms[41] 1000\n");
+  std::ofstream(patched.dir / "sim.lis") << sim;
+  std::ofstream(dir / "p.nc") << "N10 M41 G1 X10 F6000\nN20 M30\n";
+  CliResult r = run_nck("run " + patched.dir.string() + " " + (dir / "p.nc").string() + " --events " +
+                        (dir / "e.jsonl").string() + " --trace " + (dir / "t.csv").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  double out_t = -1, ack_t = -1;
+  for (const json& e : read_jsonl(dir / "e.jsonl")) {
+    if (e["ev"] == "plc_out" && e["fn"] == "M41") out_t = e["t"];
+    if (e["ev"] == "plc_ack" && e["fn"] == "M41") ack_t = e["t"];
+  }
+  EXPECT_DOUBLE_EQ(out_t, 0.0);
+  EXPECT_NEAR(ack_t, 1.0, 1e-9);
+  // X still at 0 until the acknowledgement.
+  for (const std::string& line : split(read_file(dir / "t.csv"), '\n')) {
+    const auto c = split(line, ',');
+    if (c.size() < 2 || c[0] == "t" || std::stod(c[0]) >= 1.0) continue;
+    EXPECT_EQ(std::stod(c[1]), 0.0) << line;
+  }
+}
 
 // Channel M functions synchronise by m_synch[n] (mill: M6 MVS_SVS with a
 // 1.5 s acknowledgement in sim.lis, M8 MOS, M10 PLC_INFO MVS_SNS).

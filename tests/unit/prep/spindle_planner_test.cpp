@@ -92,11 +92,12 @@ Diagnostic fails(SpindlePlanner& p, const nc::Block& b) {
 TEST(SpindlePlanner, RotateStoreStopAndModalSpeed) {
   auto m = spindle_machine();
   auto p = planner(m);
-  auto a = ok(p, din(10, SpindleM::none, 1000));  // N10 S1000: stopped -> stored only
+  // N10 S1000: a speed action; the kernel stores it since nothing turns
+  auto a = ok(p, din(10, SpindleM::none, 1000));
   ASSERT_EQ(a.size(), 1u);
-  EXPECT_EQ(a[0].op, SpindleOp::store_speed);
+  EXPECT_EQ(a[0].op, SpindleOp::speed);
   EXPECT_EQ(a[0].rpm, 1000);
-  EXPECT_EQ(a[0].wait, SpindleWait::none);
+  EXPECT_EQ(a[0].wait, SpindleWait::speed_reached);  // dropped by the kernel when only stored
   EXPECT_EQ(a[0].fn, 'S');
   a = ok(p, din(20, SpindleM::m3));  // N20 M03: the stored speed
   ASSERT_EQ(a.size(), 1u);
@@ -109,22 +110,19 @@ TEST(SpindlePlanner, RotateStoreStopAndModalSpeed) {
   EXPECT_FALSE(a[0].output);
   EXPECT_EQ(a[0].fn, 'M');
   EXPECT_EQ(a[0].fn_number, 3);
-  a = ok(p, din(40, SpindleM::none, 500));  // N40 S500 while rotating: new speed, same direction
+  a = ok(p, din(40, SpindleM::none, 500));  // N40 S500: the kernel keeps the direction
   ASSERT_EQ(a.size(), 1u);
-  EXPECT_EQ(a[0].op, SpindleOp::rotate);
+  EXPECT_EQ(a[0].op, SpindleOp::speed);
   EXPECT_EQ(a[0].rpm, 500);
   EXPECT_EQ(a[0].fn, 'S');
   a = ok(p, din(45, SpindleM::m4));
   EXPECT_EQ(a[0].rpm, -500);
   EXPECT_EQ(a[0].direction, spindle::Direction::negative);
-  a = ok(p, din(46, SpindleM::none, 700));  // kept direction M4
-  EXPECT_EQ(a[0].rpm, -700);
   a = ok(p, din(50, SpindleM::m5, 300));  // N50 M05 S300: stop, S stored but not output
   ASSERT_EQ(a.size(), 1u);
   EXPECT_EQ(a[0].op, SpindleOp::stop);
   EXPECT_EQ(a[0].wait, SpindleWait::standstill);
   EXPECT_EQ(a[0].fn_number, 5);
-  EXPECT_EQ(p.planned(0).motion, PlannedMotion::stopped);
   EXPECT_EQ(p.planned(0).speed_rpm, 300);
   a = ok(p, din(60, SpindleM::m3));
   EXPECT_EQ(a[0].rpm, 300);
@@ -138,7 +136,6 @@ TEST(SpindlePlanner, M3WithoutAnySpeedIsAnErrorAndChangesNothing) {
   EXPECT_EQ(d.loc.line, 7u);
   EXPECT_EQ(d.loc.column, 5u);
   EXPECT_NE(d.message.find("program S"), std::string::npos) << d.message;
-  EXPECT_EQ(p.planned(0).motion, PlannedMotion::stopped);
   EXPECT_EQ(fails(p, s2(8, SpindleM::m4)).id, ErrorId::KernelSpindleNoSpeed);
   auto a = ok(p, din(9, SpindleM::m3, 100));
   EXPECT_EQ(a[0].rpm, 100);
@@ -158,7 +155,6 @@ TEST(SpindlePlanner, M19PositionSpeedAndDirection) {
   EXPECT_EQ(a[0].direction, spindle::Direction::none);
   EXPECT_EQ(a[0].wait, SpindleWait::in_position);
   EXPECT_EQ(a[0].fn_number, 19);
-  EXPECT_EQ(p.planned(0).motion, PlannedMotion::positioned);
   nc::Block b = din(20, SpindleM::m19);  // M19 S.POS=180 M04: speed kept, POS modal
   b.spindles[0].pos_deg = 180;
   b.spindles[0].direction = SpindleM::m4;
@@ -172,8 +168,8 @@ TEST(SpindlePlanner, M19PositionSpeedAndDirection) {
   a = ok(p, b);
   EXPECT_EQ(a[0].pos_deg, 190);  // modal POS 180 + POS_SHIFT 10
   EXPECT_EQ(a[0].direction, spindle::Direction::positive);
-  a = ok(p, din(40, SpindleM::none, 900));  // S while positioned: stored only
-  EXPECT_EQ(a[0].op, SpindleOp::store_speed);
+  a = ok(p, din(40, SpindleM::none, 900));  // S while positioned: the kernel only stores it
+  EXPECT_EQ(a[0].op, SpindleOp::speed);
 }
 
 TEST(SpindlePlanner, SyncBitsMapToSyncPoints) {
@@ -224,25 +220,24 @@ TEST(SpindlePlanner, NoSynchMFunctionIsNotExecuted) {
   EXPECT_EQ(a.size(), 0u);
   a = ok(p, din(20, SpindleM::m3, 500));  // M3 dropped; the S word stays: stored
   ASSERT_EQ(a.size(), 1u);
-  EXPECT_EQ(a[0].op, SpindleOp::store_speed);
-  EXPECT_EQ(p.planned(0).motion, PlannedMotion::stopped);
+  EXPECT_EQ(a[0].op, SpindleOp::speed);
   a = ok(p, din(30, SpindleM::m4));
   EXPECT_EQ(a[0].rpm, -500);
   a = ok(p, din(40, SpindleM::m5));  // M5 NO_SYNCH: keeps turning
   EXPECT_EQ(a.size(), 0u);
-  EXPECT_EQ(p.planned(0).motion, PlannedMotion::m4);
 }
 
-TEST(SpindlePlanner, NoSynchSpeedIsStoredNotOutput) {
+TEST(SpindlePlanner, NoSynchSpeedIsCommandedNotOutputNotWaitedFor) {
   auto m = spindle_machine();
   m.channels[0].spindles[0].s_synch = sync::NO_SYNCH | sync::PLC_INFO;
   auto p = planner(m);
   ok(p, din(10, SpindleM::m3, 1000));
   auto a = ok(p, din(20, SpindleM::none, 2000));
   ASSERT_EQ(a.size(), 1u);
-  EXPECT_EQ(a[0].op, SpindleOp::store_speed);
+  EXPECT_EQ(a[0].op, SpindleOp::speed);
   EXPECT_FALSE(a[0].output);
   EXPECT_EQ(a[0].sync, SyncPoint::none);
+  EXPECT_EQ(a[0].wait, SpindleWait::none);
   EXPECT_EQ(p.planned(0).speed_rpm, 2000);
 }
 
@@ -301,14 +296,13 @@ TEST(SpindlePlanner, SeedSyncExample2SpindleSynchronous) {
   // The seed's N10 M3 relies on a speed set before; with none it is our error.
   EXPECT_EQ(fails(p, din(10, SpindleM::m3)).id, ErrorId::KernelSpindleNoSpeed);
   auto a = ok(p, din(5, SpindleM::none, 200));  // prelude: a speed is set
-  EXPECT_EQ(a[0].op, SpindleOp::store_speed);
-  EXPECT_EQ(a[0].wait, SpindleWait::none);
+  EXPECT_EQ(a[0].op, SpindleOp::speed);
   a = ok(p, din(10, SpindleM::m3));  // N10 M3 X0 Y0 G0
   EXPECT_EQ(a[0].sync, SyncPoint::none);
   EXPECT_EQ(a[0].wait, SpindleWait::none);
   a = ok(p, din(20, SpindleM::none, 500));  // N20 X40 Y40 G1 F1500 S500
   ASSERT_EQ(a.size(), 1u);
-  EXPECT_EQ(a[0].op, SpindleOp::rotate);
+  EXPECT_EQ(a[0].op, SpindleOp::speed);
   EXPECT_EQ(a[0].rpm, 500);
   EXPECT_EQ(a[0].sync, SyncPoint::before);
   EXPECT_EQ(a[0].wait, SpindleWait::speed_reached);
@@ -353,7 +347,7 @@ void run_gears(const config::Machine& m, const std::vector<GearRow>& rows) {
       EXPECT_EQ(a[0].wait, SpindleWait::gear_change);
       EXPECT_TRUE(a[0].output);
     }
-    EXPECT_EQ(a[a.size() - 1].op, SpindleOp::rotate);
+    EXPECT_EQ(a[a.size() - 1].op, r.m == SpindleM::none ? SpindleOp::speed : SpindleOp::rotate);
     EXPECT_EQ(a[a.size() - 1].rpm, r.s_rpm);
     EXPECT_EQ(p.planned(0).gear_stage, r.stage_after);
   }
@@ -406,8 +400,9 @@ TEST(SpindlePlanner, GearStartsAtInitialStageAndOnlyForMainDin) {
   m.channels[0].spindles[1].autom_range = true;
   auto q = planner(m);
   EXPECT_EQ(ok(q, s2(2, SpindleM::m3, 6000)).size(), 1u);
-  // Gear change disabled: M41 is a free M function, output without waiting.
+  // Gear change disabled: M41 is a free M function, synchronised by m_synch[41].
   m.channels[0].main_spindle_gear_change = false;
+  m.channels[0].m_synch[41] = sync::MOS;
   auto r = planner(m);
   a = ok(r, din(3, SpindleM::m3, 8000, 2));
   ASSERT_EQ(a.size(), 2u);
@@ -522,7 +517,7 @@ TEST(SpindlePlanner, OtherSpindleFunctionsInOrder) {
   g = s2(5, SpindleM::none, 3000);  // G167 with a speed: flag on the speed action
   g.spindles[0].g167 = true;
   a = ok(p, g);
-  EXPECT_EQ(a[0].op, SpindleOp::rotate);
+  EXPECT_EQ(a[0].op, SpindleOp::speed);
   EXPECT_TRUE(a[0].g167);
   g.spindles[0].rev_rpm.reset();  // S2[G167] alone
   a = ok(p, g);
