@@ -198,12 +198,14 @@ OffsetChain::Result OffsetChain::pset(int axis, double value_mm, const McsPoint&
   if (auto ok = check_axis(axis, value_mm); !ok) return ok;
   auto j = static_cast<std::size_t>(axis);
   if (!std::isfinite(actual.pos_mm[j])) return fail(ErrorId::FrValueNotFinite, axis);
-  // Strip the machine-level offsets except the preset itself: what remains
-  // is the WCS coordinate of the actual position before any preset.
-  AxisValues v = actual.pos_mm;
-  AxisValues others = wcs_sum(state_, SuppressMask::none(), false);
-  double tool = state_.tool_mcs.effective[j] + (state_.tool.tool_fixed ? state_.tlc.effective[j] : 0);
-  state_.pset.selected[j] = v[j] - others[j] - tool - value_mm;
+  // The program position of the actual point shall read value_mm on `axis`.
+  // Read it through the whole chain without a preset (so tool lengths in
+  // machining directions, #CS and #ROTATION count too), put value_mm in, map
+  // that point back: the preset is what separates it from the actual point.
+  constexpr SuppressMask kWithoutPreset{SuppressMask::kPset};
+  PcsPoint wanted = to_pcs(actual, kWithoutPreset);
+  wanted.pos_mm[j] = value_mm;
+  state_.pset.selected[j] = actual.pos_mm[j] - to_mcs(wanted, kWithoutPreset).pos_mm[j];
   return {};
 }
 

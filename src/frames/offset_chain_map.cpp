@@ -26,12 +26,12 @@ bool any_nonzero(const AxisValues& v) {
 }  // namespace
 
 // Sum of the WCS-level translations (zero, G92, PSET, G101, clamp).
-AxisValues OffsetChain::wcs_sum(const State& s, SuppressMask m, bool with_pset) const {
+AxisValues OffsetChain::wcs_sum(const State& s, SuppressMask m) const {
   AxisValues sum{};
   for (std::size_t j = 0; j < config_.axis_count; ++j) {
     if (!m.has(SuppressMask::kZero)) sum[j] += s.zero.effective[j];
     if (!m.has(SuppressMask::kAddZero)) sum[j] += s.g92.effective[j];
-    if (with_pset && !m.has(SuppressMask::kPset)) sum[j] += s.pset.effective[j];
+    if (!m.has(SuppressMask::kPset)) sum[j] += s.pset.effective[j];
     if (!m.has(SuppressMask::kMeasure)) sum[j] += s.measure.effective[j];
     if (!m.has(SuppressMask::kClamp)) sum[j] += s.clamp[j];
   }
@@ -53,7 +53,7 @@ void OffsetChain::add_pcs_level(AxisValues& v, SuppressMask m, double sign) cons
 
 void OffsetChain::add_mcs_level(AxisValues& v, SuppressMask m, double sign) const {
   const State& s = state_;
-  AxisValues sum = wcs_sum(s, m, true);
+  AxisValues sum = wcs_sum(s, m);
   bool tool = !m.has(SuppressMask::kTool);
   bool tlc_here = tool && s.tool.tool_fixed;
   for (std::size_t j = 0; j < config_.axis_count; ++j) {

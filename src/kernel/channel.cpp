@@ -11,6 +11,8 @@ Channel::Channel(std::size_t index, std::size_t n_axes, const std::vector<std::i
       number_(static_cast<std::uint8_t>(index + 1)),
       n_axes_(n_axes) {
   for (std::int8_t s : spindles) (void)spindles_.push_back(s);
+  manual_share_.fill(1.0);
+  manual_share_start_.fill(1.0);
 }
 
 Event Channel::event(EventKind k, double t_s) const noexcept {
@@ -80,6 +82,7 @@ void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelConte
   }
   manual_mask_ = (manual_mask_ | c.manual_on) & ~c.manual_off;
   if (c.get_manual_offsets) manual_fetch_pending_ = true;
+  manual_share_start_ = manual_share_;
   if (c.feed_motion) take_late_waits(SyncPoint::late_motion);
   if (c.expl_syn) take_late_waits(SyncPoint::late_explicit);
   issue_all(SyncPoint::before, t_s, sink, ctx);
@@ -122,7 +125,7 @@ void Channel::end_measuring_run(const ChannelInput& in, TickOutput& sink) noexce
   f.kind = FeedbackKind::measured;
   f.measure.triggered = in.probe_switched && probe_armed_;
   if (f.measure.triggered)
-    for (std::size_t j = 0; j < n_axes_; ++j) pos_[j] = in.probe_latched_mcs[j] - manual_mm_[j];
+    for (std::size_t j = 0; j < n_axes_; ++j) pos_[j] = in.probe_latched_mcs[j] - manual_in_force_mm_[j];
   f.measure.mcs = pos_;
   velocity_ = 0;
   awaiting_probe_ = false;
@@ -143,13 +146,15 @@ void Channel::send_feedback(const Feedback& f, TickOutput& sink) noexcept {
 
 motion::AxisVector Channel::machine_position() const noexcept {
   motion::AxisVector m = pos_;
-  for (std::size_t j = 0; j < n_axes_; ++j) m[j] += manual_mm_[j];
+  for (std::size_t j = 0; j < n_axes_; ++j) m[j] += manual_in_force_mm_[j];
   return m;
 }
 
 // The set point at path length s: the segment's point, mapped from program
 // to machine coordinates when a rotation acts.
 void Channel::place(double s_mm) noexcept {
+  const double length = current_.segment.length();
+  take_manual_share(length > 0 ? std::clamp(s_mm / length, 0.0, 1.0) : 1.0);
   if (!current_.mapped) {
     current_.segment.point_at(s_mm, pos_);
     return;
@@ -224,7 +229,7 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
     }
   }
   follow_handwheel(dt_s, in, sink);
-  for (std::size_t j = 0; j < n_axes_; ++j) out.axis_mcs[j] = pos_[j] + manual_mm_[j];
+  for (std::size_t j = 0; j < n_axes_; ++j) out.axis_mcs[j] = pos_[j] + manual_in_force_mm_[j];
   out.path_velocity_mm_s = velocity_;
   out.status = status_;
 }
@@ -238,6 +243,7 @@ void Channel::follow_handwheel(double dt_s, const ChannelInput& in, TickOutput& 
     if ((manual_mask_ >> j) & 1u) manual_target_mm_[j] += in.handwheel_mm[j];
     const double d = manual_target_mm_[j] - manual_mm_[j];
     manual_mm_[j] += std::clamp(d, -step, step);
+    manual_in_force_mm_[j] = manual_mm_[j] * manual_share_[j];
   }
   if (!manual_fetch_pending_) return;
   manual_fetch_pending_ = false;
@@ -245,6 +251,16 @@ void Channel::follow_handwheel(double dt_s, const ChannelInput& in, TickOutput& 
   f.kind = FeedbackKind::manual_offsets;
   f.manual_offsets_mm = manual_mm_;
   send_feedback(f, sink);
+}
+
+// A motion block takes the handwheel offset of its axes in or out (command
+// manual_offset_axes) in step with its path, `fraction` = 0 at its start and
+// 1 at its end, so the set point never jumps by the offset.
+void Channel::take_manual_share(double fraction) noexcept {
+  for (std::size_t j = 0; j < n_axes_; ++j) {
+    const double target = (current_.manual_offset_axes >> j) & 1u ? 1.0 : 0.0;
+    manual_share_[j] = manual_share_start_[j] + (target - manual_share_start_[j]) * fraction;
+  }
 }
 
 }  // namespace nck::kernel

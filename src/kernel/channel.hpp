@@ -52,7 +52,9 @@ class Channel {
   // point (plus the handwheel's manual offset).
   const motion::AxisVector& position() const noexcept { return pos_; }
   motion::AxisVector machine_position() const noexcept;
-  const motion::AxisVector& manual_offsets() const noexcept { return manual_mm_; }
+  // The handwheel offset in the set point now (less than travelled while
+  // #SUPPRESS OFFSETS or #MCS leaves it out).
+  const motion::AxisVector& manual_offsets() const noexcept { return manual_in_force_mm_; }
   std::uint8_t number() const noexcept { return number_; }
 
  private:
@@ -123,6 +125,11 @@ class Channel {
   std::uint32_t manual_mask_ = 0;     // axes in manual mode (G201)
   motion::AxisVector manual_mm_{};    // handwheel offset reached so far
   motion::AxisVector manual_target_mm_{};
+  // Share (0..1) of the handwheel offset in each set point, when the block
+  // started and now; blended along a motion block's path so nothing jumps.
+  motion::AxisVector manual_share_start_{}, manual_share_{};
+  motion::AxisVector manual_in_force_mm_{};
+  void take_manual_share(double fraction) noexcept;
 };
 
 }  // namespace nck::kernel

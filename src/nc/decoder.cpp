@@ -315,6 +315,8 @@ std::optional<double> Decoder::get_variable(std::string_view name) const {
   return v;
 }
 
+void Decoder::set_kernel_state_reader(const KernelStateReader* reader) { impl_->vars.set_state_reader(reader); }
+
 bool Decoder::set_variable(std::string_view name, double value) {
   ErrorSlot e;
   ExprCtx x{impl_->vars, e, 0};

@@ -113,6 +113,11 @@ VarStatus Variables::check_index(const Map& m, const std::string& key) const {
 VarStatus Variables::read(const std::string& key, double& out) const {
   if (is_kernel(key)) {
     if (!known_kernel(key)) return VarStatus::unknown_kernel;
+    if (state_reader_)
+      if (const std::optional<double> v = state_reader_->read(key)) {
+        out = *v;
+        return VarStatus::ok;
+      }
     auto it = kernel_.find(key);
     out = it == kernel_.end() ? 0.0 : it->second;
     return VarStatus::ok;

@@ -10,6 +10,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "nck/nc/decoder.hpp"
+
 namespace nck::nc::detail {
 
 enum class VarStatus : std::uint8_t { ok, undefined, unknown_kernel, is_string, not_string,
@@ -40,6 +42,7 @@ class Variables {
   Declared declare(const std::string& base, const std::vector<int>& dims, bool is_string);
   bool is_kernel(std::string_view key) const;
   bool known_kernel(const std::string& key) const;
+  void set_state_reader(const KernelStateReader* reader) { state_reader_ = reader; }
 
   // V.L. scope per call level.
   void push_scope() { locals_.emplace_back(); }
@@ -62,6 +65,7 @@ class Variables {
   std::vector<Map> locals_;  // V.L. and V.CYC., one map per call level
   Map globals_;              // V.P., V.S.
   std::unordered_map<std::string, double> kernel_;  // V.G., V.A.
+  const KernelStateReader* state_reader_ = nullptr;  // the channel's state variables
   // declared array dimensions by base name, for index checks
   std::unordered_map<std::string, std::vector<int>> dims_;
 };

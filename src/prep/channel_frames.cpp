@@ -70,6 +70,11 @@ motion::AxisVector ChannelFrames::channel_order(const frames::AxisValues& v) con
   return out;
 }
 
+const config::ToolRecord* ChannelFrames::tool_in_force() const {
+  const auto d = static_cast<std::size_t>(chain_.tool().d_number);
+  return d > 0 && d < tools_.size() ? &tools_[d] : nullptr;
+}
+
 void ChannelFrames::commit_axis(std::size_t j) { chain_.commit_axis(static_cast<std::size_t>(to_chain_[j])); }
 
 motion::AxisVector ChannelFrames::to_mcs(const motion::AxisVector& pcs, frames::SuppressMask m) const {
@@ -100,19 +105,32 @@ AffineMap ChannelFrames::affine(frames::SuppressMask m) const {
   return a;
 }
 
+// CS and ACS are stacks: every active entry is listed, the outermost with
+// plain keys (X, angle1 ...), the next ones prefixed with their level
+// ("2.X", "2.angle1" ...); "selected" tells how many act on programmed
+// positions when #CS SELECT chose fewer than are stacked.
 std::vector<std::pair<std::string, double>> ChannelFrames::values_of(frames::OffsetKind k,
                                                                      bool selected) const {
+  const bool stacked = k == frames::OffsetKind::cs || k == frames::OffsetKind::acs;
+  const bool has_angles = stacked || k == frames::OffsetKind::rotation;
   std::vector<std::pair<std::string, double>> out;
+  std::size_t level = 0;
   for (const frames::OffsetEntry& e : chain_.active_offsets()) {
     if (e.kind != k) continue;
+    const std::string prefix = ++level == 1 ? std::string() : fmt::format("{}.", level);
     for (std::size_t j = 0; j < n_axes_; ++j)
-      out.emplace_back(names_[j], (selected ? e.selected_mm : e.values_mm)[static_cast<std::size_t>(to_chain_[j])]);
-    if (k == frames::OffsetKind::cs || k == frames::OffsetKind::acs || k == frames::OffsetKind::rotation)
-      for (std::size_t i = 0; i < 3; ++i) out.emplace_back(fmt::format("angle{}", i + 1), e.angle_deg[i]);
-    break;
+      out.emplace_back(prefix + names_[j],
+                       (selected ? e.selected_mm : e.values_mm)[static_cast<std::size_t>(to_chain_[j])]);
+    if (has_angles)
+      for (std::size_t i = 0; i < 3; ++i) out.emplace_back(fmt::format("{}angle{}", prefix, i + 1), e.angle_deg[i]);
+    if (!stacked) break;
   }
   if (out.empty())  // the kind was switched off: report zeros
     for (std::size_t j = 0; j < n_axes_; ++j) out.emplace_back(names_[j], 0.0);
+  if (stacked) {
+    const frames::CsStore& st = chain_.cs_store(k == frames::OffsetKind::cs ? frames::CsFamily::cs : frames::CsFamily::acs);
+    if (st.effective_depth() != st.depth()) out.emplace_back("selected", static_cast<double>(st.effective_depth()));
+  }
   return out;
 }
 

@@ -50,15 +50,34 @@ std::expected<FrameChanges, Diagnostic> ChannelFrames::apply(const nc::Block& b,
     out.warnings.push_back(frame_diagnostic(*w, b, names_, to_channel_.data()));
     (void)out.kinds.push_back(frames::OffsetKind::rotation);
   }
-  if (b.modal.zero_offset != zero_modal_) {
+  // Selected whenever the block programs it: after #CS/#ACS/#MCS OFF the
+  // chain may hold another offset than the decoder's remembered modal code.
+  if (b.zero_offset_programmed || b.modal.zero_offset != zero_modal_) {
     zero_modal_ = b.modal.zero_offset;
     if (auto r = check(chain_.select_zero_offset(zero_table_, zero_modal_), frames::OffsetKind::zero); !r)
       return std::unexpected(r.error());
   }
   if (auto r = apply_words(b, out); !r) return std::unexpected(r.error());
-  if (b.hash)
+  if (b.hash) {
+    const OffsetValues before = translation_values();
     if (auto r = apply_hash(*b.hash, b, mcs_now, out); !r) return std::unexpected(r.error());
+    // A CS's OFF puts back the zero and G92 offsets of before its ON; #MCS
+    // ON/OFF parks and restores all of them: each change is an event too.
+    if (out.coordinate_system_changed) note_changed_translations(before, out);
+  }
   return out;
+}
+
+ChannelFrames::OffsetValues ChannelFrames::translation_values() const {
+  OffsetValues v;
+  for (std::size_t i = 0; i < kTranslationKinds.size(); ++i) v[i] = values_of(kTranslationKinds[i], true);
+  return v;
+}
+
+void ChannelFrames::note_changed_translations(const OffsetValues& before, FrameChanges& out) const {
+  const OffsetValues after = translation_values();
+  for (std::size_t i = 0; i < kTranslationKinds.size(); ++i)
+    if (after[i] != before[i]) (void)out.kinds.push_back(kTranslationKinds[i]);
 }
 
 std::optional<Diagnostic> ChannelFrames::measure_apply(std::size_t j, double factor,

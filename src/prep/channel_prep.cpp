@@ -29,6 +29,8 @@ ChannelPrep::ChannelPrep(const config::Machine& m, std::size_t ch, const std::fi
     return;
   }
   decoder_.emplace(program, decoder_config(m, ch));
+  // The planner lives on the heap, so the pointer survives moves of this object.
+  decoder_->set_kernel_state_reader(planner_.get());
   for (const auto& [name, value] : initial_variables(m, ch, options.clamp_index))
     (void)decoder_->set_variable(name, value);
 }

@@ -186,6 +186,8 @@ Planner::Commands Planner::plan(const nc::Block& b, const std::string& file_name
   } else {
     (void)out.push_back(c);
   }
+  // Only motion commands change the handwheel share; the others carry it on.
+  for (Command& cmd : out) cmd.manual_offset_axes = manual_axes_;
   return out;
 }
 
@@ -249,6 +251,7 @@ Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
                          b.file_id, b.line);
   Command error;
   if (!apply_frames(b, c, error)) return error;
+  modal_.zero_offset = frames_.zero_index();  // what is in force, for --final
   if (!apply_measure_offset(b, c, error)) return error;
   if (std::string why = plc_control_violation(b); !why.empty())
     return error_command(ErrorId::KernelPlcSpindleFunction, why, b.file_id, b.line);

@@ -78,6 +78,20 @@ std::expected<motion::Segment, Command> Planner::arc_segment(const nc::Block& b,
   return *seg;
 }
 
+// The handwheel offset is an offset like the others (seed 2.10, 2.2.6): a
+// programmed axis leaves it out under #SUPPRESS OFFSETS (all kinds or
+// MANUAL) and inside #MCS, and takes it back at its next absolute position.
+std::uint32_t Planner::manual_axes_after(const nc::Block& b, frames::SuppressMask mask) const {
+  const bool leave_out = mask.has(frames::SuppressMask::kManual) || frames_.mcs_active();
+  std::uint32_t axes = manual_axes_;
+  for (std::size_t j = 0; j < n_axes_; ++j) {
+    if (!b.axes[j]) continue;
+    if (leave_out) axes &= ~(1u << j);
+    else if (b.modal.absolute) axes |= 1u << j;
+  }
+  return axes;
+}
+
 Command Planner::plan_motion(const nc::Block& b, Command c, const std::string& file_name) {
   const frames::SuppressMask mask = suppress_mask(b);
   if (mask.bits != 0)
@@ -155,6 +169,7 @@ Command Planner::plan_motion(const nc::Block& b, Command c, const std::string& f
     return c;
   }
   c.kind = CommandKind::motion;
+  manual_axes_ = manual_axes_after(b, mask);
   c.limits = motion::path_limits(c.segment, std::span<const motion::AxisDynamics>(dyn.data(), n_axes_));
   if (!motion::valid(c.limits))
     return error_command(ErrorId::KernelBadDynamics, "the axes of this block cannot move", b.file_id,

@@ -141,8 +141,9 @@ class OffsetChain {
   Result select_zero_offset(const ZeroOffsetTable& table, int index);
   int zero_index() const { return state_.zero_index; }
   Result set_g92(int axis, double value_mm, bool incremental);
-  // #PSET: the actual position `actual` shall read value_mm on `axis`
-  // (at WCS level, i.e. without CS and PCS-level offsets).
+  // #PSET: the actual position `actual` shall read value_mm on `axis` in
+  // program coordinates (through the whole chain: tool, #CS, #ROTATION);
+  // the preset itself is a translation along the machine axis.
   Result pset(int axis, double value_mm, const McsPoint& actual);
   Result preset(std::optional<int> axis);  // #PRESET [axis]; also G74
   // G101 axis factor: (measured - target) * factor. nullopt = not measured.
@@ -155,6 +156,7 @@ class OffsetChain {
   Result set_clamp_offsets(const AxisValues& offset_mm);  // at program start
   // D word (D0 = ToolOffsets{}); P-CHAN-00100 decides whether it moves now.
   Result select_tool(const ToolOffsets& tool);
+  const ToolOffsets& tool() const { return state_.tool; }  // the D in force
   Result tlc_on(double delta_mm);
   Result tlc_off();
 
@@ -207,7 +209,7 @@ class OffsetChain {
   void pop_scope(CsFamily f, bool all);
   void apply_tool(State& s, bool commit_now) const;
   void apply_tlc(State& s) const;
-  AxisValues wcs_sum(const State& s, SuppressMask m, bool with_pset) const;
+  AxisValues wcs_sum(const State& s, SuppressMask m) const;
   void add_pcs_level(AxisValues& v, SuppressMask m, double sign) const;
   void add_mcs_level(AxisValues& v, SuppressMask m, double sign) const;
   void append_deferred(ActiveOffsets& out, OffsetKind k, const Deferred& d, int id) const;

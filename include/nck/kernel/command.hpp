@@ -65,6 +65,10 @@ struct Command {
   // G201 / G202: axes entering / leaving manual (handwheel) mode, bit j = axis j
   std::uint32_t manual_on = 0, manual_off = 0;
   bool get_manual_offsets = false;  // #GET MANUAL OFFSETS: the decoder reads them after this block
+  // Bit j: the handwheel offset of axis j is in axis j's set point when the
+  // block ends (#SUPPRESS OFFSETS and #MCS ON leave it out). A motion block
+  // takes it in or out along its path; a block without motion at once.
+  std::uint32_t manual_offset_axes = ~0u;
   // G100: the motion stops where the probe switches (probe_axis reaches probe_pos_mm)
   bool measure = false;
   std::int8_t probe_axis = -1;

@@ -71,6 +71,10 @@ struct Block {
   // G201 / G202 programmed in this block (the manual-mode group is modal, so
   // modal.manual_mode alone cannot tell); its axis words select the axes.
   std::optional<GCode> manual_g;
+  // G53..G59 / G159 programmed in this block: the offset is selected again
+  // even when modal.zero_offset did not change (a CS's OFF may have put
+  // another offset back in force meanwhile).
+  bool zero_offset_programmed = false;
 
   bool program_end = false;  // M2 / M30 reached (main program level)
   bool stop = false;           // M0

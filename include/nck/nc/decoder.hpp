@@ -41,6 +41,18 @@ struct DecoderConfig {
 };
 
 
+// Kernel variables that describe the channel's state at the block being
+// decoded (tool, rotation, zero offset, positions): the decoder asks for
+// them each time a block reads one, so they are never a stale copy. The
+// channel's preparation implements it from its planner.
+class KernelStateReader {
+ public:
+  virtual ~KernelStateReader() = default;
+  // `key` is normalised ("V.G.WZ_AKT.L", "V.A.ABS.X"); nullopt = not a
+  // state variable, the decoder's own store answers.
+  virtual std::optional<double> read(std::string_view key) const = 0;
+};
+
 class Decoder {
  public:
   enum class Status { block, end, error };
@@ -74,6 +86,9 @@ class Decoder {
   // is not a known kernel variable (or declared program variable).
   std::optional<double> get_variable(std::string_view name) const;
   bool set_variable(std::string_view name, double value);
+  // Kernel state variables come from `reader` (not owned; nullptr: none,
+  // as in `nck parse`, where they read 0).
+  void set_kernel_state_reader(const KernelStateReader* reader);
 
   struct Impl;  // opaque (src/nc/decoder_impl.hpp)
 

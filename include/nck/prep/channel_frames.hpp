@@ -51,6 +51,13 @@ class ChannelFrames {
   // events), or as they act now (final state; differs while the G91 rule defers).
   std::vector<std::pair<std::string, double>> values_of(frames::OffsetKind k, bool selected) const;
   frames::ActiveOffsets active() const { return chain_.active_offsets(); }
+  // The zero-offset group in force (a CS's OFF may have put back another
+  // than the program's last G53..G59).
+  int zero_index() const { return chain_.zero_index(); }
+  bool mcs_active() const { return chain_.mcs_active(); }
+  // The tool record of the D in force (nullptr for D0).
+  const config::ToolRecord* tool_in_force() const;
+  int tool_number() const { return chain_.tool().d_number; }
   const std::string& axis_name(std::size_t j) const { return names_[j]; }
   // Chain index of channel axis j.
   int chain_index(std::size_t j) const { return to_chain_[j]; }
@@ -62,6 +69,14 @@ class ChannelFrames {
   std::expected<void, Diagnostic> apply_hash(const nc::HashCommand& h, const nc::Block& b,
                                              const motion::AxisVector& mcs_now, FrameChanges& out);
   std::expected<void, Diagnostic> apply_words(const nc::Block& b, FrameChanges& out);
+  // The translation offsets a change of coordinate system can put back or
+  // park, with their selected values (to report what such a change did).
+  static constexpr std::array kTranslationKinds{frames::OffsetKind::zero, frames::OffsetKind::g92,
+                                                frames::OffsetKind::pset, frames::OffsetKind::measure,
+                                                frames::OffsetKind::tool, frames::OffsetKind::tlc};
+  using OffsetValues = std::array<std::vector<std::pair<std::string, double>>, kTranslationKinds.size()>;
+  OffsetValues translation_values() const;
+  void note_changed_translations(const OffsetValues& before, FrameChanges& out) const;
 
   frames::OffsetChain chain_;
   frames::ZeroOffsetTable zero_table_;

@@ -12,6 +12,7 @@
 #include "nck/prep/kernel_vocabulary.hpp"
 #include "nck/config/machine.hpp"
 #include "nck/nc/block.hpp"
+#include "nck/nc/decoder.hpp"
 #include "nck/prep/plan_store.hpp"
 #include "nck/kernel/measure.hpp"
 #include "nck/prep/lookahead_window.hpp"
@@ -23,7 +24,11 @@ struct PlannerOptions {
   std::uint32_t clamp_index = 0;  // pzv_grp chosen at program start (--clamp-index)
 };
 
-class Planner {
+// The planner is also the decoder's source of kernel state variables: the
+// decoder runs one block ahead of nothing (each block is planned as soon as
+// it is decoded), so what the planner holds is the state in force at the
+// block that reads it.
+class Planner final : public nc::KernelStateReader {
  public:
   // spindles: the kernel spindle index of each of the channel's spindles.
   Planner(const config::Machine& machine, std::size_t channel_index, PlanStore& store,
@@ -45,6 +50,8 @@ class Planner {
   // planning goes on from where the axes stopped; G101 uses the result.
   // Returns the decoder's V.A.MESS/MERF/MOFFS variables.
   std::vector<std::pair<std::string, double>> take_measurement(const kernel::MeasureResult& r);
+  // V.G.WZ_AKT.*, V.G.ROT_*, V.G.NP_AKT.V.<axis>, V.A.ABS.<axis>, V.A.MEIN.<axis>.
+  std::optional<double> read(std::string_view key) const override;
 
  private:
   Command plan_one(const nc::Block& block, const std::string& file_name);
@@ -61,6 +68,8 @@ class Planner {
   std::string unsupported(const nc::Block& b) const;
   std::string plc_control_violation(const nc::Block& b) const;
   int axis_named(const char* name) const;
+  std::optional<double> rotation_variable(std::string_view field) const;
+  std::optional<double> axis_variable(std::string_view key) const;
 
   const config::ChannelConfig& channel_;
   PlanStore& store_;
@@ -69,6 +78,9 @@ class Planner {
   SpindlePlanner spindles_;
   motion::AxisVector pcs_{};  // programmed position (program coordinates)
   motion::AxisVector mcs_{};  // machine position at the end of the last planned block
+  // Bit j: the kernel adds the handwheel offset to axis j (Command::manual_offset_axes).
+  std::uint32_t manual_axes_ = ~0u;
+  std::uint32_t manual_axes_after(const nc::Block& b, frames::SuppressMask mask) const;
   std::array<motion::AxisDynamics, kMaxAxes> feed_dyn_{}, rapid_dyn_{};
   AxisArray swe_neg_{}, swe_pos_{};
   AxisArray ref_pos_{};  // pos_refpkt: where G74 homes an axis
