@@ -83,12 +83,21 @@ std::optional<std::string> write_final(const std::string& path, const config::Ma
   json hli_spindles = json::object();
   for (std::size_t i = 0; i < k.spindle_count(); ++i) {
     const plc::SpindleStatus& st = h.spindle_status[i];
-    hli_spindles[k.spindle_name(i)] = json{{"mode_r", st.mode_bits},
-                                           {"active_rev_r", plc::to_hli_speed(st.nominal_rpm)},
-                                           {"current_rev_r", plc::to_hli_speed(st.actual_rpm)},
-                                           {"rev_erreicht_r", st.speed_reached},
-                                           {"rev_null_r", st.stopped},
-                                           {"actual_pos", plc::encode_position(st.actual_pos_deg, fmt_pos).raw}};
+    // Named as the HLI paths of the facts sheet (E); the objects whose paths
+    // it does not give keep the seed's words (FCT-S1 2.9) in snake case.
+    hli_spindles[k.spindle_name(i)] =
+        json{{"mode_r", st.mode_bits},
+             {"active_rev_r", plc::to_hli_speed(st.nominal_rpm)},
+             {"current_rev_r", plc::to_hli_speed(st.actual_rpm)},
+             {"cmd_rev_r", plc::to_hli_speed(st.programmed_rpm)},
+             {"rev_control_aktiv_r", st.speed_monitoring_active},
+             {"rev_erreicht_r", st.speed_reached},
+             {"rev_null_r", st.stopped},
+             {"speed_monitoring_invalid", st.monitoring_invalid},
+             {"target_pos", plc::encode_position(st.target_pos_deg, fmt_pos).raw},
+             {"actual_pos", plc::encode_position(st.actual_pos_deg, fmt_pos).raw},
+             {"distance_to_go", plc::encode_position(st.distance_to_go_deg, fmt_pos).raw},
+             {"command_error", st.job_error}};
   }
   json hli{{"position_format", fmt_pos == plc::PositionFormat::scaled_32bit ? "32-bit, 0.0001 deg"
                                                                              : "64-bit, 1e-7 deg"},

@@ -43,8 +43,10 @@ void Channel::end_program(EndReason reason, double t_s, TickOutput& sink, Channe
     if (s < 0 || static_cast<std::size_t>(s) >= ctx.spindle_count) continue;
     SpindleUnit& u = ctx.spindles[s];
     if (u.channel != number_) continue;
-    if (!ok) {
+    if (reason == EndReason::reset) {
       u.axis.reset();
+    } else if (!ok) {
+      u.axis.abort();  // an error state stays visible until a reset
     } else if (ctx.spindle_controls && (*ctx.spindle_controls)[static_cast<std::size_t>(s)].stop_at_program_end) {
       (void)u.axis.stop();
     }

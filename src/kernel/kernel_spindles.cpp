@@ -54,60 +54,83 @@ void Kernel::take_external_commands(const TickInput& in, double t_s, TickOutput&
   out.emit(e);
 }
 
-// External spindle commands run in order of arrival, one at a time per
-// spindle; each is acknowledged when the spindle has done it.
-void Kernel::run_external_commands(double t_s, TickOutput& out) noexcept {
-  for (std::size_t i = 0; i < spindles_.size(); ++i) {
-    SpindleUnit& u = spindles_[i];
-    if (u.ext_seq == 0) continue;
-    const spindle::SpindleStatus& s = u.axis.status();
-    const bool done = s.mode == spindle::SpindleMode::rotate ? s.speed_reached
-                      : s.mode == spindle::SpindleMode::position ? s.in_position
-                                                                 : s.standstill;
-    if (!done && s.mode != spindle::SpindleMode::error) continue;
-    ext_commands_.acknowledge(u.ext_seq);
-    u.ext_seq = 0;
-    Event e;  // the PLC learns that its command is done
-    e.t_s = t_s;
-    e.channel = u.channel;
-    e.kind = EventKind::plc_ack;
-    e.fn = FunctionKind::m;
-    e.fn_number = u.ext_m;
-    e.spindle = static_cast<std::int8_t>(i);
-    out.emit(e);
-  }
-  // Strictly in order of arrival: the next command waits until the last one is done.
-  for (const SpindleUnit& u : spindles_)
-    if (u.ext_seq != 0) return;
-  plc::ExtSpindleCommand cmd;
-  if (!ext_commands_.pop(cmd)) return;
-  const std::int8_t k = spindle_map_.at(cmd.channel, cmd.spindle);
-  if (k < 0 || static_cast<std::size_t>(k) >= spindles_.size()) return;
-  SpindleUnit& u = spindles_[static_cast<std::size_t>(k)];
+namespace {
+
+// True when the spindle has done what its external command asked for
+// (speed reached / in position / standstill), or failed at it. rt
+bool external_command_done(const SpindleUnit& u) noexcept {
+  const spindle::SpindleStatus& s = u.axis.status();
+  if (s.mode == spindle::SpindleMode::error) return true;
+  return s.mode == spindle::SpindleMode::rotate     ? s.speed_reached
+         : s.mode == spindle::SpindleMode::position ? s.in_position
+                                                    : s.standstill;
+}
+
+void acknowledge_external_command(SpindleUnit& u, std::int8_t index, plc::ExtCommandQueue& queue, double t_s,
+                                  TickOutput& out) noexcept {
+  queue.acknowledge(u.ext_seq);
+  u.ext_seq = 0;
+  Event e;  // the PLC learns that its command is done
+  e.t_s = t_s;
+  e.channel = u.channel;
+  e.kind = EventKind::plc_ack;
+  e.fn = FunctionKind::m;
+  e.fn_number = u.ext_m;
+  e.spindle = index;
+  out.emit(e);
+}
+
+void start_external_command(SpindleUnit& u, std::int8_t index, double t_s, TickOutput& out) noexcept {
+  const plc::ExtSpindleCommand cmd = u.ext_waiting.front();
+  u.ext_waiting.pop();
   spindle::SpindleResult r;
   switch (cmd.fn) {
     case plc::ExtFunction::m3: r = u.axis.rotate(cmd.rev_rpm); break;
     case plc::ExtFunction::m4: r = u.axis.rotate(-cmd.rev_rpm); break;
     case plc::ExtFunction::m5: r = u.axis.stop(); break;
-    case plc::ExtFunction::m19:
-      r = u.axis.position(cmd.pos_deg, spindle::Direction::none, cmd.rev_rpm);
-      break;
+    case plc::ExtFunction::m19: r = u.axis.position(cmd.pos_deg, spindle::Direction::none, cmd.rev_rpm); break;
   }
   u.ext_seq = cmd.seq;
   u.channel = cmd.channel;
-  u.ext_m = cmd.fn == plc::ExtFunction::m3   ? 3
-            : cmd.fn == plc::ExtFunction::m4 ? 4
-            : cmd.fn == plc::ExtFunction::m5 ? 5
-                                             : 19;
-  if (!r.ok()) {
-    Event e;
-    e.t_s = t_s;
-    e.channel = cmd.channel;
-    e.kind = EventKind::error;
-    e.id = r.id;
-    e.message_index = kNoMessage;
-    e.spindle = k;
-    out.emit(e);
+  u.ext_m = static_cast<std::int32_t>(cmd.fn);  // the enum's values are the M numbers
+  if (r.ok()) return;
+  Event e;
+  e.t_s = t_s;
+  e.channel = cmd.channel;
+  e.kind = EventKind::error;
+  e.id = r.id;
+  e.message_index = kNoMessage;
+  e.spindle = index;
+  out.emit(e);
+}
+
+}  // namespace
+
+// External spindle commands keep their order of arrival per spindle: a
+// spindle's next command starts when its last one is done and acknowledged,
+// while the other spindles go on with theirs (facts sheet E: jobs run in
+// order of arrival; a job to S1 does not wait for S2's speed).
+void Kernel::run_external_commands(double t_s, TickOutput& out) noexcept {
+  hand_out_external_commands();
+  for (std::size_t i = 0; i < spindles_.size(); ++i) {
+    SpindleUnit& u = spindles_[i];
+    const auto index = static_cast<std::int8_t>(i);
+    if (u.ext_seq != 0 && external_command_done(u)) acknowledge_external_command(u, index, ext_commands_, t_s, out);
+    if (u.ext_seq == 0 && !u.ext_waiting.empty()) start_external_command(u, index, t_s, out);
+  }
+}
+
+// Moves the arrived commands, oldest first, to the queues of their spindles;
+// a full spindle queue holds back the rest so that no order is broken.
+void Kernel::hand_out_external_commands() noexcept {
+  plc::ExtSpindleCommand cmd;
+  while (!ext_commands_.empty()) {
+    const plc::ExtSpindleCommand& next = ext_commands_.front();
+    const std::int8_t k = spindle_map_.at(next.channel, next.spindle);
+    const bool known = k >= 0 && static_cast<std::size_t>(k) < spindles_.size();
+    if (known && spindles_[static_cast<std::size_t>(k)].ext_waiting.full()) return;
+    (void)ext_commands_.pop(cmd);
+    if (known) (void)spindles_[static_cast<std::size_t>(k)].ext_waiting.push(cmd);
   }
 }
 

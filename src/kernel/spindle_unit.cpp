@@ -34,13 +34,9 @@ void report_spindle_changes(SpindleUnit& u, std::int8_t index, double t_s, TickO
     out.emit(e);
   }
   u.last_speed_reached = reached;
-  if (s.error != ErrorId{} && s.error != u.last_error) {
-    Event e = spindle_event(u, index, t_s, EventKind::error);
-    e.id = s.error;
-    e.message_index = kNoMessage;
-    out.emit(e);
-  }
-  u.last_error = s.error;
+  // No error event here: whoever commanded the spindle reports the failed
+  // command (the channel with its line, run_external_commands for the PLC);
+  // the error state shows as the spindle event with mode "error".
 }
 
 void advance_gear_job(SpindleUnit& u, std::int8_t index, PlcOutputs& plc, double t_s,

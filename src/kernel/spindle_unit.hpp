@@ -6,8 +6,10 @@
 #include <cstdint>
 #include <optional>
 
+#include "nck/core/ring_buffer.hpp"
 #include "nck/kernel/spindle_action.hpp"
 #include "nck/kernel/tick_io.hpp"
+#include "nck/plc/ext_command.hpp"
 #include "nck/plc/hli.hpp"
 #include "plc_outputs.hpp"
 #include "nck/spindle/spindle_axis.hpp"
@@ -36,7 +38,9 @@ struct SpindleUnit {
   std::int8_t rotation_dir = 1;
   bool rotation_across_gear_change = false;
 
-  // external command (HLI) in progress: its sequence number (0 = none) and M function
+  // external commands (HLI): those waiting for this spindle in order of
+  // arrival, and the one in progress (sequence number, 0 = none; M function)
+  RingBuffer<plc::ExtSpindleCommand, plc::ExtCommandQueue::kCapacity> ext_waiting;
   std::uint32_t ext_seq = 0;
   std::int32_t ext_m = 0;
 
@@ -45,7 +49,6 @@ struct SpindleUnit {
   double last_cmd_rpm = 0;
   bool last_speed_reached = false;
   std::uint32_t last_gear = 1;
-  ErrorId last_error{};
 };
 
 // The event's function kind of a PLC technology function, and back. rt
@@ -67,7 +70,7 @@ constexpr plc::TechKind tech_kind(FunctionKind fn) noexcept {
   }
 }
 
-// Emits spindle / speed_reached / gear / error events for what changed since
+// Emits spindle / speed_reached events for what changed since
 // the last cycle. rt
 void report_spindle_changes(SpindleUnit& u, std::int8_t index, double t_s, TickOutput& out) noexcept;
 

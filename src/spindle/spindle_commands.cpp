@@ -86,7 +86,7 @@ SpindleResult SpindleAxis::stop() noexcept {
   if (auto g = guard(); !g.ok()) return g;
   pos_.planned = pos_.done = false;
   // After the control limit the reference is lost: M5 homes on the way down.
-  if (ref_.lost && cfg_.can_position && !cfg_.open_loop && set_.vel_deg_s != 0) {
+  if (ref_.lost && cfg_.auto_homing && cfg_.can_position && !cfg_.open_loop && set_.vel_deg_s != 0) {
     begin_homing(AfterHoming::stop, Direction::none);
   } else {
     mode_ = SpindleMode::stop;
@@ -105,7 +105,11 @@ SpindleResult SpindleAxis::position(double target_deg, Direction dir, double rpm
   adopt_pending_tool();
   speed_.ignore_override = g167;
   const double speed = std::fabs(rpm_to_deg_s(rpm));
-  if (!ref_.homed) {
+  if (!ref_.homed && cfg_.auto_homing) {
+    // From standstill M19 takes the shorter way (FCT-S1 2.3.2); the homing
+    // that comes first must not lose it, so it turns that way already and the
+    // positioning after the zero mark goes on in the same direction.
+    if (dir == Direction::none && set_.vel_deg_s == 0) dir = shorter_way(target_deg);
     homing_.target_deg = target_deg;
     homing_.target_dir = dir;
     homing_.target_speed_deg_s = speed;
@@ -116,6 +120,12 @@ SpindleResult SpindleAxis::position(double target_deg, Direction dir, double rpm
   }
   update_status();
   return {};
+}
+
+Direction SpindleAxis::shorter_way(double target_deg) const noexcept {
+  const double travel = m19_travel_deg(set_.pos_deg, target_deg, Direction::none, 0, gear().modulo_low_deg,
+                                       gear().modulo_high_deg);
+  return travel < 0 ? Direction::negative : Direction::positive;
 }
 
 SpindleResult SpindleAxis::home() noexcept {

@@ -22,6 +22,7 @@ GearConfig GearConfig::from(const config::GearStage& g) noexcept {
   c.gear_change_pos_deg = g.getr_schalt_pos;
   c.reference_pos_deg = g.pos_refpkt;
   c.accel_curve = g.curve;
+  c.reverse = g.reverse;
   return c;
 }
 
@@ -29,6 +30,25 @@ double GearConfig::range_deg() const noexcept {
   const double r = modulo_high_deg - modulo_low_deg;
   return r > 0 && std::isfinite(r) ? r : 360.0;
 }
+
+namespace {
+
+// P-AXIS-00015 bit ACHSMODE_KEINE_AUTO_RPF: no automatic homing before M19
+// (drive-controlled homing with G74 only, FCT-S1 2.7).
+constexpr std::uint32_t kNoAutomaticHoming = 0x100;
+
+// A PLC spindle over the channel HLI has no axis list: its drive belongs to
+// the PLC, so the NC must not cap its speed with the machine model's default
+// vb_max (200 deg/s = 33.3 rpm) nor open a control limit it does not have.
+SpindleConfig without_axis_limits(SpindleConfig c) noexcept {
+  for (GearConfig& g : c.gears) {
+    g.speed_max_deg_s = 0;
+    g.control_limit_deg_s = 0;
+  }
+  return c;
+}
+
+}  // namespace
 
 SpindleConfig SpindleConfig::from(const config::AxisConfig* axis, const config::ChannelSpindle& sp,
                                   const config::SimConfig& sim, double cycle_s) {
@@ -39,7 +59,7 @@ SpindleConfig SpindleConfig::from(const config::AxisConfig* axis, const config::
   // Without an axis list the gear stages keep the machine model's defaults.
   const auto stages = axis != nullptr ? axis->gears : decltype(axis->gears){};
   std::ranges::transform(stages, c.gears.begin(), GearConfig::from);
-  if (axis == nullptr) return c;
+  if (axis == nullptr) return without_axis_limits(c);
   c.initial_gear = std::clamp<std::uint32_t>(axis->initial_gear_stage, 1, config::kMaxGearStages);
   c.preferred_direction = spindle::preferred_direction(*axis);
   c.speed_reached_tolerance_permille = axis->vb_prozent_permille;
@@ -49,6 +69,10 @@ SpindleConfig SpindleConfig::from(const config::AxisConfig* axis, const config::
   // the spindle is; the others (and the seed's sensorless example) cannot
   // position or home.
   c.can_position = !c.open_loop || axis->operation_mode == "OPEN_POSITION_LOOP_POS_FEEDBACK";
+  // Neither position nor speed feedback: the speed acknowledgement comes
+  // from the interpolator's own command value (FCT-S1 2.2.4, case 3).
+  c.sensorless = c.open_loop && !c.can_position && axis->operation_mode != "OPEN_POSITION_LOOP_VEL_FEEDBACK";
+  c.auto_homing = (axis->achs_mode & kNoAutomaticHoming) == 0;
   c.feedforward_ta_s = std::max(0.0, axis->feedforward_ta_s);
   c.drive_speed_scaling = SpeedScaling{axis->v_reso_num, axis->v_reso_denom, axis->v_time_base};
   return c;

@@ -10,9 +10,14 @@
 
 namespace nck::spindle {
 
+double SpindleAxis::drive_sense() const noexcept { return gear().reverse ? -1.0 : 1.0; }
+
 void SpindleAxis::drive_model(double step_deg, double dt) noexcept {
+  // The model runs on the drive's side of the sign flip of getriebe[i].reverse
+  // (P-AXIS-00159): the command goes out inverted, the actual comes back
+  // inverted (update_status), so the NC sees its own turning sense.
   DriveModel& d = drive_;
-  const double v_cmd = step_deg / dt;  // what the set point really moved this cycle
+  const double v_cmd = drive_sense() * step_deg / dt;  // what the set point really moved this cycle
   if (cfg_.open_loop) {
     const double t = cfg_.speed_time_constant_s;
     const double k = t > 0 ? 1.0 - std::exp(-dt / t) : 1.0;
@@ -46,9 +51,12 @@ void SpindleAxis::update_status() noexcept {
   s.error = error_;
   s.set_rpm = deg_s_to_rpm(set_.vel_deg_s);
   s.set_pos_deg = set_.pos_deg;
-  s.act_rpm = deg_s_to_rpm(drive_.act_vel_deg_s);
-  s.act_pos_deg = g.wrap(set_.pos_deg - drive_.lag_deg);
-  s.lag_deg = drive_.lag_deg;
+  // Actual values as the NC reads them: back through the reverse flip.
+  const double act_vel_deg_s = drive_sense() * drive_.act_vel_deg_s;
+  const double lag_deg = drive_sense() * drive_.lag_deg;
+  s.act_rpm = deg_s_to_rpm(act_vel_deg_s);
+  s.act_pos_deg = g.wrap(set_.pos_deg - lag_deg);
+  s.lag_deg = lag_deg;
   s.set_accel_deg_s2 = set_.accel_deg_s2;
   s.programmed_rpm = speed_.programmed_rpm;
   s.override_pct = speed_.ignore_override ? 100.0 : speed_.override_pct;
@@ -57,11 +65,15 @@ void SpindleAxis::update_status() noexcept {
   s.reference_lost = ref_.lost;
   const bool rotating = mode_ == SpindleMode::rotate;
   s.cmd_rpm =
-      rotating ? deg_s_to_rpm(limit_speed(rpm_to_deg_s(speed_.programmed_rpm) * override_factor())) : 0.0;
-  s.standstill = set_.vel_deg_s == 0 && zero_speed(drive_.act_vel_deg_s, g.zero_speed_deg_s);
+      rotating ? deg_s_to_rpm(rotation_speed_deg_s()) : 0.0;
+  // The speed the acknowledgements judge: a sensorless spindle has only its
+  // own command value (FCT-S1 2.2.4), the others their actual speed.
+  const double ack_vel_deg_s = cfg_.sensorless ? set_.vel_deg_s : act_vel_deg_s;
+  s.standstill = set_.vel_deg_s == 0 && zero_speed(ack_vel_deg_s, g.zero_speed_deg_s);
   if (rotating)
     s.speed_reached = s.cmd_rpm == 0 ? s.standstill
-                                     : speed_reached(s.act_rpm, s.cmd_rpm, cfg_.speed_reached_tolerance_permille);
+                                     : speed_reached(deg_s_to_rpm(ack_vel_deg_s), s.cmd_rpm,
+                                                     cfg_.speed_reached_tolerance_permille);
   else
     s.speed_reached = mode_ == SpindleMode::stop && s.standstill;
   const bool positioning = mode_ == SpindleMode::position || mode_ == SpindleMode::gear_change ||
@@ -69,10 +81,10 @@ void SpindleAxis::update_status() noexcept {
   s.target_pos_deg = positioning ? pos_.target_deg : set_.pos_deg;
   s.distance_to_go_deg = positioning && pos_.planned ? pos_.dir * pos_.remaining_deg : 0.0;
   s.in_position = mode_ == SpindleMode::position && pos_.done &&
-                  std::fabs(drive_.lag_deg) <= cfg_.in_position_window_deg;
+                  std::fabs(lag_deg) <= cfg_.in_position_window_deg;
   s.gear_change_ready = mode_ == SpindleMode::gear_change && pos_.done && s.standstill;
   const double out_rpm = cfg_.open_loop ? s.set_rpm : s.act_rpm;
-  s.drive_output = drive_output_value(cfg_.drive_speed_scaling, out_rpm, cfg_.cycle_s);
+  s.drive_output = drive_output_value(cfg_.drive_speed_scaling, drive_sense() * out_rpm, cfg_.cycle_s);
 }
 
 }  // namespace nck::spindle

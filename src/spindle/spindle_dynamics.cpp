@@ -51,13 +51,23 @@ double SpindleAxis::override_factor() const noexcept {
 }
 
 double SpindleAxis::limit_speed(double speed_deg_s) const noexcept {
-  // |speed| into [tool vb_min, vb_max]; 0 stays 0 (no rotation asked for).
+  // |speed| capped by vb_max and the tool's vb_max; 0 stays 0.
   const double s = std::fabs(speed_deg_s);
   if (s == 0 || !std::isfinite(s)) return 0;
-  double lim = s;
-  if (tool_.active.vb_min_rpm > 0) lim = std::max(lim, rpm_to_deg_s(tool_.active.vb_min_rpm));
-  lim = std::min(lim, max_speed_deg_s());
-  return std::copysign(lim, speed_deg_s);
+  return std::copysign(std::min(s, max_speed_deg_s()), speed_deg_s);
+}
+
+double SpindleAxis::limit_rotation_speed(double speed_deg_s) const noexcept {
+  // The tool's minimum speed holds only for endless turning (FCT-S1 2.8.5),
+  // never for M19 or homing; 0 stays 0 (no rotation asked for).
+  const double s = std::fabs(speed_deg_s);
+  if (s == 0 || !std::isfinite(s)) return 0;
+  const double lowest = tool_.active.vb_min_rpm > 0 ? rpm_to_deg_s(tool_.active.vb_min_rpm) : 0.0;
+  return limit_speed(std::copysign(std::max(s, lowest), speed_deg_s));
+}
+
+double SpindleAxis::rotation_speed_deg_s() const noexcept {
+  return limit_rotation_speed(rpm_to_deg_s(speed_.programmed_rpm) * override_factor());
 }
 
 }  // namespace nck::spindle

@@ -86,6 +86,16 @@ void SpindleAxis::reset() noexcept {
   update_status();
 }
 
+void SpindleAxis::abort() noexcept {
+  if (!configured_) return;
+  if (mode_ != SpindleMode::error) return reset();
+  // The error state stays until a reset clears it (FCT-S1 2.3); the spindle
+  // brakes to standstill in it, and nothing it was about to do follows.
+  pos_.planned = pos_.done = false;
+  homing_.after = AfterHoming::none;
+  update_status();
+}
+
 SpindleResult SpindleAxis::enter_axis_mode() noexcept {
   if (auto g = guard(); !g.ok()) return g;
   if (set_.vel_deg_s != 0) return err(ErrorId::SpindleNotAtStandstill);

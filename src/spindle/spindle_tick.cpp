@@ -50,9 +50,7 @@ void SpindleAxis::ramp_to(double target, double dt) noexcept {
 }
 
 void SpindleAxis::tick_rotate(double dt) noexcept {
-  const double target =
-      speed_.feedhold ? 0.0 : limit_speed(rpm_to_deg_s(speed_.programmed_rpm) * override_factor());
-  ramp_to(target, dt);
+  ramp_to(speed_.feedhold ? 0.0 : rotation_speed_deg_s(), dt);
   // Above the control limit the encoder signal is not valid: the loop opens
   // and the reference is lost (FCT-S1 2.4.2).
   const double limit = gear().control_limit_deg_s;

@@ -75,6 +75,7 @@ class Kernel {
   void take_spindle_controls(const TickInput& in) noexcept;
   void take_external_commands(const TickInput& in, double t_s, TickOutput& out) noexcept;
   void run_external_commands(double t_s, TickOutput& out) noexcept;
+  void hand_out_external_commands() noexcept;
   void tick_spindles(double t_s, TickOutput& out) noexcept;
 
   std::unique_ptr<const config::Machine> machine_;  // own copy: channels refer into it

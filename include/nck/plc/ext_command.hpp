@@ -1,7 +1,7 @@
 #pragma once
 // External spindle commands (HLI ext_to_ipo, facts sheet E): the PLC hands
-// the CNC spindle jobs past the NC program. They run strictly in order of
-// arrival, and the CNC acknowledges each one when it has completed it
+// the CNC spindle jobs past the NC program. They run in order of arrival
+// (per spindle), and the CNC acknowledges each one when it has completed it
 // (speed reached, standstill, in position).
 //
 // Real-time contract: fixed capacity, no heap, noexcept.
@@ -41,6 +41,8 @@ class ExtCommandQueue {
   std::uint32_t push(ExtSpindleCommand cmd) noexcept;
   // rt: the CNC takes the oldest command; false when there is none.
   bool pop(ExtSpindleCommand& out) noexcept;
+  // rt: the oldest command, not taken; only when !empty().
+  const ExtSpindleCommand& front() const noexcept { return queue_.front(); }
   bool empty() const noexcept { return queue_.empty(); }
   std::size_t size() const noexcept { return queue_.size(); }
 

@@ -45,6 +45,7 @@ class SpindleAxis {
   SpindleResult default_dynamic_data() noexcept;                      // DEFAULT_DYNAMIC_DATA
   void set_feedhold(bool on) noexcept;                                // HLI feedhold
   void reset() noexcept;                                              // channel reset
+  void abort() noexcept;                                              // NC-error abort: keeps an error state
   SpindleResult enter_axis_mode() noexcept;                           // #CAX, G63 (standstill)
   void axis_set_point(double pos_deg, double vel_deg_s) noexcept;     // per cycle in axis mode
   SpindleResult leave_axis_mode() noexcept;
@@ -64,6 +65,7 @@ class SpindleAxis {
   void begin_positioning(SpindleMode mode, double target_deg, Direction dir, double speed_deg_s,
                          bool overridable) noexcept;
   void begin_homing(AfterHoming after, Direction dir) noexcept;
+  Direction shorter_way(double target_deg) const noexcept;
   // dynamics.cpp
   const GearConfig& gear() const noexcept;
   double accel_limit(double a_deg_s2) const noexcept;
@@ -72,7 +74,9 @@ class SpindleAxis {
   double min_accel_down(double up_to_deg_s) const noexcept;
   double max_speed_deg_s() const noexcept;
   double override_factor() const noexcept;
-  double limit_speed(double speed_deg_s) const noexcept;
+  double limit_speed(double speed_deg_s) const noexcept;           // vb_max caps
+  double limit_rotation_speed(double speed_deg_s) const noexcept;  // + tool vb_min (M3/M4 only)
+  double rotation_speed_deg_s() const noexcept;  // programmed x override, limited, signed
   // tick.cpp
   void ramp_to(double target_deg_s, double dt) noexcept;
   void advance(double step_deg) noexcept;
@@ -86,6 +90,7 @@ class SpindleAxis {
   double positioning_speed_deg_s() const noexcept;
   void on_reference() noexcept;
   // drive.cpp
+  double drive_sense() const noexcept;  // -1 with getriebe[i].reverse
   void drive_model(double step_deg, double dt) noexcept;
   void update_status() noexcept;
 

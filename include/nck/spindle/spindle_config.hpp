@@ -28,6 +28,7 @@ struct GearConfig {
   double control_limit_deg_s = 200;    // vb_regelgrenze: encoder invalid above; <= 0 none
   double gear_change_pos_deg = 0;      // getr_schalt_pos
   double reference_pos_deg = 0;        // pos_refpkt: the zero mark
+  bool reverse = false;                // reverse: drive output and actual values with flipped sign
   config::AccelCurve accel_curve{};    // beschl_kennlinie: a(n) instead of the slope
 
   static GearConfig from(const config::GearStage& g) noexcept;  // setup
@@ -46,6 +47,8 @@ struct SpindleConfig {
   bool keep_running_on_reset = false;   // no_stop_by_channel_reset
   bool open_loop = false;       // speed-controlled (antr.operation_mode OPEN_POSITION_LOOP*)
   bool can_position = true;     // position feedback present (else 70252 on M19 / G74)
+  bool auto_homing = true;      // home before M19 / M5 when unreferenced (not with achs_mode 0x100)
+  bool sensorless = false;      // open loop without any feedback: acknowledge from the set speed
   bool plc_control = false;     // PLC spindle over the channel HLI (no axis list)
   double feedforward_ta_s = 1e-6;       // drive time constant Ta of the feedforward path
   double speed_time_constant_s = 0.02;  // drive speed lag of a speed-controlled spindle
