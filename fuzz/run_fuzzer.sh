@@ -30,7 +30,8 @@ trap 'rm -rf "$seeds" "$log"' EXIT
 # -timeout: one input may take 10 s at most (a hang otherwise); -rss_limit_mb: memory per input.
 rc=0
 "$fuzzer" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 \
-  -dict="$dict" -print_final_stats=1 "$corpus" "$seeds" >"$log" 2>&1 || rc=$?
-# libFuzzer's final statistics, and everything a failure said.
+  -dict="$dict" -print_final_stats=1 -artifact_prefix="$corpus/" "$corpus" "$seeds" >"$log" 2>&1 || rc=$?
+# libFuzzer's final statistics, and everything a failure said (a crash or slow
+# input is kept in CORPUS as crash-*, timeout-*, slow-unit-*).
 if [ "$rc" -eq 0 ]; then grep -E '^(stat::|Done [0-9]+ runs)' "$log" || true; else tail -n 60 "$log"; fi
 exit "$rc"
