@@ -91,7 +91,7 @@ TEST(EndOfRunSummary, LastLineAgreesWithTheEvents) {
   std::map<std::string, double> since;
   for (const auto& e : read_jsonl(dir / "e.jsonl")) {
     blocks += e["ev"] == "block";
-    const std::string key = e.value("reason", "") + e.value("fn", "") + e["spindle"].dump();
+    const std::string key = e.value("reason", "") + e.value("fn", "") + e.value("spindle", nlohmann::json()).dump();
     if (e["ev"] == "wait") since[key] = e["t"].get<double>();
     if (e["ev"] == "wait_end" && e["reason"] == "plc_ack") waited_ack += e["t"].get<double>() - since[key];
   }
