@@ -91,11 +91,12 @@ void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelConte
 }
 
 // The body of the block: motion, dwell, or nothing.
-void Channel::execute(double dt_s, const ChannelInput& in, TickOutput& sink) noexcept {
+void Channel::execute(double t_s, double dt_s, const ChannelInput& in, TickOutput& sink,
+                      ChannelContext& ctx) noexcept {
   if (current_.kind == CommandKind::motion) {
     // A switch counts once this run has moved (not one left from the block before).
     if (current_.measure && (awaiting_probe_ || (in.probe_switched && probe_armed_))) {
-      end_measuring_run(in, sink);
+      end_measuring_run(t_s, in, sink, ctx);
       return;
     }
     const double ovr = in.feedhold ? 0.0 : std::clamp(in.feed_override_pct, 0.0, 100.0) / 100.0;
@@ -122,7 +123,8 @@ void Channel::execute(double dt_s, const ChannelInput& in, TickOutput& sink) noe
 // G100 ends where the probe switched (the axes stop at the latched point and
 // the rest of the path is dropped: measuring type 1) or, without a switch,
 // at its end point. Preparation learns the result through the feedback queue.
-void Channel::end_measuring_run(const ChannelInput& in, TickOutput& sink) noexcept {
+void Channel::end_measuring_run(double t_s, const ChannelInput& in, TickOutput& sink,
+                                ChannelContext& ctx) noexcept {
   Feedback f;
   f.kind = FeedbackKind::measured;
   f.measure.triggered = in.probe_switched && probe_armed_;
@@ -133,17 +135,14 @@ void Channel::end_measuring_run(const ChannelInput& in, TickOutput& sink) noexce
   awaiting_probe_ = false;
   probe_armed_ = false;
   phase_ = Phase::post_wait;
-  send_feedback(f, sink);
+  send_feedback(f, t_s, sink, ctx);
 }
 
 // The queue holds more records than can be in flight (queues.hpp); a full
 // queue is still reported, never dropped silently.
-void Channel::send_feedback(const Feedback& f, TickOutput& sink) noexcept {
-  if (feedback_->push(f)) return;
-  Event e = event(EventKind::error, sink.t_s);
-  e.id = ErrorId::KernelFeedbackOverflow;
-  e.message_index = kNoMessage;
-  sink.emit(e);
+void Channel::send_feedback(const Feedback& f, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept {
+  // Preparation would wait for this record for ever: end the program.
+  if (!feedback_->push(f) && !done()) raise(ErrorId::KernelFeedbackOverflow, kNoMessage, t_s, sink, ctx);
 }
 
 motion::AxisVector Channel::machine_position() const noexcept {
@@ -196,7 +195,7 @@ void Channel::advance(double t_s, double dt_s, const ChannelInput& in, TickOutpu
   }
   if (phase_ == Phase::body) {
     const bool timed = current_.kind == CommandKind::motion || current_.kind == CommandKind::dwell;
-    execute(dt_s, in, sink);
+    execute(t_s, dt_s, in, sink, ctx);
     if (phase_ != Phase::post_wait) return;
     issue_all(SyncPoint::after, t_s, sink, ctx);
     // A motion or dwell used this cycle; its post waits are checked next cycle.
@@ -230,7 +229,7 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
       }
     }
   }
-  follow_handwheel(dt_s, in, sink);
+  follow_handwheel(t_s, dt_s, in, sink, ctx);
   for (std::size_t j = 0; j < n_axes_; ++j) out.axis_mcs[j] = pos_[j] + manual_in_force_mm_[j];
   out.path_velocity_mm_s = velocity_;
   out.status = status_;
@@ -239,7 +238,8 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
 // Handwheel turns move the axes that are in manual mode (G201); the offset
 // is travelled at a limited speed (docs/decisions.md). #GET MANUAL OFFSETS
 // reports the offsets reached at the end of its cycle.
-void Channel::follow_handwheel(double dt_s, const ChannelInput& in, TickOutput& sink) noexcept {
+void Channel::follow_handwheel(double t_s, double dt_s, const ChannelInput& in, TickOutput& sink,
+                               ChannelContext& ctx) noexcept {
   const double step = kHandwheelSpeed_mm_s * dt_s;
   for (std::size_t j = 0; j < n_axes_; ++j) {
     if ((manual_mask_ >> j) & 1u) manual_target_mm_[j] += in.handwheel_mm[j];
@@ -252,7 +252,7 @@ void Channel::follow_handwheel(double dt_s, const ChannelInput& in, TickOutput& 
   Feedback f;
   f.kind = FeedbackKind::manual_offsets;
   f.manual_offsets_mm = manual_mm_;
-  send_feedback(f, sink);
+  send_feedback(f, t_s, sink, ctx);
 }
 
 // A motion block takes the handwheel offset of its axes in or out (command

@@ -77,11 +77,12 @@ class Channel {
   void start(const Command& c, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
   void advance(double t_s, double dt_s, const ChannelInput& in, TickOutput& sink,
                ChannelContext& ctx) noexcept;
-  void execute(double dt_s, const ChannelInput& in, TickOutput& sink) noexcept;
+  void execute(double t_s, double dt_s, const ChannelInput& in, TickOutput& sink, ChannelContext& ctx) noexcept;
   void place(double s_mm) noexcept;
-  void end_measuring_run(const ChannelInput& in, TickOutput& sink) noexcept;
-  void send_feedback(const Feedback& f, TickOutput& sink) noexcept;
-  void follow_handwheel(double dt_s, const ChannelInput& in, TickOutput& sink) noexcept;
+  void end_measuring_run(double t_s, const ChannelInput& in, TickOutput& sink, ChannelContext& ctx) noexcept;
+  void send_feedback(const Feedback& f, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
+  void follow_handwheel(double t_s, double dt_s, const ChannelInput& in, TickOutput& sink,
+                        ChannelContext& ctx) noexcept;
   void end_block(double t_s, const ChannelInput& in, TickOutput& sink, ChannelContext& ctx) noexcept;
   void end_program(EndReason reason, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
   void raise(ErrorId id, std::uint32_t message, double t_s, TickOutput& sink,

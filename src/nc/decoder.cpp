@@ -40,9 +40,14 @@ std::string Decoder::Impl::call_chain() const {
   return out;
 }
 
-std::uint16_t Decoder::Impl::file_id(const std::string& name) {
+std::optional<std::uint16_t> Decoder::Impl::find_file(std::string_view name) const {
   for (std::size_t i = 0; i < files.size(); ++i)
     if (files[i] == name) return static_cast<std::uint16_t>(i);
+  return std::nullopt;
+}
+
+std::uint16_t Decoder::Impl::file_id(const std::string& name) {
+  if (auto id = find_file(name)) return *id;
   if (files.size() >= 65535) return 65535;
   files.push_back(name);
   return static_cast<std::uint16_t>(files.size() - 1);
@@ -270,11 +275,7 @@ Outcome Decoder::Impl::run_words(Cursor& c, std::optional<std::int64_t> n, Block
 
 // ---------------------------------------------------------------- public API
 
-std::optional<std::uint16_t> Decoder::file_id(std::string_view name) const {
-  for (std::size_t i = 0; i < impl_->files.size(); ++i)
-    if (impl_->files[i] == name) return static_cast<std::uint16_t>(i);
-  return std::nullopt;
-}
+std::optional<std::uint16_t> Decoder::file_id(std::string_view name) const { return impl_->find_file(name); }
 
 Decoder::Decoder(const std::filesystem::path& program, DecoderConfig cfg)
     : impl_(std::make_unique<Impl>(std::move(cfg))) {

@@ -79,7 +79,8 @@ struct Decoder::Impl {
   void flush_warnings();
   SourceLoc loc(std::size_t pos) const;
   std::string call_chain() const;
-  std::uint16_t file_id(const std::string& name);
+  std::optional<std::uint16_t> find_file(std::string_view name) const;
+  std::uint16_t file_id(const std::string& name);  // found or added
 
   // control_flow.cpp
   detail::Outcome control(detail::Cursor& c);

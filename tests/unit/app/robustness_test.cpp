@@ -131,8 +131,9 @@ TEST(Robustness, AnOutputPathThatIsAnInputIsRefused) {
   EXPECT_EQ(list.exit_code, 2) << list.output;
 }
 
-// Finding 7: a run that cannot complete a file leaves the earlier file as it was.
-TEST(Robustness, AFailedRunLeavesThePreviousOutputInPlace) {
+// Finding 7: one output that cannot be written does not cost the others,
+// and no temporary file is left behind.
+TEST(Robustness, AFailedOutputKeepsTheOthersAndLeavesNoTemporary) {
   const auto dir = temp_dir("keep_old");
   const auto p = write(dir / "p.nc", "N10 G0 X1\nM30\n");
   write(dir / "e.jsonl", "previous\n");
