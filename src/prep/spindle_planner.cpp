@@ -179,20 +179,17 @@ std::expected<std::optional<SpindleAction>, Diagnostic> main_action(const nc::Bl
       synchronise(a, bits, *point, SpindleWait::in_position, timeout_s, plc);
       return a;
     case SpindleM::m3:
-    case SpindleM::m4:
-      if (!st.speed_rpm)
-        return std::unexpected(diag(b, c, ErrorId::KernelSpindleNoSpeed,
-                                    fmt::format("{}: M{} but no speed has been programmed; program "
-                                                "S with or before M{} (e.g. {})",
-                                                c.name, a.fn_number, a.fn_number,
-                                                c.din ? fmt::format("M{} {}1000", a.fn_number, c.name)
-                                                      : fmt::format("{}[M{} REV1000]", c.name,
-                                                                    a.fn_number))));
+    case SpindleM::m4: {
+      // Facts B1: M3/M4 start a rotation only with a valid speed. Without one
+      // the direction is selected at 0 rpm, so that a later S turns the
+      // spindle that way (seed FCT-S1 2.5.2, second synchronisation example).
+      const double rpm = st.speed_rpm.value_or(0.0);
       a.op = SpindleOp::rotate;
       a.direction = direction_of(m);
-      a.rpm = m == SpindleM::m3 ? *st.speed_rpm : -*st.speed_rpm;
+      a.rpm = m == SpindleM::m3 ? rpm : -rpm;
       synchronise(a, bits, *point, SpindleWait::speed_reached, timeout_s, plc);
       return a;
+    }
     case SpindleM::m5:
       a.op = SpindleOp::stop;
       synchronise(a, bits, *point, SpindleWait::standstill, timeout_s, plc);

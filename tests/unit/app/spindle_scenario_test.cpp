@@ -164,7 +164,6 @@ TEST(SpindleScenario, BadSpindleInputIsAnNcErrorWithItsLine) {
     int line;
   } cases[] = {
       {"%s\nN10 M19 S.POS=90\nN20 M30\n", 930101, 2},        // M19 without speed
-      {"%s\nN10 M3\nN20 M30\n", 930100, 2},                   // M3 without speed
       {"%s\nN10 S9[M3 REV100]\nN20 M30\n", 0, 2},             // unknown spindle (decoder)
       {"%s\nN10 S1000 M3 M4\nN20 M30\n", 0, 2},               // conflicting M functions
       {"%s\nN10 S2[M19 REV100 POS10]\nN20 M30\n", 70252, 2},  // sensorless S2 cannot position

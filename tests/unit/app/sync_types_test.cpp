@@ -183,4 +183,36 @@ TEST(SyncTypes, ChannelMFunctionsFollowTheirMSynch) {
 }
 
 }  // namespace
+
+// FCT-S1 2.5.2, second example, as written (s_synch 0x2, m3_synch 0x1, no S
+// before N10): M3 selects the direction at 0 rpm (facts B1) and is no error;
+// N20's S500 turns the spindle in the M3 direction and the path waits for
+// the speed before N20's motion, N30 waits for 100 rpm before its motion.
+TEST(SyncTypes, SeedSecondExampleSpindleSynchronousWithThePath) {
+  const auto patched = patched_example("mill", "seedsync2", "channel1.lis",
+                                       "spindel[0].s_synch 0x00000002\nspindel[0].m3_synch 0x00000001");
+  const auto dir = patched.dir.parent_path();
+  std::ofstream(dir / "p.nc") << "N10 M3 X0 Y0 G0\nN20 X40 Y40 G1 F1500 S500\nN30 S100 X0 Y0\nN40 M30\n";
+  CliResult r = run_nck("run " + patched.dir.string() + " " + (dir / "p.nc").string() + " --events " +
+                        (dir / "e.jsonl").string() + " --trace " + (dir / "t.csv").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::vector<double> rotate_rpm;
+  std::map<long, double> wait_end_t;  // line -> end of its speed_reached wait
+  for (const json& e : read_jsonl(dir / "e.jsonl")) {
+    if (e["ev"] == "spindle" && e["mode"] == "rotate") rotate_rpm.push_back(e["rpm"].get<double>());
+    if (e["ev"] == "wait_end" && e["reason"] == "speed_reached") wait_end_t[e["line"].get<long>()] = e["t"];
+    EXPECT_NE(e["ev"], "error") << e.dump();
+  }
+  EXPECT_EQ(rotate_rpm, (std::vector<double>{500.0, 100.0}));  // positive: the M3 direction
+  ASSERT_EQ(wait_end_t.size(), 2u);
+  ASSERT_TRUE(wait_end_t.contains(2) && wait_end_t.contains(3));
+  // X and Y stay at 0 until the spindle reached 500 rpm.
+  for (const std::string& line : split(read_file(dir / "t.csv"), '\n')) {
+    const auto c = split(line, ',');
+    if (c.size() < 3 || c[0] == "t" || std::stod(c[0]) >= wait_end_t[2] - 1e-9) continue;
+    EXPECT_EQ(std::stod(c[1]), 0.0) << line;
+  }
+  EXPECT_GT(wait_end_t[2], 0.1);
+}
+
 }  // namespace nck::app

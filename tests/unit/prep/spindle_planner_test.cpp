@@ -128,16 +128,20 @@ TEST(SpindlePlanner, RotateStoreStopAndModalSpeed) {
   EXPECT_EQ(a[0].rpm, 300);
 }
 
-TEST(SpindlePlanner, M3WithoutAnySpeedIsAnErrorAndChangesNothing) {
+// Facts B1: M3/M4 without a valid speed select the direction at 0 rpm.
+TEST(SpindlePlanner, M3WithoutAnySpeedSelectsTheDirectionAtZeroRpm) {
   auto m = spindle_machine();
   auto p = planner(m);
-  Diagnostic d = fails(p, din(7, SpindleM::m3));
-  EXPECT_EQ(d.id, ErrorId::KernelSpindleNoSpeed);
-  EXPECT_EQ(d.loc.line, 7u);
-  EXPECT_EQ(d.loc.column, 5u);
-  EXPECT_NE(d.message.find("program S"), std::string::npos) << d.message;
-  EXPECT_EQ(fails(p, s2(8, SpindleM::m4)).id, ErrorId::KernelSpindleNoSpeed);
-  auto a = ok(p, din(9, SpindleM::m3, 100));
+  auto a = ok(p, din(7, SpindleM::m3));
+  ASSERT_EQ(a.size(), 1u);
+  EXPECT_EQ(a[0].op, SpindleOp::rotate);
+  EXPECT_EQ(a[0].rpm, 0);
+  EXPECT_EQ(a[0].direction, spindle::Direction::positive);
+  EXPECT_FALSE(p.planned(0).speed_rpm.has_value());
+  a = ok(p, s2(8, SpindleM::m4));
+  EXPECT_EQ(a[0].op, SpindleOp::rotate);
+  EXPECT_EQ(a[0].direction, spindle::Direction::negative);
+  a = ok(p, din(9, SpindleM::m3, 100));
   EXPECT_EQ(a[0].rpm, 100);
 }
 
@@ -293,11 +297,10 @@ TEST(SpindlePlanner, SeedSyncExample2SpindleSynchronous) {
   m.channels[0].spindles[0].s_synch = sync::MVS_SVS;
   m.channels[0].spindles[0].m3_synch = sync::MOS;
   auto p = planner(m);
-  // The seed's N10 M3 relies on a speed set before; with none it is our error.
-  EXPECT_EQ(fails(p, din(10, SpindleM::m3)).id, ErrorId::KernelSpindleNoSpeed);
-  auto a = ok(p, din(5, SpindleM::none, 200));  // prelude: a speed is set
-  EXPECT_EQ(a[0].op, SpindleOp::speed);
-  a = ok(p, din(10, SpindleM::m3));  // N10 M3 X0 Y0 G0
+  // N10 M3 X0 Y0 G0: no speed yet, so M3 selects the direction at 0 rpm.
+  auto a = ok(p, din(10, SpindleM::m3));
+  EXPECT_EQ(a[0].op, SpindleOp::rotate);
+  EXPECT_EQ(a[0].rpm, 0);
   EXPECT_EQ(a[0].sync, SyncPoint::none);
   EXPECT_EQ(a[0].wait, SpindleWait::none);
   a = ok(p, din(20, SpindleM::none, 500));  // N20 X40 Y40 G1 F1500 S500
