@@ -35,6 +35,7 @@ json modal_json(const nc::ModalState& m) {
               {"speed_mode", fmt::format("G{}", static_cast<int>(m.speed_mode))},
               {"radius_comp", fmt::format("G{}", static_cast<int>(m.radius_comp))},
               {"units", m.inch ? "G70" : "G71"},
+              {"diameter", m.diameter ? "G51" : "G52"},
               {"zero_offset", m.zero_offset == 0 ? std::string("G53")
                               : m.zero_offset <= 6 ? fmt::format("G{}", 53 + m.zero_offset)
                                                    : fmt::format("G159={}", m.zero_offset)},
@@ -53,8 +54,14 @@ std::optional<std::string> write_final(const std::string& path, const config::Ma
   for (std::size_t c = 0; c < m.channels.size() && c < k.channel_count(); ++c) {
     const sim::ChannelSnapshot s = run.snapshot(c);
     json axes = json::object();
-    for (std::size_t j = 0; j < m.channels[c].axes.size(); ++j)
-      axes[m.channels[c].axes[j].name] = json{{"mcs", s.axis_mcs[j]}, {"pcs", s.axis_pcs[j]}};
+    for (std::size_t j = 0; j < m.channels[c].axes.size(); ++j) {
+      json axis{{"mcs", s.axis_mcs[j]}, {"pcs", s.axis_pcs[j]}};
+      // A face-turning axis also as the diameter G51 programs (the trace stays radius).
+      const int list = m.channels[c].axes[j].axis_index;
+      if (list >= 0 && m.axes[static_cast<std::size_t>(list)].is_face_turning())
+        axis["pcs_diameter"] = 2 * s.axis_pcs[j];
+      axes[m.channels[c].axes[j].name] = axis;
+    }
     json offsets = json::object();
     for (const auto& [kind, values] : s.offsets) {
       json v = json::object();

@@ -106,6 +106,7 @@ void read_head(const ParamList& l, AxisConfig& a) {
   a.no_stop_by_channel_reset = l.flag("kenngr.no_stop_by_channel_reset", a.no_stop_by_channel_reset);
   a.def_cax_gear_st = l.u32("kenngr.def_cax_gear_st", a.def_cax_gear_st);
   a.durchm_prog_abs = l.flag("kenngr.durchm_prog_abs", a.durchm_prog_abs);
+  a.durchm_prog_rel = l.flag("kenngr.durchm_prog_rel", a.durchm_prog_rel);
   a.fast_from_cam = l.flag("kenngr.fast_from_cam", a.fast_from_cam);
   a.vb_messen = l.num("kenngr.vb_messen", a.vb_messen);
   a.feedhold_deceleration_mode = l.text("kenngr.feedhold_deceleration_mode", a.feedhold_deceleration_mode);

@@ -33,7 +33,7 @@ constexpr ParamInfo kTable[] = {
     {"kenngr.no_stop_by_channel_reset", "P-AXIS-00455", A, T::boolean, 0, 1, 0, 1, "—", "—", "A rotating spindle keeps running through a channel reset."},
     {"kenngr.def_cax_gear_st", "P-AXIS-00052", A, T::integer, 1, 6, 1, 1, "—", "—", "Gear stage used when the spindle becomes a C axis."},
     {"kenngr.durchm_prog_abs", "P-AXIS-00058", A, T::boolean, 0, 1, 0, 1, "—", "—", "Diameter programming for G90 values of this face axis."},
-    {"kenngr.durchm_prog_rel", "P-AXIS-00059", A, T::boolean, 0, 1, 0, 1, "—", "—", "Diameter programming for G91 values; accepted."},
+    {"kenngr.durchm_prog_rel", "P-AXIS-00059", A, T::boolean, 0, 1, 0, 1, "—", "—", "Diameter programming for G91 values of this face axis."},
     {"kenngr.fast_from_cam", "P-AXIS-00064", A, T::boolean, 0, 1, 1, 1, "—", "—", "Homing leaves the cam fast (1) or slowly (0)."},
     {"kenngr.gantry_max_diff_reset_locked", "P-AXIS-00071", A, T::integer, 0, kU32, 0, 1e-4, kPos, kPosI, "Gantry difference that reset cannot clear; accepted."},
     {"kenngr.gantry_max_diff_resetable", "P-AXIS-00072", A, T::integer, 0, kU32, 0, 1e-4, kPos, kPosI, "Gantry difference that reset clears; accepted."},

@@ -67,6 +67,7 @@ Planner::Planner(const config::Machine& machine, std::size_t channel_index, Plan
     }
   }
   pcs_ = frames_.to_pcs(mcs_);  // the clamp / default zero offset act from the start
+  setup_diameter_axes(machine);
 }
 
 Command Planner::error_command(ErrorId id, std::string message, std::uint16_t file_id,
@@ -109,7 +110,6 @@ std::string Planner::unsupported(const nc::Block& b) const {
   if (m.feed_mode != nc::FeedMode::g94) return "feed modes G93/G95 are not executed yet";
   if (m.speed_mode != nc::SpeedMode::g97) return "constant cutting speed G96 is not executed yet";
   if (m.radius_comp != nc::RadiusComp::g40) return "tool radius compensation G41/G42 is not executed yet";
-  if (m.diameter) return "diameter programming G51 is not executed yet";
   return {};
 }
 
@@ -250,6 +250,7 @@ Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
     return error_command(ErrorId::KernelQueueOverflow, "more than 8 PLC outputs in one block",
                          b.file_id, b.line);
   Command error;
+  if (!check_diameter(b, c, error)) return error;
   if (!apply_frames(b, c, error)) return error;
   modal_.zero_offset = frames_.zero_index();  // what is in force, for --final
   if (!apply_measure_offset(b, c, error)) return error;

@@ -100,7 +100,7 @@ Command Planner::plan_motion(const nc::Block& b, Command c, const std::string& f
                            b.file_id, b.line);
   for (std::size_t j = 0; j < n_axes_; ++j) {
     if (!b.axes[j]) continue;
-    const double v = *b.axes[j];
+    const double v = programmed_radius(b, j);
     if (b.modal.absolute) {
       pcs_[j] = v;
       frames_.commit_axis(j);  // G91 rule: new offsets act at the next absolute position

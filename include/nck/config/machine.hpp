@@ -125,6 +125,7 @@ struct AxisConfig {
   bool mod_komp = false;                        // P-AXIS-00120
   bool distance_control_on = false;             // P-AXIS-00328
   bool durchm_prog_abs = false;                 // P-AXIS-00058
+  bool durchm_prog_rel = false;                 // P-AXIS-00059
   bool fast_from_cam = true;                    // P-AXIS-00064
   std::string feedhold_deceleration_mode = "DEFAULT_DECELERATION";  // P-AXIS-00556
   std::string secondary_encoder;                // P-AXIS-00824
@@ -132,6 +133,7 @@ struct AxisConfig {
 
   bool is_spindle() const { return kind == AxisKind::spindle; }
   bool is_modulo() const { return (achs_mode & 0x4) != 0 || is_spindle(); }
+  bool is_face_turning() const { return (achs_mode & 0x40) != 0; }  // "Plandrehachse"
   const GearStage& gear(std::uint32_t stage_1based) const {
     std::uint32_t i = stage_1based == 0 ? 0 : stage_1based - 1;
     return gears[i < kMaxGearStages ? i : 0];

@@ -66,6 +66,11 @@ class Planner final : public nc::KernelStateReader {
   bool add_outputs(const nc::Block& b, Command& c);
   bool apply_frames(const nc::Block& b, Command& c, Command& error);
   std::string unsupported(const nc::Block& b) const;
+  // G51/G52 (planner_diameter.cpp)
+  void setup_diameter_axes(const config::Machine& machine);
+  bool check_diameter(const nc::Block& b, Command& c, Command& error);
+  bool takes_diameter(const nc::Block& b, std::size_t j) const;
+  double programmed_radius(const nc::Block& b, std::size_t j) const;
   std::string plc_control_violation(const nc::Block& b) const;
   int axis_named(const char* name) const;
   std::optional<double> rotation_variable(std::string_view field) const;
@@ -85,6 +90,9 @@ class Planner final : public nc::KernelStateReader {
   AxisArray swe_neg_{}, swe_pos_{};
   AxisArray ref_pos_{};  // pos_refpkt: where G74 homes an axis
   nc::ModalState modal_;
+  // Bit j: axis j is a face-turning axis / takes diameters under G51 with G90 / with G91.
+  std::uint32_t face_axes_ = 0, diameter_abs_axes_ = 0, diameter_rel_axes_ = 0;
+  bool diameter_on_ = false;  // G51 in force at the last planned block
   // The last G100 run, in program coordinates (G101 reads it).
   struct Measured {
     bool any = false;        // a G100 run has ended
