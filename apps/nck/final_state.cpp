@@ -36,6 +36,7 @@ json modal_json(const nc::ModalState& m) {
               {"radius_comp", fmt::format("G{}", static_cast<int>(m.radius_comp))},
               {"units", m.inch ? "G70" : "G71"},
               {"diameter", m.diameter ? "G51" : "G52"},
+              {"exact_stop", m.exact_stop ? "G360" : "G359"},
               {"zero_offset", m.zero_offset == 0 ? std::string("G53")
                               : m.zero_offset <= 6 ? fmt::format("G{}", 53 + m.zero_offset)
                                                    : fmt::format("G159={}", m.zero_offset)},

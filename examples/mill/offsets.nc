@@ -2,7 +2,8 @@
 ; G54 zero offset, tool length D1, a G92 shift, a rotated coordinate system
 ; and #ROTATION, #PSET, #SUPPRESS OFFSETS. Runs to M30.
 %offsets
-N10 G17 G90 G0 X0 Y0 Z0          ; machine zero (G53 is active)
+N10 G17 G90 G360 G0 X0 Y0 Z0     ; machine zero (G53 is active); G360: every
+                                  ; block ends at standstill, so its end point shows
 N20 G54                           ; G54: X100 Y50 Z-150 (zero.lis)
 N30 D1                            ; tool length 100 mm on Z (tools.lis)
 N40 G0 X0 Y0 Z50                  ; MCS X100 Y50 Z0 (-150 + 100 + 50)

@@ -2,7 +2,7 @@
 ; G91 a new offset waits for the next absolute position (G91 rule); #TLC
 ; adds a length correction. Runs to M30.
 %tools
-N10 G17 G90 G0 X0 Y0 Z0           ; no tool: machine Z0
+N10 G17 G90 G360 G0 X0 Y0 Z0      ; no tool: machine Z0; G360 exact stop at each end
 N20 D1                            ; 100 mm tool: acts at the next absolute Z
 N30 G0 Z0                         ; machine Z100
 N40 G91 D2                        ; 125 mm drill, incremental mode ...

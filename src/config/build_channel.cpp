@@ -236,6 +236,8 @@ void read_switches(const ParamList& l, ChannelConfig& c) {
   c.default_ax_name_of_spindle = l.text("default_ax_name_of_spindle", "");
   c.cax_face_id = l.u32("cax_face_id", 0);
   c.move_tool_offsets_directly = l.flag("move_tool_offsets_directly", false);
+  c.exact_stop_after_g00 = l.flag("exact_stop_after_g00", false);
+  c.lookahead_blocks = l.u32("configuration.interpolator.number_blocks_lah", c.lookahead_blocks);
   for (auto n : l.indices("m_synch[")) c.m_synch[n] = l.u32(fmt::format("m_synch[{}]", n), 0);
   c.decoder_function = l.u32("configuration.decoder.function", 0);
   c.max_cache_number = l.u32("configuration.decoder.max_cache_number", 4);

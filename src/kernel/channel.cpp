@@ -35,6 +35,8 @@ void Channel::end_program(EndReason reason, double t_s, TickOutput& sink, Channe
   status_ = ok ? ChannelStatus::ended : ChannelStatus::aborted;
   active_ = false;
   velocity_ = 0;
+  passing_ = settling_ = false;
+  profile_.reset();
   waits_.clear();
   late_.clear();
   // Program end keeps an endless rotation unless the HLI asks to stop it; a
@@ -64,6 +66,12 @@ void Channel::raise(ErrorId id, std::uint32_t message, double t_s, TickOutput& s
 
 void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept {
   current_ = c;
+  // Only motions (and blocks without motion in between) continue a path
+  // at speed; anything else starts from standstill.
+  if (c.kind != CommandKind::motion && c.kind != CommandKind::nop) {
+    passing_ = false;
+    profile_.reset();
+  }
   active_ = true;
   phase_ = Phase::pre_wait;
   if (c.emit_block_event) sink.emit(event(EventKind::block, t_s));
@@ -99,14 +107,23 @@ void Channel::execute(double t_s, double dt_s, const ChannelInput& in, TickOutpu
       end_measuring_run(t_s, in, sink, ctx);
       return;
     }
+    if (settling_) {
+      settling_ = false;
+      velocity_ = 0;
+      return;
+    }
     const double ovr = in.feedhold ? 0.0 : std::clamp(in.feed_override_pct, 0.0, 100.0) / 100.0;
     const motion::ProfileSample st = profile_.step(dt_s, ovr);
+    moved_this_cycle_ = st.v_mm_s > 0;
     probe_armed_ = current_.measure;
     place(st.s_mm);
     velocity_ = st.v_mm_s;
     if (!st.finished) return;
     place(current_.segment.length());
-    velocity_ = 0;
+    // Continuous path: the block ends at speed and the next one takes over
+    // within this cycle (the look-ahead planned nothing to wait for between).
+    passing_ = profile_.v() > 0;
+    velocity_ = profile_.v();
     // The probe reports a switch one cycle after it happened: a G100 run
     // that reached its end point looks one cycle longer before it ends.
     if (current_.measure) awaiting_probe_ = true;
@@ -189,8 +206,22 @@ void Channel::advance(double t_s, double dt_s, const ChannelInput& in, TickOutpu
       if (done()) return;
     }
     phase_ = Phase::body;
-    if (current_.kind == CommandKind::motion)
-      profile_.start(current_.segment.length(), current_.v_cmd_mm_s, current_.limits);
+    if (current_.kind == CommandKind::motion) {
+      profile_.start(current_.segment.length(), current_.v_cmd_mm_s, current_.limits, current_.v_end_mm_s);
+      if (passing_) {
+        // The block before ran into this one during this cycle: the set
+        // point is already the distance it ran past its end.
+        passing_ = false;
+        place(profile_.s());
+        velocity_ = profile_.v();
+        return;
+      }
+      // From an exact stop the path stands still for one cycle before it
+      // starts again: the axes' last step into the stop and the first step
+      // out of it (each up to a * dt, in other directions) must not fall
+      // into consecutive cycles.
+      settling_ = moved_last_cycle_;
+    }
     if (current_.kind == CommandKind::dwell) dwell_left_s_ = current_.dwell_s;
   }
   if (phase_ == Phase::body) {
@@ -198,8 +229,9 @@ void Channel::advance(double t_s, double dt_s, const ChannelInput& in, TickOutpu
     execute(t_s, dt_s, in, sink, ctx);
     if (phase_ != Phase::post_wait) return;
     issue_all(SyncPoint::after, t_s, sink, ctx);
-    // A motion or dwell used this cycle; its post waits are checked next cycle.
-    if (timed) return;
+    // A motion or dwell used this cycle; its post waits are checked next
+    // cycle — unless the path passes on into the next block now.
+    if (timed && !passing_) return;
   }
   if (phase_ == Phase::post_wait && waits_done(SyncPoint::after, t_s, sink, ctx) && !done())
     end_block(t_s, in, sink, ctx);
@@ -207,6 +239,8 @@ void Channel::advance(double t_s, double dt_s, const ChannelInput& in, TickOutpu
 
 void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutput& out,
                    TickOutput& sink, ChannelContext& ctx) noexcept {
+  moved_last_cycle_ = moved_this_cycle_;
+  moved_this_cycle_ = false;
   if (!done()) {
     if (in.reset) {
       end_program(EndReason::reset, t_s, sink, ctx);

@@ -5,10 +5,13 @@
 // each block end. What preparation needs back (G100 results, handwheel
 // offsets) leaves through the feedback queue.
 //
-// Continuous-path blending is not done yet: every block ends at standstill
-// (exact stop, like G60). The profile already takes an end velocity, so
-// blending will come as a look-ahead in the planner that sets it
-// (docs/decisions.md).
+// Continuous path: a motion ends at the velocity the look-ahead planned
+// (Command::v_end_mm_s, 0 = exact stop). When it ends at speed, the next
+// block starts within the same cycle and carries on from the distance the
+// path ran past the end, so the set points never pause at a transition.
+// The look-ahead lets the path pass only into blocks that do not wait;
+// preparation must keep the queue filled ahead of such a transition (the
+// dry run does: it prepares before every cycle).
 #include <string>
 #include <vector>
 
@@ -113,6 +116,9 @@ class Channel {
   motion::PathProfile profile_{};
   double dwell_left_s_ = 0;
   double velocity_ = 0;
+  bool passing_ = false;  // the last motion ended at speed: the next one takes over this cycle
+  bool moved_this_cycle_ = false, moved_last_cycle_ = false;  // the path advanced in this / the last cycle
+  bool settling_ = false;  // a motion from an exact stop waits one cycle at standstill
   motion::AxisVector pos_{};
   // Every output and spindle action of a block may wait once, and the late
   // waits (MVS_SLM / MVS_SLP) carried from earlier blocks join them; late

@@ -23,6 +23,7 @@ std::optional<GGroup> g_group(GCode code) {
     case g53: case g54: case g55: case g56: case g57: case g58: case g59: case g159: return GGroup::zero;
     case g161: case g162: return GGroup::center;
     case g201: case g202: return GGroup::manual;
+    case g359: case g360: return GGroup::exact_stop;
     default: break;  // the non-modal codes are listed once, in GCodeSet
   }
   if (GCodeSet::is_nonmodal(code)) return GGroup::nonmodal;
@@ -195,8 +196,17 @@ bool check_values(const Words& w, BlockCtx& b, const ModalState& before, const M
 // The modal state after the block's G codes, without the values (for checks).
 ModalState preview_modal(const Words& w, const ModalState& m);
 
+// G60 stops exactly at the end of this block's motion: a block without
+// motion has no end to stop at (TF5200 20003).
+bool check_exact_stop(const Words& w, BlockCtx& b) {
+  for (const auto& g : w.g)
+    if (g.code == GCode::g60 && w.axis_count == 0)
+      return fail(b, ErrorId::NcExactStopWithoutMotion, g.pos, "G60 needs a motion in its block (axis words)");
+  return true;
+}
+
 bool check_words(const Words& w, BlockCtx& b, const ModalState& modal) {
-  if (!check_groups(w, b)) return false;
+  if (!check_groups(w, b) || !check_exact_stop(w, b)) return false;
   ModalState after = preview_modal(w, modal);
   return check_dwell(w, b, modal) && check_spindle_m(w, b, after) && check_values(w, b, modal, after);
 }

@@ -46,6 +46,8 @@ void apply_g(GCode code, double value, ModalState& m) {
     case g162: m.circle_center_absolute = false; break;
     case g201: m.manual_mode = true; break;
     case g202: m.manual_mode = false; break;
+    case g359: m.exact_stop = false; break;
+    case g360: m.exact_stop = true; break;
     default: break;  // non-modal codes leave the modal state alone
   }
 }

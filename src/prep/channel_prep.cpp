@@ -23,7 +23,8 @@ std::vector<std::int8_t> kernel_spindles(const config::Machine& m, std::size_t c
 ChannelPrep::ChannelPrep(const config::Machine& m, std::size_t ch, const std::filesystem::path& program,
                          PlanStore& store, const PrepOptions& options)
     : planner_(std::make_unique<Planner>(m, ch, store, PlannerOptions{options.clamp_index},
-                                         kernel_spindles(m, ch))) {
+                                         kernel_spindles(m, ch))),
+      window_(m.channels[ch].lookahead_blocks, m.cycle_time_us * 1e-6) {
   if (program.empty()) {
     done_ = true;
     return;
@@ -46,6 +47,10 @@ bool ChannelPrep::needs_feedback(const nc::Block& b) {
 
 void ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& feedback, bool channel_done) {
   new_warnings_.clear();
+  if (flushing_) {
+    if (!window_.release(commands, true)) return;
+    flushing_ = false;
+  }
   if (awaiting_feedback_) {
     if (feedback.empty() && !channel_done) return;
     if (!feedback.empty()) {
@@ -81,16 +86,30 @@ void ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& fe
 }
 
 bool ChannelPrep::prepare(const nc::Block& b, const std::string& file_name, kernel::CommandQueue& commands) {
-  if (window_.full() && !window_.release(commands, false)) return false;
+  if (!window_.has_room() && !window_.release(commands, false)) return false;
   (void)window_.push(planner_->plan(b, file_name));
   // A block that needs feedback, and the program end, must reach the channel now.
-  return window_.release(commands, needs_feedback(b) || b.program_end);
+  flushing_ = flushing_ || needs_feedback(b) || b.program_end;
+  return push_out(commands);
 }
 
 // An error or the missing program end comes after every block before it.
 void ChannelPrep::hand_over(const kernel::Command& c, kernel::CommandQueue& commands) {
-  (void)window_.release(commands, true);
-  (void)commands.push(c);  // room: feed() decodes only with kMaxCommandsPerBlock slots free
+  PlannedBlock b;
+  (void)b.push_back(c);
+  // Room: release() keeps at most depth() commands, fewer than the window holds.
+  if (!window_.has_room()) (void)window_.release(commands, false);
+  (void)window_.push(b);
+  flushing_ = true;
+  (void)push_out(commands);
+}
+
+// Hands over what may leave the window; false while a flush is unfinished
+// (feed() goes on with it when the queue has room again).
+bool ChannelPrep::push_out(kernel::CommandQueue& commands) {
+  if (!window_.release(commands, flushing_)) return false;
+  flushing_ = false;
+  return true;
 }
 
 void ChannelPrep::take_feedback(const kernel::Feedback& f) {

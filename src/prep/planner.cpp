@@ -30,7 +30,7 @@ bool is_executed_command(const nc::HashCommand& h) {
 }
 
 // The non-modal G functions this version executes.
-constexpr nc::GCodeSet kExecutedNonModal{nc::GCode::g4,   nc::GCode::g74,  nc::GCode::g92,  nc::GCode::g100,
+constexpr nc::GCodeSet kExecutedNonModal{nc::GCode::g4,   nc::GCode::g60,  nc::GCode::g74,  nc::GCode::g92,  nc::GCode::g100,
                                          nc::GCode::g101, nc::GCode::g102, nc::GCode::g112, nc::GCode::g130,
                                          nc::GCode::g135, nc::GCode::g136, nc::GCode::g137, nc::GCode::g167};
 
@@ -58,6 +58,7 @@ Planner::Planner(const config::Machine& machine, std::size_t channel_index, Plan
     feed_dyn_[j] = {g.vb_max, std::min(g.a_beschl, g.a_max), std::min(g.a_brems, g.a_max)};
     const double a_rapid = std::min(g.a_grenz, g.a_max);
     rapid_dyn_[j] = {std::min(g.vb_eilgang, g.vb_max), a_rapid, a_rapid};
+    axis_a_max_[j] = g.a_max;
     swe_neg_[j] = ax.swe_neg;
     swe_pos_[j] = ax.swe_pos;
     ref_pos_[j] = g.pos_refpkt;
@@ -68,6 +69,7 @@ Planner::Planner(const config::Machine& machine, std::size_t channel_index, Plan
   }
   pcs_ = frames_.to_pcs(mcs_);  // the clamp / default zero offset act from the start
   setup_diameter_axes(machine);
+  setup_corner_budgets(machine);
 }
 
 Command Planner::error_command(ErrorId id, std::string message, std::uint16_t file_id,
@@ -223,6 +225,7 @@ void Planner::plan_homing(const nc::Block& b, Command first, Commands& out) {
       c.mapped = false;
       c.limits = motion::path_limits(c.segment, std::span<const motion::AxisDynamics>(rapid_dyn_.data(), n_axes_));
       c.v_cmd_mm_s = c.limits.v_max_mm_s;
+      c.exact_stop = true;  // each homing group ends at its reference point
     }
     mcs_ = target;
     (void)out.push_back(c);

@@ -175,6 +175,7 @@ Command Planner::plan_motion(const nc::Block& b, Command c, const std::string& f
     return error_command(ErrorId::KernelBadDynamics, "the axes of this block cannot move", b.file_id,
                          b.line);
   c.v_cmd_mm_s = rapid ? c.limits.v_max_mm_s : v_cmd;
+  note_transition(b, c, rapid);
   return c;
 }
 

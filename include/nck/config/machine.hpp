@@ -223,6 +223,8 @@ struct ChannelConfig {
   std::string default_ax_name_of_spindle;       // P-CHAN-00010
   std::uint32_t cax_face_id = 0;
   bool move_tool_offsets_directly = false;      // P-CHAN-00100
+  bool exact_stop_after_g00 = false;            // P-CHAN-00235
+  std::uint32_t lookahead_blocks = 120;         // P-CHAN-00653 configuration.interpolator.number_blocks_lah
   std::array<std::uint32_t, 1000> m_synch{};    // P-CHAN-00041, per M number
   std::uint32_t decoder_function = 0;           // configuration.decoder.function bits
   std::uint32_t max_cache_number = 0;           // configuration.decoder.max_cache_number

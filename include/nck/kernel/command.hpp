@@ -50,6 +50,14 @@ struct Command {
   AffineMap map{};
   motion::PathLimits limits{};
   double v_cmd_mm_s = 0;
+  // Continuous path. The planner gives the highest velocity at which the
+  // path may pass from the motion before into this one (corner and feed
+  // limits) and whether this block must end at standstill (G60, G360,
+  // exact_stop_after_g00); the look-ahead window sets the velocity at its
+  // end (0 = exact stop) so that every later block can still be reached.
+  double v_entry_max_mm_s = 0;
+  bool exact_stop = false;
+  double v_end_mm_s = 0;
   // dwell
   double dwell_s = 0;
   // stop

@@ -34,6 +34,7 @@ struct ModalState {
   double tap_pitch_mm = 0;              // G331/G332 K (signed: the sign picks the thread hand)
   bool circle_center_absolute = false;  // G161 (true) / G162 (false, initial)
   bool manual_mode = false;             // G201 (true) / G202 (false, initial)
+  bool exact_stop = false;              // G360 (true) / G359 (false, initial)
 };
 
 }  // namespace nck::nc

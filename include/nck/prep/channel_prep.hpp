@@ -52,7 +52,7 @@ class ChannelPrep {
   bool has_program() const { return decoder_.has_value(); }
   // Everything up to the program end (or the error that stopped decoding)
   // is in the command queue.
-  bool done() const { return done_; }
+  bool done() const { return done_ && window_.empty(); }
   // Decoder warnings found by the last feed() (for the caller to report).
   const std::vector<Diagnostic>& new_warnings() const { return new_warnings_; }
   const nc::Decoder* decoder() const { return decoder_ ? &*decoder_ : nullptr; }
@@ -64,11 +64,15 @@ class ChannelPrep {
  private:
   void take_feedback(const kernel::Feedback& f);
   void hand_over(const kernel::Command& c, kernel::CommandQueue& commands);
+  bool push_out(kernel::CommandQueue& commands);
   void collect_warnings();
 
   std::optional<nc::Decoder> decoder_;
   std::unique_ptr<Planner> planner_;
-  LookAheadWindow<8> window_;
+  LookAheadWindow window_;
+  // The window must empty into the queue (program end, an error, a block
+  // whose feedback later blocks need) before anything else is decoded.
+  bool flushing_ = false;
   std::vector<Diagnostic> new_warnings_;
   std::size_t diagnostics_seen_ = 0;
   bool done_ = false;

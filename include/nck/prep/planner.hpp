@@ -66,6 +66,10 @@ class Planner final : public nc::KernelStateReader {
   bool add_outputs(const nc::Block& b, Command& c);
   bool apply_frames(const nc::Block& b, Command& c, Command& error);
   std::string unsupported(const nc::Block& b) const;
+  // continuous path (planner_corner.cpp)
+  void setup_corner_budgets(const config::Machine& machine);
+  motion::AxisVector machine_tangent(const Command& c, bool at_end) const;
+  void note_transition(const nc::Block& b, Command& c, bool rapid);
   // G51/G52 (planner_diameter.cpp)
   void setup_diameter_axes(const config::Machine& machine);
   bool check_diameter(const nc::Block& b, Command& c, Command& error);
@@ -88,6 +92,19 @@ class Planner final : public nc::KernelStateReader {
   std::uint32_t manual_axes_after(const nc::Block& b, frames::SuppressMask mask) const;
   std::array<motion::AxisDynamics, kMaxAxes> feed_dyn_{}, rapid_dyn_{};
   AxisArray swe_neg_{}, swe_pos_{};
+  AxisArray axis_a_max_{};  // dynamik.a_max
+  // Velocity change a kink may cause per axis within one cycle (feed / G0).
+  std::array<double, kMaxAxes> corner_dv_feed_{}, corner_dv_rapid_{};
+  // The last planned motion, for the corner into the next one.
+  struct LastMotion {
+    bool valid = false;
+    motion::AxisVector tangent{};  // at its end, machine axes
+    std::array<double, kMaxAxes> corner_dv{};
+    double cruise_mm_s = 0;
+    double a_dec_mm_s2 = 0;  // along its path
+  };
+  LastMotion last_motion_{};
+  double cycle_s_ = 0.001;
   AxisArray ref_pos_{};  // pos_refpkt: where G74 homes an axis
   nc::ModalState modal_;
   // Bit j: axis j is a face-turning axis / takes diameters under G51 with G90 / with G91.

@@ -26,7 +26,9 @@ struct ProgramRun {
 // where the move ended) and M30.
 ProgramRun run_blocks(const std::string& name, const std::string& blocks, const std::string& args = "") {
   const auto dir = temp_dir(name);
-  std::ofstream(dir / "p.nc") << "%p\n" << blocks;
+  // G360: every block ends at standstill, so the trace shows its end point
+  // when the next one starts (at_block).
+  std::ofstream(dir / "p.nc") << "%p\nG360\n" << blocks;
   const std::string ex = root() + "/examples/mill";
   CliResult r = run_nck("run " + ex + " " + (dir / "p.nc").string() + " --events " + (dir / "e.jsonl").string() +
                         " --trace " + (dir / "t.csv").string() + " --final " + (dir / "f.json").string() + " " +
@@ -206,7 +208,7 @@ TEST(CoordinatesReview, NestedCsAreAllReported) {
   EXPECT_NEAR(r.at_block.at(50)[1], 56.0, 1e-9);
   const json* ev = nullptr;
   for (const json& e : r.events)
-    if (e["ev"] == "offset" && e["kind"] == "cs" && e["line"] == 4) ev = &e;
+    if (e["ev"] == "offset" && e["kind"] == "cs" && e["line"] == 5) ev = &e;
   ASSERT_NE(ev, nullptr);
   for (const json* v : {&(*ev)["values"], &channel(r)["offsets"]["cs"]}) {
     EXPECT_EQ(v->at("X"), 10.0);
@@ -234,7 +236,7 @@ TEST(CoordinatesReview, CsOffBringingAZeroOffsetBackIsAnEvent) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   bool zero_back = false;
   for (const json& e : r.events)
-    if (e["ev"] == "offset" && e["kind"] == "zero" && e["line"] == 5) zero_back = e["values"]["X"] == 100.0;
+    if (e["ev"] == "offset" && e["kind"] == "zero" && e["line"] == 6) zero_back = e["values"]["X"] == 100.0;
   EXPECT_TRUE(zero_back);
 }
 

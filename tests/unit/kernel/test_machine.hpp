@@ -61,6 +61,8 @@ inline nc::Block end_block(std::uint32_t line) {
 struct KernelRig {
   explicit KernelRig(const config::Machine& machine) : m(std::make_unique<config::Machine>(machine)) {
     EXPECT_TRUE(k.configure(*m));
+    // Depth 0: each block reaches the kernel at once and ends at standstill.
+    for (auto& c : m->channels) c.lookahead_blocks = 0;
     for (std::size_t ch = 0; ch < m->channels.size(); ++ch) preps.emplace_back(*m, ch, "", store, prep::PrepOptions{});
   }
   void push_block(std::size_t ch, const nc::Block& b, const std::string& file) {

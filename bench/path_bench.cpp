@@ -1,0 +1,84 @@
+// Cycle time of the common benchmark program (issue 12): the 200,000-block
+// milling program of ../shared/bench/common_program.py (chords and small
+// semicircles on a 50 mm circle at F1200/F1500), generated here by the same
+// rule so the benchmark needs nothing outside the repository. Reported:
+// simulated time / (path length / feed), and simulated seconds per wall
+// second. Arg: blocks (2000 for a quick look, 200000 for the figure).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <memory>
+
+#include "nck/config/load.hpp"
+#include "nck/sim/dry_run.hpp"
+
+namespace {
+
+struct Workload {
+  std::filesystem::path file;
+  double ideal_s = 0;  // every move at its programmed feed (G0 at 500 mm/s), no ramps
+};
+
+double round3(double v) { return std::round(v * 1000.0) / 1000.0; }
+
+// The generator of common_program.py, with the ideal time of each move.
+Workload write_common_program(int n, const std::string& prelude) {
+  Workload w;
+  w.file = std::filesystem::temp_directory_path() / fmt::format("nck-common-{}.nc", n);
+  std::ofstream out(w.file);
+  out << prelude << "G90 G17 G54\nM3 S1000\nG0 X0 Y0 Z5\nG1 Z-1 F300\n";
+  w.ideal_s = 5.0 / 500.0 + 6.0 / 5.0;
+  double cx = 0, cy = 0;
+  for (int i = 0; i < n; ++i) {
+    const double x = round3(50 * std::cos(i * 0.01)), y = round3(50 * std::sin(i * 0.01));
+    const double chord = std::hypot(x - cx, y - cy);
+    if (i % 4 == 3) {
+      const double mx = (cx + x) / 2, my = (cy + y) / 2;
+      out << fmt::format("G2 X{:.3f} Y{:.3f} I{:.4f} J{:.4f} F1200\n", x, y, mx - cx, my - cy);
+      w.ideal_s += M_PI * chord / 2 / 20.0;
+    } else {
+      out << fmt::format("G1 X{:.3f} Y{:.3f} F1500\n", x, y);
+      w.ideal_s += chord / (i == 0 ? 500.0 : 25.0);  // the first move starts from X0 Y0 at F1500
+    }
+    cx = x, cy = y;
+  }
+  out << "M5\nM2\n";
+  return w;
+}
+
+void run_common(benchmark::State& state, const std::string& prelude) {
+  const auto loaded = nck::config::load_machine(std::string(NCK_SOURCE_DIR) + "/examples/mill");
+  const nck::config::Machine& m = *loaded.machine;
+  const Workload w = write_common_program(static_cast<int>(state.range(0)), prelude);
+  auto out = std::make_unique<nck::kernel::TickOutput>();
+  double simulated_s = 0, last_s = 0;
+  for (auto _ : state) {
+    auto run = nck::sim::DryRun::create(m, {w.file});
+    if (!run) {
+      state.SkipWithError("cannot create the run");
+      return;
+    }
+    while (!run->done()) run->step(*out);
+    last_s = run->time_s();
+    simulated_s += last_s;
+  }
+  state.counters["time_ratio"] = last_s / w.ideal_s;
+  state.counters["sim_s"] = last_s;
+  state.counters["sim_s_per_wall_s"] = benchmark::Counter(simulated_s, benchmark::Counter::kIsRate);
+  std::filesystem::remove(w.file);
+}
+
+// The default: velocity look-ahead, no corner blending.
+void BM_CommonProgram(benchmark::State& state) { run_common(state, ""); }
+BENCHMARK(BM_CommonProgram)->Arg(2000)->Arg(200000)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// Exact stop at every block (G360): the behaviour before the look-ahead.
+void BM_CommonProgramExactStop(benchmark::State& state) { run_common(state, "G360\n"); }
+BENCHMARK(BM_CommonProgramExactStop)->Arg(2000)->Arg(200000)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,25 @@
+#pragma once
+// Velocity limits at the transition between two motion blocks, for the
+// look-ahead in block preparation (setup side; pure functions).
+#include <span>
+
+#include "nck/motion/segment.hpp"
+
+namespace nck::motion {
+
+// The largest path velocity at which going from direction t_in (the unit
+// tangent at the end of one block, per axis) into t_out (at the start of
+// the next) changes no axis's velocity by more than dv_mm_s[j] in a cycle:
+// a kink turns axis j's velocity by v * |t_out[j] - t_in[j]| at once.
+// +infinity when no axis's direction changes (collinear or tangent
+// transitions); 0 when an axis that turns has no budget. Only the first
+// dv_mm_s.size() axes count.
+double corner_velocity(const AxisVector& t_in, const AxisVector& t_out, std::span<const double> dv_mm_s) noexcept;
+
+// The highest velocity at the start of a path of length_mm from which
+// PathProfile, braking with a_dec_mm_s2 in cycles of dt_s, still reaches
+// v_exit_mm_s at its end (the same discrete braking law, so the profile
+// never finds itself too fast).
+double entry_velocity_limit(double length_mm, double v_exit_mm_s, double a_dec_mm_s2, double dt_s) noexcept;
+
+}  // namespace nck::motion

@@ -1,0 +1,62 @@
+// What the look-ahead needs of each motion block (docs/decisions.md,
+// continuous path): whether it must end at standstill, and how fast the path
+// may pass into it from the motion planned before it.
+#include <algorithm>
+
+#include "nck/motion/junction.hpp"
+#include "nck/prep/planner.hpp"
+
+namespace nck::prep {
+
+// setup: each axis's velocity budget for a kink. Along the path an axis
+// already accelerates with up to max(a_acc, a_dec) of the block's mode; a
+// kink may add only what is left of a_max, spent within one cycle.
+void Planner::setup_corner_budgets(const config::Machine& machine) {
+  const double dt_s = cycle_s_ = machine.cycle_time_us * 1e-6;
+  for (std::size_t j = 0; j < n_axes_; ++j) {
+    const double a_max = axis_a_max_[j];
+    auto budget = [&](const motion::AxisDynamics& d) {
+      return std::max(a_max - std::max(d.a_acc_mm_s2, d.a_dec_mm_s2), 0.0) * dt_s;
+    };
+    corner_dv_feed_[j] = budget(feed_dyn_[j]);
+    corner_dv_rapid_[j] = budget(rapid_dyn_[j]);
+  }
+}
+
+// The unit direction of c's path at its start or end, in machine axes.
+motion::AxisVector Planner::machine_tangent(const Command& c, bool at_end) const {
+  motion::AxisVector t{};
+  c.segment.tangent_at(at_end ? c.segment.length() : 0.0, t);
+  if (!c.mapped) return t;
+  motion::AxisVector mapped{}, origin{}, zero{};
+  c.map.apply(t, mapped, n_axes_);
+  c.map.apply(zero, origin, n_axes_);
+  for (std::size_t j = 0; j < n_axes_; ++j) mapped[j] -= origin[j];
+  return mapped;
+}
+
+// Exact stop at c's end: G60 in the block, G360 in force, or a G0 block
+// with exact_stop_after_g00 (P-CHAN-00235). The entry limit: the corner
+// from the previous motion, and neither block's feed exceeded — a lower F
+// is reached before its block starts, a higher one is taken up after the
+// transition (the ISG rule).
+void Planner::note_transition(const nc::Block& b, Command& c, bool rapid) {
+  c.exact_stop = b.g_nonmodal.has(nc::GCode::g60) || b.modal.exact_stop ||
+                 (rapid && channel_.exact_stop_after_g00);
+  const auto& dv = rapid ? corner_dv_rapid_ : corner_dv_feed_;
+  const double cruise_mm_s = std::min(c.v_cmd_mm_s, c.limits.v_max_mm_s);
+  if (last_motion_.valid) {
+    std::array<double, kMaxAxes> budget{};
+    for (std::size_t j = 0; j < n_axes_; ++j) budget[j] = std::min(dv[j], last_motion_.corner_dv[j]);
+    // The profile crosses the transition up to one braking step faster than
+    // planned (its braking is a staircase of a_dec * dt): the kink must fit
+    // at that speed too.
+    const double corner = motion::corner_velocity(last_motion_.tangent, machine_tangent(c, false),
+                                                  std::span<const double>(budget.data(), n_axes_)) -
+                          last_motion_.a_dec_mm_s2 * cycle_s_;
+    c.v_entry_max_mm_s = std::max(std::min({corner, cruise_mm_s, last_motion_.cruise_mm_s}), 0.0);
+  }
+  last_motion_ = {true, machine_tangent(c, true), dv, cruise_mm_s, c.limits.a_dec_mm_s2};
+}
+
+}  // namespace nck::prep

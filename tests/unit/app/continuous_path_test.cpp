@@ -1,0 +1,217 @@
+// Continuous path through `nck run` (issue 12): the path keeps its speed
+// through tangent transitions, stops exactly where G60/G360 ask, and no
+// axis ever exceeds its velocity or acceleration (mill: vb_max 500 mm/s,
+// a_max X/Y 3000, Z 2500 mm/s^2, 1 ms cycle).
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <random>
+
+#include <fmt/format.h>
+
+#include "cli_helpers.hpp"
+
+namespace nck::app {
+namespace {
+
+using namespace testing;
+using nlohmann::json;
+
+constexpr double kDt = 0.001;
+
+struct Trace {
+  std::vector<double> t;
+  std::vector<std::array<double, 3>> p;  // X Y Z
+};
+
+Trace read_trace(const std::filesystem::path& f) {
+  Trace tr;
+  const auto lines = split(read_file(f), '\n');
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const auto c = split(lines[i], ',');
+    if (c.size() < 4) continue;
+    tr.t.push_back(std::stod(c[0]));
+    tr.p.push_back({std::stod(c[1]), std::stod(c[2]), std::stod(c[3])});
+  }
+  return tr;
+}
+
+// Path speed over the cycle ending at row i.
+double speed(const Trace& tr, std::size_t i) {
+  if (i == 0) return 0;
+  double d2 = 0;
+  for (int k = 0; k < 3; ++k) d2 += std::pow(tr.p[i][k] - tr.p[i - 1][k], 2);
+  return std::sqrt(d2) / kDt;
+}
+
+// Row of the cycle at time t.
+std::size_t row_at(const Trace& tr, double t) {
+  return static_cast<std::size_t>(std::lower_bound(tr.t.begin(), tr.t.end(), t - 1e-9) - tr.t.begin());
+}
+
+struct PathRun {
+  CliResult cli;
+  Trace trace;
+  std::map<long, double> block_t;  // N -> start
+  double end_t = 0;
+};
+
+PathRun run_mill(const std::string& name, const std::string& program) {
+  const auto dir = temp_dir(name);
+  std::ofstream(dir / "p.nc") << program;
+  PathRun r;
+  r.cli = run_nck("run " + root() + "/examples/mill " + (dir / "p.nc").string() + " --trace " + (dir / "t.csv").string() +
+                  " --events " + (dir / "e.jsonl").string() + " --final " + (dir / "f.json").string());
+  r.trace = read_trace(dir / "t.csv");
+  for (const json& e : read_jsonl(dir / "e.jsonl"))
+    if (e["ev"] == "block" && !e["n"].is_null()) r.block_t[e["n"].get<long>()] = e["t"];
+  r.end_t = json::parse(read_file(dir / "f.json"))["time"];
+  return r;
+}
+
+TEST(ContinuousPath, ContourKeepsItsSpeedThroughTangentTransitions) {
+  const auto dir = temp_dir("cp-contour");
+  const std::string mill = root() + "/examples/mill";
+  PathRun r;
+  r.cli = run_nck("run " + mill + " " + mill + "/contour.nc --trace " + (dir / "t.csv").string() + " --events " +
+                  (dir / "e.jsonl").string());
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  r.trace = read_trace(dir / "t.csv");
+  for (const json& e : read_jsonl(dir / "e.jsonl"))
+    if (e["ev"] == "block" && !e["n"].is_null()) r.block_t[e["n"].get<long>()] = e["t"];
+  // The pocket N80..N150 at F1200 (20 mm/s): lines and corner arcs meet
+  // tangentially, so every transition is passed at the feed.
+  for (long n : {90, 100, 110, 120, 130, 140, 150}) {
+    const std::size_t i = row_at(r.trace, r.block_t.at(n));
+    EXPECT_NEAR(speed(r.trace, i), 20.0, 0.05) << "N" << n;
+    EXPECT_NEAR(speed(r.trace, i + 1), 20.0, 0.05) << "N" << n;
+  }
+}
+
+TEST(ContinuousPath, BlendingShortensTheCycleTimeOverExactStop) {
+  const std::string pocket = "N10 G1 X32 Y-25 F1200\nN20 X-32\nN30 G2 X-40 Y-17 I0 J8\nN40 G1 Y17\nN50 G2 X-32 Y25 I8 J0\n"
+                             "N60 G1 X32\nN70 M30\n";
+  PathRun blend = run_mill("cp-blend", "N5 G0 X32 Y-25\n" + pocket);
+  PathRun exact = run_mill("cp-exact", "N5 G0 X32 Y-25\nN6 G360\n" + pocket);
+  ASSERT_EQ(blend.cli.exit_code, 0) << blend.cli.output;
+  ASSERT_EQ(exact.cli.exit_code, 0) << exact.cli.output;
+  const double feed_time = (64 + 64 + 34 + 2 * (M_PI * 8 / 2)) / 20.0;  // length / 20 mm/s
+  const double blend_s = blend.end_t - blend.block_t.at(10), exact_s = exact.end_t - exact.block_t.at(10);
+  EXPECT_LT(blend_s, exact_s - 0.02);  // four transitions, each ~8 ms of ramp at 2500 mm/s^2
+  EXPECT_LT(blend_s, feed_time * 1.01 + 0.05);
+}
+
+TEST(ContinuousPath, G60AndG360StopExactlyAndG359Blends) {
+  // At an exact stop the last cycle of one block and the first of the next
+  // move at most one braking / accelerating step (2500 mm/s^2 * 1 ms).
+  auto stops_at = [](const PathRun& r, long n) {
+    const std::size_t i = row_at(r.trace, r.block_t.at(n));
+    return speed(r.trace, i) < 3.0 && speed(r.trace, i - 1) < 3.0;
+  };
+  PathRun g60 = run_mill("cp-g60", "N10 G1 X10 F1200\nN20 G60 X20\nN30 X30\nN40 X40\nN50 M30\n");
+  ASSERT_EQ(g60.cli.exit_code, 0) << g60.cli.output;
+  EXPECT_FALSE(stops_at(g60, 20));  // N10 -> N20 blends
+  EXPECT_TRUE(stops_at(g60, 30));   // G60: N20 ends at standstill
+  EXPECT_FALSE(stops_at(g60, 40));  // non-modal
+  PathRun g360 = run_mill("cp-g360", "N10 G360 G1 X10 F1200\nN20 X20\nN30 G359 X30\nN40 X40\nN50 M30\n");
+  ASSERT_EQ(g360.cli.exit_code, 0) << g360.cli.output;
+  EXPECT_TRUE(stops_at(g360, 20));
+  EXPECT_TRUE(stops_at(g360, 30));
+  EXPECT_FALSE(stops_at(g360, 40));
+}
+
+TEST(ContinuousPath, G60WithoutMotionIsError20003) {
+  PathRun r = run_mill("cp-g60-bad", "N10 G1 X10 F1200\nN20 G60\nN30 M30\n");
+  EXPECT_EQ(r.cli.exit_code, 1) << r.cli.output;
+  EXPECT_NE(r.cli.output.find("20003"), std::string::npos) << r.cli.output;
+}
+
+// Per-axis limits hold on random programs (seeded; NCK_PROPERTY_COUNT sets
+// how many): lines, arcs, feed changes and reversals.
+struct RandomProgram {
+  std::string text;
+  std::vector<std::array<double, 3>> points;  // every programmed end point
+};
+
+RandomProgram random_program(std::mt19937& rng) {
+  std::uniform_real_distribution<double> pos(-40, 40), small(-0.5, 0.5), feed(300, 6000), zpos(-5, 5);
+  std::uniform_int_distribution<int> kind(0, 9);
+  RandomProgram p{"N1 G17 G90 G0 X0 Y0 Z0\n", {{0, 0, 0}}};
+  double x = 0, y = 0, z = 0;
+  auto line = [&](int g, double nx, double ny, double nz, double f) {
+    p.text += g == 0 ? fmt::format("G0 X{:.3f} Y{:.3f} Z{:.3f}\n", nx, ny, nz)
+                     : fmt::format("G1 X{:.3f} Y{:.3f} F{:.0f}\n", nx, ny, f);
+    p.points.push_back({std::round(nx * 1000) / 1000, std::round(ny * 1000) / 1000, std::round(nz * 1000) / 1000});
+  };
+  for (int i = 0; i < 40; ++i) {
+    const int k = kind(rng);
+    const bool near = k < 3;
+    const double nx = near ? x + small(rng) : pos(rng), ny = near ? y + small(rng) : pos(rng);
+    if (k == 9) {  // reversal: there and back
+      line(1, nx, ny, z, feed(rng));
+      line(1, x, y, z, feed(rng));
+      continue;
+    }
+    if (k == 8 || k == 7) {  // a half circle to the new point
+      const double ex = std::round(nx * 1000) / 1000, ey = std::round(ny * 1000) / 1000;
+      p.text += fmt::format("G{} X{:.3f} Y{:.3f} I{:.4f} J{:.4f} F{:.0f}\n", k == 8 ? 2 : 3, ex, ey, (ex - x) / 2,
+                            (ey - y) / 2, feed(rng));
+      p.points.push_back({ex, ey, z});
+    } else if (k == 6) {
+      z = zpos(rng);
+      line(0, nx, ny, z, 0);
+    } else {
+      line(1, nx, ny, z, feed(rng));
+    }
+    x = p.points.back()[0], y = p.points.back()[1], z = p.points.back()[2];
+  }
+  p.text += "M30\n";
+  return p;
+}
+
+// Distance from q to the trace's polyline (the path between cycles).
+double distance_to_trace(const Trace& tr, const std::array<double, 3>& q) {
+  double best = 1e300;
+  for (std::size_t i = 1; i < tr.p.size(); ++i) {
+    std::array<double, 3> d{}, w{};
+    double dd = 0, t = 0;
+    for (int k = 0; k < 3; ++k) d[k] = tr.p[i][k] - tr.p[i - 1][k], w[k] = q[k] - tr.p[i - 1][k], dd += d[k] * d[k];
+    if (dd > 0) for (int k = 0; k < 3; ++k) t += w[k] * d[k] / dd;
+    t = std::clamp(t, 0.0, 1.0);
+    double e = 0;
+    for (int k = 0; k < 3; ++k) e += std::pow(w[k] - t * d[k], 2);
+    best = std::min(best, std::sqrt(e));
+  }
+  return best;
+}
+
+TEST(ContinuousPathProperty, NoAxisExceedsItsLimitsAndEveryEndPointIsOnThePath) {
+  const char* env = std::getenv("NCK_PROPERTY_COUNT");
+  const int count = env ? std::atoi(env) : 12;
+  const std::array<double, 3> v_max{500, 500, 500}, a_max{3000, 3000, 2500};
+  std::mt19937 rng(20261123);
+  for (int n = 0; n < count; ++n) {
+    const RandomProgram program = random_program(rng);
+    PathRun r = run_mill("cp-prop", program.text);
+    std::ofstream(temp_dir("cp-prop-last") / "p.nc") << program.text;
+    ASSERT_EQ(r.cli.exit_code, 0) << program.text << r.cli.output;
+    const Trace& tr = r.trace;
+    for (std::size_t i = 2; i < tr.p.size(); ++i)
+      for (int k = 0; k < 3; ++k) {
+        const double v1 = (tr.p[i][k] - tr.p[i - 1][k]) / kDt, v0 = (tr.p[i - 1][k] - tr.p[i - 2][k]) / kDt;
+        ASSERT_LE(std::fabs(v1), v_max[k] + 0.01) << "axis " << k << " t " << tr.t[i] << "\n" << program.text;
+        // 1e-6 mm trace resolution: +-2 mm/s^2 of rounding in a second difference.
+        ASSERT_LE(std::fabs(v1 - v0) / kDt, a_max[k] + 5.0) << "axis " << k << " t " << tr.t[i] << "\n" << program.text;
+      }
+    // The set points are on the programmed path; between two cycles the
+    // trace's straight chord cuts a kink by at most a few micrometres (one
+    // cycle's travel at the corner speed times the kink's half angle).
+    for (const auto& q : program.points)
+      ASSERT_LT(distance_to_trace(tr, q), 0.01) << q[0] << " " << q[1] << " " << q[2] << "\n" << program.text;
+  }
+}
+
+}  // namespace
+}  // namespace nck::app
