@@ -235,6 +235,7 @@ void read_switches(const ParamList& l, ChannelConfig& c) {
   c.main_spindle_gear_change = l.flag("main_spindle_gear_change", false);
   c.default_ax_name_of_spindle = l.text("default_ax_name_of_spindle", "");
   c.cax_face_id = l.u32("cax_face_id", 0);
+  for (std::size_t i = 0; i < c.trafo_ids.size(); ++i) c.trafo_ids[i] = l.u32(fmt::format("trafo[{}].id", i), 0);
   c.move_tool_offsets_directly = l.flag("move_tool_offsets_directly", false);
   for (auto n : l.indices("m_synch[")) c.m_synch[n] = l.u32(fmt::format("m_synch[{}]", n), 0);
   c.decoder_function = l.u32("configuration.decoder.function", 0);
