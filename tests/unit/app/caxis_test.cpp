@@ -231,6 +231,83 @@ TEST(CAxis, MillExampleSlotAroundTheCylinder) {
   }
 }
 
+TEST(CAxis, FaceCircleAroundTheCentreAndFinalStateInCartesian) {
+  // G3 full circle of radius 15 about the face's centre: X stays 15, C runs
+  // 0 -> 360. The program ends under #FACE at (10, 10): --final shows the
+  // machine X 14.1421 / C 45 (405 until the program end left C-axis mode)
+  // and the program (Cartesian) values 10 / 10.
+  const auto dir = temp_dir("cax_circle");
+  const CliResult r = run_program("circle", R"(N10 G90 G0 X0 Y0 Z50
+N20 M5
+N30 #CAX [S, C]
+N40 #FACE [X, C]
+N50 G0 X15 C0
+N60 G3 X15 C0 I-15 J0 F600
+N70 G1 X10 C10
+N80 M30
+)", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Trace t = read_trace(dir / "t.csv");
+  const auto rows = block_rows(dir / "e.jsonl");
+  EXPECT_NEAR(t.at(rows.at(60), "X"), 15.0, 1e-6);
+  EXPECT_NEAR(t.at(rows.at(60), "C"), 0.0, 1e-6);
+  double c_max = 0;
+  for (std::size_t i = rows.at(60) + 1; i <= rows.at(70); ++i) {
+    ASSERT_NEAR(t.at(i, "X"), 15.0, 1e-5) << "row " << i;
+    ASSERT_GE(t.at(i, "C"), t.at(i - 1, "C") - 1e-9) << "row " << i;  // counter-clockwise only
+    c_max = std::max(c_max, t.at(i, "C"));
+  }
+  EXPECT_NEAR(t.at(rows.at(70), "C"), 360.0, 1e-5);
+  // From (15, 0) at C 360 to (10, 10): 45 deg further.
+  EXPECT_NEAR(t.at(rows.at(80), "C"), 405.0, 1e-5);
+  EXPECT_NEAR(t.at(rows.at(80), "X"), 10.0 * std::numbers::sqrt2, 1e-5);
+  // The program end ends C-axis mode: C shows the spindle (405 = 45 deg).
+  EXPECT_NEAR(t.rows.back()[t.col.at("C")], 45.0, 1e-4);
+  const nlohmann::json f = nlohmann::json::parse(read_file(dir / "f.json"));
+  const nlohmann::json& axes = f["channels"][0]["axes"];
+  EXPECT_NEAR(axes["X"]["mcs"].get<double>(), 10.0 * std::numbers::sqrt2, 1e-6);
+  EXPECT_NEAR(axes["C"]["mcs"].get<double>(), 45.0, 1e-4);
+  EXPECT_NEAR(axes["X"]["pcs"].get<double>(), 10.0, 1e-6);
+  EXPECT_NEAR(axes["C"]["pcs"].get<double>(), 10.0, 1e-6);
+}
+
+TEST(CAxis, CylinderSeedExampleHalfCircleOnTheDevelopedSurface) {
+  // Facts B14's example: #CYL [Z, C, X60], G01 C100, G02 Z100 R50. From
+  // (Z0, C100 mm) the clockwise half circle about (Z50, C100) passes
+  // C 150 mm = 2.5 rad = 143.2394 deg at Z50 and ends at Z100, C 95.4930 deg.
+  const auto dir = temp_dir("cax_cyl_seed");
+  const CliResult r = run_program("cyl", R"(N10 G90 G0 X80 Y0 Z0
+N20 M5
+N30 #CAX
+N40 G0 C0
+N50 #CYL [Z, C, X60]
+N60 G01 C100 F500
+N70 G02 Z100 R50
+N80 #CYL OFF
+N90 #CAX OFF
+N100 M30
+)", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Trace t = read_trace(dir / "t.csv");
+  const auto rows = block_rows(dir / "e.jsonl");
+  const double k = 180.0 / (std::numbers::pi * 60.0);
+  EXPECT_NEAR(t.at(rows.at(70), "C"), 95.49296585513720, 1e-5);
+  double c_max = 0, z_at_max = 0;
+  for (std::size_t i = rows.at(70) + 1; i <= rows.at(80); ++i) {
+    // On the developed circle: (Z - 50)^2 + (C_mm - 100)^2 = 50^2.
+    const double dz = t.at(i, "Z") - 50.0, dc = t.at(i, "C") / k - 100.0;
+    ASSERT_NEAR(std::hypot(dz, dc), 50.0, 1e-4) << "row " << i;
+    if (t.at(i, "C") > c_max) {
+      c_max = t.at(i, "C");
+      z_at_max = t.at(i, "Z");
+    }
+  }
+  EXPECT_NEAR(c_max, 143.2394487827058, 1e-3);
+  EXPECT_NEAR(z_at_max, 50.0, 0.1);
+  EXPECT_NEAR(t.at(rows.at(80), "Z"), 100.0, 1e-6);
+  EXPECT_NEAR(t.at(rows.at(80), "C"), 95.49296585513720, 1e-5);
+}
+
 TEST(CAxis, ErrorsWithTheirIds) {
   struct Case {
     const char* name;
