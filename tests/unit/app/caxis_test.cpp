@@ -103,6 +103,13 @@ TEST(CAxis, MillExampleMachinePositionsOnTheFace) {
     const long next = std::next(x.start.find(n))->first;
     return x.start.at(next);
   };
+  // C moves with S1's own gear-stage dynamics (def_cax_gear_st 1): G0 C90
+  // at vb_eilgang 3000 deg/s and a_grenz 20000 deg/s^2 never reaches full
+  // speed (that takes 225 deg): 2 * sqrt(45 / (20000 / 2)) = 0.134 s.
+  EXPECT_NEAR(static_cast<double>(x.start.at(50) - x.start.at(40)) * 1e-3, 2.0 * std::sqrt(45.0 / 10000.0), 0.003);
+  // N50: C does not count for the path length: 20 mm of X at F600
+  // (10 mm/s) take 2 s plus X's ramps (a_beschl 2500: 4 ms).
+  EXPECT_NEAR(static_cast<double>(x.start.at(60) - x.start.at(50)) * 1e-3, 2.004, 0.003);
   // N40 G0 C90; N50 G1 X20 C180 (C in degrees, the spindle follows).
   EXPECT_NEAR(t.at(end_of(40), "C"), 90.0, 1e-6);
   EXPECT_NEAR(t.at(end_of(40), "S1.pos"), 90.0, 1e-3);
