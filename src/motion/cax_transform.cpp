@@ -35,6 +35,15 @@ FaceMachine face_to_machine(double x_mm, double y_mm, double prev_c_deg) noexcep
   return {r, c_pos};
 }
 
+double face_leave_centre_c_deg(double dx, double dy, double prev_c_deg, bool x_positive) noexcept {
+  if (!(std::hypot(dx, dy) > 0)) return prev_c_deg;
+  const double a = std::atan2(dy, dx) * kDegPerRad;
+  const double own = nearest_turn(a, prev_c_deg);
+  if (x_positive) return own;
+  const double opposite = nearest_turn(a + 180.0, prev_c_deg);
+  return std::abs(opposite - prev_c_deg) < std::abs(own - prev_c_deg) ? opposite : own;
+}
+
 void face_to_cartesian(double x_mm, double c_deg, double& cart_x_mm, double& cart_y_mm) noexcept {
   const double a = c_deg / kDegPerRad;
   cart_x_mm = x_mm * std::cos(a);

@@ -187,6 +187,8 @@ Planner::Commands Planner::plan(const nc::Block& b, const std::string& file_name
   Command c = plan_one(b, file_name);
   if (homing && c.kind == CommandKind::nop) {
     plan_homing(b, c, out);
+  } else if (c.kind == CommandKind::motion && c.trafo.kind == motion::CaxTrafoKind::face) {
+    face_centre_commands(c, out);  // planner_cax.cpp: C turns at the face's centre
   } else {
     (void)out.push_back(c);
   }

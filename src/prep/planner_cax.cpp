@@ -249,7 +249,112 @@ void Planner::limit_transformed(Command& c, std::array<motion::AxisDynamics, kMa
     c.limits.a_acc_mm_s2 = std::min(c.limits.a_acc_mm_s2, c_dyn.a_acc_mm_s2 / rate_deg_mm);
     c.limits.a_dec_mm_s2 = std::min(c.limits.a_dec_mm_s2, c_dyn.a_dec_mm_s2 / rate_deg_mm);
   }
+  cax_.c_before_deg = cax_.machine_c_deg;
   cax_.machine_c_deg = motion::face_end_c_deg(cax_.trafo, c.segment, cax_.machine_c_deg);
+}
+
+// A face line that leaves the centre needs C turned to its direction first
+// (the tool stands at the centre, so only C moves); on a lathe
+// (cax_face_id 1), where X stays >= 0, a line through the centre is split
+// there and C turns half a turn between the halves. The mill lets X pass
+// through 0 instead (docs/decisions.md). At most three commands: line to
+// the centre, turn, line from it; the first carries the block's functions.
+void Planner::face_centre_commands(const Command& c, Commands& out) {
+  const motion::CaxTrafo& t = c.trafo;
+  const auto jx = static_cast<std::size_t>(t.radial), jc = static_cast<std::size_t>(t.c);
+  const motion::Segment& seg = c.segment;
+  const motion::AxisVector& p0 = seg.start_point();
+  const motion::AxisVector& p1 = seg.end_point();
+  const double dx = p1[jx] - p0[jx], dy = p1[jc] - p0[jc];
+  const double lp = std::hypot(dx, dy);
+  const bool lathe = channel_.cax_face_id == 1;
+  if (c.mapped) {  // a rotated face contour: its points are not machine-Cartesian here
+    cax_.machine_c_deg = motion::face_end_c_deg(t, seg, cax_.c_before_deg);
+    (void)out.push_back(c);
+    return;
+  }
+  std::vector<std::pair<motion::AxisVector, motion::AxisVector>> lines;  // Cartesian pieces
+  if (seg.kind() == motion::SegmentKind::line && lp > 0) {
+    const double foot = -(p0[jx] * dx + p0[jc] * dy) / lp;  // along the plane, from p0
+    const double d = std::abs(p0[jx] * dy - p0[jc] * dx) / lp;
+    const bool through = d < motion::kFaceCentre_mm && foot > motion::kFaceCentre_mm &&
+                         foot < lp - motion::kFaceCentre_mm;
+    if (through && lathe) {
+      motion::AxisVector mid{};
+      seg.point_at(foot / lp * seg.length(), mid);
+      mid[jx] = 0;
+      mid[jc] = 0;
+      lines.emplace_back(p0, mid);
+      lines.emplace_back(mid, p1);
+    }
+  }
+  if (lines.empty()) lines.emplace_back(p0, p1);
+  double c_deg = cax_.c_before_deg;
+  Command first = c;
+  bool first_taken = false;
+  auto push = [&](Command cmd) {
+    if (first_taken) {
+      Command follow;
+      follow.file_id = c.file_id;
+      follow.line = c.line;
+      follow.emit_block_event = false;
+      follow.kind = cmd.kind;
+      follow.segment = cmd.segment;
+      follow.limits = cmd.limits;
+      follow.v_cmd_mm_s = cmd.v_cmd_mm_s;
+      follow.trafo = cmd.trafo;
+      follow.mapped = cmd.mapped;
+      follow.map = cmd.map;
+      follow.feed_motion = cmd.feed_motion;
+      cmd = follow;
+    } else {
+      Command head = first;
+      head.kind = cmd.kind;
+      head.segment = cmd.segment;
+      head.limits = cmd.limits;
+      head.v_cmd_mm_s = cmd.v_cmd_mm_s;
+      head.trafo = cmd.trafo;
+      cmd = head;
+      first_taken = true;
+    }
+    (void)out.push_back(cmd);
+  };
+  for (const auto& [a, b] : lines) {
+    const bool from_centre = std::hypot(a[jx], a[jc]) < motion::kFaceCentre_mm;
+    if (from_centre && (lines.size() > 1 || c.segment.kind() == motion::SegmentKind::line)) {
+      const double to = motion::face_leave_centre_c_deg(b[jx] - a[jx], b[jc] - a[jc], c_deg, lathe);
+      if (std::abs(to - c_deg) > 1e-9) push(face_turn(c, a, c_deg, to));
+      c_deg = to;
+    }
+    Command piece = c;
+    if (lines.size() > 1) {
+      auto s = motion::make_line(a, b, n_axes_);
+      if (s) piece.segment = *s;
+    }
+    c_deg = motion::face_end_c_deg(t, piece.segment, c_deg);
+    push(piece);
+  }
+  cax_.machine_c_deg = c_deg;
+}
+
+// C alone turning from_deg -> to_deg with the tool at the face's centre (a
+// machine move, no transformation), at C's own limits.
+Command Planner::face_turn(const Command& like, const motion::AxisVector& centre_cart, double from_deg,
+                           double to_deg) const {
+  const auto jx = static_cast<std::size_t>(like.trafo.radial), jc = static_cast<std::size_t>(like.trafo.c);
+  motion::AxisVector a = centre_cart, b = centre_cart;
+  a[jx] = b[jx] = 0;
+  a[jc] = from_deg;
+  b[jc] = to_deg;
+  Command turn = like;
+  turn.kind = CommandKind::motion;
+  turn.trafo = motion::CaxTrafo{};
+  turn.mapped = false;
+  if (auto s = motion::make_line(a, b, n_axes_)) turn.segment = *s;
+  const auto& dyn = like.feed_motion ? feed_dyn_ : rapid_dyn_;
+  turn.limits = motion::path_limits(turn.segment, std::span<const motion::AxisDynamics>(dyn.data(), n_axes_));
+  turn.v_cmd_mm_s = turn.limits.v_max_mm_s;
+  return turn;
 }
 
 }  // namespace nck::prep

@@ -48,6 +48,12 @@ void face_to_cartesian(double x_mm, double c_deg, double& cart_x_mm, double& car
 double cyl_to_machine_c_deg(double c_mm, double radius_mm) noexcept;
 double cyl_to_developed_mm(double c_deg, double radius_mm) noexcept;
 
+// Face: the C from which a line leaving the centre in direction (dx, dy)
+// starts. x_positive (lathe, cax_face_id 1): the direction's own angle, the
+// turn nearest prev_c_deg, so X stays >= 0; otherwise the direction or its
+// opposite, whichever is nearer (a turn of at most 90 deg). rt
+double face_leave_centre_c_deg(double dx, double dy, double prev_c_deg, bool x_positive) noexcept;
+
 // The whole set point: `cart` (program side, Cartesian) to `machine`, whose
 // C holds the previous machine C on entry (the face branch follows it).
 // Axes other than the transformed ones are copied. rt

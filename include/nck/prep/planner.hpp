@@ -117,6 +117,7 @@ class Planner final : public nc::KernelStateReader {
     // #FACE: C turns at most 45 deg per cycle, so the channel's choice of
     // the nearer solution every cycle follows the contour (set from the cycle time).
     double c_cycle_limit_deg_s = 45000;
+    double c_before_deg = 0;  // machine C where the last planned face motion started
   };
   CaxState cax_{};
   int c_axis_ = -1;               // channel index of the C axis (ChannelConfig::c_axis)
@@ -130,6 +131,8 @@ class Planner final : public nc::KernelStateReader {
   void set_trafo(const motion::CaxTrafo& t);
   void limit_transformed(Command& c, std::array<motion::AxisDynamics, kMaxAxes> dyn);
   bool trafo_plane(int& a, int& b) const;
+  void face_centre_commands(const Command& c, Commands& out);
+  Command face_turn(const Command& like, const motion::AxisVector& centre_cart, double from_deg, double to_deg) const;
   motion::AxisMask length_axes() const;
 };
 

@@ -371,6 +371,46 @@ TEST(CAxis, WrongAxisModeAndMissingTrafoId) {
     EXPECT_EQ(e["id"], 930203);
     EXPECT_EQ(e["line"], 3);
   }
+  // The lathe variant: cax_face_id 1 with trafo[i].id 13 runs #FACE.
+  {
+    const auto dir = temp_dir("cax_lathe_face");
+    const auto m = replaced_in_example("cax_lathe_m", "channel1.lis", "trafo[0].id                   14",
+                                       "trafo[0].id                   13");
+    std::string text = read_file(m.dir / "channel1.lis");
+    const std::string from = "cax_face_id                   2";
+    ASSERT_NE(text.find(from), std::string::npos);
+    text.replace(text.find(from), from.size(), "cax_face_id                   1");
+    std::ofstream(m.dir / "channel1.lis") << text;
+    const CliResult r = run_program("p", R"(N10 M5
+N20 #CAX [S, C]
+N30 #FACE [X, C]
+N40 G1 X0 C20 F600
+N50 G1 X0 C-20
+N60 #FACE OFF
+N70 #CAX OFF
+N80 M30
+)", dir, m.dir.string());
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_TRUE(first_error(dir / "e.jsonl").is_null());
+    const Trace t = read_trace(dir / "t.csv");
+    const auto rows = block_rows(dir / "e.jsonl");
+    // N40 leaves the centre towards +Y: C first turns 0 -> 90 with X at 0,
+    // then X runs to 20: (0, 20) = X 20 at C 90.
+    EXPECT_NEAR(t.at(rows.at(50), "X"), 20.0, 1e-6);
+    EXPECT_NEAR(t.at(rows.at(50), "C"), 90.0, 1e-6);
+    // N50 through the centre on a lathe: X never negative; at the centre C
+    // turns half a turn (90 -> 270, the tie of both ways taken upwards)
+    // while X is 0, then X runs out to 20 again.
+    for (std::size_t i = 1; i <= rows.at(60); ++i) {
+      ASSERT_GE(t.at(i, "X"), -1e-9) << "row " << i;
+      if (t.at(i, "C") > 90.0 + 1e-6 && t.at(i, "C") < 270.0 - 1e-6) {
+        ASSERT_NEAR(t.at(i, "X"), 0.0, 1e-9) << "row " << i;
+      }
+    }
+    EXPECT_NEAR(t.at(rows.at(60), "X"), 20.0, 1e-6);
+    EXPECT_NEAR(t.at(rows.at(60), "C"), 270.0, 1e-6);
+    EXPECT_NEAR(t.at(rows.at(60), "S1.pos"), 270.0, 1e-3);
+  }
 }
 
 }  // namespace

@@ -73,6 +73,21 @@ TEST(FaceTransform, RoundTrips) {
       }
 }
 
+TEST(FaceTransform, LeavingTheCentre) {
+  // Towards +Y (90 deg) from C = 0: the lathe turns to 90 (X >= 0); the
+  // mill too (90 either way: X positive preferred).
+  EXPECT_NEAR(face_leave_centre_c_deg(0, 5, 0, true), 90.0, 1e-12);
+  EXPECT_NEAR(face_leave_centre_c_deg(0, 5, 0, false), 90.0, 1e-12);
+  // Towards -X (180 deg) from C = 10: the lathe turns to 180, the mill
+  // keeps 0 and lets X go negative (turn 10 deg back).
+  EXPECT_NEAR(face_leave_centre_c_deg(-1, 0, 10, true), 180.0, 1e-12);
+  EXPECT_NEAR(face_leave_centre_c_deg(-1, 0, 10, false), 0.0, 1e-12);
+  // From C = 700 towards 45 deg: the nearest turn 765 (lathe), 765 (mill).
+  EXPECT_NEAR(face_leave_centre_c_deg(1, 1, 700, true), 765.0, 1e-12);
+  EXPECT_NEAR(face_leave_centre_c_deg(1, 1, 700, false), 765.0, 1e-12);
+  EXPECT_EQ(face_leave_centre_c_deg(0, 0, 33, true), 33.0);  // no direction: C stays
+}
+
 TEST(CylTransform, DevelopedLengthOnTheReferenceRadius) {
   // R = 60: 100 mm developed = 100 / 60 rad = 95.4930 deg; half the
   // circumference (60 pi mm) = 180 deg.
