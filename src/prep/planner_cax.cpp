@@ -253,6 +253,31 @@ void Planner::limit_transformed(Command& c, std::array<motion::AxisDynamics, kMa
   cax_.machine_c_deg = motion::face_end_c_deg(cax_.trafo, c.segment, cax_.machine_c_deg);
 }
 
+namespace {
+
+// The motion part of `piece` as a command of `block`: the first carries the
+// block's functions and events, the following ones only their motion.
+Command as_part_of(const Command& block, const Command& piece, bool first) {
+  Command c = block;
+  if (!first) {
+    c = Command{};
+    c.file_id = block.file_id;
+    c.line = block.line;
+    c.emit_block_event = false;
+    c.feed_motion = block.feed_motion;
+  }
+  c.kind = piece.kind;
+  c.segment = piece.segment;
+  c.limits = piece.limits;
+  c.v_cmd_mm_s = piece.v_cmd_mm_s;
+  c.trafo = piece.trafo;
+  c.mapped = piece.mapped;
+  c.map = piece.map;
+  return c;
+}
+
+}  // namespace
+
 // A face line that leaves the centre needs C turned to its direction first
 // (the tool stands at the centre, so only C moves); on a lathe
 // (cax_face_id 1), where X stays >= 0, a line through the centre is split
@@ -262,77 +287,39 @@ void Planner::limit_transformed(Command& c, std::array<motion::AxisDynamics, kMa
 void Planner::face_centre_commands(const Command& c, Commands& out) {
   const motion::CaxTrafo& t = c.trafo;
   const auto jx = static_cast<std::size_t>(t.radial), jc = static_cast<std::size_t>(t.c);
-  const motion::Segment& seg = c.segment;
-  const motion::AxisVector& p0 = seg.start_point();
-  const motion::AxisVector& p1 = seg.end_point();
-  const double dx = p1[jx] - p0[jx], dy = p1[jc] - p0[jc];
-  const double lp = std::hypot(dx, dy);
   const bool lathe = channel_.cax_face_id == 1;
-  if (c.mapped) {  // a rotated face contour: its points are not machine-Cartesian here
-    cax_.machine_c_deg = motion::face_end_c_deg(t, seg, cax_.c_before_deg);
+  if (c.mapped || c.segment.kind() != motion::SegmentKind::line) {
+    // An arc never starts at the centre; a rotated contour's points are not
+    // machine-Cartesian here: both run as planned.
     (void)out.push_back(c);
     return;
   }
-  std::vector<std::pair<motion::AxisVector, motion::AxisVector>> lines;  // Cartesian pieces
-  if (seg.kind() == motion::SegmentKind::line && lp > 0) {
+  const motion::AxisVector& p0 = c.segment.start_point();
+  const motion::AxisVector& p1 = c.segment.end_point();
+  std::vector<std::pair<motion::AxisVector, motion::AxisVector>> lines{{p0, p1}};
+  const double dx = p1[jx] - p0[jx], dy = p1[jc] - p0[jc], lp = std::hypot(dx, dy);
+  if (lathe && lp > 0) {
     const double foot = -(p0[jx] * dx + p0[jc] * dy) / lp;  // along the plane, from p0
     const double d = std::abs(p0[jx] * dy - p0[jc] * dx) / lp;
-    const bool through = d < motion::kFaceCentre_mm && foot > motion::kFaceCentre_mm &&
-                         foot < lp - motion::kFaceCentre_mm;
-    if (through && lathe) {
+    if (d < motion::kFaceCentre_mm && foot > motion::kFaceCentre_mm && foot < lp - motion::kFaceCentre_mm) {
       motion::AxisVector mid{};
-      seg.point_at(foot / lp * seg.length(), mid);
-      mid[jx] = 0;
-      mid[jc] = 0;
-      lines.emplace_back(p0, mid);
-      lines.emplace_back(mid, p1);
+      c.segment.point_at(foot / lp * c.segment.length(), mid);
+      mid[jx] = mid[jc] = 0;
+      lines = {{p0, mid}, {mid, p1}};
     }
   }
-  if (lines.empty()) lines.emplace_back(p0, p1);
   double c_deg = cax_.c_before_deg;
-  Command first = c;
-  bool first_taken = false;
-  auto push = [&](Command cmd) {
-    if (first_taken) {
-      Command follow;
-      follow.file_id = c.file_id;
-      follow.line = c.line;
-      follow.emit_block_event = false;
-      follow.kind = cmd.kind;
-      follow.segment = cmd.segment;
-      follow.limits = cmd.limits;
-      follow.v_cmd_mm_s = cmd.v_cmd_mm_s;
-      follow.trafo = cmd.trafo;
-      follow.mapped = cmd.mapped;
-      follow.map = cmd.map;
-      follow.feed_motion = cmd.feed_motion;
-      cmd = follow;
-    } else {
-      Command head = first;
-      head.kind = cmd.kind;
-      head.segment = cmd.segment;
-      head.limits = cmd.limits;
-      head.v_cmd_mm_s = cmd.v_cmd_mm_s;
-      head.trafo = cmd.trafo;
-      cmd = head;
-      first_taken = true;
-    }
-    (void)out.push_back(cmd);
-  };
   for (const auto& [a, b] : lines) {
-    const bool from_centre = std::hypot(a[jx], a[jc]) < motion::kFaceCentre_mm;
-    if (from_centre && (lines.size() > 1 || c.segment.kind() == motion::SegmentKind::line)) {
+    if (std::hypot(a[jx], a[jc]) < motion::kFaceCentre_mm) {
       const double to = motion::face_leave_centre_c_deg(b[jx] - a[jx], b[jc] - a[jc], c_deg, lathe);
-      if (std::abs(to - c_deg) > 1e-9) push(face_turn(c, a, c_deg, to));
+      if (std::abs(to - c_deg) > 1e-9) (void)out.push_back(as_part_of(c, face_turn(c, a, c_deg, to), out.empty()));
       c_deg = to;
     }
     Command piece = c;
-    if (lines.size() > 1) {
-      auto s = motion::make_line(a, b, n_axes_);
-      if (s) piece.segment = *s;
-    }
+    if (lines.size() > 1)
+      if (auto s = motion::make_line(a, b, n_axes_)) piece.segment = *s;  // same direction: same limits
     c_deg = motion::face_end_c_deg(t, piece.segment, c_deg);
-    push(piece);
+    (void)out.push_back(as_part_of(c, piece, out.empty()));
   }
   cax_.machine_c_deg = c_deg;
 }
