@@ -323,16 +323,16 @@ TEST(CAxis, ErrorsWithTheirIds) {
     int line;
   };
   const Case cases[] = {
-      {"m3", "G0 X0\nM5\n#CAX [S, C]\nM3 S100\nM30\n", 930200, 4},
-      {"m19", "M5\n#CAX\nM19 S.POS=10 S100\nM30\n", 930200, 3},
-      {"c_without_cax", "G0 X0\nG1 C10 F100\nM30\n", 930201, 2},
+      {"m3", "G0 X0\nM5\n#CAX [S, C]\nM3 S100\nM30\n", 930210, 4},
+      {"m19", "M5\n#CAX\nM19 S.POS=10 S100\nM30\n", 930210, 3},
+      {"c_without_cax", "G0 X0\nG1 C10 F100\nM30\n", 930211, 2},
       {"face_without_cax", "#FACE [X, C]\nM30\n", 20886, 1},
       {"cax_off_under_face", "M5\n#CAX\n#FACE [X, C]\n#CAX OFF\nM30\n", 20893, 4},
       {"cyl_off_missing", "M5\n#CAX\n#CYL [Z, C, X60]\n#CAX OFF\nM30\n", 20893, 4},
-      {"face_wrong_axis", "M5\n#CAX\n#FACE [X, Y]\nM30\n", 930202, 3},
+      {"face_wrong_axis", "M5\n#CAX\n#FACE [X, Y]\nM30\n", 930212, 3},
       {"not_main", "#CAX [S2, C]\nM30\n", 21175, 1},
       {"rotating", "M3 S500\nG4 X0.5\n#CAX\nM30\n", 950008, 3},
-      {"plane", "M5\n#CAX\n#FACE [X, C]\nG18\nM30\n", 930204, 4},
+      {"plane", "M5\n#CAX\n#FACE [X, C]\nG18\nM30\n", 930214, 4},
   };
   for (const Case& c : cases) {
     const auto dir = temp_dir(std::string("cax_err_") + c.name);
@@ -361,14 +361,14 @@ TEST(CAxis, WrongAxisModeAndMissingTrafoId) {
     EXPECT_EQ(e["id"], 21184);
     EXPECT_EQ(e["line"], 2);
   }
-  // cax_face_id 2 needs trafo[i].id 14 for #FACE: 930203.
+  // cax_face_id 2 needs trafo[i].id 14 for #FACE: 930213.
   {
     const auto dir = temp_dir("cax_trafo");
     const auto m = replaced_in_example("cax_trafo_m", "channel1.lis", "trafo[0].id                   14", "trafo[0].id                   15");
     const CliResult r = run_program("p", "M5\n#CAX [S, C]\n#FACE [X, C]\nM30\n", dir, m.dir.string());
     const nlohmann::json e = first_error(dir / "e.jsonl");
     ASSERT_FALSE(e.is_null()) << r.output;
-    EXPECT_EQ(e["id"], 930203);
+    EXPECT_EQ(e["id"], 930213);
     EXPECT_EQ(e["line"], 3);
   }
   // The lathe variant: cax_face_id 1 with trafo[i].id 13 runs #FACE.
