@@ -22,6 +22,10 @@ struct ChannelLists {
 void check_machine(Machine& m, const std::vector<ParamList>& axis_lists,
                    const std::vector<ChannelLists>& channel_lists, Diagnostics& diags);
 
+// After the checks: the main spindle that can become a C axis joins the
+// channel's axes under default_ax_name_of_spindle (ChannelConfig::c_axis).
+void add_c_axes(Machine& m);
+
 // Reports `message` (ConfigCrossRange) unless `ok`, at the later of the two
 // keys that is given; silent when neither key is given (both defaults).
 void cross_check(const ParamList& list, std::string_view key_a, std::string_view key_b, bool ok,

@@ -235,6 +235,7 @@ void read_switches(const ParamList& l, ChannelConfig& c) {
   c.main_spindle_gear_change = l.flag("main_spindle_gear_change", false);
   c.default_ax_name_of_spindle = l.text("default_ax_name_of_spindle", "");
   c.cax_face_id = l.u32("cax_face_id", 0);
+  for (std::size_t i = 0; i < c.trafo_ids.size(); ++i) c.trafo_ids[i] = l.u32(fmt::format("trafo[{}].id", i), 0);
   c.move_tool_offsets_directly = l.flag("move_tool_offsets_directly", false);
   c.exact_stop_after_g00 = l.flag("exact_stop_after_g00", false);
   c.lookahead_blocks = l.u32("configuration.interpolator.number_blocks_lah", c.lookahead_blocks);

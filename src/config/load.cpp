@@ -110,6 +110,7 @@ LoadResult load_machine_unguarded(const std::filesystem::path& folder) {
   load_channels(f, st, m, channel_lists, r.diagnostics);
   if (auto sim = read_named(f, st, "sim_data", ListKind::sim, r.diagnostics)) m.sim = detail::build_sim(*sim);
   detail::check_machine(m, axis_lists, channel_lists, r.diagnostics);
+  detail::add_c_axes(m);
   r.machine = std::move(m);
   return r;
 }

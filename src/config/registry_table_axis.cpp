@@ -20,7 +20,7 @@ constexpr ParamInfo kTable[] = {
     {"kopf.achs_nr", "P-AXIS-00016", A, T::integer, 1, kU16 - 1, 1, 1, "—", "—", "System-wide unique logical axis number (not 0)."},
     {"kopf.log_achs_name", "P-AXIS-00297", A, T::string, 0, 16, 0, 1, "—", "—", "Default system name of the axis.", {}, {}, "X_Achse"},
     {"kenngr.achs_typ", "P-AXIS-00018", A, T::achstyp, 1, 4, 1, 1, "—", "—", "Axis kind: ACHSTYP_TRANSLATOR 0x1, ACHSTYP_ROTATOR 0x2, ACHSTYP_SPINDEL 0x4.", {}, {}, "ACHSTYP_TRANSLATOR"},
-    {"kenngr.achs_mode", "P-AXIS-00015", A, T::integer, 0, 0x7fffffff, 1, 1, "bits", "bits", "Axis mode bits (0x4 modulo, 0x40000 PLC spindle, ...)."},
+    {"kenngr.achs_mode", "P-AXIS-00015", A, T::integer, 0, 0x7fffffff, 1, 1, "bits", "bits", "Axis mode bits (0x4 modulo, 0x0204 spindle that may become the C axis, 0x40000 PLC spindle, ...)."},
     {"kenngr.antr_typ", "P-AXIS-00020", A, T::integer, 1, 32, 4, 1, "—", "—", "Drive interface (4 = simulation, 16 = virtual)."},
     {"kenngr.swe_neg", "P-AXIS-00177", A, T::real, kS32Min, kS32, -100000000, 1e-4, kPos, kPosI, "Negative software limit."},
     {"kenngr.swe_pos", "P-AXIS-00178", A, T::real, kS32Min, kS32, 100000000, 1e-4, kPos, kPosI, "Positive software limit."},

@@ -78,7 +78,7 @@ constexpr ParamInfo kTable[] = {
     {"modal_i_j_k_for_circle", "P-CHAN-00159", C, T::boolean, 0, 1, 0, 1, "—", "—", "Circle centre I/J/K stay modal."},
     {"use_alias_name_in_ax_list", "P-CHAN-00253", C, T::boolean, 0, 1, 0, 1, "—", "—", "Alias names A1..A32 allowed in axis-specific moves."},
     {"display_diameter_pos", "P-CHAN-00256", C, T::boolean, 0, 1, 0, 1, "—", "—", "HLI shows PCS positions as diameter under G51."},
-    {"trafo[].id", "P-CHAN-00262", C, T::integer, 1, kU16, 0, 1, "—", "—", "Kinematic ID of transformation slot i; accepted.", {10}},
+    {"trafo[].id", "P-CHAN-00262", C, T::integer, 1, kU16, 0, 1, "—", "—", "Kinematic ID of transformation slot i: #FACE needs 13 (cax_face_id 1) or 14 (cax_face_id 2), #CYL 15.", {10}},
     {"enable_unit_feet_cut_speed", "P-CHAN-00360", C, T::boolean, 0, 1, 0, 1, "—", "—", "G96 cutting speed in ft/min under G70."},
     {"coordinate_system.rotation_mode_fixed", "P-CHAN-00393", C, T::boolean, 0, 1, 0, 1, "—", "—", "#CS angles about fixed (1) or rotated (0) axes."},
     {"coordinate_system.rotation_sequence", "P-CHAN-00394", C, T::choice, 0, 0, 0, 1, "—", "—", "Order of the three #CS rotations.", {}, "XYZ XYX XZY XZX YXZ YXY YZX YZY ZXY ZXZ ZYX ZYZ", "ZYX"},

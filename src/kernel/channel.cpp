@@ -39,6 +39,7 @@ void Channel::end_program(EndReason reason, double t_s, TickOutput& sink, Channe
   profile_.reset();
   waits_.clear();
   late_.clear();
+  end_c_axis(ctx);
   // Program end keeps an endless rotation unless the HLI asks to stop it; a
   // reset or an abort stops the channel's spindles (unless P-AXIS-00455).
   for (std::int8_t s : spindles_) {
@@ -90,6 +91,7 @@ void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelConte
     raise(c.error_id, c.message_index, t_s, sink, ctx);
     return;
   }
+  if (!start_c_axis(c, t_s, sink, ctx)) return;
   manual_mask_ = (manual_mask_ | c.manual_on) & ~c.manual_off;
   if (c.get_manual_offsets) manual_fetch_pending_ = true;
   manual_share_start_ = manual_share_;
@@ -169,17 +171,25 @@ motion::AxisVector Channel::machine_position() const noexcept {
 }
 
 // The set point at path length s: the segment's point, mapped from program
-// to machine coordinates when a rotation acts.
+// to machine coordinates when a rotation acts, and from Cartesian to
+// machine X/C under #FACE / #CYL.
 void Channel::place(double s_mm) noexcept {
   const double length = current_.segment.length();
   take_manual_share(length > 0 ? std::clamp(s_mm / length, 0.0, 1.0) : 1.0);
-  if (!current_.mapped) {
+  const bool trafo = current_.trafo.kind != motion::CaxTrafoKind::none;
+  if (!current_.mapped && !trafo) {
     current_.segment.point_at(s_mm, pos_);
     return;
   }
   motion::AxisVector pcs = pos_;
   current_.segment.point_at(s_mm, pcs);
-  current_.map.apply(pcs, pos_, n_axes_);
+  if (!trafo) {
+    current_.map.apply(pcs, pos_, n_axes_);
+    return;
+  }
+  motion::AxisVector cart = pcs;
+  if (current_.mapped) current_.map.apply(pcs, cart, n_axes_);
+  motion::cax_to_machine(current_.trafo, cart, pos_, n_axes_);  // pos_ holds the previous C
 }
 
 // After the post waits: the block is done.
@@ -263,6 +273,7 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
       }
     }
   }
+  follow_c_axis(dt_s, ctx);
   follow_handwheel(t_s, dt_s, in, sink, ctx);
   for (std::size_t j = 0; j < n_axes_; ++j) out.axis_mcs[j] = pos_[j] + manual_in_force_mm_[j];
   out.path_velocity_mm_s = velocity_;

@@ -59,6 +59,9 @@ class Channel {
   // #SUPPRESS OFFSETS or #MCS leaves it out).
   const motion::AxisVector& manual_offsets() const noexcept { return manual_in_force_mm_; }
   std::uint8_t number() const noexcept { return number_; }
+  // setup: channel axis `axis` is spindle `spindle` (kernel index) in
+  // C-axis mode (#CAX); outside it the axis shows the spindle's position.
+  void set_c_axis(std::int8_t axis, std::int8_t spindle) noexcept;
 
  private:
   enum class Phase : std::uint8_t { pre_wait, body, post_wait };
@@ -137,6 +140,14 @@ class Channel {
   motion::AxisVector manual_share_start_{}, manual_share_{};
   motion::AxisVector manual_in_force_mm_{};
   void take_manual_share(double fraction) noexcept;
+  // C-axis machining (channel_cax.cpp)
+  bool start_c_axis(const Command& c, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
+  void follow_c_axis(double dt_s, ChannelContext& ctx) noexcept;
+  void end_c_axis(ChannelContext& ctx) noexcept;
+  std::int8_t c_axis_ = -1;        // channel index of the C axis, -1 none
+  std::int8_t c_spindle_ = -1;     // its spindle (kernel index)
+  bool c_axis_on_ = false;         // #CAX in force: the path drives the spindle
+  double c_last_deg_ = 0;          // C set point of the cycle before (for its velocity)
 };
 
 }  // namespace nck::kernel

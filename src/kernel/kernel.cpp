@@ -60,6 +60,12 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
     feedback_queues_.push_back(std::make_unique<FeedbackQueue>());
     channels_.push_back(std::make_unique<Channel>(i, machine_->channels[i].axes.size(), per_channel[i],
                                                   *command_queues_.back(), *feedback_queues_.back()));
+    // The C axis (config/c_axis.cpp) is the spindle with the same axis list.
+    const config::ChannelConfig& ch = machine_->channels[i];
+    if (ch.c_axis >= 0)
+      for (std::size_t k = 0; k < ch.spindles.size(); ++k)
+        if (ch.spindles[k].axis_index == ch.axes[static_cast<std::size_t>(ch.c_axis)].axis_index)
+          channels_.back()->set_c_axis(static_cast<std::int8_t>(ch.c_axis), per_channel[i][k]);
   }
   return {};
 }

@@ -41,6 +41,8 @@ ChannelPrep::ChannelPrep(ChannelPrep&&) noexcept = default;
 ChannelPrep& ChannelPrep::operator=(ChannelPrep&&) noexcept = default;
 
 bool ChannelPrep::needs_feedback(const nc::Block& b) {
+  if (b.hash && std::holds_alternative<nc::CAxis>(*b.hash) && std::get<nc::CAxis>(*b.hash).on)
+    return true;  // C starts where the spindle stands (Planner::take_c_axis_position)
   return b.g_nonmodal.has(nc::GCode::g100) ||
          (b.hash && std::holds_alternative<nc::GetManualOffsets>(*b.hash));
 }
@@ -115,6 +117,10 @@ bool ChannelPrep::push_out(kernel::CommandQueue& commands) {
 void ChannelPrep::take_feedback(const kernel::Feedback& f) {
   if (f.kind == kernel::FeedbackKind::measured) {
     for (const auto& [name, value] : planner_->take_measurement(f.measure)) (void)decoder_->set_variable(name, value);
+    return;
+  }
+  if (f.kind == kernel::FeedbackKind::c_axis) {
+    planner_->take_c_axis_position(f.c_axis_deg);
     return;
   }
   for (std::size_t j = 0; j < planner_->axis_count(); ++j)

@@ -22,6 +22,9 @@ bool is_executed_command(const nc::HashCommand& h) {
   if (std::holds_alternative<nc::ExplSyn>(h) || std::holds_alternative<nc::MainSpindle>(h) ||
       std::holds_alternative<nc::GetManualOffsets>(h))
     return true;
+  if (std::holds_alternative<nc::CAxis>(h) || std::holds_alternative<nc::Face>(h) ||
+      std::holds_alternative<nc::Cylinder>(h))
+    return true;  // planner_cax.cpp
   return std::holds_alternative<nc::CoordSystem>(h) || std::holds_alternative<nc::Ecs>(h) ||
          std::holds_alternative<nc::Mcs>(h) || std::holds_alternative<nc::Rotation>(h) ||
          std::holds_alternative<nc::PSet>(h) || std::holds_alternative<nc::PReset>(h) ||
@@ -67,6 +70,7 @@ Planner::Planner(const config::Machine& machine, std::size_t channel_index, Plan
       probe_pos_mm_ = machine.sim.probe_position_mm;
     }
   }
+  init_c_axis(machine, spindles);
   pcs_ = frames_.to_pcs(mcs_);  // the clamp / default zero offset act from the start
   setup_diameter_axes(machine);
   setup_corner_budgets(machine);
@@ -185,6 +189,8 @@ Planner::Commands Planner::plan(const nc::Block& b, const std::string& file_name
   Command c = plan_one(b, file_name);
   if (homing && c.kind == CommandKind::nop) {
     plan_homing(b, c, out);
+  } else if (c.kind == CommandKind::motion && c.trafo.kind == motion::CaxTrafoKind::face) {
+    face_centre_commands(c, out);  // planner_cax.cpp: C turns at the face's centre
   } else {
     (void)out.push_back(c);
   }
@@ -259,6 +265,10 @@ Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
   if (!apply_measure_offset(b, c, error)) return error;
   if (std::string why = plc_control_violation(b); !why.empty())
     return error_command(ErrorId::KernelPlcSpindleFunction, why, b.file_id, b.line);
+  ErrorId cax_id{};
+  if (std::string why = cax_violation(b, cax_id); !why.empty())
+    return error_command(cax_id, why, b.file_id, b.line);
+  if (!plan_cax(b, c, error)) return error;
   auto actions = spindles_.plan(b);
   if (!actions) return error_command(actions.error().id, actions.error().message, b.file_id, b.line);
   c.spindle_actions = *actions;

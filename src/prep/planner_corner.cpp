@@ -43,6 +43,13 @@ motion::AxisVector Planner::machine_tangent(const Command& c, bool at_end) const
 void Planner::note_transition(const nc::Block& b, Command& c, bool rapid) {
   c.exact_stop = b.g_nonmodal.has(nc::GCode::g60) || b.modal.exact_stop ||
                  (rapid && channel_.exact_stop_after_g00);
+  // Under #FACE/#CYL the segment is Cartesian and the machine axes follow
+  // the transformation: its corners are not looked ahead yet.
+  if (c.trafo.kind != motion::CaxTrafoKind::none) {
+    c.exact_stop = true;
+    last_motion_.valid = false;
+    return;
+  }
   const auto& dv = rapid ? corner_dv_rapid_ : corner_dv_feed_;
   const double cruise_mm_s = std::min(c.v_cmd_mm_s, c.limits.v_max_mm_s);
   if (last_motion_.valid) {

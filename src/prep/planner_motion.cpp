@@ -48,7 +48,11 @@ std::expected<motion::Segment, Command> Planner::arc_segment(const nc::Block& b,
   const PlaneAxes pa = plane_axes(b.modal.plane);
   const char* first_name = kMainAxisNames[pa.first];
   const char* second_name = kMainAxisNames[pa.second];
-  const int a = axis_named(first_name), bb = axis_named(second_name);
+  int a = axis_named(first_name), bb = axis_named(second_name);
+  // #FACE / #CYL fix the plane to their own axes, centre words I and J.
+  const bool trafo = trafo_plane(a, bb);
+  const std::size_t ii = trafo ? 0 : static_cast<std::size_t>(pa.first);
+  const std::size_t jj = trafo ? 1 : static_cast<std::size_t>(pa.second);
   if (a < 0 || bb < 0)
     return std::unexpected(error_command(
         ErrorId::KernelAxisNotInPlane,
@@ -56,8 +60,8 @@ std::expected<motion::Segment, Command> Planner::arc_segment(const nc::Block& b,
         b.file_id, b.line));
   const auto ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(bb);
   const bool ccw = b.modal.motion == nc::Motion::ccw;
-  const auto& ci = b.ijk[static_cast<std::size_t>(pa.first)];
-  const auto& cj = b.ijk[static_cast<std::size_t>(pa.second)];
+  const auto& ci = b.ijk[ii];
+  const auto& cj = b.ijk[jj];
   std::expected<motion::Segment, motion::ArcError> seg;
   if (ci || cj) {
     // G161: the centre is absolute (in the program's origin), G162: relative to the start.
@@ -150,7 +154,7 @@ Command Planner::plan_motion(const nc::Block& b, Command c, const std::string& f
         if (k >= 0) dyn[static_cast<std::size_t>(k)] = lo;
     }
   } else {
-    auto seg = motion::make_line(mcs_, target, n_axes_);
+    auto seg = motion::make_line(mcs_, target, n_axes_, length_axes());
     if (!seg) return error_command(ErrorId::KernelBadDynamics, "degenerate line", b.file_id, b.line);
     c.segment = *seg;
   }
@@ -171,6 +175,7 @@ Command Planner::plan_motion(const nc::Block& b, Command c, const std::string& f
   c.kind = CommandKind::motion;
   manual_axes_ = manual_axes_after(b, mask);
   c.limits = motion::path_limits(c.segment, std::span<const motion::AxisDynamics>(dyn.data(), n_axes_));
+  limit_transformed(c, dyn);
   if (!motion::valid(c.limits))
     return error_command(ErrorId::KernelBadDynamics, "the axes of this block cannot move", b.file_id,
                          b.line);

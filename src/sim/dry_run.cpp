@@ -45,7 +45,7 @@ ChannelSnapshot DryRun::snapshot(std::size_t ch) const {
   const kernel::ChannelState state = kernel_->channel_state(ch);
   const prep::Planner& planner = preps_.at(ch).planner();
   const prep::ChannelFrames& f = planner.frames();
-  const motion::AxisVector pcs = f.to_pcs(state.path_mcs);
+  const motion::AxisVector pcs = f.to_pcs(planner.cartesian(state.path_mcs));
   ChannelSnapshot s;
   std::vector<std::pair<std::string, double>> manual;
   bool any_manual = false;

@@ -132,6 +132,9 @@ struct AxisConfig {
   bool is_speed_controlled() const { return operation_mode.rfind("OPEN_POSITION_LOOP", 0) == 0; }
 
   bool is_spindle() const { return kind == AxisKind::spindle; }
+  // P-AXIS-00015 0x0204: a spindle that may become a C axis (#CAX).
+  static constexpr std::uint32_t kCAxisMode = 0x0204;
+  bool c_axis_capable() const { return (achs_mode & kCAxisMode) == kCAxisMode; }
   bool is_modulo() const { return (achs_mode & 0x4) != 0 || is_spindle(); }
   bool is_face_turning() const { return (achs_mode & 0x40) != 0; }  // "Plandrehachse"
   const GearStage& gear(std::uint32_t stage_1based) const {
@@ -221,7 +224,14 @@ struct ChannelConfig {
   std::uint32_t main_spindle_ax_nr = 0;         // P-CHAN-00051
   bool main_spindle_gear_change = false;        // P-CHAN-00052
   std::string default_ax_name_of_spindle;       // P-CHAN-00010
-  std::uint32_t cax_face_id = 0;
+  std::uint32_t cax_face_id = 0;                // P-CHAN-00008: 1 lathe, 2 milling machine
+  // C-axis machining (#CAX): when the main spindle can become a C axis
+  // (default_ax_name_of_spindle set, its achs_mode has 0x200) it is also the
+  // last entry of `axes`, named default_ax_name_of_spindle, with the
+  // spindle's axis list; c_axis is that index (-1: none). Added after the
+  // checks (config/c_axis.cpp), so the lists never name it.
+  int c_axis = -1;
+  std::array<std::uint32_t, 10> trafo_ids{};    // P-CHAN-00262 trafo[i].id, 0 = empty slot
   bool move_tool_offsets_directly = false;      // P-CHAN-00100
   bool exact_stop_after_g00 = false;            // P-CHAN-00235
   std::uint32_t lookahead_blocks = 120;         // P-CHAN-00653 configuration.interpolator.number_blocks_lah

@@ -7,6 +7,7 @@
 #include "nck/core/fixed_vector.hpp"
 #include "nck/frames/offset_chain.hpp"
 #include "nck/kernel/event.hpp"
+#include "nck/motion/cax_transform.hpp"
 #include "nck/motion/limits.hpp"
 #include "nck/motion/segment.hpp"
 #include "nck/kernel/affine_map.hpp"
@@ -91,6 +92,16 @@ struct Command {
   };
   static constexpr std::size_t kMaxWarnings = 4;
   FixedVector<Warning, kMaxWarnings> warnings;
+  // C-axis machining (#CAX, #FACE, #CYL). cax on: the spindle `cax_spindle`
+  // (kernel index) becomes channel axis `cax_axis` when the command starts,
+  // and the channel reports its position back (FeedbackKind::c_axis); off:
+  // it is a spindle again. A motion under #FACE / #CYL has its segment in
+  // Cartesian coordinates; `trafo` maps every set point to the machine.
+  enum class CaxOp : std::uint8_t { none, on, off };
+  CaxOp cax = CaxOp::none;
+  std::int8_t cax_spindle = -1;
+  std::int8_t cax_axis = -1;
+  motion::CaxTrafo trafo{};
 };
 
 }  // namespace nck::kernel

@@ -25,12 +25,14 @@ using CommandQueue = SpscQueue<Command, kCommandQueueLength>;
 enum class FeedbackKind : std::uint8_t {
   measured,        // a G100 run ended: `measure`
   manual_offsets,  // #GET MANUAL OFFSETS ran: `manual_offsets_mm`
+  c_axis,          // #CAX ran: the spindle's position is C's start, `c_axis_deg`
 };
 
 struct Feedback {
   FeedbackKind kind = FeedbackKind::measured;
   MeasureResult measure{};
   motion::AxisVector manual_offsets_mm{};
+  double c_axis_deg = 0;
 };
 
 // Preparation holds further blocks back after each block that needs

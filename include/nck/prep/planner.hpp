@@ -15,6 +15,7 @@
 #include "nck/nc/decoder.hpp"
 #include "nck/prep/plan_store.hpp"
 #include "nck/kernel/measure.hpp"
+#include "nck/motion/cax_transform.hpp"
 #include "nck/prep/lookahead_window.hpp"
 #include "nck/prep/spindle_planner.hpp"
 
@@ -52,6 +53,12 @@ class Planner final : public nc::KernelStateReader {
   std::vector<std::pair<std::string, double>> take_measurement(const kernel::MeasureResult& r);
   // V.G.WZ_AKT.*, V.G.ROT_*, V.G.NP_AKT.V.<axis>, V.A.ABS.<axis>, V.A.MEIN.<axis>.
   std::optional<double> read(std::string_view key) const override;
+  // After #CAX (the caller held further blocks back until it ran): C starts
+  // where the spindle stood (planner_cax.cpp).
+  void take_c_axis_position(double c_deg);
+  // Machine set point m as the program sees it: Cartesian under #FACE /
+  // #CYL, unchanged otherwise (for positions in program coordinates).
+  motion::AxisVector cartesian(const motion::AxisVector& m) const;
 
  private:
   Command plan_one(const nc::Block& block, const std::string& file_name);
@@ -121,6 +128,37 @@ class Planner final : public nc::KernelStateReader {
   motion::AxisVector measure_target_pcs_{};
   std::int8_t probe_axis_ = -1;
   double probe_pos_mm_ = 0;
+
+  // C-axis machining (planner_cax.cpp): #CAX state and the #FACE / #CYL
+  // transformation in force. Under a transformation pcs_/mcs_ hold the
+  // Cartesian values of the transformed axes; cax_machine_c_deg_ is the
+  // machine C where the planned path leaves it.
+  struct CaxState {
+    bool on = false;
+    motion::CaxTrafo trafo{};
+    Plane plane = Plane::g17;  // in force when the transformation started
+    int plane_first = -1;      // the transformation's first plane axis (#FACE: radial, #CYL: 1st)
+    double machine_c_deg = 0;
+    // #FACE: C turns at most 45 deg per cycle, so the channel's choice of
+    // the nearer solution every cycle follows the contour (set from the cycle time).
+    double c_cycle_limit_deg_s = 45000;
+    double c_before_deg = 0;  // machine C where the last planned face motion started
+  };
+  CaxState cax_{};
+  int c_axis_ = -1;               // channel index of the C axis (ChannelConfig::c_axis)
+  std::int8_t c_spindle_ = -1;    // its spindle: kernel index
+  int c_spindle_channel_ = -1;    // and index in the channel's spindle list
+  void init_c_axis(const config::Machine& machine, const std::vector<std::int8_t>& spindles);
+  bool plan_cax(const nc::Block& b, Command& c, Command& error);
+  bool plan_cax_on(const nc::Block& b, const nc::CAxis& a, Command& c, Command& error);
+  bool plan_trafo(const nc::Block& b, Command& c, Command& error);
+  std::string cax_violation(const nc::Block& b, ErrorId& id) const;
+  void set_trafo(const motion::CaxTrafo& t);
+  void limit_transformed(Command& c, std::array<motion::AxisDynamics, kMaxAxes> dyn);
+  bool trafo_plane(int& a, int& b) const;
+  void face_centre_commands(const Command& c, Commands& out);
+  Command face_turn(const Command& like, const motion::AxisVector& centre_cart, double from_deg, double to_deg) const;
+  motion::AxisMask length_axes() const;
 };
 
 }  // namespace nck::prep

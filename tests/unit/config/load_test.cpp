@@ -22,9 +22,15 @@ TEST(LoadExamples, MillIsCleanAndConverted) {
   const Machine& m = *r.machine;
   ASSERT_EQ(m.channels.size(), 1u);
   const auto& c = m.channels[0];
-  ASSERT_EQ(c.axes.size(), 3u);
+  // X Y Z and the main spindle S1 as C axis (achs_mode 0x0204, #CAX).
+  ASSERT_EQ(c.axes.size(), 4u);
   EXPECT_EQ(c.axes[2].name, "Z");
   EXPECT_EQ(c.axes[2].axis_index, 2);
+  EXPECT_EQ(c.c_axis, 3);
+  EXPECT_EQ(c.axes[3].name, "C");
+  EXPECT_EQ(c.axes[3].axis_index, 3);  // S1's list
+  EXPECT_EQ(c.trafo_ids[0], 14u);
+  EXPECT_EQ(c.trafo_ids[1], 15u);
   ASSERT_EQ(c.spindles.size(), 2u);
   EXPECT_EQ(c.spindles[0].name, "S1");
   EXPECT_EQ(c.spindles[0].axis_index, 3);

@@ -110,6 +110,8 @@ TEST(ZeroAllocation, WholeExamplesRunThroughTickWithoutHeap) {
       {"examples/mill", {"examples/mill/spindle.nc"}, "examples/mill/spindle.plc"},
       {"examples/mill", {"examples/mill/measure.nc"}},
       {"examples/mill", {"examples/mill/manual.nc"}, "examples/mill/manual.plc"},
+      {"examples/mill", {"examples/mill/caxis.nc"}},
+      {"examples/mill", {"examples/mill/cylinder.nc"}},
       {"examples/lathe", {"examples/lathe/turn.nc"}},
       {"examples/lathe", {"examples/lathe/gears.nc"}},
       {"examples/lathe", {"examples/lathe/diameter.nc"}},

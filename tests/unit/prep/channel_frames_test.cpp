@@ -105,7 +105,7 @@ TEST(ChannelFrames, NewOffsetWaitsUntilItsAxisIsProgrammedAbsolutely) {
   r.next({}, /*commit=*/false);
   // Selected at once (the offset event), acting per axis on commit.
   auto selected = r.frames.values_of(frames::OffsetKind::zero, true);
-  ASSERT_EQ(selected.size(), 3u);
+  ASSERT_EQ(selected.size(), 4u);  // X Y Z C
   EXPECT_DOUBLE_EQ(selected[0].second, 100.0);
   expect_xyz(r.mcs(0, 0, 0), 0, 0, 0);
   r.frames.commit_axis(0);

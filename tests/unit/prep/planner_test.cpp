@@ -345,7 +345,7 @@ TEST(Planner, OffsetChangesAreRecordedForTheirEvents) {
   ASSERT_EQ(c[0].offset_events.size(), 2u);
   const OffsetPayload& zero = r.store.offsets.at(c[0].offset_events[0]);
   EXPECT_EQ(zero.kind, "zero");
-  ASSERT_EQ(zero.values.size(), 3u);
+  ASSERT_EQ(zero.values.size(), 4u);  // X Y Z and S1 as C axis
   EXPECT_EQ(zero.values[0].first, "X");
   EXPECT_DOUBLE_EQ(zero.values[0].second, 100.0);
   EXPECT_DOUBLE_EQ(zero.values[2].second, -150.0);

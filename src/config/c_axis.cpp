@@ -1,0 +1,30 @@
+// The main spindle as C axis (#CAX, facts B12): a channel whose main spindle
+// may become a C axis (achs_mode 0x0204) and that names it
+// (default_ax_name_of_spindle) has it as one more path axis from the start,
+// so every layer (decoder words, planner, trace columns, final state) knows
+// it; the planner and the channel let it move only in C-axis mode.
+#include "build.hpp"
+
+namespace nck::config::detail {
+
+// As the decoder reads it: main_spindle_ax_nr, else the first spindle.
+const ChannelSpindle* main_spindle(const ChannelConfig& c) {
+  for (const ChannelSpindle& s : c.spindles)
+    if (c.main_spindle_ax_nr != 0 && s.log_axis_nr == c.main_spindle_ax_nr) return &s;
+  return c.spindles.empty() ? nullptr : &c.spindles.front();
+}
+
+void add_c_axes(Machine& m) {
+  for (ChannelConfig& c : m.channels) {
+    c.c_axis = -1;
+    if (c.default_ax_name_of_spindle.empty() || c.axes.size() >= kMaxAxes) continue;
+    const ChannelSpindle* s = main_spindle(c);
+    if (!s || s->axis_index < 0 || static_cast<std::size_t>(s->axis_index) >= m.axes.size() ||
+        !m.axes[static_cast<std::size_t>(s->axis_index)].c_axis_capable())
+      continue;
+    c.c_axis = static_cast<int>(c.axes.size());
+    c.axes.push_back(ChannelAxis{c.default_ax_name_of_spindle, s->log_axis_nr, s->axis_index});
+  }
+}
+
+}  // namespace nck::config::detail

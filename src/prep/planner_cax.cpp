@@ -1,0 +1,347 @@
+// C-axis machining in block preparation (facts B12-B14): #CAX / #CAX OFF,
+// #FACE / #FACE OFF, #CYL / #CYL OFF, the rules around them, and the path
+// limits of a transformed motion. The math is in motion/cax_transform.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "nck/prep/planner.hpp"
+
+namespace nck::prep {
+namespace {
+
+bool iequals(std::string_view a, std::string_view b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                    [](char x, char y) { return std::toupper(static_cast<unsigned char>(x)) ==
+                                                std::toupper(static_cast<unsigned char>(y)); });
+}
+
+bool has_trafo_id(const config::ChannelConfig& c, std::uint32_t id) {
+  return std::find(c.trafo_ids.begin(), c.trafo_ids.end(), id) != c.trafo_ids.end();
+}
+
+}  // namespace
+
+void Planner::init_c_axis(const config::Machine& machine, const std::vector<std::int8_t>& spindles) {
+  if (channel_.c_axis < 0 || static_cast<std::size_t>(channel_.c_axis) >= n_axes_) return;
+  const auto jc = static_cast<std::size_t>(channel_.c_axis);
+  const int list = channel_.axes[jc].axis_index;
+  for (std::size_t k = 0; k < channel_.spindles.size() && k < spindles.size(); ++k)
+    if (channel_.spindles[k].axis_index == list) {
+      c_axis_ = channel_.c_axis;
+      c_spindle_ = spindles[k];
+      c_spindle_channel_ = static_cast<int>(k);
+    }
+  if (c_axis_ < 0) return;
+  // As C axis the spindle moves with the gear stage's data of P-AXIS-00052
+  // (kenngr.def_cax_gear_st); it is a modulo axis without software limits.
+  const config::AxisConfig& ax = machine.axes[static_cast<std::size_t>(list)];
+  const config::GearStage& g = ax.gear(ax.def_cax_gear_st);
+  feed_dyn_[jc] = {g.vb_max, std::min(g.a_beschl, g.a_max), std::min(g.a_brems, g.a_max)};
+  const double a_rapid = std::min(g.a_grenz, g.a_max);
+  rapid_dyn_[jc] = {std::min(g.vb_eilgang, g.vb_max), a_rapid, a_rapid};
+  if (machine.cycle_time_us > 0) cax_.c_cycle_limit_deg_s = 45.0 / (machine.cycle_time_us * 1e-6);
+  swe_neg_[jc] = -std::numeric_limits<double>::infinity();
+  swe_pos_[jc] = std::numeric_limits<double>::infinity();
+}
+
+void Planner::take_c_axis_position(double c_deg) {
+  if (c_axis_ < 0) return;
+  mcs_[static_cast<std::size_t>(c_axis_)] = c_deg;
+  cax_.machine_c_deg = c_deg;
+  pcs_ = frames_.to_pcs(mcs_);
+}
+
+motion::AxisVector Planner::cartesian(const motion::AxisVector& m) const {
+  motion::AxisVector cart = m;
+  if (cax_.trafo.kind != motion::CaxTrafoKind::none) motion::cax_to_cartesian(cax_.trafo, m, cart, n_axes_);
+  return cart;
+}
+
+// Path length: C (degrees) counts only when nothing else moves, as for any
+// rotary axis; under #FACE / #CYL C is in mm and counts.
+motion::AxisMask Planner::length_axes() const {
+  if (c_axis_ < 0 || cax_.trafo.kind != motion::CaxTrafoKind::none) return motion::kAllAxes;
+  return motion::kAllAxes & ~(motion::AxisMask{1} << static_cast<unsigned>(c_axis_));
+}
+
+// What a block may not do around C-axis mode; "" when nothing.
+std::string Planner::cax_violation(const nc::Block& b, ErrorId& id) const {
+  if (c_axis_ < 0) return {};
+  const auto jc = static_cast<std::size_t>(c_axis_);
+  const bool cax_block = b.hash && std::holds_alternative<nc::CAxis>(*b.hash);
+  if (!cax_.on && b.axes[jc] && !cax_block) {
+    id = ErrorId::KernelCaxAxisNotInMode;
+    return fmt::format("{} is the main spindle and not in C-axis mode: program #CAX first", channel_.axes[jc].name);
+  }
+  if (cax_.on)
+    for (const nc::SpindleCommand& s : b.spindles) {
+      if (!s.spindle_index || static_cast<int>(*s.spindle_index) != c_spindle_channel_) continue;
+      if (s.m != nc::SpindleM::none || s.rev_rpm || s.pos_deg || s.g74 || s.gear_stage || s.g112_stage) {
+        id = ErrorId::KernelCaxSpindleFunction;
+        return fmt::format("{} is the C axis {}: spindle functions need #CAX OFF first",
+                           channel_.spindles[static_cast<std::size_t>(c_spindle_channel_)].name,
+                           channel_.axes[jc].name);
+      }
+    }
+  if (cax_.trafo.kind != motion::CaxTrafoKind::none && b.modal.plane != cax_.plane) {
+    id = ErrorId::KernelTrafoActive;
+    return "the plane cannot change under #FACE / #CYL";
+  }
+  return {};
+}
+
+// The block's #CAX / #FACE / #CYL; false with `error` set when it fails.
+bool Planner::plan_cax(const nc::Block& b, Command& c, Command& error) {
+  if (!b.hash) return true;
+  if (const auto* a = std::get_if<nc::CAxis>(&*b.hash)) {
+    if (a->on) return plan_cax_on(b, *a, c, error);
+    if (cax_.trafo.kind != motion::CaxTrafoKind::none) {
+      error = error_command(ErrorId::KernelCaxOffWithTrafo, "#CAX OFF while #FACE or #CYL is active", b.file_id, b.line);
+      return false;
+    }
+    if (!cax_.on) return true;
+    cax_.on = false;
+    c.cax = Command::CaxOp::off;
+    c.cax_spindle = c_spindle_;
+    c.cax_axis = static_cast<std::int8_t>(c_axis_);
+    return true;
+  }
+  if (std::holds_alternative<nc::Face>(*b.hash) || std::holds_alternative<nc::Cylinder>(*b.hash))
+    return plan_trafo(b, c, error);
+  return true;
+}
+
+bool Planner::plan_cax_on(const nc::Block& b, const nc::CAxis& a, Command& c, Command& error) {
+  auto fail = [&](ErrorId id, std::string msg) {
+    error = error_command(id, std::move(msg), b.file_id, b.line);
+    return false;
+  };
+  if (c_axis_ < 0)
+    return fail(ErrorId::KernelCaxWrongAxisMode,
+                channel_.default_ax_name_of_spindle.empty()
+                    ? std::string("#CAX: the channel list names no default_ax_name_of_spindle")
+                    : std::string("#CAX: the main spindle's axis list needs kenngr.achs_mode 0x0204"));
+  const auto jc = static_cast<std::size_t>(c_axis_);
+  const config::ChannelSpindle& sp = channel_.spindles[static_cast<std::size_t>(c_spindle_channel_)];
+  if (!a.spindle.empty() && !iequals(a.spindle, sp.name) && !iequals(a.spindle, channel_.main_spindle_name))
+    return fail(ErrorId::KernelCaxWrongAxisMode, fmt::format("#CAX: only {} can become the C axis", sp.name));
+  if (!a.axis.empty() && !iequals(a.axis, channel_.axes[jc].name))
+    return fail(ErrorId::KernelCaxBadAxes, fmt::format("#CAX: the C axis is named {} (default_ax_name_of_spindle)",
+                                                       channel_.axes[jc].name));
+  cax_.on = true;
+  // Also when C-axis mode is on already: the channel answers with C's
+  // position, which preparation waits for after every #CAX.
+  c.cax = Command::CaxOp::on;
+  c.cax_spindle = c_spindle_;
+  c.cax_axis = static_cast<std::int8_t>(c_axis_);
+  return true;
+}
+
+bool Planner::plan_trafo(const nc::Block& b, Command& c, Command& error) {
+  (void)c;
+  auto fail = [&](ErrorId id, std::string msg) {
+    error = error_command(id, std::move(msg), b.file_id, b.line);
+    return false;
+  };
+  const auto* face = std::get_if<nc::Face>(&*b.hash);
+  const auto* cyl = std::get_if<nc::Cylinder>(&*b.hash);
+  const motion::CaxTrafoKind kind = face ? motion::CaxTrafoKind::face : motion::CaxTrafoKind::cylinder;
+  if (!(face ? face->on : cyl->on)) {
+    if (cax_.trafo.kind == kind) set_trafo(motion::CaxTrafo{});
+    return true;
+  }
+  const char* name = face ? "#FACE" : "#CYL";
+  if (!cax_.on) return fail(ErrorId::KernelCaxNotActive, fmt::format("{} needs the C axis: program #CAX first", name));
+  if (cax_.trafo.kind != motion::CaxTrafoKind::none)
+    return fail(ErrorId::KernelTrafoActive, fmt::format("{}: switch the active #FACE / #CYL off first", name));
+  const std::string& c_name = channel_.axes[static_cast<std::size_t>(c_axis_)].name;
+  motion::CaxTrafo t;
+  t.kind = kind;
+  t.c = static_cast<std::int8_t>(c_axis_);
+  int first = -1;
+  if (face) {
+    first = axis_named(face->axis1.c_str());
+    t.radial = static_cast<std::int8_t>(first);
+    if (first < 0 || first == c_axis_ || !iequals(face->axis2, c_name))
+      return fail(ErrorId::KernelCaxBadAxes, fmt::format("#FACE [<radial axis>, {}]: {} and {} do not fit",
+                                                         c_name, face->axis1, face->axis2));
+    const std::uint32_t id = channel_.cax_face_id == 1 ? 13u : channel_.cax_face_id == 2 ? 14u : 0u;
+    if (id == 0 || !has_trafo_id(channel_, id))
+      return fail(ErrorId::KernelTrafoNotConfigured,
+                  fmt::format("#FACE needs cax_face_id 1 with trafo[i].id 13 or 2 with 14 (cax_face_id is {})",
+                              channel_.cax_face_id));
+  } else {
+    first = axis_named(cyl->axis1.c_str());
+    const int radial = axis_named(cyl->axis3.c_str());
+    t.radial = static_cast<std::int8_t>(radial);
+    t.radius_mm = cyl->radius_mm;
+    if (first < 0 || radial < 0 || first == c_axis_ || radial == c_axis_ || first == radial ||
+        !iequals(cyl->axis2, c_name))
+      return fail(ErrorId::KernelCaxBadAxes, fmt::format("#CYL [<axis>, {}, <radial axis><radius>]: {}, {}, {} do not fit",
+                                                         c_name, cyl->axis1, cyl->axis2, cyl->axis3));
+    if (!has_trafo_id(channel_, 15))
+      return fail(ErrorId::KernelTrafoNotConfigured, "#CYL needs a trafo[i].id 15 in the channel list");
+  }
+  cax_.plane = b.modal.plane;
+  cax_.plane_first = first;
+  set_trafo(t);
+  return true;
+}
+
+// Switches the transformation: the planned position is carried over between
+// machine and Cartesian values, so nothing moves.
+void Planner::set_trafo(const motion::CaxTrafo& t) {
+  const motion::CaxTrafo old = cax_.trafo;
+  if (old.kind == motion::CaxTrafoKind::face) {
+    const auto jx = static_cast<std::size_t>(old.radial), jc = static_cast<std::size_t>(old.c);
+    const motion::FaceMachine m = motion::face_to_machine(mcs_[jx], mcs_[jc], cax_.machine_c_deg);
+    mcs_[jx] = m.x_mm;
+    mcs_[jc] = m.c_deg;
+  } else if (old.kind == motion::CaxTrafoKind::cylinder) {
+    const auto jc = static_cast<std::size_t>(old.c);
+    mcs_[jc] = motion::cyl_to_machine_c_deg(mcs_[jc], old.radius_mm);
+  }
+  if (old.kind != motion::CaxTrafoKind::none) cax_.machine_c_deg = mcs_[static_cast<std::size_t>(old.c)];
+  cax_.trafo = t;
+  if (t.kind != motion::CaxTrafoKind::none) {
+    cax_.machine_c_deg = mcs_[static_cast<std::size_t>(t.c)];
+    motion::AxisVector cart{};
+    motion::cax_to_cartesian(t, mcs_, cart, n_axes_);
+    mcs_ = cart;
+  }
+  pcs_ = frames_.to_pcs(mcs_);
+}
+
+// The transformation's plane (#FACE: radial and C, #CYL: 1st axis and C);
+// false without a transformation.
+bool Planner::trafo_plane(int& a, int& b) const {
+  if (cax_.trafo.kind == motion::CaxTrafoKind::none) return false;
+  a = cax_.plane_first;
+  b = c_axis_;
+  return true;
+}
+
+// Limits of a motion under #FACE / #CYL (docs/decisions.md): the Cartesian
+// C has the radial axis's dynamics (face) or C's scaled to the reference
+// radius (cylinder); on the face the path speed is further limited so that
+// C's angular speed, growing near the centre, stays within C's own.
+void Planner::limit_transformed(Command& c, std::array<motion::AxisDynamics, kMaxAxes> dyn) {
+  if (cax_.trafo.kind == motion::CaxTrafoKind::none || c.kind != CommandKind::motion) return;
+  c.trafo = cax_.trafo;
+  const auto jc = static_cast<std::size_t>(c_axis_);
+  const motion::AxisDynamics c_dyn = dyn[jc];
+  if (cax_.trafo.kind == motion::CaxTrafoKind::cylinder) {
+    const double mm_per_deg = std::numbers::pi * cax_.trafo.radius_mm / 180.0;
+    dyn[jc] = {c_dyn.v_max_mm_s * mm_per_deg, c_dyn.a_acc_mm_s2 * mm_per_deg, c_dyn.a_dec_mm_s2 * mm_per_deg};
+    c.limits = motion::path_limits(c.segment, std::span<const motion::AxisDynamics>(dyn.data(), n_axes_));
+    return;
+  }
+  dyn[jc] = dyn[static_cast<std::size_t>(cax_.trafo.radial)];
+  c.limits = motion::path_limits(c.segment, std::span<const motion::AxisDynamics>(dyn.data(), n_axes_));
+  const double rate_deg_mm = motion::face_max_c_rate_deg_mm(cax_.trafo, c.segment);
+  if (rate_deg_mm > 0) {
+    const double c_v_deg_s = std::min(c_dyn.v_max_mm_s, cax_.c_cycle_limit_deg_s);
+    c.limits.v_max_mm_s = std::min(c.limits.v_max_mm_s, c_v_deg_s / rate_deg_mm);
+    c.limits.a_acc_mm_s2 = std::min(c.limits.a_acc_mm_s2, c_dyn.a_acc_mm_s2 / rate_deg_mm);
+    c.limits.a_dec_mm_s2 = std::min(c.limits.a_dec_mm_s2, c_dyn.a_dec_mm_s2 / rate_deg_mm);
+  }
+  cax_.c_before_deg = cax_.machine_c_deg;
+  cax_.machine_c_deg = motion::face_end_c_deg(cax_.trafo, c.segment, cax_.machine_c_deg);
+}
+
+namespace {
+
+// The motion part of `piece` as a command of `block`: the first carries the
+// block's functions and events, the following ones only their motion.
+Command as_part_of(const Command& block, const Command& piece, bool first) {
+  Command c = block;
+  if (!first) {
+    c = Command{};
+    c.file_id = block.file_id;
+    c.line = block.line;
+    c.emit_block_event = false;
+    c.feed_motion = block.feed_motion;
+  }
+  c.kind = piece.kind;
+  c.segment = piece.segment;
+  c.limits = piece.limits;
+  c.v_cmd_mm_s = piece.v_cmd_mm_s;
+  c.trafo = piece.trafo;
+  c.mapped = piece.mapped;
+  c.map = piece.map;
+  return c;
+}
+
+}  // namespace
+
+// A face line that leaves the centre needs C turned to its direction first
+// (the tool stands at the centre, so only C moves); on a lathe
+// (cax_face_id 1), where X stays >= 0, a line through the centre is split
+// there and C turns half a turn between the halves. The mill lets X pass
+// through 0 instead (docs/decisions.md). At most three commands: line to
+// the centre, turn, line from it; the first carries the block's functions.
+void Planner::face_centre_commands(const Command& c, Commands& out) {
+  const motion::CaxTrafo& t = c.trafo;
+  const auto jx = static_cast<std::size_t>(t.radial), jc = static_cast<std::size_t>(t.c);
+  const bool lathe = channel_.cax_face_id == 1;
+  if (c.mapped || c.segment.kind() != motion::SegmentKind::line) {
+    // An arc never starts at the centre; a rotated contour's points are not
+    // machine-Cartesian here: both run as planned.
+    (void)out.push_back(c);
+    return;
+  }
+  const motion::AxisVector& p0 = c.segment.start_point();
+  const motion::AxisVector& p1 = c.segment.end_point();
+  std::vector<std::pair<motion::AxisVector, motion::AxisVector>> lines{{p0, p1}};
+  const double dx = p1[jx] - p0[jx], dy = p1[jc] - p0[jc], lp = std::hypot(dx, dy);
+  if (lathe && lp > 0) {
+    const double foot = -(p0[jx] * dx + p0[jc] * dy) / lp;  // along the plane, from p0
+    const double d = std::abs(p0[jx] * dy - p0[jc] * dx) / lp;
+    if (d < motion::kFaceCentre_mm && foot > motion::kFaceCentre_mm && foot < lp - motion::kFaceCentre_mm) {
+      motion::AxisVector mid{};
+      c.segment.point_at(foot / lp * c.segment.length(), mid);
+      mid[jx] = mid[jc] = 0;
+      lines = {{p0, mid}, {mid, p1}};
+    }
+  }
+  double c_deg = cax_.c_before_deg;
+  for (const auto& [a, b] : lines) {
+    if (std::hypot(a[jx], a[jc]) < motion::kFaceCentre_mm) {
+      const double to = motion::face_leave_centre_c_deg(b[jx] - a[jx], b[jc] - a[jc], c_deg, lathe);
+      if (std::abs(to - c_deg) > 1e-9) (void)out.push_back(as_part_of(c, face_turn(c, a, c_deg, to), out.empty()));
+      c_deg = to;
+    }
+    Command piece = c;
+    if (lines.size() > 1)
+      if (auto s = motion::make_line(a, b, n_axes_)) piece.segment = *s;  // same direction: same limits
+    c_deg = motion::face_end_c_deg(t, piece.segment, c_deg);
+    (void)out.push_back(as_part_of(c, piece, out.empty()));
+  }
+  cax_.machine_c_deg = c_deg;
+}
+
+// C alone turning from_deg -> to_deg with the tool at the face's centre (a
+// machine move, no transformation), at C's own limits.
+Command Planner::face_turn(const Command& like, const motion::AxisVector& centre_cart, double from_deg,
+                           double to_deg) const {
+  const auto jx = static_cast<std::size_t>(like.trafo.radial), jc = static_cast<std::size_t>(like.trafo.c);
+  motion::AxisVector a = centre_cart, b = centre_cart;
+  a[jx] = b[jx] = 0;
+  a[jc] = from_deg;
+  b[jc] = to_deg;
+  Command turn = like;
+  turn.kind = CommandKind::motion;
+  turn.trafo = motion::CaxTrafo{};
+  turn.mapped = false;
+  if (auto s = motion::make_line(a, b, n_axes_)) turn.segment = *s;
+  const auto& dyn = like.feed_motion ? feed_dyn_ : rapid_dyn_;
+  turn.limits = motion::path_limits(turn.segment, std::span<const motion::AxisDynamics>(dyn.data(), n_axes_));
+  turn.v_cmd_mm_s = turn.limits.v_max_mm_s;
+  return turn;
+}
+
+}  // namespace nck::prep
