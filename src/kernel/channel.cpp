@@ -37,6 +37,8 @@ void Channel::end_program(EndReason reason, double t_s, TickOutput& sink, Channe
   velocity_ = 0;
   waits_.clear();
   late_.clear();
+  release_tap_spindle(ctx);
+  take_links(Command{}, ctx);
   // Program end keeps an endless rotation unless the HLI asks to stop it; a
   // reset or an abort stops the channel's spindles (unless P-AXIS-00455).
   for (std::int8_t s : spindles_) {
@@ -82,6 +84,7 @@ void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelConte
     raise(c.error_id, c.message_index, t_s, sink, ctx);
     return;
   }
+  take_links(c, ctx);
   manual_mask_ = (manual_mask_ | c.manual_on) & ~c.manual_off;
   if (c.get_manual_offsets) manual_fetch_pending_ = true;
   manual_share_start_ = manual_share_;
@@ -100,9 +103,11 @@ void Channel::execute(double t_s, double dt_s, const ChannelInput& in, TickOutpu
       return;
     }
     const double ovr = in.feedhold ? 0.0 : std::clamp(in.feed_override_pct, 0.0, 100.0) / 100.0;
+    limit_path(ctx);
     const motion::ProfileSample st = profile_.step(dt_s, ovr);
     probe_armed_ = current_.measure;
     place(st.s_mm);
+    follow_path(st.s_mm, st.v_mm_s, ctx);
     velocity_ = st.v_mm_s;
     if (!st.finished) return;
     place(current_.segment.length());
@@ -189,8 +194,10 @@ void Channel::advance(double t_s, double dt_s, const ChannelInput& in, TickOutpu
       if (done()) return;
     }
     phase_ = Phase::body;
-    if (current_.kind == CommandKind::motion)
+    if (current_.kind == CommandKind::motion) {
       profile_.start(current_.segment.length(), current_.v_cmd_mm_s, current_.limits);
+      if (!start_links(t_s, sink, ctx)) return;
+    }
     if (current_.kind == CommandKind::dwell) dwell_left_s_ = current_.dwell_s;
   }
   if (phase_ == Phase::body) {
@@ -222,6 +229,7 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
         // Blocks without duration take no cycle of their own.
         if (active_ || done()) break;
       }
+      if (!done()) follow_css(ctx);
       if (!done()) {
         // Running while a block's motion or dwell runs; waiting for a
         // synchronisation or for blocks otherwise.

@@ -7,6 +7,7 @@
 #include "nck/core/fixed_vector.hpp"
 #include "nck/frames/offset_chain.hpp"
 #include "nck/kernel/event.hpp"
+#include "nck/kernel/feed_link.hpp"
 #include "nck/motion/limits.hpp"
 #include "nck/motion/segment.hpp"
 #include "nck/kernel/affine_map.hpp"
@@ -50,6 +51,10 @@ struct Command {
   AffineMap map{};
   motion::PathLimits limits{};
   double v_cmd_mm_s = 0;
+  // spindle couplings (feed_link.hpp): a per-cycle limit of the path speed,
+  // the spindle following the path (tapping), and G96 (modal, every block)
+  FeedLink feed_link{};
+  CssLink css{};
   // dwell
   double dwell_s = 0;
   // stop
