@@ -82,18 +82,24 @@ std::optional<Command> Planner::plan_links(const nc::Block& b, Command& c) {
   if (x < 0)
     return error_command(ErrorId::KernelCssNoFaceAxis, "G96 needs the face axis X", b.file_id, b.line);
   const bool new_speed = !css_on_ || css_m_min_ != m.css_m_min;
-  c.css = {true, main_spindle_, static_cast<std::int8_t>(x), m.css_m_min, m.max_speed_rpm, 0.0};
+  // The radius is the tool tip's: the programmed X plus the zero offsets, i.e.
+  // the machine X less the tool offset (docs/decisions.md). Where the
+  // turning centre is in machine X: 0 shifted by the tool offset.
+  const auto ux = static_cast<std::size_t>(x);
+  const double tool_mm = frames_.to_mcs(pcs_, frames::SuppressMask::none())[ux] -
+                         frames_.to_mcs(pcs_, frames::SuppressMask{frames::SuppressMask::kTool})[ux];
+  c.css = {true, main_spindle_, static_cast<std::int8_t>(x), m.css_m_min, m.max_speed_rpm, tool_mm};
   css_on_ = true;
   css_m_min_ = m.css_m_min;
   // The start speed comes from where the face axis was last programmed (facts B11).
-  if (new_speed && kernel::css_limited(m.css_m_min, mcs_[static_cast<std::size_t>(x)], m.max_speed_rpm,
-                                       main_vb_max_rpm()))
+  const double r_mm = mcs_[ux] - tool_mm;
+  if (new_speed && kernel::css_limited(m.css_m_min, r_mm, m.max_speed_rpm, main_vb_max_rpm()))
     (void)c.warnings.push_back(
         {ErrorId::KernelCssStartLimited,
-         store_.add_message(fmt::format("G96 S{}: at X{:.3f} the start speed is limited to {:.1f} rpm",
-                                        m.css_m_min, mcs_[static_cast<std::size_t>(x)],
-                                        kernel::css_speed_rpm(m.css_m_min, mcs_[static_cast<std::size_t>(x)],
-                                                              m.max_speed_rpm, main_vb_max_rpm())))});
+         store_.add_message(fmt::format("G96 S{}: at radius {:.3f} mm the start speed is limited to {:.1f} rpm",
+                                        m.css_m_min, r_mm,
+                                        kernel::css_speed_rpm(m.css_m_min, r_mm, m.max_speed_rpm,
+                                                              main_vb_max_rpm())))});
   return std::nullopt;
 }
 

@@ -39,6 +39,16 @@ TEST(SpindlePath, FacingWithG96FollowsTheRadiusUpToG196AndG97FreezesIt) {
   EXPECT_TRUE(r.of("warning").empty());
 }
 
+// The radius is the tool tip's: D1 shifts the machine X by 25 mm (tools.lis).
+TEST(SpindlePath, G96RadiusLeavesTheToolOffsetOut) {
+  const PathRun r = run_text("lathe", "G18 G90\nG196 S2500\nT1 D1 M3 S1000\nG0 X20 Z-50\nG96 S150\nG4 0.5\nM30\n",
+                             "css_tool");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  const double t = r.line_t(7) - kDt;
+  EXPECT_NEAR(r.at(t, "X"), 45.0, 1e-9);           // machine X = 20 + 25
+  EXPECT_NEAR(r.at(t, "S1.rpm"), n_css(150, 20), 0.01);  // 1193.66 rpm, not 530.5 (r = 45)
+}
+
 TEST(SpindlePath, G96StartSpeedLimitedWarns20633) {
   const PathRun r = run_text("lathe", "G18 G90\nG196 S500\nM3 S300\nG0 X10 Z2\nG96 S150\nG1 X5 F100\nM30\n", "css_warn");
   ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
