@@ -96,8 +96,9 @@ void PathProfile::set_velocity_limit(double v_mm_s) noexcept {
 double PathProfile::target_velocity(double override_factor) const noexcept {
   if (override_ignored_) override_factor = 1.0;
   if (!(override_factor > 0.0)) return 0.0;  // also NaN: hold rather than guess
-  const double v = std::min(v_cmd_mm_s_ * override_factor, limits_.v_max_mm_s);
-  return v_limit_mm_s_ >= 0.0 ? std::min(v, v_limit_mm_s_) : v;
+  // The override scales the coupling's limit as it scales F.
+  const double v = v_limit_mm_s_ >= 0.0 ? std::min(v_cmd_mm_s_, v_limit_mm_s_) : v_cmd_mm_s_;
+  return std::min(v * override_factor, limits_.v_max_mm_s);
 }
 
 ProfileSample PathProfile::finish(double v_step_mm_s, double v_prev_mm_s, double dt_s,

@@ -170,7 +170,7 @@ Command Planner::plan_motion(const nc::Block& b, Command c, const std::string& f
     return error_command(ErrorId::KernelBadDynamics, "the axes of this block cannot move", b.file_id,
                          b.line);
   // A coupling (v_cmd infinite) limits the speed each cycle in the channel.
-  c.v_cmd_mm_s = rapid ? c.limits.v_max_mm_s : std::min(v_cmd, c.limits.v_max_mm_s);
+  c.v_cmd_mm_s = rapid || std::isinf(v_cmd) ? c.limits.v_max_mm_s : v_cmd;
   return c;
 }
 

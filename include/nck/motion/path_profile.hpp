@@ -43,7 +43,7 @@ class PathProfile {
 
   // A per-cycle limit on the commanded velocity (a spindle coupling: G95,
   // G33, G63, G331), set before step(). The profile ramps to
-  // min(v_cmd x override, limit, v_max) with its accelerations; a limit of
+  // min(min(v_cmd, limit) x override, v_max) with its accelerations; a limit of
   // 0 holds the path (braking). Negative or NaN clears the limit (no
   // coupling). start() clears it. rt
   void set_velocity_limit(double v_mm_s) noexcept;

@@ -128,6 +128,23 @@ TEST(SpindlePath, ThreadInThreeG33PassesStartsOnTheZeroMark) {
   EXPECT_NEAR(wrapped_step(at_z10[0], at_z10[2]), 0.0, step_deg);
 }
 
+// P-CHAN-00836: with thread_cutting.ignore_override 1 a feed override of
+// 50 % leaves the thread at 400 rpm x 2 mm; with 0 (default) it acts.
+TEST(SpindlePath, G33FeedOverrideFollowsIgnoreOverride) {
+  const auto plc = temp_dir("g33ovr_plc") / "ovr.plc";
+  std::ofstream(plc) << "0.0 feed_override 50\n";
+  const std::string prog = "G18 G90\nM3 S400\nG0 X36 Z5\nG33 Z-30 K2\nM30\n";
+  const std::string ignoring =
+      patched_example("lathe", "g33ovr_machine", "channel1.lis", "thread_cutting.ignore_override 1").dir.string();
+  for (const auto& [machine, want] : {std::pair<std::string, double>{"lathe", 0.5 * 800 / 60.0},
+                                      std::pair<std::string, double>{ignoring, 800 / 60.0}}) {
+    const PathRun r = run_text(machine, prog, "g33ovr", "--plc " + plc.string());
+    ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+    const std::size_t k = before_move(r, r.index(r.line_t(4)), "Z");
+    EXPECT_NEAR(r.rows[k + 500].at("Z") - r.rows[k + 1500].at("Z"), want, 1e-4) << machine;
+  }
+}
+
 TEST(SpindlePath, RigidTappingG331G332TurnsWithThePitchAndBack) {
   const PathRun r = run_example_program("lathe", "tapping.nc", "g331");
   ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
