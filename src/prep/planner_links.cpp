@@ -128,7 +128,8 @@ std::optional<Command> Planner::thread_link(const nc::Block& b, const motion::Ax
 }
 
 // The commanded path speed of a feed block (G1/G2/G3/G33/G63/G331/G332),
-// +infinity when a coupling sets it each cycle; the coupling in c.feed_link.
+// +infinity when a coupling sets it each cycle (the coupling in c.feed_link),
+// negative for G194: minus the share of the path's maximum speed.
 std::optional<Command> Planner::plan_feed(const nc::Block& b, const motion::AxisVector& start,
                                           const motion::AxisVector& target, double length_mm, Command& c,
                                           double& v_cmd) {
@@ -174,6 +175,13 @@ std::optional<Command> Planner::plan_feed(const nc::Block& b, const motion::Axis
       f.programmed_rpm = rpm;
     }
     v_cmd = kInf;
+    return std::nullopt;
+  }
+  if (m.feed_mode == nc::FeedMode::g194) {
+    // G194: F % of the path's maximum speed (the axes' vb_max); set by plan_motion.
+    if (!(m.feed_pct > 0))
+      return error_command(ErrorId::KernelNoFeed, "F is 0: program a weighting in % (G194)", b.file_id, b.line);
+    v_cmd = -m.feed_pct / 100.0;  // a share of v_max, negative as a mark
     return std::nullopt;
   }
   if (m.feed_mode == nc::FeedMode::g93) {

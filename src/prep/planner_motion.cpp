@@ -171,6 +171,7 @@ Command Planner::plan_motion(const nc::Block& b, Command c, const std::string& f
                          b.line);
   // A coupling (v_cmd infinite) limits the speed each cycle in the channel.
   c.v_cmd_mm_s = rapid || std::isinf(v_cmd) ? c.limits.v_max_mm_s : v_cmd;
+  if (v_cmd < 0) c.v_cmd_mm_s = -v_cmd * c.limits.v_max_mm_s;  // G194: a share of the maximum
   return c;
 }
 

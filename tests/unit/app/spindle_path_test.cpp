@@ -105,6 +105,18 @@ TEST(SpindlePath, G93TakesFAsTheBlockTime) {
   EXPECT_NEAR(r.line_t(4) - r.line_t(3), 2.0, 0.01);
 }
 
+// G194 F25: a quarter of Z's vb_max (500 mm/s) = 125 mm/s; F100 is refused.
+TEST(SpindlePath, G194WeightsTheAxisMaximum) {
+  const PathRun r = run_text("lathe", "G18 G90\nG0 X10 Z2\nG194 G1 Z-398 F25\nM30\n", "g194");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  const std::size_t k = r.index(r.line_t(3)) + 1000;
+  EXPECT_NEAR(r.rows[k].at("Z") - r.rows[k + 1000].at("Z"), 125.0, 1e-6);
+  const PathRun bad = run_text("lathe", "G18 G90\nG194 G1 Z-20 F100\nM30\n", "g194bad");
+  EXPECT_NE(bad.cli.exit_code, 0);
+  ASSERT_EQ(bad.of("error").size(), 1u);
+  EXPECT_EQ(bad.of("error")[0]["id"], 920090);
+}
+
 // Three G33 passes start on the zero mark (the spindle passes 0 deg in the
 // cycle before Z moves) and cut the same groove: at Z-10 the spindle stands
 // at the same angle in each pass.
