@@ -240,6 +240,42 @@ TEST(SpindlePath, G63WithG95Is20635) {
   EXPECT_EQ(r.of("error")[0]["id"], 20635);
 }
 
+// Bad input ends the channel with the ID and the line (facts B7-B9).
+TEST(SpindlePath, IllegalCouplingsEndTheChannelWithTheirId) {
+  struct Case {
+    const char* machine;
+    const char* program;
+    int id;
+    int line;
+  };
+  const Case cases[] = {
+      {"mill", "G90 X0 Y0 Z0\nM19 S.POS=0 S100\nG63 Z-50 F0 S200\nM30\n", 930002, 3},    // G63 with F0
+      {"mill", "G90 X0 Y0 Z0\nM19 S.POS=0 S100\nG63 Z-50 F250 S0\nM30\n", 20007, 3},    // G63 with S0
+      {"lathe", "G18 G90\nM3 S400\nG96 S100\nG63 Z-5 F250 S200\nM30\n", 20636, 4},      // G63 under G96
+      {"lathe", "G18 G90\nM3 S400\nG0 X36 Z5\nG33 Z-30 K0\nM30\n", 920013, 4},        // pitch 0
+      {"lathe", "G18 G90\nG196 S0\nM30\n", 120169, 2},                                 // G196 max 0
+  };
+  int i = 0;
+  for (const Case& c : cases) {
+    const PathRun r = run_text(c.machine, c.program, "bad" + std::to_string(i++));
+    EXPECT_NE(r.cli.exit_code, 0) << c.program;
+    ASSERT_EQ(r.of("error").size(), 1u) << c.program;
+    EXPECT_EQ(r.of("error")[0]["id"], c.id) << c.program;
+    EXPECT_EQ(r.of("error")[0]["line"], c.line) << c.program;
+    EXPECT_EQ(r.of("end").back()["reason"], "error") << c.program;
+  }
+}
+
+// A negative K taps a left-hand thread: the spindle turns M4 sense going in.
+TEST(SpindlePath, G331NegativePitchTurnsTheOtherWay) {
+  const PathRun r = run_text("lathe", "G18 G90\nG0 X0 Z5\nG331 Z-5 K-1 S300\nG332 Z5\nG0 Z10\nM30\n", "g331lh");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  const std::size_t a = before_move(r, r.index(r.line_t(3)), "Z"), b = r.index(r.line_t(4));
+  auto [turn, travel] = turn_and_travel(r, a, b - 1, "Z");
+  EXPECT_NEAR(travel, -10.0, 1e-6);
+  EXPECT_NEAR(turn, -10 * 360.0, 1e-3);
+}
+
 TEST(SpindlePath, G33PitchAxisThatDoesNotMoveIs120175) {
   const PathRun r = run_text("lathe", "G18 G90\nM3 S400\nG0 X36 Z5\nG33 X30 K2\nM30\n", "g33axis");
   EXPECT_NE(r.cli.exit_code, 0);
