@@ -88,6 +88,19 @@ TEST(SpindlePath, G95FollowsTheRampingSpindleEachCycle) {
   EXPECT_GT(ramping, 100u);  // the spindle ramped 400 -> 800 rpm while the path ran
 }
 
+// Facts B10: with a PLC main spindle (plc_control) G95 uses the programmed
+// speed only: 500 rpm x 0.1 mm = 0.8333 mm/s while the spindle still ramps.
+TEST(SpindlePath, G95WithAPlcMainSpindleUsesTheProgrammedSpeed) {
+  const auto m = patched_example("mill", "g95plc_machine", "channel1.lis",
+                                 "spdl_anzahl 3\nspindel[2].bezeichnung S3\nspindel[2].log_achs_nr 9\n"
+                                 "spindel[2].plc_control 1\nmain_spindle_ax_nr 9\n");
+  const PathRun r = run_text(m.dir.string(), "G90 X0 Y0 Z0\nM3 S500\nG95 F0.1 G1 X10\nM30\n", "g95plc");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  const std::size_t a = r.index(r.line_t(3)) + 100;
+  EXPECT_LT(r.rows[a + 500].at("S3.rpm"), 400.0);  // ramping
+  EXPECT_NEAR(r.rows[a].at("X") - r.rows[a + 1000].at("X"), -500 * 0.1 / 60, 1e-6);
+}
+
 TEST(SpindlePath, G95WithStoppedSpindleIs60131) {
   const PathRun r = run_text("lathe", "G18 G90\nG0 X10 Z2\nG95 F0.2 G1 Z-20\nM30\n", "g95stop");
   EXPECT_NE(r.cli.exit_code, 0);
