@@ -40,6 +40,8 @@ void Channel::end_program(EndReason reason, double t_s, TickOutput& sink, Channe
   waits_.clear();
   late_.clear();
   end_c_axis(ctx);
+  release_tap_spindle(ctx);
+  take_links(Command{}, ctx);
   // Program end keeps an endless rotation unless the HLI asks to stop it; a
   // reset or an abort stops the channel's spindles (unless P-AXIS-00455).
   for (std::int8_t s : spindles_) {
@@ -92,6 +94,7 @@ void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelConte
     return;
   }
   if (!start_c_axis(c, t_s, sink, ctx)) return;
+  take_links(c, ctx);
   manual_mask_ = (manual_mask_ | c.manual_on) & ~c.manual_off;
   if (c.get_manual_offsets) manual_fetch_pending_ = true;
   manual_share_start_ = manual_share_;
@@ -115,10 +118,12 @@ void Channel::execute(double t_s, double dt_s, const ChannelInput& in, TickOutpu
       return;
     }
     const double ovr = in.feedhold ? 0.0 : std::clamp(in.feed_override_pct, 0.0, 100.0) / 100.0;
+    limit_path(ctx);
     const motion::ProfileSample st = profile_.step(dt_s, ovr);
     moved_this_cycle_ = st.v_mm_s > 0;
     probe_armed_ = current_.measure;
     place(st.s_mm);
+    follow_path(st.s_mm, st.v_mm_s, ctx);
     velocity_ = st.v_mm_s;
     if (!st.finished) return;
     place(current_.segment.length());
@@ -218,6 +223,7 @@ void Channel::advance(double t_s, double dt_s, const ChannelInput& in, TickOutpu
     phase_ = Phase::body;
     if (current_.kind == CommandKind::motion) {
       profile_.start(current_.segment.length(), current_.v_cmd_mm_s, current_.limits, current_.v_end_mm_s);
+      if (!start_links(t_s, sink, ctx)) return;
       if (passing_) {
         // The block before ran into this one during this cycle: the set
         // point is already the distance it ran past its end.
@@ -266,6 +272,7 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
         // Blocks without duration take no cycle of their own.
         if (active_ || done()) break;
       }
+      if (!done()) follow_css(ctx);
       if (!done()) {
         // Running while a block's motion or dwell runs; waiting for a
         // synchronisation or for blocks otherwise.

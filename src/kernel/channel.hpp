@@ -148,6 +148,20 @@ class Channel {
   std::int8_t c_spindle_ = -1;     // its spindle (kernel index)
   bool c_axis_on_ = false;         // #CAX in force: the path drives the spindle
   double c_last_deg_ = 0;          // C set point of the cycle before (for its velocity)
+
+  // spindle-path couplings (channel_links.cpp)
+  SpindleUnit* link_spindle(std::int8_t s, ChannelContext& ctx) const noexcept;
+  void take_links(const Command& c, ChannelContext& ctx) noexcept;
+  void release_tap_spindle(ChannelContext& ctx) noexcept;
+  bool start_links(double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
+  void limit_path(ChannelContext& ctx) noexcept;
+  void follow_path(double s_mm, double v_mm_s, ChannelContext& ctx) noexcept;
+  void follow_css(ChannelContext& ctx) noexcept;
+  std::int8_t tap_spindle_ = -1;   // the spindle tracking the path (G63/G331/G332), -1 none
+  double tap_start_deg_ = 0;       // its set point when the block's motion began
+  bool thread_waiting_ = false;    // G33: the path waits for the start angle
+  double thread_last_deg_ = 0;     // the spindle's set point one cycle ago
+  CssLink css_{};                  // G96 in force
 };
 
 }  // namespace nck::kernel

@@ -18,7 +18,7 @@ Event spindle_event(const SpindleUnit& u, std::int8_t index, double t_s, EventKi
 
 void report_spindle_changes(SpindleUnit& u, std::int8_t index, double t_s, TickOutput& out) noexcept {
   const spindle::SpindleStatus& s = u.axis.status();
-  if (s.mode != u.last_mode || s.cmd_rpm != u.last_cmd_rpm) {
+  if (s.mode != u.last_mode || (s.cmd_rpm != u.last_cmd_rpm && !u.speed_law)) {
     Event e = spindle_event(u, index, t_s, EventKind::spindle);
     e.spindle_mode = static_cast<std::uint8_t>(s.mode);
     e.value = s.cmd_rpm;

@@ -36,6 +36,8 @@ struct SpindleUnit {
   // after M3 without a speed), and whether a gear change interrupted a
   // rotation (only M5, G74 and M19 end it, FCT-S1 2.3.1).
   std::int8_t rotation_dir = 1;
+  // G96: a channel sets the speed every cycle; its changes are not events.
+  bool speed_law = false;
   bool rotation_across_gear_change = false;
 
   // external commands (HLI): those waiting for this spindle in order of

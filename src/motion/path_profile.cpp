@@ -64,6 +64,8 @@ bool PathProfile::start(double length_mm, double v_cmd_mm_s, const PathLimits& l
   carry_mm_ = 0.0;
   limits_ = limits;
   v_end_mm_s_ = 0.0;
+  v_limit_mm_s_ = -1.0;
+  override_ignored_ = false;
   if (!std::isfinite(length_mm) || length_mm < 0.0) {
     length_mm_ = s_mm_ = 0.0;
     finished_ = true;
@@ -87,9 +89,16 @@ bool PathProfile::start(double length_mm, double v_cmd_mm_s, const PathLimits& l
   return true;
 }
 
+void PathProfile::set_velocity_limit(double v_mm_s) noexcept {
+  v_limit_mm_s_ = std::isfinite(v_mm_s) && v_mm_s >= 0.0 ? v_mm_s : -1.0;
+}
+
 double PathProfile::target_velocity(double override_factor) const noexcept {
+  if (override_ignored_) override_factor = 1.0;
   if (!(override_factor > 0.0)) return 0.0;  // also NaN: hold rather than guess
-  return std::min(v_cmd_mm_s_ * override_factor, limits_.v_max_mm_s);
+  // The override scales the coupling's limit as it scales F.
+  const double v = v_limit_mm_s_ >= 0.0 ? std::min(v_cmd_mm_s_, v_limit_mm_s_) : v_cmd_mm_s_;
+  return std::min(v * override_factor, limits_.v_max_mm_s);
 }
 
 ProfileSample PathProfile::finish(double v_step_mm_s, double v_prev_mm_s, double dt_s,

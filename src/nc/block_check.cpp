@@ -15,7 +15,7 @@ std::optional<GGroup> g_group(GCode code) {
     case g0: case g1: case g2: case g3: case g33: case g63: case g331: case g332: return GGroup::motion;
     case g17: case g18: case g19: return GGroup::plane;
     case g90: case g91: return GGroup::dim;
-    case g93: case g94: case g95: return GGroup::feed;
+    case g93: case g94: case g95: case g194: return GGroup::feed;
     case g96: case g97: return GGroup::speed;
     case g40: case g41: case g42: return GGroup::comp;
     case g51: case g52: return GGroup::diam;
@@ -137,6 +137,9 @@ bool check_spindle_m(const Words& w, BlockCtx& b, const ModalState& after) {
 bool check_values(const Words& w, BlockCtx& b, const ModalState& before, const ModalState& after) {
   if (w.f.v && *w.f.v < 0)
     return fail(b, ErrorId::NcNegativeFeed, w.f.pos, fmt::format("F{} is negative", *w.f.v));
+  if (w.f.v && after.feed_mode == FeedMode::g194 && *w.f.v >= 100)
+    return fail(b, ErrorId::NcFeedPercentRange, w.f.pos,
+                fmt::format("G194 F{}: the weighting must be below 100 %", *w.f.v));
   for (const At<double>* td : {&w.t, &w.d})
     if (td->v && (*td->v < 0 || *td->v != std::round(*td->v) || *td->v > 1e12))
       return fail(b, ErrorId::NcBadToolNumber, td->pos, fmt::format("{} must be an integer >= 0", *td->v));

@@ -40,7 +40,8 @@ void hash_to_mm(HashCommand& h) {
 }  // namespace
 
 void words_to_mm(Words& w, const ModalState& modal) {
-  if (modal.feed_mode != FeedMode::g93) scale(w.f);  // under G93 F is a time
+  // under G93 F is a time, under G194 a percentage
+  if (modal.feed_mode != FeedMode::g93 && modal.feed_mode != FeedMode::g194) scale(w.f);
   scale(w.r);
   for (auto& c : w.ijk) scale(c);
   // #PSET takes its values from the axis words, so they are converted here

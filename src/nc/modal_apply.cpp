@@ -26,6 +26,7 @@ void apply_g(GCode code, double value, ModalState& m) {
     case g90: m.absolute = true; break;
     case g91: m.absolute = false; break;
     case g93: m.feed_mode = FeedMode::g93; break;
+    case g194: m.feed_mode = FeedMode::g194; break;
     case g94: m.feed_mode = FeedMode::g94; break;
     case g95: m.feed_mode = FeedMode::g95; break;
     case g96: m.speed_mode = SpeedMode::g96; break;
@@ -156,6 +157,7 @@ bool apply_words(Words& w, BlockCtx& b, ModalState& modal, Block& out) {
       case FeedMode::g94: modal.feed_mm_min = *w.f.v; break;
       case FeedMode::g95: modal.feed_mm_rev = *w.f.v; break;
       case FeedMode::g93: modal.feed_time_s = *w.f.v; break;
+      case FeedMode::g194: modal.feed_pct = *w.f.v; break;
     }
   }
   if (w.r.v) { out.r = w.r.v; modal.r = *w.r.v; }

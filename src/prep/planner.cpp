@@ -35,7 +35,8 @@ bool is_executed_command(const nc::HashCommand& h) {
 // The non-modal G functions this version executes.
 constexpr nc::GCodeSet kExecutedNonModal{nc::GCode::g4,   nc::GCode::g60,  nc::GCode::g74,  nc::GCode::g92,  nc::GCode::g100,
                                          nc::GCode::g101, nc::GCode::g102, nc::GCode::g112, nc::GCode::g130,
-                                         nc::GCode::g135, nc::GCode::g136, nc::GCode::g137, nc::GCode::g167};
+                                         nc::GCode::g135, nc::GCode::g136, nc::GCode::g137, nc::GCode::g167,
+                                         nc::GCode::g196};
 
 // With these the axis words are the function's values (homing order, G92
 // offset, G101 factor, G102 selection), not a motion target.
@@ -45,7 +46,8 @@ constexpr nc::GCodeSet kAxisWordsAreValues{nc::GCode::g74, nc::GCode::g92, nc::G
 
 Planner::Planner(const config::Machine& machine, std::size_t channel_index, PlanStore& store,
                  const PlannerOptions& options, const std::vector<std::int8_t>& spindles)
-    : channel_(machine.channels[channel_index]),
+    : machine_(&machine),
+      channel_(machine.channels[channel_index]),
       store_(store),
       n_axes_(std::min(channel_.axes.size(), kMaxAxes)),
       frames_(channel_, channel_index < machine.channel_data.size() ? machine.channel_data[channel_index]
@@ -74,6 +76,7 @@ Planner::Planner(const config::Machine& machine, std::size_t channel_index, Plan
   pcs_ = frames_.to_pcs(mcs_);  // the clamp / default zero offset act from the start
   setup_diameter_axes(machine);
   setup_corner_budgets(machine);
+  find_main_spindle(spindles);
 }
 
 Command Planner::error_command(ErrorId id, std::string message, std::uint16_t file_id,
@@ -109,12 +112,6 @@ std::string Planner::unsupported(const nc::Block& b) const {
     if (w.name.rfind("V.G.NP[", 0) != 0) return fmt::format("writing {} is not executed yet", w.name);
   if (b.dwell_revs) return "a dwell in spindle revolutions (G4 S..) is not executed yet";
   const nc::ModalState& m = b.modal;
-  using nc::Motion;
-  if (m.motion != Motion::rapid && m.motion != Motion::linear && m.motion != Motion::cw &&
-      m.motion != Motion::ccw)
-    return "thread cutting and tapping (G33/G63/G331/G332) are not executed yet";
-  if (m.feed_mode != nc::FeedMode::g94) return "feed modes G93/G95 are not executed yet";
-  if (m.speed_mode != nc::SpeedMode::g97) return "constant cutting speed G96 is not executed yet";
   if (m.radius_comp != nc::RadiusComp::g40) return "tool radius compensation G41/G42 is not executed yet";
   return {};
 }
@@ -272,6 +269,8 @@ Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
   auto actions = spindles_.plan(b);
   if (!actions) return error_command(actions.error().id, actions.error().message, b.file_id, b.line);
   c.spindle_actions = *actions;
+  note_spindle_words(b);
+  if (auto e = plan_links(b, c)) return *e;
   c.expl_syn = b.hash && std::holds_alternative<nc::ExplSyn>(*b.hash);
   c.get_manual_offsets = b.hash && std::holds_alternative<nc::GetManualOffsets>(*b.hash);
   if (b.manual_g) {

@@ -44,8 +44,10 @@ void Planner::note_transition(const nc::Block& b, Command& c, bool rapid) {
   c.exact_stop = b.g_nonmodal.has(nc::GCode::g60) || b.modal.exact_stop ||
                  (rapid && channel_.exact_stop_after_g00);
   // Under #FACE/#CYL the segment is Cartesian and the machine axes follow
-  // the transformation: its corners are not looked ahead yet.
-  if (c.trafo.kind != motion::CaxTrafoKind::none) {
+  // the transformation: its corners are not looked ahead yet. A spindle
+  // coupling (G95, G33, G63, G331/G332) sets the path speed each cycle from
+  // the spindle: such blocks start and end at standstill for now.
+  if (c.trafo.kind != motion::CaxTrafoKind::none || c.feed_link.kind != kernel::FeedLinkKind::none) {
     c.exact_stop = true;
     last_motion_.valid = false;
     return;

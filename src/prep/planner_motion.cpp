@@ -160,13 +160,8 @@ Command Planner::plan_motion(const nc::Block& b, Command c, const std::string& f
   }
 
   double v_cmd = 0;  // rapid: the path limit (set below)
-  if (!rapid) {
-    const double f_mm_min = b.modal.feed_mm_min;
-    if (f_mm_min <= 0)
-      return error_command(ErrorId::KernelNoFeed, "F is 0: program a feed in mm/min", b.file_id,
-                           b.line);
-    v_cmd = f_mm_min / 60.0;
-  }
+  if (rapid) c.feed_link = FeedLink{};
+  else if (auto e = plan_feed(b, mcs_, target, c.segment.length(), c, v_cmd)) return *e;
   mcs_ = target;
   if (c.segment.length() <= 0) {
     c.kind = CommandKind::nop;
@@ -179,7 +174,9 @@ Command Planner::plan_motion(const nc::Block& b, Command c, const std::string& f
   if (!motion::valid(c.limits))
     return error_command(ErrorId::KernelBadDynamics, "the axes of this block cannot move", b.file_id,
                          b.line);
-  c.v_cmd_mm_s = rapid ? c.limits.v_max_mm_s : v_cmd;
+  // A coupling (v_cmd infinite) limits the speed each cycle in the channel.
+  c.v_cmd_mm_s = rapid || std::isinf(v_cmd) ? c.limits.v_max_mm_s : v_cmd;
+  if (v_cmd < 0) c.v_cmd_mm_s = -v_cmd * c.limits.v_max_mm_s;  // G194: a share of the maximum
   note_transition(b, c, rapid);
   return c;
 }

@@ -8,6 +8,7 @@
 #include "nck/frames/offset_chain.hpp"
 #include "nck/kernel/event.hpp"
 #include "nck/motion/cax_transform.hpp"
+#include "nck/kernel/feed_link.hpp"
 #include "nck/motion/limits.hpp"
 #include "nck/motion/segment.hpp"
 #include "nck/kernel/affine_map.hpp"
@@ -59,6 +60,10 @@ struct Command {
   double v_entry_max_mm_s = 0;
   bool exact_stop = false;
   double v_end_mm_s = 0;
+  // spindle couplings (feed_link.hpp): a per-cycle limit of the path speed,
+  // the spindle following the path (tapping), and G96 (modal, every block)
+  FeedLink feed_link{};
+  CssLink css{};
   // dwell
   double dwell_s = 0;
   // stop

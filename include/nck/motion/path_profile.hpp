@@ -41,6 +41,15 @@ class PathProfile {
   // Back to standstill with no carried distance (e.g. after an abort). rt
   void reset() noexcept;
 
+  // A per-cycle limit on the commanded velocity (a spindle coupling: G95,
+  // G33, G63, G331), set before step(). The profile ramps to
+  // min(min(v_cmd, limit) x override, v_max) with its accelerations; a limit of
+  // 0 holds the path (braking). Negative or NaN clears the limit (no
+  // coupling). start() clears it. rt
+  void set_velocity_limit(double v_mm_s) noexcept;
+  // Ignore the feed override (G33: the path follows the spindle). rt
+  void set_override_ignored(bool ignored) noexcept { override_ignored_ = ignored; }
+
   double s() const noexcept { return s_mm_; }
   double v() const noexcept { return v_mm_s_; }
   double length() const noexcept { return length_mm_; }
@@ -60,6 +69,8 @@ class PathProfile {
   double v_mm_s_ = 0.0;
   double carry_mm_ = 0.0;  // distance run past the previous segment's end
   bool finished_ = true;
+  double v_limit_mm_s_ = -1.0;  // < 0: none
+  bool override_ignored_ = false;
 };
 
 // Largest velocity v for this cycle such that moving v*dt now and then

@@ -18,7 +18,7 @@ enum class GCode : std::uint16_t {
   // plane, dimensions, feed, spindle speed, radius compensation, diameter, unit
   g17 = 17, g18 = 18, g19 = 19,
   g90 = 90, g91 = 91,
-  g93 = 93, g94 = 94, g95 = 95,
+  g93 = 93, g94 = 94, g95 = 95, g194 = 194,
   g96 = 96, g97 = 97,
   g40 = 40, g41 = 41, g42 = 42,
   g51 = 51, g52 = 52,

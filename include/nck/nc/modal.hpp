@@ -7,7 +7,7 @@
 namespace nck::nc {
 
 enum class Motion : std::uint8_t { rapid, linear, cw, ccw, thread, tap, tap_rigid, tap_retract };
-enum class FeedMode : std::uint8_t { g93 = 93, g94 = 94, g95 = 95 };
+enum class FeedMode : std::uint8_t { g93 = 93, g94 = 94, g95 = 95, g194 = 194 };
 enum class SpeedMode : std::uint8_t { g97 = 97, g96 = 96 };
 enum class RadiusComp : std::uint8_t { g40 = 40, g41 = 41, g42 = 42 };
 
@@ -31,6 +31,7 @@ struct ModalState {
 
   // Added by the decoder work:
   double feed_time_s = 0;               // F under G93 (time for the block)
+  double feed_pct = 0;                  // F under G194 (% of the axes' maximum speed)
   double tap_pitch_mm = 0;              // G331/G332 K (signed: the sign picks the thread hand)
   bool circle_center_absolute = false;  // G161 (true) / G162 (false, initial)
   bool manual_mode = false;             // G201 (true) / G202 (false, initial)

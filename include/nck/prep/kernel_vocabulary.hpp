@@ -10,6 +10,8 @@ namespace nck::prep {
 using kernel::Command;
 using kernel::CommandKind;
 using kernel::EndReason;
+using kernel::FeedLink;
+using kernel::FeedLinkKind;
 using kernel::FunctionKind;
 using kernel::kNoMessage;
 using kernel::Output;

@@ -84,9 +84,20 @@ class Planner final : public nc::KernelStateReader {
   double programmed_radius(const nc::Block& b, std::size_t j) const;
   std::string plc_control_violation(const nc::Block& b) const;
   int axis_named(const char* name) const;
+  // spindle-path couplings (planner_links.cpp)
+  void find_main_spindle(const std::vector<std::int8_t>& spindles);
+  void note_spindle_words(const nc::Block& b);
+  double main_vb_max_rpm() const;
+  std::optional<Command> plan_links(const nc::Block& b, Command& c);
+  std::optional<Command> plan_feed(const nc::Block& b, const motion::AxisVector& start,
+                                   const motion::AxisVector& target, double length_mm, Command& c,
+                                   double& v_cmd);
+  std::optional<Command> thread_link(const nc::Block& b, const motion::AxisVector& start,
+                                     const motion::AxisVector& target, double length_mm, FeedLink& f);
   std::optional<double> rotation_variable(std::string_view field) const;
   std::optional<double> axis_variable(std::string_view key) const;
 
+  const config::Machine* machine_ = nullptr;
   const config::ChannelConfig& channel_;
   PlanStore& store_;
   std::size_t n_axes_ = 0;
@@ -159,6 +170,15 @@ class Planner final : public nc::KernelStateReader {
   void face_centre_commands(const Command& c, Commands& out);
   Command face_turn(const Command& like, const motion::AxisVector& centre_cart, double from_deg, double to_deg) const;
   motion::AxisMask length_axes() const;
+  // spindle couplings
+  std::int8_t main_spindle_ = -1;          // kernel index of the main spindle
+  std::size_t main_channel_spindle_ = 0;   // its index in the channel's list
+  double last_s_rpm_ = 0;                  // last programmed S of the main spindle, signed
+  nc::Motion prev_motion_ = nc::Motion::rapid;
+  int thread_axis_ = 2;                    // G33 pitch letter: 0 I (X), 1 J (Y), 2 K (Z)
+  double thread_offset_deg_ = 0;           // S.OFFSET, modal to program end
+  bool css_on_ = false;
+  double css_m_min_ = 0;
 };
 
 }  // namespace nck::prep

@@ -115,6 +115,11 @@ TEST(ZeroAllocation, WholeExamplesRunThroughTickWithoutHeap) {
       {"examples/lathe", {"examples/lathe/turn.nc"}},
       {"examples/lathe", {"examples/lathe/gears.nc"}},
       {"examples/lathe", {"examples/lathe/diameter.nc"}},
+      {"examples/lathe", {"examples/lathe/facing.nc"}},
+      {"examples/lathe", {"examples/lathe/profile.nc"}},
+      {"examples/lathe", {"examples/lathe/thread.nc"}},
+      {"examples/lathe", {"examples/lathe/tapping.nc"}},
+      {"examples/mill", {"examples/mill/tapping.nc"}},
       {"examples/two-channel", {"examples/two-channel/channel1.nc", "examples/two-channel/channel2.nc"}},
   };
   for (const Example& ex : examples) {

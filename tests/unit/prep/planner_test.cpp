@@ -320,11 +320,11 @@ TEST(Planner, DwellInSeconds) {
 
 TEST(Planner, FunctionsNotExecutedYetAreError930001) {
   PlannerRig r("mill");
-  // G95 feed per revolution is decoded but not executed.
-  auto c = r.plan("G0 X1\nG95 G1 X5 F0.1\nM30\n");
+  // G41 tool radius compensation is decoded but not executed.
+  auto c = r.plan("G0 X1\nG41 G1 X5 F100\nM30\n");
   expect_error(c[1], ErrorId::KernelNotYetSupported, 2);
   EXPECT_EQ(static_cast<std::uint32_t>(c[1].error_id), 930001u);
-  EXPECT_NE(r.store.messages.at(c[1].message_index).find("G95"), std::string::npos);
+  EXPECT_NE(r.store.messages.at(c[1].message_index).find("G41"), std::string::npos);
 }
 
 TEST(Planner, ChannelMFunctionsAreOutputWithTheirSynchronisation) {

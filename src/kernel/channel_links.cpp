@@ -1,0 +1,136 @@
+// The spindle-path couplings in the cycle (feed_link.hpp): each cycle the
+// block's feed link becomes a velocity limit of the path profile (G95, G33,
+// G63/G331 through the spindle's speed limit), the spindle follows the path
+// as a tracking axis (G63, G331, G332), and under G96 the spindle speed
+// follows the face axis. The planner only described the coupling.
+#include <cmath>
+
+#include "channel.hpp"
+
+namespace nck::kernel {
+namespace {
+
+bool is_tap(FeedLinkKind k) noexcept { return k == FeedLinkKind::tap || k == FeedLinkKind::tap_rigid; }
+
+// The gear stage's top speed (vb_max) in rpm, 0 = none.
+double vb_max_rpm(const SpindleUnit& u) noexcept {
+  const std::uint32_t g = u.axis.status().gear_stage;
+  if (g < 1 || g > u.axis.config().gears.size()) return 0;
+  return u.axis.config().gears[g - 1].speed_max_deg_s / 6.0;
+}
+
+}  // namespace
+
+SpindleUnit* Channel::link_spindle(std::int8_t s, ChannelContext& ctx) const noexcept {
+  if (s < 0 || static_cast<std::size_t>(s) >= ctx.spindle_count) return nullptr;
+  return &ctx.spindles[s];
+}
+
+// At a block's start: a block outside G63/G331/G332 ends the tracking
+// (G4 and blocks without motion under G63 keep it, FCT-S1 2.8.6); G96 is
+// taken over from every block (G97 freezes the speed reached).
+void Channel::take_links(const Command& c, ChannelContext& ctx) noexcept {
+  if (!is_tap(c.feed_link.kind)) release_tap_spindle(ctx);
+  if (SpindleUnit* u = link_spindle(css_.spindle, ctx); u && !(c.css.active && c.css.spindle == css_.spindle))
+    u->speed_law = false;
+  css_ = c.css;
+}
+
+void Channel::release_tap_spindle(ChannelContext& ctx) noexcept {
+  if (SpindleUnit* u = link_spindle(tap_spindle_, ctx)) (void)u->axis.leave_axis_mode();
+  tap_spindle_ = -1;
+}
+
+// When a motion's body begins: tapping makes the spindle a tracking axis
+// (it must stand still, 950008), G95/G33 need a turning spindle (60131),
+// G33 waits for the spindle's start angle. False: the channel raised an error.
+bool Channel::start_links(double t_s, TickOutput& sink, ChannelContext& ctx) noexcept {
+  const FeedLink& f = current_.feed_link;
+  thread_waiting_ = false;
+  SpindleUnit* u = link_spindle(f.spindle, ctx);
+  if (f.kind == FeedLinkKind::none || !u) return true;
+  const spindle::SpindleStatus& st = u->axis.status();
+  if (is_tap(f.kind)) {
+    if (tap_spindle_ != f.spindle) {
+      const spindle::SpindleResult r = u->axis.enter_axis_mode();
+      if (!r.ok()) {
+        raise(r.id, kNoMessage, t_s, sink, ctx);
+        return false;
+      }
+      tap_spindle_ = f.spindle;
+    }
+    tap_start_deg_ = u->axis.status().set_pos_deg;
+    return true;
+  }
+  const bool turning = st.mode == spindle::SpindleMode::rotate && st.cmd_rpm != 0;
+  if (!f.use_programmed && !turning) {
+    raise(ErrorId::KernelFeedPerRevSpindleStopped, kNoMessage, t_s, sink, ctx);
+    return false;
+  }
+  if (f.kind == FeedLinkKind::thread) {
+    thread_waiting_ = true;
+    thread_last_deg_ = st.set_pos_deg;
+  }
+  profile_.set_override_ignored(f.kind == FeedLinkKind::thread && f.ignore_override);
+  return true;
+}
+
+// Before the profile's step: the speed the coupling allows this cycle.
+void Channel::limit_path(ChannelContext& ctx) noexcept {
+  const FeedLink& f = current_.feed_link;
+  const SpindleUnit* u = link_spindle(f.spindle, ctx);
+  if (f.kind == FeedLinkKind::none || !u) return;
+  const spindle::SpindleStatus& st = u->axis.status();
+  switch (f.kind) {
+    case FeedLinkKind::per_rev:
+      // The spindle's set-point speed of this cycle (docs/decisions.md: a
+      // ramping spindle takes the feed with it).
+      profile_.set_velocity_limit(link_velocity_mm_s(f.use_programmed ? f.programmed_rpm : st.set_rpm, f.mm_per_rev));
+      break;
+    case FeedLinkKind::thread: {
+      if (thread_waiting_) {
+        // Start on the zero mark + OFFSET, so every pass meets the same groove.
+        const double step = st.set_pos_deg - thread_last_deg_;
+        const double fwd = st.set_rpm >= 0 ? std::fmod(step + 720.0, 360.0) : -std::fmod(-step + 720.0, 360.0);
+        thread_waiting_ = !passes_angle(thread_last_deg_, fwd, f.start_deg);
+        thread_last_deg_ = st.set_pos_deg;
+      }
+      profile_.set_velocity_limit(thread_waiting_ ? 0.0 : link_velocity_mm_s(st.act_rpm, f.mm_per_rev));
+      break;
+    }
+    case FeedLinkKind::tap:
+    case FeedLinkKind::tap_rigid:
+      // The spindle follows; its top speed caps the path.
+      profile_.set_velocity_limit(link_velocity_mm_s(vb_max_rpm(*u), f.mm_per_rev));
+      break;
+    case FeedLinkKind::none: break;
+  }
+}
+
+// After the path moved to s_mm at v: the tracking spindle's set point.
+void Channel::follow_path(double s_mm, double v_mm_s, ChannelContext& ctx) noexcept {
+  const FeedLink& f = current_.feed_link;
+  if (!is_tap(f.kind) || tap_spindle_ != f.spindle) return;
+  SpindleUnit* u = link_spindle(f.spindle, ctx);
+  if (!u) return;
+  const double pos = tap_angle_deg(tap_start_deg_, s_mm, f.mm_per_rev, f.direction);
+  const double vel = (f.direction < 0 ? -360.0 : 360.0) * v_mm_s / f.mm_per_rev;
+  u->axis.axis_set_point(pos, vel);
+}
+
+// G96, every cycle: n = 1000 v / (2 pi r) from the face axis's set point,
+// for a spindle in endless rotation (its direction kept).
+void Channel::follow_css(ChannelContext& ctx) noexcept {
+  SpindleUnit* u = link_spindle(css_.spindle, ctx);
+  if (!css_.active || !u || css_.face_axis < 0) return;
+  const spindle::SpindleStatus& st = u->axis.status();
+  if (st.mode != spindle::SpindleMode::rotate) return;
+  const double r_mm = machine_position()[static_cast<std::size_t>(css_.face_axis)] - css_.centre_mm;
+  const double n = css_speed_rpm(css_.v_m_min, r_mm, css_.max_rpm,
+                                 vb_max_rpm(*u));
+  const double dir = u->rotation_dir < 0 ? -1.0 : 1.0;
+  u->speed_law = true;
+  if (dir * n != st.programmed_rpm) (void)u->axis.rotate(dir * n);
+}
+
+}  // namespace nck::kernel
