@@ -1,6 +1,7 @@
 #include "channel.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace nck::kernel {
 
@@ -135,6 +136,8 @@ void Channel::execute(double t_s, double dt_s, const ChannelInput& in, TickOutpu
     // that reached its end point looks one cycle longer before it ends.
     if (current_.measure) awaiting_probe_ = true;
     else phase_ = Phase::post_wait;
+  } else if (current_.kind == CommandKind::dwell && current_.dwell_spindle >= 0) {
+    dwell_revolutions(t_s, dt_s, sink, ctx);
   } else if (current_.kind == CommandKind::dwell) {
     dwell_left_s_ -= dt_s;
     // Half a cycle of tolerance so a dwell of k cycles takes exactly k cycles.
@@ -142,6 +145,21 @@ void Channel::execute(double t_s, double dt_s, const ChannelInput& in, TickOutpu
   } else {
     phase_ = Phase::post_wait;
   }
+}
+
+// G4 S..: the dwell lasts as many revolutions as the spindle really turns
+// (its set-point speed each cycle, so override and ramps count). A spindle
+// that stands when the dwell begins would never end it: an error.
+void Channel::dwell_revolutions(double t_s, double dt_s, TickOutput& sink, ChannelContext& ctx) noexcept {
+  const SpindleUnit* u = link_spindle(current_.dwell_spindle, ctx);
+  const double rpm = u ? std::fabs(u->axis.status().set_rpm) : 0.0;
+  if (rpm <= 0 && dwell_revs_left_ == current_.dwell_revs && current_.dwell_revs > 0) {
+    raise(ErrorId::KernelDwellSpindleStopped, kNoMessage, t_s, sink, ctx);
+    return;
+  }
+  dwell_revs_left_ -= rpm / 60.0 * dt_s;
+  // Half a cycle of tolerance, as for a dwell in seconds.
+  if (dwell_revs_left_ <= 0.5 * rpm / 60.0 * dt_s) phase_ = Phase::post_wait;
 }
 
 // G100 ends where the probe switched (the axes stop at the latched point and
@@ -239,6 +257,7 @@ void Channel::advance(double t_s, double dt_s, const ChannelInput& in, TickOutpu
       settling_ = moved_last_cycle_;
     }
     if (current_.kind == CommandKind::dwell) dwell_left_s_ = current_.dwell_s;
+    dwell_revs_left_ = current_.dwell_revs;
   }
   if (phase_ == Phase::body) {
     const bool timed = current_.kind == CommandKind::motion || current_.kind == CommandKind::dwell;

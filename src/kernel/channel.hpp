@@ -85,6 +85,7 @@ class Channel {
                ChannelContext& ctx) noexcept;
   void execute(double t_s, double dt_s, const ChannelInput& in, TickOutput& sink, ChannelContext& ctx) noexcept;
   void place(double s_mm) noexcept;
+  void dwell_revolutions(double t_s, double dt_s, TickOutput& sink, ChannelContext& ctx) noexcept;
   void end_measuring_run(double t_s, const ChannelInput& in, TickOutput& sink, ChannelContext& ctx) noexcept;
   void send_feedback(const Feedback& f, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
   void follow_handwheel(double t_s, double dt_s, const ChannelInput& in, TickOutput& sink,
@@ -118,6 +119,7 @@ class Channel {
   Command current_{};
   motion::PathProfile profile_{};
   double dwell_left_s_ = 0;
+  double dwell_revs_left_ = 0;
   double velocity_ = 0;
   bool passing_ = false;  // the last motion ended at speed: the next one takes over this cycle
   bool moved_this_cycle_ = false, moved_last_cycle_ = false;  // the path advanced in this / the last cycle

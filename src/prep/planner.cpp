@@ -110,7 +110,6 @@ std::string Planner::unsupported(const nc::Block& b) const {
     if (!kExecutedNonModal.has(g)) return fmt::format("G{} is not executed yet", nc::g_number(g));
   for (const nc::VariableWrite& w : b.kernel_writes)
     if (w.name.rfind("V.G.NP[", 0) != 0) return fmt::format("writing {} is not executed yet", w.name);
-  if (b.dwell_revs) return "a dwell in spindle revolutions (G4 S..) is not executed yet";
   const nc::ModalState& m = b.modal;
   if (m.radius_comp != nc::RadiusComp::g40) return "tool radius compensation G41/G42 is not executed yet";
   return {};
@@ -293,6 +292,15 @@ Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
   if (b.dwell_s) {
     c.kind = CommandKind::dwell;
     c.dwell_s = std::max(0.0, *b.dwell_s);
+    return c;
+  }
+  if (b.dwell_revs) {
+    if (main_spindle_ < 0)
+      return error_command(ErrorId::KernelLinkNoSpindle, "G4 S.. counts main-spindle revolutions: the channel has none",
+                           b.file_id, b.line);
+    c.kind = CommandKind::dwell;
+    c.dwell_revs = std::max(0.0, *b.dwell_revs);
+    c.dwell_spindle = main_spindle_;
     return c;
   }
   if (b.g_nonmodal.has(nc::GCode::g100)) return plan_measuring_run(b, c, file_name);

@@ -64,8 +64,11 @@ struct Command {
   // the spindle following the path (tapping), and G96 (modal, every block)
   FeedLink feed_link{};
   CssLink css{};
-  // dwell
+  // dwell: `dwell_s` seconds, or (G4 S..) `dwell_revs` revolutions of
+  // spindle `dwell_spindle` (kernel index), counted as it really turns
   double dwell_s = 0;
+  double dwell_revs = 0;
+  std::int8_t dwell_spindle = -1;
   // stop
   bool optional_stop = false;
   // end / error
