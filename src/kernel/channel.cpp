@@ -250,11 +250,11 @@ void Channel::advance(double t_s, double dt_s, const ChannelInput& in, TickOutpu
         velocity_ = profile_.v();
         return;
       }
-      // From an exact stop the path stands still for one cycle before it
-      // starts again: the axes' last step into the stop and the first step
-      // out of it (each up to a * dt, in other directions) must not fall
-      // into consecutive cycles.
-      settling_ = moved_last_cycle_;
+      // From an exact stop the path may stand still for one cycle before it
+      // starts again: where the axes' last step into the stop and the first
+      // step out of it (each up to a * dt) would change an axis's velocity
+      // by more than a_max * dt (Command::settle_after_stop).
+      settling_ = moved_last_cycle_ && current_.settle_after_stop;
     }
     if (current_.kind == CommandKind::dwell) dwell_left_s_ = current_.dwell_s;
     dwell_revs_left_ = current_.dwell_revs;

@@ -2,6 +2,7 @@
 // continuous path): whether it must end at standstill, and how fast the path
 // may pass into it from the motion planned before it.
 #include <algorithm>
+#include <cmath>
 
 #include "nck/motion/junction.hpp"
 #include "nck/prep/planner.hpp"
@@ -35,6 +36,21 @@ motion::AxisVector Planner::machine_tangent(const Command& c, bool at_end) const
   return mapped;
 }
 
+// Coming from an exact stop, the last step into it (at most a_dec * dt
+// along the previous path) and c's first step (a_acc * dt along c) fall into
+// consecutive cycles; where an axis would change its velocity by more than
+// a_max * dt (a reversal, a sharp turn), the channel waits one cycle at
+// standstill between them. Unknown previous motion: always.
+bool Planner::needs_settling(const Command& c) const {
+  if (!last_motion_.valid) return true;
+  const motion::AxisVector t = machine_tangent(c, false);
+  for (std::size_t j = 0; j < n_axes_; ++j) {
+    const double dv = std::fabs(last_motion_.a_dec_mm_s2 * last_motion_.tangent[j] - c.limits.a_acc_mm_s2 * t[j]);
+    if (dv > axis_a_max_[j] * (1 + 1e-12)) return true;
+  }
+  return false;
+}
+
 // Exact stop at c's end: G60 in the block, G360 in force, or a G0 block
 // with exact_stop_after_g00 (P-CHAN-00235). The entry limit: the corner
 // from the previous motion, and neither block's feed exceeded — a lower F
@@ -54,6 +70,7 @@ void Planner::note_transition(const nc::Block& b, Command& c, bool rapid) {
   }
   const auto& dv = rapid ? corner_dv_rapid_ : corner_dv_feed_;
   const double cruise_mm_s = std::min(c.v_cmd_mm_s, c.limits.v_max_mm_s);
+  c.settle_after_stop = needs_settling(c);
   if (last_motion_.valid) {
     std::array<double, kMaxAxes> budget{};
     for (std::size_t j = 0; j < n_axes_; ++j) budget[j] = std::min(dv[j], last_motion_.corner_dv[j]);

@@ -60,6 +60,9 @@ struct Command {
   double v_entry_max_mm_s = 0;
   bool exact_stop = false;
   double v_end_mm_s = 0;
+  // Starting from an exact stop right after moving, wait one cycle at
+  // standstill first (the planner decides it from both blocks' directions).
+  bool settle_after_stop = true;
   // spindle couplings (feed_link.hpp): a per-cycle limit of the path speed,
   // the spindle following the path (tapping), and G96 (modal, every block)
   FeedLink feed_link{};
