@@ -4,12 +4,15 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 
 #include "commands.hpp"
+#include "nck/core/edit_distance.hpp"
 #include "nck/core/diagnostic.hpp"
 #include "run_command.hpp"
 
@@ -24,6 +27,47 @@ bool stdout_written() {
   std::fprintf(stderr, "nck: error %u: cannot write to stdout: %s\n", number(ErrorId::AppOutputFile),
                std::strerror(errno != 0 ? errno : EIO));
   return false;
+}
+
+// The known word nearest to `word`, if it is a plausible typo of it.
+std::string nearest(const std::string& word, const std::vector<std::string>& known) {
+  std::string best;
+  std::size_t best_d = std::max<std::size_t>(2, word.size() / 3) + 1;  // at most a third of it wrong
+  for (const std::string& k : known) {
+    const std::size_t d = edit_distance(word, k, best_d);
+    if (d < best_d) best_d = d, best = k;
+  }
+  return best;
+}
+
+// A hint for a mistyped subcommand or option (" (did you mean ...?)"), else "".
+std::string did_you_mean(const CLI::App& app, int argc, char** argv) {
+  if (argc < 2) return {};
+  std::vector<std::string> commands;
+  const CLI::App* sub = nullptr;
+  for (const CLI::App* c : app.get_subcommands([](const CLI::App*) { return true; })) {
+    commands.push_back(c->get_name());
+    if (c->get_name() == argv[1]) sub = c;
+  }
+  const std::string first = argv[1];
+  if (first.rfind('-', 0) != 0 && !sub) {
+    const std::string guess = nearest(first, commands);
+    return guess.empty() ? fmt::format(": '{}' is not one of {}", first, fmt::join(commands, ", "))
+                         : fmt::format(": '{}' is not one (did you mean '{}'?)", first, guess);
+  }
+  if (!sub) return {};
+  std::vector<std::string> options;
+  for (const CLI::Option* o : sub->get_options())
+    for (const std::string& n : o->get_lnames()) options.push_back("--" + n);
+  for (int i = 2; i < argc; ++i) {
+    std::string arg = argv[i];
+    if (arg.rfind("--", 0) != 0) continue;
+    arg = arg.substr(0, arg.find('='));
+    if (std::find(options.begin(), options.end(), arg) != options.end()) continue;
+    const std::string guess = nearest(arg, options);
+    if (!guess.empty()) return fmt::format(" (did you mean '{}'?)", guess);
+  }
+  return {};
 }
 
 }  // namespace
@@ -90,7 +134,7 @@ int main_cli(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    fmt::print(stderr, "nck: error 940001: {}\nRun 'nck --help' for usage.\n", e.what());
+    fmt::print(stderr, "nck: error 940001: {}{}\nRun 'nck --help' for usage.\n", e.what(), did_you_mean(app, argc, argv));
     return 2;
   }
   int code = 2;

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <vector>
 
+#include "nck/core/edit_distance.hpp"
 #include "nck/config/machine.hpp"
 #include "registry_internal.hpp"
 
@@ -51,29 +52,6 @@ const std::vector<ParamInfo>& table() {
     return v;
   }();
   return all;
-}
-
-// Levenshtein distance, or any value >= `bound` once it is certain to reach
-// it (a row's minimum never falls again): the did-you-mean search only needs
-// to beat its best so far, which keeps long unknown keys cheap. `row` is
-// scratch space reused across calls.
-std::size_t edit_distance(std::string_view a, std::string_view b, std::vector<std::size_t>& row,
-                          std::size_t bound = static_cast<std::size_t>(-1)) {
-  row.resize(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diag = row[0];
-    row[0] = i;
-    std::size_t row_min = row[0];
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0u : 1u)});
-      row_min = std::min(row_min, row[j]);
-      diag = up;
-    }
-    if (row_min >= bound) return bound;
-  }
-  return row[b.size()];
 }
 
 bool replace_prefix(std::string& s, std::string_view from, std::string_view to) {
@@ -134,11 +112,9 @@ const ParamInfo* find_parameter_by_id(ListKind list, std::string_view id) {
 std::string_view nearest_key(ListKind list, std::string_view pattern) {
   std::string_view best;
   std::size_t best_d = static_cast<std::size_t>(-1);
-  std::vector<std::size_t> row;
-  pattern = pattern.substr(0, 100);  // bounded work for absurd keys (the longest key is shorter)
   for (const auto& p : table()) {
     if (p.list != list) continue;
-    std::size_t d = edit_distance(pattern, p.key, row, best_d);
+    std::size_t d = edit_distance(pattern, p.key, best_d);
     if (d < best_d) best_d = d, best = p.key;
   }
   return best;

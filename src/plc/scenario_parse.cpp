@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "nck/core/edit_distance.hpp"
 #include "nck/plc/scenario.hpp"
 #include "scenario_text.hpp"
 
@@ -139,7 +140,7 @@ bool LineParser::parse_action(ScenarioAction& a) {
   std::string_view nearest = kActions[0].word;
   std::size_t best = SIZE_MAX;
   for (const auto& s : kActions) {
-    std::size_t d = detail::edit_distance(t.text, s.word);
+    std::size_t d = edit_distance(t.text, s.word, best);
     if (d < best) best = d, nearest = s.word;
   }
   return fail(ErrorId::PlcScenarioUnknownAction, t.column,
