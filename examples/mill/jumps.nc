@@ -9,7 +9,7 @@ N10 G17 G90 G71
 N20 G0 X0 Y0 Z10
 N30 $GOTO N50            ; forward: N40 never runs
 N40 G0 X99
-N50: G1 X10 F3000
+N50: G1 X10 F1000
 ; backward loop: three passes, 5 mm further in Y each
 N60: V.L.PASS = V.L.PASS + 1
 N70 G1 Y[5 * V.L.PASS]
