@@ -120,5 +120,14 @@ TEST(GotoRun, JumpErrorsCarryTheirIds) {
       << r.output;
 }
 
+TEST(GotoRun, EndlessJumpLoopEndsWithTheLoopBudget920042) {
+  // No motion in the loop: the decoder alone spins; the run-wide budget of
+  // 10,000,000 loop iterations (backward jumps count) ends it (about 4 s).
+  CliResult r;
+  auto e = errors_of("goto-endless", "N5 G0 X1\nP1 = 0\nN10: P1 = P1 + 1\nN20 $GOTO N10\nN30 M30\n", r);
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_EQ(e, (std::vector<std::pair<int, int>>{{920042, 4}})) << r.output;
+}
+
 }  // namespace
 }  // namespace nck::app
