@@ -68,7 +68,13 @@ Kw block_keyword(Cursor& c) {
     c.skip_blanks();
   }
   if (!c.match('$')) return Kw::none;
-  return keyword_of(c.read_ident());
+  Kw k = keyword_of(c.read_ident());
+  if (k == Kw::if_) {  // "$IF cond $GOTO N20" opens no structure
+    Cursor rest = c;
+    while (!rest.at_end())
+      if (rest.get() == '$' && rest.match_keyword("GOTO")) return Kw::goto_;
+  }
+  return k;
 }
 
 }  // namespace
@@ -119,12 +125,23 @@ struct Flow {
     return false;
   }
 
-  bool condition(Cursor& c, double& v) {
+  // `then_goto` (only $IF passes it): "$IF cond $GOTO target" in one block;
+  // `c` is then left after the $GOTO keyword.
+  bool condition(Cursor& c, double& v, bool* then_goto = nullptr) {
     c.skip_spaces();
     if (c.at_end()) return d.err.fail(ErrorId::NcExprSyntax, c.pos, "condition expected");
     if (!eval_expr(c, d.x, v)) return false;
     c.skip_spaces();
-    if (c.peek() == '$') return d.err.fail(ErrorId::NcUnsupported, c.pos, "$GOTO is not supported by nck");
+    if (then_goto && c.peek() == '$') {
+      Cursor g{c.s, c.pos + 1};
+      if (g.match_keyword("GOTO")) {
+        c = g;
+        *then_goto = true;
+        return true;
+      }
+    }
+    if (c.peek() == '$')
+      return d.err.fail(ErrorId::NcControlStructure, c.pos, "only $GOTO may follow an $IF condition in its block");
     if (!c.rest_empty())
       return d.err.fail(ErrorId::NcExprSyntax, c.pos, "unexpected text after the condition");
     return true;
@@ -300,7 +317,9 @@ struct Flow {
     switch (k) {
       case Kw::if_: {
         double v = 0;
-        if (!condition(c, v)) return Outcome::error;
+        bool then_goto = false;
+        if (!condition(c, v, &then_goto)) return Outcome::error;
+        if (then_goto) return v != 0 ? d.go_to(c, pos) : Outcome::nothing;  // no $ENDIF follows
         if (v != 0) {
           ctl.push_back(mk(CtlKind::if_, frame().reader->block_pos()));
           return Outcome::nothing;
@@ -355,8 +374,7 @@ struct Flow {
         if (!skip({Kw::enddo}, kk, cc)) return Outcome::error;
         return enddo(cc, 0);
       }
-      case Kw::goto_:
-        return fail(ErrorId::NcUnsupported, pos, "$GOTO is not supported by nck; use $IF / loops");
+      case Kw::goto_: return d.go_to(c, pos);
       default:
         return fail(ErrorId::NcUnknownControl, pos, fmt::format("${} is not a $ statement", id));
     }

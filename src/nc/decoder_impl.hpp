@@ -2,6 +2,7 @@
 // Internal state of nck::nc::Decoder, shared by decoder.cpp (block loop),
 // control_flow.cpp ($ statements), subprograms.cpp (calls, returns,
 // sections) and var_declarations.cpp (#VAR).
+#include <map>
 #include <memory>
 #include <set>
 #include <tuple>
@@ -34,6 +35,8 @@ struct Frame {
   std::shared_ptr<const std::string> mem;  // cached file text, if any
   std::shared_ptr<const ProgramIndex> index;
   std::vector<Ctl> ctl;
+  SourcePos start;  // the program's or subroutine's first block ($GOTO searches from here)
+  std::map<std::string, SourcePos> labels;  // $GOTO labels found so far ("N20", "[NAME]"), capped
 };
 
 // What processing one block led to.
@@ -86,6 +89,8 @@ struct Decoder::Impl {
   detail::Outcome control(detail::Cursor& c);
   // At M30/M2: are the open structures closed further down the file?
   bool open_structures_closed_later();
+  // goto_jump.cpp: $GOTO N<expr> / $GOTO [NAME]; `c` after the keyword
+  detail::Outcome go_to(detail::Cursor& c, std::size_t pos);
   // subprograms.cpp
   bool open_main(const std::filesystem::path& p);
   detail::Outcome call(detail::Cursor& c, bool local);

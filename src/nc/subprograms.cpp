@@ -43,6 +43,7 @@ bool Decoder::Impl::open_main(const std::filesystem::path& p) {
     return false;
   }
   if (const Section* m = f.index->main()) f.reader->seek(m->body);
+  f.start = f.reader->next_pos();
   frames.push_back(std::move(f));
   return true;
 }
@@ -99,6 +100,7 @@ Outcome Decoder::Impl::call(Cursor& c, bool local) {
     f.file_id = file_id(p.string());
     if (const Section* m = f.index->main()) f.reader->seek(m->body);
   }
+  f.start = f.reader->next_pos();
   frames.push_back(std::move(f));
   vars.push_scope();
   return Outcome::nothing;
