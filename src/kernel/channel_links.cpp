@@ -125,9 +125,9 @@ void Channel::follow_css(ChannelContext& ctx) noexcept {
   if (!css_.active || !u || css_.face_axis < 0) return;
   const spindle::SpindleStatus& st = u->axis.status();
   if (st.mode != spindle::SpindleMode::rotate) return;
-  const double r_mm = machine_position()[static_cast<std::size_t>(css_.face_axis)] - css_.centre_mm;
-  const double n = css_speed_rpm(css_.v_m_min, r_mm, css_.max_rpm,
-                                 vb_max_rpm(*u));
+  const auto j = static_cast<std::size_t>(css_.face_axis);
+  const double r_mm = pos_[j] + manual_in_force_mm_[j] - css_.centre_mm;  // the machine set point
+  const double n = css_speed_rpm(css_.v_m_min, r_mm, css_.max_rpm, vb_max_rpm(*u));
   const double dir = u->rotation_dir < 0 ? -1.0 : 1.0;
   u->speed_law = true;
   if (dir * n != st.programmed_rpm) (void)u->axis.rotate(dir * n);

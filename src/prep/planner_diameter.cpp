@@ -9,11 +9,6 @@
 #include "nck/prep/planner.hpp"
 
 namespace nck::prep {
-namespace {
-
-constexpr const char* kMainAxisNames[] = {"X", "Y", "Z"};
-
-}  // namespace
 
 // setup: which axes take diameters, per dimension mode.
 void Planner::setup_diameter_axes(const config::Machine& machine) {

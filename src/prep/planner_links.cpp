@@ -113,13 +113,12 @@ std::optional<Command> Planner::thread_link(const nc::Block& b, const motion::Ax
                                             FeedLink& f) {
   for (int i = 0; i < 3; ++i)
     if (b.ijk[static_cast<std::size_t>(i)]) thread_axis_ = i;
-  static constexpr const char* kNames[] = {"X", "Y", "Z"};
-  const int ax = axis_named(kNames[thread_axis_]);
+  const int ax = axis_named(kMainAxisNames[thread_axis_]);
   const double travel = ax >= 0 ? std::fabs(target[static_cast<std::size_t>(ax)] - start[static_cast<std::size_t>(ax)]) : 0;
   if (ax < 0 || !(travel > 1e-9))
     return error_command(ErrorId::KernelThreadPitchAxisMissing,
                          fmt::format("G33 pitch {} belongs to {}, which {}", "IJK"[thread_axis_],
-                                     kNames[thread_axis_], ax < 0 ? "the channel does not have" : "does not move"),
+                                     kMainAxisNames[thread_axis_], ax < 0 ? "the channel does not have" : "does not move"),
                          b.file_id, b.line);
   f.kind = FeedLinkKind::thread;
   f.mm_per_rev = b.modal.thread_pitch_mm * length_mm / travel;

@@ -9,10 +9,6 @@
 namespace nck::prep {
 namespace {
 
-// The circle plane's axes are found by name: the main axis names X Y Z in
-// the order of plane_axes' indices (which are also the I J K indices).
-constexpr const char* kMainAxisNames[] = {"X", "Y", "Z"};
-
 ErrorId arc_error_id(motion::ArcError e) {
   switch (e) {
     case motion::ArcError::radius_too_small: return ErrorId::KernelArcRadiusTooSmall;

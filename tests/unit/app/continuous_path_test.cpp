@@ -58,11 +58,10 @@ struct PathRun {
   double end_t = 0;
 };
 
-PathRun run_mill(const std::string& name, const std::string& program) {
-  const auto dir = temp_dir(name);
-  std::ofstream(dir / "p.nc") << program;
+// Runs a program file on the mill with trace, events and final state.
+PathRun run_mill_file(const std::filesystem::path& program, const std::filesystem::path& dir) {
   PathRun r;
-  r.cli = run_nck("run " + root() + "/examples/mill " + (dir / "p.nc").string() + " --trace " + (dir / "t.csv").string() +
+  r.cli = run_nck("run " + root() + "/examples/mill " + program.string() + " --trace " + (dir / "t.csv").string() +
                   " --events " + (dir / "e.jsonl").string() + " --final " + (dir / "f.json").string());
   r.trace = read_trace(dir / "t.csv");
   for (const json& e : read_jsonl(dir / "e.jsonl"))
@@ -71,16 +70,15 @@ PathRun run_mill(const std::string& name, const std::string& program) {
   return r;
 }
 
+PathRun run_mill(const std::string& name, const std::string& program) {
+  const auto dir = temp_dir(name);
+  std::ofstream(dir / "p.nc") << program;
+  return run_mill_file(dir / "p.nc", dir);
+}
+
 TEST(ContinuousPath, ContourKeepsItsSpeedThroughTangentTransitions) {
-  const auto dir = temp_dir("cp-contour");
-  const std::string mill = root() + "/examples/mill";
-  PathRun r;
-  r.cli = run_nck("run " + mill + " " + mill + "/contour.nc --trace " + (dir / "t.csv").string() + " --events " +
-                  (dir / "e.jsonl").string());
+  const PathRun r = run_mill_file(root() + "/examples/mill/contour.nc", temp_dir("cp-contour"));
   ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
-  r.trace = read_trace(dir / "t.csv");
-  for (const json& e : read_jsonl(dir / "e.jsonl"))
-    if (e["ev"] == "block" && !e["n"].is_null()) r.block_t[e["n"].get<long>()] = e["t"];
   // The pocket N80..N150 at F1200 (20 mm/s): lines and corner arcs meet
   // tangentially, so every transition is passed at the feed.
   for (long n : {90, 100, 110, 120, 130, 140, 150}) {

@@ -4,13 +4,6 @@
 namespace nck::nc::test {
 namespace {
 
-std::vector<double> xs(const Decoded& d) {
-  std::vector<double> r;
-  for (const auto& b : d.blocks)
-    if (b.axes[0]) r.push_back(*b.axes[0]);
-  return r;
-}
-
 TEST(NcControlFlow, IfElseIfElse) {
   auto d = decode(
       "P1 = 2\n"

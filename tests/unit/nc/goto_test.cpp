@@ -5,13 +5,6 @@
 namespace nck::nc::test {
 namespace {
 
-std::vector<double> xs(const Decoded& d) {
-  std::vector<double> r;
-  for (const auto& b : d.blocks)
-    if (b.axes[0]) r.push_back(*b.axes[0]);
-  return r;
-}
-
 std::vector<std::int64_t> ns(const Decoded& d) {
   std::vector<std::int64_t> r;
   for (const auto& b : d.blocks)

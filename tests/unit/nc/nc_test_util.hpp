@@ -87,4 +87,12 @@ inline std::string dump(const Decoded& d) {
   return s;
 }
 
+// The X word of every decoded block that has one, in order.
+inline std::vector<double> xs(const Decoded& d) {
+  std::vector<double> r;
+  for (const auto& b : d.blocks)
+    if (b.axes[0]) r.push_back(*b.axes[0]);
+  return r;
+}
+
 }  // namespace nck::nc::test
