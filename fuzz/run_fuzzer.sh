@@ -28,8 +28,9 @@ mkdir -p "$corpus"
 log="$seeds.log"
 trap 'rm -rf "$seeds" "$log"' EXIT
 # -timeout: seconds one input may take before it counts as a hang (NCK_FUZZ_INPUT_TIMEOUT,
-# default 60 so that CI does not trip over the known slow inputs of fuzz/findings;
-# use 10 for long runs); -rss_limit_mb: memory per input.
+# default 60 so that a loaded CI machine does not report a slow input; use 10 on an
+# idle machine); -rss_limit_mb: memory per input.
+cp -t "$seeds" --backup=numbered "$root/fuzz/findings/$kind"/*
 rc=0
 "$fuzzer" -max_total_time="$seconds" -timeout="${NCK_FUZZ_INPUT_TIMEOUT:-60}" -rss_limit_mb=2048 -max_len=8192 \
   -dict="$dict" -print_final_stats=1 -artifact_prefix="$corpus/" "$corpus" "$seeds" >"$log" 2>&1 || rc=$?
