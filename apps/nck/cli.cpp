@@ -8,8 +8,11 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 
 #include "commands.hpp"
 #include "nck/core/edit_distance.hpp"
@@ -70,6 +73,27 @@ std::string did_you_mean(const CLI::App& app, int argc, char** argv) {
   return {};
 }
 
+// A number option's check, with messages a user reads at a glance ("must be
+// >= 1", "'abc' is not a number") instead of CLI11's range of doubles.
+CLI::Validator number_at_least(double min, bool whole) {
+  return CLI::Validator(
+      [min, whole](std::string& text) -> std::string {
+        double value = 0;
+        const char* end = text.data() + text.size();
+        if (auto [p, ec] = std::from_chars(text.data(), end, value); ec == std::errc::result_out_of_range)
+          return fmt::format("'{}' is too large", text);
+        else if (ec != std::errc{} || p != end || !std::isfinite(value))
+          return fmt::format("'{}' is not a number", text);
+        if (value < min) return fmt::format("must be ≥ {}, not {}", min, text);
+        // Whole-number options land in 32- or 64-bit counters: stay far below both.
+        constexpr auto kMaxWhole = std::numeric_limits<std::uint32_t>::max();
+        if (whole && value > kMaxWhole) return fmt::format("'{}' is too large (at most {})", text, kMaxWhole);
+        if (whole && value != std::floor(value)) return fmt::format("'{}' is not a whole number", text);
+        return {};
+      },
+      whole ? fmt::format("INTEGER >= {}", min) : fmt::format("NUMBER >= {}", min));
+}
+
 }  // namespace
 
 int main_cli(int argc, char** argv) {
@@ -88,16 +112,16 @@ int main_cli(int argc, char** argv) {
       ->required();
   runc->add_option("--events", run.events, "write events as JSON lines to FILE");
   runc->add_option("--trace", run.trace, "write set points as CSV to FILE");
-  runc->add_option("--trace-every", run.trace_every, "trace every Nth cycle")
-      ->check(CLI::PositiveNumber);
+  runc->add_option("--trace-every", run.trace_every, "trace every Nth cycle")->check(number_at_least(1, true));
   runc->add_option("--final", run.final_state, "write the final state as JSON to FILE");
   runc->add_option("--plc", run.plc, "timed HLI actions (docs/plc-scenario.md)");
   runc->add_option("--report", run.report, "write a self-contained HTML report with plots to FILE");
   runc->add_option("--max-time", run.max_time_s, "simulated-time limit in seconds")
-      ->check(CLI::PositiveNumber);
-  runc->add_option("--max-wall", run.max_wall_s, "wall-clock limit in seconds")->check(CLI::PositiveNumber);
+      ->check(number_at_least(0.001, false));
+  runc->add_option("--max-wall", run.max_wall_s, "wall-clock limit in seconds")->check(number_at_least(0.001, false));
   runc->add_flag("--realtime", run.realtime, "pace the cycles to the wall clock");
-  runc->add_option("--clamp-index", run.clamp_index, "clamp-offset group pzv_grp[N] at program start");
+  runc->add_option("--clamp-index", run.clamp_index, "clamp-offset group pzv_grp[N] at program start")
+      ->check(number_at_least(0, true));
   runc->add_flag("!--no-progress", run.progress, "no progress display on the terminal");
 
   ParseOptions parse;
@@ -105,19 +129,28 @@ int main_cli(int argc, char** argv) {
   parsec->add_option("PROGRAM", parse.program, "NC program")->required();
   parsec->add_flag("--json", parse.json, "print the decoded blocks as JSON lines");
   parsec->add_option("--machine", parse.machine, "take axis and spindle names from this machine");
-  parsec->add_option("--channel", parse.channel, "channel of --machine (1-based)")
-      ->check(CLI::PositiveNumber);
+  parsec->add_option("--channel", parse.channel, "channel of --machine (1-based)")->check(number_at_least(1, true));
 
   FitOptions fit;
   auto* fitc = app.add_subcommand("fit-curve", "Coefficients b1 b2 b3 of a spindle acceleration curve");
   fitc->add_option("TYPE", fit.type, "hyperbola or polynomial")
       ->required()
       ->check(CLI::IsMember({"hyperbola", "polynomial"}));
-  fitc->add_option("--n-grenz", fit.n_grenz_deg_s, "limit speed n_grenz in deg/s")->required();
+  fitc->add_option("--n-grenz", fit.n_grenz_deg_s, "limit speed n_grenz in deg/s")
+      ->required()
+      ->check(number_at_least(0, false));
   fitc->add_option("--a-konst", fit.a_konst_deg_s2, "constant acceleration below n_grenz in deg/s^2")
-      ->required();
+      ->required()
+      ->check(number_at_least(0, false));
   fitc->add_option("--point", fit.points, "speed,acceleration above n_grenz (deg/s,deg/s^2); repeat")
       ->required();
+
+  InitOptions init;
+  auto* initc = app.add_subcommand("init", "Write a machine folder to start from (the milling or lathe example)");
+  initc->add_option("DIR", init.folder, "new or empty folder")->required();
+  bool mill_flag = false;
+  auto* mill = initc->add_flag("--mill", mill_flag, "a 3-axis milling machine with two spindles (the default)");
+  initc->add_flag("--lathe", init.lathe, "a 2-axis lathe with a 3-stage main spindle")->excludes(mill);
 
   std::string lookup;
   auto* params = app.add_subcommand("params", "Print every accepted list key as a markdown table");
@@ -145,6 +178,7 @@ int main_cli(int argc, char** argv) {
     if (*fitc) code = fit_curve(fit);
     if (*params) code = print_parameters(lookup);
     if (*errors) code = print_errors(lookup);
+    if (*initc) code = init_machine(init);
   } catch (const std::exception& e) {  // never an abort: a diagnostic (if stderr takes it) and exit 2
     std::fprintf(stderr, "nck: error %u: %s\n", number(ErrorId::AppInternalError), e.what());
     return 2;

@@ -25,6 +25,14 @@ struct FitOptions {
 // nck fit-curve: prints b1 b2 b3; 0 ok, 2 bad input.
 int fit_curve(const FitOptions& opt);
 
+struct InitOptions {
+  std::string folder;
+  bool lathe = false;  // else the milling machine
+};
+// nck init DIR: writes a working machine folder (the mill or lathe example's
+// lists and one program); 0 ok, 2 when DIR is not new or empty or cannot be written.
+int init_machine(const InitOptions& opt);
+
 // docs/parameters.md / docs/errors.md, or only the table rows matching
 // `lookup` (case-insensitive; exit 1 when none does).
 int print_parameters(const std::string& lookup = "");

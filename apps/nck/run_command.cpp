@@ -19,6 +19,7 @@
 #include "nck/plc/scenario.hpp"
 #include "nck/sim/dry_run.hpp"
 #include "output_writers.hpp"
+#include "progress.hpp"
 #include "run_outputs.hpp"
 
 namespace nck::app {
@@ -31,18 +32,20 @@ bool print_load_diagnostics(const config::LoadResult& r) {
 
 // Decoder warnings appear when decoded; errors travel through the channel
 // queue so they are raised when execution reaches them.
-void report_new_warnings(const sim::DryRun& run, double t_s, RunOutputs& out) {
+void report_new_warnings(const sim::DryRun& run, double t_s, RunOutputs& out, Progress& progress) {
   for (std::size_t ch = 0; ch < run.channel_count(); ++ch)
     for (const Diagnostic& d : run.new_warnings(ch)) {
       out.summary.warning();
+      progress.clear();
       fmt::print(stderr, "{}\n", format(d));
       if (out.wants_events()) out.event(EventWriter::line(t_s, ch, d), false);
     }
 }
 
 // A cycle whose events did not all fit its output: never lost silently.
-void report_dropped_events(const kernel::TickOutput& o, const RunNames& names, RunOutputs& out) {
+void report_dropped_events(const kernel::TickOutput& o, const RunNames& names, RunOutputs& out, Progress& progress) {
   if (o.events_dropped == 0) return;
+  progress.clear();
   kernel::Event e;
   e.t_s = o.t_s;
   e.kind = kernel::EventKind::warning;
@@ -54,38 +57,19 @@ void report_dropped_events(const kernel::TickOutput& o, const RunNames& names, R
   if (out.wants_events()) out.event(EventWriter::line(e, names), false);
 }
 
-void record_events(const kernel::TickOutput& o, const RunNames& names, RunOutputs& out) {
+void record_events(const kernel::TickOutput& o, const RunNames& names, RunOutputs& out, Progress& progress) {
+  progress.take(o);
   for (const kernel::Event& e : o.events) {
     out.summary.take(e);
     if (out.wants_events()) out.event(EventWriter::line(e, names), e.kind == kernel::EventKind::error);
     if (e.kind != kernel::EventKind::error) continue;
     const std::size_t ch = e.channel - 1u;
     FinalError fe{number(e.id), e.channel, e.line, names.file(ch, e.file_id), names.text(e)};
+    progress.clear();
     fmt::print(stderr, "{}\n", format(Diagnostic{e.id, Severity::error, SourceLoc{fe.file, fe.line, 0}, fe.msg}));
     out.errors.push_back(std::move(fe));
   }
 }
-
-class Progress {
- public:
-  explicit Progress(bool enabled) : enabled_(enabled && isatty(fileno(stderr))) {}
-  void update(double t_s) {
-    if (!enabled_) return;
-    auto now = std::chrono::steady_clock::now();
-    if (now - last_ < std::chrono::milliseconds(200)) return;
-    last_ = now;
-    fmt::print(stderr, "\rnck: simulated {:.1f} s", t_s);
-    shown_ = true;
-  }
-  ~Progress() {
-    if (shown_) fmt::print(stderr, "\r\033[K");
-  }
-
- private:
-  bool enabled_;
-  bool shown_ = false;
-  std::chrono::steady_clock::time_point last_{};
-};
 
 // The --plc scenario; its diagnostics go to stderr, errors make it unusable.
 std::optional<plc::Scenario> load_scenario(const std::string& path, const config::Machine& m) {
@@ -136,16 +120,16 @@ class StopSignals {
 std::optional<kernel::EndReason> run_loop(sim::DryRun& run, const RunOptions& opt, const RunNames& names,
                                           RunOutputs& out) {
   auto o = std::make_unique<kernel::TickOutput>();
-  Progress progress(opt.progress);
+  Progress progress(opt.progress, opt.programs);
   const auto wall_start = std::chrono::steady_clock::now();
   const auto wall_limit = std::chrono::duration<double>(opt.max_wall_s);
   for (std::uint64_t cycle = 0;; ++cycle) {
     const double t_s = run.time_s();
     run.prepare();
-    report_new_warnings(run, t_s, out);
+    report_new_warnings(run, t_s, out, progress);
     run.cycle(*o);
-    record_events(*o, names, out);
-    report_dropped_events(*o, names, out);
+    record_events(*o, names, out, progress);
+    report_dropped_events(*o, names, out, progress);
     out.trace.write(run.kernel().cycles() - 1, *o);
     out.report.sample(*o);
     if (run.done()) return std::nullopt;

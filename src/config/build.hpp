@@ -31,6 +31,11 @@ void add_c_axes(Machine& m);
 void cross_check(const ParamList& list, std::string_view key_a, std::string_view key_b, bool ok,
                  std::string message, Diagnostics& diags);
 
+// "key (value unit)" in the units the list file uses, for relation messages:
+// the value as written, or the default converted back from `internal`. A unit
+// written for two axis kinds ("µm/s · 0.001°/s") is cut to part `unit_part`.
+std::string listed(const ParamList& list, std::string_view key, double internal, std::size_t unit_part = 0);
+
 // Gap-free numbering 0..n-1 of `indices`; reports 910025 at `where` otherwise.
 bool check_no_gaps(const std::vector<std::uint32_t>& indices, SourceLoc where, std::string_view what,
                    Diagnostics& diags);

@@ -63,16 +63,21 @@ void check_gear(const ParamList& l, const AxisConfig& a, std::size_t g, Diagnost
   const GearStage& s = a.gears[g];
   auto k = [g](std::string_view r) { return gkey(g, r); };
   auto amax = k("dynamik.a_max");
+  // Values in the list's own units; linear axes read the first unit of "µm/s · 0.001°/s".
+  const std::size_t unit_part = a.kind == AxisKind::translatory ? 0 : 1;
+  auto show = [&](const std::string& key, double v) { return listed(l, key, v, unit_part); };
   cross_check(l, k("vb_eilgang"), k("dynamik.vb_max"), s.vb_eilgang <= s.vb_max,
-              fmt::format("{} ({}) must not exceed {} ({})", k("vb_eilgang"), s.vb_eilgang, k("dynamik.vb_max"), s.vb_max), d);
+              fmt::format("{} must not exceed {}", show(k("vb_eilgang"), s.vb_eilgang),
+                          show(k("dynamik.vb_max"), s.vb_max)), d);
   for (auto [key, v] : {std::pair{k("slope_profil.a_beschl"), s.a_beschl}, {k("slope_profil.a_brems"), s.a_brems},
                         {k("slope_profil.a_grenz"), s.a_grenz}, {k("beschl_kennlinie.a_max"), s.curve.a_max_deg_s2}})
-    cross_check(l, key, amax, v <= s.a_max, fmt::format("{} ({}) must not exceed {} ({})", key, v, amax, s.a_max), d);
+    cross_check(l, key, amax, v <= s.a_max,
+                fmt::format("{} must not exceed {}", show(key, v), show(amax, s.a_max)), d);
   cross_check(l, k("dynamik.a_emergency"), amax, s.a_emergency <= 2 * s.a_max,
               fmt::format("{} must not exceed 2 x {}", k("dynamik.a_emergency"), amax), d);
   if (a.is_modulo())
     cross_check(l, k("modulou"), k("moduloo"), s.modulou < s.moduloo,
-                fmt::format("{} ({}) must be below {} ({})", k("modulou"), s.modulou, k("moduloo"), s.moduloo), d);
+                fmt::format("{} must be below {}", show(k("modulou"), s.modulou), show(k("moduloo"), s.moduloo)), d);
   const AccelCurve& c = s.curve;
   auto ck = [&](std::string_view r) { return k(fmt::format("beschl_kennlinie.{}", r)); };
   if (c.type == 1 || c.type == 2)
@@ -82,9 +87,10 @@ void check_gear(const ParamList& l, const AxisConfig& a, std::size_t g, Diagnost
     cross_check(l, ck("typ"), ck("a_max"), c.a_max_deg_s2 > 0,
                 fmt::format("curve type 3 needs {} > 0", ck("a_max")), d);
     cross_check(l, ck("n1"), ck("n2"), c.n1_deg_s <= c.n2_deg_s,
-                fmt::format("{} must not exceed {}", ck("n1"), ck("n2")), d);
+                fmt::format("{} must not exceed {}", show(ck("n1"), c.n1_deg_s), show(ck("n2"), c.n2_deg_s)), d);
     cross_check(l, ck("n2"), k("dynamik.vb_max"), c.n2_deg_s <= s.vb_max,
-                fmt::format("{} must not exceed {}", ck("n2"), k("dynamik.vb_max")), d);
+                fmt::format("{} must not exceed {}", show(ck("n2"), c.n2_deg_s), show(k("dynamik.vb_max"), s.vb_max)),
+                d);
   }
 }
 

@@ -38,7 +38,8 @@ void read_spindle_ranges(const ParamList& l, std::uint32_t i, ChannelSpindle& s,
     auto hi = fmt::format("spindel[{}].range_table[{}].max_speed", i, j);
     s.range_table[j] = SpindleRange{l.num(lo, 0), l.num(hi, 0)};
     cross_check(l, lo, hi, s.range_table[j].min_speed_rpm <= s.range_table[j].max_speed_rpm,
-                fmt::format("{} must not exceed {}", lo, hi), d);
+                fmt::format("{} must not exceed {}", listed(l, lo, s.range_table[j].min_speed_rpm),
+                            listed(l, hi, s.range_table[j].max_speed_rpm)), d);
   }
   s.range_way_param = l.u32(fmt::format("spindel[{}].range_way", i), 0);
   for (std::size_t j = 0; j < kMaxGearStages; ++j)

@@ -1,5 +1,6 @@
 // Plausibility checks across lists (SPEC 3.1): axis lists against the
 // channels' use of logical axis numbers, offsets against channel axes.
+#include <cctype>
 #include <fmt/format.h>
 #include <map>
 
@@ -102,6 +103,30 @@ void cross_check(const ParamList& l, std::string_view a, std::string_view b, boo
   if (!va && !vb) return;
   const ParamValue* at = !va ? vb : !vb ? va : (va->loc.line >= vb->loc.line ? va : vb);
   d.add(ErrorId::ConfigCrossRange, at->loc, std::move(message));
+}
+
+std::string listed(const ParamList& l, std::string_view key, double internal, std::size_t unit_part) {
+  const ParamValue* v = l.find(key);
+  std::string pattern;  // "getriebe[0].vb_max" -> "getriebe[].vb_max"
+  for (std::size_t i = 0; i < key.size(); ++i) {
+    pattern += key[i];
+    if (key[i] == '[')
+      while (i + 1 < key.size() && key[i + 1] != ']') ++i;
+  }
+  const ParamInfo* info = v ? v->info : find_parameter(l.kind(), pattern);
+  if (!info || info->scale == 0) return fmt::format("{} ({})", key, internal);
+  std::string_view unit = info->list_unit;
+  for (std::size_t part = 0; part < unit_part; ++part) {
+    const std::size_t dot = unit.find(" · ");
+    if (dot == std::string_view::npos) break;
+    unit.remove_prefix(dot + std::string_view(" · ").size());
+  }
+  unit = unit.substr(0, unit.find(" · "));
+  const double raw = v ? v->raw : internal / info->scale;
+  if (unit.empty()) return fmt::format("{} ({})", key, raw);
+  // "0.001°/s" is a unit with a factor: 5000 of them, not "5000 0.001°/s".
+  const bool factor = std::isdigit(static_cast<unsigned char>(unit.front())) != 0;
+  return fmt::format("{} ({}{}{})", key, raw, factor ? " × " : " ", unit);
 }
 
 bool check_no_gaps(const std::vector<std::uint32_t>& indices, SourceLoc where, std::string_view what,

@@ -79,6 +79,23 @@ bool parse_line(std::string_view raw, std::uint32_t line_no, const std::string& 
   return true;
 }
 
+// Lines after 'Ende' are ignored, as on the control; a forgotten 'Ende' in the
+// middle of a list silently drops the rest, so one warning names the first.
+void warn_text_after_end(std::string_view text, std::size_t pos, std::uint32_t end_line_no,
+                         const std::string& file, Diagnostics& diags) {
+  for (std::uint32_t line_no = end_line_no + 1; pos < text.size(); ++line_no) {
+    std::size_t nl = text.find('\n', pos);
+    std::string_view s = trim(text.substr(pos, nl == std::string_view::npos ? text.size() - pos : nl - pos));
+    if (!s.empty() && s.front() != '#' && s.front() != '(' && s.front() != ';') {
+      diags.add(ErrorId::ConfigTextAfterEnd, SourceLoc{file, line_no, 0},
+                fmt::format("'{}' stands after the Ende line {} and is ignored", s.substr(0, 40), end_line_no));
+      return;
+    }
+    if (nl == std::string_view::npos) return;
+    pos = nl + 1;
+  }
+}
+
 }  // namespace
 
 ListText read_list_text(std::string_view text, std::string file, Diagnostics& diags) {
@@ -99,9 +116,10 @@ ListText read_list_text(std::string_view text, std::string file, Diagnostics& di
                 fmt::format("{} errors so far; the rest of the file is ignored", local.items().size()));
       break;
     }
+    pos = nl == std::string_view::npos ? text.size() : nl + 1;
     if (nl == std::string_view::npos) break;
-    pos = nl + 1;
   }
+  if (end_seen) warn_text_after_end(text, pos, line_no, out.file, local);
   if (out.lines.empty() && local.empty())  // a truncated or wrong file, most likely: say so
     local.add(ErrorId::ConfigEmptyList, SourceLoc{out.file, 1, 0},
               "the list file has no parameter lines; every parameter keeps its default");

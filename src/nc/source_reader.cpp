@@ -122,7 +122,11 @@ bool SourceReader::read_block(std::size_t max_chars) {
     std::size_t seg_start = text_.size();
     std::uint32_t seg_line = line_;
     std::size_t room = max_chars + 1 > text_.size() ? max_chars + 1 - text_.size() : 0;
-    if (!next_line(room)) return !first;
+    if (!next_line(room)) {
+      // At the end of the file a diagnostic points at its last line, not one past it.
+      if (first && block_pos_.line > 1) --block_pos_.line;
+      return !first;
+    }
     // A UTF-8 byte-order mark at the start of the file is not part of the
     // program (editors on Windows write one); blanks keep the columns.
     if (block_pos_.offset == 0 && first && text_.starts_with("\xEF\xBB\xBF")) text_.replace(0, 3, "   ");

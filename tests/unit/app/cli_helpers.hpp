@@ -23,9 +23,8 @@ struct CliResult {
   std::string output;  // stdout and stderr
 };
 
-// args may carry shell redirections of their own.
-inline CliResult run_nck_raw(const std::string& args) {
-  const std::string cmd = std::string(NCK_BINARY) + " " + args;
+// A shell command line; its stdout (redirect stderr yourself).
+inline CliResult run_shell(const std::string& cmd) {
   CliResult r;
   FILE* p = popen(cmd.c_str(), "r");
   if (!p) return r;
@@ -35,6 +34,9 @@ inline CliResult run_nck_raw(const std::string& args) {
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
 }
+
+// args may carry shell redirections of their own.
+inline CliResult run_nck_raw(const std::string& args) { return run_shell(std::string(NCK_BINARY) + " " + args); }
 
 // stdout and stderr together.
 inline CliResult run_nck(const std::string& args) { return run_nck_raw(args + " 2>&1"); }

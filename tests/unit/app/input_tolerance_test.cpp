@@ -43,6 +43,71 @@ TEST(InputTolerance, MissingProgramEndPointsAtTheLastLine) {
   EXPECT_EQ(r.output.find(":0:"), std::string::npos) << r.output;
 }
 
+// A diagnostic at the end of the file names its last line, never one past it.
+TEST(InputTolerance, UnclosedStructurePointsAtTheLastLine) {
+  const auto dir = temp_dir("unclosed_at_end");
+  std::ofstream(dir / "p.nc") << "N10 G01 X10 F100\n$IF 1\nN20 X20\n";
+  CliResult r = run_nck("parse " + (dir / "p.nc").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("p.nc:3:1: error 920041"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("p.nc:4"), std::string::npos) << r.output;
+}
+
+// Lines after 'Ende' are ignored, with one warning naming the first of them.
+TEST(InputTolerance, TextAfterEndeIsAWarning) {
+  const auto m = patched_example("mill", "after_ende", "zero.lis", "");
+  std::ofstream(m.dir / "zero.lis", std::ios::app) << "# a remark is fine\n\nnp_grp[0].versch[0] 1000\nmore 2\n";
+  const std::size_t ende_line = count_lines(read_file(m.dir / "zero.lis")) - 4;
+  CliResult check = run_nck("check " + m.dir.string());
+  EXPECT_EQ(check.exit_code, 0) << check.output;
+  EXPECT_NE(check.output.find(fmt::format("zero.lis:{}: warning 910030: 'np_grp[0].versch[0] 1000' stands after "
+                                          "the Ende line {}",
+                                          ende_line + 3, ende_line)),
+            std::string::npos)
+      << check.output;
+  EXPECT_NE(check.output.find("0 error(s), 1 warning(s)"), std::string::npos) << check.output;
+}
+
+// A relation between two keys is reported in the units the list file uses.
+TEST(InputTolerance, RelationErrorsInListUnits) {
+  const auto m = patched_example("mill", "relation_units", "x.lis", "getriebe[0].vb_eilgang 900000");
+  CliResult check = run_nck("check " + m.dir.string());
+  EXPECT_EQ(check.exit_code, 1) << check.output;
+  EXPECT_NE(check.output.find("getriebe[0].vb_eilgang (900000 µm/s) must not exceed getriebe[0].dynamik.vb_max "
+                              "(500000 µm/s)"),
+            std::string::npos)
+      << check.output;
+  const auto s = patched_example("mill", "relation_units_deg", "s1.lis", "getriebe[0].vb_eilgang 80000000");
+  check = run_nck("check " + s.dir.string());
+  EXPECT_NE(check.output.find("getriebe[0].vb_eilgang (80000000 × 0.001°/s) must not exceed getriebe[0].dynamik.vb_max "
+                              "(72000000 × 0.001°/s)"),
+            std::string::npos)
+      << check.output;
+}
+
+// Number options say what is wrong in words: the range, not a number, not whole.
+TEST(InputTolerance, NumberOptionsExplainWhatIsWrong) {
+  const std::string run = "run " + root() + "/examples/mill " + root() + "/examples/mill/contour.nc ";
+  struct Case {
+    std::string args, message;
+  } cases[] = {
+      {run + "--trace-every 0", "--trace-every: must be ≥ 1, not 0"},
+      {run + "--trace-every abc", "--trace-every: 'abc' is not a number"},
+      {run + "--trace-every 2.5", "--trace-every: '2.5' is not a whole number"},
+      {run + "--trace-every 99999999999999999999999", "'99999999999999999999999' is too large (at most 4294967295)"},
+      {run + "--max-time -1", "--max-time: must be ≥ 0.001, not -1"},
+      {run + "--max-wall nan", "--max-wall: 'nan' is not a number"},
+      {"parse x.nc --channel 0", "--channel: must be ≥ 1, not 0"},
+  };
+  for (const Case& c : cases) {
+    CliResult r = run_nck(c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.args;
+    EXPECT_NE(r.output.find("940001"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(c.message), std::string::npos) << c.args << "\n" << r.output;
+    EXPECT_EQ(r.output.find("179769313486231570814527423731704356798070567525844996598917476803157"), std::string::npos);
+  }
+}
+
 }  // namespace
 }  // namespace nck::app::testing
 
