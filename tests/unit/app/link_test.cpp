@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fmt/format.h>
 
 #include "spindle_path_helpers.hpp"
 
@@ -63,7 +64,13 @@ TEST_P(SeedPrograms, RunVerbatimAndTurnAllThreeSpindles) {
   EXPECT_LT(s2, s1);
   EXPECT_LT(s1, s3);
   EXPECT_GE(r.line_t(4), s3);
-  for (const std::string s : {"S1", "S2", "S3"}) EXPECT_DOUBLE_EQ(r.rows.back().at(s + ".rpm"), 1000.0) << s;
+  // The program ends once S3 is within 10 % of its speed: S1 and S2 are at
+  // 1000 rpm, S3's set point is still on its ramp (one row = one cycle).
+  const double t_end = r.rows.back().at("t");
+  EXPECT_DOUBLE_EQ(r.rows.back().at("S1.rpm"), 1000.0);
+  EXPECT_DOUBLE_EQ(r.rows.back().at("S2.rpm"), 1000.0);
+  EXPECT_NEAR(r.rows.back().at("S3.rpm"), 10000 * (t_end - t30) / 6, 2.0);
+  EXPECT_GT(r.rows.back().at("S3.rpm"), 900.0);
   int waits = 0;
   for (const json& e : r.of("wait"))
     if (e["line"] == 3 && e["reason"] == "speed_reached") ++waits;
@@ -86,7 +93,8 @@ TEST(Link, OverrideOfOneSpindleDoesNotActOnTheOther) {
     const Row& last = r.rows.back();
     EXPECT_DOUBLE_EQ(last.at("S1.rpm"), who == "S1" ? 500.0 : 1000.0);
     EXPECT_DOUBLE_EQ(last.at("S2.rpm"), who == "S2" ? 500.0 : 1000.0);
-    EXPECT_DOUBLE_EQ(last.at("S3.rpm"), 1000.0);
+    // S3 is not overridden: still on its own ramp (10000 deg/s^2) at the end
+    EXPECT_NEAR(last.at("S3.rpm"), 10000 * (last.at("t") - r.line_t(3)) / 6, 2.0);
   }
 }
 
@@ -121,15 +129,40 @@ TEST(Link, TwinProgramCouplesAxesAndSpindles) {
   for (std::size_t k = a2; k < b2; ++k) ASSERT_NEAR(r.rows[k].at("Z2") - r.rows[k].at("Z1"), 5.0, kTraceMm) << k;
   EXPECT_NEAR(r.rows[b2].at("Z2"), -5.0, 1e-9);
   // NBR 17=6: S3 turns with S1 at M4 1200 rpm.
-  const double t140 = r.block_t(140);
-  EXPECT_DOUBLE_EQ(r.at(t140, "S1.rpm"), -1200.0);
-  EXPECT_DOUBLE_EQ(r.at(t140, "S3.rpm"), -1200.0);
-  EXPECT_DOUBLE_EQ(r.at(t140, "S2.rpm"), 0.0);  // S2 was left at M19, not in group 3
+  const double t130 = r.block_t(130), t140 = r.block_t(140);
+  int m4 = 0;
+  for (const json& e : r.of("spindle"))
+    if (e["t"] == t130 && e["mode"] == "rotate" && e["rpm"] == -1200.0) ++m4;
+  EXPECT_EQ(m4, 2);  // S1 and S3
+  // M5 comes when S3 (10000 deg/s^2, the slower) is within 10 %: S1 is at
+  // speed, S3 still on its ramp; S2 was left at M19, it is not in group 3.
+  const double before_m5 = t140 - kDt;
+  EXPECT_DOUBLE_EQ(r.at(before_m5, "S1.rpm"), -1200.0);
+  EXPECT_NEAR(r.at(before_m5, "S3.rpm"), -10000 * (before_m5 - t130) / 6, 2.0);
+  EXPECT_LT(r.at(before_m5, "S3.rpm"), -1080.0);
+  EXPECT_DOUBLE_EQ(r.at(before_m5, "S2.rpm"), 0.0);
   // Mirrored C2 = -C1: C1 0 -> 90, C2 0 -> -90.
   auto [a4, b4] = rows_between(l[6], l[7]);
   for (std::size_t k = a4; k < b4; ++k) ASSERT_NEAR(r.rows[k].at("C2"), -r.rows[k].at("C1"), kTraceMm) << k;
   EXPECT_NEAR(r.rows[b4].at("C1"), 90.0, 1e-9);
   EXPECT_NEAR(r.rows[b4].at("C2"), -90.0, 1e-9);
+}
+
+// The report lists the coupling periods: group 2 (gantry) from its link on
+// to its link off.
+TEST(Link, ReportMarksCouplingPeriods) {
+  const auto dir = temp_dir("link_report");
+  const std::string ex = root() + "/examples/twin-spindle";
+  const CliResult c = run_nck("run " + ex + " " + ex + "/twin.nc --events " + (dir / "e.jsonl").string() +
+                              " --report " + (dir / "r.html").string());
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  double on = -1, off = -1;
+  for (const json& e : read_jsonl(dir / "e.jsonl"))
+    if (e["ev"] == "link" && e["group"] == 2) (e["on"] ? on : off) = e["t"].get<double>();
+  const std::string html = read_file(dir / "r.html");
+  EXPECT_NE(html.find("coupling periods"), std::string::npos);
+  const std::string row = fmt::format("<tr><td>1</td><td>2</td><td>[[&quot;Z2&quot;,&quot;Z1&quot;]]</td><td>{:.3f}</td><td>{:.3f}</td><td>program</td></tr>", on, off);
+  EXPECT_NE(html.find(row), std::string::npos) << row;
 }
 
 // M19 sends master and slave to the same absolute position, each with its
@@ -226,7 +259,7 @@ INSTANTIATE_TEST_SUITE_P(
         RuleCase{"slave_already_slave", "#AX LINK[1, S2=S3]\n#AX LINK ON\n#AX LINK ON[1]\nM30\n", 21283, 3},
         RuleCase{"gantry_limits", "#SET AX LINK[1, [Z2=Z1, G, 0.5, 0.1]]\nM30\n", 930409, 1},
         RuleCase{"spindle_scaled", "#SET AX LINK[1, [S2=S, 2, 1]]\nM30\n", 930409, 1}),
-    [](const auto& info) { return std::string(info.param.name); });
+    [](const ::testing::TestParamInfo<RuleCase>& p) { return std::string(p.param.name); });
 
 // Group 0 belongs to the channel list: the program cannot define it.
 TEST(Link, GroupZeroCannotBeRedefined) {

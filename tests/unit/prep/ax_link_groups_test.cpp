@@ -28,7 +28,12 @@ nc::SetAxLink def(int g, std::vector<std::pair<std::string, std::string>> pairs,
   nc::SetAxLink s;
   s.group = g;
   s.by_number = nbr;
-  for (auto& [a, b] : pairs) s.pairs.push_back({a, b});
+  for (auto& [a, b] : pairs) {
+    nc::AxLinkPair p;
+    p.slave = a;
+    p.master = b;
+    s.pairs.push_back(p);
+  }
   return s;
 }
 
