@@ -98,6 +98,26 @@ TEST(Link, OverrideOfOneSpindleDoesNotActOnTheOther) {
   }
 }
 
+// A spindle feedhold on the master does not stop the slave, and the
+// reverse: S600 is reached at 0.24 s (S1) / 0.18 s (S2); the feedhold at
+// 0.5 s brakes that spindle alone to 0 within 0.24 s.
+TEST(Link, FeedholdOfOneSpindleDoesNotStopTheOther) {
+  for (const std::string who : {"S1", "S2"}) {
+    const auto dir = temp_dir("link_hold_" + who);
+    std::ofstream(dir / "h.plc") << "0.5 spindle_feedhold " << who << " on\n";
+    std::ofstream(dir / "p.nc") << "#ENABLE AX LINK\nS600 M3\n#TIME 1\nM30\n";
+    const std::string ex = root() + "/examples/twin-spindle";
+    CliResult c = run_nck("run " + ex + " " + (dir / "p.nc").string() + " --events " + (dir / "e.jsonl").string() +
+                          " --trace " + (dir / "t.csv").string() + " --plc " + (dir / "h.plc").string());
+    const PathRun r = read_run(std::move(c), dir);
+    ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+    EXPECT_DOUBLE_EQ(r.at(0.45, "S1.rpm"), 600.0);
+    EXPECT_DOUBLE_EQ(r.at(0.45, "S2.rpm"), 600.0);
+    EXPECT_DOUBLE_EQ(r.at(0.9, "S1.rpm"), who == "S1" ? 0.0 : 600.0);
+    EXPECT_DOUBLE_EQ(r.at(0.9, "S2.rpm"), who == "S2" ? 0.0 : 600.0);
+  }
+}
+
 // twin.nc: group 0 from the channel list (Y2=Y1, S2=S1), a gantry pair, an
 // NBR group, a mirrored pair.
 TEST(Link, TwinProgramCouplesAxesAndSpindles) {
