@@ -374,5 +374,28 @@ TEST(Link, LinkedSpindleFromOtherChannelIsAnError) {
   EXPECT_DOUBLE_EQ(r.rows.back().at("S1.rpm"), 400.0);
 }
 
+// Nor may another channel couple it while the link is on.
+TEST(Link, CouplingASpindleLinkedInAnotherChannelIsAnError) {
+  const auto dir = temp_dir("link_other_enable");
+  std::ofstream(dir / "c1.nc") << "#SET AX LINK[1, S1=S]\n#ENABLE AX LINK[1]\n#TIME 1\nM30\n";
+  std::ofstream(dir / "c2.nc") << "#TIME 0.3\n#SET AX LINK[2, S1=S]\n#ENABLE AX LINK[2]\nM30\n";
+  const std::string ex = root() + "/examples/two-channel";
+  CliResult c = run_nck("run " + ex + " " + (dir / "c1.nc").string() + " " + (dir / "c2.nc").string() +
+                        " --events " + (dir / "e.jsonl").string() + " --trace " + (dir / "t.csv").string());
+  const PathRun r = read_run(std::move(c), dir);
+  EXPECT_EQ(r.cli.exit_code, 1);
+  const json* e = error_of(r);
+  ASSERT_NE(e, nullptr) << r.cli.output;
+  EXPECT_EQ((*e)["id"], 930407);
+  EXPECT_EQ((*e)["ch"], 2);
+  EXPECT_EQ((*e)["line"], 3);
+  // channel 1's link stays until its M30
+  const auto l = links(r);
+  ASSERT_EQ(l.size(), 2u);
+  EXPECT_EQ(l[1]["ch"], 1);
+  EXPECT_EQ(l[1]["reason"], "program_end");
+  EXPECT_NEAR(l[1]["t"].get<double>(), 1.0, 0.01);
+}
+
 }  // namespace
 }  // namespace nck::app
