@@ -110,6 +110,15 @@ std::optional<std::string> write_final(const std::string& path, const config::Ma
   json hli{{"position_format", fmt_pos == plc::PositionFormat::scaled_32bit ? "32-bit, 0.0001 deg"
                                                                              : "64-bit, 1e-7 deg"},
            {"spindles", hli_spindles}};
+  // enabled coupling groups (synchronous operation): channel, group, pairs
+  json links = json::array();
+  for (std::size_t c = 0; c < k.channel_count(); ++c)
+    for (std::uint32_t payload : k.active_links(c)) {
+      const prep::LinkPayload& p = run.link(payload);
+      json pairs = json::array();
+      for (const auto& [slave, master] : p.pairs) pairs.push_back(json::array({slave, master}));
+      links.push_back(json{{"ch", c + 1}, {"group", p.group}, {"pairs", pairs}});
+    }
   json errs = json::array();
   for (const FinalError& e : errors)
     errs.push_back(json{{"id", e.id}, {"ch", e.channel}, {"line", e.line}, {"file", to_utf8(e.file)}, {"msg", to_utf8(e.msg)}});
@@ -117,7 +126,7 @@ std::optional<std::string> write_final(const std::string& path, const config::Ma
            {"end", end_reason},
            {"channels", channels},
            {"spindles", spindles},
-           {"links", json::array()},
+           {"links", links},
            {"hli", hli},
            {"errors", errs}};
   f.write(dump_json(doc, 2));

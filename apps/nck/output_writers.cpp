@@ -91,6 +91,17 @@ const char* wait_reason_name(kernel::WaitReason r) {
   return "plc_ack";
 }
 
+const char* link_reason_name(kernel::LinkReason r) {
+  using R = kernel::LinkReason;
+  switch (r) {
+    case R::program: return "program";
+    case R::abort: return "abort";
+    case R::program_end: return "program_end";
+    case R::reset: return "reset";
+  }
+  return "program";
+}
+
 const char* end_name(kernel::EndReason r) {
   using R = kernel::EndReason;
   switch (r) {
@@ -185,6 +196,17 @@ std::string EventWriter::line(const kernel::Event& e, const RunNames& names) {
     case K::end:
       j["reason"] = end_name(e.end_reason);
       break;
+    case K::link: {
+      const prep::LinkPayload& p = names.run->link(e.message_index);
+      j["group"] = e.link_group;
+      json pairs = json::array();
+      for (const auto& [slave, master] : p.pairs) pairs.push_back(json::array({slave, master}));
+      j["pairs"] = pairs;
+      j["on"] = e.link_on;
+      j["reason"] = link_reason_name(static_cast<kernel::LinkReason>(e.link_reason));
+      j["line"] = e.line;
+      break;
+    }
     case K::offset: {
       const prep::OffsetPayload& p = names.run->offset(e.message_index);
       j["kind"] = p.kind;

@@ -31,6 +31,7 @@ struct RunNames {
 std::string sync_name(std::uint32_t sync_bits);
 // "M30", "error", "interrupted" ... as SPEC 2.3 names them.
 const char* end_name(kernel::EndReason r);
+const char* link_reason_name(kernel::LinkReason r);
 // "plc_ack", "speed_reached" ... as SPEC 2.3 names them.
 const char* wait_reason_name(kernel::WaitReason r);
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "machine_names.hpp"
 #include "output_writers.hpp"
@@ -100,9 +101,38 @@ void ReportWriter::sample(const kernel::TickOutput& out) {
 
 void ReportWriter::event(const std::string& json_line, bool is_error) {
   if (!enabled_) return;
+  if (json_line.find("\"ev\":\"link\"") != std::string::npos) note_link(json_line);
   if (is_error) errors_.push_back(json_line);
   if (events_.size() < kMaxEvents) events_.push_back(json_line);
   else ++events_dropped_;
+}
+
+// Coupling periods from the link events: an "on" opens one, the "off" of
+// the same channel and group closes it.
+void ReportWriter::note_link(const std::string& json_line) {
+  const auto j = nlohmann::json::parse(json_line, nullptr, false);
+  if (j.is_discarded()) return;
+  const int ch = j.value("ch", 0), group = j.value("group", 0);
+  if (j.value("on", false)) {
+    links_.push_back({ch, group, j.value("pairs", nlohmann::json::array()).dump(), j.value("t", 0.0), -1, ""});
+    return;
+  }
+  for (LinkPeriod& p : links_)
+    if (p.ch == ch && p.group == group && p.off_s < 0) {
+      p.off_s = j.value("t", 0.0);
+      p.reason = j.value("reason", "");
+    }
+}
+
+std::string ReportWriter::link_table() const {
+  if (links_.empty()) return {};
+  std::string h = "<h2>Synchronous operation (coupling periods)</h2><table><tr><th>ch</th><th>group</th>"
+                  "<th>pairs [slave, master]</th><th>on (s)</th><th>off (s)</th><th>ended by</th></tr>";
+  for (const LinkPeriod& p : links_)
+    h += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{:.3f}</td><td>{}</td><td>{}</td></tr>", p.ch, p.group,
+                     escape(p.pairs), p.on_s, p.off_s < 0 ? std::string("still on") : fmt::format("{:.3f}", p.off_s),
+                     escape(p.reason));
+  return h + "</table>";
 }
 
 std::optional<std::string> ReportWriter::write(const std::string& path, double end_s, int exit_code) const {
@@ -144,6 +174,7 @@ std::optional<std::string> ReportWriter::write(const std::string& path, double e
     }
     h += "<h2>Spindles</h2>" + svg_plot("set-point speed (rpm)", t_, ys, names);
   }
+  h += link_table();
   h += fmt::format("<h2>Events</h2><pre>");
   for (const std::string& e : events_) h += escape(e) + "\n";
   if (events_dropped_ > 0) h += fmt::format("... {} more events (see --events)\n", events_dropped_);

@@ -42,6 +42,16 @@ class ReportWriter {
   std::uint64_t stride_ = 1, cycle_ = 0;
   std::vector<std::string> events_, errors_;
   std::size_t events_dropped_ = 0;
+  // synchronous operation: one row per coupling period (link events)
+  struct LinkPeriod {
+    int ch = 0, group = 0;
+    std::string pairs;
+    double on_s = 0, off_s = -1;  // -1: still enabled at the end
+    std::string reason;           // why it ended
+  };
+  std::vector<LinkPeriod> links_;
+  void note_link(const std::string& json_line);
+  std::string link_table() const;
 };
 
 }  // namespace nck::app

@@ -29,6 +29,7 @@ Event Channel::event(EventKind k, double t_s) const noexcept {
 }
 
 void Channel::end_program(EndReason reason, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept {
+  dissolve_links(reason, t_s, sink, ctx);
   Event e = event(EventKind::end, t_s);
   e.end_reason = reason;
   sink.emit(e);
@@ -95,6 +96,7 @@ void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelConte
     return;
   }
   if (!start_c_axis(c, t_s, sink, ctx)) return;
+  if (!take_ax_link(c, t_s, sink, ctx)) return;
   take_links(c, ctx);
   manual_mask_ = (manual_mask_ | c.manual_on) & ~c.manual_off;
   if (c.get_manual_offsets) manual_fetch_pending_ = true;
@@ -299,6 +301,7 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
       }
     }
   }
+  follow_axis_links();
   follow_c_axis(dt_s, ctx);
   follow_handwheel(t_s, dt_s, in, sink, ctx);
   for (std::size_t j = 0; j < n_axes_; ++j) out.axis_mcs[j] = pos_[j] + manual_in_force_mm_[j];

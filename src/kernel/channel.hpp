@@ -62,6 +62,13 @@ class Channel {
   // setup: channel axis `axis` is spindle `spindle` (kernel index) in
   // C-axis mode (#CAX); outside it the axis shows the spindle's position.
   void set_c_axis(std::int8_t axis, std::int8_t spindle) noexcept;
+  // setup: P-CHAN-00105, enabled couplings survive M30 / M2.
+  void set_preserve_links(bool on) noexcept { preserve_links_ = on; }
+  // The enabled coupling groups' plan-store payloads, in enabling order.
+  template <class F>
+  void for_each_link(F&& f) const {
+    for (const ActiveLink& l : links_) f(l.cmd.payload);
+  }
 
  private:
   enum class Phase : std::uint8_t { pre_wait, body, post_wait };
@@ -164,6 +171,19 @@ class Channel {
   bool thread_waiting_ = false;    // G33: the path waits for the start angle
   double thread_last_deg_ = 0;     // the spindle's set point one cycle ago
   CssLink css_{};                  // G96 in force
+
+  // synchronous operation (channel_axlink.cpp)
+  struct ActiveLink {
+    LinkCommand cmd{};
+    std::array<double, kMaxLinkPairs> base_slave_mm{}, base_master_mm{};  // path-axis pairs
+  };
+  bool take_ax_link(const Command& c, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
+  void dissolve_link(std::size_t i, LinkReason why, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
+  void dissolve_links(EndReason end, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
+  bool linked_elsewhere(std::int8_t spindle, const ChannelContext& ctx) const noexcept;
+  void follow_axis_links() noexcept;
+  FixedVector<ActiveLink, kMaxLinkGroupNr + 1> links_;
+  bool preserve_links_ = false;
 };
 
 }  // namespace nck::kernel

@@ -113,6 +113,15 @@ void Channel::on_ack(plc::OutputHandle h) noexcept {
 bool Channel::issue_spindle(const SpindleAction& a, double t_s, TickOutput& sink,
                             ChannelContext& ctx) noexcept {
   if (a.spindle < 0 || static_cast<std::size_t>(a.spindle) >= ctx.spindle_count) return true;
+  if (linked_elsewhere(a.spindle, ctx)) {  // only the channel that enabled the link commands it
+    Event e = event(EventKind::error, t_s);
+    e.id = ErrorId::AxLinkOtherChannel;
+    e.message_index = kNoMessage;
+    e.spindle = a.spindle;
+    sink.emit(e);
+    end_program(EndReason::error, t_s, sink, ctx);
+    return false;
+  }
   SpindleUnit& u = ctx.spindles[a.spindle];
   u.channel = number_;
   u.channel_index = local_index(a.spindle);

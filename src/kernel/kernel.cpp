@@ -62,6 +62,7 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
                                                   *command_queues_.back(), *feedback_queues_.back()));
     // The C axis (config/c_axis.cpp) is the spindle with the same axis list.
     const config::ChannelConfig& ch = machine_->channels[i];
+    channels_.back()->set_preserve_links(ch.preserve_coupling_after_prog_end);
     if (ch.c_axis >= 0)
       for (std::size_t k = 0; k < ch.spindles.size(); ++k)
         if (ch.spindles[k].axis_index == ch.axes[static_cast<std::size_t>(ch.c_axis)].axis_index)
@@ -77,6 +78,12 @@ const spindle::SpindleStatus& Kernel::spindle_status(std::size_t index) const {
   return spindles_.at(index).axis.status();
 }
 const plc::SpindleMap& Kernel::spindle_map() const { return spindle_map_; }
+
+std::vector<std::uint32_t> Kernel::active_links(std::size_t ch) const {
+  std::vector<std::uint32_t> out;
+  channels_.at(ch)->for_each_link([&](std::uint32_t payload) { out.push_back(payload); });
+  return out;
+}
 
 CommandQueue& Kernel::commands(std::size_t ch) { return *command_queues_.at(ch); }
 FeedbackQueue& Kernel::feedback(std::size_t ch) { return *feedback_queues_.at(ch); }

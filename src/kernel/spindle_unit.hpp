@@ -23,6 +23,10 @@ struct SpindleUnit {
   bool plc_spindle = false;      // commanded over the HLI, acknowledged by the PLC
   std::uint8_t channel = 1;      // the channel that commanded it last (1-based)
   std::int8_t channel_index = 0; // its index in that channel's spindle list
+  // Synchronous operation: the channel whose enabled coupling groups hold
+  // this spindle as master or slave (0 = none), and in how many groups.
+  std::uint8_t link_channel = 0;
+  std::uint8_t link_groups = 0;
 
   // gear change in progress
   GearJob gear_job = GearJob::none;

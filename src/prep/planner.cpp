@@ -22,6 +22,9 @@ bool is_executed_command(const nc::HashCommand& h) {
   if (std::holds_alternative<nc::ExplSyn>(h) || std::holds_alternative<nc::MainSpindle>(h) ||
       std::holds_alternative<nc::GetManualOffsets>(h))
     return true;
+  if (std::holds_alternative<nc::SetAxLink>(h) || std::holds_alternative<nc::EnableAxLink>(h) ||
+      std::holds_alternative<nc::DisableAxLink>(h))
+    return true;  // planner_axlink.cpp
   if (std::holds_alternative<nc::CAxis>(h) || std::holds_alternative<nc::Face>(h) ||
       std::holds_alternative<nc::Cylinder>(h))
     return true;  // planner_cax.cpp
@@ -77,6 +80,7 @@ Planner::Planner(const config::Machine& machine, std::size_t channel_index, Plan
   setup_diameter_axes(machine);
   setup_corner_budgets(machine);
   find_main_spindle(spindles);
+  init_ax_links(spindles);
 }
 
 Command Planner::error_command(ErrorId id, std::string message, std::uint16_t file_id,
@@ -101,11 +105,6 @@ int Planner::axis_named(const char* name) const {
 std::string Planner::unsupported(const nc::Block& b) const {
   if (b.hash && !is_executed_command(*b.hash))
     return fmt::format("{} is not executed yet", nc::hash_command_name(*b.hash));
-  for (const nc::SpindleCommand& s : b.spindles) {
-    if (s.callax || s.putax) return fmt::format("CALLAX/PUTAX of {} are not executed yet", s.name);
-    if (s.feed_link) return fmt::format("FEED_LINK of {} is not executed yet", s.name);
-    if (s.override_speed_fact_pct) return fmt::format("OVERRIDE SPEED_FACT of {} is not executed yet", s.name);
-  }
   for (nc::GCode g : b.g_nonmodal)
     if (!kExecutedNonModal.has(g)) return fmt::format("G{} is not executed yet", nc::g_number(g));
   for (const nc::VariableWrite& w : b.kernel_writes)
@@ -192,6 +191,7 @@ Planner::Commands Planner::plan(const nc::Block& b, const std::string& file_name
   }
   // Only motion commands change the handwheel share; the others carry it on.
   for (Command& cmd : out) cmd.manual_offset_axes = manual_axes_;
+  follow_axis_links();
   return out;
 }
 
@@ -246,6 +246,8 @@ Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
   if (std::string why = unsupported(b); !why.empty())
     return error_command(ErrorId::KernelNotYetSupported, why + " in this version of nck",
                          b.file_id, b.line);
+  if (std::string why = spindle_out_of_scope(b); !why.empty())
+    return error_command(ErrorId::SpindleFunctionOutOfScope, why, b.file_id, b.line);
   Command c;
   c.file_id = b.file_id;
   c.line = b.line;
@@ -265,10 +267,13 @@ Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
   if (std::string why = cax_violation(b, cax_id); !why.empty())
     return error_command(cax_id, why, b.file_id, b.line);
   if (!plan_cax(b, c, error)) return error;
-  auto actions = spindles_.plan(b);
+  if (auto e = plan_ax_link(b, c)) return *e;
+  nc::Block with_slaves_scratch;
+  auto actions = spindles_.plan(with_slaves(b, with_slaves_scratch));
   if (!actions) return error_command(actions.error().id, actions.error().message, b.file_id, b.line);
   c.spindle_actions = *actions;
   note_spindle_words(b);
+  end_ax_links(b);
   if (auto e = plan_links(b, c)) return *e;
   c.expl_syn = b.hash && std::holds_alternative<nc::ExplSyn>(*b.hash);
   c.get_manual_offsets = b.hash && std::holds_alternative<nc::GetManualOffsets>(*b.hash);

@@ -73,4 +73,9 @@ const prep::OffsetPayload& DryRun::offset(std::uint32_t index) const {
   return index < store_->offsets.size() ? store_->offsets[index] : none;
 }
 
+const prep::LinkPayload& DryRun::link(std::uint32_t index) const {
+  static const prep::LinkPayload none;
+  return index < store_->links.size() ? store_->links[index] : none;
+}
+
 }  // namespace nck::sim

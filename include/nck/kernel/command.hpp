@@ -12,6 +12,7 @@
 #include "nck/motion/limits.hpp"
 #include "nck/motion/segment.hpp"
 #include "nck/kernel/affine_map.hpp"
+#include "nck/kernel/ax_link.hpp"
 #include "nck/kernel/spindle_action.hpp"
 
 namespace nck::kernel {
@@ -113,6 +114,8 @@ struct Command {
   std::int8_t cax_spindle = -1;
   std::int8_t cax_axis = -1;
   motion::CaxTrafo trafo{};
+  // #ENABLE / #DISABLE AX LINK (ax_link.hpp), done when the block starts
+  LinkCommand link{};
 };
 
 }  // namespace nck::kernel

@@ -57,6 +57,11 @@ struct Event {
   std::uint32_t gear = 0;           // gear stage 1..6
   // end
   EndReason end_reason = EndReason::m30;
+  // link: group, on/off, why (ax_link.hpp LinkReason); the pairs' names are
+  // in the plan store at message_index
+  std::int8_t link_group = -1;
+  bool link_on = false;
+  std::uint8_t link_reason = 0;
 };
 
 enum class WaitReason : std::uint8_t {

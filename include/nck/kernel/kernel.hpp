@@ -60,6 +60,8 @@ class Kernel {
   CommandQueue& commands(std::size_t ch);
   FeedbackQueue& feedback(std::size_t ch);
   ChannelState channel_state(std::size_t ch) const;
+  // The coupling groups enabled in channel ch: their plan-store payloads.
+  std::vector<std::uint32_t> active_links(std::size_t ch) const;
 
   // real-time side -------------------------------------------------------
   void tick(const TickInput& in, TickOutput& out) noexcept;

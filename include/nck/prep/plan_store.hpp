@@ -12,9 +12,16 @@ struct OffsetPayload {
   std::vector<std::pair<std::string, double>> values;  // per axis (and angles)
 };
 
+// A coupling group as events and --final name it: configured designations.
+struct LinkPayload {
+  int group = 0;
+  std::vector<std::pair<std::string, std::string>> pairs;  // slave, master
+};
+
 struct PlanStore {
   std::vector<std::string> messages;
   std::vector<OffsetPayload> offsets;
+  std::vector<LinkPayload> links;
 
   std::uint32_t add_message(std::string m) {
     messages.push_back(std::move(m));
@@ -23,6 +30,10 @@ struct PlanStore {
   std::uint32_t add_offset(OffsetPayload p) {
     offsets.push_back(std::move(p));
     return static_cast<std::uint32_t>(offsets.size() - 1);
+  }
+  std::uint32_t add_link(LinkPayload p) {
+    links.push_back(std::move(p));
+    return static_cast<std::uint32_t>(links.size() - 1);
   }
 };
 

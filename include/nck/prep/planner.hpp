@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "nck/prep/ax_link_groups.hpp"
 #include "nck/prep/channel_frames.hpp"
 #include "nck/prep/kernel_vocabulary.hpp"
 #include "nck/config/machine.hpp"
@@ -183,6 +184,25 @@ class Planner final : public nc::KernelStateReader {
   double thread_offset_deg_ = 0;           // S.OFFSET, modal to program end
   bool css_on_ = false;
   double css_m_min_ = 0;
+  // synchronous operation (planner_axlink.cpp): the channel's coupling
+  // groups; spindle functions of a master are fanned out to its slaves here,
+  // path-axis slaves follow their master in planned_mcs() as in the kernel.
+  std::optional<AxLinkGroups> links_;
+  std::vector<std::int8_t> kernel_spindles_;  // kernel index per channel spindle
+  int configured_main_spindle_ = -1;          // channel spindle index (P-CHAN-00051)
+  struct AxisFollow {
+    int group = 0;
+    int slave = 0, master = 0;  // channel axis indices
+    double base_slave_mm = 0, base_master_mm = 0, ratio = 1;
+  };
+  std::vector<AxisFollow> axis_follow_;
+  void init_ax_links(const std::vector<std::int8_t>& spindles);
+  std::string spindle_out_of_scope(const nc::Block& b) const;
+  std::optional<Command> plan_ax_link(const nc::Block& b, Command& c);
+  std::optional<Command> ax_link_command(const nc::Block& b, Command& c);
+  const nc::Block& with_slaves(const nc::Block& b, nc::Block& scratch) const;
+  void end_ax_links(const nc::Block& b);
+  void follow_axis_links();
 };
 
 }  // namespace nck::prep

@@ -80,6 +80,7 @@ class DryRun {
   // Texts and offset values that events refer to by message_index.
   const std::string& message(std::uint32_t index) const;
   const prep::OffsetPayload& offset(std::uint32_t index) const;
+  const prep::LinkPayload& link(std::uint32_t index) const;
 
  private:
   DryRun() = default;

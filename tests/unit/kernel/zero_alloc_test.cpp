@@ -101,6 +101,20 @@ TEST(ZeroAllocation, CountingHookSeesAllocations) {
   EXPECT_EQ(g_allocations, 2u);  // the hook works, so a 0 below means something
 }
 
+// The spindle-link seed's programs are short (about 590 cycles each).
+TEST(ZeroAllocation, SeedLinkProgramsRunThroughTickWithoutHeap) {
+  const Example examples[] = {
+      {"examples/twin-spindle", {"examples/twin-spindle/link_names.nc"}},
+      {"examples/twin-spindle", {"examples/twin-spindle/link_on_off.nc"}},
+      {"examples/twin-spindle", {"examples/twin-spindle/link_nbr.nc"}},
+  };
+  for (const Example& ex : examples) {
+    g_allocations = 0;
+    EXPECT_GT(run_counting(ex), 500u) << ex.programs[0];
+    EXPECT_EQ(g_allocations, 0u) << ex.programs[0];
+  }
+}
+
 TEST(ZeroAllocation, WholeExamplesRunThroughTickWithoutHeap) {
   const Example examples[] = {
       {"examples/mill", {"examples/mill/contour.nc"}},
@@ -122,6 +136,8 @@ TEST(ZeroAllocation, WholeExamplesRunThroughTickWithoutHeap) {
       {"examples/lathe", {"examples/lathe/tapping.nc"}},
       {"examples/mill", {"examples/mill/tapping.nc"}},
       {"examples/two-channel", {"examples/two-channel/channel1.nc", "examples/two-channel/channel2.nc"}},
+      {"examples/twin-spindle", {"examples/twin-spindle/twin.nc"}},
+      {"examples/two-channel", {"examples/two-channel/link_ch1.nc", "examples/two-channel/link_ch2.nc"}},
   };
   for (const Example& ex : examples) {
     g_allocations = 0;

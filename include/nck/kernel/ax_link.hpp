@@ -1,0 +1,41 @@
+#pragma once
+// Synchronous operation (#SET AX LINK / #ENABLE AX LINK, facts B18, FCT-S1
+// 2.8.3): what the kernel needs of a coupling group, as fixed-size data.
+// Preparation checks the rules and resolves names; a command enables one
+// group or disables several. Spindle pairs: preparation already commands the
+// slaves in parallel with their master; the kernel only keeps other
+// channels off the linked spindles. Path-axis pairs: the channel moves the
+// slave with its master every cycle.
+#include <cstdint>
+
+#include "nck/core/fixed_vector.hpp"
+
+namespace nck::kernel {
+
+// Documented maxima (docs/decisions.md): groups 0..kMaxLinkGroupNr, at most
+// kMaxLinkPairs pairs per group (P-CHAN-00037/38: paar[0..14]).
+inline constexpr std::size_t kMaxLinkPairs = 15;
+inline constexpr int kMaxLinkGroupNr = 31;
+
+enum class LinkReason : std::uint8_t { program, abort, program_end, reset };
+
+struct AxLinkPair {
+  bool spindle = false;   // mode 1: kernel spindle indices; mode 0: channel axis indices
+  std::int8_t slave = -1;
+  std::int8_t master = -1;
+  bool gantry = false;
+  double ratio = 1.0;     // numerator / denominator (scaled or mirrored pairs)
+};
+
+struct LinkCommand {
+  // enable: `group` with its pairs; `payload` indexes the names for events
+  bool enable = false;
+  std::int8_t group = -1;
+  std::uint32_t payload = 0;
+  FixedVector<AxLinkPair, kMaxLinkPairs> pairs;
+  // disable: bit g = group g off (with the reason "program")
+  std::uint32_t disable_mask = 0;
+  bool any() const noexcept { return enable || disable_mask != 0; }
+};
+
+}  // namespace nck::kernel
