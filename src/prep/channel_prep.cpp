@@ -129,12 +129,11 @@ bool ChannelPrep::drain_backlog(kernel::CommandQueue& commands) {
   return backlog_.empty();
 }
 
-// An error or the missing program end comes after every block before it
-// (and after what tool radius compensation still holds).
+// An error or the missing program end comes after every block before it.
+// What tool radius compensation still holds does not run: its end would
+// depend on blocks that never come (the same rule as for its own errors).
 void ChannelPrep::hand_over(const kernel::Command& c, kernel::CommandQueue& commands) {
-  std::vector<TrcOut> outs;
-  trc_.flush(outs);
-  plan_out(outs, commands, decoder_ ? decoder_->file_name(0) : std::string{});
+  trc_.discard();
   PlannedBlock b;
   (void)b.push_back(c);
   flushing_ = true;

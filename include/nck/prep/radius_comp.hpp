@@ -46,6 +46,8 @@ class RadiusComp {
   // Hands out what is held (the last element ends square to its end): before
   // an error or the end of the program.
   void flush(std::vector<TrcOut>& out);
+  // Drops what is held (the channel stops with an error before it).
+  void discard() { queue_.clear(); }
   bool holding() const { return !queue_.empty(); }
 
  private:

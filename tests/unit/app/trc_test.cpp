@@ -19,7 +19,7 @@ using nlohmann::json;
 // F600 = 10 mm/s: a block's last cycle is at most 0.01 mm from its end.
 constexpr double kTol = 0.011;
 
-struct Run {
+struct TrcRun {
   CliResult cli;
   std::filesystem::path dir;
   std::vector<std::string> cols;             // trace header
@@ -29,8 +29,8 @@ struct Run {
   json final_state;
 };
 
-Run run(const std::string& machine, const std::filesystem::path& program, const std::filesystem::path& dir) {
-  Run r;
+TrcRun run(const std::string& machine, const std::filesystem::path& program, const std::filesystem::path& dir) {
+  TrcRun r;
   r.dir = dir;
   r.cli = run_nck("run " + root() + "/examples/" + machine + " " + program.string() + " --events " +
                   (dir / "e.jsonl").string() + " --trace " + (dir / "t.csv").string() + " --final " +
@@ -51,13 +51,13 @@ Run run(const std::string& machine, const std::filesystem::path& program, const 
   return r;
 }
 
-Run run_text(const std::string& machine, const std::string& name, const std::string& program) {
+TrcRun run_text(const std::string& machine, const std::string& name, const std::string& program) {
   const auto dir = temp_dir(name);
   std::ofstream(dir / "p.nc") << program;
   return run(machine, dir / "p.nc", dir);
 }
 
-std::size_t col(const Run& r, const std::string& name) {
+std::size_t col(const TrcRun& r, const std::string& name) {
   for (std::size_t i = 0; i < r.cols.size(); ++i)
     if (r.cols[i] == name) return i;
   ADD_FAILURE() << "no trace column " << name;
@@ -65,7 +65,7 @@ std::size_t col(const Run& r, const std::string& name) {
 }
 
 // The row of the last cycle before block n starts: where everything before it ended.
-const std::vector<double>& before_block(const Run& r, long n) {
+const std::vector<double>& before_block(const TrcRun& r, long n) {
   const double t = r.block_t.at(n);
   std::size_t i = 0;
   while (i + 1 < r.rows.size() && r.rows[i + 1][0] < t - 1e-9) ++i;
@@ -77,7 +77,7 @@ struct Point {
   double a, b;  // where the tool centre is when it starts
 };
 
-void expect_points(const Run& r, const std::string& a, const std::string& b, const std::vector<Point>& pts) {
+void expect_points(const TrcRun& r, const std::string& a, const std::string& b, const std::vector<Point>& pts) {
   const std::size_t ca = col(r, a), cb = col(r, b);
   for (const Point& p : pts) {
     ASSERT_TRUE(r.block_t.count(p.n)) << "no block event N" << p.n;
@@ -88,7 +88,7 @@ void expect_points(const Run& r, const std::string& a, const std::string& b, con
 }
 
 // Trace rows in [start of n0, start of n1).
-std::vector<std::vector<double>> between(const Run& r, long n0, long n1) {
+std::vector<std::vector<double>> between(const TrcRun& r, long n0, long n1) {
   std::vector<std::vector<double>> out;
   for (const auto& row : r.rows)
     if (row[0] >= r.block_t.at(n0) - 1e-9 && row[0] < r.block_t.at(n1) - 1e-9) out.push_back(row);
@@ -97,7 +97,7 @@ std::vector<std::vector<double>> between(const Run& r, long n0, long n1) {
 
 TEST(Trc, MillContoursFollowTheToolCentrePathsWorkedOutByHand) {
   const auto dir = temp_dir("trc-mill");
-  const Run r = run("mill", root() + "/examples/mill/contour_trc.nc", dir);
+  const TrcRun r = run("mill", root() + "/examples/mill/contour_trc.nc", dir);
   ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
   EXPECT_TRUE(r.errors.empty());
   // 1. rectangle 60 x 40, tool left going clockwise = outside, radius 5
@@ -142,9 +142,9 @@ TEST(Trc, MillContoursFollowTheToolCentrePathsWorkedOutByHand) {
 // The per-axis limits of the continuous path hold on compensated paths,
 // inserted corner arcs included (mill: vb_max 500 mm/s, a_max X/Y 3000 mm/s^2).
 TEST(Trc, AxisLimitsHoldOnTheCompensatedPath) {
-  const Run r = run_text("mill", "trc-limits",
+  const TrcRun r = run_text("mill", "trc-limits",
                          "N10 G17 G90 D1\nN20 G0 X-20 Y-20\n"
-                         "N30 G41 G1 X0 Y0 F20000\nN40 Y40\nN50 X60\nN60 G2 X60 Y0 I0 J-20\nN70 X0\n"
+                         "N30 G41 G1 X0 Y0 F20000\nN40 Y40\nN50 X60\nN60 G2 X60 Y0 I0 J-20\nN70 G1 X0\n"
                          "N80 G40 G1 X-20 Y-20\nN90 M30\n");
   ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
   const double dt = 0.001;
@@ -152,32 +152,35 @@ TEST(Trc, AxisLimitsHoldOnTheCompensatedPath) {
     const std::size_t c = col(r, axis);
     for (std::size_t i = 2; i < r.rows.size(); ++i) {
       const double v1 = (r.rows[i][c] - r.rows[i - 1][c]) / dt, v0 = (r.rows[i - 1][c] - r.rows[i - 2][c]) / dt;
-      ASSERT_LE(std::abs(v1), 500 + 1e-6) << axis << " row " << i;
-      ASSERT_LE(std::abs(v1 - v0) / dt, 3000 * (1 + 1e-6) + 1e-6) << axis << " row " << i;
+      ASSERT_LE(std::abs(v1), 500 + 0.01) << axis << " row " << i;
+      // + 5 mm/s^2: the trace's printed digits (as in the continuous-path tests)
+      ASSERT_LE(std::abs(v1 - v0) / dt, 3000 + 5.0) << axis << " row " << i;
     }
   }
 }
 
 TEST(Trc, InsideArcSmallerThanTheToolStopsBeforeTheToolMoves) {
   // A pocket corner rounded R3 with a 5 mm tool on its inside: R3 - 5 < 0.
-  const Run r = run_text("mill", "trc-small-arc",
+  const TrcRun r = run_text("mill", "trc-small-arc",
                          "N10 G17 G90 D1\nN20 G0 X30 Y20\nN30 G41 G1 Y0 F600\nN40 X57\n"
                          "N50 G3 X60 Y3 R3\nN60 G1 Y40\nN70 G40 G1 X30 Y20\nN80 M30\n");
   EXPECT_EQ(r.cli.exit_code, 1) << r.cli.output;
   ASSERT_EQ(r.errors.size(), 1u) << r.cli.output;
   EXPECT_EQ(r.errors[0]["id"], 90017);
   EXPECT_EQ(r.errors[0]["line"], 5);
-  // Neither the approach nor the line into the arc ran: the tool stayed at X30 Y20.
-  for (const auto& row : r.rows) {
-    EXPECT_NEAR(row[col(r, "X")], 30, 1e-9);
-    EXPECT_NEAR(row[col(r, "Y")], 20, 1e-9);
-  }
+  // Neither the approach nor the line into the arc ran: after the G0 the
+  // tool stayed at X30 Y20.
+  const std::size_t x = col(r, "X"), y = col(r, "Y");
+  ASSERT_FALSE(r.rows.empty());
+  for (const auto& row : r.rows) EXPECT_FALSE(row[x] > 30 - 1e-9 && row[y] < 20 - 1e-9) << row[0];
+  EXPECT_NEAR(r.rows.back()[x], 30, 1e-9);
+  EXPECT_NEAR(r.rows.back()[y], 20, 1e-9);
 }
 
 TEST(Trc, SlotNarrowerThanTheToolIsABottleneck) {
   // Along Y0 with a slot 6 mm wide and 10 deep at X20..26; tool radius 5 on
   // the open side: the slot's bottom would run backwards (X25 -> X21).
-  const Run r = run_text("mill", "trc-slot",
+  const TrcRun r = run_text("mill", "trc-slot",
                          "N10 G17 G90 D1\nN20 G0 X-10 Y10\nN30 G41 G1 X0 Y0 F600\nN40 X20\nN50 Y-10\n"
                          "N60 X26\nN70 Y0\nN80 X50\nN90 G40 G1 Y20\nN100 M30\n");
   EXPECT_EQ(r.cli.exit_code, 1) << r.cli.output;
@@ -188,7 +191,9 @@ TEST(Trc, SlotNarrowerThanTheToolIsABottleneck) {
   const std::size_t x = col(r, "X"), y = col(r, "Y");
   for (const auto& row : r.rows) {
     EXPECT_LE(row[x], 20 + 1e-9);
-    if (row[x] > 0) EXPECT_NEAR(row[y], 5, 1e-9);
+    if (row[x] > 0) {
+      EXPECT_NEAR(row[y], 5, 1e-9);
+    }
   }
 }
 
@@ -197,11 +202,11 @@ TEST(Trc, FunctionsNotAllowedWhileTrcIsSelected) {
     std::string block;
     std::uint32_t id;
   } cases[] = {
-      {"#CS ON [0,0,0,0,0,10]", 20802}, {"#TLC ON [5]", 20671}, {"#PSET X0", 20608},
+      {"#CS ON [1][0,0,0,0,0,10]", 20802}, {"#TLC ON [5]", 20671}, {"#PSET X0", 20608},
       {"G100 X100", 20049},             {"G18", 20133},        {"G92 X0", 930301},
   };
   for (const Case& c : cases) {
-    const Run r = run_text("mill", "trc-forbidden",
+    const TrcRun r = run_text("mill", "trc-forbidden",
                            "N10 G17 G90 D1\nN20 G0 X0 Y0\nN30 G41 G1 X10 F600\nN40 X20\nN50 " + c.block +
                                "\nN60 X30\nN70 G40 X40\nN80 M30\n");
     ASSERT_EQ(r.errors.size(), 1u) << c.block << r.cli.output;
@@ -211,10 +216,10 @@ TEST(Trc, FunctionsNotAllowedWhileTrcIsSelected) {
 }
 
 TEST(Trc, SelectionInACircleAndRadiusChangeInACircleAreErrors) {
-  const Run sel = run_text("mill", "trc-sel-arc", "N10 G17 G90 D1\nN20 G0 X0 Y0\nN30 G41 G2 X20 Y0 R10 F600\nN40 M30\n");
+  const TrcRun sel = run_text("mill", "trc-sel-arc", "N10 G17 G90 D1\nN20 G0 X0 Y0\nN30 G41 G2 X20 Y0 R10 F600\nN40 M30\n");
   ASSERT_EQ(sel.errors.size(), 1u) << sel.cli.output;
   EXPECT_EQ(sel.errors[0]["id"], 90008);
-  const Run chg = run_text("mill", "trc-d-arc",
+  const TrcRun chg = run_text("mill", "trc-d-arc",
                            "N10 G17 G90 D1\nN20 G0 X0 Y0\nN30 G41 G1 X10 F600\nN40 X20\nN50 D2 G2 X40 Y0 R10\n"
                            "N60 G40 G1 X50\nN70 M30\n");
   ASSERT_EQ(chg.errors.size(), 1u) << chg.cli.output;
@@ -225,7 +230,7 @@ TEST(Trc, SelectionInACircleAndRadiusChangeInACircleAreErrors) {
 TEST(Trc, NewRadiusWhileActiveLinksOnALine) {
   // D1 (5 mm) then D2 (4.25 mm) along +X, tool left: the D2 line leads from
   // Y5 to Y4.25 square to the next element's start.
-  const Run r = run_text("mill", "trc-d-change",
+  const TrcRun r = run_text("mill", "trc-d-change",
                          "N10 G17 G90 D1\nN20 G0 X0 Y-10\nN30 G41 G1 Y0 F600\nN40 X20\nN50 D2 X30\n"
                          "N60 X50\nN70 G40 G1 Y-10\nN80 M30\n");
   ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
@@ -235,7 +240,7 @@ TEST(Trc, NewRadiusWhileActiveLinksOnALine) {
 
 TEST(Trc, LatheProfileWithChamferAndRadius) {
   const auto dir = temp_dir("trc-lathe");
-  const Run r = run("lathe", root() + "/examples/lathe/profile_trc.nc", dir);
+  const TrcRun r = run("lathe", root() + "/examples/lathe/profile_trc.nc", dir);
   ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
   EXPECT_TRUE(r.errors.empty());
   // G42 in the Z X plane, nose radius 0.8, X in radius (the program's
@@ -253,7 +258,9 @@ TEST(Trc, LatheProfileWithChamferAndRadius) {
   for (const auto& row : between(r, 70, 80)) EXPECT_NEAR(std::hypot(row[z] + 20, row[x] - 15), 4.2, 1e-6);
   // The chamfer's corner arc keeps 0.8 mm from the corner Z-2 X10.
   for (const auto& row : between(r, 50, 60))
-    if (row[z] < -2 + h - 1e-6) EXPECT_NEAR(std::hypot(row[z] + 2, row[x] - 10), 0.8, 1e-6);
+    if (row[z] < -2 + h - 1e-6) {
+      EXPECT_NEAR(std::hypot(row[z] + 2, row[x] - 10), 0.8, 1e-6);
+    }
   EXPECT_EQ(r.final_state["channels"][0]["trc"], "G40");
   EXPECT_EQ(r.final_state["channels"][0]["tool"]["d"], 4);
 }
