@@ -238,6 +238,18 @@ TEST(Trc, NewRadiusWhileActiveLinksOnALine) {
   expect_points(r, "X", "Y", {{40, 0, 5}, {50, 20, 5}, {60, 30, 4.25}, {70, 50, 4.25}, {80, 50, -10}});
 }
 
+TEST(Trc, IncrementalWordsAreRewrittenAsIncrements) {
+  // The rectangle of contour_trc.nc in G91, its right side a half circle
+  // R20 (tangent to top and bottom): the tool runs it at R25.
+  const TrcRun r = run_text("mill", "trc-g91",
+                            "N10 G17 G90 D1\nN20 G0 X-20 Y-20\nN30 G91 G41 G1 X20 Y20 F600\nN40 Y40\nN50 X60\n"
+                            "N60 G2 X0 Y-40 I0 J-20\nN70 G1 X-60\nN80 G40 X-20 Y-20\nN90 G90 G0 X0 Y0\nN100 M30\n");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  expect_points(r, "X", "Y", {{40, -5, 0}, {50, 0, 45}, {60, 60, 45}, {70, 60, -5}, {80, 0, -5}, {90, -20, -20}});
+  const std::size_t x = col(r, "X"), y = col(r, "Y");
+  for (const auto& row : between(r, 60, 70)) EXPECT_NEAR(std::hypot(row[x] - 60, row[y] - 20), 25, 1e-6);
+}
+
 TEST(Trc, LatheProfileWithChamferAndRadius) {
   const auto dir = temp_dir("trc-lathe");
   const TrcRun r = run("lathe", root() + "/examples/lathe/profile_trc.nc", dir);
