@@ -43,6 +43,14 @@ json modal_json(const nc::ModalState& m) {
               {"F", m.feed_mm_min}};
 }
 
+// The D in force and the radius tool radius compensation takes from it.
+json tool_json(const config::Machine& m, std::size_t channel, std::int64_t d) {
+  double radius_mm = 0;
+  if (channel < m.channel_data.size() && d > 0 && static_cast<std::size_t>(d) < m.channel_data[channel].tools.size())
+    radius_mm = m.channel_data[channel].tools[static_cast<std::size_t>(d)].radius_mm;
+  return json{{"d", d}, {"radius_mm", radius_mm}};
+}
+
 }  // namespace
 
 std::optional<std::string> write_final(const std::string& path, const config::Machine& m,
@@ -73,7 +81,8 @@ std::optional<std::string> write_final(const std::string& path, const config::Ma
                             {"modal", modal_json(s.modal)},
                             {"offsets", offsets},
                             {"main_spindle", main_spindle_designation(m.channels[c])},
-                            {"tool", json{{"d", s.modal.d}}}});
+                            {"trc", fmt::format("G{}", static_cast<int>(s.modal.radius_comp))},
+                            {"tool", tool_json(m, c, s.modal.d)}});
   }
   json spindles = json::object();
   for (std::size_t i = 0; i < k.spindle_count(); ++i) {

@@ -24,7 +24,8 @@ ChannelPrep::ChannelPrep(const config::Machine& m, std::size_t ch, const std::fi
                          PlanStore& store, const PrepOptions& options)
     : planner_(std::make_unique<Planner>(m, ch, store, PlannerOptions{options.clamp_index},
                                          kernel_spindles(m, ch))),
-      window_(m.channels[ch].lookahead_blocks, m.cycle_time_us * 1e-6) {
+      window_(m.channels[ch].lookahead_blocks, m.cycle_time_us * 1e-6),
+      trc_(m, ch) {
   if (program.empty()) {
     done_ = true;
     return;
@@ -49,6 +50,7 @@ bool ChannelPrep::needs_feedback(const nc::Block& b) {
 
 void ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& feedback, bool channel_done) {
   new_warnings_.clear();
+  if (!drain_backlog(commands)) return;
   if (flushing_) {
     if (!window_.release(commands, true)) return;
     flushing_ = false;
@@ -61,7 +63,8 @@ void ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& fe
     }
     awaiting_feedback_ = false;
   }
-  while (!done_ && !awaiting_feedback_ && commands.free_slots() >= kernel::kMaxCommandsPerBlock) {
+  while (!done_ && !awaiting_feedback_ && backlog_.empty() &&
+         commands.free_slots() >= kernel::kMaxCommandsPerBlock) {
     nc::Decoder::Result r = decoder_->next();
     collect_warnings();
     if (r.status == nc::Decoder::Status::block) {
@@ -89,20 +92,58 @@ void ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& fe
 
 bool ChannelPrep::prepare(const nc::Block& b, const std::string& file_name, kernel::CommandQueue& commands) {
   if (!window_.has_room() && !window_.release(commands, false)) return false;
-  (void)window_.push(planner_->plan(b, file_name));
+  std::vector<TrcOut> outs;
+  trc_.push(b, *planner_, outs);
+  plan_out(outs, commands, file_name);
   // A block that needs feedback, and the program end, must reach the channel now.
   flushing_ = flushing_ || needs_feedback(b) || b.program_end;
   return push_out(commands);
 }
 
+void ChannelPrep::plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& commands,
+                           const std::string& file_name) {
+  for (TrcOut& o : outs) {
+    PlannedBlock planned;
+    if (o.error) {
+      (void)planned.push_back(planner_->error_command(*o.error, o.message, o.block.file_id, o.block.line));
+    } else {
+      // Held blocks may come from another file than the block that released them.
+      planned = planner_->plan(o.block, decoder_ ? decoder_->file_name(o.block.file_id) : file_name);
+      if (o.inserted)
+        for (kernel::Command& c : planned) c.emit_block_event = false;
+    }
+    if (backlog_.empty() && (window_.has_room() || window_.release(commands, false)))
+      (void)window_.push(planned);
+    else
+      backlog_.push_back(planned);
+  }
+}
+
+bool ChannelPrep::drain_backlog(kernel::CommandQueue& commands) {
+  std::size_t i = 0;
+  for (; i < backlog_.size(); ++i) {
+    if (!window_.has_room() && !window_.release(commands, false)) break;
+    (void)window_.push(backlog_[i]);
+  }
+  backlog_.erase(backlog_.begin(), backlog_.begin() + static_cast<std::ptrdiff_t>(i));
+  return backlog_.empty();
+}
+
 // An error or the missing program end comes after every block before it.
+// What tool radius compensation still holds does not run: its end would
+// depend on blocks that never come (the same rule as for its own errors).
 void ChannelPrep::hand_over(const kernel::Command& c, kernel::CommandQueue& commands) {
+  trc_.discard();
   PlannedBlock b;
   (void)b.push_back(c);
+  flushing_ = true;
+  if (!backlog_.empty()) {
+    backlog_.push_back(b);
+    return;
+  }
   // Room: release() keeps at most depth() commands, fewer than the window holds.
   if (!window_.has_room()) (void)window_.release(commands, false);
   (void)window_.push(b);
-  flushing_ = true;
   (void)push_out(commands);
 }
 
@@ -110,6 +151,7 @@ void ChannelPrep::hand_over(const kernel::Command& c, kernel::CommandQueue& comm
 // (feed() goes on with it when the queue has room again).
 bool ChannelPrep::push_out(kernel::CommandQueue& commands) {
   if (!window_.release(commands, flushing_)) return false;
+  if (!backlog_.empty()) return false;  // feed() goes on with the backlog first
   flushing_ = false;
   return true;
 }

@@ -109,8 +109,6 @@ std::string Planner::unsupported(const nc::Block& b) const {
     if (!kExecutedNonModal.has(g)) return fmt::format("G{} is not executed yet", nc::g_number(g));
   for (const nc::VariableWrite& w : b.kernel_writes)
     if (w.name.rfind("V.G.NP[", 0) != 0) return fmt::format("writing {} is not executed yet", w.name);
-  const nc::ModalState& m = b.modal;
-  if (m.radius_comp != nc::RadiusComp::g40) return "tool radius compensation G41/G42 is not executed yet";
   return {};
 }
 

@@ -21,6 +21,7 @@
 #include "nck/nc/decoder.hpp"
 #include "nck/prep/lookahead_window.hpp"
 #include "nck/prep/plan_store.hpp"
+#include "nck/prep/radius_comp.hpp"
 
 namespace nck::prep {
 
@@ -52,7 +53,7 @@ class ChannelPrep {
   bool has_program() const { return decoder_.has_value(); }
   // Everything up to the program end (or the error that stopped decoding)
   // is in the command queue.
-  bool done() const { return done_ && window_.empty(); }
+  bool done() const { return done_ && window_.empty() && backlog_.empty(); }
   // Decoder warnings found by the last feed() (for the caller to report).
   const std::vector<Diagnostic>& new_warnings() const { return new_warnings_; }
   const nc::Decoder* decoder() const { return decoder_ ? &*decoder_ : nullptr; }
@@ -66,10 +67,16 @@ class ChannelPrep {
   void hand_over(const kernel::Command& c, kernel::CommandQueue& commands);
   bool push_out(kernel::CommandQueue& commands);
   void collect_warnings();
+  // Plans what tool radius compensation handed out, into the window or,
+  // while it is full, the backlog (one block may become several).
+  void plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& commands, const std::string& file_name);
+  bool drain_backlog(kernel::CommandQueue& commands);
 
   std::optional<nc::Decoder> decoder_;
   std::unique_ptr<Planner> planner_;
   LookAheadWindow window_;
+  RadiusComp trc_;
+  std::vector<PlannedBlock> backlog_;  // planned, waiting for room in the window
   // The window must empty into the queue (program end, an error, a block
   // whose feedback later blocks need) before anything else is decoded.
   bool flushing_ = false;

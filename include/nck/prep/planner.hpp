@@ -48,6 +48,11 @@ class Planner final : public nc::KernelStateReader {
   const ChannelFrames& frames() const { return frames_; }
   // Where the machine axes stand when everything planned so far has run.
   const motion::AxisVector& planned_mcs() const { return mcs_; }
+  // The programmed position (program coordinates, radii) after everything
+  // planned so far; whether axis word j of b is a diameter (G51). Tool
+  // radius compensation (radius_comp.hpp) reads both.
+  const motion::AxisVector& planned_pcs() const { return pcs_; }
+  bool word_is_diameter(const nc::Block& b, std::size_t j) const { return takes_diameter(b, j); }
   // After a G100 run (the caller held further blocks back until it ended):
   // planning goes on from where the axes stopped; G101 uses the result.
   // Returns the decoder's V.A.MESS/MERF/MOFFS variables.

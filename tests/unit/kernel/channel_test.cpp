@@ -158,13 +158,13 @@ TEST(Channel, UnsupportedFunctionIsReportedNotIgnored) {
   Kernel& k = rig.k;
   nc::Block b;
   b.line = 5;
-  b.modal.radius_comp = nc::RadiusComp::g41;  // tool radius compensation is not executed yet
+  b.kernel_writes.push_back({"V.G.WZ_AKT.R", 5.0});  // writing the tool radius is not executed yet
   b.axes[0] = 1.0;
   rig.push_block(0, b, "t.nc");
   RunLog r = run_all(k);
   ASSERT_FALSE(r.events.empty());
   EXPECT_EQ(r.events[0].id, ErrorId::KernelNotYetSupported);
-  EXPECT_NE(rig.message(r.events[0].message_index).find("G41"), std::string::npos);
+  EXPECT_NE(rig.message(r.events[0].message_index).find("V.G.WZ_AKT.R"), std::string::npos);
 }
 
 TEST(Channel, FeedholdStopsAndResumes) {

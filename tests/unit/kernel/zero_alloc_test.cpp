@@ -127,6 +127,8 @@ TEST(ZeroAllocation, WholeExamplesRunThroughTickWithoutHeap) {
       {"examples/mill", {"examples/mill/caxis.nc"}},
       {"examples/mill", {"examples/mill/cylinder.nc"}},
       {"examples/mill", {"examples/mill/jumps.nc"}},
+      {"examples/mill", {"examples/mill/contour_trc.nc"}},
+      {"examples/lathe", {"examples/lathe/profile_trc.nc"}},
       {"examples/lathe", {"examples/lathe/turn.nc"}},
       {"examples/lathe", {"examples/lathe/gears.nc"}},
       {"examples/lathe", {"examples/lathe/diameter.nc"}},

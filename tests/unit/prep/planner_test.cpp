@@ -320,11 +320,11 @@ TEST(Planner, DwellInSeconds) {
 
 TEST(Planner, FunctionsNotExecutedYetAreError930001) {
   PlannerRig r("mill");
-  // G41 tool radius compensation is decoded but not executed.
-  auto c = r.plan("G0 X1\nG41 G1 X5 F100\nM30\n");
+  // Writing the tool radius V.G.WZ_AKT.R is decoded but not executed.
+  auto c = r.plan("G0 X1\nV.G.WZ_AKT.R = 5\nM30\n");
   expect_error(c[1], ErrorId::KernelNotYetSupported, 2);
   EXPECT_EQ(static_cast<std::uint32_t>(c[1].error_id), 930001u);
-  EXPECT_NE(r.store.messages.at(c[1].message_index).find("G41"), std::string::npos);
+  EXPECT_NE(r.store.messages.at(c[1].message_index).find("V.G.WZ_AKT.R"), std::string::npos);
 }
 
 TEST(Planner, ChannelMFunctionsAreOutputWithTheirSynchronisation) {

@@ -1,0 +1,100 @@
+#pragma once
+// Tool radius compensation G40/G41/G42 as a buffering stage between the
+// decoder and the planner (docs/decisions.md "TRC"). It works on decoded
+// blocks in program coordinates of the working plane, before the offset
+// chain: it rewrites the plane-axis words (and circle centres) of each
+// motion block to the tool-centre path and inserts corner arcs, so the
+// planner plans the compensated path like any programmed one.
+//
+// An element's end depends on the next motion in the plane, so the stage
+// holds one such block (and the blocks without plane motion after it)
+// until the next one is known. Setup side: may allocate, never in tick().
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "nck/config/machine.hpp"
+#include "nck/core/diagnostic.hpp"
+#include "nck/motion/offset_contour.hpp"
+#include "nck/nc/block.hpp"
+
+namespace nck::prep {
+
+class Planner;
+
+// A block for the planner, or an error to raise in its place.
+struct TrcOut {
+  nc::Block block;
+  bool inserted = false;  // a corner arc of the compensation (no block event of its own)
+  std::optional<ErrorId> error;
+  std::string message;
+};
+
+class RadiusComp {
+ public:
+  // At most this many blocks without plane motion may follow a compensated
+  // element before the next one (TF5200 90011 beyond).
+  static constexpr std::size_t kMaxHeld = 8;
+
+  RadiusComp(const config::Machine& m, std::size_t channel);
+
+  // Takes the next decoded block; appends what may be planned now, in order.
+  // planner: its programmed position where compensation starts, and which
+  // axis words are diameters.
+  void push(const nc::Block& b, const Planner& planner, std::vector<TrcOut>& out);
+  // Hands out what is held (the last element ends square to its end): before
+  // an error or the end of the program.
+  void flush(std::vector<TrcOut>& out);
+  // Drops what is held (the channel stops with an error before it).
+  void discard() { queue_.clear(); }
+  bool holding() const { return !queue_.empty(); }
+
+ private:
+  using Vec2 = motion::trc::Vec2;
+  using Element = motion::trc::Element;
+  // contour: an element of the compensated contour; link: a line that moves
+  // the tool onto the contour (selection, side change G41<->G42, new
+  // radius); departure: the G40 line off it.
+  enum class Role : std::uint8_t { contour, link, departure };
+  // One motion in the plane, held until its compensated end is known and the
+  // element after it has been checked too.
+  struct Item {
+    nc::Block block;
+    Element prog;
+    double o = 0;  // signed offset (left positive)
+    Role role = Role::contour;
+    Vec2 comp_start, comp_end;
+    std::optional<nc::Block> arc_before;  // corner arc into this element
+    std::vector<nc::Block> held;          // blocks without plane motion after it
+  };
+
+  bool relevant(const nc::Block& b) const;
+  std::optional<ErrorId> forbidden(const nc::Block& b, std::string& why) const;
+  bool select_plane(const nc::Block& b, const Planner& planner, std::string& why);
+  std::optional<Element> element_of(const nc::Block& b, const Planner& planner, ErrorId& id,
+                                    std::string& why) const;
+  double offset_of(const nc::Block& b) const;
+  bool close_last(Item& next, std::vector<TrcOut>& out);
+  bool check_last(std::vector<TrcOut>& out);
+  void emit_front(std::vector<TrcOut>& out);
+  nc::Block rewrite(const Item& p) const;
+  nc::Block corner_arc(const nc::Block& before, const nc::Block& after, Vec2 center, Vec2 from, Vec2 to,
+                       bool ccw) const;
+  void set_plane_words(nc::Block& r, Vec2 from, Vec2 to) const;
+  void fail(const nc::Block& b, ErrorId id, std::string why, std::vector<TrcOut>& out);
+
+  std::vector<config::ToolRecord> tools_;
+  std::vector<std::string> axis_names_;
+  const Planner* planner_ = nullptr;  // the one of the last push (diameter words)
+  // At most two items: the last one's end waits for the next motion; the
+  // one before it leaves only once the last one is known to be sound, so
+  // a bottleneck stops the program before the tool nears it.
+  std::vector<Item> queue_;
+  Plane plane_ = Plane::g17;
+  int ax_a_ = -1, ax_b_ = -1;    // channel axes of the plane
+  std::size_t ia_ = 0, ib_ = 1;  // their I/J/K indices
+  Vec2 prog_;                    // programmed end of the last plane motion
+};
+
+}  // namespace nck::prep

@@ -1,0 +1,281 @@
+// Tool radius compensation G40/G41/G42 through `nck run` (issue 13): the
+// tool-centre path in the trace against points worked out by hand on a
+// rectangle, a rounded rectangle, a pocket (examples/mill/contour_trc.nc,
+// D1 = 5 mm) and a lathe profile (examples/lathe/profile_trc.nc, D4 =
+// 0.8 mm), and the errors that stop a program before the tool gets there.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "cli_helpers.hpp"
+
+namespace nck::app {
+namespace {
+
+using namespace testing;
+using nlohmann::json;
+
+// F600 = 10 mm/s: a block's last cycle is at most 0.01 mm from its end.
+constexpr double kTol = 0.011;
+
+struct TrcRun {
+  CliResult cli;
+  std::filesystem::path dir;
+  std::vector<std::string> cols;             // trace header
+  std::vector<std::vector<double>> rows;     // trace, every cycle
+  std::map<long, double> block_t;            // N -> start time
+  std::vector<json> errors;
+  json final_state;
+};
+
+TrcRun run(const std::string& machine, const std::filesystem::path& program, const std::filesystem::path& dir) {
+  TrcRun r;
+  r.dir = dir;
+  r.cli = run_nck("run " + root() + "/examples/" + machine + " " + program.string() + " --events " +
+                  (dir / "e.jsonl").string() + " --trace " + (dir / "t.csv").string() + " --final " +
+                  (dir / "f.json").string());
+  const auto lines = split(read_file(dir / "t.csv"), '\n');
+  if (!lines.empty()) r.cols = split(lines[0], ',');
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    if (lines[i].empty()) continue;
+    std::vector<double> row;
+    for (const std::string& c : split(lines[i], ',')) row.push_back(std::stod(c));
+    r.rows.push_back(row);
+  }
+  for (const json& e : read_jsonl(dir / "e.jsonl")) {
+    if (e["ev"] == "block" && !e["n"].is_null()) r.block_t[e["n"].get<long>()] = e["t"];
+    if (e["ev"] == "error") r.errors.push_back(e);
+  }
+  if (std::filesystem::exists(dir / "f.json")) r.final_state = json::parse(read_file(dir / "f.json"));
+  return r;
+}
+
+TrcRun run_text(const std::string& machine, const std::string& name, const std::string& program) {
+  const auto dir = temp_dir(name);
+  std::ofstream(dir / "p.nc") << program;
+  return run(machine, dir / "p.nc", dir);
+}
+
+std::size_t col(const TrcRun& r, const std::string& name) {
+  for (std::size_t i = 0; i < r.cols.size(); ++i)
+    if (r.cols[i] == name) return i;
+  ADD_FAILURE() << "no trace column " << name;
+  return 0;
+}
+
+// The row of the last cycle before block n starts: where everything before it ended.
+const std::vector<double>& before_block(const TrcRun& r, long n) {
+  const double t = r.block_t.at(n);
+  std::size_t i = 0;
+  while (i + 1 < r.rows.size() && r.rows[i + 1][0] < t - 1e-9) ++i;
+  return r.rows[i];
+}
+
+struct Point {
+  long n;       // block
+  double a, b;  // where the tool centre is when it starts
+};
+
+void expect_points(const TrcRun& r, const std::string& a, const std::string& b, const std::vector<Point>& pts) {
+  const std::size_t ca = col(r, a), cb = col(r, b);
+  for (const Point& p : pts) {
+    ASSERT_TRUE(r.block_t.count(p.n)) << "no block event N" << p.n;
+    const auto& row = before_block(r, p.n);
+    EXPECT_NEAR(row[ca], p.a, kTol) << a << " before N" << p.n;
+    EXPECT_NEAR(row[cb], p.b, kTol) << b << " before N" << p.n;
+  }
+}
+
+// Trace rows in [start of n0, start of n1).
+std::vector<std::vector<double>> between(const TrcRun& r, long n0, long n1) {
+  std::vector<std::vector<double>> out;
+  for (const auto& row : r.rows)
+    if (row[0] >= r.block_t.at(n0) - 1e-9 && row[0] < r.block_t.at(n1) - 1e-9) out.push_back(row);
+  return out;
+}
+
+TEST(Trc, MillContoursFollowTheToolCentrePathsWorkedOutByHand) {
+  const auto dir = temp_dir("trc-mill");
+  const TrcRun r = run("mill", root() + "/examples/mill/contour_trc.nc", dir);
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  EXPECT_TRUE(r.errors.empty());
+  // 1. rectangle 60 x 40, tool left going clockwise = outside, radius 5
+  expect_points(r, "X", "Y",
+                {{50, -5, 0},     // N40 links onto X-5 (square to N50's direction +Y)
+                 {60, 0, 45},     // N50 ends at X-5 Y40, the corner arc R5 about X0 Y40 to X0 Y45
+                 {70, 65, 40},    // after N60 and the arc about X60 Y40
+                 {80, 60, -5},    // after N70 and the arc about X60 Y0
+                 {90, 0, -5},     // N80 ends square to its end: G40 follows
+                 {110, -20, -20}});  // N90 leaves to the programmed point
+  // 2. rounded rectangle R8: the tool follows at R13, tangent transitions
+  expect_points(r, "X", "Y",
+                {{120, -5, 8}, {130, -5, 32}, {140, 8, 45}, {150, 52, 45}, {160, 65, 32},
+                 {170, 65, 8}, {180, 52, -5}, {190, 8, -5}, {200, -5, 8}, {210, -20, -20}});
+  // 3. pocket, tool left going counter-clockwise = inside: corners at 5 mm from both walls
+  expect_points(r, "X", "Y",
+                {{320, 30, 5}, {330, 55, 5}, {340, 55, 35}, {350, 5, 35}, {360, 5, 5}, {370, 30, 5},
+                 {380, 30, 20}});
+  const std::size_t x = col(r, "X"), y = col(r, "Y");
+  // The corner arc after N50: every point above Y40 is 5 mm from the corner X0 Y40.
+  int on_arc = 0;
+  for (const auto& row : between(r, 50, 60))
+    if (row[y] > 40 + 1e-6) {
+      EXPECT_NEAR(std::hypot(row[x] - 0, row[y] - 40), 5, 1e-6);
+      ++on_arc;
+    }
+  EXPECT_GT(on_arc, 100);  // 7.85 mm of arc at <= 10 mm/s
+  // N130 (programmed R8 about X8 Y32) runs at R13.
+  for (const auto& row : between(r, 130, 140)) EXPECT_NEAR(std::hypot(row[x] - 8, row[y] - 32), 13, 1e-6);
+  // The pocket's walls are never nearer than the tool radius.
+  for (const auto& row : between(r, 320, 380)) {
+    EXPECT_GE(row[x], 5 - 1e-6);
+    EXPECT_LE(row[x], 55 + 1e-6);
+    EXPECT_GE(row[y], 5 - 1e-6);
+    EXPECT_LE(row[y], 35 + 1e-6);
+  }
+  EXPECT_EQ(r.final_state["channels"][0]["trc"], "G40");
+  EXPECT_EQ(r.final_state["channels"][0]["tool"]["d"], 1);
+  EXPECT_DOUBLE_EQ(r.final_state["channels"][0]["tool"]["radius_mm"].get<double>(), 5.0);
+}
+
+// The per-axis limits of the continuous path hold on compensated paths,
+// inserted corner arcs included (mill: vb_max 500 mm/s, a_max X/Y 3000 mm/s^2).
+TEST(Trc, AxisLimitsHoldOnTheCompensatedPath) {
+  const TrcRun r = run_text("mill", "trc-limits",
+                         "N10 G17 G90 D1\nN20 G0 X-20 Y-20\n"
+                         "N30 G41 G1 X0 Y0 F20000\nN40 Y40\nN50 X60\nN60 G2 X60 Y0 I0 J-20\nN70 G1 X0\n"
+                         "N80 G40 G1 X-20 Y-20\nN90 M30\n");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  const double dt = 0.001;
+  for (const std::string axis : {"X", "Y"}) {
+    const std::size_t c = col(r, axis);
+    for (std::size_t i = 2; i < r.rows.size(); ++i) {
+      const double v1 = (r.rows[i][c] - r.rows[i - 1][c]) / dt, v0 = (r.rows[i - 1][c] - r.rows[i - 2][c]) / dt;
+      ASSERT_LE(std::abs(v1), 500 + 0.01) << axis << " row " << i;
+      // + 5 mm/s^2: the trace's printed digits (as in the continuous-path tests)
+      ASSERT_LE(std::abs(v1 - v0) / dt, 3000 + 5.0) << axis << " row " << i;
+    }
+  }
+}
+
+TEST(Trc, InsideArcSmallerThanTheToolStopsBeforeTheToolMoves) {
+  // A pocket corner rounded R3 with a 5 mm tool on its inside: R3 - 5 < 0.
+  const TrcRun r = run_text("mill", "trc-small-arc",
+                         "N10 G17 G90 D1\nN20 G0 X30 Y20\nN30 G41 G1 Y0 F600\nN40 X57\n"
+                         "N50 G3 X60 Y3 R3\nN60 G1 Y40\nN70 G40 G1 X30 Y20\nN80 M30\n");
+  EXPECT_EQ(r.cli.exit_code, 1) << r.cli.output;
+  ASSERT_EQ(r.errors.size(), 1u) << r.cli.output;
+  EXPECT_EQ(r.errors[0]["id"], 90017);
+  EXPECT_EQ(r.errors[0]["line"], 5);
+  // Neither the approach nor the line into the arc ran: after the G0 the
+  // tool stayed at X30 Y20.
+  const std::size_t x = col(r, "X"), y = col(r, "Y");
+  ASSERT_FALSE(r.rows.empty());
+  for (const auto& row : r.rows) EXPECT_FALSE(row[x] > 30 - 1e-9 && row[y] < 20 - 1e-9) << row[0];
+  EXPECT_NEAR(r.rows.back()[x], 30, 1e-9);
+  EXPECT_NEAR(r.rows.back()[y], 20, 1e-9);
+}
+
+TEST(Trc, SlotNarrowerThanTheToolIsABottleneck) {
+  // Along Y0 with a slot 6 mm wide and 10 deep at X20..26; tool radius 5 on
+  // the open side: the slot's bottom would run backwards (X25 -> X21).
+  const TrcRun r = run_text("mill", "trc-slot",
+                         "N10 G17 G90 D1\nN20 G0 X-10 Y10\nN30 G41 G1 X0 Y0 F600\nN40 X20\nN50 Y-10\n"
+                         "N60 X26\nN70 Y0\nN80 X50\nN90 G40 G1 Y20\nN100 M30\n");
+  EXPECT_EQ(r.cli.exit_code, 1) << r.cli.output;
+  ASSERT_EQ(r.errors.size(), 1u) << r.cli.output;
+  EXPECT_EQ(r.errors[0]["id"], 930300);
+  EXPECT_EQ(r.errors[0]["line"], 6);  // N60, the slot's bottom
+  // The tool went along Y5 to X20 and no farther: never over the slot.
+  const std::size_t x = col(r, "X"), y = col(r, "Y");
+  for (const auto& row : r.rows) {
+    EXPECT_LE(row[x], 20 + 1e-9);
+    if (row[x] > 0) {
+      EXPECT_NEAR(row[y], 5, 1e-9);
+    }
+  }
+}
+
+TEST(Trc, FunctionsNotAllowedWhileTrcIsSelected) {
+  struct Case {
+    std::string block;
+    std::uint32_t id;
+  } cases[] = {
+      {"#CS ON [1][0,0,0,0,0,10]", 20802}, {"#TLC ON [5]", 20671}, {"#PSET X0", 20608},
+      {"G100 X100", 20049},             {"G18", 20133},        {"G92 X0", 930301},
+  };
+  for (const Case& c : cases) {
+    const TrcRun r = run_text("mill", "trc-forbidden",
+                           "N10 G17 G90 D1\nN20 G0 X0 Y0\nN30 G41 G1 X10 F600\nN40 X20\nN50 " + c.block +
+                               "\nN60 X30\nN70 G40 X40\nN80 M30\n");
+    ASSERT_EQ(r.errors.size(), 1u) << c.block << r.cli.output;
+    EXPECT_EQ(r.errors[0]["id"], c.id) << c.block;
+    EXPECT_EQ(r.errors[0]["line"], 5) << c.block;
+  }
+}
+
+TEST(Trc, SelectionInACircleAndRadiusChangeInACircleAreErrors) {
+  const TrcRun sel = run_text("mill", "trc-sel-arc", "N10 G17 G90 D1\nN20 G0 X0 Y0\nN30 G41 G2 X20 Y0 R10 F600\nN40 M30\n");
+  ASSERT_EQ(sel.errors.size(), 1u) << sel.cli.output;
+  EXPECT_EQ(sel.errors[0]["id"], 90008);
+  const TrcRun chg = run_text("mill", "trc-d-arc",
+                           "N10 G17 G90 D1\nN20 G0 X0 Y0\nN30 G41 G1 X10 F600\nN40 X20\nN50 D2 G2 X40 Y0 R10\n"
+                           "N60 G40 G1 X50\nN70 M30\n");
+  ASSERT_EQ(chg.errors.size(), 1u) << chg.cli.output;
+  EXPECT_EQ(chg.errors[0]["id"], 90047);
+  EXPECT_EQ(chg.errors[0]["line"], 5);
+}
+
+TEST(Trc, NewRadiusWhileActiveLinksOnALine) {
+  // D1 (5 mm) then D2 (4.25 mm) along +X, tool left: the D2 line leads from
+  // Y5 to Y4.25 square to the next element's start.
+  const TrcRun r = run_text("mill", "trc-d-change",
+                         "N10 G17 G90 D1\nN20 G0 X0 Y-10\nN30 G41 G1 Y0 F600\nN40 X20\nN50 D2 X30\n"
+                         "N60 X50\nN70 G40 G1 Y-10\nN80 M30\n");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  // N30 goes up +Y onto X0; the next element runs +X, so it ends at X0 Y5.
+  expect_points(r, "X", "Y", {{40, 0, 5}, {50, 20, 5}, {60, 30, 4.25}, {70, 50, 4.25}, {80, 50, -10}});
+}
+
+TEST(Trc, IncrementalWordsAreRewrittenAsIncrements) {
+  // The rectangle of contour_trc.nc in G91, its right side a half circle
+  // R20 (tangent to top and bottom): the tool runs it at R25.
+  const TrcRun r = run_text("mill", "trc-g91",
+                            "N10 G17 G90 D1\nN20 G0 X-20 Y-20\nN30 G91 G41 G1 X20 Y20 F600\nN40 Y40\nN50 X60\n"
+                            "N60 G2 X0 Y-40 I0 J-20\nN70 G1 X-60\nN80 G40 X-20 Y-20\nN90 G90 G0 X0 Y0\nN100 M30\n");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  expect_points(r, "X", "Y", {{40, -5, 0}, {50, 0, 45}, {60, 60, 45}, {70, 60, -5}, {80, 0, -5}, {90, -20, -20}});
+  const std::size_t x = col(r, "X"), y = col(r, "Y");
+  for (const auto& row : between(r, 60, 70)) EXPECT_NEAR(std::hypot(row[x] - 60, row[y] - 20), 25, 1e-6);
+}
+
+TEST(Trc, LatheProfileWithChamferAndRadius) {
+  const auto dir = temp_dir("trc-lathe");
+  const TrcRun r = run("lathe", root() + "/examples/lathe/profile_trc.nc", dir);
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  EXPECT_TRUE(r.errors.empty());
+  // G42 in the Z X plane, nose radius 0.8, X in radius (the program's
+  // diameters halved). Chamfer 45 deg: its offset is 0.8 / sqrt(2) in Z and X.
+  const double h = 0.8 / std::sqrt(2.0);
+  expect_points(r, "Z", "X",
+                {{50, 0 + h, 8 + h},   // N40 links onto the chamfer's offset start
+                 {60, -2, 10.8},       // N50 + the arc R0.8 about Z-2 X10 (outside corner)
+                 {70, -20, 10.8},      // N60, cylinder D20 at X10 + 0.8
+                 {80, -24.2, 15},      // N70, the fillet R5 run at R4.2 about Z-20 X15
+                 {90, -25, 20.8},      // N80 face + the arc about Z-25 X20
+                 {100, -40, 20.8},     // N90 ends square to its end
+                 {110, -40, 25}});     // N100 G40 to the programmed X50 (diameter)
+  const std::size_t z = col(r, "Z"), x = col(r, "X");
+  for (const auto& row : between(r, 70, 80)) EXPECT_NEAR(std::hypot(row[z] + 20, row[x] - 15), 4.2, 1e-6);
+  // The chamfer's corner arc keeps 0.8 mm from the corner Z-2 X10.
+  for (const auto& row : between(r, 50, 60))
+    if (row[z] < -2 + h - 1e-6) {
+      EXPECT_NEAR(std::hypot(row[z] + 2, row[x] - 10), 0.8, 1e-6);
+    }
+  EXPECT_EQ(r.final_state["channels"][0]["trc"], "G40");
+  EXPECT_EQ(r.final_state["channels"][0]["tool"]["d"], 4);
+}
+
+}  // namespace
+}  // namespace nck::app
