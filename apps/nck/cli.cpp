@@ -99,6 +99,8 @@ int main_cli(int argc, char** argv) {
   runc->add_flag("--realtime", run.realtime, "pace the cycles to the wall clock");
   runc->add_option("--clamp-index", run.clamp_index, "clamp-offset group pzv_grp[N] at program start");
   runc->add_flag("!--no-progress", run.progress, "no progress display on the terminal");
+  runc->add_option("--cycles", run.cycles, "search DIR for L CYCLE files (after the machine's cycle_path[i]); repeat")
+      ->allow_extra_args(false);
 
   ParseOptions parse;
   auto* parsec = app.add_subcommand("parse", "Decode an NC program and print diagnostics");
@@ -107,6 +109,8 @@ int main_cli(int argc, char** argv) {
   parsec->add_option("--machine", parse.machine, "take axis and spindle names from this machine");
   parsec->add_option("--channel", parse.channel, "channel of --machine (1-based)")
       ->check(CLI::PositiveNumber);
+  parsec->add_option("--cycles", parse.cycles, "search DIR for L CYCLE files (after --machine's cycle_path[i]); repeat")
+      ->allow_extra_args(false);
 
   FitOptions fit;
   auto* fitc = app.add_subcommand("fit-curve", "Coefficients b1 b2 b3 of a spindle acceleration curve");

@@ -214,6 +214,10 @@ bool parse_words(Cursor& c, BlockCtx& b, Words& w) {
       if (!parse_assignment(c, b, w)) return false;
       continue;
     }
+    if (ch == '@') {
+      if (!parse_cycle_word(c, b, w)) return false;
+      continue;
+    }
     if (ch == 'S') {
       if (!parse_spindle_word(c, b, w)) return false;
       ++w.word_count;

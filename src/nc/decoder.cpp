@@ -92,6 +92,11 @@ Decoder::Result Decoder::Impl::next() {
       if (do_return() == Outcome::error) return error_result();
       continue;
     }
+    if (modal_cycle_due) {  // a modal cycle after the block just handed out
+      modal_cycle_due = false;
+      if (start_cycle(modal_cycle.target, 0) == Outcome::error) return error_result();
+      continue;
+    }
     if (frames.empty()) {
       ended = true;
       return Result{Status::end, {}};
@@ -130,6 +135,7 @@ Decoder::Result Decoder::Impl::next() {
         return Result{Status::end, {}};
       case Outcome::block:
         flush_warnings();
+        note_modal_cycle(r.block);
         r.status = Status::block;
         return r;
     }
@@ -214,6 +220,7 @@ Outcome Decoder::Impl::process_block(Block& out) {
   }
   if (c.peek() == '$') return control(c);
   if (c.peek() == '#') {
+    if (disable_modal_cycle(c)) return Outcome::nothing;
     if (hash_keywords(c, "COMMENT", "BEGIN")) {
       comment_mode = true;
       comment_start = f.reader->block_pos();
@@ -241,6 +248,7 @@ Outcome Decoder::Impl::run_words(Cursor& c, std::optional<std::int64_t> n, Block
   Frame& f = frames.back();
   words.clear();
   if (n) words.n.set(*n, 0);
+  bctx.plane = modal.plane;  // a cycle's @X/@Y/@Z follow the plane
   if (!parse_words(c, bctx, words) || !check_words(words, bctx, modal)) return Outcome::error;
   const MWord* ret = words.find_m(17);
   if (!ret) ret = words.find_m(29);

@@ -113,6 +113,7 @@ TEST(ZeroAllocation, WholeExamplesRunThroughTickWithoutHeap) {
       {"examples/mill", {"examples/mill/caxis.nc"}},
       {"examples/mill", {"examples/mill/cylinder.nc"}},
       {"examples/mill", {"examples/mill/jumps.nc"}},
+      {"examples/mill", {"examples/mill/cycles.nc"}},
       {"examples/lathe", {"examples/lathe/turn.nc"}},
       {"examples/lathe", {"examples/lathe/gears.nc"}},
       {"examples/lathe", {"examples/lathe/diameter.nc"}},
