@@ -168,8 +168,13 @@ Outcome Decoder::Impl::process_block(Block& out) {
   Frame& f = frames.back();
   Cursor c{f.reader->text(), 0};
   c.skip_spaces();
-  if (comment_mode) {
-    if (hash_keywords(c, "COMMENT", "END")) comment_mode = false;
+  if (comment_mode) {  // only "[N..] #COMMENT END" counts (nesting is not enabled)
+    const std::size_t e = comment_phrase_end(c.s, "END");
+    if (e == std::string_view::npos) return Outcome::nothing;
+    comment_mode = false;
+    Cursor rest{c.s, e};
+    if (!rest.rest_empty())
+      return report(ErrorId::NcCommentEndNotAlone, rest.pos, "#COMMENT END must be alone in its block; move the rest to the next block");
     return Outcome::nothing;
   }
   c.skip_blanks();
@@ -221,9 +226,13 @@ Outcome Decoder::Impl::process_block(Block& out) {
   if (c.peek() == '$') return control(c);
   if (c.peek() == '#') {
     if (disable_modal_cycle(c)) return Outcome::nothing;
-    if (hash_keywords(c, "COMMENT", "BEGIN")) {
+    if (const std::size_t e = comment_phrase_end(c.s.substr(c.pos), "BEGIN"); e != std::string_view::npos) {
       comment_mode = true;
       comment_start = f.reader->block_pos();
+      Cursor rest{c.s, c.pos + e};
+      if (!rest.rest_empty())
+        return report(ErrorId::NcCommentBeginNotAlone, rest.pos,
+                      "#COMMENT BEGIN must be alone in its block; move the rest to the next block");
       return Outcome::nothing;
     }
     if (hash_keywords(c, "COMMENT", "END"))
