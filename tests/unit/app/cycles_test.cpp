@@ -86,7 +86,7 @@ TEST(CyclesRun, ExampleDrillsPecksAndMillsTheHelixWhereComputed) {
   double turned_deg = 0, last_deg = 0;
   bool on_helix = false;
   int helix_rows = 0, bottom_rows = 0;
-  std::vector<double> z_at_quarter;  // Z where the tool passes X80 Y37 (90, 450, 810 degrees)
+  std::vector<double> z_at_quarter;  // Z where the tool passes X80 Y37: 90, 450, 810 degrees and the bottom circle
   for (const Row& r : rows) {
     const double dx = r.x - 80, dy = r.y - 30;
     const double radius = std::hypot(dx, dy);
@@ -112,6 +112,7 @@ TEST(CyclesRun, ExampleDrillsPecksAndMillsTheHelixWhereComputed) {
       EXPECT_NEAR(r.z, -10, 1e-6);
       ++bottom_rows;
     }
+    if (turned_deg > 3 * 360 && std::fabs(r.x - 80) < 0.02 && dy > 0) z_at_quarter.push_back(r.z);
   }
   EXPECT_GT(helix_rows, 1000);
   EXPECT_GT(bottom_rows, 100);
