@@ -123,6 +123,8 @@ int main_cli(int argc, char** argv) {
   runc->add_option("--clamp-index", run.clamp_index, "clamp-offset group pzv_grp[N] at program start")
       ->check(number_at_least(0, true));
   runc->add_flag("!--no-progress", run.progress, "no progress display on the terminal");
+  runc->add_option("--cycles", run.cycles, "search DIR for L CYCLE files (after the machine's cycle_path[i]); repeat")
+      ->allow_extra_args(false);
 
   ParseOptions parse;
   auto* parsec = app.add_subcommand("parse", "Decode an NC program and print diagnostics");
@@ -130,6 +132,8 @@ int main_cli(int argc, char** argv) {
   parsec->add_flag("--json", parse.json, "print the decoded blocks as JSON lines");
   parsec->add_option("--machine", parse.machine, "take axis and spindle names from this machine");
   parsec->add_option("--channel", parse.channel, "channel of --machine (1-based)")->check(number_at_least(1, true));
+  parsec->add_option("--cycles", parse.cycles, "search DIR for L CYCLE files (after --machine's cycle_path[i]); repeat")
+      ->allow_extra_args(false);
 
   FitOptions fit;
   auto* fitc = app.add_subcommand("fit-curve", "Coefficients b1 b2 b3 of a spindle acceleration curve");

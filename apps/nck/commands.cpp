@@ -51,6 +51,7 @@ int parse_program(const ParseOptions& opt) {
     }
     cfg = prep::decoder_config(*r.machine, opt.channel - 1);
   }
+  for (const std::string& dir : opt.cycles) cfg.cycle_dirs.emplace_back(dir);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(opt.program, ec)) {  // bad usage, not an NC error
     fmt::print(stderr, "nck: error 940001: the program {} does not exist or is not a file\n", opt.program);

@@ -12,6 +12,7 @@ struct ParseOptions {
   bool json = false;
   std::string machine;   // optional: names from this machine
   std::size_t channel = 1;
+  std::vector<std::string> cycles;  // --cycles DIR
 };
 // nck parse PROGRAM: 0 without errors, 1 with errors, 2 bad machine.
 int parse_program(const ParseOptions& opt);

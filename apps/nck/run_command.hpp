@@ -17,6 +17,7 @@ struct RunOptions {
   std::uint32_t clamp_index = 0;  // clamp-offset group (pzv_grp) at program start
   bool realtime = false;
   bool progress = true;       // on a terminal only
+  std::vector<std::string> cycles;  // --cycles DIR: searched after startup.lis cycle_path[i]
 };
 
 // Exit codes (SPEC 2.2): 0 program end reached, 1 aborted by an NC error or a

@@ -109,6 +109,9 @@ LoadResult load_machine_unguarded(const std::filesystem::path& folder) {
   load_axes(f, st, m, axis_lists, r.diagnostics);
   load_channels(f, st, m, channel_lists, r.diagnostics);
   if (auto sim = read_named(f, st, "sim_data", ListKind::sim, r.diagnostics)) m.sim = detail::build_sim(*sim);
+  for (auto i : st.indices("cycle_path["))  // cycle search path, in index order
+    if (const ParamValue* v = st.find(fmt::format("cycle_path[{}]", i)); v && !v->text.empty())
+      m.cycle_paths.push_back(f.resolve(v->text));
   detail::check_machine(m, axis_lists, channel_lists, r.diagnostics);
   detail::add_c_axes(m);
   r.machine = std::move(m);

@@ -30,6 +30,7 @@ constexpr ParamInfo kTable[] = {
     {"ads_32_bit_comp_mode", "P-STUP-00175", S, T::integer, 0, 3, 1, 1, "—", "—", "HLI positions as scaled 32-bit values (1) or 64-bit (0, 2)."},
     {"sim_data", "nck", S, T::path, 0, 256, 0, 1, "path", "path", "Simulation list (PLC, drives, distance sensor), optional.", {}, {}, "''"},
     {"cycle_time_us", "nck", S, T::integer, 100, 100000, 1000, 1, "µs", "µs", "Interpolation cycle time."},
+    {"cycle_path[]", "nck", S, T::path, 0, 256, 0, 1, "path", "path", "Folder searched for L CYCLE files after the program's folder (relative to the machine folder), in index order.", {8}, {}, "''"},
 
     // ---- channel list: axes and spindles ---------------------------------
     {"grp_anzahl", "P-CHAN-00023", C, T::integer, 0, 1, 1, 1, "—", "—", "Number of axis groups (always 1); accepted."},

@@ -53,6 +53,19 @@ bool set_once(At<T>& slot, T v, std::size_t pos, BlockCtx& b, char addr) {
   return true;
 }
 
+// G functions of the ISG manual that nck does not have (tangential TRC,
+// acceleration/deceleration, TRC feeds, corner deceleration, mirroring,
+// TRC transitions, polynomial contouring, contour rotation, implicit
+// subroutine calls, software limits, splines, arcs in space ...): named as
+// not supported instead of "unknown".
+bool isg_g_function(int code) {
+  static constexpr int kCodes[] = {5,  8,  9,  10, 11, 12, 13, 20,  21,  22,  23,  25,  26, 61,
+                                   66, 68, 69, 98, 99, 150, 151, 163, 164, 165, 303};
+  for (int c : kCodes)
+    if (c == code) return true;
+  return (code >= 80 && code <= 89) || (code >= 800 && code <= 839);
+}
+
 bool integer_code(double v, int& code) {
   double r = std::round(v);
   if (std::fabs(v - r) > 1e-9 || r < 0 || r > 1e6) return false;
@@ -145,6 +158,9 @@ bool parse_letter_word(Cursor& c, BlockCtx& b, Words& w) {
       if (!integer_code(v, code))
         return b.x.err.fail(ErrorId::NcUnknownGCode, pos, fmt::format("G{} is not a G code", v));
       const std::optional<GCode> g = to_gcode(code);
+      if (!g && isg_g_function(code))
+        return b.x.err.fail(ErrorId::NcUnsupported, pos,
+                            fmt::format("G{} is an ISG function nck does not support", code));
       if (!g)
         return b.x.err.fail(ErrorId::NcUnknownGCode, pos,
                             fmt::format("G{} is unknown to nck; see docs/nc-language.md", code));
@@ -212,6 +228,10 @@ bool parse_words(Cursor& c, BlockCtx& b, Words& w) {
     }
     if (looks_like_lvalue(c)) {
       if (!parse_assignment(c, b, w)) return false;
+      continue;
+    }
+    if (ch == '@') {
+      if (!parse_cycle_word(c, b, w)) return false;
       continue;
     }
     if (ch == 'S') {

@@ -95,11 +95,14 @@ struct BlockCtx {
   // #DIST CTRL state kept by the decoder (facts D: mode changes, SET_POS).
   int dist_state = 0;             // 0 off, 1 on surface, 2 on const, 3 freeze
   bool dist_set_pos_known = false;
+  Plane plane = Plane::g17;       // the working plane before the block (cycle @X/@Y/@Z)
 };
 
 int find_axis(const BlockCtx& b, std::string_view name_upper);
 
 bool parse_words(Cursor& c, BlockCtx& b, Words& w);
+// A cycle's @ word (cycle_words.cpp): @P<n>=.., @X/@Y/@Z, @I/@J/@K, @S.
+bool parse_cycle_word(Cursor& c, BlockCtx& b, Words& w);
 // Spindle words: at 'S' (DIN or S..[ ]).
 bool parse_spindle_word(Cursor& c, BlockCtx& b, Words& w);
 // '#' commands; `exclusive` tells whether the rest of the block must be empty.

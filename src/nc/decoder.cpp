@@ -92,6 +92,11 @@ Decoder::Result Decoder::Impl::next() {
       if (do_return() == Outcome::error) return error_result();
       continue;
     }
+    if (modal_cycle_due) {  // a modal cycle after the block just handed out
+      modal_cycle_due = false;
+      if (start_cycle(modal_cycle.target, 0) == Outcome::error) return error_result();
+      continue;
+    }
     if (frames.empty()) {
       ended = true;
       return Result{Status::end, {}};
@@ -130,6 +135,7 @@ Decoder::Result Decoder::Impl::next() {
         return Result{Status::end, {}};
       case Outcome::block:
         flush_warnings();
+        note_modal_cycle(r.block);
         r.status = Status::block;
         return r;
     }
@@ -162,8 +168,13 @@ Outcome Decoder::Impl::process_block(Block& out) {
   Frame& f = frames.back();
   Cursor c{f.reader->text(), 0};
   c.skip_spaces();
-  if (comment_mode) {
-    if (hash_keywords(c, "COMMENT", "END")) comment_mode = false;
+  if (comment_mode) {  // only "[N..] #COMMENT END" counts (nesting is not enabled)
+    const std::size_t e = comment_phrase_end(c.s, "END");
+    if (e == std::string_view::npos) return Outcome::nothing;
+    comment_mode = false;
+    Cursor rest{c.s, e};
+    if (!rest.rest_empty())
+      return report(ErrorId::NcCommentEndNotAlone, rest.pos, "#COMMENT END must be alone in its block; move the rest to the next block");
     return Outcome::nothing;
   }
   c.skip_blanks();
@@ -214,9 +225,14 @@ Outcome Decoder::Impl::process_block(Block& out) {
   }
   if (c.peek() == '$') return control(c);
   if (c.peek() == '#') {
-    if (hash_keywords(c, "COMMENT", "BEGIN")) {
+    if (disable_modal_cycle(c)) return Outcome::nothing;
+    if (const std::size_t e = comment_phrase_end(c.s.substr(c.pos), "BEGIN"); e != std::string_view::npos) {
       comment_mode = true;
       comment_start = f.reader->block_pos();
+      Cursor rest{c.s, c.pos + e};
+      if (!rest.rest_empty())
+        return report(ErrorId::NcCommentBeginNotAlone, rest.pos,
+                      "#COMMENT BEGIN must be alone in its block; move the rest to the next block");
       return Outcome::nothing;
     }
     if (hash_keywords(c, "COMMENT", "END"))
@@ -241,6 +257,7 @@ Outcome Decoder::Impl::run_words(Cursor& c, std::optional<std::int64_t> n, Block
   Frame& f = frames.back();
   words.clear();
   if (n) words.n.set(*n, 0);
+  bctx.plane = modal.plane;  // a cycle's @X/@Y/@Z follow the plane
   if (!parse_words(c, bctx, words) || !check_words(words, bctx, modal)) return Outcome::error;
   const MWord* ret = words.find_m(17);
   if (!ret) ret = words.find_m(29);

@@ -6,6 +6,8 @@
 #include <memory>
 #include <set>
 #include <tuple>
+#include <unordered_map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +39,28 @@ struct Frame {
   std::vector<Ctl> ctl;
   SourcePos start;  // the program's or subroutine's first block ($GOTO searches from here)
   std::map<std::string, SourcePos> labels;  // $GOTO labels found so far ("N20", "[NAME]"), capped
+  // A cycle's frame: the caller's modal state, restored at the cycle's end.
+  std::optional<ModalState> cycle_modal;
+};
+
+// What a cycle call starts: a global file or a local section, and its @P
+// values. A modal call keeps it to start it again after motion blocks.
+struct CycleTarget {
+  std::string name;                        // as written after NAME=
+  bool local = false;                      // LL CYCLE: a %L section of the calling file
+  std::filesystem::path path;              // the file found (global) or the calling file (local)
+  std::uint16_t file_id = 0;
+  std::shared_ptr<const std::string> mem;  // cached text of a local cycle's file
+  std::shared_ptr<const ProgramIndex> index;
+  SourcePos body;                          // a local cycle's first block
+  std::unordered_map<std::int64_t, double> params;
+};
+
+struct ModalCycle {
+  bool active = false;
+  bool every_block = false;  // MODAL_BLOCK: after every block, else after motion blocks (MODAL_MOVE)
+  std::size_t depth = 0;     // frames.size() of the level that called it
+  CycleTarget target;
 };
 
 // What processing one block led to.
@@ -71,6 +95,8 @@ struct Decoder::Impl {
   std::uint64_t loop_iterations = 0;  // of all loops of the run: one budget (max_loop_iterations)
   std::set<std::tuple<std::uint32_t, std::string, std::uint32_t>> reported;  // lint: id, file, line once
   std::uint64_t reentry_offset = 0;
+  detail::ModalCycle modal_cycle;  // MODAL_MOVE / MODAL_BLOCK call in effect
+  bool modal_cycle_due = false;    // start it before the next block
 
   Result next();
 
@@ -92,11 +118,19 @@ struct Decoder::Impl {
   // goto_jump.cpp: $GOTO N<expr> / $GOTO [NAME]; `c` after the keyword
   detail::Outcome go_to(detail::Cursor& c, std::size_t pos);
   // subprograms.cpp
+  bool open_frame(const std::filesystem::path& p, bool cached, detail::Frame& f);
   bool open_main(const std::filesystem::path& p);
   detail::Outcome call(detail::Cursor& c, bool local);
   detail::Outcome end_of_section();
   detail::Outcome do_return();
   std::string unclosed_message(std::string_view section) const;
+  // cycle_call.cpp: `c` at CYCLE after L / LL
+  detail::Outcome cycle_call(detail::Cursor& c, bool local, std::size_t at);
+  detail::Outcome start_cycle(const detail::CycleTarget& t, std::size_t at);
+  void restore_after_cycle(const ModalState& caller);
+  // After handing out `b`: is the modal cycle due?
+  void note_modal_cycle(const Block& b);
+  bool disable_modal_cycle(detail::Cursor c);  // "#DISABLE MODAL CYCLE" block?
   // var_declarations.cpp
   detail::Outcome declare(detail::Cursor& c);
 };

@@ -165,7 +165,8 @@ bool eval_primary(Cursor& c, ExprCtx& x, double& out) {
     if (!parse_lvalue(c, x, lv)) return false;
     return read_lvalue(lv, x, out);
   }
-  if (ch == '@') return fail(x, ErrorId::NcUnsupported, at, "cycle parameters @P are not supported");
+  if (ch == '@')
+    return fail(x, ErrorId::NcCycleWord, at, "only @P<n> and @P[<expr>] have a value in an expression");
   if (is_alpha(ch)) {
     std::string_view id = c.read_ident();
     if (iequals(id, "TRUE")) { out = 1; return true; }
@@ -354,14 +355,34 @@ bool eval_value(Cursor& c, ExprCtx& x, double& out) {
   return ok;
 }
 
+namespace {
+
+// The manual numbers transfer parameters @P1..@P200.
+bool check_cycle_index(const Lvalue& lv, ExprCtx& x) {
+  if (lv.p >= 1 && lv.p <= 200) return true;
+  return fail(x, ErrorId::NcCycleWord, lv.pos, fmt::format("@P{} is not a transfer parameter (@P1..@P200)", lv.p));
+}
+
+bool cycle_outside(const Lvalue& lv, ExprCtx& x) {
+  return fail(x, ErrorId::NcCycleParamOutsideCycle, lv.pos,
+              fmt::format("@P{} belongs to a cycle: read or write it only inside the cycle or in its call", lv.p));
+}
+
+}  // namespace
+
 bool looks_like_lvalue(const Cursor& c) {
   char a = upper(c.peek()), b = c.peek(1);
   if (a == 'P' && (is_digit(b) || b == '[')) return true;
+  if (a == '@' && upper(b) == 'P' && (is_digit(c.peek(2)) || c.peek(2) == '[')) return true;
   return a == 'V' && b == '.' && (is_alpha(c.peek(2)) || c.peek(2) == '_');
 }
 
 bool parse_lvalue(Cursor& c, ExprCtx& x, Lvalue& lv) {
   lv.pos = c.pos;
+  if (c.peek() == '@' && upper(c.peek(1)) == 'P') {
+    ++c.pos;
+    lv.is_cycle_p = true;
+  }
   if (upper(c.peek()) == 'P') {
     ++c.pos;
     lv.is_p = true;
@@ -369,7 +390,7 @@ bool parse_lvalue(Cursor& c, ExprCtx& x, Lvalue& lv) {
       long long idx = 0;
       if (!eval_index(c, x, idx)) return false;
       lv.p = idx;
-      return true;
+      return !lv.is_cycle_p || check_cycle_index(lv, x);
     }
     std::int64_t v = 0;
     int n = 0;
@@ -379,6 +400,7 @@ bool parse_lvalue(Cursor& c, ExprCtx& x, Lvalue& lv) {
     }
     if (n == 0) return fail(x, ErrorId::NcBadValue, lv.pos, "P parameter number expected");
     lv.p = v;
+    if (lv.is_cycle_p) return check_cycle_index(lv, x);
     return true;
   }
   if (upper(c.peek()) == 'V' && c.peek(1) == '.') return parse_var_key(c, x, lv.key);
@@ -386,6 +408,14 @@ bool parse_lvalue(Cursor& c, ExprCtx& x, Lvalue& lv) {
 }
 
 bool read_lvalue(const Lvalue& lv, ExprCtx& x, double& out) {
+  if (lv.is_cycle_p) {
+    const VarStatus s = x.vars.read_cycle_p(lv.p, out);
+    if (s == VarStatus::ok) return true;
+    if (s == VarStatus::undefined)
+      return fail(x, ErrorId::NcCycleParamMissing, lv.pos,
+                  fmt::format("the cycle reads @P{}, which its call does not give", lv.p));
+    return cycle_outside(lv, x);
+  }
   if (lv.is_p) {
     if (x.vars.read_p(lv.p, out) == VarStatus::ok) return true;
     return fail(x, ErrorId::NcUndefinedVariable, lv.pos,
@@ -395,6 +425,7 @@ bool read_lvalue(const Lvalue& lv, ExprCtx& x, double& out) {
 }
 
 bool write_lvalue(const Lvalue& lv, ExprCtx& x, double v) {
+  if (lv.is_cycle_p) return x.vars.write_cycle_p(lv.p, v) == VarStatus::ok || cycle_outside(lv, x);
   if (lv.is_p) {
     x.vars.write_p(lv.p, v);
     return true;

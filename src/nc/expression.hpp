@@ -25,11 +25,12 @@ bool eval_value(Cursor& c, ExprCtx& x, double& out);
 // Something that can be assigned: P<n>, P[expr] or a V. variable.
 struct Lvalue {
   bool is_p = false;
+  bool is_cycle_p = false;  // @P<n>: a cycle's transfer parameter (p holds n)
   std::int64_t p = 0;
   std::string key;     // normalised V. name
   std::size_t pos = 0; // where it was written
 };
-// At 'P' or 'V.': parses the target name (indices evaluated). false + error otherwise.
+// At 'P', '@P' or 'V.': parses the target name (indices evaluated). false + error otherwise.
 bool parse_lvalue(Cursor& c, ExprCtx& x, Lvalue& lv);
 bool looks_like_lvalue(const Cursor& c);
 bool read_lvalue(const Lvalue& lv, ExprCtx& x, double& out);

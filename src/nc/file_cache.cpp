@@ -39,10 +39,36 @@ bool parse_header(std::string_view t, bool& local, std::string& name) {
   return true;
 }
 
+std::size_t comment_phrase_end(std::string_view block, std::string_view which) {
+  Cursor c{block, 0};
+  c.skip_spaces();
+  if (upper(c.peek()) == 'N' && is_digit(c.peek(1))) {
+    ++c.pos;
+    while (is_digit(c.peek())) ++c.pos;
+    c.match(':');
+    c.skip_spaces();
+  }
+  if (!c.match('#')) return std::string_view::npos;
+  c.skip_spaces();
+  if (!c.match_keyword("COMMENT")) return std::string_view::npos;
+  c.skip_spaces();
+  if (!c.match_keyword(which)) return std::string_view::npos;
+  return c.pos;
+}
+
 ProgramIndex scan_sections(SourceReader& r, std::size_t max_chars) {
   ProgramIndex idx;
+  bool in_comment = false;
   while (r.read_block(max_chars)) {
     const std::string& t = r.text();
+    if (in_comment) {
+      in_comment = comment_phrase_end(t, "END") == std::string_view::npos;
+      continue;
+    }
+    if (comment_phrase_end(t, "BEGIN") != std::string_view::npos) {
+      in_comment = true;
+      continue;
+    }
     std::size_t p = t.find_first_not_of(" \t");
     if (p == std::string::npos || t[p] != '%') continue;
     Section s;

@@ -8,6 +8,7 @@
 #include <list>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "source_reader.hpp"
@@ -27,7 +28,12 @@ struct ProgramIndex {
   const Section* local(const std::string& name_upper) const;
 };
 
-// Scans a reader from its current position to the end for section headers.
+// A "#COMMENT BEGIN" / "#COMMENT END" block (which = "BEGIN" / "END"; an
+// N number may precede it): the position after the phrase, or npos.
+std::size_t comment_phrase_end(std::string_view block, std::string_view which);
+
+// Scans a reader from its current position to the end for section headers
+// (a % line inside #COMMENT BEGIN .. END is no header).
 ProgramIndex scan_sections(SourceReader& r, std::size_t max_chars);
 // Name of a "%L name" / "%name" header (comments stripped, upper case).
 bool parse_header(std::string_view text, bool& local, std::string& name);

@@ -290,6 +290,25 @@ constexpr HashEntry kHashCommands[] = {
     {{"FLUSH"}, parse_ignored},
 };
 
+// Real ISG # functions nck does not have: named as such, never "unknown".
+// `c` after the '#'; returns "#RT CYCLE", "#MC_MOVEPATH" ... or "".
+std::string unsupported_hash(Cursor c) {
+  static constexpr std::array<std::string_view, 2> kPhrases[] = {
+      {"RT", "CYCLE"}, {"WAIT", "SYN"}, {"SIGNAL", "SYN"}, {"HSC", ""}, {"CONTOUR", "MODE"},
+      {"SLOPE", ""},   {"TRAFO", ""},   {"CHANNEL", "INIT"}, {"FILE", "NAME"}, {"RETAIN", "CYCLE"}};
+  c.skip_spaces();
+  if ((upper(c.peek()) == 'M' && upper(c.peek(1)) == 'C' && c.peek(2) == '_'))
+    return "#" + to_upper(c.read_ident());
+  for (const auto& p : kPhrases) {
+    Cursor k = c;
+    if (!k.match_keyword(p[0])) continue;
+    k.skip_spaces();
+    if (!p[1].empty() && !k.match_keyword(p[1])) continue;
+    return p[1].empty() ? fmt::format("#{}", p[0]) : fmt::format("#{} {}", p[0], p[1]);
+  }
+  return "";
+}
+
 }  // namespace
 
 bool parse_hash(Cursor& c, BlockCtx& b, Words& w, bool& exclusive) {
@@ -305,6 +324,8 @@ bool parse_hash(Cursor& c, BlockCtx& b, Words& w, bool& exclusive) {
     if (h.yields_command) w.hash = std::move(h.cmd);
     return true;
   }
+  if (std::string fn = unsupported_hash(c); !fn.empty())
+    return b.x.err.fail(ErrorId::NcUnsupported, pos, fmt::format("{} is an ISG function nck does not support", fn));
   std::string name = to_upper(c.read_ident());
   return b.x.err.fail(ErrorId::NcUnknownHashCommand, pos, fmt::format("#{} is not a # command nck knows", name));
 }

@@ -10,11 +10,10 @@ namespace nck::nc {
 
 using namespace detail;
 
-namespace {
-
 // Opens `p` for a frame: from the cache when enabled, else streamed from
 // disk with a separate pass for the section index.
-bool open_frame(Decoder::Impl& d, const std::filesystem::path& p, bool cached, Frame& f) {
+bool Decoder::Impl::open_frame(const std::filesystem::path& p, bool cached, Frame& f) {
+  Decoder::Impl& d = *this;
   f.path = p;
   f.reader = std::make_unique<SourceReader>();
   if (cached && d.cache.enabled()) {
@@ -31,12 +30,10 @@ bool open_frame(Decoder::Impl& d, const std::filesystem::path& p, bool cached, F
   return true;
 }
 
-}  // namespace
-
 bool Decoder::Impl::open_main(const std::filesystem::path& p) {
   Frame f;
   f.file_id = file_id(p.string());
-  if (!open_frame(*this, p, false, f)) {
+  if (!open_frame(p, false, f)) {
     diags.push_back(make_diagnostic(ErrorId::NcFileUnreadable, SourceLoc{p.string(), 0, 0},
                                     fmt::format("cannot read the NC program '{}'", p.string())));
     fatal = true;
@@ -52,8 +49,7 @@ Outcome Decoder::Impl::call(Cursor& c, bool local) {
   std::size_t at = c.pos;
   c.pos += local ? 2 : 1;
   c.skip_spaces();
-  if (c.peek_keyword("CYCLE"))
-    return report(ErrorId::NcUnsupported, at, "cycle calls (L CYCLE [..]) are not supported by nck");
+  if (c.peek_keyword("CYCLE")) return cycle_call(c, local, at);
   std::string name;
   if (local) {
     // The name runs to a comment or the end of the block (names may hold blanks).
@@ -94,7 +90,7 @@ Outcome Decoder::Impl::call(Cursor& c, bool local) {
   } else {
     std::filesystem::path p(name);
     if (p.is_relative()) p = caller.path.parent_path() / p;
-    if (!open_frame(*this, p, true, f))
+    if (!open_frame(p, true, f))
       return report(ErrorId::NcSubroutineNotFound, at,
                     fmt::format("subroutine file '{}' not found (looked for {})", name, p.string()));
     f.file_id = file_id(p.string());
@@ -112,8 +108,10 @@ Outcome Decoder::Impl::call(Cursor& c, bool local) {
 Outcome Decoder::Impl::do_return() {
   if (!frames.back().ctl.empty())
     return report(ErrorId::NcUnclosedControl, 0, unclosed_message("subroutine"), true);
+  if (frames.back().cycle_modal) restore_after_cycle(*frames.back().cycle_modal);
   frames.pop_back();
   vars.pop_scope();
+  if (modal_cycle.active && frames.size() < modal_cycle.depth) modal_cycle = {};  // its level ended
   return Outcome::nothing;
 }
 

@@ -39,6 +39,23 @@ Variables::Variables(std::vector<std::string> axis_names, int max_zero_index, st
     : axes_(std::move(axis_names)), max_zero_index_(max_zero_index), max_elements_(max_elements) {
   for (auto& a : axes_) a = to_upper(a);
   locals_.emplace_back();
+  cycles_.emplace_back();
+}
+
+VarStatus Variables::read_cycle_p(std::int64_t idx, double& out) const {
+  const CycleScope& c = cycles_.back();
+  if (!c.active) return VarStatus::undeclared;
+  auto it = c.p.find(idx);
+  if (it == c.p.end()) return VarStatus::undefined;
+  out = it->second;
+  return VarStatus::ok;
+}
+
+VarStatus Variables::write_cycle_p(std::int64_t idx, double v) {
+  CycleScope& c = cycles_.back();
+  if (!c.active) return VarStatus::undeclared;
+  c.p[idx] = v;
+  return VarStatus::ok;
 }
 
 VarStatus Variables::read_p(std::int64_t idx, double& out) const {

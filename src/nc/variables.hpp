@@ -44,11 +44,28 @@ class Variables {
   bool known_kernel(const std::string& key) const;
   void set_state_reader(const KernelStateReader* reader) { state_reader_ = reader; }
 
-  // V.L. scope per call level.
-  void push_scope() { locals_.emplace_back(); }
-  void pop_scope() {
-    if (locals_.size() > 1) locals_.pop_back();
+  // V.L. scope per call level; a cycle call's level also holds its @P
+  // transfer parameters (readable only while that level is the innermost).
+  using CycleParams = std::unordered_map<std::int64_t, double>;
+  void push_scope() {
+    locals_.emplace_back();
+    cycles_.emplace_back();
   }
+  void push_cycle_scope(CycleParams params) {
+    push_scope();
+    cycles_.back().active = true;
+    cycles_.back().p = std::move(params);
+  }
+  void pop_scope() {
+    if (locals_.size() > 1) {
+      locals_.pop_back();
+      cycles_.pop_back();
+    }
+  }
+  bool in_cycle() const { return cycles_.back().active; }
+  // @P<idx> of the innermost cycle: ok, undefined (not given), undeclared (not in a cycle).
+  VarStatus read_cycle_p(std::int64_t idx, double& out) const;
+  VarStatus write_cycle_p(std::int64_t idx, double v);
 
  private:
   using Map = std::unordered_map<std::string, VarValue>;
@@ -63,6 +80,11 @@ class Variables {
   std::size_t max_elements_;
   std::unordered_map<std::int64_t, double> p_;
   std::vector<Map> locals_;  // V.L. and V.CYC., one map per call level
+  struct CycleScope {
+    bool active = false;  // this level is a cycle
+    CycleParams p;        // its @P values
+  };
+  std::vector<CycleScope> cycles_;  // parallel to locals_
   Map globals_;              // V.P., V.S.
   std::unordered_map<std::string, double> kernel_;  // V.G., V.A.
   const KernelStateReader* state_reader_ = nullptr;  // the channel's state variables

@@ -22,6 +22,7 @@ nc::DecoderConfig decoder_config(const config::Machine& m, std::size_t ch) {
   d.use_cached_files = (c.decoder_function & config::decoder_fct::FCT_USE_CACHED_FILES) != 0;
   d.max_cache_number = c.max_cache_number;
   d.max_cache_size_kb = c.max_cache_size_kb;
+  d.cycle_dirs = m.cycle_paths;
   return d;
 }
 

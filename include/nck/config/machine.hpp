@@ -326,6 +326,9 @@ struct Machine {
   std::filesystem::path folder;
   std::uint32_t cycle_time_us = 1000;
   bool ads_32_bit_comp_mode = true;  // P-STUP-00175
+  // Folders searched for cycle files after the program's folder:
+  // startup.lis cycle_path[i], then the command line's --cycles.
+  std::vector<std::filesystem::path> cycle_paths;
   std::vector<ChannelConfig> channels;
   std::vector<ChannelData> channel_data;  // parallel to channels
   std::vector<AxisConfig> axes;           // all axis lists, in achs_mds order

@@ -11,6 +11,11 @@ enum class Plane : std::uint8_t { g17 = 17, g18 = 18, g19 = 19 };
 // Channel axis indices of a plane: the two plane axes (positive rotation
 // turns `first` towards `second`) and the tool axis normal to it. The first
 // three channel axes are X Y Z; I J K follow the same indices.
+// The main axes by name, in the order of plane_axes' indices (also the
+// I J K indices): the planner finds them in the channel by these names, the
+// decoder maps a cycle's @X/@Y/@Z to them.
+inline constexpr const char* kMainAxisNames[] = {"X", "Y", "Z"};
+
 struct PlaneAxes {
   int first;
   int second;

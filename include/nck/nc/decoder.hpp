@@ -38,6 +38,9 @@ struct DecoderConfig {
   bool dist_ctrl_available = true;            // FCT_3D_DIST_CTRL (else #DIST CTRL -> 310015)
   bool continue_after_error = false;          // lint mode: skip a bad block and go on
   std::size_t max_block_chars = 4000;         // facts C3
+  // Cycle search path after the program's folder: the machine's
+  // cycle_path[i] folders (startup.lis), then --cycles DIR.
+  std::vector<std::filesystem::path> cycle_dirs;
 };
 
 

@@ -91,9 +91,8 @@ class Planner final : public nc::KernelStateReader {
   double programmed_radius(const nc::Block& b, std::size_t j) const;
   std::string plc_control_violation(const nc::Block& b) const;
   int axis_named(const char* name) const;
-  // The main axes are found by name, X Y Z in the order of plane_axes'
-  // indices (which are also the I J K indices).
-  static constexpr const char* kMainAxisNames[] = {"X", "Y", "Z"};
+  // The main axes are found by name: nck::kMainAxisNames (core/plane.hpp).
+  static constexpr const auto& kMainAxisNames = nck::kMainAxisNames;
   // spindle-path couplings (planner_links.cpp)
   void find_main_spindle(const std::vector<std::int8_t>& spindles);
   void note_spindle_words(const nc::Block& b);

@@ -129,6 +129,7 @@ TEST(ZeroAllocation, WholeExamplesRunThroughTickWithoutHeap) {
       {"examples/mill", {"examples/mill/jumps.nc"}},
       {"examples/mill", {"examples/mill/contour_trc.nc"}},
       {"examples/lathe", {"examples/lathe/profile_trc.nc"}},
+      {"examples/mill", {"examples/mill/cycles.nc"}},
       {"examples/lathe", {"examples/lathe/turn.nc"}},
       {"examples/lathe", {"examples/lathe/gears.nc"}},
       {"examples/lathe", {"examples/lathe/diameter.nc"}},

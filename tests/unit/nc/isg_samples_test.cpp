@@ -12,7 +12,8 @@ std::filesystem::path samples() {
 class NcIsgSamples : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (!std::filesystem::is_directory(samples())) GTEST_SKIP() << "no " << samples();
+    // A missing corpus is a failure, never a skip (the fuzz seeds need it too).
+    if (!std::filesystem::is_directory(samples())) GTEST_FAIL() << "no " << samples();
   }
 };
 
