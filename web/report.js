@@ -123,6 +123,7 @@
   function timeplots() {
     const panels = new Map();
     D.series.forEach((s, i) => {
+      if (s.kind === "c_axis" && !D.meta.c_axis) return;  // follows the turning spindle: not an axis motion
       const v = D.ts.v[i];
       let lo = Infinity, hi = -Infinity;
       for (const x of v) { if (x < lo) lo = x; if (x > hi) hi = x; }

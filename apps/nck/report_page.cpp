@@ -130,8 +130,8 @@ std::string ReportWriter::data_json(double end_s, int exit_code) const {
   s += fmt::format(R"("machine":{},"plc":{},"programs":{},"end_s":)", quoted(machine_), quoted(plc_),
                    array_of(programs_, [](std::string& o, const std::string& p) { o += quoted(p); }));
   append_number(s, end_s, 4);
-  s += fmt::format(R"(,"exit_code":{},"end":{},"cycle_s":{},"errors":{},"warnings":{},"stride":{}}})", exit_code,
-                   quoted(end_reason_), cycle_s_, errors_, warnings_, series_.stride());
+  s += fmt::format(R"(,"exit_code":{},"end":{},"cycle_s":{},"errors":{},"warnings":{},"stride":{},"c_axis":{}}})",
+                   exit_code, quoted(end_reason_), cycle_s_, errors_, warnings_, series_.stride(), c_axis_used_);
   s += ",\"files\":" + array_of(files_, [](std::string& o, const SourceFile& f) { o += quoted(f.name); });
   s += ",\"spindles\":" + array_of(spindles_, [](std::string& o, const std::string& n) { o += quoted(n); });
   s += ",\"series\":" + array_of(series_meta_, [](std::string& o, const std::string& m) { o += m; });

@@ -8,6 +8,7 @@
 
 #include "machine_names.hpp"
 #include "nck/core/utf8.hpp"
+#include "nck/spindle/spindle_status.hpp"
 #include "output_writers.hpp"
 
 namespace nck::app {
@@ -65,9 +66,10 @@ void scan_g_words(const std::string& text, int& motion, int& plane) {
 
 }  // namespace
 
-void ReportWriter::start(const config::Machine& m, const RunOptions& opt, double cycle_s) {
+void ReportWriter::start(const config::Machine& m, const RunOptions& opt, const kernel::Kernel& k) {
   enabled_ = !opt.report.empty();
   if (!enabled_) return;
+  const double cycle_s = k.cycle_time_s();
   cycle_s_ = cycle_s;
   machine_ = opt.machine;
   plc_ = opt.plc;
@@ -79,10 +81,10 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, double
     const auto& axes = m.channels[c].axes;
     for (std::size_t j = 0; j < axes.size(); ++j) {
       static constexpr const char* kMain[] = {"X", "Y", "Z"};
-      for (int k = 0; k < 3; ++k)
-        if (axes[j].name == kMain[k] && ch.axis[k] < 0) {
-          ch.axis[k] = static_cast<int>(j);
-          ch.axis_name[k] = columns[col + j];
+      for (int a = 0; a < 3; ++a)
+        if (axes[j].name == kMain[a] && ch.axis[a] < 0) {
+          ch.axis[a] = static_cast<int>(j);
+          ch.axis_name[a] = columns[col + j];
         }
     }
     const std::string ch_name = fmt::format("channel {}", c + 1);
@@ -92,13 +94,22 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, double
     decimals_.push_back(1);
     for (std::size_t j = 0; j < axes.size(); ++j) {
       const bool rot = is_rotary_name(axes[j].name);
-      series_meta_.push_back(fmt::format(R"({{"name":{},"unit":"{}","panel":{},"kind":"axis","ch":{}}})",
-                                         quoted(columns[col + j]), rot ? "deg" : "mm",
+      // the C axis of #CAX follows the spindle while it turns: plotted only when #CAX was used
+      const bool c_axis = static_cast<int>(j) == m.channels[c].c_axis;
+      series_meta_.push_back(fmt::format(R"({{"name":{},"unit":"{}","kind":"{}","panel":{},"ch":{}}})",
+                                         quoted(columns[col + j]), rot ? "deg" : "mm", c_axis ? "c_axis" : "axis",
                                          quoted(ch_name + (rot ? ": rotary axes" : ": axis positions (MCS)")), c + 1));
       decimals_.push_back(4);
     }
     col += axes.size();
     ch.axis_count = axes.size();
+    if (c < k.channel_count()) {  // the path starts where the axes stand
+      const kernel::ChannelState st = k.channel_state(c);
+      std::array<double, 3> p{};
+      for (int a = 0; a < 3; ++a)
+        if (ch.axis[a] >= 0) p[a] = st.axis_mcs[static_cast<std::size_t>(ch.axis[a])];
+      ch.path.add(p, 0, 0, false);
+    }
     channels_.push_back(std::move(ch));
   }
   const std::vector<SpindleName> spindles = machine_spindles(m);
@@ -175,6 +186,9 @@ void ReportWriter::take(const kernel::Event& e, const RunNames& names) {
       waits_.push_back(std::move(w));
       break;
     }
+    case K::spindle:
+      if (e.spindle_mode == static_cast<std::uint8_t>(spindle::SpindleMode::axis)) c_axis_used_ = true;
+      break;
     case K::wait_end:
       if (ch.open_wait) waits_[*ch.open_wait].t1 = e.t_s;
       ch.open_wait.reset();

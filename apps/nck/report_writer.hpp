@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "nck/config/machine.hpp"
+#include "nck/kernel/kernel.hpp"
 #include "nck/kernel/tick_io.hpp"
 #include "report_series.hpp"
 #include "run_command.hpp"
@@ -24,7 +25,9 @@ struct RunNames;
 class ReportWriter {
  public:
   // setup: what to plot; `opt.report` empty makes every call a no-op.
-  void start(const config::Machine& m, const RunOptions& opt, double cycle_s);
+  // `k` configured, before the first cycle: its cycle time and the axes'
+  // start positions (where each backplot begins).
+  void start(const config::Machine& m, const RunOptions& opt, const kernel::Kernel& k);
   // Once per cycle, after its events went to event().
   void sample(std::uint64_t cycle, const kernel::TickOutput& out, const RunNames& names);
   // One line of the event log (the JSON text of an event).
@@ -101,6 +104,7 @@ class ReportWriter {
   std::vector<std::string> events_;       // JSON lines for the event table
   std::size_t table_blocks_ = 0, events_dropped_ = 0, errors_ = 0, warnings_ = 0;
   std::string end_reason_;
+  bool c_axis_used_ = false;  // a spindle was in C-axis mode (#CAX)
 };
 
 }  // namespace nck::app

@@ -264,7 +264,7 @@ int run_simulation(const RunOptions& opt) {
     fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppOutputFile), *open_error);
     return 2;
   }
-  out.report.start(m, opt, run.kernel().cycle_time_s());
+  out.report.start(m, opt, run.kernel());
   RunNames names;
   names.run = &run;
 

@@ -61,9 +61,10 @@ export function expectations(longProgram, blocks, longCaps) {
     },
     {
       name: `common-${blocks}`, machine: "examples/mill", programs: [longProgram], minPlots: 3, caps: longCaps,
-      // the circle of radius 50 (complete after 629 blocks), Z from -1 to 5
-      backplots: [{ view: "XY", min: [blocks > 629 ? -50 : null, blocks > 629 ? -50 : null, -1],
-                    max: [50, blocks > 629 ? 50 : null, 5], tol: 0.02 }],
+      // the circle of radius 50 (complete after 629 blocks), Z from -1 to 5, under G54 of the mill
+      // (zero.lis: X +100, Y +50, Z -150): X 50..150, Y 0..100, Z -151..-145 in machine
+      // coordinates, and the start at the machine zero
+      backplots: [{ view: "XY", min: [0, 0, -151], max: [150, 100, 0], tol: 0.02 }],
     },
   ];
 }

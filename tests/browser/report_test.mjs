@@ -89,13 +89,20 @@ async function check(browser, c) {
   });
   if (c.wait) {
     // hover the middle of the wait in the panel that shades it; read the tooltip
-    const tipText = await page.evaluate(async (want) => {
+    const found = await page.evaluate((want) => {
       const r = window.nckReport;
       const p = r.plots.find((p) => p.title === want.panel);
       if (!p) return "no panel " + want.panel;
       const w = p.waits.find((w) => w.reason === want.reason);
       if (!w) return "no wait " + want.reason;
+      p.u.root.scrollIntoView({ block: "center" });
       p.u.setScale("x", { min: Math.max(0, w.t0 - 1), max: w.t1 + 1 });
+      return "";
+    }, c.wait);
+    await page.waitForTimeout(200);  // uPlot redraws on the next frame
+    const tipText = found || await page.evaluate((want) => {
+      const p = window.nckReport.plots.find((p) => p.title === want.panel);
+      const w = p.waits.find((w) => w.reason === want.reason);
       const x = p.u.valToPos((w.t0 + w.t1) / 2, "x"), rect = p.u.over.getBoundingClientRect();
       return { x: rect.left + x, y: rect.top + rect.height / 2 };
     }, c.wait);
@@ -105,8 +112,9 @@ async function check(browser, c) {
       const text = await page.locator(".tip").textContent({ timeout: 2000 }).catch(() => "");
       if (!c.wait.text.test(text)) fail(name, `hovering the wait shows "${text}", expected ${c.wait.text}`);
       else ok(name, `hovering the wait shows "${text}"`);
-      await page.evaluate(() => { for (const p of window.nckReport.plots) p.u.setScale("x", { min: p.u.data[0][0], max: p.u.data[0][p.u.data[0].length - 1] }); });
+      await page.evaluate(() => { for (const p of window.nckReport.plots) p.u.setScale("x", { min: p.u.data[0][0], max: p.u.data[0][p.u.data[0].length - 1] }); window.scrollTo(0, 0); });
       await page.mouse.move(0, 0);
+      await page.waitForTimeout(200);
     }
   }
   if (c.caps) {
