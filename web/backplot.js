@@ -65,7 +65,7 @@
       parent.appendChild(el);
       this.el = el;
       this.multi = data.channels.length > 1;
-      const width = Math.min(parent.clientWidth - 16, this.multi ? 620 : 900);
+      const width = this.multi ? Math.floor((parent.clientWidth - 60) / 2) : Math.min(parent.clientWidth - 16, 900);
       this.resize(Math.max(360, width), 460);
       this.bindMouse();
       this.fit();
@@ -111,7 +111,7 @@
       }
       if (!this.n) { lo = [0, 0]; hi = [1, 1]; }
       const span = [Math.max(hi[0] - lo[0], 1e-3), Math.max(hi[1] - lo[1], 1e-3)];
-      const m = 50;
+      const m = 40;
       this.scale = Math.min((this.w - 2 * m) / span[0], (this.h - 2 * m) / span[1]);
       this.cx = (lo[0] + hi[0]) / 2; this.cy = (lo[1] + hi[1]) / 2;
     }
@@ -141,7 +141,7 @@
       ctx.fillStyle = "#1d2330"; ctx.font = "12px system-ui, sans-serif";
       if (!view.iso) {
         ctx.fillText(names[view.h] + " (mm) →", this.w - 80, this.h - 18);
-        ctx.fillText("↑ " + names[view.v] + " (mm)", 8, 14);
+        ctx.fillText("↑ " + names[view.v] + " (mm)", 40, 14);
       } else {
         ctx.fillText("isometric: X, Y, Z (mm)", 8, 14);
       }
@@ -176,6 +176,16 @@
         i = j;
       }
       ctx.setLineDash([]);
+      // moves along the viewing direction (drilling, plunging in XY) as rings
+      ctx.strokeStyle = "#344054"; ctx.lineWidth = 1.2;
+      for (let k = 1; k < n; k++) {
+        const du = this.uv[2 * k] - this.uv[2 * k - 2], dv = this.uv[2 * k + 1] - this.uv[2 * k - 1];
+        if ((du * du + dv * dv) * this.scale * this.scale > 0.25 || ch.rapid[k] === 1) continue;
+        const moved = Math.abs(ch.x[k] - ch.x[k - 1]) + Math.abs(ch.y[k] - ch.y[k - 1]) + Math.abs(ch.z[k] - ch.z[k - 1]);
+        if (moved < 1e-3) continue;
+        const [x, y] = this.toScreen(this.uv[2 * k], this.uv[2 * k + 1]);
+        ctx.beginPath(); ctx.arc(x, y, 4, 0, 2 * Math.PI); ctx.stroke();
+      }
       if (this.hover != null) {
         const [hx, hy] = this.toScreen(this.uv[2 * this.hover], this.uv[2 * this.hover + 1]);
         ctx.strokeStyle = "#111"; ctx.lineWidth = 2; ctx.beginPath(); ctx.arc(hx, hy, 5, 0, 2 * Math.PI); ctx.stroke();
