@@ -68,8 +68,24 @@ TEST(Report, SpindleRunShowsSetAndActualSpeedAndTheWaitsWithTheirReason) {
   // S1000 at 50 % override, then 1000 (G167), then S3000 at 50 %: 1500 rpm
   EXPECT_NEAR(series_max(d, "S1 set"), 1500, 1e-6);
   EXPECT_NEAR(series_max(d, "S1 actual"), 1500, 1.0);
-  // G1 X50 F3000 and G1 Y30: the path velocity reaches 3000 mm/min
-  EXPECT_NEAR(series_max(d, "path velocity"), 3000, 0.5);
+  // N30 G1 X50 F3000 (line 10): between its block event and the next one
+  // the path velocity reaches 3000 mm/min and no more (G0 N10 ran faster)
+  double t_n30 = -1, t_n40 = -1;
+  for (const json& e : d["events"])
+    if (e["ev"] == "block") {
+      if (e["line"] == 10) t_n30 = e["t"].get<double>();
+      if (e["line"] == 11) t_n40 = e["t"].get<double>();
+    }
+  ASSERT_GT(t_n40, t_n30);
+  std::size_t v = 0;
+  ASSERT_NE(series(d, "path velocity", &v), nullptr);
+  double v_max = 0;
+  for (std::size_t i = 0; i < d["ts"]["t"].size(); ++i) {
+    const double t = d["ts"]["t"][i].get<double>();
+    if (t >= t_n30 && t < t_n40) v_max = std::max(v_max, d["ts"]["v"][v][i].get<double>());
+  }
+  EXPECT_NEAR(v_max, 3000, 0.5);
+  EXPECT_GT(series_max(d, "path velocity"), 3000);
   // N20 S1000 M3 (line 9): the channel waits for S1's speed reached, MVS_SVS
   bool found = false;
   for (const json& w : d["waits"])
