@@ -77,6 +77,7 @@
       this.w = w; this.h = h;
       this.canvas.width = w * dpr; this.canvas.height = h * dpr;
       this.canvas.style.width = w + "px"; this.canvas.style.height = h + "px";
+      this.el.style.width = w + 14 + "px";  // the title bar wraps instead of widening the box
       this.ctx = this.canvas.getContext("2d");
       this.ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     }

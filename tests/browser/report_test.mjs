@@ -25,11 +25,12 @@ const ok = (name, msg) => console.log(`ok   ${name}: ${msg}`);
 
 function runNck(name, machine, programs, plc) {
   const report = path.join(out, name + ".html");
-  const argv = ["run", path.resolve(src, machine), ...programs.map((p) => path.resolve(src, p)), "--report", report, "--no-progress"];
-  if (plc) argv.push("--plc", path.resolve(src, plc));
+  // run in the source folder with relative names, as a user would (the report shows them)
+  const argv = ["run", machine, ...programs, "--report", report, "--no-progress"];
+  if (plc) argv.push("--plc", plc);
   const t = Date.now();
   try {
-    execFileSync(nck, argv, { stdio: ["ignore", "ignore", "pipe"] });
+    execFileSync(path.resolve(nck), argv, { cwd: src, stdio: ["ignore", "ignore", "pipe"] });
   } catch (e) {
     if (e.status !== 0 && e.status !== 1) throw new Error(`nck ${argv.join(" ")} exited ${e.status}: ${e.stderr}`);
   }
