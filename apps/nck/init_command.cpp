@@ -36,8 +36,8 @@ int init_machine(const InitOptions& opt) {
   std::string program;
   std::size_t written = 0;
   for (const EmbeddedFile& f : embedded_files()) {
-    if (!f.path.starts_with(prefix)) continue;
-    const fs::path out = dir / f.path.substr(prefix.size());
+    if (!f.name.starts_with(prefix)) continue;
+    const fs::path out = dir / f.name.substr(prefix.size());
     std::ofstream file(out, std::ios::binary);
     file.write(f.content.data(), static_cast<std::streamsize>(f.content.size()));
     file.close();

@@ -1,186 +1,261 @@
 #include "report_writer.hpp"
 
-#include "nck/core/utf8.hpp"
-#include "output_file.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "machine_names.hpp"
+#include "nck/core/utf8.hpp"
+#include "nck/spindle/spindle_status.hpp"
 #include "output_writers.hpp"
 
 namespace nck::app {
 namespace {
 
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : to_utf8(s)) {
-    switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
+using json = nlohmann::ordered_json;
+
+std::string quoted(const std::string& s) { return dump_json(json(to_utf8(s))); }
+
+bool is_rotary_name(const std::string& name) {
+  const char c = name.empty() ? 'X' : name[0];
+  return c == 'A' || c == 'B' || c == 'C';
 }
 
-// One plot: a polyline per series over time, with axes labelled by range.
-std::string svg_plot(const std::string& title, const std::vector<double>& t,
-                     const std::vector<const std::vector<double>*>& ys,
-                     const std::vector<std::string>& names) {
-  constexpr double W = 900, H = 260, L = 60, R = 150, T = 24, B = 30;
-  static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
-  double lo = 0, hi = 0;
-  bool first = true;
-  for (const auto* y : ys)
-    for (double v : *y) {
-      lo = first ? v : std::min(lo, v);
-      hi = first ? v : std::max(hi, v);
-      first = false;
-    }
-  if (hi - lo < 1e-9) hi = lo + 1;
-  const double t0 = t.empty() ? 0 : t.front(), t1 = t.empty() || t.back() <= t0 ? t0 + 1 : t.back();
-  auto x_of = [&](double v) { return L + (v - t0) / (t1 - t0) * (W - L - R); };
-  auto y_of = [&](double v) { return T + (hi - v) / (hi - lo) * (H - T - B); };
-  std::string s = fmt::format(
-      "<svg xmlns='http://www.w3.org/2000/svg' width='{}' height='{}' role='img' aria-label='{}'>"
-      "<text x='{}' y='16' font-weight='bold'>{}</text>"
-      "<rect x='{}' y='{}' width='{}' height='{}' fill='none' stroke='#999'/>"
-      "<text x='4' y='{}'>{:.6g}</text><text x='4' y='{}'>{:.6g}</text>"
-      "<text x='{}' y='{}'>{:.6g} s</text><text x='{}' y='{}' text-anchor='end'>{:.6g} s</text>",
-      W, H, escape(title), L, escape(title), L, T, W - L - R, H - T - B, T + 10, hi, H - B, lo, L, H - 8,
-      t0, W - R, H - 8, t1);
-  for (std::size_t k = 0; k < ys.size(); ++k) {
-    std::string pts;
-    for (std::size_t i = 0; i < t.size() && i < ys[k]->size(); ++i)
-      pts += fmt::format("{:.1f},{:.1f} ", x_of(t[i]), y_of((*ys[k])[i]));
-    const char* c = colours[k % std::size(colours)];
-    s += fmt::format("<polyline fill='none' stroke='{}' stroke-width='1.5' points='{}'/>", c, pts);
-    s += fmt::format("<text x='{}' y='{}' fill='{}'>{}</text>", W - R + 10, T + 16 + 18.0 * static_cast<double>(k), c,
-                     escape(names[k]));
+std::string function_text(const kernel::Event& e) {
+  using F = kernel::FunctionKind;
+  switch (e.fn) {
+    case F::m: return fmt::format("M{}", e.fn_number);
+    case F::h: return fmt::format("H{}", e.fn_number);
+    case F::t: return fmt::format("T{}", e.fn_number);
+    case F::s: return "S";
+    case F::none: break;
   }
-  return s + "</svg>";
+  return "";
+}
+
+// The G words of one NC line that the backplot needs: motion G0..G3 and
+// plane G17..G19 (comments in parentheses and after ';' skipped). The
+// report reads the program text for this because events do not carry the
+// motion type; blocks are scanned in execution order, so jumps and loops
+// keep the modal state right.
+void scan_g_words(const std::string& text, int& motion, int& plane) {
+  int depth = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == ';') return;
+    if (c == '(') ++depth;
+    if (c == ')' && depth > 0) --depth;
+    if (depth > 0 || (c != 'G' && c != 'g')) continue;
+    const char before = i > 0 ? text[i - 1] : ' ';
+    if (std::isalnum(static_cast<unsigned char>(before)) || before == '_' || before == '$' || before == '#') continue;
+    std::size_t j = i + 1;
+    int number = 0, digits = 0;
+    while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j])) && digits < 4) {
+      number = number * 10 + (text[j] - '0');
+      ++j;
+      ++digits;
+    }
+    if (digits == 0 || (j < text.size() && (text[j] == '.' || std::isdigit(static_cast<unsigned char>(text[j])))))
+      continue;
+    if (number <= 3) motion = number;
+    if (number >= 17 && number <= 19) plane = number;
+  }
 }
 
 }  // namespace
 
-void ReportWriter::start(const config::Machine& m, std::vector<std::string> programs, bool enabled) {
-  enabled_ = enabled;
+void ReportWriter::start(const config::Machine& m, const RunOptions& opt, const kernel::Kernel& k) {
+  enabled_ = !opt.report.empty();
   if (!enabled_) return;
-  programs_ = std::move(programs);
-  for (const std::string& name : path_axis_columns(m)) series_.push_back({name, "mm / deg", {}});
-  for (const auto& ch : m.channels) axis_count_.push_back(ch.axes.size());
+  const double cycle_s = k.cycle_time_s();
+  cycle_s_ = cycle_s;
+  machine_ = opt.machine;
+  plc_ = opt.plc;
+  programs_ = opt.programs;
+  const std::vector<std::string> columns = path_axis_columns(m);
+  std::size_t col = 0;
+  for (std::size_t c = 0; c < m.channels.size(); ++c) {
+    Channel ch;
+    const auto& axes = m.channels[c].axes;
+    for (std::size_t j = 0; j < axes.size(); ++j) {
+      static constexpr const char* kMain[] = {"X", "Y", "Z"};
+      for (int a = 0; a < 3; ++a)
+        if (axes[j].name == kMain[a] && ch.axis[a] < 0) {
+          ch.axis[a] = static_cast<int>(j);
+          ch.axis_name[a] = columns[col + j];
+        }
+    }
+    const std::string ch_name = fmt::format("channel {}", c + 1);
+    series_meta_.push_back(fmt::format(R"({{"name":{},"unit":"mm/min","panel":{},"kind":"velocity","ch":{}}})",
+                                       quoted(fmt::format("{}path velocity", c > 0 ? fmt::format("{}.", c + 1) : "")),
+                                       quoted(ch_name + ": path velocity"), c + 1));
+    decimals_.push_back(1);
+    for (std::size_t j = 0; j < axes.size(); ++j) {
+      const bool rot = is_rotary_name(axes[j].name);
+      // the C axis of #CAX follows the spindle while it turns: plotted only when #CAX was used
+      const bool c_axis = static_cast<int>(j) == m.channels[c].c_axis;
+      series_meta_.push_back(fmt::format(R"({{"name":{},"unit":"{}","kind":"{}","panel":{},"ch":{}}})",
+                                         quoted(columns[col + j]), rot ? "deg" : "mm", c_axis ? "c_axis" : "axis",
+                                         quoted(ch_name + (rot ? ": rotary axes" : ": axis positions (MCS)")), c + 1));
+      decimals_.push_back(4);
+    }
+    col += axes.size();
+    ch.axis_count = axes.size();
+    if (c < k.channel_count()) {  // the path starts where the axes stand
+      const kernel::ChannelState st = k.channel_state(c);
+      std::array<double, 3> p{};
+      for (int a = 0; a < 3; ++a)
+        if (ch.axis[a] >= 0) p[a] = st.axis_mcs[static_cast<std::size_t>(ch.axis[a])];
+      ch.path.add(p, 0, 0, false);
+    }
+    channels_.push_back(std::move(ch));
+  }
   const std::vector<SpindleName> spindles = machine_spindles(m);
-  for (const SpindleName& s : spindles) series_.push_back({s.name + ".rpm", "rpm", {}});
-  spindle_count_ = spindles.size();
+  for (std::size_t s = 0; s < spindles.size(); ++s) {
+    spindles_.push_back(spindles[s].name);
+    const std::string panel = quoted(fmt::format("spindle {}: speed", spindles[s].name));
+    series_meta_.push_back(fmt::format(R"({{"name":{},"unit":"rpm","panel":{},"kind":"set_rpm","spindle":{}}})",
+                                       quoted(spindles[s].name + " set"), panel, s));
+    series_meta_.push_back(fmt::format(R"({{"name":{},"unit":"rpm","panel":{},"kind":"act_rpm","spindle":{}}})",
+                                       quoted(spindles[s].name + " actual"), panel, s));
+    decimals_.push_back(2);
+    decimals_.push_back(2);
+  }
+  row_.assign(series_meta_.size(), 0.0);
+  series_.start(series_meta_.size(), cycle_s);
 }
 
-void ReportWriter::sample(const kernel::TickOutput& out) {
-  if (!enabled_) return;
-  if (cycle_++ % stride_ != 0) return;
-  if (t_.size() >= kMaxPoints) {  // thin out: keep every 2nd sample, sample half as often
-    auto thin = [](auto& v) {
-      std::size_t k = 0;
-      for (std::size_t i = 0; i < v.size(); i += 2) v[k++] = v[i];
-      v.resize(k);
-    };
-    thin(t_);
-    for (Series& s : series_) thin(s.values);
-    stride_ *= 2;
+std::uint16_t ReportWriter::file_index(const std::string& name) {
+  if (auto it = file_ids_.find(name); it != file_ids_.end()) return it->second;
+  SourceFile f{name, {}};
+  std::ifstream in(name, std::ios::binary);
+  for (std::string l; std::getline(in, l);) {
+    if (!l.empty() && l.back() == '\r') l.pop_back();
+    f.lines.push_back(std::move(l));
   }
-  t_.push_back(out.t_s);
+  if (!f.lines.empty() && f.lines.front().rfind("\xEF\xBB\xBF", 0) == 0) f.lines.front().erase(0, 3);
+  const auto id = static_cast<std::uint16_t>(files_.size());
+  files_.push_back(std::move(f));
+  file_ids_.emplace(name, id);
+  return id;
+}
+
+const std::string& ReportWriter::line_text(std::uint16_t file, std::uint32_t line) const {
+  static const std::string none;
+  if (file >= files_.size() || line == 0 || line > files_[file].lines.size()) return none;
+  return files_[file].lines[line - 1];
+}
+
+void ReportWriter::take(const kernel::Event& e, const RunNames& names) {
+  using K = kernel::EventKind;
+  if (e.channel == 0 || e.channel > channels_.size()) {
+    return;
+  }
+  const std::size_t c = e.channel - 1u;
+  Channel& ch = channels_[c];
+  auto spindle_name = [&](std::int8_t s) {
+    const json j = names.spindle(s);
+    return j.is_string() ? j.get<std::string>() : std::string();
+  };
+  switch (e.kind) {
+    case K::block: {
+      ch.file = file_index(names.file(c, e.file_id));
+      ch.line = e.line;
+      scan_g_words(line_text(ch.file, ch.line), ch.motion, ch.plane);
+      ch.block = &blocks_[{c, ch.file, ch.line}];
+      ++ch.block->count;
+      break;
+    }
+    case K::plc_out: {
+      const std::string fn = function_text(e);
+      ch.last_sync[fn] = e.sync;
+      if (e.fn == kernel::FunctionKind::t) {
+        ch.tool = fn;
+        ch.tool_acc = &tools_[{c, ch.tool}];
+        ++ch.tool_acc->count;
+      }
+      break;
+    }
+    case K::wait: {
+      Wait w{c, e.t_s, -1, wait_reason_name(static_cast<kernel::WaitReason>(e.wait_reason)), function_text(e),
+             spindle_name(e.spindle), "", e.line ? e.line : ch.line, ch.file};
+      if (auto it = ch.last_sync.find(w.fn); it != ch.last_sync.end() && !w.fn.empty()) w.sync = sync_name(it->second);
+      ch.open_wait = waits_.size();
+      waits_.push_back(std::move(w));
+      break;
+    }
+    case K::spindle:
+      if (e.spindle_mode == static_cast<std::uint8_t>(spindle::SpindleMode::axis)) c_axis_used_ = true;
+      break;
+    case K::wait_end:
+      if (ch.open_wait) waits_[*ch.open_wait].t1 = e.t_s;
+      ch.open_wait.reset();
+      break;
+    default:
+      break;
+  }
+}
+
+void ReportWriter::sample(std::uint64_t cycle, const kernel::TickOutput& out, const RunNames& names) {
+  if (!enabled_) return;
+  for (const kernel::Event& e : out.events) {
+    take(e, names);
+    using K = kernel::EventKind;
+    const auto s = static_cast<std::size_t>(e.spindle);
+    if (e.spindle < 0 || s >= spindles_.size()) continue;
+    if (e.kind == K::gear) marks_.push_back({e.t_s, s, "gear", fmt::format("{} gear stage {}", function_text(e), e.gear)});
+    if (e.kind == K::speed_reached) marks_.push_back({e.t_s, s, "speed_reached", fmt::format("speed reached {:g} rpm", e.value)});
+    if (e.kind == K::plc_out && e.fn == kernel::FunctionKind::s)
+      marks_.push_back({e.t_s, s, "s", fmt::format("S {:g} rpm programmed", e.value)});
+  }
   std::size_t k = 0;
-  for (std::size_t c = 0; c < axis_count_.size(); ++c)
-    for (std::size_t j = 0; j < axis_count_[c]; ++j) series_[k++].values.push_back(out.channels[c].axis_mcs[j]);
-  for (std::size_t s = 0; s < spindle_count_; ++s) series_[k++].values.push_back(out.spindles[s].set_rpm);
+  for (std::size_t c = 0; c < channels_.size(); ++c) {
+    Channel& ch = channels_[c];
+    const kernel::ChannelOutput& o = out.channels[c];
+    if (o.status == kernel::ChannelStatus::running || o.status == kernel::ChannelStatus::waiting) {
+      if (ch.block) ch.block->time_s += cycle_s_;
+      if (!ch.tool_acc) ch.tool_acc = &tools_[{c, ch.tool}];
+      ch.tool_acc->time_s += cycle_s_;
+    }
+    std::array<double, 3> p{};
+    for (int a = 0; a < 3; ++a)
+      if (ch.axis[a] >= 0) p[a] = o.axis_mcs[static_cast<std::size_t>(ch.axis[a])];
+    ch.path.add(p, ch.line, ch.file, ch.motion == 0);
+    row_[k++] = o.path_velocity_mm_s * 60.0;
+    for (std::size_t j = 0; j < ch.axis_count; ++j) row_[k++] = o.axis_mcs[j];
+  }
+  for (std::size_t s = 0; s < spindles_.size(); ++s) {
+    row_[k++] = out.spindles[s].set_rpm;
+    row_[k++] = out.spindles[s].act_rpm;
+  }
+  series_.add(cycle, row_);
 }
 
 void ReportWriter::event(const std::string& json_line, bool is_error) {
   if (!enabled_) return;
   if (json_line.find("\"ev\":\"link\"") != std::string::npos) note_link(json_line);
-  if (is_error) errors_.push_back(json_line);
-  if (events_.size() < kMaxEvents) events_.push_back(json_line);
-  else ++events_dropped_;
-}
-
-// Coupling periods from the link events: an "on" opens one, the "off" of
-// the same channel and group closes it.
-void ReportWriter::note_link(const std::string& json_line) {
-  const auto j = nlohmann::json::parse(json_line, nullptr, false);
-  if (j.is_discarded()) return;
-  const int ch = j.value("ch", 0), group = j.value("group", 0);
-  if (j.value("on", false)) {
-    links_.push_back({ch, group, j.value("pairs", nlohmann::json::array()).dump(), j.value("t", 0.0), -1, ""});
-    return;
+  const bool block = json_line.find("\"ev\":\"block\"") != std::string::npos;
+  if (block ? table_blocks_++ < kMaxTableBlocks : events_.size() - std::min(table_blocks_, kMaxTableBlocks) < kMaxTableEvents)
+    events_.push_back(json_line);
+  else
+    ++events_dropped_;
+  if (block) return;
+  const bool warning = json_line.find("\"ev\":\"warning\"") != std::string::npos;
+  if (is_error || warning) {
+    diagnostics_.push_back(json_line);
+    ++(is_error ? errors_ : warnings_);
+    const json j = json::parse(json_line, nullptr, false);
+    if (j.is_object() && j.contains("file") && j["file"].is_string()) file_index(j["file"].get<std::string>());
   }
-  for (LinkPeriod& p : links_)
-    if (p.ch == ch && p.group == group && p.off_s < 0) {
-      p.off_s = j.value("t", 0.0);
-      p.reason = j.value("reason", "");
+  if (json_line.find("\"ev\":\"end\"") != std::string::npos) {
+    const json j = json::parse(json_line, nullptr, false);
+    if (j.is_object() && j.contains("reason") && j["reason"].is_string()) {
+      const std::string r = j["reason"].get<std::string>();
+      if (end_reason_.find(r) == std::string::npos) end_reason_ += (end_reason_.empty() ? "" : ", ") + r;
     }
-}
-
-std::string ReportWriter::link_table() const {
-  if (links_.empty()) return {};
-  std::string h = "<h2>Synchronous operation (coupling periods)</h2><table><tr><th>ch</th><th>group</th>"
-                  "<th>pairs [slave, master]</th><th>on (s)</th><th>off (s)</th><th>ended by</th></tr>";
-  for (const LinkPeriod& p : links_)
-    h += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{:.3f}</td><td>{}</td><td>{}</td></tr>", p.ch, p.group,
-                     escape(p.pairs), p.on_s, p.off_s < 0 ? std::string("still on") : fmt::format("{:.3f}", p.off_s),
-                     escape(p.reason));
-  return h + "</table>";
-}
-
-std::optional<std::string> ReportWriter::write(const std::string& path, double end_s, int exit_code) const {
-  if (!enabled_) return std::nullopt;
-  OutputFile f;
-  if (auto err = f.open(path)) return err;
-  std::string h =
-      "<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>nck run report</title>"
-      "<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse}"
-      "td,th{border:1px solid #ccc;padding:2px 6px;font-size:12px}pre{font-size:12px}"
-      ".err{color:#b00}</style></head><body><h1>nck run report</h1>";
-  h += "<table><tr><th>program(s)</th><td>";
-  for (const std::string& p : programs_) h += escape(p) + "<br>";
-  h += fmt::format("</td></tr><tr><th>simulated time</th><td>{:.3f} s</td></tr>"
-                   "<tr><th>exit code</th><td>{}</td></tr><tr><th>errors</th><td>{}</td></tr></table>",
-                   end_s, exit_code, errors_.size());
-  if (!errors_.empty()) {
-    h += "<h2 class='err'>Errors</h2><pre class='err'>";
-    for (const std::string& e : errors_) h += escape(e) + "\n";
-    h += "</pre>";
   }
-  h += "<h2>Path axes (machine coordinates)</h2>";
-  std::size_t k = 0;
-  for (std::size_t c = 0; c < axis_count_.size(); ++c) {
-    std::vector<const std::vector<double>*> ys;
-    std::vector<std::string> names;
-    for (std::size_t j = 0; j < axis_count_[c]; ++j, ++k) {
-      ys.push_back(&series_[k].values);
-      names.push_back(series_[k].name);
-    }
-    if (!ys.empty()) h += svg_plot(fmt::format("channel {}", c + 1), t_, ys, names) + "<br>";
-  }
-  if (spindle_count_ > 0) {
-    std::vector<const std::vector<double>*> ys;
-    std::vector<std::string> names;
-    for (std::size_t s = 0; s < spindle_count_; ++s, ++k) {
-      ys.push_back(&series_[k].values);
-      names.push_back(series_[k].name);
-    }
-    h += "<h2>Spindles</h2>" + svg_plot("set-point speed (rpm)", t_, ys, names);
-  }
-  h += link_table();
-  h += fmt::format("<h2>Events</h2><pre>");
-  for (const std::string& e : events_) h += escape(e) + "\n";
-  if (events_dropped_ > 0) h += fmt::format("... {} more events (see --events)\n", events_dropped_);
-  h += "</pre></body></html>\n";
-  f.write(h);
-  return f.commit();
 }
 
 }  // namespace nck::app

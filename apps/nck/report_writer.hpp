@@ -1,57 +1,120 @@
 #pragma once
-// --report FILE.html: a self-contained report of a run — summary, errors,
-// the event log, and plots (inline SVG, no scripts or network) of every
-// path axis and every spindle's speed over time.
+// --report FILE.html: one offline page (web/ and uPlot compiled in) showing
+// the run as a CNC user reads it — backplot per channel, time plots of path
+// velocity, axes and spindle speeds (set and actual) with waits shaded,
+// tables of diagnostics, events and cycle time per block and per tool.
+// The data stays bounded for any run length (report_series.hpp).
+#include <array>
+#include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "nck/config/machine.hpp"
+#include "nck/kernel/kernel.hpp"
 #include "nck/kernel/tick_io.hpp"
+#include "report_series.hpp"
+#include "run_command.hpp"
 
 namespace nck::app {
 
+struct RunNames;
+
 class ReportWriter {
  public:
-  // setup: the columns to plot; `enabled` false makes every call a no-op.
-  void start(const config::Machine& m, std::vector<std::string> programs, bool enabled);
-  // Once per cycle; keeps at most about kMaxPoints samples per series by
-  // thinning (every 2nd, 4th ... cycle) as the run grows.
-  void sample(const kernel::TickOutput& out);
+  // setup: what to plot; `opt.report` empty makes every call a no-op.
+  // `k` configured, before the first cycle: its cycle time and the axes'
+  // start positions (where each backplot begins).
+  void start(const config::Machine& m, const RunOptions& opt, const kernel::Kernel& k);
+  // Once per cycle, after its events went to event().
+  void sample(std::uint64_t cycle, const kernel::TickOutput& out, const RunNames& names);
   // One line of the event log (the JSON text of an event).
   void event(const std::string& json_line, bool is_error);
   // The error text when it cannot be written.
   std::optional<std::string> write(const std::string& path, double end_s, int exit_code) const;
   bool enabled() const { return enabled_; }
 
-  static constexpr std::size_t kMaxPoints = 2000;
-  static constexpr std::size_t kMaxEvents = 2000;
+  static constexpr std::size_t kMaxTableEvents = 20000;  // non-block events in the table
+  static constexpr std::size_t kMaxTableBlocks = 2000;   // block events in the table
+  static constexpr std::size_t kMaxBackplotPoints = 60000;  // per channel, after thinning
 
  private:
-  struct Series {
-    std::string name;
-    std::string unit;
-    std::vector<double> values;
+  struct Accum {
+    std::uint64_t count = 0;
+    double time_s = 0;
   };
-  bool enabled_ = false;
-  std::vector<std::string> programs_;
-  std::vector<double> t_;
-  std::vector<Series> series_;
-  std::vector<std::size_t> axis_count_;  // per channel
-  std::size_t spindle_count_ = 0;
-  std::uint64_t stride_ = 1, cycle_ = 0;
-  std::vector<std::string> events_, errors_;
-  std::size_t events_dropped_ = 0;
-  // synchronous operation: one row per coupling period (link events)
+  struct Wait {
+    std::size_t ch = 0;
+    double t0 = 0, t1 = -1;
+    std::string reason, fn, spindle, sync;
+    std::uint32_t line = 0;
+    std::uint16_t file = 0;
+  };
+  struct Mark {
+    double t = 0;
+    std::size_t spindle = 0;
+    std::string kind, text;
+  };
+  struct Channel {
+    std::array<int, 3> axis{-1, -1, -1};  // channel axis index of X, Y, Z (-1: none)
+    std::array<std::string, 3> axis_name;
+    std::size_t axis_count = 0;  // path axes of the channel (time-plot series)
+    std::uint32_t line = 0;
+    std::uint16_t file = 0;
+    int motion = 1;   // modal G0..G3 of the block in execution
+    int plane = 0;    // G17 / G18 / G19 last programmed (0: none)
+    std::string tool = "-";
+    Accum* block = nullptr;  // where this channel's cycles count
+    Accum* tool_acc = nullptr;
+    std::map<std::string, std::uint32_t> last_sync;  // fn -> sync bits of its last plc_out
+    std::optional<std::size_t> open_wait;
+    PathRecorder path;
+  };
+  struct SourceFile {
+    std::string name;
+    std::vector<std::string> lines;
+  };
+  std::uint16_t file_index(const std::string& name);
+  const std::string& line_text(std::uint16_t file, std::uint32_t line) const;
+  void take(const kernel::Event& e, const RunNames& names);
+  std::string data_json(double end_s, int exit_code) const;
+  std::string channels_json(std::vector<std::pair<std::uint16_t, std::uint32_t>>& lines_used) const;
+  std::string summary_json(std::vector<std::pair<std::uint16_t, std::uint32_t>>& lines_used) const;
+  // Synchronous operation: one row per coupling period (link events).
   struct LinkPeriod {
     int ch = 0, group = 0;
     std::string pairs;
     double on_s = 0, off_s = -1;  // -1: still enabled at the end
     std::string reason;           // why it ended
   };
-  std::vector<LinkPeriod> links_;
   void note_link(const std::string& json_line);
   std::string link_table() const;
+
+  bool enabled_ = false;
+  double cycle_s_ = 0.001;
+  std::string machine_, plc_;
+  std::vector<std::string> programs_;
+  std::vector<Channel> channels_;
+  std::vector<std::string> spindles_;
+  std::vector<std::string> series_meta_;  // JSON objects, in EnvelopeSeries order
+  std::vector<int> decimals_;
+  std::vector<double> row_;
+  EnvelopeSeries series_;
+  std::vector<SourceFile> files_;
+  std::unordered_map<std::string, std::uint16_t> file_ids_;
+  // (channel, file, line) and (channel, tool) -> cycles spent there
+  std::map<std::tuple<std::size_t, std::uint16_t, std::uint32_t>, Accum> blocks_;
+  std::map<std::pair<std::size_t, std::string>, Accum> tools_;
+  std::vector<Wait> waits_;
+  std::vector<Mark> marks_;
+  std::vector<std::string> diagnostics_;  // JSON lines of warnings and errors
+  std::vector<std::string> events_;       // JSON lines for the event table
+  std::size_t table_blocks_ = 0, events_dropped_ = 0, errors_ = 0, warnings_ = 0;
+  std::string end_reason_;
+  bool c_axis_used_ = false;  // a spindle was in C-axis mode (#CAX)
+  std::vector<LinkPeriod> links_;
 };
 
 }  // namespace nck::app

@@ -131,7 +131,7 @@ std::optional<kernel::EndReason> run_loop(sim::DryRun& run, const RunOptions& op
     record_events(*o, names, out, progress);
     report_dropped_events(*o, names, out, progress);
     out.trace.write(run.kernel().cycles() - 1, *o);
-    out.report.sample(*o);
+    out.report.sample(run.kernel().cycles() - 1, *o, names);
     if (run.done()) return std::nullopt;
     if (g_stop_signal != 0) return kernel::EndReason::interrupted;
     if (t_s + run.kernel().cycle_time_s() >= opt.max_time_s) return kernel::EndReason::max_time;
@@ -249,7 +249,7 @@ int run_simulation(const RunOptions& opt) {
     fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppOutputFile), *open_error);
     return 2;
   }
-  out.report.start(m, opt.programs, !opt.report.empty());
+  out.report.start(m, opt, run.kernel());
   RunNames names;
   names.run = &run;
 

@@ -143,39 +143,5 @@ TEST(RunCommand, UnwritableOutputIsExit2) {
 }
 
 
-std::size_t count(const std::string& s, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = s.find(what); p != std::string::npos; p = s.find(what, p + 1)) ++n;
-  return n;
-}
-
-TEST(RunCommand, ReportIsASelfContainedPageWithPlots) {
-  const auto dir = temp_dir("report");
-  const std::string ex = root() + "/examples/mill";
-  CliResult r = run_nck("run " + ex + " " + ex + "/spindle.nc --report " + (dir / "r.html").string());
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  const std::string html = read_file(dir / "r.html");
-  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
-  EXPECT_NE(html.find("</html>"), std::string::npos);
-  EXPECT_EQ(count(html, "<svg"), 2u);  // the channel's axes, the spindles
-  EXPECT_EQ(count(html, "<svg"), count(html, "</svg>"));
-  EXPECT_NE(html.find(">S1.rpm<"), std::string::npos);
-  EXPECT_NE(html.find(">X<"), std::string::npos);
-  EXPECT_EQ(html.find("<script"), std::string::npos);  // nothing to load or run
-  EXPECT_EQ(html.find("http://"), html.find("http://www.w3.org/2000/svg"));
-}
-
-TEST(RunCommand, ReportOfAnAbortedRunListsTheError) {
-  const auto dir = temp_dir("report_err");
-  std::ofstream(dir / "bad.nc") << "%bad\nN10 G1 X20 F0\nN20 M30\n";
-  CliResult r = run_nck("run " + root() + "/examples/mill " + (dir / "bad.nc").string() + " --report " +
-                        (dir / "r.html").string());
-  EXPECT_EQ(r.exit_code, 1);
-  const std::string html = read_file(dir / "r.html");
-  EXPECT_NE(html.find("Errors</h2>"), std::string::npos);
-  EXPECT_NE(html.find("930002"), std::string::npos);
-  EXPECT_NE(html.find("</html>"), std::string::npos);
-}
-
 }  // namespace
 }  // namespace nck::app

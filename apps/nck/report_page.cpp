@@ -1,0 +1,221 @@
+// ReportWriter's output: the run's data as one JSON object, put into the
+// page template (web/report.html) with the scripts and styles inlined.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "nck/core/utf8.hpp"
+#include "nck/embedded_files.hpp"
+#include "output_file.hpp"
+#include "output_writers.hpp"
+#include "report_writer.hpp"
+
+namespace nck::app {
+namespace {
+
+using json = nlohmann::ordered_json;
+using LineRef = std::pair<std::uint16_t, std::uint32_t>;
+
+std::string quoted(const std::string& s) { return dump_json(json(to_utf8(s))); }
+
+constexpr std::size_t kMaxSummaryBlocks = 300;    // the longest blocks in the table
+constexpr std::size_t kMaxLineTextBytes = 4 << 20;  // NC line texts carried for hovers
+
+template <class T, class F>
+std::string array_of(const std::vector<T>& v, F&& item) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (i > 0) s += ',';
+    item(s, v[i]);
+  }
+  return s + "]";
+}
+
+// "</" inside the data would end the <script> element that carries it.
+std::string script_safe(std::string s) {
+  for (std::size_t p = s.find("</"); p != std::string::npos; p = s.find("</", p + 3)) s.replace(p, 2, "<\\/");
+  return s;
+}
+
+// The template with each /*NAME*/ replaced once by its text; the parts come
+// in template order and each search starts after the text put in before,
+// so inserted text is never searched.
+std::string fill(std::string page, const std::vector<std::pair<std::string, std::string>>& parts) {
+  std::size_t from = 0;
+  for (const auto& [key, text] : parts) {
+    const std::size_t p = page.find(key, from);
+    if (p == std::string::npos) continue;
+    page.replace(p, key.size(), text);
+    from = p + text.size();
+  }
+  return page;
+}
+
+std::string html_text(const std::string& s) {
+  std::string out;
+  for (char c : to_utf8(s))
+    out += c == '<' ? std::string("&lt;") : c == '&' ? std::string("&amp;") : c == '"' ? std::string("&quot;") : std::string(1, c);
+  return out;
+}
+
+}  // namespace
+
+std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const {
+  std::string s = "[";
+  for (std::size_t c = 0; c < channels_.size(); ++c) {
+    const Channel& ch = channels_[c];
+    const double diag = std::hypot(ch.path.max()[0] - ch.path.min()[0], ch.path.max()[1] - ch.path.min()[1],
+                                   ch.path.max()[2] - ch.path.min()[2]);
+    // A tenth of a pixel of a 1000-pixel view, and never more than kMaxBackplotPoints.
+    double tol = std::max(diag / 10000.0, PathRecorder::kRecordTolMm);
+    std::vector<PathPoint> pts = ch.path.simplified(tol);
+    while (pts.size() > kMaxBackplotPoints) pts = ch.path.simplified(tol *= 2);
+    const bool has_y = ch.axis[1] >= 0;
+    const char* plane = ch.plane == 18 || (ch.plane == 0 && !has_y) ? "XZ" : ch.plane == 19 ? "YZ" : "XY";
+    s += fmt::format(R"({}{{"n":{},"plane":"{}","axes":[{},{},{}],"has":[{},{},{}],"min":[)", c > 0 ? "," : "", c + 1,
+                     plane, quoted(ch.axis_name[0]), quoted(ch.axis_name[1]), quoted(ch.axis_name[2]), ch.axis[0] >= 0,
+                     ch.axis[1] >= 0, ch.axis[2] >= 0);
+    for (int a = 0; a < 3; ++a) {
+      if (a > 0) s += ',';
+      append_number(s, ch.path.empty() ? 0 : ch.path.min()[a], 4);
+    }
+    s += "],\"max\":[";
+    for (int a = 0; a < 3; ++a) {
+      if (a > 0) s += ',';
+      append_number(s, ch.path.empty() ? 0 : ch.path.max()[a], 4);
+    }
+    s += "]";
+    for (int a = 0; a < 3; ++a)
+      s += fmt::format(",\"{}\":", "xyz"[a]) +
+           array_of(pts, [a](std::string& o, const PathPoint& p) { append_number(o, p.pos[a], 4); });
+    s += ",\"line\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.line); });
+    s += ",\"file\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.file); });
+    s += ",\"rapid\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += p.rapid ? '1' : '0'; });
+    s += "}";
+    for (const PathPoint& p : pts) lines_used.emplace_back(p.file, p.line);
+  }
+  return s + "]";
+}
+
+std::string ReportWriter::summary_json(std::vector<LineRef>& lines_used) const {
+  std::vector<std::pair<std::tuple<std::size_t, std::uint16_t, std::uint32_t>, Accum>> blocks(blocks_.begin(),
+                                                                                                 blocks_.end());
+  std::sort(blocks.begin(), blocks.end(), [](const auto& a, const auto& b) { return a.second.time_s > b.second.time_s; });
+  const std::size_t listed = std::min(blocks.size(), kMaxSummaryBlocks);
+  std::string s = "{\"blocks\":[";
+  for (std::size_t i = 0; i < listed; ++i) {
+    const auto& [key, acc] = blocks[i];
+    const auto& [c, file, line] = key;
+    s += fmt::format(R"({}{{"ch":{},"file":{},"line":{},"count":{},"time_s":)", i > 0 ? "," : "", c + 1, file, line,
+                     acc.count);
+    append_number(s, acc.time_s, 4);
+    s += "}";
+    lines_used.emplace_back(file, line);
+  }
+  s += fmt::format("],\"blocks_total\":{},\"tools\":[", blocks.size());
+  bool first = true;
+  for (const auto& [key, acc] : tools_) {
+    s += fmt::format(R"({}{{"ch":{},"tool":{},"count":{},"time_s":)", first ? "" : ",", key.first + 1,
+                     quoted(key.second), acc.count);
+    append_number(s, acc.time_s, 4);
+    s += "}";
+    first = false;
+  }
+  return s + "]}";
+}
+
+std::string ReportWriter::data_json(double end_s, int exit_code) const {
+  std::vector<LineRef> lines_used;
+  std::string s = "{\"meta\":{";
+  s += fmt::format(R"("machine":{},"plc":{},"programs":{},"end_s":)", quoted(machine_), quoted(plc_),
+                   array_of(programs_, [](std::string& o, const std::string& p) { o += quoted(p); }));
+  append_number(s, end_s, 4);
+  s += fmt::format(R"(,"exit_code":{},"end":{},"cycle_s":{},"errors":{},"warnings":{},"stride":{},"c_axis":{}}})",
+                   exit_code, quoted(end_reason_), cycle_s_, errors_, warnings_, series_.stride(), c_axis_used_);
+  s += ",\"files\":" + array_of(files_, [](std::string& o, const SourceFile& f) { o += quoted(f.name); });
+  s += ",\"spindles\":" + array_of(spindles_, [](std::string& o, const std::string& n) { o += quoted(n); });
+  s += ",\"series\":" + array_of(series_meta_, [](std::string& o, const std::string& m) { o += m; });
+  s += ",\"ts\":" + series_.json(decimals_);
+  s += ",\"channels\":" + channels_json(lines_used);
+  s += ",\"waits\":" + array_of(waits_, [&](std::string& o, const Wait& w) {
+    o += fmt::format(R"({{"ch":{},"t0":{},"t1":{},"reason":{},"fn":{},"spindle":{},"sync":{},"file":{},"line":{}}})",
+                     w.ch + 1, w.t0, w.t1 < 0 ? end_s : w.t1, quoted(w.reason), quoted(w.fn), quoted(w.spindle),
+                     quoted(w.sync), w.file, w.line);
+    lines_used.emplace_back(w.file, w.line);
+  });
+  s += ",\"marks\":" + array_of(marks_, [](std::string& o, const Mark& m) {
+    o += fmt::format(R"({{"t":{},"spindle":{},"kind":{},"text":{}}})", m.t, m.spindle, quoted(m.kind), quoted(m.text));
+  });
+  s += ",\"diagnostics\":" + array_of(diagnostics_, [](std::string& o, const std::string& l) { o += l; });
+  s += ",\"events\":" + array_of(events_, [](std::string& o, const std::string& l) { o += l; });
+  s += fmt::format(",\"events_dropped\":{}", events_dropped_);
+  s += ",\"summary\":" + summary_json(lines_used);
+  // the NC text of every line a hover or table shows
+  for (const std::string& d : diagnostics_) {
+    const json j = json::parse(d, nullptr, false);
+    if (!j.is_object() || !j.contains("file") || !j["file"].is_string() || !j.contains("line")) continue;
+    if (auto it = file_ids_.find(j["file"].get<std::string>()); it != file_ids_.end() && j["line"].is_number())
+      lines_used.emplace_back(it->second, j["line"].get<std::uint32_t>());
+  }
+  std::sort(lines_used.begin(), lines_used.end());
+  lines_used.erase(std::unique(lines_used.begin(), lines_used.end()), lines_used.end());
+  s += ",\"lines\":{";
+  std::size_t bytes = 0;
+  bool first = true;
+  for (const auto& [file, line] : lines_used) {
+    const std::string& text = line_text(file, line);
+    if (text.empty() || (bytes += text.size()) > kMaxLineTextBytes) continue;
+    s += fmt::format("{}\"{}:{}\":{}", first ? "" : ",", file, line, quoted(text));
+    first = false;
+  }
+  return s + "}}";
+}
+
+// Coupling periods from the link events: an "on" opens one, the "off" of
+// the same channel and group closes it.
+void ReportWriter::note_link(const std::string& json_line) {
+  const json j = json::parse(json_line, nullptr, false);
+  if (!j.is_object()) return;
+  const int ch = j.value("ch", 0), group = j.value("group", 0);
+  if (j.value("on", false)) {
+    links_.push_back({ch, group, j.value("pairs", json::array()).dump(), j.value("t", 0.0), -1, ""});
+    return;
+  }
+  for (LinkPeriod& p : links_)
+    if (p.ch == ch && p.group == group && p.off_s < 0) {
+      p.off_s = j.value("t", 0.0);
+      p.reason = j.value("reason", "");
+    }
+}
+
+std::string ReportWriter::link_table() const {
+  if (links_.empty()) return {};
+  std::string h = "<section><h2>Synchronous operation (coupling periods)</h2><table><tr><th>ch</th><th>group</th>"
+                  "<th>pairs [slave, master]</th><th>on (s)</th><th>off (s)</th><th>ended by</th></tr>";
+  for (const LinkPeriod& p : links_)
+    h += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{:.3f}</td><td>{}</td><td>{}</td></tr>", p.ch, p.group,
+                     html_text(p.pairs), p.on_s, p.off_s < 0 ? std::string("still on") : fmt::format("{:.3f}", p.off_s),
+                     html_text(p.reason));
+  return h + "</table></section>";
+}
+
+std::optional<std::string> ReportWriter::write(const std::string& path, double end_s, int exit_code) const {
+  if (!enabled_) return std::nullopt;
+  OutputFile f;
+  if (auto err = f.open(path)) return err;
+  std::string title = "nck report";
+  for (const std::string& p : programs_) title += " · " + std::filesystem::path(p).filename().string();
+  f.write(fill(std::string(embedded_file("report.html")),
+               {{"/*TITLE*/", html_text(title)},
+                {"/*UPLOT_CSS*/", std::string(embedded_file("uPlot.min.css"))},
+                {"/*REPORT_CSS*/", std::string(embedded_file("report.css"))},
+                {"<!--LINK_TABLE-->", link_table()},
+                {"/*NCK_DATA*/", script_safe(data_json(end_s, exit_code))},
+                {"/*UPLOT_JS*/", std::string(embedded_file("uPlot.iife.min.js"))},
+                {"/*BACKPLOT_JS*/", std::string(embedded_file("backplot.js"))},
+                {"/*REPORT_JS*/", std::string(embedded_file("report.js"))}}));
+  return f.commit();
+}
+
+}  // namespace nck::app

@@ -1,0 +1,200 @@
+#include "report_series.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace nck::app {
+
+void append_number(std::string& out, double v, int decimals) {
+  if (!std::isfinite(v)) v = 0;
+  const std::size_t at = out.size();
+  fmt::format_to(std::back_inserter(out), "{:.{}f}", v, decimals);
+  if (out.find('.', at) == std::string::npos) return;
+  while (out.back() == '0') out.pop_back();
+  if (out.back() == '.') out.pop_back();
+  if (out.compare(at, std::string::npos, "-0") == 0) out.erase(at, 1);
+}
+
+void EnvelopeSeries::start(std::size_t series_count, double cycle_s) {
+  series_.assign(series_count, {});
+  for (auto& s : series_) s.reserve(kMaxBuckets);
+  cycle_s_ = cycle_s;
+}
+
+void EnvelopeSeries::add(std::uint64_t cycle, std::span<const double> values) {
+  if (!started_) {
+    first_cycle_ = cycle;
+    started_ = true;
+  }
+  const std::uint64_t rel = cycle - first_cycle_;
+  while (rel / stride_ >= kMaxBuckets) merge_pairs();
+  const std::size_t k = rel / stride_;
+  const bool fresh = k >= count_;
+  if (fresh) count_ = k + 1;
+  for (std::size_t s = 0; s < series_.size(); ++s) {
+    auto& b = series_[s];
+    if (b.size() < count_) b.resize(count_, Bucket{});
+    const auto v = static_cast<float>(s < values.size() ? values[s] : 0.0);
+    Bucket& x = b[k];
+    if (fresh) {
+      x = {v, v, true};
+      continue;
+    }
+    if (v < x.min) {
+      x.min = v;
+      x.min_first = false;  // the minimum now comes after the maximum
+    }
+    if (v > x.max) {
+      x.max = v;
+      x.min_first = true;
+    }
+  }
+}
+
+void EnvelopeSeries::merge_pairs() {
+  for (auto& b : series_) {
+    std::size_t out = 0;
+    for (std::size_t i = 0; i < b.size(); i += 2, ++out) {
+      if (i + 1 >= b.size()) {
+        b[out] = b[i];
+        continue;
+      }
+      const Bucket a = b[i], c = b[i + 1];
+      const bool min_in_a = a.min <= c.min, max_in_a = a.max >= c.max;
+      Bucket m{std::min(a.min, c.min), std::max(a.max, c.max), true};
+      if (min_in_a && max_in_a) m.min_first = a.min_first;
+      else if (!min_in_a && !max_in_a) m.min_first = c.min_first;
+      else m.min_first = min_in_a;
+      b[out] = m;
+    }
+    b.resize(out);
+  }
+  count_ = (count_ + 1) / 2;
+  stride_ *= 2;
+}
+
+std::string EnvelopeSeries::json(std::span<const int> decimals) const {
+  std::string s = "{\"t\":[";
+  const bool pairs = stride_ > 1;
+  const double bucket_s = static_cast<double>(stride_) * cycle_s_;
+  const double t0 = static_cast<double>(first_cycle_) * cycle_s_;
+  for (std::size_t k = 0; k < count_; ++k) {
+    if (k > 0) s += ',';
+    const double t = t0 + static_cast<double>(k) * bucket_s;
+    append_number(s, t, 4);
+    if (pairs) {
+      s += ',';
+      append_number(s, t + bucket_s / 2, 4);
+    }
+  }
+  s += "],\"v\":[";
+  for (std::size_t i = 0; i < series_.size(); ++i) {
+    if (i > 0) s += ',';
+    s += '[';
+    const int d = i < decimals.size() ? decimals[i] : 3;
+    for (std::size_t k = 0; k < count_ && k < series_[i].size(); ++k) {
+      const Bucket& b = series_[i][k];
+      if (k > 0) s += ',';
+      append_number(s, b.min_first ? b.min : b.max, d);
+      if (pairs) {
+        s += ',';
+        append_number(s, b.min_first ? b.max : b.min, d);
+      }
+    }
+    s += ']';
+  }
+  return s + "]}";
+}
+
+double distance_to_line(const std::array<float, 3>& p, const std::array<float, 3>& a, const std::array<float, 3>& b) {
+  double ab[3], ap[3], len2 = 0;
+  for (int i = 0; i < 3; ++i) {
+    ab[i] = double(b[i]) - double(a[i]);
+    ap[i] = double(p[i]) - double(a[i]);
+    len2 += ab[i] * ab[i];
+  }
+  if (len2 <= 0) return std::sqrt(ap[0] * ap[0] + ap[1] * ap[1] + ap[2] * ap[2]);
+  // |ap x ab| / |ab|
+  const double cx = ap[1] * ab[2] - ap[2] * ab[1], cy = ap[2] * ab[0] - ap[0] * ab[2],
+               cz = ap[0] * ab[1] - ap[1] * ab[0];
+  return std::sqrt((cx * cx + cy * cy + cz * cz) / len2);
+}
+
+namespace {
+
+std::array<float, 3> to_float(const std::array<double, 3>& p) {
+  return {static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])};
+}
+
+// Reumann-Witkam: a run of points stays one segment while every point lies
+// within tol of the line through the run's first point and its direction
+// at the start; `breaks(a, b)` forces a vertex between two points.
+template <class Breaks>
+std::vector<PathPoint> thin(const std::vector<PathPoint>& in, double tol, Breaks breaks) {
+  std::vector<PathPoint> out;
+  if (in.empty()) return out;
+  out.push_back(in.front());
+  std::size_t dir_from = 0;  // the run: in[dir_from] (the anchor) and in[dir_from + 1] give the direction
+  for (std::size_t i = 1; i < in.size(); ++i) {
+    const bool same_run = i > dir_from + 1 && !breaks(in[i - 1], in[i]) &&
+                          distance_to_line(in[i].pos, in[dir_from].pos, in[dir_from + 1].pos) <= tol;
+    if (same_run) {
+      out.back() = in[i];  // the run's end moves on
+      continue;
+    }
+    if (i > dir_from + 1) dir_from = i - 1;  // the previous end is a vertex; a new run starts there
+    out.push_back(in[i]);
+  }
+  return out;
+}
+
+}  // namespace
+
+void PathRecorder::add(const std::array<double, 3>& pos, std::uint32_t line, std::uint16_t file, bool rapid) {
+  if (points_.empty()) {
+    min_ = max_ = tip_ = pos;
+    points_.push_back({to_float(pos), line, file, rapid});
+    anchor_ = pos;
+    has_dir_ = false;
+    return;
+  }
+  for (int i = 0; i < 3; ++i) {
+    min_[i] = std::min(min_[i], pos[i]);
+    max_[i] = std::max(max_[i], pos[i]);
+  }
+  PathPoint& tip = points_.back();
+  if (pos == tip_) return;  // standing still
+  const bool same_block = tip.line == line && tip.file == file && tip.rapid == rapid;
+  if (has_dir_ && same_block) {
+    // distance of pos from the run's line (anchor, direction)
+    double ap[3], cross2 = 0;
+    for (int i = 0; i < 3; ++i) ap[i] = pos[i] - anchor_[i];
+    const double c[3] = {ap[1] * dir_[2] - ap[2] * dir_[1], ap[2] * dir_[0] - ap[0] * dir_[2],
+                         ap[0] * dir_[1] - ap[1] * dir_[0]};
+    for (double v : c) cross2 += v * v;
+    if (cross2 <= kRecordTolMm * kRecordTolMm) {
+      tip = {to_float(pos), line, file, rapid};
+      tip_ = pos;
+      return;
+    }
+  }
+  // The tip becomes a vertex and the anchor of a new run towards pos.
+  anchor_ = tip_;
+  double len = 0;
+  for (int i = 0; i < 3; ++i) {
+    dir_[i] = pos[i] - anchor_[i];
+    len += dir_[i] * dir_[i];
+  }
+  len = std::sqrt(len);
+  for (double& d : dir_) d /= len;
+  has_dir_ = true;
+  points_.push_back({to_float(pos), line, file, rapid});
+  tip_ = pos;
+}
+
+std::vector<PathPoint> PathRecorder::simplified(double tol_mm) const {
+  return thin(points_, tol_mm, [](const PathPoint& a, const PathPoint& b) { return a.rapid != b.rapid; });
+}
+
+}  // namespace nck::app

@@ -1,0 +1,145 @@
+// Browser test of `nck run --report`: runs nck on example programs, opens
+// each report offline in Debian's chromium (playwright-core) and checks
+// what a user sees. Usage:
+//   node tests/browser/report_test.mjs --nck BIN --source DIR --out DIR
+//        [--blocks N] [--images DIR]
+// --blocks: size of the generated long program (default 200000, the
+// issue's benchmark); --images: also save the README screenshots there.
+import { chromium } from "playwright-core";
+import { execFileSync } from "node:child_process";
+import fs from "node:fs";
+import path from "node:path";
+import { caps, expectations, writeCommonProgram } from "./report_cases.mjs";
+
+const args = Object.fromEntries(process.argv.slice(2).reduce((acc, a, i, all) => {
+  if (a.startsWith("--")) acc.push([a.slice(2), all[i + 1] && !all[i + 1].startsWith("--") ? all[i + 1] : "1"]);
+  return acc;
+}, []));
+const nck = args.nck, src = path.resolve(args.source || "."), out = path.resolve(args.out || "report-test-out");
+const blocks = Number(args.blocks || 200000);
+const chromiumPath = process.env.NCK_CHROMIUM || "/usr/bin/chromium";
+fs.mkdirSync(out, { recursive: true });
+let failures = 0;
+const fail = (name, msg) => { failures++; console.error(`FAIL ${name}: ${msg}`); };
+const ok = (name, msg) => console.log(`ok   ${name}: ${msg}`);
+
+function runNck(name, machine, programs, plc) {
+  const report = path.join(out, name + ".html");
+  // run in the source folder with relative names, as a user would (the report shows them)
+  const argv = ["run", machine, ...programs, "--report", report, "--no-progress"];
+  if (plc) argv.push("--plc", plc);
+  const t = Date.now();
+  try {
+    execFileSync(path.resolve(nck), argv, { cwd: src, stdio: ["ignore", "ignore", "pipe"] });
+  } catch (e) {
+    if (e.status !== 0 && e.status !== 1) throw new Error(`nck ${argv.join(" ")} exited ${e.status}: ${e.stderr}`);
+  }
+  return { report, runMs: Date.now() - t };
+}
+
+async function check(browser, c) {
+  const { report, runMs } = runNck(c.name, c.machine, c.programs, c.plc);
+  const sizeBytes = fs.statSync(report).size;
+  const context = await browser.newContext({ offline: true, viewport: { width: 1320, height: 900 }, deviceScaleFactor: 1 });
+  const page = await context.newPage();
+  const problems = [], requests = [];
+  page.on("console", (m) => { if (m.type() === "error" || m.type() === "warning") problems.push(m.type() + ": " + m.text()); });
+  page.on("pageerror", (e) => problems.push("page error: " + e.message));
+  await page.route("**/*", (route) => {
+    const url = route.request().url();
+    if (url.startsWith("file:")) return route.continue();
+    requests.push(url);
+    return route.abort();
+  });
+  const t = Date.now();
+  await page.goto("file://" + report, { waitUntil: "load" });
+  await page.waitForFunction(() => window.nckReport && window.nckReport.ready, null, { timeout: 30000 });
+  const loadMs = Date.now() - t;
+  const info = await page.evaluate(() => {
+    const r = window.nckReport;
+    return {
+      plots: r.plots.map((p) => ({
+        title: p.title,
+        points: p.u.data[0].length,
+        series: p.u.data.slice(1).map((s) => s.filter((v) => v != null && Number.isFinite(v)).length),
+      })),
+      backplots: r.backplots.map((b) => ({ n: b.n, extents: b.extents(), has: b.ch.has, view: b.select.value })),
+      waits: r.data.waits.length,
+    };
+  });
+  const name = c.name;
+  if (problems.length) fail(name, "console: " + problems.join(" | ")); else ok(name, "no console errors or warnings");
+  if (requests.length) fail(name, "network requests: " + requests.join(", ")); else ok(name, "no network request");
+  if (info.plots.length < c.minPlots) fail(name, `${info.plots.length} time plots, expected >= ${c.minPlots}`);
+  for (const p of info.plots) {
+    if (p.points < 2 || p.series.some((n) => n < 2)) fail(name, `plot "${p.title}" has no data (${p.points} points, ${p.series})`);
+  }
+  ok(name, `${info.plots.length} time plots with data: ${info.plots.map((p) => p.title).join("; ")}`);
+  if (info.backplots.length !== c.backplots.length) fail(name, `${info.backplots.length} backplots, expected ${c.backplots.length}`);
+  c.backplots.forEach((want, i) => {
+    const got = info.backplots[i];
+    if (!got) return;
+    if (want.view && got.view !== want.view) fail(name, `backplot ${i + 1} shows ${got.view}, expected ${want.view}`);
+    for (let a = 0; a < 3; a++) {
+      if (want.min[a] == null) continue;
+      const dmin = Math.abs(got.extents.min[a] - want.min[a]), dmax = Math.abs(got.extents.max[a] - want.max[a]);
+      if (dmin > want.tol || dmax > want.tol)
+        fail(name, `backplot ${i + 1} axis ${"XYZ"[a]} spans ${got.extents.min[a]}..${got.extents.max[a]}, the program ${want.min[a]}..${want.max[a]}`);
+    }
+    ok(name, `backplot ${i + 1} (${got.view}) extents ${JSON.stringify(got.extents)}`);
+  });
+  if (c.wait) {
+    // hover the middle of the wait in the panel that shades it; read the tooltip
+    const found = await page.evaluate((want) => {
+      const r = window.nckReport;
+      const p = r.plots.find((p) => p.title === want.panel);
+      if (!p) return "no panel " + want.panel;
+      const w = p.waits.find((w) => w.reason === want.reason);
+      if (!w) return "no wait " + want.reason;
+      p.u.root.scrollIntoView({ block: "center" });
+      p.u.setScale("x", { min: Math.max(0, w.t0 - 1), max: w.t1 + 1 });
+      return "";
+    }, c.wait);
+    await page.waitForTimeout(200);  // uPlot redraws on the next frame
+    const tipText = found || await page.evaluate((want) => {
+      const p = window.nckReport.plots.find((p) => p.title === want.panel);
+      const w = p.waits.find((w) => w.reason === want.reason);
+      const x = p.u.valToPos((w.t0 + w.t1) / 2, "x"), rect = p.u.over.getBoundingClientRect();
+      return { x: rect.left + x, y: rect.top + rect.height / 2 };
+    }, c.wait);
+    if (typeof tipText === "string") fail(name, tipText);
+    else {
+      await page.mouse.move(tipText.x, tipText.y);
+      const text = await page.locator(".tip").textContent({ timeout: 2000 }).catch(() => "");
+      if (!c.wait.text.test(text)) fail(name, `hovering the wait shows "${text}", expected ${c.wait.text}`);
+      else ok(name, `hovering the wait shows "${text}"`);
+      await page.evaluate(() => { for (const p of window.nckReport.plots) p.u.setScale("x", { min: p.u.data[0][0], max: p.u.data[0][p.u.data[0].length - 1] }); window.scrollTo(0, 0); });
+      await page.mouse.move(0, 0);
+      await page.waitForTimeout(200);
+    }
+  }
+  if (c.caps) {
+    if (sizeBytes > c.caps.bytes) fail(name, `report is ${sizeBytes} bytes, cap ${c.caps.bytes}`);
+    if (loadMs > c.caps.loadMs) fail(name, `report loads in ${loadMs} ms, cap ${c.caps.loadMs}`);
+  }
+  ok(name, `run ${runMs} ms, report ${(sizeBytes / 1e6).toFixed(2)} MB, load ${loadMs} ms`);
+  await page.screenshot({ path: path.join(out, name + ".png"), fullPage: true });
+  if (args.images && c.image) {
+    await page.evaluate(() => { const e = document.querySelector("#events"); if (e) e.style.maxHeight = "260px"; });
+    await page.screenshot({ path: path.join(args.images, c.image), fullPage: true });
+  }
+  await context.close();
+}
+
+const browser = await chromium.launch({ executablePath: chromiumPath, headless: true, args: ["--no-sandbox"] });
+try {
+  const longProgram = path.join(out, `common_${blocks}.nc`);
+  writeCommonProgram(longProgram, blocks);
+  for (const c of expectations(longProgram, blocks, caps(blocks))) await check(browser, c);
+} catch (e) {
+  fail("browser test", e.stack || String(e));
+} finally {
+  await browser.close();
+}
+console.log(failures ? `${failures} failure(s)` : "all report checks passed");
+process.exit(failures ? 1 : 0);

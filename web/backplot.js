@@ -1,0 +1,247 @@
+// Backplot: one channel's tool path on a canvas. Views: the planes and an
+// isometric one; G0 dashed red, feed moves solid and coloured from blue to
+// orange along the program; wheel zooms, drag pans, double-click fits,
+// hovering shows the block (NC line) that moved to the nearest point.
+(function () {
+  "use strict";
+  const VIEWS = {
+    XY: { h: 0, v: 1, label: "XY (G17)" },
+    XZ: { h: 0, v: 2, label: "XZ (G18, front)" },
+    ZX: { h: 2, v: 0, label: "ZX (lathe: Z right, X up)" },
+    YZ: { h: 1, v: 2, label: "YZ (G19)" },
+    ISO: { iso: true, label: "isometric" },
+  };
+  const C30 = Math.cos(Math.PI / 6), S30 = Math.sin(Math.PI / 6);
+
+  function niceStep(range, count) {
+    const raw = range / Math.max(1, count);
+    const p = Math.pow(10, Math.floor(Math.log10(raw)));
+    const m = raw / p;
+    return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * p;
+  }
+
+  function fmtNum(v) {
+    return Math.abs(v) >= 1000 ? v.toFixed(0) : (+v.toFixed(3)).toString();
+  }
+
+  class Backplot {
+    constructor(parent, ch, data) {
+      this.ch = ch;
+      this.data = data;
+      this.n = ch.x.length;
+      const el = document.createElement("div");
+      el.className = "backplot";
+      el.dataset.channel = ch.n;
+      const bar = document.createElement("div");
+      bar.className = "bar";
+      const title = document.createElement("b");
+      title.textContent = "channel " + ch.n;
+      bar.appendChild(title);
+      this.select = document.createElement("select");
+      this.select.setAttribute("aria-label", "view of channel " + ch.n);
+      for (const [key, v] of Object.entries(VIEWS)) {
+        if (!v.iso && (!ch.has[v.h] || !ch.has[v.v])) continue;
+        if (v.iso && ch.has.filter(Boolean).length < 3) continue;
+        const o = document.createElement("option");
+        o.value = key;
+        o.textContent = v.label;
+        this.select.appendChild(o);
+      }
+      const lathe = !ch.has[1] && ch.has[0] && ch.has[2];
+      this.select.value = lathe ? "ZX" : ch.plane === "XZ" ? "XZ" : ch.plane;
+      if (!this.select.value && this.select.options.length) this.select.value = this.select.options[0].value;
+      this.select.onchange = () => { this.fit(); this.draw(); };
+      bar.appendChild(this.select);
+      const legend = document.createElement("span");
+      legend.innerHTML = '<span class="legend-key"></span>feed <span class="legend-key rapid"></span>G0 rapid &nbsp; machine coordinates (MCS), mm';
+      bar.appendChild(legend);
+      el.appendChild(bar);
+      this.canvas = document.createElement("canvas");
+      el.appendChild(this.canvas);
+      this.info = document.createElement("div");
+      this.info.className = "info";
+      this.info.textContent = "Hover the path for its block; wheel to zoom, drag to pan, double-click to fit.";
+      el.appendChild(this.info);
+      parent.appendChild(el);
+      this.el = el;
+      this.multi = data.channels.length > 1;
+      const width = this.multi ? Math.floor((parent.clientWidth - 60) / 2) : Math.min(parent.clientWidth - 16, 900);
+      this.resize(Math.max(360, width), 460);
+      this.bindMouse();
+      this.fit();
+      this.draw();
+    }
+
+    resize(w, h) {
+      const dpr = window.devicePixelRatio || 1;
+      this.w = w; this.h = h;
+      this.canvas.width = w * dpr; this.canvas.height = h * dpr;
+      this.canvas.style.width = w + "px"; this.canvas.style.height = h + "px";
+      this.el.style.width = w + 14 + "px";  // the title bar wraps instead of widening the box
+      this.ctx = this.canvas.getContext("2d");
+      this.ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    }
+
+    // The view's horizontal and vertical coordinate of point i.
+    project(i) {
+      const ch = this.ch, v = VIEWS[this.select.value] || VIEWS.XY;
+      const p = [ch.x[i], ch.y[i], ch.z[i]];
+      if (v.iso) return [(p[0] - p[1]) * C30, p[2] + (p[0] + p[1]) * S30];
+      return [p[v.h], p[v.v]];
+    }
+
+    // The extents of the drawn path, per machine axis (what the test compares).
+    extents() {
+      const ch = this.ch, out = { min: [Infinity, Infinity, Infinity], max: [-Infinity, -Infinity, -Infinity] };
+      const arrays = [ch.x, ch.y, ch.z];
+      for (let a = 0; a < 3; a++)
+        for (let i = 0; i < this.n; i++) {
+          out.min[a] = Math.min(out.min[a], arrays[a][i]);
+          out.max[a] = Math.max(out.max[a], arrays[a][i]);
+        }
+      return out;
+    }
+
+    fit() {
+      let lo = [Infinity, Infinity], hi = [-Infinity, -Infinity];
+      this.uv = new Float64Array(this.n * 2);
+      for (let i = 0; i < this.n; i++) {
+        const q = this.project(i);
+        this.uv[2 * i] = q[0]; this.uv[2 * i + 1] = q[1];
+        for (let k = 0; k < 2; k++) { lo[k] = Math.min(lo[k], q[k]); hi[k] = Math.max(hi[k], q[k]); }
+      }
+      if (!this.n) { lo = [0, 0]; hi = [1, 1]; }
+      const span = [Math.max(hi[0] - lo[0], 1e-3), Math.max(hi[1] - lo[1], 1e-3)];
+      const m = 40;
+      this.scale = Math.min((this.w - 2 * m) / span[0], (this.h - 2 * m) / span[1]);
+      this.cx = (lo[0] + hi[0]) / 2; this.cy = (lo[1] + hi[1]) / 2;
+    }
+
+    toScreen(u, v) { return [this.w / 2 + (u - this.cx) * this.scale, this.h / 2 - (v - this.cy) * this.scale]; }
+    toModel(x, y) { return [this.cx + (x - this.w / 2) / this.scale, this.cy - (y - this.h / 2) / this.scale]; }
+
+    drawGrid(ctx) {
+      const view = VIEWS[this.select.value] || VIEWS.XY;
+      const [u0, v1] = this.toModel(0, 0), [u1, v0] = this.toModel(this.w, this.h);
+      const step = niceStep(Math.max(u1 - u0, v1 - v0), 10);
+      ctx.strokeStyle = "#e6e9ef"; ctx.fillStyle = "#667085"; ctx.lineWidth = 1; ctx.setLineDash([]);
+      ctx.font = "11px system-ui, sans-serif";
+      ctx.beginPath();
+      for (let u = Math.ceil(u0 / step) * step; u <= u1; u += step) {
+        const [x] = this.toScreen(u, 0);
+        ctx.moveTo(x, 0); ctx.lineTo(x, this.h);
+        ctx.fillText(fmtNum(u), x + 2, this.h - 4);
+      }
+      for (let v = Math.ceil(v0 / step) * step; v <= v1; v += step) {
+        const [, y] = this.toScreen(0, v);
+        ctx.moveTo(0, y); ctx.lineTo(this.w, y);
+        ctx.fillText(fmtNum(v), 2, y - 2);
+      }
+      ctx.stroke();
+      const names = this.ch.axes;
+      ctx.fillStyle = "#1d2330"; ctx.font = "12px system-ui, sans-serif";
+      if (!view.iso) {
+        ctx.fillText(names[view.h] + " (mm) →", this.w - 80, this.h - 18);
+        ctx.fillText("↑ " + names[view.v] + " (mm)", 40, 14);
+      } else {
+        ctx.fillText("isometric: X, Y, Z (mm)", 8, 14);
+      }
+      // the machine zero, where it is in view
+      const [zx, zy] = this.toScreen(0, 0);
+      ctx.strokeStyle = "#98a2b3"; ctx.beginPath();
+      ctx.moveTo(zx - 6, zy); ctx.lineTo(zx + 6, zy); ctx.moveTo(zx, zy - 6); ctx.lineTo(zx, zy + 6); ctx.stroke();
+    }
+
+    draw() {
+      const ctx = this.ctx, ch = this.ch, n = this.n;
+      ctx.clearRect(0, 0, this.w, this.h);
+      ctx.fillStyle = "#fff"; ctx.fillRect(0, 0, this.w, this.h);
+      this.drawGrid(ctx);
+      ctx.lineWidth = 1.4; ctx.lineJoin = "round";
+      const batch = Math.max(1, Math.ceil(n / 200));  // colour changes along the program in ~200 steps
+      let i = 1;
+      while (i < n) {
+        const rapid = ch.rapid[i] === 1;
+        const end = Math.min(n, i + batch);
+        ctx.beginPath();
+        let [x, y] = this.toScreen(this.uv[2 * i - 2], this.uv[2 * i - 1]);
+        ctx.moveTo(x, y);
+        let j = i;
+        for (; j < end && (ch.rapid[j] === 1) === rapid; j++) {
+          [x, y] = this.toScreen(this.uv[2 * j], this.uv[2 * j + 1]);
+          ctx.lineTo(x, y);
+        }
+        if (rapid) { ctx.strokeStyle = "#d62728"; ctx.setLineDash([5, 4]); }
+        else { ctx.strokeStyle = "hsl(" + (215 - 185 * (i / n)).toFixed(0) + ",75%,42%)"; ctx.setLineDash([]); }
+        ctx.stroke();
+        i = j;
+      }
+      ctx.setLineDash([]);
+      // moves along the viewing direction (drilling, plunging in XY) as rings
+      ctx.strokeStyle = "#344054"; ctx.lineWidth = 1.2;
+      for (let k = 1; k < n; k++) {
+        const du = this.uv[2 * k] - this.uv[2 * k - 2], dv = this.uv[2 * k + 1] - this.uv[2 * k - 1];
+        if ((du * du + dv * dv) * this.scale * this.scale > 0.25 || ch.rapid[k] === 1) continue;
+        const moved = Math.abs(ch.x[k] - ch.x[k - 1]) + Math.abs(ch.y[k] - ch.y[k - 1]) + Math.abs(ch.z[k] - ch.z[k - 1]);
+        if (moved < 1e-3) continue;
+        const [x, y] = this.toScreen(this.uv[2 * k], this.uv[2 * k + 1]);
+        ctx.beginPath(); ctx.arc(x, y, 4, 0, 2 * Math.PI); ctx.stroke();
+      }
+      if (this.hover != null) {
+        const [hx, hy] = this.toScreen(this.uv[2 * this.hover], this.uv[2 * this.hover + 1]);
+        ctx.strokeStyle = "#111"; ctx.lineWidth = 2; ctx.beginPath(); ctx.arc(hx, hy, 5, 0, 2 * Math.PI); ctx.stroke();
+      }
+    }
+
+    nearest(px, py) {
+      let best = -1, bestD = 12 * 12;
+      for (let i = 0; i < this.n; i++) {
+        const [x, y] = this.toScreen(this.uv[2 * i], this.uv[2 * i + 1]);
+        const d = (x - px) * (x - px) + (y - py) * (y - py);
+        if (d < bestD) { bestD = d; best = i; }
+      }
+      return best;
+    }
+
+    describe(i) {
+      const ch = this.ch, d = this.data;
+      const text = d.lines[ch.file[i] + ":" + ch.line[i]] || "";
+      const file = d.files[ch.file[i]] || "";
+      const pos = ch.axes.map((a, k) => (ch.has[k] ? a + " " + fmtNum([ch.x, ch.y, ch.z][k][i]) : "")).filter(Boolean).join("  ");
+      return (ch.line[i] ? file.split("/").pop() + ":" + ch.line[i] + "  " + text.trim() : "before the first block") +
+        "  —  " + (ch.rapid[i] ? "G0 to " : "to ") + pos + " mm";
+    }
+
+    bindMouse() {
+      const c = this.canvas;
+      let drag = null;
+      c.addEventListener("wheel", (e) => {
+        e.preventDefault();
+        const r = c.getBoundingClientRect();
+        const [u, v] = this.toModel(e.clientX - r.left, e.clientY - r.top);
+        const f = Math.exp(-e.deltaY * 0.0015);
+        this.scale *= f;
+        this.cx = u - (u - this.cx) / f; this.cy = v - (v - this.cy) / f;
+        this.draw();
+      }, { passive: false });
+      c.addEventListener("mousedown", (e) => { drag = { x: e.clientX, y: e.clientY, cx: this.cx, cy: this.cy }; });
+      window.addEventListener("mouseup", () => { drag = null; });
+      c.addEventListener("mousemove", (e) => {
+        if (drag) {
+          this.cx = drag.cx - (e.clientX - drag.x) / this.scale;
+          this.cy = drag.cy + (e.clientY - drag.y) / this.scale;
+          this.draw();
+          return;
+        }
+        const r = c.getBoundingClientRect();
+        const i = this.nearest(e.clientX - r.left, e.clientY - r.top);
+        this.hover = i >= 0 ? i : null;
+        this.info.textContent = i >= 0 ? this.describe(i) : "";
+        this.draw();
+      });
+      c.addEventListener("dblclick", () => { this.fit(); this.draw(); });
+    }
+  }
+
+  window.NckBackplot = Backplot;
+})();

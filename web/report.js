@@ -1,0 +1,233 @@
+// The report page: reads the run's data (the JSON in #nck-data) and builds
+// the summary, tables, backplots (backplot.js) and time plots (uPlot).
+(function () {
+  "use strict";
+  const t0 = performance.now();
+  const D = JSON.parse(document.getElementById("nck-data").textContent);
+  const $ = (id) => document.getElementById(id);
+  const esc = (s) => String(s == null ? "" : s).replace(/[&<>"]/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;" }[c]));
+  const base = (p) => String(p || "").split("/").pop();
+  const COLOURS = ["#1f6feb", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#17becf", "#e377c2"];
+  const REASONS = {
+    plc_ack: "the PLC's acknowledgement", speed_reached: "speed reached", in_position: "in position",
+    standstill: "standstill", homing: "homing", gear_change: "gear change", expl_syn: "explicit synchronisation",
+    dwell: "dwell", feedhold: "feed hold",
+  };
+
+  function hms(s) {
+    const h = Math.floor(s / 3600), m = Math.floor((s % 3600) / 60), sec = s - 3600 * h - 60 * m;
+    return h + ":" + String(m).padStart(2, "0") + ":" + sec.toFixed(3).padStart(6, "0");
+  }
+  function lineText(file, line) { return D.lines[file + ":" + line] || ""; }
+  function nLabel(file, line) {
+    const m = /^\s*N(\d+)/i.exec(lineText(file, line));
+    return m ? "N" + m[1] : "line " + line;
+  }
+  function table(headers, rows, numeric) {
+    let h = "<table><tr>" + headers.map((x, i) => "<th" + (numeric && numeric[i] ? ' class="num"' : "") + ">" + esc(x) + "</th>").join("") + "</tr>";
+    for (const r of rows) h += "<tr>" + r.map((x, i) => "<td" + (numeric && numeric[i] ? ' class="num"' : "") + ">" + x + "</td>").join("") + "</tr>";
+    return h + "</table>";
+  }
+
+  // --- what a wait means, in words ---------------------------------------
+  function waitText(w) {
+    const what = (w.spindle ? w.spindle + " " : "") + (REASONS[w.reason] || w.reason);
+    return nLabel(w.file, w.line) + " waits " + (w.t1 - w.t0).toFixed(3) + " s for " + what +
+      (w.fn ? " (" + w.fn + ")" : "") + (w.sync ? ", " + w.sync : "");
+  }
+
+  // --- summary ---------------------------------------------------------
+  function summary() {
+    const m = D.meta;
+    const waitsBy = {};
+    for (const w of D.waits) waitsBy[w.reason] = (waitsBy[w.reason] || 0) + (w.t1 - w.t0);
+    const waits = Object.entries(waitsBy).map(([r, s]) => esc(REASONS[r] || r) + " " + s.toFixed(3) + " s").join(", ") || "none";
+    const rows = [
+      ["machine", "<code>" + esc(m.machine) + "</code>"],
+      ["program(s)", m.programs.map((p, i) => "channel " + (i + 1) + ": <code>" + esc(p) + "</code>").join("<br>")],
+      ["PLC scenario", m.plc ? "<code>" + esc(m.plc) + "</code>" : "none (the PLC acknowledges at once)"],
+      ["end", esc(m.end || (m.exit_code === 0 ? "program end" : "")) + " (exit code " + m.exit_code + ")"],
+      ["cycle time", hms(m.end_s) + " (" + m.end_s.toFixed(3) + " s simulated, NC cycle " + (m.cycle_s * 1000).toFixed(3) + " ms)"],
+      ["errors / warnings", '<span class="' + (m.errors ? "err" : "") + '">' + m.errors + "</span> / <span class=\"" + (m.warnings ? "warn" : "") + '">' + m.warnings + "</span>"],
+      ["waits", waits],
+    ];
+    $("summary").innerHTML = '<div class="kv">' + rows.map(([k, v]) => "<b>" + k + "</b><span>" + v + "</span>").join("") + "</div>";
+  }
+
+  // --- errors and warnings ---------------------------------------------
+  function diagnostics() {
+    if (!D.diagnostics.length) return;
+    $("diagnostics-section").hidden = false;
+    const fileId = (name) => D.files.indexOf(name);
+    const rows = D.diagnostics.map((d) => [
+      '<span class="' + (d.ev === "error" ? "err" : "warn") + '">' + d.ev + "</span>", d.id, d.ch || "",
+      esc(base(d.file)) + ":" + (d.line || ""), '<span class="nc">' + esc(lineText(fileId(d.file), d.line)) + "</span>",
+      esc(d.msg), d.t.toFixed(3)]);
+    $("diagnostics").innerHTML = table(["", "id", "ch", "where", "NC line", "message", "t (s)"], rows, [0, 0, 0, 0, 0, 0, 1]);
+  }
+
+  // --- time plots -------------------------------------------------------
+  const plots = [];
+  let tip = null;
+  function showTip(text, x, y) {
+    if (!tip) { tip = document.createElement("div"); tip.className = "tip"; document.body.appendChild(tip); }
+    tip.textContent = text; tip.style.left = x + 14 + "px"; tip.style.top = y + 14 + "px"; tip.hidden = false;
+  }
+  function hideTip() { if (tip) tip.hidden = true; }
+
+  function waitsFor(meta) {
+    if (meta.ch) return D.waits.filter((w) => w.ch === meta.ch);
+    const name = D.spindles[meta.spindle];
+    return D.waits.filter((w) => w.spindle === name);
+  }
+
+  // Shades the waits and draws the spindle marks under the lines.
+  function shadesPlugin(waits, marks) {
+    return {
+      hooks: {
+        drawClear: (u) => {
+          const ctx = u.ctx, top = u.bbox.top, h = u.bbox.height;
+          ctx.save();
+          for (const w of waits) {
+            const x0 = u.valToPos(w.t0, "x", true), x1 = u.valToPos(w.t1, "x", true);
+            if (x1 < u.bbox.left || x0 > u.bbox.left + u.bbox.width) continue;
+            ctx.fillStyle = w.reason === "feedhold" ? "rgba(214,39,40,0.16)" : "rgba(255,170,0,0.22)";
+            ctx.fillRect(Math.max(x0, u.bbox.left), top, Math.max(1, Math.min(x1, u.bbox.left + u.bbox.width) - Math.max(x0, u.bbox.left)), h);
+          }
+          ctx.restore();
+        },
+        draw: (u) => {
+          const ctx = u.ctx;
+          ctx.save();
+          ctx.font = 11 * devicePixelRatio + "px system-ui, sans-serif";
+          for (const m of marks) {
+            const x = u.valToPos(m.t, "x", true);
+            if (x < u.bbox.left || x > u.bbox.left + u.bbox.width) continue;
+            ctx.strokeStyle = m.kind === "gear" ? "#9467bd" : m.kind === "speed_reached" ? "#2ca02c" : "#667085";
+            ctx.setLineDash(m.kind === "s" ? [3, 3] : []);
+            ctx.beginPath(); ctx.moveTo(x, u.bbox.top); ctx.lineTo(x, u.bbox.top + u.bbox.height); ctx.stroke();
+            ctx.fillStyle = ctx.strokeStyle;
+            ctx.fillText(m.kind === "gear" ? m.text.split(" ")[0] : m.kind === "speed_reached" ? "✓" : "S", x + 3, u.bbox.top + 12 * devicePixelRatio);
+          }
+          ctx.restore();
+        },
+      },
+    };
+  }
+
+  function syncX(src) {
+    const { min, max } = src.scales.x;
+    for (const p of plots) if (p.u !== src && (p.u.scales.x.min !== min || p.u.scales.x.max !== max)) p.u.setScale("x", { min, max });
+  }
+
+  function timeplots() {
+    const panels = new Map();
+    D.series.forEach((s, i) => {
+      if (s.kind === "c_axis" && !D.meta.c_axis) return;  // follows the turning spindle: not an axis motion
+      const v = D.ts.v[i];
+      let lo = Infinity, hi = -Infinity;
+      for (const x of v) { if (x < lo) lo = x; if (x > hi) hi = x; }
+      if (!(hi > lo) && !(s.kind === "act_rpm" || s.kind === "set_rpm") && !(s.kind === "velocity" && hi > 0)) return; // nothing happens
+      if ((s.kind === "set_rpm" || s.kind === "act_rpm") && lo === 0 && hi === 0) return;
+      if (!panels.has(s.panel)) panels.set(s.panel, { meta: s, idx: [] });
+      panels.get(s.panel).idx.push(i);
+    });
+    const width = Math.min($("timeplots").clientWidth - 10, 1220);
+    for (const [title, p] of panels) {
+      const box = document.createElement("div");
+      box.className = "timeplot";
+      box.dataset.panel = title;
+      box.innerHTML = "<h3>" + esc(title) + "</h3>";
+      $("timeplots").appendChild(box);
+      const unit = p.meta.unit;
+      const marks = p.meta.spindle != null ? D.marks.filter((m) => m.spindle === p.meta.spindle) : [];
+      const waits = waitsFor(p.meta);
+      const opts = {
+        width, height: 230,
+        cursor: { sync: { key: "nck", setSeries: false }, drag: { x: true, y: false } },
+        scales: { x: { time: false } },
+        axes: [
+          { label: "time (s)", grid: { stroke: "#eef0f4" }, ticks: { stroke: "#c9ced8" } },
+          { label: unit, size: 70, grid: { stroke: "#eef0f4" }, ticks: { stroke: "#c9ced8" } },
+        ],
+        series: [{ label: "t (s)", value: (u, v) => (v == null ? "-" : v.toFixed(4)) }].concat(p.idx.map((i, k) => ({
+          label: D.series[i].name + " (" + unit + ")",
+          stroke: D.series[i].kind === "act_rpm" ? "#d62728" : D.series[i].kind === "set_rpm" ? "#1f6feb" : COLOURS[k % COLOURS.length],
+          width: 1.5,
+          dash: D.series[i].kind === "set_rpm" ? [6, 3] : undefined,
+          value: (u, v) => (v == null ? "-" : (+v.toFixed(3)).toString()),
+        }))),
+        plugins: [shadesPlugin(waits, marks)],
+        hooks: { setScale: [(u, key) => { if (key === "x") syncX(u); }] },
+      };
+      const u = new uPlot(opts, [D.ts.t].concat(p.idx.map((i) => D.ts.v[i])), box);
+      plots.push({ title, u, waits, marks, series: p.idx.map((i) => D.series[i].name), points: D.ts.t.length });
+      u.over.addEventListener("mousemove", (e) => {
+        const t = u.posToVal(e.offsetX, "x");
+        const w = waits.find((w) => t >= w.t0 && t <= w.t1);
+        const px = u.bbox.width / devicePixelRatio / Math.max(1e-9, u.scales.x.max - u.scales.x.min);
+        const mk = marks.find((m) => Math.abs(m.t - t) * px < 4);
+        const text = [w ? waitText(w) : "", mk ? mk.t.toFixed(3) + " s: " + (mk.spindle != null ? D.spindles[mk.spindle] + " " : "") + mk.text : ""].filter(Boolean).join(" · ");
+        if (text) showTip(text, e.clientX, e.clientY); else hideTip();
+      });
+      u.over.addEventListener("mouseleave", hideTip);
+    }
+    if (!panels.size) $("timeplots").insertAdjacentHTML("beforeend", '<p class="hint">Nothing moved and no spindle turned.</p>');
+  }
+
+  // --- cycle time per tool and per block --------------------------------
+  function cycletime() {
+    const total = Math.max(D.meta.end_s, 1e-9);
+    const tools = D.summary.tools.filter((t) => t.time_s > 0).map((t) => [t.ch, esc(t.tool === "-" ? "(none)" : t.tool), t.time_s.toFixed(3), hms(t.time_s), (100 * t.time_s / total).toFixed(1) + " %"]);
+    const blocks = D.summary.blocks.filter((b) => b.time_s > 0).slice(0, 40).map((b) => [b.ch, esc(base(D.files[b.file])) + ":" + b.line, '<span class="nc">' + esc(lineText(b.file, b.line)) + "</span>", b.count, b.time_s.toFixed(3), (100 * b.time_s / total).toFixed(1) + " %"]);
+    $("cycletime").innerHTML =
+      "<div><h3>Per tool</h3>" + table(["ch", "tool", "time (s)", "h:mm:ss", "share"], tools, [0, 0, 1, 1, 1]) + "</div>" +
+      "<div><h3>Longest blocks (" + Math.min(40, D.summary.blocks.length) + " of " + D.summary.blocks_total + ")</h3>" +
+      table(["ch", "line", "NC text", "runs", "time (s)", "share"], blocks, [0, 0, 0, 1, 1, 1]) + "</div>";
+  }
+
+  // --- the filterable event table ----------------------------------------
+  function events() {
+    const kinds = [...new Set(D.events.map((e) => e.ev))];
+    for (const k of kinds) $("event-kind").insertAdjacentHTML("beforeend", "<option>" + esc(k) + "</option>");
+    const texts = D.events.map((e) => JSON.stringify(e).toLowerCase());
+    const render = () => {
+      const q = $("event-filter").value.trim().toLowerCase(), kind = $("event-kind").value;
+      const rows = [];
+      let matches = 0;
+      D.events.forEach((e, i) => {
+        if ((kind && e.ev !== kind) || (q && !texts[i].includes(q))) return;
+        if (++matches > 500) return;
+        const rest = Object.entries(e).filter(([k]) => k !== "t" && k !== "ch" && k !== "ev")
+          .map(([k, v]) => "<b>" + esc(k) + "</b> " + esc(typeof v === "object" ? JSON.stringify(v) : v)).join(" &nbsp; ");
+        rows.push([e.t.toFixed(4), e.ch || "", esc(e.ev), rest]);
+      });
+      $("events").innerHTML = table(["t (s)", "ch", "event", "fields"], rows, [1, 0, 0, 0]) +
+        (matches > 500 ? '<div class="more">' + (matches - 500) + " more rows: narrow the filter</div>" : "") +
+        (D.events_dropped ? '<div class="more">' + D.events_dropped + " events are not in this table (see --events)</div>" : "");
+      $("event-count").textContent = matches + " of " + D.events.length + " events";
+    };
+    $("event-filter").addEventListener("input", render);
+    $("event-kind").addEventListener("change", render);
+    render();
+  }
+
+  function backplots() {
+    const parent = $("backplots");
+    const list = [];
+    for (const ch of D.channels) {
+      const b = new NckBackplot(parent, ch, D);
+      list.push(b);
+    }
+    return list;
+  }
+
+  summary();
+  diagnostics();
+  const bps = backplots();
+  timeplots();
+  cycletime();
+  events();
+  // For the browser test and for scripting: what was drawn.
+  window.nckReport = { data: D, plots, backplots: bps, waitText, loadMs: performance.now() - t0, ready: true };
+})();
