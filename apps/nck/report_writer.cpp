@@ -76,6 +76,11 @@ void ReportWriter::start(const config::Machine& m, std::vector<std::string> prog
   const std::vector<SpindleName> spindles = machine_spindles(m);
   for (const SpindleName& s : spindles) series_.push_back({s.name + ".rpm", "rpm", {}});
   spindle_count_ = spindles.size();
+  for (std::size_t c = 0; c < m.channels.size(); ++c)  // 3D distance control: sensor, offset, error
+    if (m.channels[c].dist_ctrl_enabled()) {
+      dist_channels_.push_back(c);
+      for (const char* n : {"dist.sensor", "dist.offset", "dist.error"}) series_.push_back({n, "mm", {}});
+    }
 }
 
 void ReportWriter::sample(const kernel::TickOutput& out) {
@@ -96,6 +101,11 @@ void ReportWriter::sample(const kernel::TickOutput& out) {
   for (std::size_t c = 0; c < axis_count_.size(); ++c)
     for (std::size_t j = 0; j < axis_count_[c]; ++j) series_[k++].values.push_back(out.channels[c].axis_mcs[j]);
   for (std::size_t s = 0; s < spindle_count_; ++s) series_[k++].values.push_back(out.spindles[s].set_rpm);
+  for (std::size_t c : dist_channels_) {
+    series_[k++].values.push_back(out.channels[c].dist_sensor_mm);
+    series_[k++].values.push_back(out.channels[c].dist_offset_mm);
+    series_[k++].values.push_back(out.channels[c].dist_error_mm);
+  }
 }
 
 void ReportWriter::event(const std::string& json_line, bool is_error) {
@@ -143,6 +153,16 @@ std::optional<std::string> ReportWriter::write(const std::string& path, double e
       names.push_back(series_[k].name);
     }
     h += "<h2>Spindles</h2>" + svg_plot("set-point speed (rpm)", t_, ys, names);
+  }
+  for (std::size_t c : dist_channels_) {
+    std::vector<const std::vector<double>*> ys;
+    std::vector<std::string> names;
+    for (int i = 0; i < 3; ++i, ++k) {
+      ys.push_back(&series_[k].values);
+      names.push_back(series_[k].name);
+    }
+    h += fmt::format("<h2>3D distance control, channel {}</h2>", c + 1) +
+         svg_plot("sensor, offset, distance error (mm)", t_, ys, names);
   }
   h += fmt::format("<h2>Events</h2><pre>");
   for (const std::string& e : events_) h += escape(e) + "\n";

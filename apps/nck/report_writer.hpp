@@ -39,6 +39,7 @@ class ReportWriter {
   std::vector<Series> series_;
   std::vector<std::size_t> axis_count_;  // per channel
   std::size_t spindle_count_ = 0;
+  std::vector<std::size_t> dist_channels_;  // channels with 3D distance control (3 series each)
   std::uint64_t stride_ = 1, cycle_ = 0;
   std::vector<std::string> events_, errors_;
   std::size_t events_dropped_ = 0;

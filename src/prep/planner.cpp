@@ -20,7 +20,7 @@ bool is_fixed_m(int m) {
 // #MAIN SPINDLE (whose name mapping the decoder does).
 bool is_executed_command(const nc::HashCommand& h) {
   if (std::holds_alternative<nc::ExplSyn>(h) || std::holds_alternative<nc::MainSpindle>(h) ||
-      std::holds_alternative<nc::GetManualOffsets>(h))
+      std::holds_alternative<nc::GetManualOffsets>(h) || std::holds_alternative<nc::DistCtrl>(h))
     return true;
   if (std::holds_alternative<nc::CAxis>(h) || std::holds_alternative<nc::Face>(h) ||
       std::holds_alternative<nc::Cylinder>(h))
@@ -265,6 +265,7 @@ Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
   if (std::string why = cax_violation(b, cax_id); !why.empty())
     return error_command(cax_id, why, b.file_id, b.line);
   if (!plan_cax(b, c, error)) return error;
+  if (!plan_dist(b, c, error)) return error;
   auto actions = spindles_.plan(b);
   if (!actions) return error_command(actions.error().id, actions.error().message, b.file_id, b.line);
   c.spindle_actions = *actions;

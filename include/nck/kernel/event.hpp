@@ -23,6 +23,7 @@ enum class EventKind : std::uint8_t {
   warning,
   error,
   end,        // program end of a channel
+  dist_ctrl,  // 3D distance control changed state (dist_state)
 };
 
 inline constexpr std::uint32_t kNoMessage = 0xFFFFFFFFu;
@@ -57,6 +58,8 @@ struct Event {
   std::uint32_t gear = 0;           // gear stage 1..6
   // end
   EndReason end_reason = EndReason::m30;
+  // dist_ctrl: distctrl::State
+  std::uint8_t dist_state = 0;
 };
 
 enum class WaitReason : std::uint8_t {

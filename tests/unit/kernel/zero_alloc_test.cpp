@@ -121,6 +121,7 @@ TEST(ZeroAllocation, WholeExamplesRunThroughTickWithoutHeap) {
       {"examples/lathe", {"examples/lathe/thread.nc"}},
       {"examples/lathe", {"examples/lathe/tapping.nc"}},
       {"examples/mill", {"examples/mill/tapping.nc"}},
+      {"examples/cutter", {"examples/cutter/contour.nc"}},
       {"examples/two-channel", {"examples/two-channel/channel1.nc", "examples/two-channel/channel2.nc"}},
   };
   for (const Example& ex : examples) {
