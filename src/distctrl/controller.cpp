@@ -76,10 +76,8 @@ ErrorId Controller::apply(const Switch& sw) noexcept {
   take(sw.set_pos_mm, set_pos_mm_);
   take(sw.set_dist_mm, set_dist_mm_);
   // New filter / controller values take effect from the next sample on;
-  // the offset itself does not move for it.
-  const double pos = limiter_.pos();
+  // the offset and its velocity carry on (no jump in the set point).
   configure_chain();
-  limiter_.reset(pos);
   switch (sw.op) {
     case Op::none: return {};
     case Op::on: {
@@ -139,8 +137,11 @@ ErrorId Controller::step(const Sample& smp, double prog_tool_mm) noexcept {
     if (controlling) target_mm_ = limiter_.pos() + pid_.step(dist_error_mm_);
   }
   // FREEZE, and a dropout (no valid sample this cycle), hold the offset
-  // where it is (braking within a_max from its velocity).
+  // where it is (braking within a_max from its velocity). After a dropout
+  // the filter starts again from the first new value: what changed
+  // meanwhile is no rate of change of the sensor.
   if (state_ == State::freeze || !smp.valid) target_mm_ = limiter_.pos();
+  if (!smp.valid) restart_ = true;
   if (state_ == State::turning_off) target_mm_ = 0;
   const double pos = limiter_.step(target_mm_, dist_error_mm_);
   if (std::fabs(pos) > s_.max_deviation_mm) {

@@ -96,11 +96,12 @@ TEST(DistCtrlCutter, DistanceErrorStaysWithinPointTwoMillimetres) {
   EXPECT_GT(checked, 4000u);
   EXPECT_LE(worst, 0.2) << "worst distance error " << worst;
   std::cout << "[cutter] worst |distance error| " << worst << " mm over " << checked << " cycles\n";
-  // The offset obeys v_max 30 mm/s and a_max 1 m/s^2 everywhere.
+  // The offset obeys v_max 30 mm/s and a_max 1 m/s^2 everywhere (the
+  // trace's 6 decimals add up to 0.002 mm/s and 2 mm/s^2 of rounding).
   for (std::size_t i = 2; i < t.rows; ++i) {
     const double v1 = (off[i] - off[i - 1]) / 0.001, v0 = (off[i - 1] - off[i - 2]) / 0.001;
-    ASSERT_LE(std::fabs(v1), 30 + 1e-6) << ts[i];
-    ASSERT_LE(std::fabs(v1 - v0) / 0.001, 1000 + 1e-3) << ts[i];
+    ASSERT_LE(std::fabs(v1), 30 + 2e-3) << ts[i];
+    ASSERT_LE(std::fabs(v1 - v0) / 0.001, 1000 + 2.5) << ts[i];
   }
   EXPECT_EQ(dist_states(dir / "e.jsonl"),
             (std::vector<std::string>{"ACTIVE", "FREEZE", "ACTIVE", "FREEZE", "TURNING_OFF", "INACTIVE"}));
@@ -190,9 +191,11 @@ TEST(DistCtrlChain, DropoutHoldsTheOffset) {
   for (std::size_t i = 0; i < t.rows; ++i)
     if (t["t"][i] >= 0.402 && t["t"][i] < 0.5) during.push_back(t["dist.offset"][i]);
   ASSERT_FALSE(during.empty());
-  // No new values for 100 cycles: the offset brakes to a stop and stays.
+  // No new values for 100 cycles: the offset brakes to a stop and stays
+  // (from at most 4 mm/s at 1 m/s^2: 8 um); afterwards the control goes on.
   EXPECT_NEAR(during.front(), during.back(), 0.01);
   EXPECT_DOUBLE_EQ(during[during.size() - 2], during.back());
+  EXPECT_EQ(dist_states(c.dir / "e.jsonl"), (std::vector<std::string>{"ACTIVE", "TURNING_OFF", "INACTIVE"}));
 }
 
 // SENSOR_SOURCE=VARIABLE: the PLC scenario writes the gap. It reads 1.5

@@ -157,7 +157,8 @@ TEST(RunCommand, ReportIsASelfContainedPageWithPlots) {
   const std::string html = read_file(dir / "r.html");
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
   EXPECT_NE(html.find("</html>"), std::string::npos);
-  EXPECT_EQ(count(html, "<svg"), 2u);  // the channel's axes, the spindles
+  EXPECT_EQ(count(html, "<svg"), 3u);  // the channel's axes, the spindles, distance control (the mill has it)
+  EXPECT_NE(html.find("sensor, offset, distance error (mm)"), std::string::npos);
   EXPECT_EQ(count(html, "<svg"), count(html, "</svg>"));
   EXPECT_NE(html.find(">S1.rpm<"), std::string::npos);
   EXPECT_NE(html.find(">X<"), std::string::npos);

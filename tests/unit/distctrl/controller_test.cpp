@@ -196,6 +196,22 @@ TEST(Controller, FreezeHoldsAndNoMoveKeepsTheOffset) {
   EXPECT_NEAR(c.offset_mm(), 0.5, 1e-6);
 }
 
+TEST(Controller, SwitchingKeepsTheOffsetVelocity) {
+  Controller c;
+  c.setup(settings(), kDt);
+  c.apply(on_surface(0));
+  c.step({true, 2.0 - 1.0}, 2.0);  // 1 mm error: the offset starts moving
+  c.step({true, 2.0 + c.offset_mm() - 1.0}, 2.0);
+  const double v = c.offset_v_mm_s();
+  ASSERT_GT(v, 0);
+  Switch fr;
+  fr.op = Op::freeze;
+  c.apply(fr);
+  EXPECT_DOUBLE_EQ(c.offset_v_mm_s(), v);  // it brakes from there within a_max
+  c.step({true, 2.0}, 2.0);
+  EXPECT_NEAR(c.offset_v_mm_s(), std::max(0.0, v - 5000 * kDt), 1e-9);
+}
+
 TEST(Controller, DropoutHoldsTheOffset) {
   Controller c;
   c.setup(settings(), kDt);
@@ -203,6 +219,16 @@ TEST(Controller, DropoutHoldsTheOffset) {
   run(c, 2.0, 0.5, 300);
   for (int k = 0; k < 50; ++k) EXPECT_EQ(c.step({false, 0.0}, 2.0), ErrorId{});
   EXPECT_NEAR(c.offset_mm(), 0.5, 1e-6);
+  // Meanwhile the sheet rose 0.3 mm: the filter restarts, no rate error.
+  Settings s = settings();
+  s.max_act_value_change_mm_s = 100;  // 0.1 mm per cycle
+  Controller d;
+  d.setup(s, kDt);
+  d.apply(on_surface(0));
+  run(d, 2.0, 0.5, 300);
+  for (int k = 0; k < 50; ++k) d.step({false, 0.0}, 2.0);
+  EXPECT_EQ(d.step({true, 2.0 + d.offset_mm() - 0.8}, 2.0), ErrorId{});
+  EXPECT_NEAR(run(d, 2.0, 0.8, 300), 0.8, 1e-6);
 }
 
 TEST(Controller, SensorRangeWithTolerance) {
