@@ -4,6 +4,7 @@
 
 #include "machine_names.hpp"
 #include "nck/spindle/spindle_status.hpp"
+#include "nck/distctrl/controller.hpp"
 #include "output_writers.hpp"
 
 #include "nck/core/utf8.hpp"
@@ -83,6 +84,12 @@ std::optional<std::string> write_final(const std::string& path, const config::Ma
                             {"main_spindle", main_spindle_designation(m.channels[c])},
                             {"trc", fmt::format("G{}", static_cast<int>(s.modal.radius_comp))},
                             {"tool", tool_json(m, c, s.modal.d)}});
+    if (m.channels[c].dist_ctrl_enabled()) {  // 3D distance control: its state and offset at the end
+      const kernel::ChannelState st = k.channel_state(c);
+      channels.back()["dist_ctrl"] = json{
+          {"state", distctrl::state_name(static_cast<distctrl::State>(st.dist_state))},
+          {"offset", st.dist_offset_mm}};
+    }
   }
   json spindles = json::object();
   for (std::size_t i = 0; i < k.spindle_count(); ++i) {

@@ -6,6 +6,7 @@
 
 #include "machine_names.hpp"
 #include "nck/core/utf8.hpp"
+#include "nck/distctrl/controller.hpp"
 #include "nck/spindle/spindle_status.hpp"
 
 namespace nck::app {
@@ -68,6 +69,7 @@ const char* kind_name(kernel::EventKind k) {
     case K::warning: return "warning";
     case K::error: return "error";
     case K::end: return "end";
+    case K::dist_ctrl: return "dist_ctrl";
   }
   return "unknown";
 }
@@ -207,6 +209,10 @@ std::string EventWriter::line(const kernel::Event& e, const RunNames& names) {
       j["line"] = e.line;
       break;
     }
+    case K::dist_ctrl:
+      j["state"] = distctrl::state_name(static_cast<distctrl::State>(e.dist_state));
+      j["line"] = e.line;
+      break;
     case K::offset: {
       const prep::OffsetPayload& p = names.run->offset(e.message_index);
       j["kind"] = p.kind;
@@ -246,7 +252,10 @@ std::vector<std::string> TraceWriter::column_names(const config::Machine& m) {
   bool first = true;  // dist.offset, then 2.dist.offset ... for later channels
   for (std::size_t c = 0; c < m.channels.size(); ++c) {
     if (!has_dist_ctrl(m.channels[c])) continue;
-    cols.push_back(first ? std::string("dist.offset") : fmt::format("{}.dist.offset", c + 1));
+    const std::string prefix = first ? std::string() : fmt::format("{}.", c + 1);
+    cols.push_back(prefix + "dist.offset");
+    cols.push_back(prefix + "dist.sensor");  // raw sensor value, mm
+    cols.push_back(prefix + "dist.state");   // distctrl::State: 0 INACTIVE .. 5 ERROR
     first = false;
   }
   for (const SpindleName& s : machine_spindles(m)) {
@@ -285,7 +294,9 @@ void TraceWriter::write(std::uint64_t cycle, const kernel::TickOutput& out) {
     for (std::size_t j = 0; j < axes_per_channel_[c]; ++j)
       fmt::format_to(std::back_inserter(row_), ",{:.6f}", out.channels[c].axis_mcs[j]);
   for (std::size_t c = 0; c < dist_ctrl_.size(); ++c)
-    if (dist_ctrl_[c]) fmt::format_to(std::back_inserter(row_), ",{:.6f}", out.channels[c].dist_offset_mm);
+    if (dist_ctrl_[c])
+      fmt::format_to(std::back_inserter(row_), ",{:.6f},{:.6f},{}", out.channels[c].dist_offset_mm,
+                     out.channels[c].dist_sensor_mm, out.channels[c].dist_state);
   for (std::size_t s = 0; s < spindle_count_; ++s) {
     const kernel::SpindleOutput& o = out.spindles[s];
     fmt::format_to(std::back_inserter(row_), ",{:.3f},{:.4f},{:.3f}", o.set_rpm, o.set_pos_deg, o.act_rpm);

@@ -123,6 +123,15 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, const 
     decimals_.push_back(2);
     decimals_.push_back(2);
   }
+  for (std::size_t c = 0; c < m.channels.size(); ++c) {  // 3D distance control: sensor, offset, error
+    if (!m.channels[c].dist_ctrl_enabled()) continue;
+    dist_channels_.push_back(c);
+    const std::string panel = quoted(fmt::format("channel {}: distance control", c + 1));
+    for (const char* n : {"dist.sensor", "dist.offset", "dist.error"}) {
+      series_meta_.push_back(fmt::format(R"({{"name":{},"unit":"mm","panel":{},"kind":"dist"}})", quoted(n), panel));
+      decimals_.push_back(4);
+    }
+  }
   row_.assign(series_meta_.size(), 0.0);
   series_.start(series_meta_.size(), cycle_s);
 }
@@ -229,6 +238,11 @@ void ReportWriter::sample(std::uint64_t cycle, const kernel::TickOutput& out, co
   for (std::size_t s = 0; s < spindles_.size(); ++s) {
     row_[k++] = out.spindles[s].set_rpm;
     row_[k++] = out.spindles[s].act_rpm;
+  }
+  for (std::size_t c : dist_channels_) {
+    row_[k++] = out.channels[c].dist_sensor_mm;
+    row_[k++] = out.channels[c].dist_offset_mm;
+    row_[k++] = out.channels[c].dist_error_mm;
   }
   series_.add(cycle, row_);
 }

@@ -98,6 +98,7 @@ class ReportWriter {
   std::vector<std::string> programs_;
   std::vector<Channel> channels_;
   std::vector<std::string> spindles_;
+  std::vector<std::size_t> dist_channels_;  // channels with 3D distance control (3 series each)
   std::vector<std::string> series_meta_;  // JSON objects, in EnvelopeSeries order
   std::vector<int> decimals_;
   std::vector<double> row_;

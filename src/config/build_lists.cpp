@@ -103,6 +103,12 @@ SimConfig build_sim(const ParamList& l) {
                                 : SensorFault::none;
   s.fault_time_s = l.num("sensor.fault_time_ms", s.fault_time_s);
   s.fault_value_mm = l.num("sensor.fault_value", s.fault_value_mm);
+  s.fault_cycles = l.u32("sensor.fault_cycles", s.fault_cycles);
+  s.surface_tilt_deg = l.num("sensor.surface_tilt", s.surface_tilt_deg);
+  s.sensor_tool_axis = l.text("sensor.tool_axis", s.sensor_tool_axis);
+  s.hole_start_mm = l.num("sensor.hole_start", s.hole_start_mm);
+  s.hole_length_mm = l.num("sensor.hole_length", s.hole_length_mm);
+  s.hole_depth_mm = l.num("sensor.hole_depth", s.hole_depth_mm);
   s.probe_axis = l.text("probe.axis", s.probe_axis);
   s.probe_position_mm = l.num("probe.position", s.probe_position_mm);
   return s;

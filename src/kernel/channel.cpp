@@ -42,6 +42,8 @@ void Channel::end_program(EndReason reason, double t_s, TickOutput& sink, Channe
   waits_.clear();
   late_.clear();
   end_c_axis(ctx);
+  dist_.stop(reason != EndReason::error);  // an error state stays visible
+  note_dist_state(t_s, sink);
   release_tap_spindle(ctx);
   take_links(Command{}, ctx);
   // Program end keeps an endless rotation unless the HLI asks to stop it; a
@@ -97,6 +99,7 @@ void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelConte
   }
   if (!start_c_axis(c, t_s, sink, ctx)) return;
   if (!take_ax_link(c, t_s, sink, ctx)) return;
+  if (!take_dist(c, t_s, sink, ctx)) return;
   take_links(c, ctx);
   manual_mask_ = (manual_mask_ | c.manual_on) & ~c.manual_off;
   if (c.get_manual_offsets) manual_fetch_pending_ = true;
@@ -192,6 +195,7 @@ void Channel::send_feedback(const Feedback& f, double t_s, TickOutput& sink, Cha
 motion::AxisVector Channel::machine_position() const noexcept {
   motion::AxisVector m = pos_;
   for (std::size_t j = 0; j < n_axes_; ++j) m[j] += manual_in_force_mm_[j];
+  if (dist_axis_ >= 0 && static_cast<std::size_t>(dist_axis_) < n_axes_) m[dist_axis_] += dist_.offset_mm();
   return m;
 }
 
@@ -219,6 +223,9 @@ void Channel::place(double s_mm) noexcept {
 
 // After the post waits: the block is done.
 void Channel::end_block(double t_s, const ChannelInput& in, TickOutput& sink, ChannelContext& ctx) noexcept {
+  // Program end switches distance control off: the block ends once the
+  // offset has been travelled out (TURNING_OFF).
+  if (current_.kind == CommandKind::end && dist_wind_down()) return;
   active_ = false;
   if (current_.kind == CommandKind::stop) {
     // A dry run has no operator: the stop is reported and the program goes
@@ -304,7 +311,9 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
   follow_axis_links();
   follow_c_axis(dt_s, ctx);
   follow_handwheel(t_s, dt_s, in, sink, ctx);
+  run_dist(t_s, in, sink, ctx);
   for (std::size_t j = 0; j < n_axes_; ++j) out.axis_mcs[j] = pos_[j] + manual_in_force_mm_[j];
+  dist_output(out);
   out.path_velocity_mm_s = velocity_;
   out.status = status_;
 }

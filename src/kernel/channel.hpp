@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "nck/distctrl/controller.hpp"
 #include "nck/kernel/command.hpp"
 #include "nck/kernel/queues.hpp"
 #include "nck/kernel/tick_io.hpp"
@@ -69,6 +70,10 @@ class Channel {
   void for_each_link(F&& f) const {
     for (const ActiveLink& l : links_) f(l.cmd.payload);
   }
+  // setup: 3D distance control's settings (dist_ctrl[0]) and cycle time.
+  void set_dist_ctrl(const distctrl::Settings& s, double dt_s) noexcept;
+  distctrl::State dist_state() const noexcept { return dist_.state(); }
+  double dist_offset_mm() const noexcept { return dist_.offset_mm(); }
 
  private:
   enum class Phase : std::uint8_t { pre_wait, body, post_wait };
@@ -157,6 +162,20 @@ class Channel {
   std::int8_t c_spindle_ = -1;     // its spindle (kernel index)
   bool c_axis_on_ = false;         // #CAX in force: the path drives the spindle
   double c_last_deg_ = 0;          // C set point of the cycle before (for its velocity)
+
+  // 3D distance control (channel_dist.cpp)
+  bool take_dist(const Command& c, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
+  void run_dist(double t_s, const ChannelInput& in, TickOutput& sink, ChannelContext& ctx) noexcept;
+  void note_dist_state(double t_s, TickOutput& sink) noexcept;
+  bool dist_wind_down() noexcept;
+  void dist_output(ChannelOutput& out) const noexcept;
+  distctrl::Controller dist_;
+  distctrl::State dist_reported_ = distctrl::State::inactive;
+  std::int8_t dist_axis_ = -1;     // tool axis carrying the offset
+  bool dist_check_sw_ = false;
+  std::int8_t dist_source_ = 0;    // 0 the sensor in TickInput, 1 the variable dist_var_
+  std::array<char, 32> dist_var_{};
+  double dist_sw_neg_mm_ = 0, dist_sw_pos_mm_ = 0;
 
   // spindle-path couplings (channel_links.cpp)
   SpindleUnit* link_spindle(std::int8_t s, ChannelContext& ctx) const noexcept;

@@ -63,6 +63,7 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
     // The C axis (config/c_axis.cpp) is the spindle with the same axis list.
     const config::ChannelConfig& ch = machine_->channels[i];
     channels_.back()->set_preserve_links(ch.preserve_coupling_after_prog_end);
+    channels_.back()->set_dist_ctrl(distctrl::settings_from(ch.dist_ctrl), cycle_s_);
     if (ch.c_axis >= 0)
       for (std::size_t k = 0; k < ch.spindles.size(); ++k)
         if (ch.spindles[k].axis_index == ch.axes[static_cast<std::size_t>(ch.c_axis)].axis_index)
@@ -90,7 +91,8 @@ FeedbackQueue& Kernel::feedback(std::size_t ch) { return *feedback_queues_.at(ch
 
 ChannelState Kernel::channel_state(std::size_t ch) const {
   const Channel& c = *channels_.at(ch);
-  return ChannelState{c.position(), c.manual_offsets(), c.machine_position(), c.status()};
+  return ChannelState{c.position(), c.manual_offsets(), c.machine_position(), c.status(),
+                      static_cast<std::uint8_t>(c.dist_state()), c.dist_offset_mm()};
 }
 
 void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {

@@ -65,8 +65,8 @@ bool parse_dist_ctrl(Cursor& c, BlockCtx& b, std::size_t pos, HashCommand& out) 
       else if (key == "KP") { if (!positive(v >= 0)) return false; d.kp = v; }
       else if (key == "I_TN") { if (!positive(v >= 0)) return false; d.i_tn = v; }
       else if (key == "D_TV") { if (!positive(v >= 0)) return false; d.d_tv = v; }
-      else if (key == "N_CYCLES") { if (!positive(v >= 1 && v <= 100000 && v == std::round(v))) return false; d.n_cycles = static_cast<int>(v); }
-      else if (key == "ORDER") { if (!positive(v >= 1 && v <= 10 && v == std::round(v))) return false; d.order = static_cast<int>(v); }
+      else if (key == "N_CYCLES") { if (!positive(v >= 0 && v <= 100000 && v == std::round(v))) return false; d.n_cycles = static_cast<int>(v); }
+      else if (key == "ORDER") { if (!positive(v >= 0 && v <= 10 && v == std::round(v))) return false; d.order = static_cast<int>(v); }
       else if (key == "FG_F0") { if (!positive(v > 0)) return false; d.fg_f0 = v; }
       else if (key == "SMOOTH_FACT") { if (!positive(v > 0 && v <= 1)) return false; d.smooth_fact = v; }
       else if (key == "KALMAN_SIGMA") { if (!positive(v > 0)) return false; d.kalman_sigma = v; }

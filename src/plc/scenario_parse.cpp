@@ -37,6 +37,7 @@ constexpr std::array kActions = {
     ActionSpelling{"silent", ActionKind::silent},
     ActionSpelling{"spindle_cmd", ActionKind::spindle_cmd},
     ActionSpelling{"handwheel", ActionKind::handwheel},
+    ActionSpelling{"variable", ActionKind::variable},
 };
 
 // Parses one line; reports its first problem and returns nothing then.
@@ -69,6 +70,7 @@ class LineParser {
   bool take_percent(double& pct);
   bool take_spindle_cmd(ScenarioAction& a);
   bool take_handwheel(ScenarioAction& a);
+  bool take_variable(ScenarioAction& a);
   bool take_keyword_value(std::string_view key, double& value, bool& seen);
 
   std::span<const Token> toks_;
@@ -178,6 +180,8 @@ bool LineParser::parse_args(ScenarioAction& a) {
       return take_spindle(a) && take_spindle_cmd(a);
     case ActionKind::handwheel:
       return take_handwheel(a);
+    case ActionKind::variable:
+      return take_variable(a);
   }
   return true;
 }
@@ -198,6 +202,27 @@ bool LineParser::take_handwheel(ScenarioAction& a) {
   if (!v)
     return fail(ErrorId::PlcScenarioBadNumber, t.column,
                 fmt::format("'{}' is not a distance; write mm, e.g. 0.5", detail::printable(t.text)));
+  a.value = *v;
+  return true;
+}
+
+// variable <name> <value>: a channel variable (e.g. the distance sensor's
+// value for SENSOR_SOURCE=VARIABLE), matched by name, case-insensitively.
+bool LineParser::take_variable(ScenarioAction& a) {
+  if (!need("the variable name (e.g. V.E.GAP)")) return false;
+  const Token& name = toks_[next_++];
+  if (name.text.empty() || name.text.size() >= a.var_name.size())
+    return fail(ErrorId::PlcScenarioBadNumber, name.column,
+                fmt::format("'{}' is not a variable name (1 to {} characters)", detail::printable(name.text),
+                            a.var_name.size() - 1));
+  for (std::size_t i = 0; i < name.text.size(); ++i)
+    a.var_name[i] = static_cast<char>(std::toupper(static_cast<unsigned char>(name.text[i])));
+  if (!need("the variable's value")) return false;
+  const Token& t = toks_[next_++];
+  auto v = detail::to_number(t.text);
+  if (!v)
+    return fail(ErrorId::PlcScenarioBadNumber, t.column,
+                fmt::format("'{}' is not a number", detail::printable(t.text)));
   a.value = *v;
   return true;
 }

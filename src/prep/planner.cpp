@@ -20,7 +20,7 @@ bool is_fixed_m(int m) {
 // #MAIN SPINDLE (whose name mapping the decoder does).
 bool is_executed_command(const nc::HashCommand& h) {
   if (std::holds_alternative<nc::ExplSyn>(h) || std::holds_alternative<nc::MainSpindle>(h) ||
-      std::holds_alternative<nc::GetManualOffsets>(h))
+      std::holds_alternative<nc::GetManualOffsets>(h) || std::holds_alternative<nc::DistCtrl>(h))
     return true;
   if (std::holds_alternative<nc::SetAxLink>(h) || std::holds_alternative<nc::EnableAxLink>(h) ||
       std::holds_alternative<nc::DisableAxLink>(h))
@@ -266,6 +266,7 @@ Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
     return error_command(cax_id, why, b.file_id, b.line);
   if (!plan_cax(b, c, error)) return error;
   if (auto e = plan_ax_link(b, c)) return *e;
+  if (!plan_dist(b, c, error)) return error;
   nc::Block with_slaves_scratch;
   auto actions = spindles_.plan(with_slaves(b, with_slaves_scratch));
   if (!actions) return error_command(actions.error().id, actions.error().message, b.file_id, b.line);

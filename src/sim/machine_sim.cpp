@@ -19,7 +19,10 @@ MachineSim::MachineSim(const config::Machine& m)
     : plc_(m.sim), hli_(plc::make_hli_image(m)), map_(plc::build_spindle_map(m)) {
   channels_ = std::min(m.channels.size(), config::kMaxChannels);
   spindles_ = std::min(map_.count, kernel::kMaxMachineSpindles);
-  for (std::size_t ch = 0; ch < channels_; ++ch) probes_[ch] = make_probe(m, ch);
+  for (std::size_t ch = 0; ch < channels_; ++ch) {
+    probes_[ch] = make_probe(m, ch);
+    sensors_[ch] = DistanceSensor(m.sim, m.channels[ch], m.cycle_time_us * 1e-6);
+  }
 }
 
 void MachineSim::load_scenario(const plc::Scenario& scenario) { player_ = ScenarioPlayer(scenario); }
@@ -49,6 +52,7 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
     c.reset = false;  // a request: handed over once
     ci.probe_switched = probe_switched_[ch];
     if (probe_switched_[ch]) ci.probe_latched_mcs = probes_[ch].latched();
+    sensors_[ch].sample(t_s, ci.dist_sensor_valid, ci.dist_sensor_mm);
   }
   for (std::size_t i = 0; i < spindles_; ++i) {
     in.spindles[i] = hli_.spindle_control[i];
@@ -59,7 +63,10 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
 void MachineSim::write(const kernel::TickOutput& out) noexcept {
   for (const kernel::TechRequest& r : out.tech_outputs) (void)plc_.submit(r.handle, r.output, t_s_);
   for (std::size_t i = 0; i < spindles_; ++i) hli_.spindle_status[i] = out.hli_spindles[i];
-  for (std::size_t ch = 0; ch < channels_; ++ch) probe_switched_[ch] = probes_[ch].watch(out.channels[ch].axis_mcs);
+  for (std::size_t ch = 0; ch < channels_; ++ch) {
+    probe_switched_[ch] = probes_[ch].watch(out.channels[ch].axis_mcs);
+    sensors_[ch].watch(out.channels[ch].axis_mcs);
+  }
 }
 
 // One scenario action: the PLC writes its HLI controls, falls silent,
@@ -77,6 +84,16 @@ void MachineSim::apply(const plc::ScenarioAction& a, kernel::TickInput& in) noex
       if (a.axis >= 0) in.channels[c].handwheel_mm[static_cast<std::size_t>(a.axis)] += a.value;
       handwheel_turned_ = true;
       return;
+    case plc::ActionKind::variable: {
+      auto& vars = in.channels[c].variables;
+      for (kernel::ChannelVariable& v : vars)
+        if (v.name == a.var_name) {
+          v.value = a.value;
+          return;
+        }
+      (void)vars.push_back(kernel::ChannelVariable{a.var_name, a.value});  // beyond 16: ignored
+      return;
+    }
     case plc::ActionKind::spindle_cmd:
       if (!in.ext_commands.push_back(a.cmd)) ++in.ext_commands_lost;
       return;

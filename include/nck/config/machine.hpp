@@ -316,6 +316,10 @@ struct SimConfig {
   SensorFault fault = SensorFault::none;      // sensor.fault
   double fault_time_s = 0;                    // sensor.fault_time_ms
   double fault_value_mm = 0;                  // sensor.fault_value
+  std::uint32_t fault_cycles = 0;             // sensor.fault_cycles (0 = to the end)
+  double surface_tilt_deg = 0;                // sensor.surface_tilt
+  std::string sensor_tool_axis = "Z";         // sensor.tool_axis
+  double hole_start_mm = 0, hole_length_mm = 0, hole_depth_mm = 0;  // sensor.hole_*
   // Measuring probe (G100): it switches when this channel axis reaches this
   // machine position; no axis = it never switches.
   std::string probe_axis;                     // probe.axis

@@ -1,10 +1,12 @@
 #pragma once
 // One planned step of a channel: what the cyclic executor needs, as plain
 // fixed-size data (the queue between planning and tick() holds these).
+#include <array>
 #include <cstdint>
 
 #include "nck/core/diagnostic.hpp"
 #include "nck/core/fixed_vector.hpp"
+#include "nck/distctrl/controller.hpp"
 #include "nck/frames/offset_chain.hpp"
 #include "nck/kernel/event.hpp"
 #include "nck/motion/cax_transform.hpp"
@@ -116,6 +118,17 @@ struct Command {
   motion::CaxTrafo trafo{};
   // #ENABLE / #DISABLE AX LINK (ax_link.hpp), done when the block starts
   LinkCommand link{};
+  // #DIST CTRL: the switch and its overrides (dist.any()), the tool axis that
+  // carries the offset (plane's third axis) and, with check_sw_limit_switch,
+  // that axis's software limits.
+  distctrl::Switch dist{};
+  std::int8_t dist_axis = -1;
+  // SENSOR_SOURCE: -1 keep, 0 the machine's sensor (TickInput), 1 the
+  // channel variable named dist_var (TickInput's variables)
+  std::int8_t dist_source = -1;
+  std::array<char, 32> dist_var{};
+  bool dist_check_sw = false;
+  double dist_sw_neg_mm = 0, dist_sw_pos_mm = 0;
 };
 
 }  // namespace nck::kernel

@@ -23,6 +23,7 @@ enum class EventKind : std::uint8_t {
   warning,
   error,
   end,        // program end of a channel
+  dist_ctrl,  // 3D distance control changed state (dist_state)
 };
 
 inline constexpr std::uint32_t kNoMessage = 0xFFFFFFFFu;
@@ -62,6 +63,8 @@ struct Event {
   std::int8_t link_group = -1;
   bool link_on = false;
   std::uint8_t link_reason = 0;
+  // dist_ctrl: distctrl::State
+  std::uint8_t dist_state = 0;
 };
 
 enum class WaitReason : std::uint8_t {

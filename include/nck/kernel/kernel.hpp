@@ -34,6 +34,8 @@ struct ChannelState {
   motion::AxisVector manual_offsets{};  // handwheel offsets reached (G201)
   motion::AxisVector axis_mcs{};        // machine set point: path + handwheel
   ChannelStatus status = ChannelStatus::idle;
+  std::uint8_t dist_state = 0;  // distctrl::State
+  double dist_offset_mm = 0;    // distance-control offset in axis_mcs
 };
 
 class Kernel {

@@ -26,6 +26,13 @@ static_assert(kMaxMachineSpindles == plc::kMaxHliSpindles, "one HLI spindle obje
 // one more raises PlcOutputQueueFull (so the PLC side never overflows).
 inline constexpr std::size_t kMaxPendingOutputs = 64;
 
+// A channel variable the PLC writes (name upper case, NUL-terminated).
+struct ChannelVariable {
+  std::array<char, 32> name{};
+  double value = 0;
+};
+inline constexpr std::size_t kMaxChannelVariables = 16;
+
 struct ChannelInput {
   double feed_override_pct = 100;  // HLI feed override 0..100 (more is clamped)
   bool feedhold = false;
@@ -37,6 +44,12 @@ struct ChannelInput {
   AxisArray probe_latched_mcs{};
   // Handwheel travel during the last cycle per path axis, mm (G201 manual mode).
   AxisArray handwheel_mm{};
+  // The distance sensor of 3D distance control: its raw value this cycle,
+  // or none (a dropout).
+  bool dist_sensor_valid = false;
+  double dist_sensor_mm = 0;
+  // Channel variables the PLC has written (SENSOR_SOURCE=VARIABLE reads one).
+  FixedVector<ChannelVariable, kMaxChannelVariables> variables;
 };
 
 struct TickInput {
@@ -55,6 +68,10 @@ struct ChannelOutput {
   AxisArray axis_mcs{};  // set points, mm / deg
   double path_velocity_mm_s = 0;
   double dist_offset_mm = 0;  // 3D distance control's offset on the tool axis (0 while inactive)
+  double dist_sensor_mm = 0;  // the last valid sensor value it took
+  double dist_error_mm = 0;   // wanted minus measured (filtered) gap
+  std::uint8_t dist_state = 0;  // distctrl::State
+  std::int8_t dist_axis = -1;   // the tool axis carrying the offset, -1 none yet
   ChannelStatus status = ChannelStatus::idle;
 };
 

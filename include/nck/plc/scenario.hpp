@@ -29,6 +29,7 @@ enum class ActionKind : std::uint8_t {
   silent,               // silent on|off              (PLC stops acknowledging)
   spindle_cmd,          // spindle_cmd S2 M3 REV500   (external spindle command)
   handwheel,            // handwheel X 0.5            (mm moved by the handwheel in G201 manual mode)
+  variable,             // variable V.E.GAP 1.5       (a channel variable the PLC writes, e.g. a distance sensor)
 };
 
 // The action's name as written in the file (the primary spelling).
@@ -47,6 +48,7 @@ struct ScenarioAction {
   ExtSpindleCommand cmd;       // spindle_cmd only
   std::array<char, kSpindleNameChars> axis_name{};  // handwheel: the path axis
   std::int8_t axis = -1;       // handwheel: channel axis index (resolve_spindles)
+  std::array<char, 32> var_name{};  // variable: its name as the NC program writes it
   bool has_spindle() const noexcept { return spindle_name[0] != '\0'; }
   std::string_view spindle_view() const noexcept { return std::string_view(spindle_name.data()); }
 };

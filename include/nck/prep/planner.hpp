@@ -170,6 +170,11 @@ class Planner final : public nc::KernelStateReader {
   int c_spindle_channel_ = -1;    // and index in the channel's spindle list
   void init_c_axis(const config::Machine& machine, const std::vector<std::int8_t>& spindles);
   bool plan_cax(const nc::Block& b, Command& c, Command& error);
+  // #DIST CTRL (planner_dist.cpp)
+  bool plan_dist(const nc::Block& b, Command& c, Command& error);
+  bool dist_on_ = false;            // ON (or FREEZE) programmed and not OFF since
+  std::int8_t dist_source_ = 0;     // 0 the sim.lis sensor, 1 a channel variable
+  bool dist_var_known_ = false;     // SENSOR_VAR given
   bool plan_cax_on(const nc::Block& b, const nc::CAxis& a, Command& c, Command& error);
   bool plan_trafo(const nc::Block& b, Command& c, Command& error);
   std::string cax_violation(const nc::Block& b, ErrorId& id) const;

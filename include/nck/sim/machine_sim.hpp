@@ -16,6 +16,7 @@
 #include "nck/kernel/tick_io.hpp"
 #include "nck/plc/hli.hpp"
 #include "nck/plc/scenario.hpp"
+#include "nck/sim/distance_sensor.hpp"
 #include "nck/sim/plc_sim.hpp"
 #include "nck/sim/probe.hpp"
 #include "nck/sim/scenario_player.hpp"
@@ -49,6 +50,7 @@ class MachineSim {
   plc::SpindleMap map_;
   ScenarioPlayer player_;
   std::array<Probe, config::kMaxChannels> probes_{};
+  std::array<DistanceSensor, config::kMaxChannels> sensors_{};
   std::array<bool, config::kMaxChannels> probe_switched_{};  // in the last cycle
   std::size_t channels_ = 0;
   std::size_t spindles_ = 0;

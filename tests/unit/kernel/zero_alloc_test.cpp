@@ -138,6 +138,7 @@ TEST(ZeroAllocation, WholeExamplesRunThroughTickWithoutHeap) {
       {"examples/lathe", {"examples/lathe/thread.nc"}},
       {"examples/lathe", {"examples/lathe/tapping.nc"}},
       {"examples/mill", {"examples/mill/tapping.nc"}},
+      {"examples/cutter", {"examples/cutter/contour.nc"}},
       {"examples/two-channel", {"examples/two-channel/channel1.nc", "examples/two-channel/channel2.nc"}},
       {"examples/twin-spindle", {"examples/twin-spindle/twin.nc"}},
       {"examples/two-channel", {"examples/two-channel/link_ch1.nc", "examples/two-channel/link_ch2.nc"}},

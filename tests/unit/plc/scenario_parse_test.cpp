@@ -255,3 +255,20 @@ TEST(ScenarioParse, ActionNames) {
 
 }  // namespace
 }  // namespace nck::plc
+
+namespace nck::plc {
+namespace {
+
+// variable <name> <value>: a channel variable (SENSOR_SOURCE=VARIABLE reads it).
+TEST(ScenarioParse, ChannelVariable) {
+  auto a = one("0.25 variable v.e.gap -1.5");
+  EXPECT_EQ(a.kind, ActionKind::variable);
+  EXPECT_EQ(std::string(a.var_name.data()), "V.E.GAP");  // names are case-insensitive
+  EXPECT_DOUBLE_EQ(a.value, -1.5);
+  EXPECT_EQ(bad("0 variable V.E.GAP").id, ErrorId::PlcScenarioMissingArgument);
+  EXPECT_EQ(bad("0 variable V.E.GAP x").id, ErrorId::PlcScenarioBadNumber);
+  EXPECT_EQ(bad("0 variable " + std::string(40, 'A') + " 1").id, ErrorId::PlcScenarioBadNumber);
+}
+
+}  // namespace
+}  // namespace nck::plc

@@ -1,0 +1,120 @@
+// #DIST CTRL: the decoded switch (facts D2) becomes the fixed-size
+// distctrl::Switch the channel executes, with the overrides checked against
+// the ranges of their channel parameters (P-CHAN-00800..00827).
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "nck/prep/planner.hpp"
+
+namespace nck::prep {
+namespace {
+
+std::int8_t filter_kind(const std::string& name) {
+  static constexpr std::pair<std::string_view, distctrl::FilterKind> kNames[] = {
+      {"MOVING_AVERAGE", distctrl::FilterKind::moving_average}, {"LOWPASS", distctrl::FilterKind::lowpass},
+      {"KALMAN_MA", distctrl::FilterKind::kalman_ma},           {"EXPO_MEAN", distctrl::FilterKind::expo_mean},
+      {"KALMAN_EXPO", distctrl::FilterKind::kalman_expo}};
+  for (auto [n, k] : kNames)
+    if (name == n) return static_cast<std::int8_t>(k);
+  return -1;
+}
+
+// "" when every override lies in its parameter's range, else what is wrong.
+std::string override_range(const nc::DistCtrl& d) {
+  auto out = [](const char* key, double v, double lo, double hi, bool lo_open) {
+    const bool bad = v > hi || (lo_open ? v <= lo : v < lo);
+    return bad ? fmt::format("{}={} is outside {}{} .. {}", key, v, lo_open ? "> " : "", lo, hi) : std::string();
+  };
+  std::string why;
+  auto check = [&](const char* key, const auto& v, double lo, double hi, bool lo_open = false) {
+    if (v && why.empty()) why = out(key, static_cast<double>(*v), lo, hi, lo_open);
+  };
+  check("KP", d.kp, 0.0, 2.0, true);                    // P-CHAN-00821
+  check("I_TN", d.i_tn, 0.0, 50.0);                     // P-CHAN-00822
+  check("D_TV", d.d_tv, 0.0, 2.0);                      // P-CHAN-00823
+  check("N_CYCLES", d.n_cycles, 0.0, 99.0);             // P-CHAN-00800
+  check("ORDER", d.order, 0.0, 6.0);                    // P-CHAN-00816
+  check("KALMAN_SIGMA", d.kalman_sigma, 1.0, 10000.0);  // P-CHAN-00826
+  check("SMOOTH_FACT", d.smooth_fact, 0.0, 1.0, true);  // P-CHAN-00827
+  return why;
+}
+
+}  // namespace
+
+bool Planner::plan_dist(const nc::Block& b, Command& c, Command& error) {
+  const auto* d = b.hash ? std::get_if<nc::DistCtrl>(&*b.hash) : nullptr;
+  if (!d) return true;
+  if (std::string why = override_range(*d); !why.empty()) {
+    error = error_command(ErrorId::DistCtrlOverride, why, b.file_id, b.line);
+    return false;
+  }
+  if (d->sensor_source) {
+    std::int8_t source = -1;
+    if (*d->sensor_source == "VARIABLE") source = 1;
+    else if (*d->sensor_source == "SIMULATION" || *d->sensor_source == "SENSOR") source = 0;
+    if (source < 0) {
+      error = error_command(ErrorId::DistCtrlSourceNotAllowed,
+                            fmt::format("SENSOR_SOURCE={} is not available for 3D distance control: "
+                                        "SIMULATION or VARIABLE", *d->sensor_source),
+                            b.file_id, b.line);
+      return false;
+    }
+    if (dist_on_ && source != dist_source_) {
+      error = error_command(ErrorId::DistCtrlSourceChange,
+                            fmt::format("SENSOR_SOURCE={} while distance control is on", *d->sensor_source),
+                            b.file_id, b.line);
+      return false;
+    }
+    dist_source_ = source;
+    c.dist_source = source;
+  }
+  if (d->sensor_var) {
+    if (d->sensor_var->empty() || d->sensor_var->size() >= c.dist_var.size()) {
+      error = error_command(ErrorId::DistCtrlBadVariable, "SENSOR_VAR must name a channel variable (up to 31 characters)",
+                            b.file_id, b.line);
+      return false;
+    }
+    std::copy(d->sensor_var->begin(), d->sensor_var->end(), c.dist_var.begin());
+    c.dist_source = dist_source_;
+  }
+  distctrl::Switch& w = c.dist;
+  switch (d->op) {
+    case nc::DistCtrlOp::on: w.op = distctrl::Op::on; break;
+    case nc::DistCtrlOp::freeze: w.op = distctrl::Op::freeze; break;
+    case nc::DistCtrlOp::off: w.op = distctrl::Op::off; break;
+    case nc::DistCtrlOp::settings: w.op = distctrl::Op::none; break;
+  }
+  if (w.op == distctrl::Op::on && dist_source_ == 1 && !d->sensor_var && !dist_var_known_) {
+    error = error_command(ErrorId::DistCtrlBadVariable, "SENSOR_SOURCE=VARIABLE needs SENSOR_VAR=<variable>",
+                          b.file_id, b.line);
+    return false;
+  }
+  if (d->sensor_var) dist_var_known_ = true;
+  w.const_dist = d->const_dist;
+  w.no_move = d->no_move;
+  if (d->set_pos_mm) w.set_pos_mm = *d->set_pos_mm;
+  if (d->set_dist_mm) w.set_dist_mm = *d->set_dist_mm;
+  if (d->kp) w.kp = *d->kp;
+  if (d->i_tn) w.i_tn_s = *d->i_tn;
+  if (d->d_tv) w.d_tv_s = *d->d_tv;
+  if (d->fg_f0) w.f0_hz = *d->fg_f0;
+  if (d->smooth_fact) w.smoothing = *d->smooth_fact;
+  if (d->kalman_sigma) w.kalman_sigma = *d->kalman_sigma;
+  if (d->n_cycles) w.n_cycles = static_cast<std::int16_t>(*d->n_cycles);
+  if (d->order) w.order = static_cast<std::int16_t>(*d->order);
+  if (d->filter_type) w.filter = filter_kind(*d->filter_type);
+  if (w.op == distctrl::Op::on || w.op == distctrl::Op::freeze) dist_on_ = true;
+  if (w.op == distctrl::Op::off) dist_on_ = false;
+  // The tool axis of the working plane carries the offset (Z for G17).
+  const int tool = plane_axes(b.modal.plane).tool;
+  c.dist_axis = static_cast<std::int8_t>(tool < static_cast<int>(n_axes_) ? tool : -1);
+  c.dist_check_sw = channel_.dist_ctrl.check_sw_limit_switch;
+  if (c.dist_axis >= 0) {
+    c.dist_sw_neg_mm = swe_neg_[static_cast<std::size_t>(tool)];
+    c.dist_sw_pos_mm = swe_pos_[static_cast<std::size_t>(tool)];
+  }
+  return true;
+}
+
+}  // namespace nck::prep
