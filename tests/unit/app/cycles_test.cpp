@@ -51,8 +51,8 @@ void expect_values(const std::vector<double>& got, const std::vector<double>& wa
 // The tool-axis values while the plane axes stand at (a, b).
 std::vector<double> at_position(const std::vector<Row>& rows, double x, double y) {
   std::vector<double> z;
-  for (const Row& r : rows)
-    if (std::fabs(r.x - x) < 1e-6 && std::fabs(r.y - y) < 1e-6) z.push_back(r.z);
+  for (const Row& row : rows)
+    if (std::fabs(row.x - x) < 1e-6 && std::fabs(row.y - y) < 1e-6) z.push_back(row.z);
   return z;
 }
 
@@ -76,8 +76,8 @@ TEST(CyclesRun, ExampleDrillsPecksAndMillsTheHelixWhereComputed) {
   // After #DISABLE MODAL CYCLE, N80's move drills nothing: only those three
   // holes reach the final depth -20.
   int deep_rows_elsewhere = 0;
-  for (const Row& r : rows)
-    if (r.z < -19.999 && !(std::fabs(r.x - 20) < 1e-6 || std::fabs(r.x - 40) < 1e-6)) ++deep_rows_elsewhere;
+  for (const Row& row : rows)
+    if (row.z < -19.999 && !(std::fabs(row.x - 20) < 1e-6 || std::fabs(row.x - 40) < 1e-6)) ++deep_rows_elsewhere;
   EXPECT_EQ(deep_rows_elsewhere, 0);
 
   // pocket_circ at X80 Y30, @P1=2 @P2=-10 @P3=10 @P4=3 @P5=4: path radius 7,
@@ -87,8 +87,8 @@ TEST(CyclesRun, ExampleDrillsPecksAndMillsTheHelixWhereComputed) {
   bool on_helix = false;
   int helix_rows = 0, bottom_rows = 0;
   std::vector<double> z_at_quarter;  // Z where the tool passes X80 Y37: 90, 450, 810 degrees and the bottom circle
-  for (const Row& r : rows) {
-    const double dx = r.x - 80, dy = r.y - 30;
+  for (const Row& row : rows) {
+    const double dx = row.x - 80, dy = row.y - 30;
     const double radius = std::hypot(dx, dy);
     if (!on_helix) {  // the start point X87 Y30 (the corner may be passed at speed: within a cycle's travel)
       on_helix = std::fabs(radius - 7) < 1e-3 && std::fabs(dy) < 0.05 && dx > 0;
@@ -105,14 +105,14 @@ TEST(CyclesRun, ExampleDrillsPecksAndMillsTheHelixWhereComputed) {
     turned_deg += step;
     last_deg = deg;
     if (turned_deg <= 3 * 360) {
-      EXPECT_NEAR(r.z, 2 - 4 * turned_deg / 360, 2e-3) << "at " << turned_deg << " deg";
+      EXPECT_NEAR(row.z, 2 - 4 * turned_deg / 360, 2e-3) << "at " << turned_deg << " deg";
       ++helix_rows;
-      if (std::fabs(r.x - 80) < 0.02 && dy > 0) z_at_quarter.push_back(r.z);
+      if (std::fabs(row.x - 80) < 0.02 && dy > 0) z_at_quarter.push_back(row.z);
     } else {
-      EXPECT_NEAR(r.z, -10, 1e-6);
+      EXPECT_NEAR(row.z, -10, 1e-6);
       ++bottom_rows;
     }
-    if (turned_deg > 3 * 360 && std::fabs(r.x - 80) < 0.02 && dy > 0) z_at_quarter.push_back(r.z);
+    if (turned_deg > 3 * 360 && std::fabs(row.x - 80) < 0.02 && dy > 0) z_at_quarter.push_back(row.z);
   }
   EXPECT_GT(helix_rows, 1000);
   EXPECT_GT(bottom_rows, 100);
@@ -127,8 +127,8 @@ TEST(CyclesRun, ExampleDrillsPecksAndMillsTheHelixWhereComputed) {
   // X60 Z-5: @P1=55 @P2=40 @P3=6 @P4=0.5 @P5=3: pecks to 49, 43, 40 with
   // chip breaks to 49.5 and 43.5, then out to 55 (N150 goes on up to 60).
   std::vector<double> y;
-  for (const Row& r : rows)
-    if (std::fabs(r.x - 60) < 1e-6 && std::fabs(r.z + 5) < 1e-6) y.push_back(r.y);
+  for (const Row& row : rows)
+    if (std::fabs(row.x - 60) < 1e-6 && std::fabs(row.z + 5) < 1e-6) y.push_back(row.y);
   expect_values(reversals(y), {49, 49.5, 43, 43.5, 40}, 1e-3, "G18 hole");
   EXPECT_NEAR(y.back(), 60, 1e-6);
 }

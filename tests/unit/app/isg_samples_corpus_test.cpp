@@ -82,7 +82,9 @@ TEST(IsgSamplesCorpus, EveryFileMatchesTheTable) {
     }
     EXPECT_EQ(got, it->second.result) << rel << "\n" << r.output;
     EXPECT_EQ(r.exit_code, got == "decodes" ? 0 : 1) << rel << "\n" << r.output;
-    if (got != "decodes") EXPECT_FALSE(it->second.reason.empty()) << rel << ": the table must say why it fails";
+    if (got != "decodes") {
+      EXPECT_FALSE(it->second.reason.empty()) << rel << ": the table must say why it fails";
+    }
     table.erase(it);
   }
   EXPECT_GE(files, 31);
