@@ -1,7 +1,7 @@
 #include "nck/core/diagnostic.hpp"
 
 #include <algorithm>
-#include <array>
+#include <iterator>
 #include <fmt/format.h>
 
 namespace nck {
@@ -10,7 +10,9 @@ namespace {
 constexpr Severity warning = Severity::warning;
 constexpr Severity error = Severity::error;
 
-constexpr std::array kErrors = {
+// A plain array: std::array's deduction guide is a fold over every entry,
+// and clang stops folds at 256 arguments.
+constexpr ErrorInfo kErrors[] = {
 #define NCK_ERROR(name, number, severity, text, remedy) \
   ErrorInfo{ErrorId::name, severity, #name, text, remedy},
 #include "nck/core/errors_config.def"
@@ -28,9 +30,8 @@ constexpr std::array kErrors = {
 std::span<const ErrorInfo> all_errors() { return kErrors; }
 
 const ErrorInfo* find_error(ErrorId id) {
-  auto it = std::find_if(kErrors.begin(), kErrors.end(),
-                         [id](const ErrorInfo& e) { return e.id == id; });
-  return it == kErrors.end() ? nullptr : &*it;
+  auto it = std::find_if(std::begin(kErrors), std::end(kErrors), [id](const ErrorInfo& e) { return e.id == id; });
+  return it == std::end(kErrors) ? nullptr : &*it;
 }
 
 Diagnostic make_diagnostic(ErrorId id, SourceLoc loc, std::string message) {

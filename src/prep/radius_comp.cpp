@@ -12,13 +12,6 @@
 namespace nck::prep {
 namespace {
 
-// A block handed on to the planner as it is.
-TrcOut pass(nc::Block b) {
-  TrcOut o;
-  o.block = std::move(b);
-  return o;
-}
-
 using motion::trc::Vec2;
 namespace trc = motion::trc;
 
@@ -184,19 +177,19 @@ void RadiusComp::push(const nc::Block& b, const Planner& planner, std::vector<Tr
   planner_ = &planner;
   const bool want = b.modal.radius_comp != nc::RadiusComp::g40;
   if (queue_.empty() && !want) {
-    out.push_back(pass(b));
+    out.push_back(TrcOut::of(b));
     return;
   }
   std::string why;
   if (auto id = forbidden(b, why)) return fail(b, *id, why, out);
   if (b.program_end) {
     flush(out);
-    out.push_back(pass(b));
+    out.push_back(TrcOut::of(b));
     return;
   }
   if (!relevant(b)) {
     if (queue_.empty()) {
-      out.push_back(pass(b));
+      out.push_back(TrcOut::of(b));
       return;
     }
     if (queue_.back().held.size() >= kMaxHeld)
@@ -217,7 +210,7 @@ void RadiusComp::push(const nc::Block& b, const Planner& planner, std::vector<Tr
     nc::Block still = b;
     still.axes[static_cast<std::size_t>(ax_a_)].reset();
     still.axes[static_cast<std::size_t>(ax_b_)].reset();
-    if (queue_.empty()) out.push_back(pass(still));
+    if (queue_.empty()) out.push_back(TrcOut::of(still));
     else queue_.back().held.push_back(still);
     return;
   }

@@ -10,13 +10,6 @@
 namespace nck::prep {
 namespace {
 
-// A block handed on to the planner as it is.
-TrcOut pass(nc::Block b) {
-  TrcOut o;
-  o.block = std::move(b);
-  return o;
-}
-
 namespace trc = motion::trc;
 constexpr double kTiny = 1e-9;
 
@@ -71,12 +64,12 @@ void RadiusComp::emit_front(std::vector<TrcOut>& out) {
   Item it = std::move(queue_.front());
   queue_.erase(queue_.begin());
   if (it.arc_before) {
-    TrcOut a = pass(std::move(*it.arc_before));
+    TrcOut a = TrcOut::of(std::move(*it.arc_before));
     a.inserted = true;
     out.push_back(std::move(a));
   }
-  out.push_back(pass(rewrite(it)));
-  for (nc::Block& h : it.held) out.push_back(pass(std::move(h)));
+  out.push_back(TrcOut::of(rewrite(it)));
+  for (nc::Block& h : it.held) out.push_back(TrcOut::of(std::move(h)));
 }
 
 void RadiusComp::flush(std::vector<TrcOut>& out) {

@@ -29,6 +29,13 @@ struct TrcOut {
   bool inserted = false;  // a corner arc of the compensation (no block event of its own)
   std::optional<ErrorId> error;
   std::string message;
+
+  // A block handed on to the planner as it is.
+  static TrcOut of(nc::Block b) {
+    TrcOut o;
+    o.block = std::move(b);
+    return o;
+  }
 };
 
 class RadiusComp {

@@ -51,15 +51,7 @@ std::string first_error(const std::string& output) {
 
 // `timeout` turns a hang into exit code 124 instead of a test that never ends.
 CliResult parse_with_timeout(const std::filesystem::path& file) {
-  CliResult r;
-  const std::string cmd = "timeout 60 " + std::string(NCK_BINARY) + " parse '" + file.string() + "' 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  char buf[4096];
-  while (std::size_t n = std::fread(buf, 1, sizeof buf, p)) r.output.append(buf, n);
-  const int status = pclose(p);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return run_shell("timeout 60 " + std::string(NCK_BINARY) + " parse '" + file.string() + "' 2>&1");
 }
 
 TEST(IsgSamplesCorpus, EveryFileMatchesTheTable) {

@@ -325,14 +325,20 @@ TEST(Link, ProgramEndDissolvesUnlessPreserved) {
   EXPECT_DOUBLE_EQ(kept.rows.back().at("S3.rpm"), 300.0);
 }
 
+// Two programs side by side on the two-channel example, outputs into dir.
+PathRun run_two_channels(const std::filesystem::path& dir, const std::string& program1, const std::string& program2) {
+  const std::string ex = root() + "/examples/two-channel";
+  CliResult c = run_nck("run " + ex + " " + program1 + " " + program2 + " --events " + (dir / "e.jsonl").string() +
+                        " --trace " + (dir / "t.csv").string());
+  return read_run(std::move(c), dir);
+}
+
 // FCT-S1 2.2.5.2: two channels share S1 and S2. Channel 1 links S3 to its
 // main spindle S (= S2); channel 2 commands S1 (not linked) meanwhile.
 TEST(Link, TwoChannelsShareUnlinkedSpindles) {
   const auto dir = temp_dir("link_two");
   const std::string ex = root() + "/examples/two-channel";
-  CliResult c = run_nck("run " + ex + " " + ex + "/link_ch1.nc " + ex + "/link_ch2.nc --events " +
-                        (dir / "e.jsonl").string() + " --trace " + (dir / "t.csv").string());
-  const PathRun r = read_run(std::move(c), dir);
+  const PathRun r = run_two_channels(dir, ex + "/link_ch1.nc", ex + "/link_ch2.nc");
   ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
   EXPECT_EQ(error_of(r), nullptr);
   ASSERT_EQ(links(r).size(), 2u);
@@ -359,10 +365,7 @@ TEST(Link, LinkedSpindleFromOtherChannelIsAnError) {
   const auto dir = temp_dir("link_other");
   std::ofstream(dir / "c1.nc") << "#SET AX LINK[1, S1=S]\n#ENABLE AX LINK[1]\nS400 M3\n#TIME 1\nM30\n";
   std::ofstream(dir / "c2.nc") << "#TIME 0.3\nS1[M4 REV200]\nM30\n";
-  const std::string ex = root() + "/examples/two-channel";
-  CliResult c = run_nck("run " + ex + " " + (dir / "c1.nc").string() + " " + (dir / "c2.nc").string() +
-                        " --events " + (dir / "e.jsonl").string() + " --trace " + (dir / "t.csv").string());
-  const PathRun r = read_run(std::move(c), dir);
+  const PathRun r = run_two_channels(dir, (dir / "c1.nc").string(), (dir / "c2.nc").string());
   EXPECT_EQ(r.cli.exit_code, 1);
   const json* e = error_of(r);
   ASSERT_NE(e, nullptr) << r.cli.output;
@@ -379,10 +382,7 @@ TEST(Link, CouplingASpindleLinkedInAnotherChannelIsAnError) {
   const auto dir = temp_dir("link_other_enable");
   std::ofstream(dir / "c1.nc") << "#SET AX LINK[1, S1=S]\n#ENABLE AX LINK[1]\n#TIME 1\nM30\n";
   std::ofstream(dir / "c2.nc") << "#TIME 0.3\n#SET AX LINK[2, S1=S]\n#ENABLE AX LINK[2]\nM30\n";
-  const std::string ex = root() + "/examples/two-channel";
-  CliResult c = run_nck("run " + ex + " " + (dir / "c1.nc").string() + " " + (dir / "c2.nc").string() +
-                        " --events " + (dir / "e.jsonl").string() + " --trace " + (dir / "t.csv").string());
-  const PathRun r = read_run(std::move(c), dir);
+  const PathRun r = run_two_channels(dir, (dir / "c1.nc").string(), (dir / "c2.nc").string());
   EXPECT_EQ(r.cli.exit_code, 1);
   const json* e = error_of(r);
   ASSERT_NE(e, nullptr) << r.cli.output;
