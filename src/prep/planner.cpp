@@ -32,7 +32,7 @@ bool is_executed_command(const nc::HashCommand& h) {
          std::holds_alternative<nc::Mcs>(h) || std::holds_alternative<nc::Rotation>(h) ||
          std::holds_alternative<nc::PSet>(h) || std::holds_alternative<nc::PReset>(h) ||
          std::holds_alternative<nc::Tlc>(h) || std::holds_alternative<nc::SuppressOffsets>(h) ||
-         (std::holds_alternative<nc::ToolData>(h) && !std::get<nc::ToolData>(h).prep);
+         std::holds_alternative<nc::ToolData>(h);
 }
 
 // The non-modal G functions this version executes.
@@ -140,8 +140,10 @@ bool Planner::add_outputs(const nc::Block& b, Command& c) {
   }
   for (int h : b.h)
     if (!c.outputs.push_back({FunctionKind::h, h, config::sync::MOS})) return false;
-  if (b.t && !c.outputs.push_back({FunctionKind::t, static_cast<std::int32_t>(*b.t), config::sync::MOS}))
-    return false;
+  // #TOOL PREP [basic, ...] is the T word's form (facts B16): the PLC gets the basic number.
+  std::optional<std::int64_t> t = b.t;
+  if (const auto* td = b.hash ? std::get_if<nc::ToolData>(&*b.hash) : nullptr; td && td->prep) t = td->fields[0];
+  if (t && !c.outputs.push_back({FunctionKind::t, static_cast<std::int32_t>(*t), config::sync::MOS})) return false;
   return true;
 }
 
