@@ -148,14 +148,8 @@ Outcome Decoder::Impl::start_cycle(const CycleTarget& t, std::size_t at) {
                   fmt::format("more than {} nested subroutine or cycle calls", cfg.max_subroutine_depth), true);
   Frame f;
   if (t.local) {
-    f.path = t.path;
-    f.index = t.index;
-    f.mem = t.mem;
-    f.reader = std::make_unique<SourceReader>();
-    if (f.mem) f.reader->open_memory(f.mem);
-    else if (!f.reader->open_file(f.path))
-      return report(ErrorId::NcFileUnreadable, at, fmt::format("cannot reopen '{}'", f.path.string()));
-    f.reader->seek(t.body);
+    if (!open_local_frame(t.path, t.mem, t.index, t.body, f))
+      return report(ErrorId::NcFileUnreadable, at, fmt::format("cannot reopen '{}'", t.path.string()));
   } else {
     if (!open_frame(t.path, true, f))
       return report(ErrorId::NcFileUnreadable, at, fmt::format("cannot read the cycle '{}'", t.path.string()));

@@ -119,6 +119,11 @@ struct Decoder::Impl {
   detail::Outcome go_to(detail::Cursor& c, std::size_t pos);
   // subprograms.cpp
   bool open_frame(const std::filesystem::path& p, bool cached, detail::Frame& f);
+  // A frame reading a section of an open file again (a local subroutine or
+  // cycle: path, cached text, index of the caller's file) from `body`; false
+  // when the file cannot be read again.
+  bool open_local_frame(const std::filesystem::path& path, std::shared_ptr<const std::string> mem,
+                        std::shared_ptr<const detail::ProgramIndex> index, detail::SourcePos body, detail::Frame& f);
   bool open_main(const std::filesystem::path& p);
   detail::Outcome call(detail::Cursor& c, bool local);
   detail::Outcome end_of_section();

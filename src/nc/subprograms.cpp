@@ -30,6 +30,18 @@ bool Decoder::Impl::open_frame(const std::filesystem::path& p, bool cached, Fram
   return true;
 }
 
+bool Decoder::Impl::open_local_frame(const std::filesystem::path& path, std::shared_ptr<const std::string> mem,
+                                    std::shared_ptr<const ProgramIndex> index, SourcePos body, Frame& f) {
+  f.path = path;
+  f.index = std::move(index);
+  f.mem = std::move(mem);
+  f.reader = std::make_unique<SourceReader>();
+  if (f.mem) f.reader->open_memory(f.mem);
+  else if (!f.reader->open_file(f.path)) return false;
+  f.reader->seek(body);
+  return true;
+}
+
 bool Decoder::Impl::open_main(const std::filesystem::path& p) {
   Frame f;
   f.file_id = file_id(p.string());
@@ -79,14 +91,8 @@ Outcome Decoder::Impl::call(Cursor& c, bool local) {
       return report(ErrorId::NcSubroutineNotFound, at,
                     fmt::format("no local subroutine '%L {}' in this file", name));
     f.file_id = caller.file_id;
-    f.path = caller.path;
-    f.index = caller.index;
-    f.mem = caller.mem;
-    f.reader = std::make_unique<SourceReader>();
-    if (f.mem) f.reader->open_memory(f.mem);
-    else if (!f.reader->open_file(f.path))
-      return report(ErrorId::NcFileUnreadable, at, fmt::format("cannot reopen '{}'", f.path.string()));
-    f.reader->seek(s->body);
+    if (!open_local_frame(caller.path, caller.mem, caller.index, s->body, f))
+      return report(ErrorId::NcFileUnreadable, at, fmt::format("cannot reopen '{}'", caller.path.string()));
   } else {
     std::filesystem::path p(name);
     if (p.is_relative()) p = caller.path.parent_path() / p;
