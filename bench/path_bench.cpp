@@ -6,6 +6,7 @@
 // second. Arg: blocks (2000 for a quick look, 200000 for the figure).
 #include <benchmark/benchmark.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
@@ -19,7 +20,8 @@ namespace {
 
 struct Workload {
   std::filesystem::path file;
-  double ideal_s = 0;  // every move at its programmed feed (G0 at 500 mm/s), no ramps
+  double ideal_s = 0;    // every move at its programmed feed (G0 at 500 mm/s), no ramps
+  double length_mm = 0;  // programmed path length
 };
 
 double round3(double v) { return std::round(v * 1000.0) / 1000.0; }
@@ -31,6 +33,7 @@ Workload write_common_program(int n, const std::string& prelude) {
   std::ofstream out(w.file);
   out << prelude << "G90 G17 G54\nM3 S1000\nG0 X0 Y0 Z5\nG1 Z-1 F300\n";
   w.ideal_s = 5.0 / 500.0 + 6.0 / 5.0;
+  w.length_mm = 5.0 + 6.0;
   double cx = 0, cy = 0;
   for (int i = 0; i < n; ++i) {
     const double x = round3(50 * std::cos(i * 0.01)), y = round3(50 * std::sin(i * 0.01));
@@ -39,9 +42,11 @@ Workload write_common_program(int n, const std::string& prelude) {
       const double mx = (cx + x) / 2, my = (cy + y) / 2;
       out << fmt::format("G2 X{:.3f} Y{:.3f} I{:.4f} J{:.4f} F1200\n", x, y, mx - cx, my - cy);
       w.ideal_s += M_PI * chord / 2 / 20.0;
+      w.length_mm += M_PI * chord / 2;
     } else {
       out << fmt::format("G1 X{:.3f} Y{:.3f} F1500\n", x, y);
       w.ideal_s += chord / (i == 0 ? 500.0 : 25.0);  // the first move starts from X0 Y0 at F1500
+      w.length_mm += chord;
     }
     cx = x, cy = y;
   }
@@ -54,18 +59,35 @@ void run_common(benchmark::State& state, const std::string& prelude) {
   const nck::config::Machine& m = *loaded.machine;
   const Workload w = write_common_program(static_cast<int>(state.range(0)), prelude);
   auto out = std::make_unique<nck::kernel::TickOutput>();
-  double simulated_s = 0, last_s = 0;
+  double simulated_s = 0, last_s = 0, travelled_mm = 0;
+  nck::prep::BlendStats blends{};
   for (auto _ : state) {
     auto run = nck::sim::DryRun::create(m, {w.file});
     if (!run) {
       state.SkipWithError("cannot create the run");
       return;
     }
-    while (!run->done()) run->step(*out);
+    // The path the set points travel (X, Y, Z), to state how much of the
+    // programmed length blending cuts.
+    std::array<double, 3> last{};
+    bool first = true;
+    travelled_mm = 0;
+    while (!run->done()) {
+      run->step(*out);
+      const auto& p = out->channels[0].axis_mcs;
+      if (!first) travelled_mm += std::hypot(p[0] - last[0], p[1] - last[1], p[2] - last[2]);
+      first = false;
+      last = {p[0], p[1], p[2]};
+    }
     last_s = run->time_s();
     simulated_s += last_s;
+    blends = run->prep(0).blend_stats();
   }
   state.counters["time_ratio"] = last_s / w.ideal_s;
+  state.counters["path_short_pct"] = 100.0 * (w.length_mm - travelled_mm) / w.length_mm;
+  state.counters["blends"] = static_cast<double>(blends.blends);
+  state.counters["blend_short_mm"] = blends.shortfall_mm;
+  state.counters["max_dev_mm"] = blends.max_deviation_mm;
   state.counters["sim_s"] = last_s;
   state.counters["sim_s_per_wall_s"] = benchmark::Counter(simulated_s, benchmark::Counter::kIsRate);
   std::filesystem::remove(w.file);
@@ -74,6 +96,12 @@ void run_common(benchmark::State& state, const std::string& prelude) {
 // The default: velocity look-ahead, no corner blending.
 void BM_CommonProgram(benchmark::State& state) { run_common(state, ""); }
 BENCHMARK(BM_CommonProgram)->Arg(2000)->Arg(200000)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// Corner blending on: these lines are prepended (docs/performance.md).
+void BM_CommonProgramBlend(benchmark::State& state) {
+  run_common(state, "#CONTOUR MODE [DEV PATH_DEV=0.02]\nG261\n");
+}
+BENCHMARK(BM_CommonProgramBlend)->Arg(2000)->Arg(200000)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 // Exact stop at every block (G360): the behaviour before the look-ahead.
 void BM_CommonProgramExactStop(benchmark::State& state) { run_common(state, "G360\n"); }

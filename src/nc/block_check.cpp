@@ -24,6 +24,7 @@ std::optional<GGroup> g_group(GCode code) {
     case g161: case g162: return GGroup::center;
     case g201: case g202: return GGroup::manual;
     case g359: case g360: return GGroup::exact_stop;
+    case g260: case g261: return GGroup::contour;
     default: break;  // the non-modal codes are listed once, in GCodeSet
   }
   if (GCodeSet::is_nonmodal(code)) return GGroup::nonmodal;
@@ -205,6 +206,10 @@ bool check_exact_stop(const Words& w, BlockCtx& b) {
   for (const auto& g : w.g)
     if (g.code == GCode::g60 && w.axis_count == 0)
       return fail(b, ErrorId::NcExactStopWithoutMotion, g.pos, "G60 needs a motion in its block (axis words)");
+  for (const auto& g : w.g)
+    if (g.code == GCode::g61 && (w.axis_count == 0 || w.has_g(GCode::g60)))
+      return fail(b, ErrorId::KernelContourNeedsMotion, g.pos,
+                  w.axis_count == 0 ? "G61 needs a motion in its block (axis words)" : "G61 and G60 in one block");
   return true;
 }
 

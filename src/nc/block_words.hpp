@@ -54,6 +54,7 @@ struct Words {
   std::array<At<double>, 3> ijk{};
   At<double> dwell_direct;       // G4 <value>
   At<double> time_s;             // #TIME <value>
+  At<double> contour_dev;        // #CONTOUR MODE [DEV PATH_DEV=<value>]
   // DIN attributes of the main spindle.
   At<double> s_pos, s_pos_shift, s_offset;
   std::uint32_t din_spindle_pos = 0;
@@ -117,7 +118,7 @@ void kernel_writes_to_mm(std::vector<VariableWrite>& writes);
 
 // G code groups (block_check.cpp).
 enum class GGroup : std::uint8_t { motion, plane, dim, feed, speed, comp, diam, unit, zero,
-                                   center, manual, exact_stop, nonmodal };
+                                   center, manual, exact_stop, contour, nonmodal };
 std::optional<GGroup> g_group(GCode code);
 // The import stage's only integer-to-G step: nullopt for a number nck does not know.
 std::optional<GCode> to_gcode(int number);

@@ -177,6 +177,8 @@ void Decoder::Impl::restore_after_cycle(const ModalState& caller) {
   modal.r = caller.r;
   modal.circle_center_absolute = caller.circle_center_absolute;
   modal.exact_stop = caller.exact_stop;
+  modal.contour = caller.contour;
+  modal.contour_dev_mm = caller.contour_dev_mm;
 }
 
 void Decoder::Impl::note_modal_cycle(const Block& b) {

@@ -286,6 +286,7 @@ constexpr HashEntry kHashCommands[] = {
     {{"GET", "MANUAL", "OFFSETS"}, parse_get_manual_offsets},
     {{"DIST", "CTRL"}, parse_dist_ctrl_cmd},
     {{"TIME"}, parse_time},
+    {{"CONTOUR", "MODE"}, parse_contour_mode},
     {{"MSG"}, parse_ignored},
     {{"FLUSH"}, parse_ignored},
 };
@@ -294,8 +295,8 @@ constexpr HashEntry kHashCommands[] = {
 // `c` after the '#'; returns "#RT CYCLE", "#MC_MOVEPATH" ... or "".
 std::string unsupported_hash(Cursor c) {
   static constexpr std::array<std::string_view, 2> kPhrases[] = {
-      {"RT", "CYCLE"}, {"WAIT", "SYN"}, {"SIGNAL", "SYN"}, {"HSC", ""}, {"CONTOUR", "MODE"},
-      {"SLOPE", ""},   {"TRAFO", ""},   {"CHANNEL", "INIT"}, {"FILE", "NAME"}, {"RETAIN", "CYCLE"}};
+      {"RT", "CYCLE"}, {"WAIT", "SYN"}, {"SIGNAL", "SYN"}, {"HSC", ""}, {"SLOPE", ""},
+        {"TRAFO", ""},   {"CHANNEL", "INIT"}, {"FILE", "NAME"}, {"RETAIN", "CYCLE"}};
   c.skip_spaces();
   if ((upper(c.peek()) == 'M' && upper(c.peek(1)) == 'C' && c.peek(2) == '_'))
     return "#" + to_upper(c.read_ident());

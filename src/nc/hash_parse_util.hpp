@@ -73,6 +73,8 @@ bool parse_mcs(HashCtx& h);              // #MCS
 bool parse_rotation(HashCtx& h);         // #ROTATION
 bool parse_suppress_offsets(HashCtx& h); // #SUPPRESS OFFSETS
 bool parse_tlc(HashCtx& h);              // #TLC
+// contour_mode_syntax.cpp: #CONTOUR MODE [DEV PATH_DEV=..] (corner blending)
+bool parse_contour_mode(HashCtx& h);
 // dist_ctrl_syntax.cpp: #DIST CTRL
 bool parse_dist_ctrl(Cursor& c, BlockCtx& b, std::size_t pos, HashCommand& out);
 

@@ -49,6 +49,8 @@ void apply_g(GCode code, double value, ModalState& m) {
     case g202: m.manual_mode = false; break;
     case g359: m.exact_stop = false; break;
     case g360: m.exact_stop = true; break;
+    case g260: m.contour = false; break;
+    case g261: m.contour = true; break;
     default: break;  // non-modal codes leave the modal state alone
   }
 }
@@ -183,6 +185,7 @@ bool apply_words(Words& w, BlockCtx& b, ModalState& modal, Block& out) {
     else if (w.axes[dwell_axis]) out.dwell_s = w.axes[dwell_axis];
   }
   if (w.time_s.v) out.dwell_s = w.time_s.v;
+  if (w.contour_dev.v) modal.contour_dev_mm = *w.contour_dev.v;
   PSet* pset = w.hash ? std::get_if<PSet>(&*w.hash) : nullptr;
   PReset* preset = w.hash ? std::get_if<PReset>(&*w.hash) : nullptr;
   if (w.axis_count) {

@@ -30,6 +30,7 @@ ChannelPrep::ChannelPrep(const config::Machine& m, std::size_t ch, const std::fi
     done_ = true;
     return;
   }
+  window_.set_blend_axes(planner_->blend_axes());
   decoder_.emplace(program, decoder_config(m, ch));
   // The planner lives on the heap, so the pointer survives moves of this object.
   decoder_->set_kernel_state_reader(planner_.get());

@@ -1,7 +1,9 @@
 #include "nck/prep/lookahead_window.hpp"
 
 #include <algorithm>
+#include <cmath>
 
+#include "nck/motion/corner_blend.hpp"
 #include "nck/motion/junction.hpp"
 
 namespace nck::prep {
@@ -34,7 +36,7 @@ bool waits_at_next_feed_motion(const Command& c) {
 }  // namespace
 
 LookAheadWindow::LookAheadWindow(std::size_t depth, double cycle_s)
-    : ring_(depth + 2 * kernel::kMaxCommandsPerBlock), depth_(depth), cycle_s_(cycle_s) {}
+    : ring_(depth + 4 * kernel::kMaxCommandsPerBlock), depth_(depth), cycle_s_(cycle_s) {}
 
 bool LookAheadWindow::push(const PlannedBlock& b) {
   if (!has_room()) return false;
@@ -42,17 +44,27 @@ bool LookAheadWindow::push(const PlannedBlock& b) {
   return true;
 }
 
-void LookAheadWindow::append(const Command& c) {
+void LookAheadWindow::append(const Command& command) {
+  Command c = command;
+  const bool must_wait = late_wait_pending_ && c.feed_motion;
+  const bool linkable =
+      c.kind == CommandKind::motion && open_motion_ != 0 && open_motion_ - 1 >= head_ && is_quiet(c) && !must_wait;
+  // A fillet goes in first (it chains after the motion before and becomes
+  // the open motion that c chains after); it also links a corner so sharp
+  // that the velocity look-ahead stops there (entry limit 0). Only right
+  // after the motion: a block without motion in between keeps its place at
+  // the corner (its events are not moved behind a fillet).
+  if (linkable && open_motion_ == tail_ && at(open_motion_ - 1).command.blend_dev_mm > 0)
+    (void)blend(open_motion_ - 1, c);
+  const bool chained = linkable && c.v_entry_max_mm_s > 0;
   const std::uint64_t seq = tail_++;
   Entry& e = at(seq);
   e.command = c;
   e.command.v_end_mm_s = 0;
   e.prev_motion = 0;
   e.end_cap_mm_s = 0;
+  e.programmed_mm = command.segment.length();
   if (c.kind == CommandKind::motion) {
-    const bool must_wait = late_wait_pending_ && c.feed_motion;
-    const bool chained = open_motion_ != 0 && open_motion_ - 1 >= head_ && is_quiet(c) && !must_wait &&
-                         c.v_entry_max_mm_s > 0;
     if (chained) {
       at(open_motion_ - 1).end_cap_mm_s = c.v_entry_max_mm_s;
       e.prev_motion = open_motion_;
@@ -90,6 +102,132 @@ double LookAheadWindow::entry_limit(const Command& c) const {
   const double v = motion::entry_velocity_limit(length, c.v_end_mm_s, a, cycle_s_);
   const double shorter = std::max(length - v * cycle_s_, 0.0);
   return std::max(motion::entry_velocity_limit(shorter, c.v_end_mm_s, a, cycle_s_) - a * cycle_s_, 0.0);
+}
+
+// The path limits of a fillet. An ordinary arc splits the plane axes'
+// acceleration evenly between speeding up and turning (each a/sqrt 2); a
+// fillet is meant to be run through at one speed, so it gives the turn
+// sqrt(1 - 0.25^2) = 97 % of a and changing speed on it 25 % (the vector
+// sum stays within a, so every plane axis does). Its speed limit rises by
+// a factor 1.17 against an ordinary arc of the same radius.
+motion::PathLimits LookAheadWindow::fillet_limits(const motion::Segment& fillet,
+                                                  std::span<const motion::AxisDynamics> dyn) {
+  constexpr double kTangentialShare = 0.25;
+  motion::PathLimits l = motion::path_limits(fillet, dyn);
+  const motion::AxisDynamics& da = dyn[fillet.plane_a()];
+  const motion::AxisDynamics& db = dyn[fillet.plane_b()];
+  const double a = std::min({da.a_acc_mm_s2, da.a_dec_mm_s2, db.a_acc_mm_s2, db.a_dec_mm_s2});
+  const double r = std::min(fillet.radius_start(), fillet.radius_end());
+  l.v_max_mm_s = std::min({da.v_max_mm_s, db.v_max_mm_s,
+                           std::sqrt(std::sqrt(1 - kTangentialShare * kTangentialShare) * a * r)});
+  l.a_acc_mm_s2 = l.a_dec_mm_s2 = kTangentialShare * a;
+  return l;
+}
+
+// Whether replacing the command at `seq` by `changed` keeps every released
+// command able to brake: follows the lowered end velocities back along the
+// chain until they stop changing (the normal case: at once), and fails when
+// they would reach a command that has left the window.
+bool LookAheadWindow::lowering_is_safe(std::uint64_t seq, Command changed) const {
+  for (;;) {
+    const Entry& e = at(seq);
+    const double limit = entry_limit(changed);
+    if (limit >= entry_limit(e.command) - 1e-9 || e.prev_motion == 0) return true;
+    const std::uint64_t m = e.prev_motion - 1;
+    if (m < head_) return false;
+    const double v = std::min(at(m).end_cap_mm_s, limit);
+    if (v >= at(m).command.v_end_mm_s) return true;
+    changed = at(m).command;
+    changed.v_end_mm_s = v;
+    seq = m;
+  }
+}
+
+double LookAheadWindow::cruise(const Command& c) const { return std::min(c.v_cmd_mm_s, c.limits.v_max_mm_s); }
+
+// The velocity limit at a transition the blend made tangent: what is left
+// of a kink (an arc's end radius rounding) by the planner's corner rule,
+// and neither side's cruise velocity exceeded.
+double LookAheadWindow::tangent_cap(const Command& from, const Command& to) const {
+  motion::AxisVector t_in{}, t_out{};
+  from.segment.tangent_at(from.segment.length(), t_in);
+  to.segment.tangent_at(0.0, t_out);
+  const double corner =
+      motion::corner_velocity(t_in, t_out, std::span<const double>(axes_.corner_dv_mm_s.data(), axes_.n_axes)) -
+      from.limits.a_dec_mm_s2 * cycle_s_;
+  return std::max(std::min({corner, cruise(from), cruise(to)}), 0.0);
+}
+
+// Puts a fillet between the open motion `prev` and `next` (about to be
+// appended): shortens both, appends the fillet as a motion of prev's block
+// and makes it the open motion. False (nothing changed) where no fillet
+// fits or it would not let the path pass faster than the sharp corner.
+bool LookAheadWindow::blend(std::uint64_t prev, Command& next) {
+  Entry& p = at(prev);
+  if (axes_.n_axes == 0 || !next.feed_motion || next.mapped || next.trafo.kind != motion::CaxTrafoKind::none ||
+      next.feed_link.kind != kernel::FeedLinkKind::none)
+    return false;
+  // Only a corner that slows the path gets a fillet (a kink that passes at
+  // the feed, like the chords of a fine polygon, stays as programmed).
+  const double feed = std::min(cruise(p.command), cruise(next));
+  if (next.v_entry_max_mm_s >= 0.999 * feed) return false;
+  // Each block keeps at least 10 % of its programmed length.
+  const auto cb = motion::blend_corner(p.command.segment, next.segment, p.command.blend_dev_mm,
+                                       0.45 * p.programmed_mm, 0.45 * next.segment.length());
+  if (!cb) return false;
+  const std::span<const motion::AxisDynamics> dyn(axes_.feed_dyn.data(), axes_.n_axes);
+  Command f;
+  f.kind = CommandKind::motion;
+  f.file_id = p.command.file_id;
+  f.line = p.command.line;
+  f.has_n = p.command.has_n;
+  f.n = p.command.n;
+  f.emit_block_event = false;  // a follow-up of the block before
+  f.segment = cb->fillet;
+  f.limits = fillet_limits(cb->fillet, dyn);
+  f.v_cmd_mm_s = std::min(p.command.v_cmd_mm_s, next.v_cmd_mm_s);
+  f.settle_after_stop = false;
+  f.css = p.command.css;
+  f.feed_motion = true;
+  f.manual_offset_axes = p.command.manual_offset_axes;
+  if (!motion::valid(f.limits) || cruise(f) <= next.v_entry_max_mm_s) return false;
+  // Every piece must take more than a cycle's travel, or the profile would
+  // stand still for a cycle at its end (it carries one cycle at most).
+  Command before = p.command, after = next;
+  before.segment = cb->before;
+  after.segment = cb->after;
+  const double dt2 = 2 * cycle_s_;
+  if (cb->fillet.length() < dt2 * cruise(f) || cb->before.length() < dt2 * cruise(before) ||
+      cb->after.length() < dt2 * cruise(after))
+    return false;
+  f.v_entry_max_mm_s = tangent_cap(before, f);
+  after.v_entry_max_mm_s = tangent_cap(f, after);
+  // The window's promise: a command that has left can still brake in what
+  // follows. Shortening prev may lower the velocities before it (the fillet
+  // is slower than a stop is far): fine inside the window, where the chain
+  // is planned again, but not for a command already released.
+  after.v_end_mm_s = 0;
+  f.v_end_mm_s = std::min(after.v_entry_max_mm_s, entry_limit(after));
+  before.v_end_mm_s = std::min(f.v_entry_max_mm_s, entry_limit(f));
+  if (!lowering_is_safe(prev, before)) return false;
+
+  p.command.segment = cb->before;
+  next.segment = cb->after;
+  next.v_entry_max_mm_s = after.v_entry_max_mm_s;
+  f.v_end_mm_s = 0;
+  const std::uint64_t seq = tail_++;
+  Entry& e = at(seq);
+  e.command = f;
+  e.prev_motion = prev + 1;
+  e.end_cap_mm_s = 0;
+  e.programmed_mm = cb->fillet.length();
+  p.end_cap_mm_s = f.v_entry_max_mm_s;
+  raise_chain(seq);
+  open_motion_ = seq + 1;
+  ++stats_.blends;
+  stats_.shortfall_mm += cb->shortfall_mm;
+  stats_.max_deviation_mm = std::max(stats_.max_deviation_mm, cb->deviation_mm);
+  return true;
 }
 
 bool LookAheadWindow::release(kernel::CommandQueue& q, bool flush) {

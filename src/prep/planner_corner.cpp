@@ -24,6 +24,14 @@ void Planner::setup_corner_budgets(const config::Machine& machine) {
   }
 }
 
+BlendAxes Planner::blend_axes() const {
+  BlendAxes a;
+  a.n_axes = n_axes_;
+  a.feed_dyn = feed_dyn_;
+  a.corner_dv_mm_s = corner_dv_feed_;
+  return a;
+}
+
 // The unit direction of c's path at its start or end, in machine axes.
 motion::AxisVector Planner::machine_tangent(const Command& c, bool at_end) const {
   motion::AxisVector t{};
@@ -59,6 +67,10 @@ bool Planner::needs_settling(const Command& c) const {
 void Planner::note_transition(const nc::Block& b, Command& c, bool rapid) {
   c.exact_stop = b.g_nonmodal.has(nc::GCode::g60) || b.modal.exact_stop ||
                  (rapid && channel_.exact_stop_after_g00);
+  // G61 (this block) or G261 (modal): the look-ahead window may blend the
+  // corner at this feed motion's end (docs/decisions.md, corner blending).
+  const bool blend = b.g_nonmodal.has(nc::GCode::g61) || b.modal.contour;
+  c.blend_dev_mm = blend && !rapid && !c.exact_stop && !c.mapped ? b.modal.contour_dev_mm : 0;
   // Under #FACE/#CYL the segment is Cartesian and the machine axes follow
   // the transformation: its corners are not looked ahead yet. A spindle
   // coupling (G95, G33, G63, G331/G332) sets the path speed each cycle from

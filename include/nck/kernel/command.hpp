@@ -66,6 +66,10 @@ struct Command {
   // Starting from an exact stop right after moving, wait one cycle at
   // standstill first (the planner decides it from both blocks' directions).
   bool settle_after_stop = true;
+  // Corner blending (G61/G261): the corner at the end of this feed motion
+  // may be replaced by a fillet within this distance of the corner point
+  // (#CONTOUR MODE PATH_DEV); 0 = none. The look-ahead window builds it.
+  double blend_dev_mm = 0;
   // spindle couplings (feed_link.hpp): a per-cycle limit of the path speed,
   // the spindle following the path (tapping), and G96 (modal, every block)
   FeedLink feed_link{};

@@ -28,8 +28,9 @@ enum class GCode : std::uint16_t {
   g161 = 161, g162 = 162,
   g201 = 201, g202 = 202,
   g359 = 359, g360 = 360,  // exact stop off / on (modal)
+  g260 = 260, g261 = 261,  // corner blending off / on (modal; G61 blends one corner)
   // non-modal: dwell, homing, G92 offset, measuring, spindle functions ...
-  g4 = 4, g60 = 60, g74 = 74, g92 = 92, g100 = 100, g101 = 101, g102 = 102, g106 = 106, g112 = 112,
+  g4 = 4, g60 = 60, g61 = 61, g74 = 74, g92 = 92, g100 = 100, g101 = 101, g102 = 102, g106 = 106, g112 = 112,
   g130 = 130, g135 = 135, g136 = 136, g137 = 137, g167 = 167, g196 = 196, g200 = 200,
 };
 
@@ -43,7 +44,7 @@ class GCodeSet {
  public:
   using Bits = std::uint32_t;
   // Every G code the set can hold, ascending; bit i stands for kCodes[i].
-  static constexpr std::array kCodes{GCode::g4,   GCode::g60,  GCode::g74,  GCode::g92,  GCode::g100, GCode::g101,
+  static constexpr std::array kCodes{GCode::g4,   GCode::g60,  GCode::g61,  GCode::g74,  GCode::g92,  GCode::g100, GCode::g101,
                                      GCode::g102, GCode::g106, GCode::g112, GCode::g130, GCode::g135,
                                      GCode::g136, GCode::g137, GCode::g167, GCode::g196, GCode::g200};
 

@@ -36,6 +36,8 @@ struct ModalState {
   bool circle_center_absolute = false;  // G161 (true) / G162 (false, initial)
   bool manual_mode = false;             // G201 (true) / G202 (false, initial)
   bool exact_stop = false;              // G360 (true) / G359 (false, initial)
+  bool contour = false;                 // G261 (true) / G260 (false, initial): corner blending
+  double contour_dev_mm = 0.01;         // #CONTOUR MODE [DEV PATH_DEV=..] (docs/decisions.md)
 };
 
 }  // namespace nck::nc

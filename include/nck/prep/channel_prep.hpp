@@ -56,6 +56,8 @@ class ChannelPrep {
   bool done() const { return done_ && window_.empty() && backlog_.empty(); }
   // Decoder warnings found by the last feed() (for the caller to report).
   const std::vector<Diagnostic>& new_warnings() const { return new_warnings_; }
+  // Corner blending so far (G61/G261): fillets placed, path length they cut.
+  const BlendStats& blend_stats() const { return window_.blend_stats(); }
   const nc::Decoder* decoder() const { return decoder_ ? &*decoder_ : nullptr; }
   const Planner& planner() const { return *planner_; }
 

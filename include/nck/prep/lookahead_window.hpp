@@ -14,19 +14,42 @@
 // is never too fast; the pass stops at the first transition that does not
 // change, which keeps the cost per block small.
 //
+// Corner blending (G61/G261, docs/decisions.md): when a motion chains after
+// one whose end may be blended (Command::blend_dev_mm), a circular fillet
+// (motion/corner_blend.hpp) is put between them as a motion command of its
+// own, both neighbours shortened to its tangent points; where none fits,
+// the corner stays sharp with its velocity limit.
+//
 // This is also where tool radius compensation will act on a span of
 // upcoming blocks. Setup side: never called from tick().
+#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "nck/core/fixed_vector.hpp"
 #include "nck/kernel/queues.hpp"
+#include "nck/motion/limits.hpp"
 
 namespace nck::prep {
 
 // The commands one block planned into.
 using PlannedBlock = FixedVector<kernel::Command, kernel::kMaxCommandsPerBlock>;
+
+// What blending needs of the channel's axes (from the planner, setup).
+struct BlendAxes {
+  std::size_t n_axes = 0;
+  std::array<motion::AxisDynamics, kMaxAxes> feed_dyn{};  // G1/G2/G3 dynamics per axis
+  std::array<double, kMaxAxes> corner_dv_mm_s{};           // kink budget per axis and cycle
+};
+
+// Totals over the run, for reports and benchmarks.
+struct BlendStats {
+  std::uint64_t blends = 0;      // fillets placed
+  double shortfall_mm = 0;       // programmed length minus blended length, summed
+  double max_deviation_mm = 0;   // largest corner-to-fillet distance
+};
 
 class LookAheadWindow {
  public:
@@ -38,7 +61,11 @@ class LookAheadWindow {
   std::size_t size() const { return static_cast<std::size_t>(tail_ - head_); }
   bool empty() const { return head_ == tail_; }
   // Room for one more block without releasing first.
-  bool has_room() const { return size() + kernel::kMaxCommandsPerBlock <= ring_.size(); }
+  // (each motion may bring a fillet along: two entries per command)
+  bool has_room() const { return size() + 2 * kernel::kMaxCommandsPerBlock <= ring_.size(); }
+  // setup: the axes' dynamics, needed before a blend can be placed.
+  void set_blend_axes(const BlendAxes& axes) { axes_ = axes; }
+  const BlendStats& blend_stats() const { return stats_; }
   // Appends a block's commands (false when there is no room: release first).
   bool push(const PlannedBlock& b);
 
@@ -52,11 +79,19 @@ class LookAheadWindow {
     kernel::Command command;
     std::uint64_t prev_motion = 0;  // sequence number + 1 of the motion chained before, 0 = none
     double end_cap_mm_s = 0;        // corner/feed limit at its end while chained, else 0
+    double programmed_mm = 0;       // its length before any blend shortened it
   };
   Entry& at(std::uint64_t seq) { return ring_[seq % ring_.size()]; }
+  const Entry& at(std::uint64_t seq) const { return ring_[seq % ring_.size()]; }
   void append(const kernel::Command& c);
   void raise_chain(std::uint64_t next);
   double entry_limit(const kernel::Command& c) const;
+  bool blend(std::uint64_t prev, kernel::Command& next);
+  static motion::PathLimits fillet_limits(const motion::Segment& fillet,
+                                         std::span<const motion::AxisDynamics> dyn);
+  bool lowering_is_safe(std::uint64_t seq, kernel::Command changed) const;
+  double cruise(const kernel::Command& c) const;
+  double tangent_cap(const kernel::Command& from, const kernel::Command& to) const;
 
   std::vector<Entry> ring_;
   std::uint64_t head_ = 0, tail_ = 0;  // sequence numbers: [head_, tail_) are in the window
@@ -64,6 +99,8 @@ class LookAheadWindow {
   double cycle_s_;
   std::uint64_t open_motion_ = 0;  // sequence number + 1 of a motion whose end may still blend
   bool late_wait_pending_ = false;  // an MVS_SLM function waits at the next feed motion
+  BlendAxes axes_{};
+  BlendStats stats_{};
 };
 
 }  // namespace nck::prep

@@ -44,6 +44,8 @@ class Planner final : public nc::KernelStateReader {
                         std::uint32_t line);
 
   const nc::ModalState& modal() const { return modal_; }
+  // The axes' feed dynamics and kink budgets, for corner blending (setup).
+  BlendAxes blend_axes() const;
   std::size_t axis_count() const { return n_axes_; }
   const ChannelFrames& frames() const { return frames_; }
   // Where the machine axes stand when everything planned so far has run.

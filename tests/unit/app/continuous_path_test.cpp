@@ -131,6 +131,7 @@ TEST(ContinuousPath, G60WithoutMotionIsError20003) {
 struct RandomProgram {
   std::string text;
   std::vector<std::array<double, 3>> points;  // every programmed end point
+  double length_mm = 0;                       // of the programmed path
 };
 
 RandomProgram random_program(std::mt19937& rng) {
@@ -141,7 +142,10 @@ RandomProgram random_program(std::mt19937& rng) {
   auto line = [&](int g, double nx, double ny, double nz, double f) {
     p.text += g == 0 ? fmt::format("G0 X{:.3f} Y{:.3f} Z{:.3f}\n", nx, ny, nz)
                      : fmt::format("G1 X{:.3f} Y{:.3f} F{:.0f}\n", nx, ny, f);
+    const auto from = p.points.back();
     p.points.push_back({std::round(nx * 1000) / 1000, std::round(ny * 1000) / 1000, std::round(nz * 1000) / 1000});
+    const auto& q = p.points.back();
+    p.length_mm += std::hypot(q[0] - from[0], q[1] - from[1], q[2] - from[2]);
   };
   for (int i = 0; i < 40; ++i) {
     const int k = kind(rng);
@@ -157,6 +161,7 @@ RandomProgram random_program(std::mt19937& rng) {
       p.text += fmt::format("G{} X{:.3f} Y{:.3f} I{:.4f} J{:.4f} F{:.0f}\n", k == 8 ? 2 : 3, ex, ey, (ex - x) / 2,
                             (ey - y) / 2, feed(rng));
       p.points.push_back({ex, ey, z});
+      p.length_mm += M_PI / 2 * std::hypot(ex - x, ey - y);
     } else if (k == 6) {
       z = zpos(rng);
       line(0, nx, ny, z, 0);
@@ -185,17 +190,25 @@ double distance_to_trace(const Trace& tr, const std::array<double, 3>& q) {
   return best;
 }
 
-TEST(ContinuousPathProperty, NoAxisExceedsItsLimitsAndEveryEndPointIsOnThePath) {
+// Runs `count` random programs (with `prelude` after the first block) and
+// checks every cycle: no axis beyond vb_max or a_max, every programmed end
+// point within end_tol_mm of the trace, and the trace no shorter than the
+// programmed path minus max_short_per_block_mm per block.
+void check_random_programs(const std::string& prelude, double end_tol_mm, double max_short_per_block_mm) {
   const char* env = std::getenv("NCK_PROPERTY_COUNT");
   const int count = env ? std::atoi(env) : 12;
   const std::array<double, 3> v_max{500, 500, 500}, a_max{3000, 3000, 2500};
   std::mt19937 rng(20261123);
   for (int n = 0; n < count; ++n) {
-    const RandomProgram program = random_program(rng);
+    RandomProgram program = random_program(rng);
+    program.text.insert(program.text.find('\n') + 1, prelude);
     PathRun r = run_mill("cp-prop", program.text);
     std::ofstream(temp_dir("cp-prop-last") / "p.nc") << program.text;
     ASSERT_EQ(r.cli.exit_code, 0) << program.text << r.cli.output;
     const Trace& tr = r.trace;
+    double travelled_mm = 0;
+    for (std::size_t i = 1; i < tr.p.size(); ++i)
+      travelled_mm += std::hypot(tr.p[i][0] - tr.p[i - 1][0], tr.p[i][1] - tr.p[i - 1][1], tr.p[i][2] - tr.p[i - 1][2]);
     for (std::size_t i = 2; i < tr.p.size(); ++i)
       for (int k = 0; k < 3; ++k) {
         const double v1 = (tr.p[i][k] - tr.p[i - 1][k]) / kDt, v0 = (tr.p[i - 1][k] - tr.p[i - 2][k]) / kDt;
@@ -207,8 +220,90 @@ TEST(ContinuousPathProperty, NoAxisExceedsItsLimitsAndEveryEndPointIsOnThePath) 
     // trace's straight chord cuts a kink by at most a few micrometres (one
     // cycle's travel at the corner speed times the kink's half angle).
     for (const auto& q : program.points)
-      ASSERT_LT(distance_to_trace(tr, q), 0.01) << q[0] << " " << q[1] << " " << q[2] << "\n" << program.text;
+      ASSERT_LT(distance_to_trace(tr, q), end_tol_mm) << q[0] << " " << q[1] << " " << q[2] << "\n" << program.text;
+    // Chords of the trace are never longer than the path; blends may cut.
+    // Rounding of the trace (1e-6 mm) adds up to ~2e-6 mm per cycle.
+    const double blocks = static_cast<double>(program.points.size()), rounding = 2e-6 * tr.p.size();
+    EXPECT_GE(travelled_mm, program.length_mm - max_short_per_block_mm * blocks - rounding) << program.text;
+    EXPECT_LE(travelled_mm, program.length_mm + rounding) << program.text;
   }
+}
+
+TEST(ContinuousPathProperty, NoAxisExceedsItsLimitsAndEveryEndPointIsOnThePath) {
+  check_random_programs("", 0.01, 0.0005);
+}
+
+// The same with corner blending on (G261, PATH_DEV 0.05 mm): every
+// programmed corner within PATH_DEV of the trace (+2 um for the trace's
+// chords), and the trace at most 2 x PATH_DEV shorter per corner (a fillet
+// of deviation d at a turn phi cuts 2 r tan(phi/2) - r phi, which is below
+// 2 d for every phi < 180 degrees, r = d / (1/cos(phi/2) - 1)).
+TEST(ContinuousPathProperty, BlendedCornersStayWithinPathDevAndLimits) {
+  check_random_programs("#CONTOUR MODE [DEV PATH_DEV=0.05]\nG261\n", 0.05 + 0.002, 2 * 0.05);
+}
+
+// examples/mill/contour_blend.nc: a 20 mm square at F1200 (20 mm/s) with
+// G261, PATH_DEV 0.05. At a right angle the fillet's radius is
+// r = 0.05 / (sqrt(2) - 1) = 0.12071 mm, its speed limit (half the plane
+// axes' 2500 mm/s^2 budget centripetal) sqrt(2500 / sqrt(2) * r) = 14.61 mm/s.
+TEST(CornerBlending, ExampleRunsThroughTheCornersWithinPathDev) {
+  const PathRun blend = run_mill_file(root() + "/examples/mill/contour_blend.nc", temp_dir("cb-example"));
+  ASSERT_EQ(blend.cli.exit_code, 0) << blend.cli.output;
+  std::string sharp_text = read_file(root() + "/examples/mill/contour_blend.nc");
+  sharp_text.replace(sharp_text.find("G261"), 4, "G260");
+  const PathRun sharp = run_mill("cb-sharp", sharp_text);
+  ASSERT_EQ(sharp.cli.exit_code, 0) << sharp.cli.output;
+  const double r = 0.05 / (std::sqrt(2.0) - 1), v_fillet = std::sqrt(2500 / std::sqrt(2.0) * r);
+  EXPECT_NEAR(v_fillet, 14.61, 0.01);
+  // No stop from the start of N60 to the end of N80 (three corners); the
+  // slowest cycle is the fillet's speed (one braking step of rounding).
+  const std::size_t i0 = row_at(blend.trace, blend.block_t.at(60)), i1 = row_at(blend.trace, blend.block_t.at(90));
+  double v_min = 1e9;
+  for (std::size_t i = i0; i < i1; ++i) v_min = std::min(v_min, speed(blend.trace, i));
+  EXPECT_NEAR(v_min, v_fillet, 0.3);
+  // The corner (20, 0) is PATH_DEV from the trace, not closer, not farther.
+  EXPECT_NEAR(distance_to_trace(blend.trace, {20, 0, -1}), 0.05, 0.002);
+  EXPECT_NEAR(distance_to_trace(blend.trace, {20, 20, -1}), 0.05, 0.002);
+  // N80 -> N90 (G260 acts after N90): the start X0 Y0 lies on the trace
+  // too, so only the cycles from N80 on count.
+  Trace late;
+  for (std::size_t i = row_at(blend.trace, blend.block_t.at(80)); i < blend.trace.p.size(); ++i)
+    late.t.push_back(blend.trace.t[i]), late.p.push_back(blend.trace.p[i]);
+  EXPECT_NEAR(distance_to_trace(late, {0, 0, -1}), 0.05, 0.002);
+  // Without blending every corner slows to 0.5 mm/s (about v / a = 8 ms
+  // lost with the two ramps); a fillet costs (20 - 14.6)^2 / (2500 * 20) = 0.6 ms.
+  EXPECT_LT(blend.end_t, sharp.end_t - 4 * 0.004);
+  EXPECT_LT(distance_to_trace(sharp.trace, {20, 0, -1}), 0.002);
+}
+
+TEST(CornerBlending, SyntaxErrorsNameIdFileAndLine) {
+  auto expect_error = [](const std::string& name, const std::string& text, const std::string& id, const std::string& line) {
+    const PathRun r = run_mill(name, text);
+    EXPECT_EQ(r.cli.exit_code, 1) << r.cli.output;
+    EXPECT_NE(r.cli.output.find(id), std::string::npos) << r.cli.output;
+    EXPECT_NE(r.cli.output.find("p.nc:" + line), std::string::npos) << r.cli.output;
+  };
+  expect_error("cb-mode", "N10 G1 X10 F1200\nN20 #CONTOUR MODE [DIST PATH_DEV=1]\nN30 M30\n", "930350", "2");
+  expect_error("cb-param", "N10 G1 X10 F1200\nN20 #CONTOUR MODE [DEV TRACK_DEV=1]\nN30 M30\n", "930350", "2");
+  expect_error("cb-range", "N10 G1 X10 F1200\n\nN20 #CONTOUR MODE [DEV PATH_DEV=0]\nN30 M30\n", "930351", "3");
+  expect_error("cb-g61", "N10 G1 X10 F1200\nN20 G61\nN30 M30\n", "930352", "2");
+  expect_error("cb-g61-g60", "N10 G1 X10 F1200\nN20 G61 G60 X20\nN30 M30\n", "930352", "2");
+  expect_error("cb-groups", "N10 G261 G260 G1 X10 F1200\nN30 M30\n", "920", "1");
+}
+
+// G61 blends the corner at the end of its own block only; a G60 block, a
+// block with an M function and a dwell keep their exact stop.
+TEST(CornerBlending, G61BlendsOneCornerAndStopsStayStops) {
+  const PathRun r = run_mill("cb-g61", "N5 #CONTOUR MODE [DEV PATH_DEV=0.02]\nN10 G1 G61 X10 F1200\nN20 Y10\n"
+                                       "N30 X0\nN40 G261 Y0\nN50 G60 X-10\nN60 Y-10\nN70 M8 X-20\nN80 Y-20\nN90 M30\n");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  EXPECT_NEAR(distance_to_trace(r.trace, {10, 0, 0}), 0.02, 0.002);    // G61: blended
+  EXPECT_LT(distance_to_trace(r.trace, {10, 10, 0}), 0.001);           // N20: sharp
+  EXPECT_LT(distance_to_trace(r.trace, {0, 10, 0}), 0.001);            // N30: sharp
+  EXPECT_NEAR(distance_to_trace(r.trace, {0, 0, 0}), 0.02, 0.002);     // N40 G261: blended
+  EXPECT_LT(distance_to_trace(r.trace, {-10, 0, 0}), 1e-6);            // N50 G60: exact stop
+  EXPECT_LT(distance_to_trace(r.trace, {-10, -10, 0}), 1e-6);          // N70 has M8: stops before it
+  EXPECT_LT(distance_to_trace(r.trace, {-20, -10, 0}), 1e-6);          // ... and after it
 }
 
 }  // namespace

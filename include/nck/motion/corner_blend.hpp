@@ -1,0 +1,38 @@
+#pragma once
+// Geometric corner blending (G61/G261 with #CONTOUR MODE [DEV PATH_DEV=..],
+// docs/decisions.md "Corner blending"): a circular fillet tangent to both
+// blocks is put in the corner, and both blocks are shortened to its tangent
+// points. Lines stay lines and arcs stay arcs on their own circle, the
+// fillet is an arc: the kernel executes all three exactly, by path length.
+//
+// The fillet radius is the largest at which (a) the corner point is no
+// further than path_dev_mm from the fillet (the largest distance between
+// the programmed contour and the blended one), and (b) neither block loses
+// more than its allowed trim length. Setup side (preparation): pure
+// functions, may be slow-ish (a bisection of ~50 steps of 2-D math).
+#include <optional>
+
+#include "nck/motion/segment.hpp"
+
+namespace nck::motion {
+
+struct CornerBlend {
+  Segment before;         // the block before, ending at the fillet's first tangent point
+  Segment fillet;         // the arc in the corner
+  Segment after;          // the block after, starting at the fillet's second tangent point
+  double radius_mm = 0;   // of the fillet
+  double deviation_mm = 0;  // distance of the programmed corner from the fillet
+  // Path length the blend removes: both trims minus the fillet's length (>= 0).
+  double shortfall_mm = 0;
+};
+
+// Blends the corner between a (ending at the corner) and b (starting there).
+// Both must lie in one plane of two axes (a line moving only in the two
+// axes, an arc without helix or extra turns, every other axis standing); the
+// corner must be a real turn (not collinear, not a reversal). max_trim_*_mm
+// bound how much of a's end and b's start the blend may take (path length).
+// nullopt when no fillet fits: the caller keeps the sharp corner.
+std::optional<CornerBlend> blend_corner(const Segment& a, const Segment& b, double path_dev_mm,
+                                        double max_trim_a_mm, double max_trim_b_mm) noexcept;
+
+}  // namespace nck::motion
