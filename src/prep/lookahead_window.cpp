@@ -107,9 +107,9 @@ double LookAheadWindow::entry_limit(const Command& c) const {
 // The path limits of a fillet. An ordinary arc splits the plane axes'
 // acceleration evenly between speeding up and turning (each a/sqrt 2); a
 // fillet is meant to be run through at one speed, so it gives the turn
-// sqrt(1 - 0.25^2) = 97 % of a and changing speed on it 25 % (the vector
+// sqrt(1 - 0.5^2) = 87 % of a and changing speed on it 50 % (the vector
 // sum stays within a, so every plane axis does). Its speed limit rises by
-// a factor 1.17 against an ordinary arc of the same radius.
+// a factor 1.11 against an ordinary arc of the same radius.
 motion::PathLimits LookAheadWindow::fillet_limits(const motion::Segment& fillet,
                                                   std::span<const motion::AxisDynamics> dyn) {
   constexpr double kTangentialShare = 0.25;
@@ -200,7 +200,10 @@ bool LookAheadWindow::blend(std::uint64_t prev, Command& next) {
   if (cb->fillet.length() < dt2 * cruise(f) || cb->before.length() < dt2 * cruise(before) ||
       cb->after.length() < dt2 * cruise(after))
     return false;
-  f.v_entry_max_mm_s = tangent_cap(before, f);
+  // The profile may cross into the fillet one braking step faster than
+  // planned; on a small radius that step would cost much centripetal
+  // acceleration, so the fillet is entered one step below its limit.
+  f.v_entry_max_mm_s = std::max(std::min(tangent_cap(before, f), cruise(f) - before.limits.a_dec_mm_s2 * cycle_s_), 0.0);
   after.v_entry_max_mm_s = tangent_cap(f, after);
   // The window's promise: a command that has left can still brake in what
   // follows. Shortening prev may lower the velocities before it (the fillet
