@@ -323,8 +323,10 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
 // reports the offsets reached at the end of its cycle.
 void Channel::follow_handwheel(double t_s, double dt_s, const ChannelInput& in, TickOutput& sink,
                                ChannelContext& ctx) noexcept {
+  // Until the first G201 every handwheel offset is zero: nothing to follow.
+  if (manual_mask_ != 0) handwheel_used_ = true;
   const double step = kHandwheelSpeed_mm_s * dt_s;
-  for (std::size_t j = 0; j < n_axes_; ++j) {
+  for (std::size_t j = 0; handwheel_used_ && j < n_axes_; ++j) {
     if ((manual_mask_ >> j) & 1u) manual_target_mm_[j] += in.handwheel_mm[j];
     const double d = manual_target_mm_[j] - manual_mm_[j];
     manual_mm_[j] += std::clamp(d, -step, step);

@@ -25,8 +25,12 @@ DryRun::DryRun(DryRun&&) noexcept = default;
 DryRun& DryRun::operator=(DryRun&&) noexcept = default;
 
 void DryRun::prepare() {
-  for (std::size_t ch = 0; ch < preps_.size(); ++ch)
+  for (std::size_t ch = 0; ch < preps_.size(); ++ch) {
     preps_[ch].feed(kernel_->commands(ch), kernel_->feedback(ch), kernel_->channel_done(ch));
+    // Preparation runs ahead of the kernel: the sensor is on before the
+    // kernel takes the first #DIST CTRL ON.
+    if (preps_[ch].planner().dist_ctrl_programmed()) sim_->switch_sensor_on(ch);
+  }
 }
 
 void DryRun::cycle(kernel::TickOutput& out) noexcept {
