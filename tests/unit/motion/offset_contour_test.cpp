@@ -131,5 +131,24 @@ TEST(OffsetContour, PiecesCross) {
   EXPECT_FALSE(pieces_cross(arc({20, 5}, {25, 0}, {20, 0}, false), arc({26, 5}, {21, 0}, {26, 0}, false)));
 }
 
+TEST(OffsetContour, LinearCornerOfG25) {
+  // Turn of 90 deg: tangents +X from X0 Y5 and -Y into X5 Y0 meet at X5 Y5.
+  LinearCorner lc = linear_corner({0, 5}, {1, 0}, {5, 0}, {0, -1}, 5);
+  ASSERT_EQ(lc.n, 1);
+  expect_near(lc.p[0], {5, 5});
+  // Turn of 45 deg: +X from X0 Y5 and (1, -1)/sqrt 2 into the offset start
+  // X5/sqrt2 Y5/sqrt2 of a corner at the origin: they meet on Y5 at X5 tan 22.5.
+  const double h = 5 / std::sqrt(2.0);
+  lc = linear_corner({0, 5}, {1, 0}, {h, h}, {1 / std::sqrt(2.0), -1 / std::sqrt(2.0)}, 5);
+  ASSERT_EQ(lc.n, 1);
+  expect_near(lc.p[0], {5 * std::tan(std::numbers::pi / 8), 5});
+  // Reversal (180 deg): +X ending at X10 Y5, -X starting at X10 Y-5: both
+  // extended by 5 to X15, joined by a line.
+  lc = linear_corner({10, 5}, {1, 0}, {10, -5}, {-1, 0}, 5);
+  ASSERT_EQ(lc.n, 2);
+  expect_near(lc.p[0], {15, 5});
+  expect_near(lc.p[1], {15, -5});
+}
+
 }  // namespace
 }  // namespace nck::motion::trc
