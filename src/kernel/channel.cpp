@@ -93,6 +93,13 @@ void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelConte
     e.message_index = payload;
     sink.emit(e);
   }
+  if (c.trc_event) {
+    Event e = event(EventKind::trc, t_s);
+    e.trc_state = c.trc_state;
+    e.trc_d = c.trc_d;
+    e.trc_radius_mm = c.trc_radius_mm;
+    sink.emit(e);
+  }
   if (c.kind == CommandKind::error) {
     raise(c.error_id, c.message_index, t_s, sink, ctx);
     return;

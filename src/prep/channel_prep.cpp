@@ -100,6 +100,17 @@ bool ChannelPrep::prepare(const nc::Block& b, const std::string& file_name, kern
   return push_out(commands);
 }
 
+namespace {
+
+void set_trc_event(kernel::Command& c, const RadiusComp::State& s) {
+  c.trc_event = true;
+  c.trc_state = s.g;
+  c.trc_d = s.d;
+  c.trc_radius_mm = s.radius_mm;
+}
+
+}  // namespace
+
 void ChannelPrep::plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& commands,
                            const std::string& file_name) {
   for (TrcOut& o : outs) {
@@ -111,6 +122,8 @@ void ChannelPrep::plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& comm
       planned = planner_->plan(o.block, decoder_ ? decoder_->file_name(o.block.file_id) : file_name);
       if (o.inserted)
         for (kernel::Command& c : planned) c.emit_block_event = false;
+      else if (const auto st = trc_.report(o.block); st && !planned.empty())
+        set_trc_event(planned[0], *st);
     }
     if (backlog_.empty() && (window_.has_room() || window_.release(commands, false)))
       (void)window_.push(planned);

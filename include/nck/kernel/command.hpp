@@ -129,6 +129,12 @@ struct Command {
   std::array<char, 32> dist_var{};
   bool dist_check_sw = false;
   double dist_sw_neg_mm = 0, dist_sw_pos_mm = 0;
+  // Tool radius compensation changed with this block (a `trc` event when it
+  // starts): 0 G40, 1 G41, 2 G42, the D in force and its tool radius.
+  bool trc_event = false;
+  std::uint8_t trc_state = 0;
+  std::int32_t trc_d = 0;
+  double trc_radius_mm = 0;
 };
 
 }  // namespace nck::kernel
