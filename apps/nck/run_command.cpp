@@ -228,7 +228,7 @@ int run_simulation(const RunOptions& opt) {
     return 2;
   }
   std::vector<std::filesystem::path> programs(opt.programs.begin(), opt.programs.end());
-  auto created = sim::DryRun::create(m, programs, {opt.clamp_index});
+  auto created = sim::DryRun::create(m, programs, {opt.clamp_index, !opt.report.empty()});
   if (!created) {
     fmt::print(stderr, "{}\n", format(created.error()));
     return 2;
@@ -249,7 +249,7 @@ int run_simulation(const RunOptions& opt) {
     fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppOutputFile), *open_error);
     return 2;
   }
-  out.report.start(m, opt, run.kernel());
+  out.report.start(m, opt, run);
   RunNames names;
   names.run = &run;
 
