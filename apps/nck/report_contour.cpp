@@ -31,8 +31,10 @@ void ProgrammedContour::decoded(const nc::Block& b, const prep::Planner& planner
     tracking_ = true;
     pos_ = planner.planned_pcs();
     runs_.emplace_back();
+    runs_.back().first_line = b.line;
     add(pos_, planner);
   }
+  runs_.back().last_line = b.line;
   if (moves_to_words(b)) move(b, planner);
   if (!comp) tracking_ = false;  // the G40 block ends the stretch
 }
@@ -98,7 +100,7 @@ void ProgrammedContour::add(const motion::AxisVector& pcs, const prep::Planner& 
       p.mcs[k] = static_cast<float>(mcs[static_cast<std::size_t>(axis_[k])]);
       p.pcs[k] = static_cast<float>(pcs[static_cast<std::size_t>(axis_[k])]);
     }
-  runs_.back().push_back(p);
+  runs_.back().points.push_back(p);
 }
 
 }  // namespace nck::app

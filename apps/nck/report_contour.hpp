@@ -18,13 +18,18 @@ struct ContourPoint {
   std::array<float, 3> mcs{}, pcs{};  // X Y Z (mm)
 };
 
+// One compensated stretch: from the selection block to the G40 block.
+struct ContourRun {
+  std::vector<ContourPoint> points;
+  std::uint32_t first_line = 0, last_line = 0;  // of those blocks (in their files)
+};
+
 class ProgrammedContour : public prep::PrepObserver {
  public:
   // axis: channel index of X, Y, Z (-1: none).
   explicit ProgrammedContour(const std::array<int, 3>& axis) : axis_(axis) {}
   void decoded(const nc::Block& b, const prep::Planner& planner, bool trc_holding) override;
-  // One polyline per compensated stretch (selection to G40).
-  const std::vector<std::vector<ContourPoint>>& runs() const { return runs_; }
+  const std::vector<ContourRun>& runs() const { return runs_; }
 
   static constexpr std::size_t kMaxPoints = 50000;  // per channel; beyond, the rest is not drawn
   static constexpr double kMaxChordDeg = 5;          // arcs drawn with chords of at most this angle
@@ -35,7 +40,7 @@ class ProgrammedContour : public prep::PrepObserver {
   void add(const motion::AxisVector& pcs, const prep::Planner& planner);
 
   std::array<int, 3> axis_;
-  std::vector<std::vector<ContourPoint>> runs_;
+  std::vector<ContourRun> runs_;
   motion::AxisVector pos_{};  // programmed position (program coordinates, radius)
   bool tracking_ = false;
   std::size_t points_ = 0;

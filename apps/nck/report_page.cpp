@@ -130,14 +130,15 @@ std::string ReportWriter::frames_json(const Channel& ch) const {
 }
 
 // The programmed contour of the G41/G42 stretches: one polyline each, in
-// machine ("x","y","z") and program ("px","py","pz") coordinates.
+// machine ("x","y","z") and program ("px","py","pz") coordinates, and the
+// lines of its first and last block.
 std::string ReportWriter::contour_json(const Channel& ch) const {
   if (!ch.contour) return "[]";
-  return array_of(ch.contour->runs(), [](std::string& o, const std::vector<ContourPoint>& run) {
-    o += "{";
+  return array_of(ch.contour->runs(), [](std::string& o, const ContourRun& run) {
+    o += fmt::format(R"({{"lines":[{},{}])", run.first_line, run.last_line);
     for (int a = 0; a < 6; ++a) {
-      o += fmt::format("{}\"{}{}\":", a > 0 ? "," : "", a < 3 ? "" : "p", "xyz"[a % 3]);
-      o += array_of(run, [a](std::string& t, const ContourPoint& p) {
+      o += fmt::format(",\"{}{}\":", a < 3 ? "" : "p", "xyz"[a % 3]);
+      o += array_of(run.points, [a](std::string& t, const ContourPoint& p) {
         append_number(t, a < 3 ? p.mcs[a] : p.pcs[a - 3], 4);
       });
     }

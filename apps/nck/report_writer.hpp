@@ -83,6 +83,7 @@ class ReportWriter {
     // (PathPoint::frame); the PlanStore index of the newest
     std::vector<kernel::AffineMap> frames;
     std::uint32_t store_frame = kernel::kNoMessage;
+    std::uint32_t frame = 0;  // index into frames of the block in execution
     std::unique_ptr<ProgrammedContour> contour;  // G41/G42 stretches as programmed
     double feed_override_pct = 100;
     std::optional<std::size_t> hold;  // the feedhold in progress (waits_ index)

@@ -65,8 +65,8 @@ export function expectations(longProgram, blocks, longCaps, out) {
       name: "contour-trc", image: "report-contour-trc.png", machine: "examples/mill", programs: ["examples/mill/contour_trc.nc"],
       minPlots: 2,
       // the tool centre 5 mm (D1) outside the 60 x 40 rectangle: X -5..65, Y -5..45; the start -20/-20;
-      // Z -2..10
-      backplots: [{ view: "XY", min: [-20, -20, -2], max: [65, 45, 10], tol: 0.02 }],
+      // Z from the machine zero to Z10 + the tool length 100 (machine coordinates of the spindle nose)
+      backplots: [{ view: "XY", min: [-20, -20, 0], max: [65, 45, 110], tol: 0.02 }],
       // three compensated stretches, each programmed line 5 mm from the tool centre
       contour: { runs: 3, radius: 5, tol: 0.05 },
     },

@@ -152,9 +152,11 @@ async function check(browser, c) {
     const r = await page.evaluate((want) => {
       const b = window.nckReport.backplots[0];
       const runs = b.contour, ch = b.ch;
-      const dist = (px, py) => {
+      // the tool-centre path of the same stretch (its blocks' lines): the three contours overlap
+      const dist = (px, py, lines) => {
         let best = Infinity;
         for (let i = 1; i < ch.x.length; i++) {
+          if (ch.line[i] < lines[0] || ch.line[i] > lines[1]) continue;
           const ax = ch.x[i - 1], ay = ch.y[i - 1], dx = ch.x[i] - ax, dy = ch.y[i] - ay;
           const len2 = dx * dx + dy * dy;
           const f = len2 > 0 ? Math.max(0, Math.min(1, ((px - ax) * dx + (py - ay) * dy) / len2)) : 0;
@@ -167,7 +169,7 @@ async function check(browser, c) {
       for (const run of runs)
         for (let k = 2; k < run.x.length - 1; k++) {
           const mx = (run.x[k - 1] + run.x[k]) / 2, my = (run.y[k - 1] + run.y[k]) / 2;
-          const d = dist(mx, my);
+          const d = dist(mx, my, run.lines);
           checked++;
           if (Math.abs(d - want.radius) > want.tol) bad.push(`(${mx.toFixed(3)}, ${my.toFixed(3)}): ${d.toFixed(4)}`);
         }

@@ -93,8 +93,8 @@ TEST(DiagnosticLocations, NoLocationTwiceAndNoLineZeroOnAnyPath) {
   const CliResult plc = run_nck("run " + mill + " " + mill + "/contour.nc --no-progress --plc " + p("bad.plc"));
   EXPECT_EQ(plc.exit_code, 2) << plc.output;
   expect_each_location_once(plc, "plc", names);
-  for (const std::string& args : {"run " + mill + " " + mill + "/contour.nc --trace-evry 2",
-                                  "run " + mill + " " + mill + "/contour.nc --max-time abc", "rnu",
+  for (const std::string& args : std::vector<std::string>{"run " + mill + " " + mill + "/contour.nc --trace-evry 2",
+                                  "run " + mill + " " + mill + "/contour.nc --max-time abc", std::string("rnu"),
                                   "run " + mill + " " + p("missing.nc"),
                                   "run " + mill + " " + mill + "/contour.nc --events /nonexistent_dir/e.jsonl"}) {
     const CliResult r = run_nck(args + " --no-progress");

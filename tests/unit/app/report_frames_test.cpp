@@ -70,7 +70,7 @@ TEST(ReportFrames, TrcShowsTheProgrammedContourBesideTheToolCentre) {
   const json d = report_of("report_trc", ex + " " + ex + "/contour_trc.nc");
   const json& runs = d["channels"][0]["contour"];
   ASSERT_EQ(runs.size(), 3u);  // N40..N90, N110..N200, N310..N370
-  // 1: from the start -20/-20 round the rectangle as programmed and back (no offset acts: MCS = PCS)
+  // 1: from the start -20/-20 round the rectangle as programmed and back (X and Y: MCS = PCS)
   const std::vector<std::pair<double, double>> want = {{-20, -20}, {0, 0}, {0, 40}, {60, 40}, {60, 0}, {0, 0}, {-20, -20}};
   const auto got = xy(runs[0], false);
   ASSERT_EQ(got.size(), want.size());
@@ -79,7 +79,10 @@ TEST(ReportFrames, TrcShowsTheProgrammedContourBesideTheToolCentre) {
     EXPECT_NEAR(got[k].second, want[k].second, 1e-4) << k;
   }
   EXPECT_EQ(xy(runs[0], true), got);
-  for (const json& z : runs[0]["z"]) EXPECT_NEAR(z.get<double>(), -2, 1e-4);
+  EXPECT_EQ(runs[0]["lines"], json::array({16, 21}));  // N40 .. N90
+  // Z-2 in program coordinates; the machine's Z carries the tool length of D1 (100 mm)
+  for (const json& z : runs[0]["pz"]) EXPECT_NEAR(z.get<double>(), -2, 1e-4);
+  for (const json& z : runs[0]["z"]) EXPECT_NEAR(z.get<double>(), 98, 1e-4);
   // 2: the R8 corners as arcs (chords of at most 5 deg): every point between (0,32) and (8,40) on the
   // circle about (8,32), N130 G2 X8 Y40 R8
   int on_arc = 0;
