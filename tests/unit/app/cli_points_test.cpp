@@ -45,6 +45,19 @@ TEST(CliPoints, CheckPrintsDiagnosticsOnStderrOnly) {
   EXPECT_NE(err.output.find(fmt::format("tools.lis:{}: error 910003", m.line)), std::string::npos) << err.output;
 }
 
+// A warning the kernel raises (970004: #CS OFF without a CS) is printed like
+// an error, with its location; list warnings count in the summary.
+TEST(CliPoints, EveryWarningReachesStderrAndTheSummary) {
+  const auto m = patched_example("mill", "warn_stderr", "tools.lis", "wz[9].radiuss 5");
+  std::ofstream(m.dir / "p.nc") << "N10 G17 G0 X0 Y0\nN20 #CS OFF\nN30 G0 X1\nM30\n";
+  const CliResult r = run_nck_raw("run " + m.dir.string() + " " + (m.dir / "p.nc").string() + " --no-progress 2>&1 >/dev/null");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find(fmt::format("tools.lis:{}: warning 910002", m.line)), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("p.nc:2: warning 970004: #CS/#ACS/#ECS/#MCS OFF without an active one"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("; 4 block(s), 0 error(s), 2 warning(s)"), std::string::npos) << r.output;
+}
+
 TEST(CliPoints, OutputFileErrorsGiveTheOsReason) {
   const std::string run = "run " + mill() + " " + mill() + "/contour.nc --no-progress ";
   for (const char* opt : {"--events", "--trace", "--final", "--report"}) {
