@@ -71,6 +71,12 @@ export function expectations(longProgram, blocks, longCaps, out) {
       contour: { runs: 3, radius: 5, tol: 0.05 },
     },
     {
+      name: "lathe-trc", machine: "examples/lathe", programs: ["examples/lathe/profile_trc.nc"], minPlots: 2,
+      // the nose centre (D4, radius 0.8) from the machine zero to X30 (D60) and Z-40..5, radius values
+      backplots: [{ view: "ZX", min: [0, null, -40], max: [30, null, 5], tol: 0.01 }],
+      contour: { runs: 1, radius: 0.8, tol: 0.01, axes: [0, 2] },
+    },
+    {
       name: "frames", machine: "examples/mill", programs: [path.join(out, "frames.nc")], minPlots: 1,
       // machine coordinates: G54 (X100 Y50 Z-150) and the rectangle 40 x 20 turned 90 deg about the
       // program zero: X 80..100, Y 50..90; from the machine zero to Z20 (-130)

@@ -152,12 +152,14 @@ async function check(browser, c) {
     const r = await page.evaluate((want) => {
       const b = window.nckReport.backplots[0];
       const runs = b.contour, ch = b.ch;
+      const [h, v] = want.axes || [0, 1];  // the plane's axes: X Y, or X Z on a lathe
+      const P = [ch.x, ch.y, ch.z];
       // the tool-centre path of the same stretch (its blocks' lines): the three contours overlap
       const dist = (px, py, lines) => {
         let best = Infinity;
         for (let i = 1; i < ch.x.length; i++) {
           if (ch.line[i] < lines[0] || ch.line[i] > lines[1]) continue;
-          const ax = ch.x[i - 1], ay = ch.y[i - 1], dx = ch.x[i] - ax, dy = ch.y[i] - ay;
+          const ax = P[h][i - 1], ay = P[v][i - 1], dx = P[h][i] - ax, dy = P[v][i] - ay;
           const len2 = dx * dx + dy * dy;
           const f = len2 > 0 ? Math.max(0, Math.min(1, ((px - ax) * dx + (py - ay) * dy) / len2)) : 0;
           best = Math.min(best, Math.hypot(px - ax - f * dx, py - ay - f * dy));
@@ -168,7 +170,8 @@ async function check(browser, c) {
       let checked = 0;
       for (const run of runs)
         for (let k = 2; k < run.x.length - 1; k++) {
-          const mx = (run.x[k - 1] + run.x[k]) / 2, my = (run.y[k - 1] + run.y[k]) / 2;
+          const R = [run.x, run.y, run.z];
+          const mx = (R[h][k - 1] + R[h][k]) / 2, my = (R[v][k - 1] + R[v][k]) / 2;
           const d = dist(mx, my, run.lines);
           checked++;
           if (Math.abs(d - want.radius) > want.tol) bad.push(`(${mx.toFixed(3)}, ${my.toFixed(3)}): ${d.toFixed(4)}`);
@@ -177,7 +180,7 @@ async function check(browser, c) {
     }, c.contour);
     if (r.runs !== c.contour.runs) fail(name, `${r.runs} programmed-contour runs, expected ${c.contour.runs}`);
     if (!r.drawn) fail(name, "no legend for the programmed contour");
-    if (r.checked < 10 || r.bad.length) fail(name, `programmed contour vs tool centre (${r.checked} checked): ${r.bad.slice(0, 5).join("; ")}`);
+    if (r.checked < 8 || r.bad.length) fail(name, `programmed contour vs tool centre (${r.checked} checked): ${r.bad.slice(0, 5).join("; ")}`);
     else ok(name, `${r.runs} programmed-contour runs; ${r.checked} segment middles lie ${c.contour.radius} mm from the tool centre`);
   }
   for (const [i, want] of (c.pcs || []).entries()) {
