@@ -26,10 +26,11 @@ bool moves_to_words(const nc::Block& b) {
 void ProgrammedContour::decoded(const nc::Block& b, const prep::Planner& planner, bool trc_holding) {
   const bool comp = b.modal.radius_comp != nc::RadiusComp::g40;
   if (!tracking_) {
-    // The selection starts where the planner stands: nothing is held before it.
-    if (!comp || trc_holding) return;
+    // The selection starts where the planner stands when nothing is held;
+    // while compensation still holds the last G40 line, where that ended.
+    if (!comp || (trc_holding && runs_.empty())) return;
     tracking_ = true;
-    pos_ = planner.planned_pcs();
+    if (!trc_holding) pos_ = planner.planned_pcs();
     runs_.emplace_back();
     runs_.back().first_line = b.line;
     add(pos_, planner);

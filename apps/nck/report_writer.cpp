@@ -264,6 +264,14 @@ void ReportWriter::take_frame(Channel& ch, std::uint32_t store_index, const RunN
   const kernel::AffineMap* f = names.run->frame(store_index);
   if (!f) return;
   ch.store_frame = store_index;
+  // a map seen before keeps its index (a program switching between G54 and
+  // G55 a million times still has two); beyond kMaxFrames the last one stays
+  for (std::size_t i = 0; i < ch.frames.size(); ++i)
+    if (ch.frames[i].rot == f->rot && ch.frames[i].shift == f->shift && ch.frames[i].main == f->main) {
+      ch.frame = static_cast<std::uint32_t>(i);
+      return;
+    }
+  if (ch.frames.size() >= kMaxFrames) return;
   ch.frames.push_back(*f);
   ch.frame = static_cast<std::uint32_t>(ch.frames.size() - 1);
 }

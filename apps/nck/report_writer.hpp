@@ -46,6 +46,7 @@ class ReportWriter {
   static constexpr std::size_t kMaxTableEvents = 20000;  // non-block events in the table
   static constexpr std::size_t kMaxTableBlocks = 2000;   // block events in the table
   static constexpr std::size_t kMaxBackplotPoints = 60000;  // per channel, after thinning
+  static constexpr std::size_t kMaxFrames = 1000;  // different program -> machine maps per channel
 
  private:
   struct Accum {
