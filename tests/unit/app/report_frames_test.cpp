@@ -147,6 +147,20 @@ TEST(ReportFrames, OverrideMarksAndFeedholdSpansFromThePlcScenario) {
       EXPECT_EQ(m["text"], "spindle override 50 %");
     }
   EXPECT_EQ(s1, 1);
+  // a spindle feedhold is shaded on that spindle's plot (no channel)
+  const auto dir2 = temp_dir("report_spdl_hold_src");
+  std::ofstream(dir2 / "p.plc") << "0.0 override S1 50\n1.0 spindle_feedhold S1 on\n1.5 spindle_feedhold S1 off\n";
+  const json h = report_of("report_spdl_hold", ex + " " + ex + "/spindle.nc --plc " + (dir2 / "p.plc").string());
+  int spindle_holds = 0;
+  for (const json& w : h["waits"])
+    if (w["reason"] == "feedhold") {
+      ++spindle_holds;
+      EXPECT_EQ(w["ch"], 0);
+      EXPECT_EQ(w["spindle"], "S1");
+      EXPECT_NEAR(w["t0"].get<double>(), 1.0, 1e-6);
+      EXPECT_NEAR(w["t1"].get<double>(), 1.5, 1e-6);
+    }
+  EXPECT_EQ(spindle_holds, 1);
 }
 
 }  // namespace
