@@ -48,6 +48,9 @@ struct Command {
   bool has_n = false;
   std::int64_t n = 0;
   bool emit_block_event = true;  // false for follow-up commands of one block
+  // PlanStore::frames index of the block's program -> machine map, handed on
+  // in the block event (kNoMessage: not recorded)
+  std::uint32_t frame_index = kNoMessage;
   // motion: the segment is in machine coordinates, or in program
   // coordinates mapped by `map` when a rotation acts (mapped == true)
   motion::Segment segment{};

@@ -46,7 +46,8 @@ struct Event {
   // warning / error
   ErrorId id{};
   std::uint32_t message_index = 0;  // Kernel::message(), text prepared outside the cycle
-                                    // (kNoMessage: the ID's table text)
+                                    // (kNoMessage: the ID's table text); block: the
+                                    // PlanStore::frames index of its map (kNoMessage: none)
   // plc_out / plc_ack / wait
   FunctionKind fn = FunctionKind::none;
   std::int32_t fn_number = 0;       // M3, T5 ...
