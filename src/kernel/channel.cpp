@@ -81,7 +81,11 @@ void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelConte
   }
   active_ = true;
   phase_ = Phase::pre_wait;
-  if (c.emit_block_event) sink.emit(event(EventKind::block, t_s));
+  if (c.emit_block_event) {
+    Event e = event(EventKind::block, t_s);
+    e.message_index = c.frame_index;  // the block's program -> machine map (report)
+    sink.emit(e);
+  }
   for (const Command::Warning& w : c.warnings) {
     Event e = event(EventKind::warning, t_s);
     e.id = w.id;
@@ -91,6 +95,13 @@ void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelConte
   for (std::uint32_t payload : c.offset_events) {
     Event e = event(EventKind::offset, t_s);
     e.message_index = payload;
+    sink.emit(e);
+  }
+  if (c.trc_event) {
+    Event e = event(EventKind::trc, t_s);
+    e.trc_state = c.trc_state;
+    e.trc_d = c.trc_d;
+    e.trc_radius_mm = c.trc_radius_mm;
     sink.emit(e);
   }
   if (c.kind == CommandKind::error) {

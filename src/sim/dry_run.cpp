@@ -16,7 +16,7 @@ std::expected<DryRun, Diagnostic> DryRun::create(const config::Machine& m,
   run.in_ = std::make_unique<kernel::TickInput>();
   for (std::size_t ch = 0; ch < run.machine_->channels.size(); ++ch)
     run.preps_.emplace_back(*run.machine_, ch, ch < programs.size() ? programs[ch] : std::filesystem::path(),
-                            *run.store_, prep::PrepOptions{options.clamp_index});
+                            *run.store_, prep::PrepOptions{options.clamp_index, options.record_frames});
   return run;
 }
 
@@ -80,6 +80,10 @@ const prep::OffsetPayload& DryRun::offset(std::uint32_t index) const {
 const prep::LinkPayload& DryRun::link(std::uint32_t index) const {
   static const prep::LinkPayload none;
   return index < store_->links.size() ? store_->links[index] : none;
+}
+
+const kernel::AffineMap* DryRun::frame(std::uint32_t index) const {
+  return index < store_->frames.size() ? &store_->frames[index] : nullptr;
 }
 
 }  // namespace nck::sim

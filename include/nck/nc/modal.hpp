@@ -36,6 +36,7 @@ struct ModalState {
   bool circle_center_absolute = false;  // G161 (true) / G162 (false, initial)
   bool manual_mode = false;             // G201 (true) / G202 (false, initial)
   bool exact_stop = false;              // G360 (true) / G359 (false, initial)
+  bool trc_arc_corners = false;         // G26 (true) / G25 (false, initial): TRC outside corners
 };
 
 }  // namespace nck::nc
