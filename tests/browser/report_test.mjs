@@ -172,7 +172,9 @@ async function check(browser, c) {
         for (let k = 2; k < run.x.length - 1; k++) {
           const R = [run.x, run.y, run.z];
           const mx = (R[h][k - 1] + R[h][k]) / 2, my = (R[v][k - 1] + R[v][k]) / 2;
-          const d = dist(mx, my, run.lines);
+          // a turning tool's trace is its theoretical tip, `tip` away from the nose centre
+          const [sh, sv] = want.tip || [0, 0];
+          const d = dist(mx + sh, my + sv, run.lines);
           checked++;
           if (Math.abs(d - want.radius) > want.tol) bad.push(`(${mx.toFixed(3)}, ${my.toFixed(3)}): ${d.toFixed(4)}`);
         }
