@@ -72,8 +72,9 @@ export function expectations(longProgram, blocks, longCaps, out) {
     },
     {
       name: "lathe-trc", machine: "examples/lathe", programs: ["examples/lathe/profile_trc.nc"], minPlots: 2,
-      // the nose centre (D4, radius 0.8) from the machine zero to X30 (D60) and Z-40..5, radius values
-      backplots: [{ view: "ZX", min: [0, null, -40], max: [30, null, 5], tol: 0.01 }],
+      // the tip of D4 (radius 0.8, cutting-edge position 2) from the machine zero to X30 (D60), radius
+      // values; at the end of N90 Z-40 the nose centre stands over Z-40, its tip 0.8 mm further
+      backplots: [{ view: "ZX", min: [0, null, -40.8], max: [30, null, 5], tol: 0.01 }],
       // tool 4 has cutting-edge position 2: its tip is 0.8 mm below the nose centre in X and Z
       contour: { runs: 1, radius: 0.8, tol: 0.01, axes: [0, 2], tip: [-0.8, -0.8] },
     },

@@ -80,7 +80,7 @@ TEST(ReportFrames, TrcShowsTheProgrammedContourBesideTheToolCentre) {
     EXPECT_NEAR(got[k].second, want[k].second, 1e-4) << k;
   }
   EXPECT_EQ(xy(runs[0], true), got);
-  EXPECT_EQ(runs[0]["lines"], json::array({16, 21}));  // N40 .. N90
+  EXPECT_EQ(runs[0]["lines"], json::array({17, 22}));  // N40 .. N90
   // Z-2 in program coordinates; the machine's Z carries the tool length of D1 (100 mm)
   for (const json& z : runs[0]["pz"]) EXPECT_NEAR(z.get<double>(), -2, 1e-4);
   for (const json& z : runs[0]["z"]) EXPECT_NEAR(z.get<double>(), 98, 1e-4);
