@@ -4,12 +4,8 @@
 // report as well (8).
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <csignal>
 #include <fmt/format.h>
-#include <sys/wait.h>
-#include <thread>
-#include <unistd.h>
 
 #include "cli_helpers.hpp"
 
@@ -73,16 +69,7 @@ TEST(CliPoints, SigintCompletesTheReportToo) {
   const auto dir = temp_dir("sigint_report");
   const std::string cmd = std::string(NCK_BINARY) + " run " + mill() + " " + mill() + "/contour.nc --realtime --events " +
                           (dir / "e.jsonl").string() + " --report " + (dir / "r.html").string();
-  const pid_t pid = fork();
-  ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    execl("/bin/sh", "sh", "-c", ("exec " + cmd + " 2>/dev/null").c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  std::this_thread::sleep_for(std::chrono::milliseconds(700));
-  kill(pid, SIGINT);
-  int status = 0;
-  waitpid(pid, &status, 0);
+  const int status = run_and_signal(cmd, SIGINT);
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 130);
   EXPECT_EQ(read_jsonl(dir / "e.jsonl").back()["reason"], "interrupted");
