@@ -113,6 +113,7 @@ void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelConte
   if (!take_dist(c, t_s, sink, ctx)) return;
   take_links(c, ctx);
   manual_mask_ = (manual_mask_ | c.manual_on) & ~c.manual_off;
+  if (manual_mask_ != 0) handwheel_used_ = true;  // until the first G201 every offset is zero
   if (c.get_manual_offsets) manual_fetch_pending_ = true;
   manual_share_start_ = manual_share_;
   if (c.feed_motion) take_late_waits(SyncPoint::late_motion);
@@ -335,7 +336,6 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
 void Channel::follow_handwheel(double t_s, double dt_s, const ChannelInput& in, TickOutput& sink,
                                ChannelContext& ctx) noexcept {
   // Until the first G201 every handwheel offset is zero: nothing to follow.
-  if (manual_mask_ != 0) handwheel_used_ = true;
   const double step = kHandwheelSpeed_mm_s * dt_s;
   for (std::size_t j = 0; handwheel_used_ && j < n_axes_; ++j) {
     if ((manual_mask_ >> j) & 1u) manual_target_mm_[j] += in.handwheel_mm[j];

@@ -4,8 +4,6 @@
 // next % header return, nesting is bounded.
 #include <fmt/format.h>
 
-#include <fstream>
-
 #include "decoder_impl.hpp"
 
 namespace nck::nc {
@@ -53,10 +51,7 @@ void Decoder::Impl::keep_text_for_local_calls(Frame& f) {
   std::error_code ec;
   const std::uintmax_t size = std::filesystem::file_size(f.path, ec);
   if (ec || size > kMaxInMemoryBytes) return;
-  std::ifstream in(f.path, std::ios::binary);
-  std::string text(size, '\0');
-  if (in.read(text.data(), static_cast<std::streamsize>(size)) && in.gcount() == static_cast<std::streamsize>(size))
-    f.mem = std::make_shared<const std::string>(std::move(text));
+  f.mem = read_text(f.path, size);  // stays streamed when unreadable
 }
 
 bool Decoder::Impl::open_main(const std::filesystem::path& p) {
