@@ -2,6 +2,9 @@
 // isometric one; G0 dashed red, feed moves solid and coloured from blue to
 // orange along the program; wheel zooms, drag pans, double-click fits,
 // hovering shows the block (NC line) that moved to the nearest point.
+// Machine (MCS) or program coordinates (PCS: each point through the inverse
+// of its block's program -> machine map); under G41/G42 the programmed
+// contour is drawn thin beside the tool-centre path.
 (function () {
   "use strict";
   const VIEWS = {
@@ -18,6 +21,20 @@
     const p = Math.pow(10, Math.floor(Math.log10(raw)));
     const m = raw / p;
     return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * p;
+  }
+
+  // The inverse of MCS = r * PCS + s (r row by row, 3 x 3).
+  function inverse(f) {
+    const r = f.r;
+    const a = r[0], b = r[1], c = r[2], d = r[3], e = r[4], g = r[5], h = r[6], k = r[7], l = r[8];
+    const A = e * l - g * k, B = -(d * l - g * h), C = d * k - e * h;
+    const det = a * A + b * B + c * C || 1;
+    const m = [A, -(b * l - c * k), b * g - c * e, B, a * l - c * h, -(a * g - c * d), C, -(a * k - b * h), a * e - b * d]
+      .map((v) => v / det);
+    return (p) => {
+      const q = [p[0] - f.s[0], p[1] - f.s[1], p[2] - f.s[2]];
+      return [m[0] * q[0] + m[1] * q[1] + m[2] * q[2], m[3] * q[0] + m[4] * q[1] + m[5] * q[2], m[6] * q[0] + m[7] * q[1] + m[8] * q[2]];
+    };
   }
 
   function fmtNum(v) {
@@ -52,8 +69,16 @@
       if (!this.select.value && this.select.options.length) this.select.value = this.select.options[0].value;
       this.select.onchange = () => { this.fit(); this.draw(); };
       bar.appendChild(this.select);
+      this.coords = document.createElement("select");
+      this.coords.setAttribute("aria-label", "coordinates of channel " + ch.n);
+      this.coords.innerHTML = '<option value="mcs">machine coordinates (MCS)</option><option value="pcs">program coordinates (PCS)</option>';
+      this.coords.onchange = () => { this.fit(); this.draw(); };
+      bar.appendChild(this.coords);
+      this.toPcs = (ch.frames || []).map(inverse);
+      this.contour = ch.contour || [];
       const legend = document.createElement("span");
-      legend.innerHTML = '<span class="legend-key"></span>feed <span class="legend-key rapid"></span>G0 rapid &nbsp; machine coordinates (MCS), mm';
+      legend.innerHTML = '<span class="legend-key"></span>feed <span class="legend-key rapid"></span>G0 rapid' +
+        (this.contour.length ? ' <span class="legend-key programmed"></span>programmed contour (G41/G42)' : "") + " &nbsp; mm";
       bar.appendChild(legend);
       el.appendChild(bar);
       this.canvas = document.createElement("canvas");
@@ -82,23 +107,45 @@
       this.ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     }
 
-    // The view's horizontal and vertical coordinate of point i.
-    project(i) {
-      const ch = this.ch, v = VIEWS[this.select.value] || VIEWS.XY;
-      const p = [ch.x[i], ch.y[i], ch.z[i]];
+    pcs() { return this.coords.value === "pcs"; }
+    frameOf(i) { return this.ch.frame ? this.ch.frame[i] : 0; }
+    // Point i (machine coordinates) in the chosen coordinates; `frame`: in
+    // that map's program coordinates (the start of a block with a new map).
+    point(i, frame) {
+      const ch = this.ch, p = [ch.x[i], ch.y[i], ch.z[i]];
+      if (!this.pcs()) return p;
+      const f = this.toPcs[frame == null ? this.frameOf(i) : frame];
+      return f ? f(p) : p;
+    }
+    // The view's horizontal and vertical coordinate of a point.
+    projectPoint(p) {
+      const v = VIEWS[this.select.value] || VIEWS.XY;
       if (v.iso) return [(p[0] - p[1]) * C30, p[2] + (p[0] + p[1]) * S30];
       return [p[v.h], p[v.v]];
     }
+    project(i) { return this.projectPoint(this.point(i)); }
+    // Where the move to point i starts in the view: point i - 1 in point i's
+    // program coordinates (differs from uv[i - 1] only where the map changed).
+    segmentStart(i) {
+      const f = this.frameOf(i);
+      return this.pcs() && f !== this.frameOf(i - 1) ? this.projectPoint(this.point(i - 1, f)) : null;
+    }
+    contourPoints(run) {
+      const pcs = this.pcs(), out = [];
+      for (let k = 0; k < run.x.length; k++) out.push(pcs ? [run.px[k], run.py[k], run.pz[k]] : [run.x[k], run.y[k], run.z[k]]);
+      return out;
+    }
 
-    // The extents of the drawn path, per machine axis (what the test compares).
+    // The extents of the drawn path per axis, in the chosen coordinates (what the test compares).
     extents() {
-      const ch = this.ch, out = { min: [Infinity, Infinity, Infinity], max: [-Infinity, -Infinity, -Infinity] };
-      const arrays = [ch.x, ch.y, ch.z];
-      for (let a = 0; a < 3; a++)
-        for (let i = 0; i < this.n; i++) {
-          out.min[a] = Math.min(out.min[a], arrays[a][i]);
-          out.max[a] = Math.max(out.max[a], arrays[a][i]);
+      const out = { min: [Infinity, Infinity, Infinity], max: [-Infinity, -Infinity, -Infinity] };
+      for (let i = 0; i < this.n; i++) {
+        const p = this.point(i);
+        for (let a = 0; a < 3; a++) {
+          out.min[a] = Math.min(out.min[a], p[a]);
+          out.max[a] = Math.max(out.max[a], p[a]);
         }
+      }
       return out;
     }
 
@@ -109,6 +156,11 @@
         const q = this.project(i);
         this.uv[2 * i] = q[0]; this.uv[2 * i + 1] = q[1];
         for (let k = 0; k < 2; k++) { lo[k] = Math.min(lo[k], q[k]); hi[k] = Math.max(hi[k], q[k]); }
+      }
+      this.jumps = new Map();  // point -> start of its move, where the map changed (PCS)
+      for (let i = 1; i < this.n; i++) {
+        const s = this.segmentStart(i);
+        if (s) this.jumps.set(i, s);
       }
       if (!this.n) { lo = [0, 0]; hi = [1, 1]; }
       const span = [Math.max(hi[0] - lo[0], 1e-3), Math.max(hi[1] - lo[1], 1e-3)];
@@ -168,6 +220,8 @@
         ctx.moveTo(x, y);
         let j = i;
         for (; j < end && (ch.rapid[j] === 1) === rapid; j++) {
+          const s = this.jumps.get(j);
+          if (s) ctx.moveTo(...this.toScreen(s[0], s[1]));
           [x, y] = this.toScreen(this.uv[2 * j], this.uv[2 * j + 1]);
           ctx.lineTo(x, y);
         }
@@ -177,6 +231,16 @@
         i = j;
       }
       ctx.setLineDash([]);
+      // the programmed contour under G41/G42: thin, on top
+      ctx.strokeStyle = "rgba(17,17,17,0.85)"; ctx.lineWidth = 0.9;
+      for (const run of this.contour) {
+        ctx.beginPath();
+        this.contourPoints(run).forEach((p, k) => {
+          const [x, y] = this.toScreen(...this.projectPoint(p));
+          if (k === 0) ctx.moveTo(x, y); else ctx.lineTo(x, y);
+        });
+        ctx.stroke();
+      }
       // moves along the viewing direction (drilling, plunging in XY) as rings
       ctx.strokeStyle = "#344054"; ctx.lineWidth = 1.2;
       for (let k = 1; k < n; k++) {
@@ -207,9 +271,10 @@
       const ch = this.ch, d = this.data;
       const text = d.lines[ch.file[i] + ":" + ch.line[i]] || "";
       const file = d.files[ch.file[i]] || "";
-      const pos = ch.axes.map((a, k) => (ch.has[k] ? a + " " + fmtNum([ch.x, ch.y, ch.z][k][i]) : "")).filter(Boolean).join("  ");
+      const p = this.point(i);
+      const pos = ch.axes.map((a, k) => (ch.has[k] ? a + " " + fmtNum(p[k]) : "")).filter(Boolean).join("  ");
       return (ch.line[i] ? file.split("/").pop() + ":" + ch.line[i] + "  " + text.trim() : "before the first block") +
-        "  —  " + (ch.rapid[i] ? "G0 to " : "to ") + pos + " mm";
+        "  —  " + (ch.rapid[i] ? "G0 to " : "to ") + pos + " mm " + (this.pcs() ? "(PCS)" : "(MCS)");
     }
 
     bindMouse() {

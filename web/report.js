@@ -31,6 +31,9 @@
 
   // --- what a wait means, in words ---------------------------------------
   function waitText(w) {
+    if (w.reason === "feedhold")  // from the PLC (HLI), not the program
+      return (w.ch ? nLabel(w.file, w.line) : w.spindle) + " held " + (w.t1 - w.t0).toFixed(3) + " s by the PLC's " +
+        (w.ch ? "feedhold" : "spindle feedhold of " + w.spindle) + " (HLI)";
     const what = (w.spindle ? w.spindle + " " : "") + (REASONS[w.reason] || w.reason);
     return nLabel(w.file, w.line) + " waits " + (w.t1 - w.t0).toFixed(3) + " s for " + what +
       (w.fn ? " (" + w.fn + ")" : "") + (w.sync ? ", " + w.sync : "");
@@ -103,11 +106,13 @@
           for (const m of marks) {
             const x = u.valToPos(m.t, "x", true);
             if (x < u.bbox.left || x > u.bbox.left + u.bbox.width) continue;
-            ctx.strokeStyle = m.kind === "gear" ? "#9467bd" : m.kind === "speed_reached" ? "#2ca02c" : "#667085";
+            ctx.strokeStyle = m.kind === "gear" ? "#9467bd" : m.kind === "speed_reached" ? "#2ca02c" : m.kind === "override" ? "#e8590c" : "#667085";
             ctx.setLineDash(m.kind === "s" ? [3, 3] : []);
             ctx.beginPath(); ctx.moveTo(x, u.bbox.top); ctx.lineTo(x, u.bbox.top + u.bbox.height); ctx.stroke();
             ctx.fillStyle = ctx.strokeStyle;
-            ctx.fillText(m.kind === "gear" ? m.text.split(" ")[0] : m.kind === "speed_reached" ? "✓" : "S", x + 3, u.bbox.top + 12 * devicePixelRatio);
+            const label = m.kind === "gear" ? m.text.split(" ")[0] : m.kind === "speed_reached" ? "✓" :
+              m.kind === "override" ? m.text.replace(/^.*override /, "") : "S";
+            ctx.fillText(label, x + 3, u.bbox.top + (m.kind === "override" ? 26 : 12) * devicePixelRatio);
           }
           ctx.restore();
         },
@@ -140,7 +145,8 @@
       box.innerHTML = "<h3>" + esc(title) + "</h3>";
       $("timeplots").appendChild(box);
       const unit = p.meta.unit;
-      const marks = p.meta.spindle != null ? D.marks.filter((m) => m.spindle === p.meta.spindle) : [];
+      const marks = p.meta.spindle != null ? D.marks.filter((m) => m.spindle === p.meta.spindle)
+        : p.meta.kind === "velocity" ? D.marks.filter((m) => m.ch === p.meta.ch) : [];
       const waits = waitsFor(p.meta);
       const opts = {
         width, height: 230,
@@ -167,7 +173,7 @@
         const w = waits.find((w) => t >= w.t0 && t <= w.t1);
         const px = u.bbox.width / devicePixelRatio / Math.max(1e-9, u.scales.x.max - u.scales.x.min);
         const mk = marks.find((m) => Math.abs(m.t - t) * px < 4);
-        const text = [w ? waitText(w) : "", mk ? mk.t.toFixed(3) + " s: " + (mk.spindle != null ? D.spindles[mk.spindle] + " " : "") + mk.text : ""].filter(Boolean).join(" · ");
+        const text = [w ? waitText(w) : "", mk ? mk.t.toFixed(3) + " s: " + (D.spindles[mk.spindle] ? D.spindles[mk.spindle] + " " : "") + mk.text : ""].filter(Boolean).join(" · ");
         if (text) showTip(text, e.clientX, e.clientY); else hideTip();
       });
       u.over.addEventListener("mouseleave", hideTip);

@@ -70,6 +70,7 @@ const char* kind_name(kernel::EventKind k) {
     case K::error: return "error";
     case K::end: return "end";
     case K::dist_ctrl: return "dist_ctrl";
+    case K::trc: return "trc";
   }
   return "unknown";
 }
@@ -213,6 +214,15 @@ std::string EventWriter::line(const kernel::Event& e, const RunNames& names) {
       j["state"] = distctrl::state_name(static_cast<distctrl::State>(e.dist_state));
       j["line"] = e.line;
       break;
+    case K::trc: {
+      constexpr const char* kStates[] = {"G40", "G41", "G42"};
+      j["state"] = kStates[e.trc_state < 3 ? e.trc_state : 0];
+      j["d"] = e.trc_d;
+      j["radius_mm"] = e.trc_radius_mm;
+      j["line"] = e.line;
+      j["file"] = names.file(ch, e.file_id);
+      break;
+    }
     case K::offset: {
       const prep::OffsetPayload& p = names.run->offset(e.message_index);
       j["kind"] = p.kind;

@@ -92,10 +92,58 @@ std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const 
     s += ",\"line\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.line); });
     s += ",\"file\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.file); });
     s += ",\"rapid\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += p.rapid ? '1' : '0'; });
+    s += ",\"frames\":" + frames_json(ch);
+    if (ch.frames.size() > 1)  // which map each point is in; all the first one otherwise
+      s += ",\"frame\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.frame); });
+    s += ",\"contour\":" + contour_json(ch);
     s += "}";
     for (const PathPoint& p : pts) lines_used.emplace_back(p.file, p.line);
   }
   return s + "]";
+}
+
+// The channel's program -> machine maps: MCS = r * PCS + s on X, Y, Z
+// (r row by row); none recorded: the identity.
+std::string ReportWriter::frames_json(const Channel& ch) const {
+  if (ch.frames.empty()) return R"([{"r":[1,0,0,0,1,0,0,0,1],"s":[0,0,0]}])";
+  return array_of(ch.frames, [&](std::string& o, const kernel::AffineMap& f) {
+    std::array<int, 3> row{};  // the map's main-axis slot of the report's X, Y, Z
+    for (int a = 0; a < 3; ++a) {
+      row[a] = -1;
+      for (int k = 0; k < 3; ++k)
+        if (ch.axis[a] >= 0 && f.main[k] == ch.axis[a]) row[a] = k;
+    }
+    o += "{\"r\":[";
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        if (a + b > 0) o += ',';
+        const bool both = row[a] >= 0 && row[b] >= 0;
+        append_number(o, both ? f.rot[row[a]][row[b]] : a == b ? 1.0 : 0.0, 9);
+      }
+    o += "],\"s\":[";
+    for (int a = 0; a < 3; ++a) {
+      if (a > 0) o += ',';
+      append_number(o, ch.axis[a] >= 0 ? f.shift[static_cast<std::size_t>(ch.axis[a])] : 0.0, 4);
+    }
+    o += "]}";
+  });
+}
+
+// The programmed contour of the G41/G42 stretches: one polyline each, in
+// machine ("x","y","z") and program ("px","py","pz") coordinates, and the
+// lines of its first and last block.
+std::string ReportWriter::contour_json(const Channel& ch) const {
+  if (!ch.contour) return "[]";
+  return array_of(ch.contour->runs(), [](std::string& o, const ContourRun& run) {
+    o += fmt::format(R"({{"lines":[{},{}])", run.first_line, run.last_line);
+    for (int a = 0; a < 6; ++a) {
+      o += fmt::format(",\"{}{}\":", a < 3 ? "" : "p", "xyz"[a % 3]);
+      o += array_of(run.points, [a](std::string& t, const ContourPoint& p) {
+        append_number(t, a < 3 ? p.mcs[a] : p.pcs[a - 3], 4);
+      });
+    }
+    o += "}";
+  });
 }
 
 std::string ReportWriter::summary_json(std::vector<LineRef>& lines_used) const {
@@ -140,12 +188,13 @@ std::string ReportWriter::data_json(double end_s, int exit_code) const {
   s += ",\"channels\":" + channels_json(lines_used);
   s += ",\"waits\":" + array_of(waits_, [&](std::string& o, const Wait& w) {
     o += fmt::format(R"({{"ch":{},"t0":{},"t1":{},"reason":{},"fn":{},"spindle":{},"sync":{},"file":{},"line":{}}})",
-                     w.ch + 1, w.t0, w.t1 < 0 ? end_s : w.t1, quoted(w.reason), quoted(w.fn), quoted(w.spindle),
+                     w.ch, w.t0, w.t1 < 0 ? end_s : w.t1, quoted(w.reason), quoted(w.fn), quoted(w.spindle),
                      quoted(w.sync), w.file, w.line);
     lines_used.emplace_back(w.file, w.line);
   });
   s += ",\"marks\":" + array_of(marks_, [](std::string& o, const Mark& m) {
-    o += fmt::format(R"({{"t":{},"spindle":{},"kind":{},"text":{}}})", m.t, m.spindle, quoted(m.kind), quoted(m.text));
+    o += fmt::format(R"({{"t":{},"spindle":{},"ch":{},"kind":{},"text":{}}})", m.t, m.ch ? -1 : static_cast<int>(m.spindle),
+                     m.ch, quoted(m.kind), quoted(m.text));
   });
   s += ",\"diagnostics\":" + array_of(diagnostics_, [](std::string& o, const std::string& l) { o += l; });
   s += ",\"events\":" + array_of(events_, [](std::string& o, const std::string& l) { o += l; });

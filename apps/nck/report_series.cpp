@@ -151,10 +151,11 @@ std::vector<PathPoint> thin(const std::vector<PathPoint>& in, double tol, Breaks
 
 }  // namespace
 
-void PathRecorder::add(const std::array<double, 3>& pos, std::uint32_t line, std::uint16_t file, bool rapid) {
+void PathRecorder::add(const std::array<double, 3>& pos, std::uint32_t line, std::uint16_t file, bool rapid,
+                       std::uint32_t frame) {
   if (points_.empty()) {
     min_ = max_ = tip_ = pos;
-    points_.push_back({to_float(pos), line, file, rapid});
+    points_.push_back({to_float(pos), line, file, rapid, frame});
     anchor_ = pos;
     has_dir_ = false;
     return;
@@ -165,7 +166,7 @@ void PathRecorder::add(const std::array<double, 3>& pos, std::uint32_t line, std
   }
   PathPoint& tip = points_.back();
   if (pos == tip_) return;  // standing still
-  const bool same_block = tip.line == line && tip.file == file && tip.rapid == rapid;
+  const bool same_block = tip.line == line && tip.file == file && tip.rapid == rapid && tip.frame == frame;
   if (has_dir_ && same_block) {
     // distance of pos from the run's line (anchor, direction)
     double ap[3], cross2 = 0;
@@ -174,7 +175,7 @@ void PathRecorder::add(const std::array<double, 3>& pos, std::uint32_t line, std
                          ap[0] * dir_[1] - ap[1] * dir_[0]};
     for (double v : c) cross2 += v * v;
     if (cross2 <= kRecordTolMm * kRecordTolMm) {
-      tip = {to_float(pos), line, file, rapid};
+      tip = {to_float(pos), line, file, rapid, frame};
       tip_ = pos;
       return;
     }
@@ -189,12 +190,14 @@ void PathRecorder::add(const std::array<double, 3>& pos, std::uint32_t line, std
   len = std::sqrt(len);
   for (double& d : dir_) d /= len;
   has_dir_ = true;
-  points_.push_back({to_float(pos), line, file, rapid});
+  points_.push_back({to_float(pos), line, file, rapid, frame});
   tip_ = pos;
 }
 
 std::vector<PathPoint> PathRecorder::simplified(double tol_mm) const {
-  return thin(points_, tol_mm, [](const PathPoint& a, const PathPoint& b) { return a.rapid != b.rapid; });
+  // a new map starts a new run: the page draws each point in its own block's program coordinates
+  return thin(points_, tol_mm,
+              [](const PathPoint& a, const PathPoint& b) { return a.rapid != b.rapid || a.frame != b.frame; });
 }
 
 }  // namespace nck::app

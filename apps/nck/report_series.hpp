@@ -47,13 +47,15 @@ struct PathPoint {
   std::uint32_t line = 0;  // the block that moved to this point
   std::uint16_t file = 0;  // index into the report's file list
   bool rapid = false;      // G0: drawn dashed
+  std::uint32_t frame = 0;  // the report's index of the block's program -> machine map
 };
 
 class PathRecorder {
  public:
   // A new set point: kept as a vertex where the path bends by more than
-  // kRecordTolMm, and at every change of block or of G0 / feed.
-  void add(const std::array<double, 3>& pos, std::uint32_t line, std::uint16_t file, bool rapid);
+  // kRecordTolMm, and at every change of block, of G0 / feed or of the map.
+  void add(const std::array<double, 3>& pos, std::uint32_t line, std::uint16_t file, bool rapid,
+           std::uint32_t frame = 0);
   // The vertices, thinned again with the tolerance `tol_mm` (for drawing).
   std::vector<PathPoint> simplified(double tol_mm) const;
   // Extents of every set point seen (not only of the vertices).

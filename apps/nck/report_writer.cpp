@@ -8,6 +8,7 @@
 
 #include "machine_names.hpp"
 #include "nck/core/utf8.hpp"
+#include "nck/sim/dry_run.hpp"
 #include "nck/spindle/spindle_status.hpp"
 #include "output_writers.hpp"
 
@@ -66,9 +67,10 @@ void scan_g_words(const std::string& text, int& motion, int& plane) {
 
 }  // namespace
 
-void ReportWriter::start(const config::Machine& m, const RunOptions& opt, const kernel::Kernel& k) {
+void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::DryRun& run) {
   enabled_ = !opt.report.empty();
   if (!enabled_) return;
+  const kernel::Kernel& k = run.kernel();
   const double cycle_s = k.cycle_time_s();
   cycle_s_ = cycle_s;
   machine_ = opt.machine;
@@ -110,11 +112,17 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, const 
         if (ch.axis[a] >= 0) p[a] = st.axis_mcs[static_cast<std::size_t>(ch.axis[a])];
       ch.path.add(p, 0, 0, false);
     }
+    if (c < run.channel_count()) {
+      ch.contour = std::make_unique<ProgrammedContour>(ch.axis);
+      run.observe(c, ch.contour.get());
+    }
     channels_.push_back(std::move(ch));
   }
   const std::vector<SpindleName> spindles = machine_spindles(m);
   for (std::size_t s = 0; s < spindles.size(); ++s) {
     spindles_.push_back(spindles[s].name);
+    spindle_override_pct_.push_back(100);
+    spindle_hold_.emplace_back();
     const std::string panel = quoted(fmt::format("spindle {}: speed", spindles[s].name));
     series_meta_.push_back(fmt::format(R"({{"name":{},"unit":"rpm","panel":{},"kind":"set_rpm","spindle":{}}})",
                                        quoted(spindles[s].name + " set"), panel, s));
@@ -172,6 +180,7 @@ void ReportWriter::take(const kernel::Event& e, const RunNames& names) {
     case K::block: {
       ch.file = file_index(names.file(c, e.file_id));
       ch.line = e.line;
+      if (e.message_index != kernel::kNoMessage) take_frame(ch, e.message_index, names);
       scan_g_words(line_text(ch.file, ch.line), ch.motion, ch.plane);
       ch.block = &blocks_[{c, ch.file, ch.line}];
       ++ch.block->count;
@@ -188,7 +197,7 @@ void ReportWriter::take(const kernel::Event& e, const RunNames& names) {
       break;
     }
     case K::wait: {
-      Wait w{c, e.t_s, -1, wait_reason_name(static_cast<kernel::WaitReason>(e.wait_reason)), function_text(e),
+      Wait w{c + 1, e.t_s, -1, wait_reason_name(static_cast<kernel::WaitReason>(e.wait_reason)), function_text(e),
              spindle_name(e.spindle), "", e.line ? e.line : ch.line, ch.file};
       if (auto it = ch.last_sync.find(w.fn); it != ch.last_sync.end() && !w.fn.empty()) w.sync = sync_name(it->second);
       ch.open_wait = waits_.size();
@@ -214,11 +223,12 @@ void ReportWriter::sample(std::uint64_t cycle, const kernel::TickOutput& out, co
     using K = kernel::EventKind;
     const auto s = static_cast<std::size_t>(e.spindle);
     if (e.spindle < 0 || s >= spindles_.size()) continue;
-    if (e.kind == K::gear) marks_.push_back({e.t_s, s, "gear", fmt::format("{} gear stage {}", function_text(e), e.gear)});
-    if (e.kind == K::speed_reached) marks_.push_back({e.t_s, s, "speed_reached", fmt::format("speed reached {:g} rpm", e.value)});
+    if (e.kind == K::gear) marks_.push_back({e.t_s, s, 0, "gear", fmt::format("{} gear stage {}", function_text(e), e.gear)});
+    if (e.kind == K::speed_reached) marks_.push_back({e.t_s, s, 0, "speed_reached", fmt::format("speed reached {:g} rpm", e.value)});
     if (e.kind == K::plc_out && e.fn == kernel::FunctionKind::s)
-      marks_.push_back({e.t_s, s, "s", fmt::format("S {:g} rpm programmed", e.value)});
+      marks_.push_back({e.t_s, s, 0, "s", fmt::format("S {:g} rpm programmed", e.value)});
   }
+  watch_plc(out.t_s, names);
   std::size_t k = 0;
   for (std::size_t c = 0; c < channels_.size(); ++c) {
     Channel& ch = channels_[c];
@@ -231,7 +241,7 @@ void ReportWriter::sample(std::uint64_t cycle, const kernel::TickOutput& out, co
     std::array<double, 3> p{};
     for (int a = 0; a < 3; ++a)
       if (ch.axis[a] >= 0) p[a] = o.axis_mcs[static_cast<std::size_t>(ch.axis[a])];
-    ch.path.add(p, ch.line, ch.file, ch.motion == 0);
+    ch.path.add(p, ch.line, ch.file, ch.motion == 0, ch.frame);
     row_[k++] = o.path_velocity_mm_s * 60.0;
     for (std::size_t j = 0; j < ch.axis_count; ++j) row_[k++] = o.axis_mcs[j];
   }
@@ -245,6 +255,56 @@ void ReportWriter::sample(std::uint64_t cycle, const kernel::TickOutput& out, co
     row_[k++] = out.channels[c].dist_error_mm;
   }
   series_.add(cycle, row_);
+}
+
+// A block's map (the PlanStore index in its block event): a new entry in the
+// channel's list when it differs from the one before.
+void ReportWriter::take_frame(Channel& ch, std::uint32_t store_index, const RunNames& names) {
+  if (store_index == ch.store_frame || !names.run) return;
+  const kernel::AffineMap* f = names.run->frame(store_index);
+  if (!f) return;
+  ch.store_frame = store_index;
+  // a map seen before keeps its index (a program switching between G54 and
+  // G55 a million times still has two); beyond kMaxFrames the last one stays
+  for (std::size_t i = 0; i < ch.frames.size(); ++i)
+    if (ch.frames[i].rot == f->rot && ch.frames[i].shift == f->shift && ch.frames[i].main == f->main) {
+      ch.frame = static_cast<std::uint32_t>(i);
+      return;
+    }
+  if (ch.frames.size() >= kMaxFrames) return;
+  ch.frames.push_back(*f);
+  ch.frame = static_cast<std::uint32_t>(ch.frames.size() - 1);
+}
+
+// The PLC's overrides and feedholds as the cycle just computed used them
+// (the simulated HLI image): each change a mark, each feedhold a shaded span.
+void ReportWriter::watch_plc(double t_s, const RunNames& names) {
+  if (!names.run) return;
+  const plc::HliImage& hli = names.run->machine().hli();
+  auto hold = [&](bool on, std::optional<std::size_t>& open, Wait w) {
+    if (on && !open) {
+      open = waits_.size();
+      waits_.push_back(std::move(w));
+    } else if (!on && open) {
+      waits_[*open].t1 = t_s;
+      open.reset();
+    }
+  };
+  for (std::size_t c = 0; c < channels_.size() && c < hli.channel.size(); ++c) {
+    Channel& ch = channels_[c];
+    const double ovr = hli.channel[c].feed_override_percent;
+    if (ovr != ch.feed_override_pct)
+      marks_.push_back({t_s, 0, c + 1, "override", fmt::format("feed override {:g} %", ovr)});
+    ch.feed_override_pct = ovr;
+    hold(hli.channel[c].feedhold, ch.hold, Wait{c + 1, t_s, -1, "feedhold", "", "", "", ch.line, ch.file});
+  }
+  for (std::size_t s = 0; s < spindles_.size() && s < hli.spindle_control.size(); ++s) {
+    const double ovr = hli.spindle_control[s].effective_override_percent();
+    if (ovr != spindle_override_pct_[s])
+      marks_.push_back({t_s, s, 0, "override", fmt::format("spindle override {:g} %", ovr)});
+    spindle_override_pct_[s] = ovr;
+    hold(hli.spindle_control[s].feedhold, spindle_hold_[s], Wait{0, t_s, -1, "feedhold", "", spindles_[s], "", 0, 0});
+  }
 }
 
 void ReportWriter::event(const std::string& json_line, bool is_error) {

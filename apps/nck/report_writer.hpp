@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -15,8 +16,13 @@
 #include "nck/config/machine.hpp"
 #include "nck/kernel/kernel.hpp"
 #include "nck/kernel/tick_io.hpp"
+#include "report_contour.hpp"
 #include "report_series.hpp"
 #include "run_command.hpp"
+
+namespace nck::sim {
+class DryRun;
+}
 
 namespace nck::app {
 
@@ -25,9 +31,10 @@ struct RunNames;
 class ReportWriter {
  public:
   // setup: what to plot; `opt.report` empty makes every call a no-op.
-  // `k` configured, before the first cycle: its cycle time and the axes'
-  // start positions (where each backplot begins).
-  void start(const config::Machine& m, const RunOptions& opt, const kernel::Kernel& k);
+  // `run` created (DryRunOptions::record_frames set), before the first
+  // cycle: its cycle time, the axes' start positions (where each backplot
+  // begins); the report watches each channel's decoded blocks from here on.
+  void start(const config::Machine& m, const RunOptions& opt, sim::DryRun& run);
   // Once per cycle, after its events went to event().
   void sample(std::uint64_t cycle, const kernel::TickOutput& out, const RunNames& names);
   // One line of the event log (the JSON text of an event).
@@ -39,6 +46,7 @@ class ReportWriter {
   static constexpr std::size_t kMaxTableEvents = 20000;  // non-block events in the table
   static constexpr std::size_t kMaxTableBlocks = 2000;   // block events in the table
   static constexpr std::size_t kMaxBackplotPoints = 60000;  // per channel, after thinning
+  static constexpr std::size_t kMaxFrames = 1000;  // different program -> machine maps per channel
 
  private:
   struct Accum {
@@ -46,7 +54,7 @@ class ReportWriter {
     double time_s = 0;
   };
   struct Wait {
-    std::size_t ch = 0;
+    std::size_t ch = 0;  // 1-based; 0: a spindle's own (spindle feedhold)
     double t0 = 0, t1 = -1;
     std::string reason, fn, spindle, sync;
     std::uint32_t line = 0;
@@ -55,6 +63,7 @@ class ReportWriter {
   struct Mark {
     double t = 0;
     std::size_t spindle = 0;
+    std::size_t ch = 0;  // 1-based: a mark on the channel's velocity plot (feed override); 0: a spindle's
     std::string kind, text;
   };
   struct Channel {
@@ -71,6 +80,14 @@ class ReportWriter {
     std::map<std::string, std::uint32_t> last_sync;  // fn -> sync bits of its last plc_out
     std::optional<std::size_t> open_wait;
     PathRecorder path;
+    // program -> machine maps of the blocks executed, in order of appearance
+    // (PathPoint::frame); the PlanStore index of the newest
+    std::vector<kernel::AffineMap> frames;
+    std::uint32_t store_frame = kernel::kNoMessage;
+    std::uint32_t frame = 0;  // index into frames of the block in execution
+    std::unique_ptr<ProgrammedContour> contour;  // G41/G42 stretches as programmed
+    double feed_override_pct = 100;
+    std::optional<std::size_t> hold;  // the feedhold in progress (waits_ index)
   };
   struct SourceFile {
     std::string name;
@@ -79,6 +96,10 @@ class ReportWriter {
   std::uint16_t file_index(const std::string& name);
   const std::string& line_text(std::uint16_t file, std::uint32_t line) const;
   void take(const kernel::Event& e, const RunNames& names);
+  void take_frame(Channel& ch, std::uint32_t store_index, const RunNames& names);
+  void watch_plc(double t_s, const RunNames& names);  // overrides and feedholds from the HLI
+  std::string frames_json(const Channel& ch) const;
+  std::string contour_json(const Channel& ch) const;
   std::string data_json(double end_s, int exit_code) const;
   std::string channels_json(std::vector<std::pair<std::uint16_t, std::uint32_t>>& lines_used) const;
   std::string summary_json(std::vector<std::pair<std::uint16_t, std::uint32_t>>& lines_used) const;
@@ -98,6 +119,8 @@ class ReportWriter {
   std::vector<std::string> programs_;
   std::vector<Channel> channels_;
   std::vector<std::string> spindles_;
+  std::vector<double> spindle_override_pct_;
+  std::vector<std::optional<std::size_t>> spindle_hold_;  // waits_ index of a spindle feedhold
   std::vector<std::size_t> dist_channels_;  // channels with 3D distance control (3 series each)
   std::vector<std::string> series_meta_;  // JSON objects, in EnvelopeSeries order
   std::vector<int> decimals_;

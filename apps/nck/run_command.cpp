@@ -62,12 +62,15 @@ void record_events(const kernel::TickOutput& o, const RunNames& names, RunOutput
   for (const kernel::Event& e : o.events) {
     out.summary.take(e);
     if (out.wants_events()) out.event(EventWriter::line(e, names), e.kind == kernel::EventKind::error);
-    if (e.kind != kernel::EventKind::error) continue;
+    const bool error = e.kind == kernel::EventKind::error;
+    if (!error && e.kind != kernel::EventKind::warning) continue;
     const std::size_t ch = e.channel - 1u;
-    FinalError fe{number(e.id), e.channel, e.line, names.file(ch, e.file_id), names.text(e)};
+    // warnings too: every diagnostic reaches stderr, not only the events file
+    const std::string file = e.channel > 0 ? names.file(ch, e.file_id) : std::string();
     progress.clear();
-    fmt::print(stderr, "{}\n", format(Diagnostic{e.id, Severity::error, SourceLoc{fe.file, fe.line, 0}, fe.msg}));
-    out.errors.push_back(std::move(fe));
+    fmt::print(stderr, "{}\n", format(Diagnostic{e.id, error ? Severity::error : Severity::warning,
+                                                SourceLoc{file, e.line, 0}, names.text(e)}));
+    if (error) out.errors.push_back(FinalError{number(e.id), e.channel, e.line, file, names.text(e)});
   }
 }
 
@@ -228,7 +231,7 @@ int run_simulation(const RunOptions& opt) {
     return 2;
   }
   std::vector<std::filesystem::path> programs(opt.programs.begin(), opt.programs.end());
-  auto created = sim::DryRun::create(m, programs, {opt.clamp_index});
+  auto created = sim::DryRun::create(m, programs, {opt.clamp_index, !opt.report.empty()});
   if (!created) {
     fmt::print(stderr, "{}\n", format(created.error()));
     return 2;
@@ -242,6 +245,8 @@ int run_simulation(const RunOptions& opt) {
     run.load_scenario(scenario);
   }
   RunOutputs out;
+  for (const Diagnostic& d : loaded.diagnostics.items())  // printed above; the summary counts them too
+    if (d.severity == Severity::warning) out.summary.warning();
   std::optional<std::string> open_error;
   if (!opt.events.empty()) open_error = out.events.open(opt.events, opt.realtime);
   if (!open_error && !opt.trace.empty()) open_error = out.trace.open(opt.trace, opt.realtime, m, opt.trace_every);
@@ -249,7 +254,7 @@ int run_simulation(const RunOptions& opt) {
     fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppOutputFile), *open_error);
     return 2;
   }
-  out.report.start(m, opt, run.kernel());
+  out.report.start(m, opt, run);
   RunNames names;
   names.run = &run;
 

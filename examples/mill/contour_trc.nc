@@ -1,7 +1,8 @@
 ; Tool radius compensation (G41/G42, D1: radius 5 mm) on three contours
 ; programmed on the part outline:
 ;  1. the outside of a rectangle 60 x 40, tool left (G41) going clockwise:
-;     arcs of the tool radius round the outside corners;
+;     arcs of the tool radius round the outside corners (G26; under the
+;     default G25 the offset lines would meet at sharp corners instead);
 ;  2. the same rectangle with corners rounded R8: the tool follows at
 ;     R13 (8 + 5), the transitions are tangent;
 ;  3. a pocket 60 x 40, tool left (G41) going counter-clockwise inside:
@@ -9,7 +10,7 @@
 ; Each contour is selected by a G1 line onto its first corner and left by a
 ; G40 line. Runs to M30.
 %contour_trc
-N10 G17 G90 G71 D1
+N10 G17 G90 G71 G26 D1
 N20 G0 X-20 Y-20 Z2
 N30 G1 Z-2 F600
 ; 1. rectangle, outside

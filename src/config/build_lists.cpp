@@ -42,6 +42,8 @@ std::vector<ToolRecord> build_tools(const ParamList& l, Diagnostics& d) {
     t.vb_min_rpm = l.num(k("vb_min"), 0);
     t.vb_max_rpm = l.num(k("vb_max"), 1.0 / 6000.0);
     t.a_max_deg_s2 = l.num(k("a_max"), 1);
+    t.typ = l.u32(k("typ"), 0);
+    t.srk_lage = l.u32(k("srk_lage"), 0);
     cross_check(l, k("vb_min"), k("vb_max"), t.vb_min_rpm <= t.vb_max_rpm,
                 fmt::format("{} must not exceed {}", listed(l, k("vb_min"), t.vb_min_rpm),
                             listed(l, k("vb_max"), t.vb_max_rpm)), d);

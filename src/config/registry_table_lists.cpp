@@ -15,6 +15,7 @@ constexpr char kLen[] = "0.1 µm (0.0001 inch)";
 constexpr ParamInfo kTable[] = {
     // ---- tool list (wz[i], i = tool / D number) ------------------------------
     {"wz[].typ", "P-TOOL-00001", W, T::integer, 0, kU16, 0, 1, "—", "—", "Tool type; accepted.", {1000}},
+    {"wz[].srk_lage", "P-TOOL-00002", W, T::integer, 0, 9, 0, 1, "—", "—", "Cutting-edge position 1..9 of a turning tool (typ 1) in the Z X plane; 0 = none (nose centre).", {1000}},
     {"wz[].laenge", "P-TOOL-00003", W, T::integer, kS32Min, kS32, 0, 1e-4, kLen, "mm", "Tool length.", {1000}},
     {"wz[].radius", "P-TOOL-00004", W, T::integer, kS32Min, kS32, 0, 1e-4, kLen, "mm", "Tool radius.", {1000}},
     {"wz[].ax_versatz[]", "P-TOOL-00006", W, T::integer, kS32Min, kS32, 0, 1e-4, kLen, "mm", "Offset of channel axis j.", {1000, 32}},

@@ -81,7 +81,11 @@ void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelConte
   }
   active_ = true;
   phase_ = Phase::pre_wait;
-  if (c.emit_block_event) sink.emit(event(EventKind::block, t_s));
+  if (c.emit_block_event) {
+    Event e = event(EventKind::block, t_s);
+    e.message_index = c.frame_index;  // the block's program -> machine map (report)
+    sink.emit(e);
+  }
   for (const Command::Warning& w : c.warnings) {
     Event e = event(EventKind::warning, t_s);
     e.id = w.id;
@@ -93,6 +97,13 @@ void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelConte
     e.message_index = payload;
     sink.emit(e);
   }
+  if (c.trc_event) {
+    Event e = event(EventKind::trc, t_s);
+    e.trc_state = c.trc_state;
+    e.trc_d = c.trc_d;
+    e.trc_radius_mm = c.trc_radius_mm;
+    sink.emit(e);
+  }
   if (c.kind == CommandKind::error) {
     raise(c.error_id, c.message_index, t_s, sink, ctx);
     return;
@@ -102,6 +113,7 @@ void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelConte
   if (!take_dist(c, t_s, sink, ctx)) return;
   take_links(c, ctx);
   manual_mask_ = (manual_mask_ | c.manual_on) & ~c.manual_off;
+  if (manual_mask_ != 0) handwheel_used_ = true;  // until the first G201 every offset is zero
   if (c.get_manual_offsets) manual_fetch_pending_ = true;
   manual_share_start_ = manual_share_;
   if (c.feed_motion) take_late_waits(SyncPoint::late_motion);
@@ -323,8 +335,9 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
 // reports the offsets reached at the end of its cycle.
 void Channel::follow_handwheel(double t_s, double dt_s, const ChannelInput& in, TickOutput& sink,
                                ChannelContext& ctx) noexcept {
+  // Until the first G201 every handwheel offset is zero: nothing to follow.
   const double step = kHandwheelSpeed_mm_s * dt_s;
-  for (std::size_t j = 0; j < n_axes_; ++j) {
+  for (std::size_t j = 0; handwheel_used_ && j < n_axes_; ++j) {
     if ((manual_mask_ >> j) & 1u) manual_target_mm_[j] += in.handwheel_mm[j];
     const double d = manual_target_mm_[j] - manual_mm_[j];
     manual_mm_[j] += std::clamp(d, -step, step);

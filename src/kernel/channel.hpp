@@ -147,6 +147,7 @@ class Channel {
   bool awaiting_probe_ = false;        // G100 reached its end point: one more cycle for the probe
   bool manual_fetch_pending_ = false;  // #GET MANUAL OFFSETS: send them at the end of this cycle
   std::uint32_t manual_mask_ = 0;     // axes in manual mode (G201)
+  bool handwheel_used_ = false;       // some axis was in manual mode in this run
   motion::AxisVector manual_mm_{};    // handwheel offset reached so far
   motion::AxisVector manual_target_mm_{};
   // Share (0..1) of the handwheel offset in each set point, when the block

@@ -1,5 +1,6 @@
 #include "nck/motion/corner_blend.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -24,6 +25,7 @@ double angle_between(V2 u, V2 w) { return std::atan2(cross(u, w), dot(u, w)); }
 // programming with a small end-radius error).
 constexpr double kTiny = 1e-9;
 constexpr double kRadiusSpread = 0.01;
+constexpr double kMaxRadiusMm = 1e4;
 
 // One block near the corner, in the plane: a line through p along t, or a
 // circle around p of radius r run ccw or cw.
@@ -204,11 +206,14 @@ std::optional<CornerBlend> blend_corner(const Segment& a, const Segment& b, doub
     return fl;
   };
   // The largest radius that passes: double while it does, then bisect.
+  // Between two arcs bending the same way a gentle kink may allow any
+  // radius (the fillet tends to their common tangent): past kMaxRadiusMm it
+  // is straight for every feed and still computes exactly.
   double lo = 0, hi = path_dev_mm;
   if (ok(hi)) {
-    for (int i = 0; i < 60 && ok(2 * hi); ++i) hi *= 2;
+    while (2 * hi <= kMaxRadiusMm && ok(2 * hi)) hi *= 2;
     lo = hi;
-    hi *= 2;
+    hi = std::min(2 * hi, kMaxRadiusMm);
   }
   for (int i = 0; i < 50; ++i) {
     const double mid = (lo + hi) / 2;

@@ -26,8 +26,10 @@ double corner_velocity(const AxisVector& t_in, const AxisVector& t_out, std::spa
 }
 
 double entry_velocity_limit(double length_mm, double v_exit_mm_s, double a_dec_mm_s2, double dt_s) noexcept {
-  const double beyond_mm = discrete_brake_distance(v_exit_mm_s, a_dec_mm_s2, dt_s);
-  return discrete_brake_velocity(length_mm + beyond_mm, a_dec_mm_s2, dt_s);
+  // The profile holds v_exit over its last cycles: entering at v_exit is
+  // always possible.
+  const double beyond_mm = pass_brake_distance(v_exit_mm_s, a_dec_mm_s2, dt_s);
+  return std::max(discrete_brake_velocity(length_mm + beyond_mm, a_dec_mm_s2, dt_s), v_exit_mm_s);
 }
 
 }  // namespace nck::motion

@@ -68,6 +68,12 @@ Hits intersect(const Offset& x, const Offset& y) {
 
 double angle_of(Vec2 c, Vec2 p) { return std::atan2(p.b - c.b, p.a - c.a); }
 
+// The whole line or circle a piece lies on.
+Offset carrier_of(const Element& e) {
+  if (e.arc) return {true, {}, {}, e.center, arc_radius(e)};
+  return {false, e.start, unit(e.end - e.start), {}, 0};
+}
+
 }  // namespace
 
 double length(Vec2 p) { return std::hypot(p.a, p.b); }
@@ -121,11 +127,55 @@ Corner corner(const Element& a, const Element& b, double o) {
   return k;
 }
 
+LinearCorner linear_corner(Vec2 end_a, Vec2 ta, Vec2 start_b, Vec2 tb, double r) {
+  LinearCorner lc;
+  const double den = cross(ta, tb);
+  if (dot(ta, tb) >= 0 && std::abs(den) > kEps) {
+    // end_a + s ta = start_b - u tb
+    const double s = cross(start_b - end_a, tb) / den;
+    lc.n = 1;
+    lc.p[0] = end_a + s * ta;
+    return lc;
+  }
+  lc.n = 2;
+  lc.p[0] = end_a + r * ta;
+  lc.p[1] = start_b - r * tb;
+  return lc;
+}
+
 double sweep_rad(Vec2 c, Vec2 s, Vec2 e, bool ccw) {
   double d = ccw ? angle_of(c, e) - angle_of(c, s) : angle_of(c, s) - angle_of(c, e);
   while (d <= 1e-12) d += kTwoPi;
   while (d > kTwoPi) d -= kTwoPi;
   return d;
+}
+
+namespace {
+
+constexpr double kEndMm = 1e-6;
+
+bool degenerate(const Element& e) { return e.arc ? arc_radius(e) < kEps : length(e.end - e.start) < kEps; }
+
+// p lies on e's carrier: is it inside e, away from its ends?
+bool inside_piece(const Element& e, Vec2 p) {
+  if (length(p - e.start) < kEndMm || length(p - e.end) < kEndMm) return false;
+  if (!e.arc) {
+    const double along = dot(p - e.start, unit(e.end - e.start));
+    return along > 0 && along < length(e.end - e.start);
+  }
+  return sweep_rad(e.center, e.start, p, e.ccw) < sweep_rad(e.center, e.start, e.end, e.ccw);
+}
+
+}  // namespace
+
+bool pieces_cross(const Element& p, const Element& q) {
+  if (degenerate(p) || degenerate(q)) return false;
+  const Hits h = intersect(carrier_of(p), carrier_of(q));
+  // Two equal points: the pieces touch (a slot exactly as wide as the tool), no crossing.
+  if (h.n == 2 && length(h.p[0] - h.p[1]) < kEndMm) return false;
+  for (int i = 0; i < h.n; ++i)
+    if (inside_piece(p, h.p[i]) && inside_piece(q, h.p[i])) return true;
+  return false;
 }
 
 bool keeps_direction(const Element& p, Vec2 s, Vec2 e) {

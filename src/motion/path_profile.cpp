@@ -36,6 +36,11 @@ double discrete_brake_distance(double v_mm_s, double a_mm_s2, double dt_s) noexc
   return dt_s * (n + 1.0) * (v_mm_s - dv * n / 2.0);
 }
 
+double pass_brake_distance(double v_end_mm_s, double a_mm_s2, double dt_s) noexcept {
+  if (!(v_end_mm_s > 0.0)) return 0.0;
+  return discrete_brake_distance(v_end_mm_s, a_mm_s2, dt_s) - 2.0 * v_end_mm_s * dt_s;
+}
+
 double duration_estimate(double length_mm, double v_cmd_mm_s, const PathLimits& limits) noexcept {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   if (!(length_mm > 0.0)) return 0.0;
@@ -62,6 +67,12 @@ bool PathProfile::start(double length_mm, double v_cmd_mm_s, const PathLimits& l
   if (!std::isfinite(v_mm_s_) || v_mm_s_ < 0.0) v_mm_s_ = 0.0;
   const double carry = carry_mm_;
   carry_mm_ = 0.0;
+  // Passing in from the segment before: the cycle that crossed over lay on
+  // both, so the first step here changes the speed by no more than either
+  // allows (a line after a fillet would otherwise add its full acceleration
+  // to what is left of the fillet's turn).
+  passed_in_ = v_mm_s_ > 0.0 && valid(limits_);
+  first_step_limits_ = limits_;
   limits_ = limits;
   v_end_mm_s_ = 0.0;
   v_limit_mm_s_ = -1.0;
@@ -124,16 +135,27 @@ ProfileSample PathProfile::step(double dt_s, double override_factor) noexcept {
   if (left_mm <= kSnapMm) return finish(left_mm / dt_s, v_prev, dt_s, 0.0);
 
   const double target = target_velocity(override_factor);
-  double v = v_prev < target ? std::min(v_prev + limits_.a_acc_mm_s2 * dt_s, target)
-                             : std::max(v_prev - limits_.a_dec_mm_s2 * dt_s, target);
+  double a_acc = limits_.a_acc_mm_s2, a_dec = limits_.a_dec_mm_s2;
+  if (passed_in_) {
+    passed_in_ = false;
+    a_acc = std::min(a_acc, first_step_limits_.a_acc_mm_s2);
+    a_dec = std::min(a_dec, first_step_limits_.a_dec_mm_s2);
+  }
+  double v = v_prev < target ? std::min(v_prev + a_acc * dt_s, target) : std::max(v_prev - a_dec * dt_s, target);
   // Rounding must not leave a residue like 1e-14 mm/s (a "moving" feedhold).
   if (std::abs(v - target) <= 1e-12 * std::max(1.0, target)) v = target;
   // Braking curve: to standstill at the end, or (blending) to v_end at the
   // end, which is the curve to standstill at a point beyond the end.
-  const double beyond_mm = discrete_brake_distance(v_end_mm_s_, limits_.a_dec_mm_s2, dt_s);
+  const double v_ramp = v;
+  const double beyond_mm = pass_brake_distance(v_end_mm_s_, limits_.a_dec_mm_s2, dt_s);
   v = std::min(v, discrete_brake_velocity(left_mm + beyond_mm, limits_.a_dec_mm_s2, dt_s));
+  // Passing on: v_end is held over the last cycles (never braked below).
+  if (v_end_mm_s_ > 0.0) v = std::max(v, std::min(v_end_mm_s_, v_ramp));
   v = std::max(v, 0.0);
 
+  // The cycle that passes into the next segment lies on both (a fillet's
+  // turn starts or ends in it): it keeps the speed it had.
+  if (v_end_mm_s_ > 0.0 && v_prev > 0.0 && v * dt_s >= left_mm - kSnapMm) v = v_prev;
   const double move_mm = v * dt_s;
   if (move_mm >= left_mm - kSnapMm) {
     // Stopping at the end: report the speed that covers exactly what was left.

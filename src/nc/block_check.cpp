@@ -25,6 +25,7 @@ std::optional<GGroup> g_group(GCode code) {
     case g201: case g202: return GGroup::manual;
     case g359: case g360: return GGroup::exact_stop;
     case g260: case g261: return GGroup::contour;
+    case g25: case g26: return GGroup::trc_corner;
     default: break;  // the non-modal codes are listed once, in GCodeSet
   }
   if (GCodeSet::is_nonmodal(code)) return GGroup::nonmodal;

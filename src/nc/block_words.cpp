@@ -59,7 +59,7 @@ bool set_once(At<T>& slot, T v, std::size_t pos, BlockCtx& b, char addr) {
 // subroutine calls, software limits, splines, arcs in space ...): named as
 // not supported instead of "unknown".
 bool isg_g_function(int code) {
-  static constexpr int kCodes[] = {5,  8,  9,  10, 11, 12, 13, 20,  21,  22,  23,  25,  26,
+  static constexpr int kCodes[] = {5,  8,  9,  10, 11, 12, 13, 20,  21,  22,  23,
                                    66, 68, 69, 98, 99, 150, 151, 163, 164, 165, 303};
   for (int c : kCodes)
     if (c == code) return true;

@@ -118,7 +118,7 @@ void kernel_writes_to_mm(std::vector<VariableWrite>& writes);
 
 // G code groups (block_check.cpp).
 enum class GGroup : std::uint8_t { motion, plane, dim, feed, speed, comp, diam, unit, zero,
-                                   center, manual, exact_stop, contour, nonmodal };
+                                   center, manual, exact_stop, contour, trc_corner, nonmodal };
 std::optional<GGroup> g_group(GCode code);
 // The import stage's only integer-to-G step: nullopt for a number nck does not know.
 std::optional<GCode> to_gcode(int number);

@@ -100,12 +100,13 @@ Outcome Decoder::Impl::cycle_call(Cursor& c, bool local, std::size_t at) {
                   fmt::format("the modal cycle '{}' is still active; #DISABLE MODAL CYCLE first",
                               modal_cycle.target.name));
   CycleTarget& t = call.target;
-  const Frame& caller = frames.back();
+  Frame& caller = frames.back();
   if (local) {
     const Section* s = caller.index->local(to_upper(t.name));
     if (!s)
       return report(ErrorId::NcCycleNotFound, at,
                     fmt::format("no local cycle '%L {}' in {}", t.name, files[caller.file_id]));
+    keep_text_for_local_calls(caller);
     t.path = caller.path;
     t.file_id = caller.file_id;
     t.mem = caller.mem;

@@ -32,11 +32,31 @@ SourceLoc Decoder::Impl::loc(std::size_t pos) const {
 
 // ", called from main.nc line 12" for an error in a subroutine (innermost
 // caller first), like a compiler's "included from".
+// A recursion names each calling line once: repeats of the line before
+// (the error's own line first) are counted, not listed.
 std::string Decoder::Impl::call_chain() const {
   std::string out;
-  for (std::size_t i = frames.size(); i-- > 1;)
-    out += fmt::format(", called from {} line {}", files[frames[i - 1].file_id],
-                       frames[i - 1].reader->block_pos().line);
+  if (frames.empty()) return out;
+  std::uint16_t last_file = frames.back().file_id;
+  std::uint32_t last_line = frames.back().reader->block_pos().line;
+  std::size_t repeats = 0;
+  auto flush = [&] {
+    if (repeats > 0) out += fmt::format(", called from the same line {} time(s)", repeats);
+    repeats = 0;
+  };
+  for (std::size_t i = frames.size(); i-- > 1;) {
+    const std::uint16_t file = frames[i - 1].file_id;
+    const std::uint32_t line = frames[i - 1].reader->block_pos().line;
+    if (file == last_file && line == last_line) {
+      ++repeats;
+      continue;
+    }
+    flush();
+    out += fmt::format(", called from {} line {}", files[file], line);
+    last_file = file;
+    last_line = line;
+  }
+  flush();
   return out;
 }
 

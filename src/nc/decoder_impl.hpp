@@ -125,6 +125,9 @@ struct Decoder::Impl {
   bool open_local_frame(const std::filesystem::path& path, std::shared_ptr<const std::string> mem,
                         std::shared_ptr<const detail::ProgramIndex> index, detail::SourcePos body, detail::Frame& f);
   bool open_main(const std::filesystem::path& p);
+  // Loads a streamed frame's file into `f.mem` once, so that its local
+  // subroutines and cycles are read from memory on every call.
+  void keep_text_for_local_calls(detail::Frame& f);
   detail::Outcome call(detail::Cursor& c, bool local);
   detail::Outcome end_of_section();
   detail::Outcome do_return();

@@ -1,7 +1,6 @@
 #include "file_cache.hpp"
 
 #include <fstream>
-#include <sstream>
 
 #include "lexer.hpp"
 
@@ -56,6 +55,13 @@ std::size_t comment_phrase_end(std::string_view block, std::string_view which) {
   return c.pos;
 }
 
+std::shared_ptr<const std::string> read_text(const std::filesystem::path& p, std::uintmax_t size) {
+  std::ifstream in(p, std::ios::binary);
+  std::string text(size, '\0');
+  if (!in.read(text.data(), static_cast<std::streamsize>(size))) return nullptr;
+  return std::make_shared<const std::string>(std::move(text));
+}
+
 ProgramIndex scan_sections(SourceReader& r, std::size_t max_chars) {
   ProgramIndex idx;
   bool in_comment = false;
@@ -101,11 +107,8 @@ std::shared_ptr<const FileCache::Entry> FileCache::get(const std::filesystem::pa
     break;
   }
   if (size > max_bytes_) return nullptr;
-  std::ifstream in(p, std::ios::binary);
-  if (!in) return nullptr;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  auto text = std::make_shared<const std::string>(ss.str());
+  auto text = read_text(p, size);
+  if (!text) return nullptr;
   SourceReader r;
   r.open_memory(text);
   auto entry = std::make_shared<Entry>();

@@ -34,6 +34,9 @@ std::size_t comment_phrase_end(std::string_view block, std::string_view which);
 
 // Scans a reader from its current position to the end for section headers
 // (a % line inside #COMMENT BEGIN .. END is no header).
+// The whole file of `size` bytes, or nullptr when it cannot be read.
+std::shared_ptr<const std::string> read_text(const std::filesystem::path& p, std::uintmax_t size);
+
 ProgramIndex scan_sections(SourceReader& r, std::size_t max_chars);
 // Name of a "%L name" / "%name" header (comments stripped, upper case).
 bool parse_header(std::string_view text, bool& local, std::string& name);

@@ -48,6 +48,8 @@ void apply_g(GCode code, double value, ModalState& m) {
     case g201: m.manual_mode = true; break;
     case g202: m.manual_mode = false; break;
     case g359: m.exact_stop = false; break;
+    case g25: m.trc_arc_corners = false; break;
+    case g26: m.trc_arc_corners = true; break;
     case g360: m.exact_stop = true; break;
     case g260: m.contour = false; break;
     case g261: m.contour = true; break;

@@ -42,6 +42,18 @@ bool Decoder::Impl::open_local_frame(const std::filesystem::path& path, std::sha
   return true;
 }
 
+// A local call in a loop would otherwise open and read the caller's file again
+// on every pass. Files above the cap stay streamed (reopened per call), so a
+// huge main program never has to fit in memory.
+void Decoder::Impl::keep_text_for_local_calls(Frame& f) {
+  constexpr std::uintmax_t kMaxInMemoryBytes = 64u << 20;
+  if (f.mem) return;
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(f.path, ec);
+  if (ec || size > kMaxInMemoryBytes) return;
+  f.mem = read_text(f.path, size);  // stays streamed when unreadable
+}
+
 bool Decoder::Impl::open_main(const std::filesystem::path& p) {
   Frame f;
   f.file_id = file_id(p.string());
@@ -90,6 +102,7 @@ Outcome Decoder::Impl::call(Cursor& c, bool local) {
     if (!s)
       return report(ErrorId::NcSubroutineNotFound, at,
                     fmt::format("no local subroutine '%L {}' in this file", name));
+    keep_text_for_local_calls(caller);
     f.file_id = caller.file_id;
     if (!open_local_frame(caller.path, caller.mem, caller.index, s->body, f))
       return report(ErrorId::NcFileUnreadable, at, fmt::format("cannot reopen '{}'", caller.path.string()));

@@ -25,7 +25,8 @@ ChannelPrep::ChannelPrep(const config::Machine& m, std::size_t ch, const std::fi
     : planner_(std::make_unique<Planner>(m, ch, store, PlannerOptions{options.clamp_index},
                                          kernel_spindles(m, ch))),
       window_(m.channels[ch].lookahead_blocks, m.cycle_time_us * 1e-6),
-      trc_(m, ch) {
+      trc_(m, ch),
+      store_(options.record_frames ? &store : nullptr) {
   if (program.empty()) {
     done_ = true;
     return;
@@ -94,12 +95,24 @@ void ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& fe
 bool ChannelPrep::prepare(const nc::Block& b, const std::string& file_name, kernel::CommandQueue& commands) {
   if (!window_.has_room() && !window_.release(commands, false)) return false;
   std::vector<TrcOut> outs;
+  if (observer_) observer_->decoded(b, *planner_, trc_.holding());
   trc_.push(b, *planner_, outs);
   plan_out(outs, commands, file_name);
   // A block that needs feedback, and the program end, must reach the channel now.
   flushing_ = flushing_ || needs_feedback(b) || b.program_end;
   return push_out(commands);
 }
+
+namespace {
+
+void set_trc_event(kernel::Command& c, const RadiusComp::State& s) {
+  c.trc_event = true;
+  c.trc_state = s.g;
+  c.trc_d = s.d;
+  c.trc_radius_mm = s.radius_mm;
+}
+
+}  // namespace
 
 void ChannelPrep::plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& commands,
                            const std::string& file_name) {
@@ -112,6 +125,12 @@ void ChannelPrep::plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& comm
       planned = planner_->plan(o.block, decoder_ ? decoder_->file_name(o.block.file_id) : file_name);
       if (o.inserted)
         for (kernel::Command& c : planned) c.emit_block_event = false;
+      else if (const auto st = trc_.report(o.block); st && !planned.empty())
+        set_trc_event(planned[0], *st);
+      if (store_) {
+        const std::uint32_t frame = frame_index_now();
+        for (kernel::Command& c : planned) c.frame_index = frame;
+      }
     }
     if (backlog_.empty() && (window_.has_room() || window_.release(commands, false)))
       (void)window_.push(planned);
@@ -168,6 +187,17 @@ void ChannelPrep::take_feedback(const kernel::Feedback& f) {
   }
   for (std::size_t j = 0; j < planner_->axis_count(); ++j)
     (void)decoder_->set_variable("V.A.MANUAL_OFFSETS." + planner_->frames().axis_name(j), f.manual_offsets_mm[j]);
+}
+
+// The planner's program -> machine map after the block just planned, put
+// into the store only when it differs from the last one.
+std::uint32_t ChannelPrep::frame_index_now() {
+  const kernel::AffineMap m = planner_->frames().affine(frames::SuppressMask::none());
+  if (frame_index_ != kernel::kNoMessage) {
+    const kernel::AffineMap& last = store_->frames[frame_index_];
+    if (last.rot == m.rot && last.shift == m.shift && last.main == m.main) return frame_index_;
+  }
+  return frame_index_ = store_->add_frame(m);
 }
 
 void ChannelPrep::collect_warnings() {

@@ -104,7 +104,7 @@ bool Planner::plan_dist(const nc::Block& b, Command& c, Command& error) {
   if (d->n_cycles) w.n_cycles = static_cast<std::int16_t>(*d->n_cycles);
   if (d->order) w.order = static_cast<std::int16_t>(*d->order);
   if (d->filter_type) w.filter = filter_kind(*d->filter_type);
-  if (w.op == distctrl::Op::on || w.op == distctrl::Op::freeze) dist_on_ = true;
+  if (w.op == distctrl::Op::on || w.op == distctrl::Op::freeze) dist_on_ = dist_programmed_ = true;
   if (w.op == distctrl::Op::off) dist_on_ = false;
   // The tool axis of the working plane carries the offset (Z for G17).
   const int tool = plane_axes(b.modal.plane).tool;

@@ -92,7 +92,7 @@ std::uint32_t Planner::manual_axes_after(const nc::Block& b, frames::SuppressMas
   return axes;
 }
 
-Command Planner::plan_motion(const nc::Block& b, Command c, const std::string& file_name) {
+Command Planner::plan_motion(const nc::Block& b, Command c, [[maybe_unused]] const std::string& file_name) {
   const frames::SuppressMask mask = suppress_mask(b);
   if (mask.bits != 0)
     if (auto r = frames::OffsetChain::check_suppress(!b.modal.absolute); !r)
@@ -117,8 +117,8 @@ Command Planner::plan_motion(const nc::Block& b, Command c, const std::string& f
     if (target[j] < swe_neg_[j] - 1e-9 || target[j] > swe_pos_[j] + 1e-9)
       return error_command(
           ErrorId::KernelSoftwareLimit,
-          fmt::format("{} {:.4f} is outside the software limits [{:.4f}, {:.4f}] ({}:{})",
-                      channel_.axes[j].name, target[j], swe_neg_[j], swe_pos_[j], file_name, b.line),
+          fmt::format("{} {:.4f} is outside the software limits [{:.4f}, {:.4f}]",  // the location is the event's
+                      channel_.axes[j].name, target[j], swe_neg_[j], swe_pos_[j]),
           b.file_id, b.line);
 
   const bool rapid = b.modal.motion == nc::Motion::rapid;

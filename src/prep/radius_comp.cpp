@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "nck/motion/cutting_edge.hpp"
 #include "nck/prep/planner.hpp"
 
 namespace nck::prep {
@@ -119,6 +120,23 @@ double RadiusComp::offset_of(const nc::Block& b) const {
   return b.modal.radius_comp == nc::RadiusComp::g41 ? r : -r;
 }
 
+// The theoretical tip P of a turning tool relative to its nose centre, in
+// the plane (G18: Z, X). Only G18 has the longitudinal axis first and the
+// facing axis second, as the positions are defined; a position 1..8 in
+// another plane is refused rather than applied the wrong way round.
+std::optional<Vec2> RadiusComp::tip_of(const nc::Block& b, std::string& why) const {
+  if (b.modal.radius_comp == nc::RadiusComp::g40) return Vec2{};
+  const auto d = static_cast<std::size_t>(std::max<std::int64_t>(b.modal.d, 0));
+  if (d == 0 || d >= tools_.size()) return Vec2{};
+  const config::ToolRecord& t = tools_[d];
+  const Vec2 tip = trc::tip_from_centre(t.typ == 1 ? t.srk_lage : 0, t.radius_mm);
+  if (trc::length(tip) < kTiny || plane_ == Plane::g18) return tip;
+  why = fmt::format("turning tool D{} has cutting-edge position {} (wz[{}].srk_lage), defined in the Z X plane "
+                    "(G18), with tool radius compensation in G{}",
+                    d, t.srk_lage, d, static_cast<int>(plane_));
+  return std::nullopt;
+}
+
 // The programmed element of b, from the programmed end of the last one.
 std::optional<motion::trc::Element> RadiusComp::element_of(const nc::Block& b, const Planner& planner,
                                                            ErrorId& id, std::string& why) const {
@@ -218,8 +236,12 @@ void RadiusComp::push(const nc::Block& b, const Planner& planner, std::vector<Tr
   item.block = b;
   item.prog = *el;
   item.o = offset_of(b);
+  const auto tip = tip_of(b, why);
+  if (!tip) return fail(b, ErrorId::KernelTrcEdgePlane, why, out);
+  item.tip = *tip;
   if (!want) item.role = Role::departure;
-  else if (queue_.empty() || item.o != queue_.back().o) item.role = Role::link;
+  else if (queue_.empty() || item.o != queue_.back().o || trc::length(item.tip - queue_.back().tip) > kTiny)
+    item.role = Role::link;
   if (item.role != Role::contour && el->arc) {
     if (queue_.empty()) return fail(b, ErrorId::KernelTrcSelectInArc, "tool radius compensation selected in a circle block", out);
     if (item.role == Role::departure)
@@ -235,7 +257,7 @@ void RadiusComp::push(const nc::Block& b, const Planner& planner, std::vector<Tr
                             trc::arc_radius(*el), std::abs(item.o)),
                 out);
   if (queue_.empty()) {
-    item.comp_start = prog_;  // selection: the tool stands on the programmed point
+    item.comp_start = prog_ - item.tip;  // selection: the tool (its tip P) stands on the programmed point
   } else if (!close_last(item, out)) {
     return;
   }

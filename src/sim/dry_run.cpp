@@ -16,7 +16,7 @@ std::expected<DryRun, Diagnostic> DryRun::create(const config::Machine& m,
   run.in_ = std::make_unique<kernel::TickInput>();
   for (std::size_t ch = 0; ch < run.machine_->channels.size(); ++ch)
     run.preps_.emplace_back(*run.machine_, ch, ch < programs.size() ? programs[ch] : std::filesystem::path(),
-                            *run.store_, prep::PrepOptions{options.clamp_index});
+                            *run.store_, prep::PrepOptions{options.clamp_index, options.record_frames});
   return run;
 }
 
@@ -25,8 +25,12 @@ DryRun::DryRun(DryRun&&) noexcept = default;
 DryRun& DryRun::operator=(DryRun&&) noexcept = default;
 
 void DryRun::prepare() {
-  for (std::size_t ch = 0; ch < preps_.size(); ++ch)
+  for (std::size_t ch = 0; ch < preps_.size(); ++ch) {
     preps_[ch].feed(kernel_->commands(ch), kernel_->feedback(ch), kernel_->channel_done(ch));
+    // Preparation runs ahead of the kernel: the sensor is on before the
+    // kernel takes the first #DIST CTRL ON.
+    if (preps_[ch].planner().dist_ctrl_programmed()) sim_->switch_sensor_on(ch);
+  }
 }
 
 void DryRun::cycle(kernel::TickOutput& out) noexcept {
@@ -76,6 +80,10 @@ const prep::OffsetPayload& DryRun::offset(std::uint32_t index) const {
 const prep::LinkPayload& DryRun::link(std::uint32_t index) const {
   static const prep::LinkPayload none;
   return index < store_->links.size() ? store_->links[index] : none;
+}
+
+const kernel::AffineMap* DryRun::frame(std::uint32_t index) const {
+  return index < store_->frames.size() ? &store_->frames[index] : nullptr;
 }
 
 }  // namespace nck::sim

@@ -52,7 +52,8 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
     c.reset = false;  // a request: handed over once
     ci.probe_switched = probe_switched_[ch];
     if (probe_switched_[ch]) ci.probe_latched_mcs = probes_[ch].latched();
-    sensors_[ch].sample(t_s, ci.dist_sensor_valid, ci.dist_sensor_mm);
+    if (sensor_on_[ch]) sensors_[ch].sample(t_s, ci.dist_sensor_valid, ci.dist_sensor_mm);
+    else ci.dist_sensor_valid = false;
   }
   for (std::size_t i = 0; i < spindles_; ++i) {
     in.spindles[i] = hli_.spindle_control[i];

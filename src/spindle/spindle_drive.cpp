@@ -36,6 +36,12 @@ void SpindleAxis::drive_model(double step_deg, double dt) noexcept {
     d.act_vel_deg_s = v_cmd - (lag_new - d.lag_deg) / dt;
     d.lag_deg = lag_new;
   }
+  // With the command at rest, the decaying lag and speed are cut to zero once
+  // far below any encoder's resolution: the drive then counts as settled
+  // (SpindleAxis::at_rest) instead of decaying through denormals forever.
+  if (v_cmd == 0 && std::fabs(d.lag_deg) < 1e-12 && std::fabs(d.act_vel_deg_s) < 1e-9 &&
+      std::fabs(d.filtered_vel_deg_s) < 1e-9)
+    d = DriveModel{};
   if (!std::isfinite(d.lag_deg) || !std::isfinite(d.act_vel_deg_s)) {  // never let NaN out
     d.lag_deg = 0;
     d.act_vel_deg_s = v_cmd;

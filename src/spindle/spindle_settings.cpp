@@ -12,7 +12,9 @@ SpindleResult err(ErrorId id) { return SpindleResult{id, false}; }
 
 void SpindleAxis::set_override_pct(double pct) noexcept {
   if (!std::isfinite(pct)) return;  // a broken HLI value keeps the last one
-  speed_.override_pct = std::clamp(pct, 0.0, 200.0);
+  const double clamped = std::clamp(pct, 0.0, 200.0);
+  if (clamped == speed_.override_pct) return;  // the PLC writes it every cycle
+  speed_.override_pct = clamped;
   update_status();
 }
 
@@ -69,6 +71,7 @@ SpindleResult SpindleAxis::default_dynamic_data() noexcept {
 }
 
 void SpindleAxis::set_feedhold(bool on) noexcept {
+  if (on == speed_.feedhold) return;  // the PLC writes it every cycle
   speed_.feedhold = on;
   update_status();
 }

@@ -12,6 +12,10 @@ int sign_of(double v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
 
 void SpindleAxis::tick(double dt) noexcept {
   if (!configured_ || !(dt > 0) || !std::isfinite(dt)) return;
+  if (at_rest()) {  // a stopped spindle whose drive has settled: nothing changes
+    set_.step_deg = 0;
+    return;
+  }
   const double v_old = set_.vel_deg_s;
   set_.step_deg = 0;
   switch (mode_) {
@@ -30,6 +34,13 @@ void SpindleAxis::tick(double dt) noexcept {
   set_.accel_deg_s2 = (set_.vel_deg_s - v_old) / dt;
   drive_model(set_.step_deg, dt);
   update_status();
+}
+
+// Stopped, standing, drive settled to exactly zero: a whole tick would
+// compute the same state again (most spindles, most of the time).
+bool SpindleAxis::at_rest() const noexcept {
+  return mode_ == SpindleMode::stop && set_.vel_deg_s == 0 && set_.accel_deg_s2 == 0 && drive_.lag_deg == 0 &&
+         drive_.act_vel_deg_s == 0 && drive_.filtered_vel_deg_s == 0;
 }
 
 void SpindleAxis::advance(double step_deg) noexcept {

@@ -1,6 +1,7 @@
 // The programs the browser test runs and what their reports must show,
 // worked out by hand from the NC text (extents in machine coordinates, mm).
 import fs from "node:fs";
+import path from "node:path";
 
 // The common-subset benchmark program (the rule of ../shared/bench/
 // common_program.py, also used by bench/path_bench): G1/G2 moves around a
@@ -30,7 +31,20 @@ export function caps(blocks) {
   return { bytes: 6e6, loadMs: blocks >= 100000 ? 8000 : 5000 };
 }
 
-export function expectations(longProgram, blocks, longCaps) {
+// A rectangle under G54 and a 90 deg rotation (program coordinates differ
+// from machine coordinates by more than a shift), and a feedhold program.
+export function writeFrameProgram(file) {
+  fs.writeFileSync(file, [
+    "N10 G17 G90 G54 G0 X0 Y0 Z5", "N20 #ROTATION ON [ANGLE=90]", "N30 G1 X40 Y0 F3000", "N40 Y20", "N50 X0",
+    "N60 Y0", "N70 #ROTATION OFF", "N80 G0 Z20", "N90 M30"].join("\n") + "\n");
+}
+export function writeHoldProgram(dir) {
+  fs.writeFileSync(path.join(dir, "hold.nc"), "N10 G17 G90 G0 X0 Y0 Z0\nN20 G1 X100 F3000\nN30 M30\n");
+  // feedhold for 0.8 s from 0.5 s; the feed override drops to 50 % at 1.5 s
+  fs.writeFileSync(path.join(dir, "hold.plc"), "0.5 feedhold on\n1.3 feedhold off\n1.5 feed_override 50\n");
+}
+
+export function expectations(longProgram, blocks, longCaps, out) {
   const sin60 = 30 * Math.sin(Math.PI / 3);  // bolt circle: holes at 60 deg steps, radius 30
   return [
     {
@@ -44,6 +58,42 @@ export function expectations(longProgram, blocks, longCaps) {
       plc: "examples/mill/spindle.plc", minPlots: 4,
       backplots: [{ view: "XY", min: [0, 0, 0], max: [50, 30, 20], tol: 0.01 }],
       wait: { panel: "channel 1: path velocity", reason: "speed_reached", text: /^N\d+ waits \d+\.\d{3} s for S1 speed reached/ },
+      // spindle.plc: the HLI override of S1 is 50 % from the start
+      marks: [{ panel: "spindle S1: speed", kind: "override", t: 0, text: /^0\.000 s: S1 spindle override 50 %$/ }],
+    },
+    {
+      name: "contour-trc", image: "report-contour-trc.png", machine: "examples/mill", programs: ["examples/mill/contour_trc.nc"],
+      minPlots: 2,
+      // the tool centre 5 mm (D1) outside the 60 x 40 rectangle: X -5..65, Y -5..45; the start -20/-20;
+      // Z from the machine zero to Z10 + the tool length 100 (machine coordinates of the spindle nose)
+      backplots: [{ view: "XY", min: [-20, -20, 0], max: [65, 45, 110], tol: 0.02 }],
+      // three compensated stretches, each programmed line 5 mm from the tool centre
+      contour: { runs: 3, radius: 5, tol: 0.05 },
+    },
+    {
+      name: "lathe-trc", machine: "examples/lathe", programs: ["examples/lathe/profile_trc.nc"], minPlots: 2,
+      // the tip of D4 (radius 0.8, cutting-edge position 2) from the machine zero to X30 (D60), radius
+      // values; at the end of N90 Z-40 the nose centre stands over Z-40, its tip 0.8 mm further
+      backplots: [{ view: "ZX", min: [0, null, -40.8], max: [30, null, 5], tol: 0.01 }],
+      // tool 4 has cutting-edge position 2: its tip is 0.8 mm below the nose centre in X and Z
+      contour: { runs: 1, radius: 0.8, tol: 0.01, axes: [0, 2], tip: [-0.8, -0.8] },
+    },
+    {
+      name: "frames", machine: "examples/mill", programs: [path.join(out, "frames.nc")], minPlots: 1,
+      // machine coordinates: G54 (X100 Y50 Z-150) and the rectangle 40 x 20 turned 90 deg about the
+      // program zero: X 80..100, Y 50..90; from the machine zero to Z20 (-130)
+      backplots: [{ view: "XY", min: [0, 0, -145], max: [100, 90, 0], tol: 0.01 }],
+      // program coordinates: the rectangle as programmed, X 0..40 Y 0..20 Z 5..20, and the start (the
+      // machine zero) in the first block's system: -100 / -50 / 150
+      pcs: [{ min: [-100, -50, 5], max: [40, 20, 150], tol: 0.01 }],
+    },
+    {
+      name: "feedhold", machine: "examples/mill", programs: [path.join(out, "hold.nc")], plc: path.join(out, "hold.plc"),
+      minPlots: 1,
+      backplots: [{ view: "XY", min: [0, 0, 0], max: [100, 0, 0], tol: 0.01 }],
+      wait: { panel: "channel 1: path velocity", reason: "feedhold", span: [0.5, 1.3],
+              text: /^N20 held 0\.800 s by the PLC's feedhold \(HLI\)$/ },
+      marks: [{ panel: "channel 1: path velocity", kind: "override", t: 1.5, text: /^1\.500 s: feed override 50 %$/ }],
     },
     {
       name: "lathe", image: "report-lathe.png", machine: "examples/lathe", programs: ["examples/lathe/turn.nc"],

@@ -9,7 +9,7 @@ import { chromium } from "playwright-core";
 import { execFileSync } from "node:child_process";
 import fs from "node:fs";
 import path from "node:path";
-import { caps, expectations, writeCommonProgram } from "./report_cases.mjs";
+import { caps, expectations, writeCommonProgram, writeFrameProgram, writeHoldProgram } from "./report_cases.mjs";
 
 const args = Object.fromEntries(process.argv.slice(2).reduce((acc, a, i, all) => {
   if (a.startsWith("--")) acc.push([a.slice(2), all[i + 1] && !all[i + 1].startsWith("--") ? all[i + 1] : "1"]);
@@ -96,6 +96,8 @@ async function check(browser, c) {
       if (!p) return "no panel " + want.panel;
       const w = p.waits.find((w) => w.reason === want.reason);
       if (!w) return "no wait " + want.reason;
+      if (want.span && (Math.abs(w.t0 - want.span[0]) > 0.002 || Math.abs(w.t1 - want.span[1]) > 0.002))
+        return `the ${want.reason} spans ${w.t0}..${w.t1} s, expected ${want.span[0]}..${want.span[1]}`;
       p.u.root.scrollIntoView({ block: "center" });
       p.u.setScale("x", { min: Math.max(0, w.t0 - 1), max: w.t1 + 1 });
       return "";
@@ -111,12 +113,88 @@ async function check(browser, c) {
     else {
       await page.mouse.move(tipText.x, tipText.y);
       const text = await page.locator(".tip").textContent({ timeout: 2000 }).catch(() => "");
-      if (!c.wait.text.test(text)) fail(name, `hovering the wait shows "${text}", expected ${c.wait.text}`);
+      if (!text.split(" · ").some((part) => c.wait.text.test(part))) fail(name, `hovering the wait shows "${text}", expected ${c.wait.text}`);
       else ok(name, `hovering the wait shows "${text}"`);
       await page.evaluate(() => { for (const p of window.nckReport.plots) p.u.setScale("x", { min: p.u.data[0][0], max: p.u.data[0][p.u.data[0].length - 1] }); window.scrollTo(0, 0); });
       await page.mouse.move(0, 0);
       await page.waitForTimeout(200);
     }
+  }
+  for (const want of c.marks || []) {
+    // zoom round the mark, hover it, read the tooltip
+    const at = await page.evaluate((want) => {
+      const p = window.nckReport.plots.find((p) => p.title === want.panel);
+      if (!p) return "no panel " + want.panel;
+      const m = p.marks.find((m) => m.kind === want.kind && Math.abs(m.t - want.t) < 0.002);
+      if (!m) return `no ${want.kind} mark at ${want.t} s (marks: ${JSON.stringify(p.marks)})`;
+      p.u.root.scrollIntoView({ block: "center" });
+      p.u.setScale("x", { min: m.t - 0.05, max: m.t + 0.05 });
+      return { t: m.t };
+    }, want);
+    if (typeof at === "string") { fail(name, at); continue; }
+    await page.waitForTimeout(200);
+    const xy = await page.evaluate(([want, t]) => {
+      const p = window.nckReport.plots.find((p) => p.title === want.panel);
+      const rect = p.u.over.getBoundingClientRect();
+      return { x: rect.left + p.u.valToPos(t, "x"), y: rect.top + rect.height / 2 };
+    }, [want, at.t]);
+    await page.mouse.move(xy.x, xy.y);
+    const text = await page.locator(".tip").textContent({ timeout: 2000 }).catch(() => "");
+    if (!text.split(" · ").some((part) => want.text.test(part))) fail(name, `hovering the ${want.kind} mark shows "${text}", expected ${want.text}`);
+    else ok(name, `hovering the ${want.kind} mark shows "${text}"`);
+    await page.evaluate(() => { for (const p of window.nckReport.plots) p.u.setScale("x", { min: p.u.data[0][0], max: p.u.data[0][p.u.data[0].length - 1] }); window.scrollTo(0, 0); });
+    await page.mouse.move(0, 0);
+    await page.waitForTimeout(100);
+  }
+  if (c.contour) {
+    // the programmed contour beside the tool-centre path: each programmed segment's middle lies the
+    // tool radius from the path (selection and departure lines left out: they lead onto the contour)
+    const r = await page.evaluate((want) => {
+      const b = window.nckReport.backplots[0];
+      const runs = b.contour, ch = b.ch;
+      const [h, v] = want.axes || [0, 1];  // the plane's axes: X Y, or X Z on a lathe
+      const P = [ch.x, ch.y, ch.z];
+      // the tool-centre path of the same stretch (its blocks' lines): the three contours overlap
+      const dist = (px, py, lines) => {
+        let best = Infinity;
+        for (let i = 1; i < ch.x.length; i++) {
+          if (ch.line[i] < lines[0] || ch.line[i] > lines[1]) continue;
+          const ax = P[h][i - 1], ay = P[v][i - 1], dx = P[h][i] - ax, dy = P[v][i] - ay;
+          const len2 = dx * dx + dy * dy;
+          const f = len2 > 0 ? Math.max(0, Math.min(1, ((px - ax) * dx + (py - ay) * dy) / len2)) : 0;
+          best = Math.min(best, Math.hypot(px - ax - f * dx, py - ay - f * dy));
+        }
+        return best;
+      };
+      const bad = [];
+      let checked = 0;
+      for (const run of runs)
+        for (let k = 2; k < run.x.length - 1; k++) {
+          const R = [run.x, run.y, run.z];
+          const mx = (R[h][k - 1] + R[h][k]) / 2, my = (R[v][k - 1] + R[v][k]) / 2;
+          // a turning tool's trace is its theoretical tip, `tip` away from the nose centre
+          const [sh, sv] = want.tip || [0, 0];
+          const d = dist(mx + sh, my + sv, run.lines);
+          checked++;
+          if (Math.abs(d - want.radius) > want.tol) bad.push(`(${mx.toFixed(3)}, ${my.toFixed(3)}): ${d.toFixed(4)}`);
+        }
+      return { runs: runs.length, checked, bad, drawn: b.el.querySelector(".legend-key.programmed") != null };
+    }, c.contour);
+    if (r.runs !== c.contour.runs) fail(name, `${r.runs} programmed-contour runs, expected ${c.contour.runs}`);
+    if (!r.drawn) fail(name, "no legend for the programmed contour");
+    if (r.checked < 8 || r.bad.length) fail(name, `programmed contour vs tool centre (${r.checked} checked): ${r.bad.slice(0, 5).join("; ")}`);
+    else ok(name, `${r.runs} programmed-contour runs; ${r.checked} segment middles lie ${c.contour.radius} mm from the tool centre`);
+  }
+  for (const [i, want] of (c.pcs || []).entries()) {
+    const got = await page.evaluate((i) => {
+      const b = window.nckReport.backplots[i];
+      b.coords.value = "pcs";
+      b.coords.dispatchEvent(new Event("change"));
+      return b.extents();
+    }, i);
+    const off = [0, 1, 2].filter((a) => Math.abs(got.min[a] - want.min[a]) > want.tol || Math.abs(got.max[a] - want.max[a]) > want.tol);
+    if (off.length) fail(name, `backplot ${i + 1} in program coordinates spans ${JSON.stringify(got)}, expected ${JSON.stringify(want)}`);
+    else ok(name, `backplot ${i + 1} in program coordinates: ${JSON.stringify(got)}`);
   }
   if (c.caps) {
     if (sizeBytes > c.caps.bytes) fail(name, `report is ${sizeBytes} bytes, cap ${c.caps.bytes}`);
@@ -135,7 +213,9 @@ const browser = await chromium.launch({ executablePath: chromiumPath, headless: 
 try {
   const longProgram = path.join(out, `common_${blocks}.nc`);
   writeCommonProgram(longProgram, blocks);
-  for (const c of expectations(longProgram, blocks, caps(blocks))) await check(browser, c);
+  writeFrameProgram(path.join(out, "frames.nc"));
+  writeHoldProgram(out);
+  for (const c of expectations(longProgram, blocks, caps(blocks), out)) await check(browser, c);
 } catch (e) {
   fail("browser test", e.stack || String(e));
 } finally {

@@ -269,6 +269,8 @@ struct ToolRecord {               // wz[i]; lengths in mm (inch lists converted)
   bool tool_fixed = false;
   std::uint32_t log_ax_nr_spdl = 0;
   double vb_min_rpm = 0, vb_max_rpm = 0, a_max_deg_s2 = 0;
+  std::uint32_t typ = 0;       // P-TOOL-00001: 0 milling, 1 turning, 2 grinding, 3 wire
+  std::uint32_t srk_lage = 0;  // P-TOOL-00002: cutting-edge position 1..9 of a turning tool (0 = none)
 };
 
 struct ZeroOffsets {              // nullp list

@@ -48,6 +48,9 @@ struct Command {
   bool has_n = false;
   std::int64_t n = 0;
   bool emit_block_event = true;  // false for follow-up commands of one block
+  // PlanStore::frames index of the block's program -> machine map, handed on
+  // in the block event (kNoMessage: not recorded)
+  std::uint32_t frame_index = kNoMessage;
   // motion: the segment is in machine coordinates, or in program
   // coordinates mapped by `map` when a rotation acts (mapped == true)
   motion::Segment segment{};
@@ -133,6 +136,12 @@ struct Command {
   std::array<char, 32> dist_var{};
   bool dist_check_sw = false;
   double dist_sw_neg_mm = 0, dist_sw_pos_mm = 0;
+  // Tool radius compensation changed with this block (a `trc` event when it
+  // starts): 0 G40, 1 G41, 2 G42, the D in force and its tool radius.
+  bool trc_event = false;
+  std::uint8_t trc_state = 0;
+  std::int32_t trc_d = 0;
+  double trc_radius_mm = 0;
 };
 
 }  // namespace nck::kernel

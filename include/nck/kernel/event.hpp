@@ -24,6 +24,7 @@ enum class EventKind : std::uint8_t {
   error,
   end,        // program end of a channel
   dist_ctrl,  // 3D distance control changed state (dist_state)
+  trc,        // tool radius compensation selected, deselected or its D changed (trc_*)
 };
 
 inline constexpr std::uint32_t kNoMessage = 0xFFFFFFFFu;
@@ -45,7 +46,8 @@ struct Event {
   // warning / error
   ErrorId id{};
   std::uint32_t message_index = 0;  // Kernel::message(), text prepared outside the cycle
-                                    // (kNoMessage: the ID's table text)
+                                    // (kNoMessage: the ID's table text); block: the
+                                    // PlanStore::frames index of its map (kNoMessage: none)
   // plc_out / plc_ack / wait
   FunctionKind fn = FunctionKind::none;
   std::int32_t fn_number = 0;       // M3, T5 ...
@@ -65,6 +67,10 @@ struct Event {
   std::uint8_t link_reason = 0;
   // dist_ctrl: distctrl::State
   std::uint8_t dist_state = 0;
+  // trc: 0 G40, 1 G41, 2 G42; the D in force and its tool radius
+  std::uint8_t trc_state = 0;
+  std::int32_t trc_d = 0;
+  double trc_radius_mm = 0;
 };
 
 enum class WaitReason : std::uint8_t {

@@ -66,6 +66,17 @@ struct Corner {
 // The corner at the point where a ends and b starts.
 Corner corner(const Element& a, const Element& b, double o);
 
+// G25: the straight transition round an outside corner. The tangents of
+// the two offset elements, ta at end_a and tb at start_b, are extended: up
+// to a 90 deg turn to the point where they meet (one point); beyond it each
+// by the tool radius r, joined by a line (two points). The path runs
+// end_a -> p[0] (-> p[1]) -> start_b.
+struct LinearCorner {
+  int n = 0;
+  Vec2 p[2];
+};
+LinearCorner linear_corner(Vec2 end_a, Vec2 ta, Vec2 start_b, Vec2 tb, double r);
+
 // Angle swept from s to e about c in the element's direction, in (0, 2*pi];
 // s == e gives a full turn.
 double sweep_rad(Vec2 c, Vec2 s, Vec2 e, bool ccw);
@@ -74,5 +85,13 @@ double sweep_rad(Vec2 c, Vec2 s, Vec2 e, bool ccw);
 // backwards along the contour, cutting into it (a slot narrower than the
 // tool, a step smaller than the tool radius between two inside corners).
 bool keeps_direction(const Element& programmed, Vec2 s, Vec2 e);
+
+// Whether two pieces of a tool-centre path (a line from start to end, or an
+// arc about center) cross at a point inside both, more than 1e-6 mm from
+// their ends: the offset contour runs over itself, so the tool would cut
+// into the part there (a bottleneck between blocks that are not
+// neighbours). Pieces on one line or one circle never count; a piece of
+// zero length neither.
+bool pieces_cross(const Element& p, const Element& q);
 
 }  // namespace nck::motion::trc

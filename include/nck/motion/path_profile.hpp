@@ -68,6 +68,8 @@ class PathProfile {
   double s_mm_ = 0.0;
   double v_mm_s_ = 0.0;
   double carry_mm_ = 0.0;  // distance run past the previous segment's end
+  bool passed_in_ = false;         // the next step is the first after passing in
+  PathLimits first_step_limits_{};  // the segment passed in from
   bool finished_ = true;
   double v_limit_mm_s_ = -1.0;  // < 0: none
   bool override_ignored_ = false;
@@ -81,6 +83,13 @@ double discrete_brake_velocity(double remaining_mm, double a_mm_s2, double dt_s)
 // Distance covered when braking from v to standstill in that discrete way
 // (the inverse of discrete_brake_velocity). rt
 double discrete_brake_distance(double v_mm_s, double a_mm_s2, double dt_s) noexcept;
+
+// How far beyond its end the braking staircase of a segment that ends at
+// v_end > 0 would come to rest (negative: before it). The profile reaches
+// v_end two cycles before the end and holds it there, so the cycle that
+// passes into the next segment, lying on both, does not change the speed as
+// well (docs/decisions.md, corner blending). 0 for v_end = 0. rt
+double pass_brake_distance(double v_end_mm_s, double a_mm_s2, double dt_s) noexcept;
 
 // Analytic (continuous-time) duration of a rest-to-rest trapezoid or
 // triangle: for tests and estimates. 0 for length 0; +infinity when the

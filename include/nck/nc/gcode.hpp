@@ -21,6 +21,7 @@ enum class GCode : std::uint16_t {
   g93 = 93, g94 = 94, g95 = 95, g194 = 194,
   g96 = 96, g97 = 97,
   g40 = 40, g41 = 41, g42 = 42,
+  g25 = 25, g26 = 26,  // outside-corner transitions of radius compensation: lines / arcs
   g51 = 51, g52 = 52,
   g70 = 70, g71 = 71,
   // zero offsets (G159=<n> selects any entry), circle centre, manual mode

@@ -38,6 +38,7 @@ struct ModalState {
   bool exact_stop = false;              // G360 (true) / G359 (false, initial)
   bool contour = false;                 // G261 (true) / G260 (false, initial): corner blending
   double contour_dev_mm = 0.01;         // #CONTOUR MODE [DEV PATH_DEV=..] (docs/decisions.md)
+  bool trc_arc_corners = false;         // G26 (true) / G25 (false, initial): TRC outside corners
 };
 
 }  // namespace nck::nc

@@ -21,6 +21,7 @@
 #include "nck/nc/decoder.hpp"
 #include "nck/prep/lookahead_window.hpp"
 #include "nck/prep/plan_store.hpp"
+#include "nck/prep/prep_observer.hpp"
 #include "nck/prep/radius_comp.hpp"
 
 namespace nck::prep {
@@ -29,6 +30,9 @@ class Planner;
 
 struct PrepOptions {
   std::uint32_t clamp_index = 0;  // clamp-offset group at program start (pzv_grp[i], --clamp-index)
+  // Each command carries its block's program -> machine map (PlanStore::frames)
+  // into the block event: the report's program-coordinate backplot.
+  bool record_frames = false;
 };
 
 class ChannelPrep {
@@ -61,6 +65,9 @@ class ChannelPrep {
   const nc::Decoder* decoder() const { return decoder_ ? &*decoder_ : nullptr; }
   const Planner& planner() const { return *planner_; }
 
+  // setup: watches every decoded block (nullptr: none); it must outlive the run.
+  void set_observer(PrepObserver* o) { observer_ = o; }
+
   // Does executing b produce feedback that later blocks may read?
   static bool needs_feedback(const nc::Block& b);
 
@@ -87,6 +94,11 @@ class ChannelPrep {
   bool done_ = false;
   bool awaiting_feedback_ = false;
   std::uint32_t last_main_line_ = 0;  // of the main program's last block decoded
+  // record_frames: the store and the last map put there
+  PlanStore* store_ = nullptr;
+  std::uint32_t frame_index_ = kernel::kNoMessage;
+  PrepObserver* observer_ = nullptr;
+  std::uint32_t frame_index_now();
 };
 
 }  // namespace nck::prep

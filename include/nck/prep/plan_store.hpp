@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "nck/kernel/affine_map.hpp"
+
 namespace nck::prep {
 
 struct OffsetPayload {
@@ -22,6 +24,9 @@ struct PlanStore {
   std::vector<std::string> messages;
   std::vector<OffsetPayload> offsets;
   std::vector<LinkPayload> links;
+  // Program -> machine maps of executed blocks (block events' message_index),
+  // recorded only for a report (PrepOptions::record_frames).
+  std::vector<kernel::AffineMap> frames;
 
   std::uint32_t add_message(std::string m) {
     messages.push_back(std::move(m));
@@ -30,6 +35,10 @@ struct PlanStore {
   std::uint32_t add_offset(OffsetPayload p) {
     offsets.push_back(std::move(p));
     return static_cast<std::uint32_t>(offsets.size() - 1);
+  }
+  std::uint32_t add_frame(const kernel::AffineMap& m) {
+    frames.push_back(m);
+    return static_cast<std::uint32_t>(frames.size() - 1);
   }
   std::uint32_t add_link(LinkPayload p) {
     links.push_back(std::move(p));

@@ -48,6 +48,8 @@ class Planner final : public nc::KernelStateReader {
   BlendAxes blend_axes() const;
   std::size_t axis_count() const { return n_axes_; }
   const ChannelFrames& frames() const { return frames_; }
+  // #DIST CTRL ON/FREEZE has been prepared in this run (the sensor is needed from now on).
+  bool dist_ctrl_programmed() const { return dist_programmed_; }
   // Where the machine axes stand when everything planned so far has run.
   const motion::AxisVector& planned_mcs() const { return mcs_; }
   // The programmed position (program coordinates, radii) after everything
@@ -175,6 +177,7 @@ class Planner final : public nc::KernelStateReader {
   // #DIST CTRL (planner_dist.cpp)
   bool plan_dist(const nc::Block& b, Command& c, Command& error);
   bool dist_on_ = false;            // ON (or FREEZE) programmed and not OFF since
+  bool dist_programmed_ = false;    // ON (or FREEZE) prepared at least once
   std::int8_t dist_source_ = 0;     // 0 the sim.lis sensor, 1 a channel variable
   bool dist_var_known_ = false;     // SENSOR_VAR given
   bool plan_cax_on(const nc::Block& b, const nc::CAxis& a, Command& c, Command& error);

@@ -43,6 +43,9 @@ class RadiusComp {
   // At most this many blocks without plane motion may follow a compensated
   // element before the next one (TF5200 90011 beyond).
   static constexpr std::size_t kMaxHeld = 8;
+  // A compensated element leaves only when this many elements after it have
+  // been checked against it for crossings (docs/decisions.md "Bottlenecks").
+  static constexpr std::size_t kCheckDepth = 8;
 
   RadiusComp(const config::Machine& m, std::size_t channel);
 
@@ -57,6 +60,18 @@ class RadiusComp {
   void discard() { queue_.clear(); }
   bool holding() const { return !queue_.empty(); }
 
+  // The compensation state a block handed on carries (for the `trc` event):
+  // 0 G40, 1 G41, 2 G42, the D in force and its tool radius.
+  struct State {
+    std::uint8_t g = 0;
+    std::int32_t d = 0;
+    double radius_mm = 0;
+  };
+  // b's state when it differs from the one reported last (selection,
+  // deselection, a side change, a new D while active); call it for the
+  // blocks in the order they run.
+  std::optional<State> report(const nc::Block& b);
+
  private:
   using Vec2 = motion::trc::Vec2;
   using Element = motion::trc::Element;
@@ -70,9 +85,14 @@ class RadiusComp {
     nc::Block block;
     Element prog;
     double o = 0;  // signed offset (left positive)
+    Vec2 tip;      // theoretical tip minus nose centre of a turning tool (cutting_edge.hpp)
     Role role = Role::contour;
+    // Where the nose centre starts / ends (the block's words get these plus tip).
     Vec2 comp_start, comp_end;
-    std::optional<nc::Block> arc_before;  // corner arc into this element
+    // The transition round the outside corner into this element (an arc, or
+    // G25 lines) and its pieces in nose-centre space.
+    std::vector<nc::Block> before;
+    std::vector<Element> before_pieces;
     std::vector<nc::Block> held;          // blocks without plane motion after it
   };
 
@@ -82,10 +102,14 @@ class RadiusComp {
   std::optional<Element> element_of(const nc::Block& b, const Planner& planner, ErrorId& id,
                                     std::string& why) const;
   double offset_of(const nc::Block& b) const;
+  std::optional<Vec2> tip_of(const nc::Block& b, std::string& why) const;
   bool close_last(Item& next, std::vector<TrcOut>& out);
   bool check_last(std::vector<TrcOut>& out);
+  bool check_crossings(std::vector<TrcOut>& out);
   void emit_front(std::vector<TrcOut>& out);
   nc::Block rewrite(const Item& p) const;
+  void outside_corner(Item& last, Item& next, const motion::trc::Corner& k);
+  nc::Block corner_line(const nc::Block& before, const nc::Block& after, Vec2 from, Vec2 to) const;
   nc::Block corner_arc(const nc::Block& before, const nc::Block& after, Vec2 center, Vec2 from, Vec2 to,
                        bool ccw) const;
   void set_plane_words(nc::Block& r, Vec2 from, Vec2 to) const;
@@ -94,14 +118,16 @@ class RadiusComp {
   std::vector<config::ToolRecord> tools_;
   std::vector<std::string> axis_names_;
   const Planner* planner_ = nullptr;  // the one of the last push (diameter words)
-  // At most two items: the last one's end waits for the next motion; the
-  // one before it leaves only once the last one is known to be sound, so
-  // a bottleneck stops the program before the tool nears it.
+  // At most kCheckDepth + 1 items: the last one's end waits for the next
+  // motion; the ones before it leave only once kCheckDepth later elements
+  // are known to be sound, so a bottleneck stops the program before the
+  // tool nears it.
   std::vector<Item> queue_;
   Plane plane_ = Plane::g17;
   int ax_a_ = -1, ax_b_ = -1;    // channel axes of the plane
   std::size_t ia_ = 0, ib_ = 1;  // their I/J/K indices
   Vec2 prog_;                    // programmed end of the last plane motion
+  State reported_;               // the state of the last trc event (G40 at the start)
 };
 
 }  // namespace nck::prep

@@ -31,6 +31,7 @@ namespace nck::sim {
 
 struct DryRunOptions {
   std::uint32_t clamp_index = 0;  // clamp-offset group at program start (--clamp-index)
+  bool record_frames = false;     // blocks carry their program -> machine map (--report)
 };
 
 // What a channel knows about its programmed state, for --final.
@@ -81,6 +82,10 @@ class DryRun {
   const std::string& message(std::uint32_t index) const;
   const prep::OffsetPayload& offset(std::uint32_t index) const;
   const prep::LinkPayload& link(std::uint32_t index) const;
+  // A block event's program -> machine map (record_frames; nullptr: none).
+  const kernel::AffineMap* frame(std::uint32_t index) const;
+  // setup: watches channel ch's decoded blocks (the report's programmed contour).
+  void observe(std::size_t ch, prep::PrepObserver* o) { preps_.at(ch).set_observer(o); }
 
  private:
   DryRun() = default;

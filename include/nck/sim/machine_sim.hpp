@@ -36,6 +36,11 @@ class MachineSim {
   void read(double t_s, kernel::TickInput& in) noexcept;
   // rt: the kernel's outputs of the cycle just computed.
   void write(const kernel::TickOutput& out) noexcept;
+  // The distance sensor of channel ch delivers values from now on (before,
+  // its input stays invalid: sampling it costs more than the rest of the sim).
+  void switch_sensor_on(std::size_t ch) noexcept {
+    if (ch < sensor_on_.size()) sensor_on_[ch] = true;
+  }
 
   // The HLI image as the PLC sees it: controls as the PLC (scenario) set
   // them, spindle status as the CNC last wrote it.
@@ -51,6 +56,7 @@ class MachineSim {
   ScenarioPlayer player_;
   std::array<Probe, config::kMaxChannels> probes_{};
   std::array<DistanceSensor, config::kMaxChannels> sensors_{};
+  std::array<bool, config::kMaxChannels> sensor_on_{};  // sampled only once a program needs it
   std::array<bool, config::kMaxChannels> probe_switched_{};  // in the last cycle
   std::size_t channels_ = 0;
   std::size_t spindles_ = 0;

@@ -80,6 +80,7 @@ class SpindleAxis {
   // tick.cpp
   void ramp_to(double target_deg_s, double dt) noexcept;
   void advance(double step_deg) noexcept;
+  bool at_rest() const noexcept;
   void tick_rotate(double dt) noexcept;
   void tick_position(double dt) noexcept;
   void plan_positioning(double dt) noexcept;

@@ -2,6 +2,8 @@
 // Running the nck binary from tests and reading what it wrote.
 #include <algorithm>
 #include <array>
+#include <chrono>
+#include <csignal>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -10,6 +12,8 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -36,6 +40,22 @@ inline CliResult run_shell(const std::string& cmd) {
 }
 
 // args may carry shell redirections of their own.
+// Starts the shell command `cmd` (stderr dropped), sends it `sig` after
+// `after_ms` and returns the status waitpid reports (-1: it did not start).
+inline int run_and_signal(const std::string& cmd, int sig, int after_ms = 700) {
+  const pid_t pid = fork();
+  if (pid < 0) return -1;
+  if (pid == 0) {
+    execl("/bin/sh", "sh", "-c", ("exec " + cmd + " 2>/dev/null").c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(after_ms));
+  kill(pid, sig);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return status;
+}
+
 inline CliResult run_nck_raw(const std::string& args) { return run_shell(std::string(NCK_BINARY) + " " + args); }
 
 // stdout and stderr together.

@@ -4,7 +4,6 @@
 
 #include <chrono>
 #include <csignal>
-#include <thread>
 
 #include "cli_helpers.hpp"
 
@@ -154,16 +153,7 @@ TEST(Robustness, SignalsEndTheRunWithCompleteFiles) {
     const std::string cmd = std::string(NCK_BINARY) + " run " + mill() + " " + mill() +
                             "/contour.nc --realtime --events " + (dir / "e.jsonl").string() + " --trace " +
                             (dir / "t.csv").string() + " --final " + (dir / "f.json").string();
-    const pid_t pid = fork();
-    ASSERT_GE(pid, 0);
-    if (pid == 0) {
-      execl("/bin/sh", "sh", "-c", ("exec " + cmd + " 2>/dev/null").c_str(), static_cast<char*>(nullptr));
-      _exit(127);
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(700));
-    kill(pid, sig);
-    int status = 0;
-    waitpid(pid, &status, 0);
+    const int status = run_and_signal(cmd, sig);
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), sig == SIGINT ? 130 : 143);
     const auto events = read_jsonl(dir / "e.jsonl");  // every line complete JSON

@@ -8,92 +8,12 @@
 #include <cmath>
 #include <map>
 
-#include "cli_helpers.hpp"
+#include "trc_helpers.hpp"
 
 namespace nck::app {
 namespace {
 
-using namespace testing;
-using nlohmann::json;
-
-// F600 = 10 mm/s: a block's last cycle is at most 0.01 mm from its end.
-constexpr double kTol = 0.011;
-
-struct TrcRun {
-  CliResult cli;
-  std::filesystem::path dir;
-  std::vector<std::string> cols;             // trace header
-  std::vector<std::vector<double>> rows;     // trace, every cycle
-  std::map<long, double> block_t;            // N -> start time
-  std::vector<json> errors;
-  json final_state;
-};
-
-TrcRun run(const std::string& machine, const std::filesystem::path& program, const std::filesystem::path& dir) {
-  TrcRun r;
-  r.dir = dir;
-  r.cli = run_nck("run " + root() + "/examples/" + machine + " " + program.string() + " --events " +
-                  (dir / "e.jsonl").string() + " --trace " + (dir / "t.csv").string() + " --final " +
-                  (dir / "f.json").string());
-  const auto lines = split(read_file(dir / "t.csv"), '\n');
-  if (!lines.empty()) r.cols = split(lines[0], ',');
-  for (std::size_t i = 1; i < lines.size(); ++i) {
-    if (lines[i].empty()) continue;
-    std::vector<double> row;
-    for (const std::string& c : split(lines[i], ',')) row.push_back(std::stod(c));
-    r.rows.push_back(row);
-  }
-  for (const json& e : read_jsonl(dir / "e.jsonl")) {
-    if (e["ev"] == "block" && !e["n"].is_null()) r.block_t[e["n"].get<long>()] = e["t"];
-    if (e["ev"] == "error") r.errors.push_back(e);
-  }
-  if (std::filesystem::exists(dir / "f.json")) r.final_state = json::parse(read_file(dir / "f.json"));
-  return r;
-}
-
-TrcRun run_text(const std::string& machine, const std::string& name, const std::string& program) {
-  const auto dir = temp_dir(name);
-  std::ofstream(dir / "p.nc") << program;
-  return run(machine, dir / "p.nc", dir);
-}
-
-std::size_t col(const TrcRun& r, const std::string& name) {
-  for (std::size_t i = 0; i < r.cols.size(); ++i)
-    if (r.cols[i] == name) return i;
-  ADD_FAILURE() << "no trace column " << name;
-  return 0;
-}
-
-// The row of the last cycle before block n starts: where everything before it ended.
-const std::vector<double>& before_block(const TrcRun& r, long n) {
-  const double t = r.block_t.at(n);
-  std::size_t i = 0;
-  while (i + 1 < r.rows.size() && r.rows[i + 1][0] < t - 1e-9) ++i;
-  return r.rows[i];
-}
-
-struct Point {
-  long n;       // block
-  double a, b;  // where the tool centre is when it starts
-};
-
-void expect_points(const TrcRun& r, const std::string& a, const std::string& b, const std::vector<Point>& pts) {
-  const std::size_t ca = col(r, a), cb = col(r, b);
-  for (const Point& p : pts) {
-    ASSERT_TRUE(r.block_t.count(p.n)) << "no block event N" << p.n;
-    const auto& row = before_block(r, p.n);
-    EXPECT_NEAR(row[ca], p.a, kTol) << a << " before N" << p.n;
-    EXPECT_NEAR(row[cb], p.b, kTol) << b << " before N" << p.n;
-  }
-}
-
-// Trace rows in [start of n0, start of n1).
-std::vector<std::vector<double>> between(const TrcRun& r, long n0, long n1) {
-  std::vector<std::vector<double>> out;
-  for (const auto& row : r.rows)
-    if (row[0] >= r.block_t.at(n0) - 1e-9 && row[0] < r.block_t.at(n1) - 1e-9) out.push_back(row);
-  return out;
-}
+using namespace trc_testing;
 
 TEST(Trc, MillContoursFollowTheToolCentrePathsWorkedOutByHand) {
   const auto dir = temp_dir("trc-mill");
@@ -143,7 +63,7 @@ TEST(Trc, MillContoursFollowTheToolCentrePathsWorkedOutByHand) {
 // inserted corner arcs included (mill: vb_max 500 mm/s, a_max X/Y 3000 mm/s^2).
 TEST(Trc, AxisLimitsHoldOnTheCompensatedPath) {
   const TrcRun r = run_text("mill", "trc-limits",
-                         "N10 G17 G90 D1\nN20 G0 X-20 Y-20\n"
+                         "N10 G17 G90 G26 D1\nN20 G0 X-20 Y-20\n"
                          "N30 G41 G1 X0 Y0 F20000\nN40 Y40\nN50 X60\nN60 G2 X60 Y0 I0 J-20\nN70 G1 X0\n"
                          "N80 G40 G1 X-20 Y-20\nN90 M30\n");
   ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
@@ -242,7 +162,7 @@ TEST(Trc, IncrementalWordsAreRewrittenAsIncrements) {
   // The rectangle of contour_trc.nc in G91, its right side a half circle
   // R20 (tangent to top and bottom): the tool runs it at R25.
   const TrcRun r = run_text("mill", "trc-g91",
-                            "N10 G17 G90 D1\nN20 G0 X-20 Y-20\nN30 G91 G41 G1 X20 Y20 F600\nN40 Y40\nN50 X60\n"
+                            "N10 G17 G90 G26 D1\nN20 G0 X-20 Y-20\nN30 G91 G41 G1 X20 Y20 F600\nN40 Y40\nN50 X60\n"
                             "N60 G2 X0 Y-40 I0 J-20\nN70 G1 X-60\nN80 G40 X-20 Y-20\nN90 G90 G0 X0 Y0\nN100 M30\n");
   ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
   expect_points(r, "X", "Y", {{40, -5, 0}, {50, 0, 45}, {60, 60, 45}, {70, 60, -5}, {80, 0, -5}, {90, -20, -20}});
@@ -256,23 +176,41 @@ TEST(Trc, LatheProfileWithChamferAndRadius) {
   ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
   EXPECT_TRUE(r.errors.empty());
   // G42 in the Z X plane, nose radius 0.8, X in radius (the program's
-  // diameters halved). Chamfer 45 deg: its offset is 0.8 / sqrt(2) in Z and X.
-  const double h = 0.8 / std::sqrt(2.0);
+  // diameters halved). The nose centre S runs 0.8 off the contour; tool 4
+  // has cutting-edge position 2, so the offsets (and the trace) follow the
+  // theoretical tip P = S + (-0.8, -0.8) in (Z, X). Chamfer 45 deg: S is
+  // 0.8 / sqrt(2) off it in Z and X.
+  const double h = 0.8 / std::sqrt(2.0), e = 0.8;
   expect_points(r, "Z", "X",
-                {{50, 0 + h, 8 + h},   // N40 links onto the chamfer's offset start
-                 {60, -2, 10.8},       // N50 + the arc R0.8 about Z-2 X10 (outside corner)
-                 {70, -20, 10.8},      // N60, cylinder D20 at X10 + 0.8
-                 {80, -24.2, 15},      // N70, the fillet R5 run at R4.2 about Z-20 X15
-                 {90, -25, 20.8},      // N80 face + the arc about Z-25 X20
-                 {100, -40, 20.8},     // N90 ends square to its end
-                 {110, -40, 25}});     // N100 G40 to the programmed X50 (diameter)
+                {{50, 0 + h - e, 8 + h - e},  // N40 links onto the chamfer's offset start
+                 {60, -2 - e, 10.8 - e},      // N50 + the arc R0.8 about Z-2 X10 (outside corner)
+                 {70, -20 - e, 10},           // N60, cylinder D20: P on X10 (radius)
+                 {80, -24.2 - e, 15 - e},     // N70, the fillet R5 run at R4.2 about Z-20 X15
+                 {90, -25 - e, 20.8 - e},     // N80 face + the arc about Z-25 X20
+                 {100, -40 - e, 20},          // N90 ends square to its end
+                 {110, -40, 25}});            // N100 G40: P on the programmed X50 (diameter)
   const std::size_t z = col(r, "Z"), x = col(r, "X");
-  for (const auto& row : between(r, 70, 80)) EXPECT_NEAR(std::hypot(row[z] + 20, row[x] - 15), 4.2, 1e-6);
-  // The chamfer's corner arc keeps 0.8 mm from the corner Z-2 X10.
+  // The fillet: S at 4.2 from its centre Z-20 X15.
+  for (const auto& row : between(r, 70, 80)) EXPECT_NEAR(std::hypot(row[z] + e + 20, row[x] + e - 15), 4.2, 1e-6);
+  // The chamfer's corner arc keeps S 0.8 mm from the corner Z-2 X10.
   for (const auto& row : between(r, 50, 60))
-    if (row[z] < -2 + h - 1e-6) {
-      EXPECT_NEAR(std::hypot(row[z] + 2, row[x] - 10), 0.8, 1e-6);
+    if (row[z] < -2 + h - e - 1e-6) {
+      EXPECT_NEAR(std::hypot(row[z] + e + 2, row[x] + e - 10), 0.8, 1e-6);
     }
+  // Longitudinal cut (N60, D20) and end face (N80 at Z-25, before its
+  // corner arc): the tip P touches the programmed line.
+  int on_line = 0, on_face = 0;
+  for (const auto& row : between(r, 60, 70)) {
+    EXPECT_NEAR(row[x], 10, 1e-9) << row[0];
+    ++on_line;
+  }
+  for (const auto& row : between(r, 80, 90))
+    if (row[x] <= 20 - e + 1e-9) {
+      EXPECT_NEAR(row[z], -25, 1e-9) << row[0];
+      ++on_face;
+    }
+  EXPECT_GT(on_line, 1000);  // 18 mm at F200 = 3.3 mm/s
+  EXPECT_GT(on_face, 100);
   EXPECT_EQ(r.final_state["channels"][0]["trc"], "G40");
   EXPECT_EQ(r.final_state["channels"][0]["tool"]["d"], 4);
 }

@@ -136,5 +136,23 @@ TEST(CornerBlend, NoFilletWhereNoneBelongs) {
   EXPECT_FALSE(blend_corner(a, helix, 0.05, 5, 5));
 }
 
+// Two ccw arcs with a gentle right kink (from a random program that broke
+// the blend): every radius fits, the fillet tends to the arcs' common
+// tangent. The radius stops at 10 m, where the fillet is still computed
+// exactly (an unbounded search gave 7e14 mm and set points 0.1 mm off).
+TEST(CornerBlend, GentleKinkBetweenArcsKeepsAFiniteExactFillet) {
+  const Segment a = arc(p3(-9.634, 9.988), p3(20.840, 22.069), 5.603, 16.0285, true);
+  const Segment b = arc(p3(20.840, 22.069), p3(-29.138, 8.678), -4.149, 15.3735, true);
+  const auto cb = blend_corner(a, b, 0.05, 0.45 * a.length(), 0.45 * b.length());
+  ASSERT_TRUE(cb);
+  EXPECT_LE(cb->radius_mm, 1e4);
+  EXPECT_GT(cb->radius_mm, 1e3);
+  expect_joined(*cb);
+  AxisVector p{};
+  cb->fillet.point_at(0.001, p);
+  EXPECT_NEAR(std::hypot(p[0] - cb->fillet.start_point()[0], p[1] - cb->fillet.start_point()[1]), 0.001, 1e-6);
+  EXPECT_LE(max_deviation(*cb, a, b), 0.05 + 1e-6);
+}
+
 }  // namespace
 }  // namespace nck::motion

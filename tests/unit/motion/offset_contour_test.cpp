@@ -102,5 +102,53 @@ TEST(OffsetContour, SweepAndDirection) {
                                {5 * std::cos(10 * deg), 5 * std::sin(10 * deg)}));
 }
 
+
+TEST(OffsetContour, PiecesCross) {
+  // Two lines crossing at X23 Y-5 inside both.
+  EXPECT_TRUE(pieces_cross(line({25, 0}, {21, -10}), line({21, 0}, {25, -10})));
+  // ... but not where the crossing lies beyond one of them.
+  EXPECT_FALSE(pieces_cross(line({25, 0}, {24, -2.5}), line({21, 0}, {25, -10})));
+  // Touching at a shared end (a closed contour) and parallel lines: no crossing.
+  EXPECT_FALSE(pieces_cross(line({0, 0}, {10, 0}), line({10, 0}, {10, 10})));
+  EXPECT_FALSE(pieces_cross(line({0, 0}, {10, 0}), line({0, 1}, {10, 1})));
+  EXPECT_FALSE(pieces_cross(line({0, 0}, {10, 0}), line({5, 0}, {15, 0})));
+  // A line through a quarter arc R5 about the origin (X0..5, Y0..5): it
+  // meets the circle at X3 Y4 (on the arc) and X3 Y-4 (not on it).
+  const Element q = arc({5, 0}, {0, 5}, {0, 0}, true);
+  EXPECT_TRUE(pieces_cross(q, line({3, -6}, {3, 6})));
+  EXPECT_FALSE(pieces_cross(q, line({3, -6}, {3, 0})));
+  // The same line against the arc run the other way round (the other
+  // three quarters, clockwise from X5 Y0 to X0 Y5): it meets X3 Y-4.
+  EXPECT_TRUE(pieces_cross(arc({5, 0}, {0, 5}, {0, 0}, false), line({3, -6}, {3, 0})));
+  // Tangent touch (a slot exactly as wide as the tool): no crossing.
+  const double m = 5 / std::sqrt(2.0);  // the arc's middle, tangent direction (-1, 1)
+  EXPECT_FALSE(pieces_cross(q, line({m + 1, m - 1}, {m - 1, m + 1})));
+  EXPECT_TRUE(pieces_cross(q, line({m + 1, m - 1.1}, {m - 1, m + 0.9})));
+  // Two arcs R5 about X20 Y0 and X26 Y0 meet at X23 Y4 and X23 Y-4.
+  EXPECT_TRUE(pieces_cross(arc({20, 5}, {25, 0}, {20, 0}, false), arc({21, 0}, {26, 5}, {26, 0}, false)));
+  // The second arc run the long way (clockwise from X26 Y5 to X21 Y0, by
+  // X31 Y0 and X26 Y-5): it passes X23 Y-4 only, which the first does not reach.
+  EXPECT_FALSE(pieces_cross(arc({20, 5}, {25, 0}, {20, 0}, false), arc({26, 5}, {21, 0}, {26, 0}, false)));
+}
+
+TEST(OffsetContour, LinearCornerOfG25) {
+  // Turn of 90 deg: tangents +X from X0 Y5 and -Y into X5 Y0 meet at X5 Y5.
+  LinearCorner lc = linear_corner({0, 5}, {1, 0}, {5, 0}, {0, -1}, 5);
+  ASSERT_EQ(lc.n, 1);
+  expect_near(lc.p[0], {5, 5});
+  // Turn of 45 deg: +X from X0 Y5 and (1, -1)/sqrt 2 into the offset start
+  // X5/sqrt2 Y5/sqrt2 of a corner at the origin: they meet on Y5 at X5 tan 22.5.
+  const double h = 5 / std::sqrt(2.0);
+  lc = linear_corner({0, 5}, {1, 0}, {h, h}, {1 / std::sqrt(2.0), -1 / std::sqrt(2.0)}, 5);
+  ASSERT_EQ(lc.n, 1);
+  expect_near(lc.p[0], {5 * std::tan(std::numbers::pi / 8), 5});
+  // Reversal (180 deg): +X ending at X10 Y5, -X starting at X10 Y-5: both
+  // extended by 5 to X15, joined by a line.
+  lc = linear_corner({10, 5}, {1, 0}, {10, -5}, {-1, 0}, 5);
+  ASSERT_EQ(lc.n, 2);
+  expect_near(lc.p[0], {15, 5});
+  expect_near(lc.p[1], {15, -5});
+}
+
 }  // namespace
 }  // namespace nck::motion::trc

@@ -81,6 +81,30 @@ TEST(NcSubprograms, FileCacheIsUsedAndNoticesChanges) {
   EXPECT_EQ(r.status, Decoder::Status::end);
 }
 
+// A local subroutine called in a loop is read from memory after the first
+// call, not from its file again on every pass (which cost a file open and
+// read per call: fuzz finding decoder-timeout-9f79e3f6). Proof: an edit of
+// the file after the first call does not reach the later calls.
+TEST(NcSubprograms, LocalSubroutineTextIsReadOncePerRun) {
+  auto dir = temp_dir();
+  const std::string text = "%L S\nX1\nM17\n%MAIN\n$FOR P1 = 1, 50\nLL S\n$ENDFOR\nM30\n";
+  auto p = write_file(dir / "main.nc", text);
+  Decoder dec(p, default_config());
+  auto r = dec.next();
+  ASSERT_EQ(r.status, Decoder::Status::block);
+  EXPECT_DOUBLE_EQ(*r.block.axes[0], 1);
+  std::string edited = text;
+  edited[6] = '9';  // "%L S\nX9": same size and offsets
+  write_file(p, edited);
+  int n = 1;
+  while ((r = dec.next()).status == Decoder::Status::block && !r.block.program_end) {
+    ASSERT_TRUE(r.block.axes[0]);
+    EXPECT_DOUBLE_EQ(*r.block.axes[0], 1) << "call " << n + 1;
+    ++n;
+  }
+  EXPECT_EQ(n, 50);
+}
+
 TEST(NcSubprograms, CacheBoundsAreKept) {
   auto dir = temp_dir();
   write_file(dir / "a.nc", "X1\nM17\n");

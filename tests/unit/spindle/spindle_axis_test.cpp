@@ -373,5 +373,27 @@ TEST(SpindleAxis, PlcSpindleWithoutAxisListRuns) {
   EXPECT_NEAR(s.status().set_rpm, 20, 1e-9);
 }
 
+// A stopped spindle's drive settles to exactly zero lag and speed in finite
+// time (then its cycle is skipped), and stays exactly there.
+TEST(SpindleAxis, StoppedDriveSettlesToExactlyZero) {
+  auto s = make_spindle(spindle_axis_config());
+  ASSERT_TRUE(s.rotate(1000).ok());
+  run_until(s, reached, 20000);
+  ASSERT_TRUE(s.stop().ok());
+  const int settled = run_until(
+      s, [](const SpindleStatus& st) { return st.set_rpm == 0 && st.act_rpm == 0 && st.lag_deg == 0; }, 20000);
+  EXPECT_LT(settled, 20000);
+  const double pos_deg = s.status().set_pos_deg;
+  for (int i = 0; i < 1000; ++i) s.tick(0.001);
+  EXPECT_EQ(s.status().act_rpm, 0.0);
+  EXPECT_EQ(s.status().lag_deg, 0.0);
+  EXPECT_EQ(s.status().set_pos_deg, pos_deg);
+  EXPECT_TRUE(s.status().standstill);
+  // ... and starts again from rest as before.
+  ASSERT_TRUE(s.rotate(600).ok());
+  run_until(s, reached, 20000);
+  EXPECT_DOUBLE_EQ(s.status().set_rpm, 600);
+}
+
 }  // namespace
 }  // namespace nck::spindle
