@@ -60,6 +60,16 @@ void run_common(benchmark::State& state, const std::string& prelude) {
   const Workload w = write_common_program(static_cast<int>(state.range(0)), prelude);
   auto out = std::make_unique<nck::kernel::TickOutput>();
   double simulated_s = 0, last_s = 0, travelled_mm = 0;
+  // X, Y, Z: the mill's axis lists in channel order.
+  std::array<nck::config::GearStage, 3> limits{};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const auto& ax = m.axes[static_cast<std::size_t>(m.channels[0].axes[k].axis_index)];
+    limits[k] = ax.gear(ax.initial_gear_stage);
+  }
+  const double dt_s = m.cycle_time_us * 1e-6;
+  struct {
+    double v_share = 0, a_share = 0;  // largest |v| / vb_max and |a| / a_max of any axis
+  } worst;
   nck::prep::BlendStats blends{};
   for (auto _ : state) {
     auto run = nck::sim::DryRun::create(m, {w.file});
@@ -68,15 +78,23 @@ void run_common(benchmark::State& state, const std::string& prelude) {
       return;
     }
     // The path the set points travel (X, Y, Z), to state how much of the
-    // programmed length blending cuts.
-    std::array<double, 3> last{};
-    bool first = true;
+    // programmed length blending cuts, and the limit check of the property
+    // test on every cycle: no axis beyond vb_max or a_max.
+    std::array<double, 3> last{}, v_last{};
+    std::size_t cycles = 0;
     travelled_mm = 0;
+    worst = {};
     while (!run->done()) {
       run->step(*out);
       const auto& p = out->channels[0].axis_mcs;
-      if (!first) travelled_mm += std::hypot(p[0] - last[0], p[1] - last[1], p[2] - last[2]);
-      first = false;
+      if (cycles > 0) travelled_mm += std::hypot(p[0] - last[0], p[1] - last[1], p[2] - last[2]);
+      for (std::size_t k = 0; k < 3 && cycles > 0; ++k) {
+        const double v = (p[k] - last[k]) / dt_s;
+        worst.v_share = std::max(worst.v_share, std::fabs(v) / limits[k].vb_max);
+        if (cycles > 1) worst.a_share = std::max(worst.a_share, std::fabs(v - v_last[k]) / dt_s / limits[k].a_max);
+        v_last[k] = v;
+      }
+      ++cycles;
       last = {p[0], p[1], p[2]};
     }
     last_s = run->time_s();
@@ -89,6 +107,10 @@ void run_common(benchmark::State& state, const std::string& prelude) {
   state.counters["blend_short_mm"] = blends.shortfall_mm;
   state.counters["max_dev_mm"] = blends.max_deviation_mm;
   state.counters["sim_s"] = last_s;
+  state.counters["max_v_of_vb_max"] = worst.v_share;
+  state.counters["max_a_of_a_max"] = worst.a_share;
+  // Beyond a limit by more than rounding (1e-6 relative): the run is wrong.
+  if (worst.v_share > 1 + 1e-6 || worst.a_share > 1 + 1e-6) state.SkipWithError("an axis exceeded vb_max or a_max");
   state.counters["sim_s_per_wall_s"] = benchmark::Counter(simulated_s, benchmark::Counter::kIsRate);
   std::filesystem::remove(w.file);
 }
@@ -99,7 +121,7 @@ BENCHMARK(BM_CommonProgram)->Arg(2000)->Arg(200000)->Unit(benchmark::kMillisecon
 
 // Corner blending on: these lines are prepended (docs/performance.md).
 void BM_CommonProgramBlend(benchmark::State& state) {
-  run_common(state, "#CONTOUR MODE [DEV PATH_DEV=0.02]\nG261\n");
+  run_common(state, "#CONTOUR MODE [DEV PATH_DEV=0.025]\nG261\n");
 }
 BENCHMARK(BM_CommonProgramBlend)->Arg(2000)->Arg(200000)->Unit(benchmark::kMillisecond)->Iterations(1);
 

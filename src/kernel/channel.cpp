@@ -37,7 +37,7 @@ void Channel::end_program(EndReason reason, double t_s, TickOutput& sink, Channe
   status_ = ok ? ChannelStatus::ended : ChannelStatus::aborted;
   active_ = false;
   velocity_ = 0;
-  passing_ = settling_ = false;
+  passing_ = false;
   profile_.reset();
   waits_.clear();
   late_.clear();
@@ -128,11 +128,6 @@ void Channel::execute(double t_s, double dt_s, const ChannelInput& in, TickOutpu
     // A switch counts once this run has moved (not one left from the block before).
     if (current_.measure && (awaiting_probe_ || (in.probe_switched && probe_armed_))) {
       end_measuring_run(t_s, in, sink, ctx);
-      return;
-    }
-    if (settling_) {
-      settling_ = false;
-      velocity_ = 0;
       return;
     }
     const double ovr = in.feedhold ? 0.0 : std::clamp(in.feed_override_pct, 0.0, 100.0) / 100.0;
@@ -271,11 +266,9 @@ void Channel::advance(double t_s, double dt_s, const ChannelInput& in, TickOutpu
         velocity_ = profile_.v();
         return;
       }
-      // From an exact stop the path may stand still for one cycle before it
-      // starts again: where the axes' last step into the stop and the first
-      // step out of it (each up to a * dt) would change an axis's velocity
-      // by more than a_max * dt (Command::settle_after_stop).
-      settling_ = moved_last_cycle_ && current_.settle_after_stop;
+      // Right after an exact stop the first step may be gentler
+      // (Command::start_a_mm_s2: a sharp turn or a reversal).
+      if (moved_last_cycle_) profile_.limit_first_step(current_.start_a_mm_s2);
     }
     if (current_.kind == CommandKind::dwell) dwell_left_s_ = current_.dwell_s;
     dwell_revs_left_ = current_.dwell_revs;

@@ -135,7 +135,6 @@ class Channel {
   double velocity_ = 0;
   bool passing_ = false;  // the last motion ended at speed: the next one takes over this cycle
   bool moved_this_cycle_ = false, moved_last_cycle_ = false;  // the path advanced in this / the last cycle
-  bool settling_ = false;  // a motion from an exact stop waits one cycle at standstill
   motion::AxisVector pos_{};
   // Every output and spindle action of a block may wait once, and the late
   // waits (MVS_SLM / MVS_SLP) carried from earlier blocks join them; late

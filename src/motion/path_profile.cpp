@@ -10,6 +10,9 @@ namespace {
 // Remaining distances below this (1 nm) count as arrived: it absorbs the
 // rounding of s += v*dt so the profile never needs an extra crawling cycle.
 constexpr double kSnapMm = 1e-9;
+constexpr double kNoLimit = std::numeric_limits<double>::infinity();
+// A segment passed on at v_end holds it over this many cycles' travel.
+constexpr double kHoldCycles = 2.0;
 
 bool positive_finite(double x) noexcept { return std::isfinite(x) && x > 0.0; }
 
@@ -38,7 +41,7 @@ double discrete_brake_distance(double v_mm_s, double a_mm_s2, double dt_s) noexc
 
 double pass_brake_distance(double v_end_mm_s, double a_mm_s2, double dt_s) noexcept {
   if (!(v_end_mm_s > 0.0)) return 0.0;
-  return discrete_brake_distance(v_end_mm_s, a_mm_s2, dt_s) - 2.0 * v_end_mm_s * dt_s;
+  return discrete_brake_distance(v_end_mm_s, a_mm_s2, dt_s) - kHoldCycles * v_end_mm_s * dt_s;
 }
 
 double duration_estimate(double length_mm, double v_cmd_mm_s, const PathLimits& limits) noexcept {
@@ -71,8 +74,9 @@ bool PathProfile::start(double length_mm, double v_cmd_mm_s, const PathLimits& l
   // both, so the first step here changes the speed by no more than either
   // allows (a line after a fillet would otherwise add its full acceleration
   // to what is left of the fillet's turn).
-  passed_in_ = v_mm_s_ > 0.0 && valid(limits_);
-  first_step_limits_ = limits_;
+  const bool passing = v_mm_s_ > 0.0 && valid(limits_);
+  first_acc_mm_s2_ = passing ? limits_.a_acc_mm_s2 : kNoLimit;
+  first_dec_mm_s2_ = passing ? limits_.a_dec_mm_s2 : kNoLimit;
   limits_ = limits;
   v_end_mm_s_ = 0.0;
   v_limit_mm_s_ = -1.0;
@@ -98,6 +102,10 @@ bool PathProfile::start(double length_mm, double v_cmd_mm_s, const PathLimits& l
   s_mm_ = std::min(carry, length_mm);
   finished_ = false;
   return true;
+}
+
+void PathProfile::limit_first_step(double a_mm_s2) noexcept {
+  if (a_mm_s2 >= 0.0) first_acc_mm_s2_ = std::min(first_acc_mm_s2_, a_mm_s2);  // NaN: ignored
 }
 
 void PathProfile::set_velocity_limit(double v_mm_s) noexcept {
@@ -135,22 +143,23 @@ ProfileSample PathProfile::step(double dt_s, double override_factor) noexcept {
   if (left_mm <= kSnapMm) return finish(left_mm / dt_s, v_prev, dt_s, 0.0);
 
   const double target = target_velocity(override_factor);
-  double a_acc = limits_.a_acc_mm_s2, a_dec = limits_.a_dec_mm_s2;
-  if (passed_in_) {
-    passed_in_ = false;
-    a_acc = std::min(a_acc, first_step_limits_.a_acc_mm_s2);
-    a_dec = std::min(a_dec, first_step_limits_.a_dec_mm_s2);
-  }
-  double v = v_prev < target ? std::min(v_prev + a_acc * dt_s, target) : std::max(v_prev - a_dec * dt_s, target);
+  const double a_acc = std::min(limits_.a_acc_mm_s2, first_acc_mm_s2_);
+  const double a_dec = std::min(limits_.a_dec_mm_s2, first_dec_mm_s2_);
+  first_acc_mm_s2_ = first_dec_mm_s2_ = kNoLimit;
+  // Passing on at v_end > 0: over the last cycles before the end the
+  // profile runs at v_end (pass_brake_distance), so it crosses at exactly
+  // that speed.
+  const bool holding = v_end_mm_s_ > 0.0 && left_mm <= kHoldCycles * v_end_mm_s_ * dt_s;
+  const double goal = holding ? std::min(target, v_end_mm_s_) : target;
+  double v = v_prev < goal ? std::min(v_prev + a_acc * dt_s, goal) : std::max(v_prev - a_dec * dt_s, goal);
   // Rounding must not leave a residue like 1e-14 mm/s (a "moving" feedhold).
-  if (std::abs(v - target) <= 1e-12 * std::max(1.0, target)) v = target;
-  // Braking curve: to standstill at the end, or (blending) to v_end at the
-  // end, which is the curve to standstill at a point beyond the end.
-  const double v_ramp = v;
-  const double beyond_mm = pass_brake_distance(v_end_mm_s_, limits_.a_dec_mm_s2, dt_s);
-  v = std::min(v, discrete_brake_velocity(left_mm + beyond_mm, limits_.a_dec_mm_s2, dt_s));
-  // Passing on: v_end is held over the last cycles (never braked below).
-  if (v_end_mm_s_ > 0.0) v = std::max(v, std::min(v_end_mm_s_, v_ramp));
+  if (std::abs(v - goal) <= 1e-12 * std::max(1.0, goal)) v = goal;
+  // Braking curve: to standstill at the end, or (passing on) to v_end where
+  // the hold begins, which is the curve to standstill at a point beyond it.
+  if (!holding) {
+    const double beyond_mm = pass_brake_distance(v_end_mm_s_, limits_.a_dec_mm_s2, dt_s);
+    v = std::min(v, discrete_brake_velocity(left_mm + beyond_mm, limits_.a_dec_mm_s2, dt_s));
+  }
   v = std::max(v, 0.0);
 
   // The cycle that passes into the next segment lies on both (a fillet's

@@ -106,10 +106,10 @@ double LookAheadWindow::entry_limit(const Command& c) const {
 
 // The path limits of a fillet. An ordinary arc splits the plane axes'
 // acceleration evenly between speeding up and turning (each a/sqrt 2); a
-// fillet is meant to be run through at one speed, so it gives the turn
-// sqrt(1 - 0.5^2) = 87 % of a and changing speed on it 50 % (the vector
-// sum stays within a, so every plane axis does). Its speed limit rises by
-// a factor 1.11 against an ordinary arc of the same radius.
+// fillet is meant to be run through at one speed, so it gives changing
+// speed on it 25 % of a and the turn sqrt(1 - 0.25^2) = 96.8 % (the vector
+// sum stays within a, so every plane axis does): its speed limit is 1.17
+// times that of an ordinary arc of the same radius.
 motion::PathLimits LookAheadWindow::fillet_limits(const motion::Segment& fillet,
                                                   std::span<const motion::AxisDynamics> dyn) {
   constexpr double kTangentialShare = 0.25;
@@ -186,7 +186,6 @@ bool LookAheadWindow::blend(std::uint64_t prev, Command& next) {
   f.segment = cb->fillet;
   f.limits = fillet_limits(cb->fillet, dyn);
   f.v_cmd_mm_s = std::min(p.command.v_cmd_mm_s, next.v_cmd_mm_s);
-  f.settle_after_stop = false;
   f.css = p.command.css;
   f.feed_motion = true;
   f.manual_offset_axes = p.command.manual_offset_axes;
@@ -200,10 +199,13 @@ bool LookAheadWindow::blend(std::uint64_t prev, Command& next) {
   if (cb->fillet.length() < dt2 * cruise(f) || cb->before.length() < dt2 * cruise(before) ||
       cb->after.length() < dt2 * cruise(after))
     return false;
-  // The profile may cross into the fillet one braking step faster than
-  // planned; on a small radius that step would cost much centripetal
-  // acceleration, so the fillet is entered one step below its limit.
-  f.v_entry_max_mm_s = std::max(std::min(tangent_cap(before, f), cruise(f) - before.limits.a_dec_mm_s2 * cycle_s_), 0.0);
+  // The profile passes on at exactly its planned end speed (it holds it over
+  // its last cycles) once that is above one braking step; below, the step
+  // into the hold may jump it and cross one braking step faster, so a slow
+  // fillet is entered that much below its limit.
+  const double step_mm_s = before.limits.a_dec_mm_s2 * cycle_s_;
+  const double fillet_entry = cruise(f) > 2 * step_mm_s ? cruise(f) : cruise(f) - step_mm_s;
+  f.v_entry_max_mm_s = std::max(std::min(tangent_cap(before, f), fillet_entry), 0.0);
   after.v_entry_max_mm_s = tangent_cap(f, after);
   // The window's promise: a command that has left can still brake in what
   // follows. Shortening prev may lower the velocities before it (the fillet

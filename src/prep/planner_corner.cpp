@@ -45,18 +45,22 @@ motion::AxisVector Planner::machine_tangent(const Command& c, bool at_end) const
 }
 
 // Coming from an exact stop, the last step into it (at most a_dec * dt
-// along the previous path) and c's first step (a_acc * dt along c) fall into
-// consecutive cycles; where an axis would change its velocity by more than
-// a_max * dt (a reversal, a sharp turn), the channel waits one cycle at
-// standstill between them. Unknown previous motion: always.
-bool Planner::needs_settling(const Command& c) const {
-  if (!last_motion_.valid) return true;
+// along the previous path) and c's first step (a * dt along c) fall into
+// consecutive cycles: the largest a <= a_acc at which every axis changes its
+// velocity by at most a_max * dt between them (a reversal, a sharp turn
+// start gently instead of standing still a cycle). Unknown previous
+// motion: 0, one cycle at standstill.
+double Planner::start_acceleration(const Command& c) const {
+  if (!last_motion_.valid) return 0.0;
   const motion::AxisVector t = machine_tangent(c, false);
+  double a = c.limits.a_acc_mm_s2;
   for (std::size_t j = 0; j < n_axes_; ++j) {
-    const double dv = std::fabs(last_motion_.a_dec_mm_s2 * last_motion_.tangent[j] - c.limits.a_acc_mm_s2 * t[j]);
-    if (dv > axis_a_max_[j] * (1 + 1e-12)) return true;
+    if (std::fabs(t[j]) < 1e-12) continue;
+    // |p - a t_j| <= a_max with p the last step's share: a <= (a_max + p sgn t_j) / |t_j|
+    const double p = last_motion_.a_dec_mm_s2 * last_motion_.tangent[j];
+    a = std::min(a, (axis_a_max_[j] + (t[j] > 0 ? p : -p)) / std::fabs(t[j]));
   }
-  return false;
+  return std::max(a, 0.0);
 }
 
 // Exact stop at c's end: G60 in the block, G360 in force, or a G0 block
@@ -82,7 +86,7 @@ void Planner::note_transition(const nc::Block& b, Command& c, bool rapid) {
   }
   const auto& dv = rapid ? corner_dv_rapid_ : corner_dv_feed_;
   const double cruise_mm_s = std::min(c.v_cmd_mm_s, c.limits.v_max_mm_s);
-  c.settle_after_stop = needs_settling(c);
+  c.start_a_mm_s2 = start_acceleration(c);
   if (last_motion_.valid) {
     std::array<double, kMaxAxes> budget{};
     for (std::size_t j = 0; j < n_axes_; ++j) budget[j] = std::min(dv[j], last_motion_.corner_dv[j]);

@@ -3,6 +3,7 @@
 // fixed-size data (the queue between planning and tick() holds these).
 #include <array>
 #include <cstdint>
+#include <limits>
 
 #include "nck/core/diagnostic.hpp"
 #include "nck/core/fixed_vector.hpp"
@@ -66,9 +67,12 @@ struct Command {
   double v_entry_max_mm_s = 0;
   bool exact_stop = false;
   double v_end_mm_s = 0;
-  // Starting from an exact stop right after moving, wait one cycle at
-  // standstill first (the planner decides it from both blocks' directions).
-  bool settle_after_stop = true;
+  // Starting from an exact stop right after moving, the first step's
+  // acceleration (0: one cycle at standstill). The last step into the stop
+  // and the first out of it fall into consecutive cycles; the planner takes
+  // the largest at which no axis changes its velocity by more than
+  // a_max * dt between them. Infinite: the block's own a_acc.
+  double start_a_mm_s2 = std::numeric_limits<double>::infinity();
   // Corner blending (G61/G261): the corner at the end of this feed motion
   // may be replaced by a fillet within this distance of the corner point
   // (#CONTOUR MODE PATH_DEV); 0 = none. The look-ahead window builds it.

@@ -9,6 +9,7 @@
 // remaining distance with the discrete sum (not v = sqrt(2ad)), so the last
 // cycles do not crawl: the final cycle covers exactly what is left.
 #include <cstddef>
+#include <limits>
 
 #include "nck/motion/limits.hpp"
 
@@ -47,6 +48,9 @@ class PathProfile {
   // 0 holds the path (braking). Negative or NaN clears the limit (no
   // coupling). start() clears it. rt
   void set_velocity_limit(double v_mm_s) noexcept;
+  // The first step after start() changes the speed by at most a * dt (a
+  // start out of a sharp corner's exact stop; 0 stands still a cycle). rt
+  void limit_first_step(double a_mm_s2) noexcept;
   // Ignore the feed override (G33: the path follows the spindle). rt
   void set_override_ignored(bool ignored) noexcept { override_ignored_ = ignored; }
 
@@ -68,8 +72,9 @@ class PathProfile {
   double s_mm_ = 0.0;
   double v_mm_s_ = 0.0;
   double carry_mm_ = 0.0;  // distance run past the previous segment's end
-  bool passed_in_ = false;         // the next step is the first after passing in
-  PathLimits first_step_limits_{};  // the segment passed in from
+  // The first step's accelerations (infinite: the segment's own).
+  double first_acc_mm_s2_ = std::numeric_limits<double>::infinity();
+  double first_dec_mm_s2_ = std::numeric_limits<double>::infinity();
   bool finished_ = true;
   double v_limit_mm_s_ = -1.0;  // < 0: none
   bool override_ignored_ = false;

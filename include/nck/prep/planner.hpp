@@ -87,7 +87,7 @@ class Planner final : public nc::KernelStateReader {
   void setup_corner_budgets(const config::Machine& machine);
   motion::AxisVector machine_tangent(const Command& c, bool at_end) const;
   void note_transition(const nc::Block& b, Command& c, bool rapid);
-  bool needs_settling(const Command& c) const;
+  double start_acceleration(const Command& c) const;
   // G51/G52 (planner_diameter.cpp)
   void setup_diameter_axes(const config::Machine& machine);
   bool check_diameter(const nc::Block& b, Command& c, Command& error);
