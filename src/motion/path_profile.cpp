@@ -98,6 +98,7 @@ bool PathProfile::start(double length_mm, double v_cmd_mm_s, const PathLimits& l
     return false;
   }
   v_cmd_mm_s_ = std::min(v_cmd_mm_s, limits.v_max_mm_s);
+  beyond_dt_s_ = 0.0;  // recomputed at the first step
   if (positive_finite(v_end_mm_s)) v_end_mm_s_ = std::min(v_end_mm_s, v_cmd_mm_s_);
   s_mm_ = std::min(carry, length_mm);
   finished_ = false;
@@ -157,8 +158,15 @@ ProfileSample PathProfile::step(double dt_s, double override_factor) noexcept {
   // Braking curve: to standstill at the end, or (passing on) to v_end where
   // the hold begins, which is the curve to standstill at a point beyond it.
   if (!holding) {
-    const double beyond_mm = pass_brake_distance(v_end_mm_s_, limits_.a_dec_mm_s2, dt_s);
-    v = std::min(v, discrete_brake_velocity(left_mm + beyond_mm, limits_.a_dec_mm_s2, dt_s));
+    const double a = limits_.a_dec_mm_s2;
+    if (dt_s != beyond_dt_s_) {  // once per segment and cycle time
+      beyond_mm_ = pass_brake_distance(v_end_mm_s_, a, dt_s);
+      beyond_dt_s_ = dt_s;
+    }
+    // Far from the end the braking curve is not reached: it lies above
+    // sqrt(2 a d) - a dt / 2, so the staircase is skipped there.
+    const double rest_mm = left_mm + beyond_mm_, v_safe = v + 1.5 * a * dt_s;
+    if (v_safe * v_safe > 2.0 * a * rest_mm) v = std::min(v, discrete_brake_velocity(rest_mm, a, dt_s));
   }
   v = std::max(v, 0.0);
 

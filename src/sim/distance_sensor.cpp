@@ -49,11 +49,13 @@ double DistanceSensor::noise() noexcept {
 }
 
 double DistanceSensor::gap_mm() const noexcept {
-  const double p = surface_axis_ >= 0 ? mcs_[static_cast<std::size_t>(surface_axis_)] : 0.0;
-  return mcs_[static_cast<std::size_t>(tool_axis_)] - surface_height_mm(s_, p);
+  return tool_mm_ - surface_height_mm(s_, surface_mm_);
 }
 
-void DistanceSensor::watch(const AxisArray& axis_mcs) noexcept { mcs_ = axis_mcs; }
+void DistanceSensor::watch(const AxisArray& axis_mcs) noexcept {
+  if (tool_axis_ >= 0) tool_mm_ = axis_mcs[static_cast<std::size_t>(tool_axis_)];
+  if (surface_axis_ >= 0) surface_mm_ = axis_mcs[static_cast<std::size_t>(surface_axis_)];
+}
 
 void DistanceSensor::sample(double t_s, bool& valid, double& value_mm) noexcept {
   valid = false;

@@ -77,6 +77,7 @@ class PathProfile {
   double first_dec_mm_s2_ = std::numeric_limits<double>::infinity();
   bool finished_ = true;
   double v_limit_mm_s_ = -1.0;  // < 0: none
+  double beyond_mm_ = 0.0, beyond_dt_s_ = 0.0;  // pass_brake_distance for that cycle time
   bool override_ignored_ = false;
 };
 

@@ -38,7 +38,7 @@ class DistanceSensor {
   bool configured_ = false;
   int tool_axis_ = -1, surface_axis_ = -1;
   double cycle_s_ = 0.001;
-  AxisArray mcs_{};
+  double tool_mm_ = 0, surface_mm_ = 0;  // the two positions the gap depends on
   std::uint64_t rng_ = 1;
   static constexpr std::size_t kMaxDelay = 1000;
   std::array<double, kMaxDelay + 1> delay_{};
