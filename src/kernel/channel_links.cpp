@@ -68,7 +68,7 @@ bool Channel::start_links(double t_s, TickOutput& sink, ChannelContext& ctx) noe
     return false;
   }
   if (f.kind == FeedLinkKind::thread) {
-    thread_waiting_ = true;
+    thread_waiting_ = !f.chained;  // a chained block goes on in the groove of the first
     thread_last_deg_ = st.set_pos_deg;
   }
   profile_.set_override_ignored(f.kind == FeedLinkKind::thread && f.ignore_override);

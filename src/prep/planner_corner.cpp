@@ -78,12 +78,19 @@ void Planner::note_transition(const nc::Block& b, Command& c, bool rapid) {
   // Under #FACE/#CYL the segment is Cartesian and the machine axes follow
   // the transformation: its corners are not looked ahead yet. A spindle
   // coupling (G95, G33, G63, G331/G332) sets the path speed each cycle from
-  // the spindle: such blocks start and end at standstill for now.
-  if (c.trafo.kind != motion::CaxTrafoKind::none || c.feed_link.kind != kernel::FeedLinkKind::none) {
+  // the spindle: such blocks start and end at standstill, except G33 blocks
+  // of a thread chain (P-CHAN-00837), which pass on to the next G33 block.
+  const bool thread_chain =
+      channel_.thread_chain && c.trafo.kind == motion::CaxTrafoKind::none && c.feed_link.kind == kernel::FeedLinkKind::thread;
+  if (!thread_chain && (c.trafo.kind != motion::CaxTrafoKind::none || c.feed_link.kind != kernel::FeedLinkKind::none)) {
     c.exact_stop = true;
     last_motion_.valid = false;
     return;
   }
+  // A chain joins only G33 blocks: the first one starts on the start angle
+  // from standstill, the block after the last one from standstill too.
+  if (last_motion_.valid && last_motion_.thread != thread_chain) last_motion_.valid = false;
+  c.feed_link.chained = thread_chain && last_motion_.valid;
   const auto& dv = rapid ? corner_dv_rapid_ : corner_dv_feed_;
   const double cruise_mm_s = std::min(c.v_cmd_mm_s, c.limits.v_max_mm_s);
   c.start_a_mm_s2 = start_acceleration(c);
@@ -98,7 +105,7 @@ void Planner::note_transition(const nc::Block& b, Command& c, bool rapid) {
                           last_motion_.a_dec_mm_s2 * cycle_s_;
     c.v_entry_max_mm_s = std::max(std::min({corner, cruise_mm_s, last_motion_.cruise_mm_s}), 0.0);
   }
-  last_motion_ = {true, machine_tangent(c, true), dv, cruise_mm_s, c.limits.a_dec_mm_s2};
+  last_motion_ = {true, machine_tangent(c, true), dv, cruise_mm_s, c.limits.a_dec_mm_s2, thread_chain};
 }
 
 }  // namespace nck::prep

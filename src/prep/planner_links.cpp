@@ -125,7 +125,9 @@ std::optional<Command> Planner::thread_link(const nc::Block& b, const motion::Ax
   for (const nc::SpindleCommand& s : b.spindles)
     if (s.offset_deg && s.spindle_index && *s.spindle_index == main_channel_spindle_) thread_offset_deg_ = *s.offset_deg;
   f.start_deg = thread_offset_deg_;
-  f.ignore_override = channel_.thread_ignore_override;
+  // A thread chain must not slow down or stop between its blocks: the feed
+  // override does not act on it (P-CHAN-00837, docs/decisions.md).
+  f.ignore_override = channel_.thread_ignore_override || channel_.thread_chain;
   return std::nullopt;
 }
 

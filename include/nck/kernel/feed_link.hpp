@@ -29,6 +29,9 @@ struct FeedLink {
   bool use_programmed = false;
   double start_deg = 0;       // G33: spindle angle at which the path starts
   bool ignore_override = true;  // G33: the path follows the spindle, not the feed override
+  // G33 continuing a thread chain (P-CHAN-00837): the path passes on from the
+  // G33 block before without waiting for the start angle again.
+  bool chained = false;
 };
 
 // Constant cutting speed (G96): the spindle speed follows the face axis.

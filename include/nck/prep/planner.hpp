@@ -133,6 +133,7 @@ class Planner final : public nc::KernelStateReader {
     std::array<double, kMaxAxes> corner_dv{};
     double cruise_mm_s = 0;
     double a_dec_mm_s2 = 0;  // along its path
+    bool thread = false;     // a G33 block of a thread chain (P-CHAN-00837)
   };
   LastMotion last_motion_{};
   double cycle_s_ = 0.001;

@@ -170,6 +170,43 @@ TEST(SpindlePath, G33FeedOverrideFollowsIgnoreOverride) {
   }
 }
 
+// P-CHAN-00837: with thread_cutting.thread_chain 1 consecutive G33 blocks
+// run as one thread. Into the collinear second block the path passes at
+// 400 rpm x 2 mm = 13.33 mm/s; into the tapered third block (an 8.5 deg
+// kink) it slows to the corner limit but does not stop, and neither block
+// waits for the zero mark again. A feed override of 50 % does not act in
+// the chain. Without the parameter every G33 block starts from standstill.
+TEST(SpindlePath, ThreadChainRunsConsecutiveG33BlocksWithoutStop) {
+  const auto plc = temp_dir("tchain_plc") / "ovr.plc";
+  std::ofstream(plc) << "0.0 feed_override 50\n";
+  const std::string prog = "G18 G90\nM3 S400\nG0 X36 Z5\nG33 Z-10 K2\nG33 Z-20\nG33 Z-30 X37.5\nG0 X40\nM30\n";
+  const std::string chain =
+      patched_example("lathe", "tchain_machine", "channel1.lis", "thread_cutting.thread_chain 1").dir.string();
+  auto speed = [](const PathRun& r, std::size_t k) {
+    return std::hypot(r.rows[k].at("Z") - r.rows[k - 1].at("Z"), r.rows[k].at("X") - r.rows[k - 1].at("X")) / kDt;
+  };
+  auto slowest = [&](const PathRun& r, std::size_t k) {
+    double v = 1e9;
+    for (std::size_t i = k - 20; i < k + 20; ++i) v = std::min(v, speed(r, i));
+    return v;
+  };
+  const double thread_mm_s = 400 * 2 / 60.0, resolution = 2e-3;  // trace: 1e-6 mm per 1 ms
+  const PathRun r = run_text(chain, prog, "tchain", "--plc " + plc.string());
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  const std::size_t second = r.index(r.line_t(5)), third = r.index(r.line_t(6));
+  EXPECT_NEAR(slowest(r, second), thread_mm_s, resolution);
+  EXPECT_GT(slowest(r, third), 1.0);
+  EXPECT_LT(slowest(r, third), thread_mm_s - 1.0);
+  // Back on the thread (override ignored): Z at 400 rpm x 2 mm.
+  EXPECT_NEAR(r.rows[third + 499].at("Z") - r.rows[third + 500].at("Z"), thread_mm_s * kDt, 1e-6);
+  // The plain lathe: the second block waits at standstill for the zero
+  // mark, and the override acts.
+  const PathRun plain = run_text("lathe", prog, "tchain_plain", "--plc " + plc.string());
+  ASSERT_EQ(plain.cli.exit_code, 0) << plain.cli.output;
+  EXPECT_EQ(slowest(plain, plain.index(plain.line_t(5))), 0.0);
+  EXPECT_NEAR(speed(plain, plain.index(plain.line_t(5)) + 500), 0.5 * thread_mm_s, resolution);
+}
+
 TEST(SpindlePath, RigidTappingG331G332TurnsWithThePitchAndBack) {
   const PathRun r = run_example_program("lathe", "tapping.nc", "g331");
   ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
