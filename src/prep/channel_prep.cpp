@@ -71,7 +71,7 @@ void ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& fe
     collect_warnings();
     if (r.status == nc::Decoder::Status::block) {
       if (r.block.depth == 0) last_main_line_ = r.block.line;
-      (void)prepare(r.block, decoder_->file_name(r.block.file_id), commands);
+      (void)prepare(r.block, commands);
       done_ = r.block.program_end;
       awaiting_feedback_ = needs_feedback(r.block);
     } else if (r.status == nc::Decoder::Status::end) {
@@ -92,12 +92,12 @@ void ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& fe
   }
 }
 
-bool ChannelPrep::prepare(const nc::Block& b, const std::string& file_name, kernel::CommandQueue& commands) {
+bool ChannelPrep::prepare(const nc::Block& b, kernel::CommandQueue& commands) {
   if (!window_.has_room() && !window_.release(commands, false)) return false;
   std::vector<TrcOut> outs;
   if (observer_) observer_->decoded(b, *planner_, trc_.holding());
   trc_.push(b, *planner_, outs);
-  plan_out(outs, commands, file_name);
+  plan_out(outs, commands);
   // A block that needs feedback, and the program end, must reach the channel now.
   flushing_ = flushing_ || needs_feedback(b) || b.program_end;
   return push_out(commands);
@@ -114,12 +114,10 @@ void set_trc_event(kernel::Command& c, const RadiusComp::State& s) {
 
 }  // namespace
 
-void ChannelPrep::plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& commands,
-                           const std::string& file_name) {
+void ChannelPrep::plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& commands) {
   // A planned block is 13.5 KB: built once in place, not zeroed and copied.
   auto plan_one = [&](const TrcOut& o) {
-    if (!o.error)  // held blocks may come from another file than the block that released them
-      return planner_->plan(o.block, decoder_ ? decoder_->file_name(o.block.file_id) : file_name);
+    if (!o.error) return planner_->plan(o.block);
     PlannedBlock b;
     (void)b.push_back(planner_->error_command(*o.error, o.message, o.block.file_id, o.block.line));
     return b;

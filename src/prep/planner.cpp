@@ -178,10 +178,10 @@ bool Planner::apply_frames(const nc::Block& b, Command& c, Command& error) {
   return true;
 }
 
-Planner::Commands Planner::plan(const nc::Block& b, const std::string& file_name) {
+Planner::Commands Planner::plan(const nc::Block& b) {
   Commands out;
   const bool homing = b.has_axis_words() && b.g_nonmodal.has(nc::GCode::g74);
-  Command c = plan_one(b, file_name);
+  Command c = plan_one(b);
   if (homing && c.kind == CommandKind::nop) {
     plan_homing(b, c, out);
   } else if (c.kind == CommandKind::motion && c.trafo.kind == motion::CaxTrafoKind::face) {
@@ -241,7 +241,7 @@ void Planner::plan_homing(const nc::Block& b, Command first, Commands& out) {
   pcs_ = frames_.to_pcs(mcs_);
 }
 
-Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
+Command Planner::plan_one(const nc::Block& b) {
   modal_ = b.modal;
   if (std::string why = unsupported(b); !why.empty())
     return error_command(ErrorId::KernelNotYetSupported, why + " in this version of nck",
@@ -309,13 +309,13 @@ Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
     c.dwell_spindle = main_spindle_;
     return c;
   }
-  if (b.g_nonmodal.has(nc::GCode::g100)) return plan_measuring_run(b, c, file_name);
+  if (b.g_nonmodal.has(nc::GCode::g100)) return plan_measuring_run(b, c);
   // With G201/G202 the axis words select the axes.
   const bool words_are_motion = !b.manual_g && !b.g_nonmodal.has_any(kAxisWordsAreValues);
   const bool circle = b.modal.motion == nc::Motion::cw || b.modal.motion == nc::Motion::ccw;
   if (words_are_motion && (b.has_axis_words() || (circle && (b.ijk[0] || b.ijk[1] || b.ijk[2])))) {
     c.feed_motion = b.modal.motion != nc::Motion::rapid;
-    return plan_motion(b, c, file_name);
+    return plan_motion(b, c);
   }
   // P-CHAN-00100 move_tool_offsets_directly 1: a new tool offset is moved
   // with the D word itself (DIN 66025), at rapid.
@@ -323,7 +323,7 @@ Command Planner::plan_one(const nc::Block& b, const std::string& file_name) {
     nc::Block move = b;
     move.modal.motion = nc::Motion::rapid;
     move.axes = {};
-    return plan_motion(move, c, file_name);
+    return plan_motion(move, c);
   }
   c.kind = CommandKind::nop;
   return c;

@@ -7,10 +7,10 @@
 namespace nck::prep {
 
 // G100: a linear move at F that stops where the probe switches.
-Command Planner::plan_measuring_run(const nc::Block& b, Command c, const std::string& file_name) {
+Command Planner::plan_measuring_run(const nc::Block& b, Command c) {
   nc::Block run = b;
   run.modal.motion = nc::Motion::linear;
-  c = plan_motion(run, c, file_name);
+  c = plan_motion(run, c);
   if (c.kind != CommandKind::motion) return c;
   c.measure = true;
   c.probe_axis = probe_axis_;

@@ -92,7 +92,7 @@ std::uint32_t Planner::manual_axes_after(const nc::Block& b, frames::SuppressMas
   return axes;
 }
 
-Command Planner::plan_motion(const nc::Block& b, Command c, [[maybe_unused]] const std::string& file_name) {
+Command Planner::plan_motion(const nc::Block& b, Command c) {
   const frames::SuppressMask mask = suppress_mask(b);
   if (mask.bits != 0)
     if (auto r = frames::OffsetChain::check_suppress(!b.modal.absolute); !r)

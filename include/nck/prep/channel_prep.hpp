@@ -52,7 +52,7 @@ class ChannelPrep {
   // Plans one decoded block into the queue through the window (feed() uses
   // it; tests call it with blocks of their own). False when the queue has
   // no room for it.
-  bool prepare(const nc::Block& b, const std::string& file_name, kernel::CommandQueue& commands);
+  bool prepare(const nc::Block& b, kernel::CommandQueue& commands);
 
   bool has_program() const { return decoder_.has_value(); }
   // Everything up to the program end (or the error that stopped decoding)
@@ -78,7 +78,7 @@ class ChannelPrep {
   void collect_warnings();
   // Plans what tool radius compensation handed out, into the window or,
   // while it is full, the backlog (one block may become several).
-  void plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& commands, const std::string& file_name);
+  void plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& commands);
   bool drain_backlog(kernel::CommandQueue& commands);
 
   std::optional<nc::Decoder> decoder_;

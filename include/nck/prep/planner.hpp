@@ -39,7 +39,7 @@ class Planner final : public nc::KernelStateReader {
   // One block becomes one command, or several for G74 homing of path axes
   // (one per homing order group).
   using Commands = PlannedBlock;
-  Commands plan(const nc::Block& block, const std::string& file_name);
+  Commands plan(const nc::Block& block);
   Command error_command(ErrorId id, std::string message, std::uint16_t file_id,
                         std::uint32_t line);
 
@@ -71,9 +71,9 @@ class Planner final : public nc::KernelStateReader {
   motion::AxisVector cartesian(const motion::AxisVector& m) const;
 
  private:
-  Command plan_one(const nc::Block& block, const std::string& file_name);
-  Command plan_motion(const nc::Block& b, Command c, const std::string& file_name);
-  Command plan_measuring_run(const nc::Block& b, Command c, const std::string& file_name);
+  Command plan_one(const nc::Block& block);
+  Command plan_motion(const nc::Block& b, Command c);
+  Command plan_measuring_run(const nc::Block& b, Command c);
   bool apply_measure_offset(const nc::Block& b, Command& c, Command& error);
   void plan_homing(const nc::Block& b, Command first, Commands& out);
   std::expected<motion::Segment, Command> arc_segment(const nc::Block& b,

@@ -127,8 +127,8 @@ Log m_function_run(int m, std::uint32_t bits, const AckPolicy& plc) {
   config::Machine machine = fast_machine();
   machine.channels[0].m_synch[static_cast<std::size_t>(m)] = bits;
   KernelRig rig(machine);
-  rig.push_block(0, with_m(move(1, nc::Motion::linear, 1.0), {m}), "t.nc");
-  rig.push_block(0, end_block(2), "t.nc");
+  rig.push_block(0, with_m(move(1, nc::Motion::linear, 1.0), {m}));
+  rig.push_block(0, end_block(2));
   return run(rig.k, plc);
 }
 
@@ -240,8 +240,8 @@ TEST(ChannelSync, MosOutputsWithoutWaitingAndNoSynchIsNotOutput) {
   config::Machine machine = fast_machine();
   machine.channels[0].m_synch[13] = sync::MOS;
   KernelRig rig(machine);
-  rig.push_block(0, with_m(move(1, nc::Motion::linear, 1.0), {13, 14}), "t.nc");
-  rig.push_block(0, end_block(2), "t.nc");
+  rig.push_block(0, with_m(move(1, nc::Motion::linear, 1.0), {13, 14}));
+  rig.push_block(0, end_block(2));
   const Log r = run(rig.k, never());
   ASSERT_EQ(r.issued.size(), 1u);
   expect_output(r.issued[0], 0, 13, sync::MOS);
@@ -259,10 +259,10 @@ TEST(ChannelSync, MvsSlmWaitsAtTheNextFeedMoveNotAtARapidMove) {
   config::Machine machine = fast_machine();
   machine.channels[0].m_synch[15] = sync::MVS_SLM;
   KernelRig rig(machine);
-  rig.push_block(0, with_m(nop(1), {15}), "t.nc");
-  rig.push_block(0, move(2, nc::Motion::rapid, 1.0), "t.nc");
-  rig.push_block(0, move(3, nc::Motion::linear, 2.0), "t.nc");
-  rig.push_block(0, end_block(4), "t.nc");
+  rig.push_block(0, with_m(nop(1), {15}));
+  rig.push_block(0, move(2, nc::Motion::rapid, 1.0));
+  rig.push_block(0, move(3, nc::Motion::linear, 2.0));
+  rig.push_block(0, end_block(4));
   const Log r = run(rig.k, at(30));
   ASSERT_EQ(r.issued.size(), 1u);
   expect_output(r.issued[0], 0, 15, sync::MVS_SLM);
@@ -287,10 +287,10 @@ TEST(ChannelSync, MvsSlmAcknowledgedBeforeTheFeedMoveDoesNotWait) {
   config::Machine machine = fast_machine();
   machine.channels[0].m_synch[15] = sync::MVS_SLM;
   KernelRig rig(machine);
-  rig.push_block(0, with_m(nop(1), {15}), "t.nc");
-  rig.push_block(0, move(2, nc::Motion::rapid, 1.0), "t.nc");
-  rig.push_block(0, move(3, nc::Motion::linear, 2.0), "t.nc");
-  rig.push_block(0, end_block(4), "t.nc");
+  rig.push_block(0, with_m(nop(1), {15}));
+  rig.push_block(0, move(2, nc::Motion::rapid, 1.0));
+  rig.push_block(0, move(3, nc::Motion::linear, 2.0));
+  rig.push_block(0, end_block(4));
   const Log r = run(rig.k, at(4));
   EXPECT_TRUE(r.of(EventKind::wait).empty());
   EXPECT_NEAR(r.x[kOneMm], 1.0 + kStep_mm, 1e-12);
@@ -304,12 +304,12 @@ TEST(ChannelSync, MvsSlpWaitsAtExplicitSynchronisationOnly) {
   config::Machine machine = fast_machine();
   machine.channels[0].m_synch[16] = sync::MVS_SLP;
   KernelRig rig(machine);
-  rig.push_block(0, with_m(nop(1), {16}), "t.nc");
-  rig.push_block(0, move(2, nc::Motion::linear, 1.0), "t.nc");
+  rig.push_block(0, with_m(nop(1), {16}));
+  rig.push_block(0, move(2, nc::Motion::linear, 1.0));
   nc::Block syn = nop(3);
   syn.hash = nc::ExplSyn{};
-  rig.push_block(0, syn, "t.nc");
-  rig.push_block(0, end_block(4), "t.nc");
+  rig.push_block(0, syn);
+  rig.push_block(0, end_block(4));
   const Log r = run(rig.k, at(25));
   EXPECT_EQ(r.motion_start(), 0);
   const auto waits = r.of(EventKind::wait), ends = r.of(EventKind::wait_end);
@@ -378,8 +378,8 @@ constexpr int kSpeedReachedAfter = 90;
 TEST(ChannelSync, SpindleWaitEndsInTheCycleAfterSpeedReached) {
   KernelRig rig(spindle_machine());
   ASSERT_EQ(rig.k.spindle_count(), 1u);
-  rig.push_block(0, move_with_m3(1, 1.0, 1000), "t.nc");
-  rig.push_block(0, end_block(2), "t.nc");
+  rig.push_block(0, move_with_m3(1, 1.0, 1000));
+  rig.push_block(0, end_block(2));
   const Log r = run(rig.k, never());
   EXPECT_TRUE(r.issued.empty());
   int reached = -1;
@@ -407,9 +407,9 @@ Log timeout_run(const AckPolicy& plc) {
   m.channels[0].spindles[0].m3_synch = sync::MVS_SVS | sync::PLC_INFO;
   m.channels[0].spindles[0].m3_prozess_zeit_s = 0.005;
   KernelRig rig(m);
-  rig.push_block(0, move(1, nc::Motion::linear, 1.0), "t.nc");
-  rig.push_block(0, move_with_m3(2, 2.0, 1000), "t.nc");
-  rig.push_block(0, end_block(3), "t.nc");
+  rig.push_block(0, move(1, nc::Motion::linear, 1.0));
+  rig.push_block(0, move_with_m3(2, 2.0, 1000));
+  rig.push_block(0, end_block(3));
   return run(rig.k, plc);
 }
 
@@ -465,9 +465,9 @@ std::vector<std::uint32_t> stop_lines(bool optional_stop_switch) {
   m1.optional_stop = true;
   m0.m = {0};
   m0.stop = true;
-  rig.push_block(0, m1, "t.nc");
-  rig.push_block(0, m0, "t.nc");
-  rig.push_block(0, end_block(3), "t.nc");
+  rig.push_block(0, m1);
+  rig.push_block(0, m0);
+  rig.push_block(0, end_block(3));
   TickInput in;
   in.channels[0].optional_stop = optional_stop_switch;
   const Log r = run(rig.k, never(), 10, in);
@@ -494,12 +494,12 @@ Log queue_run(const AckPolicy& plc) {
   for (int m = 100; m < 108; ++m) machine.channels[0].m_synch[static_cast<std::size_t>(m)] = sync::MOS;
   KernelRig rig(machine);
   for (std::uint32_t line = 1; line <= 8; ++line)
-    rig.push_block(0, with_m(nop(line), {100, 101, 102, 103, 104, 105, 106, 107}), "t.nc");
+    rig.push_block(0, with_m(nop(line), {100, 101, 102, 103, 104, 105, 106, 107}));
   nc::Block dwell = nop(9);
   dwell.dwell_s = 0.002;
-  rig.push_block(0, dwell, "t.nc");
-  rig.push_block(0, with_m(nop(10), {100}), "t.nc");
-  rig.push_block(0, end_block(11), "t.nc");
+  rig.push_block(0, dwell);
+  rig.push_block(0, with_m(nop(10), {100}));
+  rig.push_block(0, end_block(11));
   return run(rig.k, plc, 100);
 }
 

@@ -37,8 +37,8 @@ TEST(Channel, LinearMoveEndsExactlyAtTargetWithinLimits) {
   config::Machine m = xyz_machine(500, 2000);
   KernelRig rig(m);
   Kernel& k = rig.k;
-  rig.push_block(0, move(1, nc::Motion::linear, 100.0, 50.0, {}, 6000), "t.nc");
-  rig.push_block(0, end_block(2), "t.nc");
+  rig.push_block(0, move(1, nc::Motion::linear, 100.0, 50.0, {}, 6000));
+  rig.push_block(0, end_block(2));
   RunLog r = run_all(k);
   ASSERT_TRUE(k.all_channels_done());
   EXPECT_DOUBLE_EQ(r.positions.back()[0], 100.0);
@@ -61,8 +61,8 @@ TEST(Channel, RapidMovesAtRapidVelocity) {
   config::Machine m = xyz_machine(250, 10000);
   KernelRig rig(m);
   Kernel& k = rig.k;
-  rig.push_block(0, move(1, nc::Motion::rapid, 250.0), "t.nc");
-  rig.push_block(0, end_block(2), "t.nc");
+  rig.push_block(0, move(1, nc::Motion::rapid, 250.0));
+  rig.push_block(0, end_block(2));
   RunLog r = run_all(k);
   double v_max = 0;
   for (std::size_t i = 1; i < r.positions.size(); ++i)
@@ -74,11 +74,11 @@ TEST(Channel, RapidMovesAtRapidVelocity) {
 TEST(Channel, IncrementalWordsAddToTheProgrammedPosition) {
   KernelRig rig(xyz_machine());
   Kernel& k = rig.k;
-  rig.push_block(0, move(1, nc::Motion::linear, 10.0), "t.nc");
+  rig.push_block(0, move(1, nc::Motion::linear, 10.0));
   nc::Block inc = move(2, nc::Motion::linear, 5.0);
   inc.modal.absolute = false;
-  rig.push_block(0, inc, "t.nc");
-  rig.push_block(0, end_block(3), "t.nc");
+  rig.push_block(0, inc);
+  rig.push_block(0, end_block(3));
   RunLog r = run_all(k);
   EXPECT_DOUBLE_EQ(r.positions.back()[0], 15.0);
 }
@@ -86,11 +86,11 @@ TEST(Channel, IncrementalWordsAddToTheProgrammedPosition) {
 TEST(Channel, QuarterCircleEndsOnTarget) {
   KernelRig rig(xyz_machine());
   Kernel& k = rig.k;
-  rig.push_block(0, move(1, nc::Motion::linear, 10.0, 0.0), "t.nc");
+  rig.push_block(0, move(1, nc::Motion::linear, 10.0, 0.0));
   nc::Block arc = move(2, nc::Motion::ccw, 0.0, 10.0);
   arc.ijk[0] = -10.0;  // centre at the origin
-  rig.push_block(0, arc, "t.nc");
-  rig.push_block(0, end_block(3), "t.nc");
+  rig.push_block(0, arc);
+  rig.push_block(0, end_block(3));
   RunLog r = run_all(k);
   EXPECT_NEAR(r.positions.back()[0], 0.0, 1e-9);
   EXPECT_NEAR(r.positions.back()[1], 10.0, 1e-9);
@@ -107,8 +107,8 @@ TEST(Channel, DwellTakesItsTime) {
   nc::Block d;
   d.line = 1;
   d.dwell_s = 0.25;
-  rig.push_block(0, d, "t.nc");
-  rig.push_block(0, end_block(2), "t.nc");
+  rig.push_block(0, d);
+  rig.push_block(0, end_block(2));
   RunLog r = run_all(k);
   ASSERT_FALSE(r.events.empty());
   EXPECT_EQ(r.events.back().kind, EventKind::end);
@@ -118,8 +118,8 @@ TEST(Channel, DwellTakesItsTime) {
 TEST(Channel, FeedMoveWithoutFeedIsAnErrorAtItsLine) {
   KernelRig rig(xyz_machine());
   Kernel& k = rig.k;
-  rig.push_block(0, move(7, nc::Motion::linear, 10.0, {}, {}, 0.0), "t.nc");
-  rig.push_block(0, end_block(8), "t.nc");
+  rig.push_block(0, move(7, nc::Motion::linear, 10.0, {}, {}, 0.0));
+  rig.push_block(0, end_block(8));
   RunLog r = run_all(k);
   auto err = std::find_if(r.events.begin(), r.events.end(),
                           [](const Event& e) { return e.kind == EventKind::error; });
@@ -135,7 +135,7 @@ TEST(Channel, SoftwareLimitIsAnError) {
   m.axes[0].swe_pos = 50;
   KernelRig rig(m);
   Kernel& k = rig.k;
-  rig.push_block(0, move(3, nc::Motion::linear, 60.0), "t.nc");
+  rig.push_block(0, move(3, nc::Motion::linear, 60.0));
   RunLog r = run_all(k);
   ASSERT_FALSE(r.events.empty());
   EXPECT_EQ(r.events[0].id, ErrorId::KernelSoftwareLimit);
@@ -147,7 +147,7 @@ TEST(Channel, CircleWithBadEndPointIsAnError) {
   Kernel& k = rig.k;
   nc::Block arc = move(4, nc::Motion::cw, 20.0, 0.0);
   arc.ijk[0] = 5.0;  // centre (5,0): start radius 5, end radius 15
-  rig.push_block(0, arc, "t.nc");
+  rig.push_block(0, arc);
   RunLog r = run_all(k);
   ASSERT_FALSE(r.events.empty());
   EXPECT_EQ(r.events[0].id, ErrorId::KernelArcEndNotOnCircle);
@@ -160,7 +160,7 @@ TEST(Channel, UnsupportedFunctionIsReportedNotIgnored) {
   b.line = 5;
   b.kernel_writes.push_back({"V.G.WZ_AKT.R", 5.0});  // writing the tool radius is not executed yet
   b.axes[0] = 1.0;
-  rig.push_block(0, b, "t.nc");
+  rig.push_block(0, b);
   RunLog r = run_all(k);
   ASSERT_FALSE(r.events.empty());
   EXPECT_EQ(r.events[0].id, ErrorId::KernelNotYetSupported);
@@ -170,8 +170,8 @@ TEST(Channel, UnsupportedFunctionIsReportedNotIgnored) {
 TEST(Channel, FeedholdStopsAndResumes) {
   KernelRig rig(xyz_machine());
   Kernel& k = rig.k;
-  rig.push_block(0, move(1, nc::Motion::linear, 100.0), "t.nc");
-  rig.push_block(0, end_block(2), "t.nc");
+  rig.push_block(0, move(1, nc::Motion::linear, 100.0));
+  rig.push_block(0, end_block(2));
   TickInput in;
   TickOutput out;
   for (int i = 0; i < 300; ++i) k.tick(in, out);
@@ -190,7 +190,7 @@ TEST(Channel, FeedholdStopsAndResumes) {
 TEST(Channel, ResetEndsTheProgram) {
   KernelRig rig(xyz_machine());
   Kernel& k = rig.k;
-  rig.push_block(0, move(1, nc::Motion::linear, 100.0), "t.nc");
+  rig.push_block(0, move(1, nc::Motion::linear, 100.0));
   TickInput in;
   TickOutput out;
   k.tick(in, out);
@@ -207,10 +207,10 @@ TEST(Kernel, TwoChannelsTickSideBySide) {
   m.channel_data.emplace_back();
   KernelRig rig(m);
   Kernel& k = rig.k;
-  rig.push_block(0, move(1, nc::Motion::linear, 10.0), "a.nc");
-  rig.push_block(0, end_block(2), "a.nc");
-  rig.push_block(1, move(1, nc::Motion::linear, 20.0), "b.nc");
-  rig.push_block(1, end_block(2), "b.nc");
+  rig.push_block(0, move(1, nc::Motion::linear, 10.0));
+  rig.push_block(0, end_block(2));
+  rig.push_block(1, move(1, nc::Motion::linear, 20.0));
+  rig.push_block(1, end_block(2));
   TickInput in;
   TickOutput out;
   for (int i = 0; i < 10000 && !k.all_channels_done(); ++i) k.tick(in, out);
@@ -235,7 +235,7 @@ TEST(Channel, HomingMoreOrderGroupsThanABlockHoldsIsAnError) {
   b.line = 4;
   (void)b.g_nonmodal.add(nc::GCode::g74);
   for (std::size_t j = 0; j < 5; ++j) b.axes[j] = static_cast<double>(j + 1);  // five groups
-  rig.push_block(0, b, "t.nc");
+  rig.push_block(0, b);
   RunLog r = run_all(rig.k);
   ASSERT_FALSE(r.events.empty());
   EXPECT_EQ(r.events.back().kind, EventKind::end);

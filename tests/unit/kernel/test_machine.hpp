@@ -65,8 +65,8 @@ struct KernelRig {
     for (auto& c : m->channels) c.lookahead_blocks = 0;
     for (std::size_t ch = 0; ch < m->channels.size(); ++ch) preps.emplace_back(*m, ch, "", store, prep::PrepOptions{});
   }
-  void push_block(std::size_t ch, const nc::Block& b, const std::string& file) {
-    EXPECT_TRUE(preps[ch].prepare(b, file, k.commands(ch)));
+  void push_block(std::size_t ch, const nc::Block& b) {
+    EXPECT_TRUE(preps[ch].prepare(b, k.commands(ch)));
   }
   const std::string& message(std::uint32_t index) const { return store.messages.at(index); }
 

@@ -34,7 +34,7 @@ struct Rig {
       }
     };
     for (const nc::Block& b : decode_blocks(machine, text)) {
-      while (!window.push(planner.plan(b, "t.nc"))) {
+      while (!window.push(planner.plan(b))) {
         (void)window.release(queue, false);
         drain();
       }
@@ -131,7 +131,7 @@ TEST(LookAhead, ExactStopAfterG0WhenConfigured) {
   Planner p(m, 0, store, PlannerOptions{}, {0, 1});
   std::vector<Command> cs;
   for (const nc::Block& b : decode_blocks(m, "N10 G0 X10\nN20 G1 X20 F1200\nN30 M30\n"))
-    for (const Command& c : p.plan(b, "t.nc")) cs.push_back(c);
+    for (const Command& c : p.plan(b)) cs.push_back(c);
   EXPECT_TRUE(cs[0].exact_stop);
   EXPECT_FALSE(cs[1].exact_stop);
 }

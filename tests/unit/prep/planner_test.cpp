@@ -39,7 +39,7 @@ struct PlannerRig {
   std::vector<Command> plan(const std::string& text) {
     std::vector<Command> out;
     for (const nc::Block& b : decode_blocks(machine, text))
-      for (const Command& c : planner.plan(b, "test.nc")) out.push_back(c);
+      for (const Command& c : planner.plan(b)) out.push_back(c);
     return out;
   }
 
