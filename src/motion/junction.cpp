@@ -25,6 +25,12 @@ double corner_velocity(const AxisVector& t_in, const AxisVector& t_out, std::spa
   return v;
 }
 
+double transition_velocity(const AxisVector& t_in, const AxisVector& t_out, std::span<const double> dv_mm_s,
+                           double braking_step_mm_s, double cruise_in_mm_s, double cruise_out_mm_s) noexcept {
+  const double corner = corner_velocity(t_in, t_out, dv_mm_s) - braking_step_mm_s;
+  return std::max(std::min({corner, cruise_in_mm_s, cruise_out_mm_s}), 0.0);
+}
+
 double entry_velocity_limit(double length_mm, double v_exit_mm_s, double a_dec_mm_s2, double dt_s) noexcept {
   // The profile holds v_exit over its last cycles: entering at v_exit is
   // always possible.

@@ -113,7 +113,7 @@ double LookAheadWindow::entry_limit(const Command& c) const {
 motion::PathLimits LookAheadWindow::fillet_limits(const motion::Segment& fillet,
                                                   std::span<const motion::AxisDynamics> dyn) {
   constexpr double kTangentialShare = 0.25;
-  motion::PathLimits l = motion::path_limits(fillet, dyn);
+  motion::PathLimits l;
   const motion::AxisDynamics& da = dyn[fillet.plane_a()];
   const motion::AxisDynamics& db = dyn[fillet.plane_b()];
   const double a = std::min({da.a_acc_mm_s2, da.a_dec_mm_s2, db.a_acc_mm_s2, db.a_dec_mm_s2});
@@ -152,10 +152,8 @@ double LookAheadWindow::tangent_cap(const Command& from, const Command& to) cons
   motion::AxisVector t_in{}, t_out{};
   from.segment.tangent_at(from.segment.length(), t_in);
   to.segment.tangent_at(0.0, t_out);
-  const double corner =
-      motion::corner_velocity(t_in, t_out, std::span<const double>(axes_.corner_dv_mm_s.data(), axes_.n_axes)) -
-      from.limits.a_dec_mm_s2 * cycle_s_;
-  return std::max(std::min({corner, cruise(from), cruise(to)}), 0.0);
+  return motion::transition_velocity(t_in, t_out, std::span<const double>(axes_.corner_dv_mm_s.data(), axes_.n_axes),
+                                     from.limits.a_dec_mm_s2 * cycle_s_, cruise(from), cruise(to));
 }
 
 // Puts a fillet between the open motion `prev` and `next` (about to be

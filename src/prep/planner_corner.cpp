@@ -97,13 +97,9 @@ void Planner::note_transition(const nc::Block& b, Command& c, bool rapid) {
   if (last_motion_.valid) {
     std::array<double, kMaxAxes> budget{};
     for (std::size_t j = 0; j < n_axes_; ++j) budget[j] = std::min(dv[j], last_motion_.corner_dv[j]);
-    // The profile crosses the transition up to one braking step faster than
-    // planned (its braking is a staircase of a_dec * dt): the kink must fit
-    // at that speed too.
-    const double corner = motion::corner_velocity(last_motion_.tangent, machine_tangent(c, false),
-                                                  std::span<const double>(budget.data(), n_axes_)) -
-                          last_motion_.a_dec_mm_s2 * cycle_s_;
-    c.v_entry_max_mm_s = std::max(std::min({corner, cruise_mm_s, last_motion_.cruise_mm_s}), 0.0);
+    c.v_entry_max_mm_s = motion::transition_velocity(
+        last_motion_.tangent, machine_tangent(c, false), std::span<const double>(budget.data(), n_axes_),
+        last_motion_.a_dec_mm_s2 * cycle_s_, last_motion_.cruise_mm_s, cruise_mm_s);
   }
   last_motion_ = {true, machine_tangent(c, true), dv, cruise_mm_s, c.limits.a_dec_mm_s2, thread_chain};
 }

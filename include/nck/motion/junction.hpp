@@ -16,6 +16,15 @@ namespace nck::motion {
 // dv_mm_s.size() axes count.
 double corner_velocity(const AxisVector& t_in, const AxisVector& t_out, std::span<const double> dv_mm_s) noexcept;
 
+// The velocity at which the path may pass from one block into the next:
+// the corner velocity less one braking step of the block before (the
+// profile may cross a transition up to one step faster than planned, and
+// the kink must fit at that speed too), neither block's cruise velocity
+// exceeded; >= 0. The planner's rule for every transition, and the look-
+// ahead window's for the transitions a fillet made.
+double transition_velocity(const AxisVector& t_in, const AxisVector& t_out, std::span<const double> dv_mm_s,
+                           double braking_step_mm_s, double cruise_in_mm_s, double cruise_out_mm_s) noexcept;
+
 // The highest velocity at the start of a path of length_mm from which
 // PathProfile, braking with a_dec_mm_s2 in cycles of dt_s, still reaches
 // v_exit_mm_s at its end (the same discrete braking law, so the profile
