@@ -1,5 +1,5 @@
 // Cycle time of the common benchmark program (issue 12): the 200,000-block
-// milling program of ../shared/bench/common_program.py (chords and small
+// milling program of bench/common_program.py (chords and small
 // semicircles on a 50 mm circle at F1200/F1500), generated here by the same
 // rule so the benchmark needs nothing outside the repository. Reported:
 // simulated time / (path length / feed), and simulated seconds per wall

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs one libFuzzer target for SECONDS over its seed corpus and prints
-# libFuzzer's final statistics. The seeds come from examples/, tests/ and
-# ../shared/isg-samples (a missing ../shared is a failure, never a skip).
+# libFuzzer's final statistics. The seeds come from examples/ and tests/
+# (tests/data/isg-samples holds the ISG sample corpus).
 # usage: fuzz/run_fuzzer.sh FUZZER decoder|list|scenario SECONDS [CORPUS_DIR]
 set -euo pipefail
 fuzzer=$1 kind=$2 seconds=$3
@@ -10,11 +10,7 @@ corpus=${4:-"$(mktemp -d)"}
 seeds="$(mktemp -d)"
 case "$kind" in
   decoder)
-    if [ ! -d "$root/../shared/isg-samples" ]; then
-      echo "fuzz: ../shared/isg-samples is missing (the decoder's seed corpus needs it)" >&2
-      exit 1
-    fi
-    find "$root/examples" "$root/tests" "$root/../shared/isg-samples" -type f -name '*.nc' -exec cp -t "$seeds" --backup=numbered {} +
+    find "$root/examples" "$root/tests" -type f -name '*.nc' -exec cp -t "$seeds" --backup=numbered {} +
     dict="$root/fuzz/nc.dict" ;;
   list)
     find "$root/examples" "$root/tests" -type f -name '*.lis' -exec cp -t "$seeds" --backup=numbered {} +

@@ -3,7 +3,7 @@
 import fs from "node:fs";
 import path from "node:path";
 
-// The common-subset benchmark program (the rule of ../shared/bench/
+// The common-subset benchmark program (the rule of bench/
 // common_program.py, also used by bench/path_bench): G1/G2 moves around a
 // circle of radius 50, 0.01 rad per block.
 export function writeCommonProgram(file, n) {

@@ -1,4 +1,4 @@
-// The real ISG programs of ../shared/isg-samples as a data-driven test:
+// The real ISG programs of tests/data/isg-samples as a data-driven test:
 // `nck parse` on every file, checked against tests/isg_samples.tsv (file ->
 // "decodes", or where its first error is, with its ID and why the file is
 // not a valid ISG program). A missing folder fails; nothing may hang.
@@ -14,7 +14,7 @@ namespace {
 using namespace testing;
 
 std::filesystem::path samples() {
-  return (std::filesystem::path(root()).parent_path() / "shared" / "isg-samples").lexically_normal();
+  return (std::filesystem::path(root()) / "tests" / "data" / "isg-samples").lexically_normal();
 }
 
 struct Expected {
@@ -56,7 +56,7 @@ CliResult parse_with_timeout(const std::filesystem::path& file) {
 
 TEST(IsgSamplesCorpus, EveryFileMatchesTheTable) {
   ASSERT_TRUE(std::filesystem::is_directory(samples()))
-      << samples() << " is missing: the corpus test needs ../shared/isg-samples next to the repository";
+      << samples() << " is missing: the corpus test needs tests/data/isg-samples";
   auto table = read_table();
   ASSERT_FALSE(table.empty());
   int files = 0;

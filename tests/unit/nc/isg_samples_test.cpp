@@ -1,4 +1,4 @@
-// The real ISG programs of shared/isg-samples: all decode without a crash
+// The real ISG programs of tests/data/isg-samples: all decode without a crash
 // (many contain placeholders and stop with a diagnostic); a few results.
 #include "nc_test_util.hpp"
 
@@ -6,7 +6,7 @@ namespace nck::nc::test {
 namespace {
 
 std::filesystem::path samples() {
-  return std::filesystem::path(NCK_SOURCE_DIR).parent_path() / "shared" / "isg-samples";
+  return std::filesystem::path(NCK_SOURCE_DIR) / "tests" / "data" / "isg-samples";
 }
 
 class NcIsgSamples : public ::testing::Test {

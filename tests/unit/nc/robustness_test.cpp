@@ -52,7 +52,7 @@ TEST(NcRobustness, LintModeContinuesAfterErrors) {
 
 std::vector<std::string> sample_texts() {
   std::vector<std::string> r;
-  auto dir = std::filesystem::path(NCK_SOURCE_DIR).parent_path() / "shared" / "isg-samples";
+  auto dir = std::filesystem::path(NCK_SOURCE_DIR) / "tests" / "data" / "isg-samples";
   std::error_code ec;
   for (const auto& e : std::filesystem::recursive_directory_iterator(dir, ec)) {
     if (!e.is_regular_file() || e.path().extension() != ".nc") continue;
