@@ -120,6 +120,8 @@ int main_cli(int argc, char** argv) {
       ->check(number_at_least(0.001, false));
   runc->add_option("--max-wall", run.max_wall_s, "wall-clock limit in seconds")->check(number_at_least(0.001, false));
   runc->add_flag("--realtime", run.realtime, "pace the cycles to the wall clock");
+  runc->add_flag("--prep-thread", run.prep_thread,
+                 "decode and plan in a thread of their own (the same outputs while preparation keeps up)");
   runc->add_option("--clamp-index", run.clamp_index, "clamp-offset group pzv_grp[N] at program start")
       ->check(number_at_least(0, true));
   runc->add_flag("!--no-progress", run.progress, "no progress display on the terminal");

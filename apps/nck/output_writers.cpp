@@ -71,6 +71,7 @@ const char* kind_name(kernel::EventKind k) {
     case K::end: return "end";
     case K::dist_ctrl: return "dist_ctrl";
     case K::trc: return "trc";
+    case K::state: return "state";
   }
   return "unknown";
 }
@@ -115,6 +116,7 @@ const char* end_name(kernel::EndReason r) {
     case R::max_time: return "max_time";
     case R::max_wall: return "max_wall";
     case R::interrupted: return "interrupted";
+    case R::hold: return "hold";
   }
   return "error";
 }
@@ -199,6 +201,14 @@ std::string EventWriter::line(const kernel::Event& e, const RunNames& names) {
     case K::end:
       j["reason"] = end_name(e.end_reason);
       break;
+    case K::state:
+      j["from"] = kernel::state_name(static_cast<kernel::ProgramState>(e.state_from));
+      j["to"] = kernel::state_name(static_cast<kernel::ProgramState>(e.state_to));
+      j["reason"] = kernel::state_reason_name(static_cast<kernel::StateReason>(e.state_reason));
+      j["line"] = e.line;
+      j["n"] = e.has_n ? json(e.n) : json(nullptr);
+      j["file"] = names.file(ch, e.file_id);
+      break;
     case K::link: {
       const prep::LinkPayload& p = names.run->link(e.message_index);
       j["group"] = e.link_group;
@@ -235,18 +245,6 @@ std::string EventWriter::line(const kernel::Event& e, const RunNames& names) {
     default:
       break;
   }
-  return dump_json(j);
-}
-
-std::string EventWriter::line(double t_s, std::size_t ch, const Diagnostic& d) {
-  json j;
-  j["t"] = t_s;
-  j["ch"] = ch + 1;
-  j["ev"] = d.severity == Severity::error ? "error" : "warning";
-  j["id"] = number(d.id);
-  j["line"] = d.loc.line;
-  j["file"] = to_utf8(d.loc.file);
-  j["msg"] = to_utf8(d.message);
   return dump_json(j);
 }
 

@@ -44,8 +44,6 @@ class EventWriter {
   bool is_open() const { return file_.is_open(); }
   // An event as one JSON line (without the newline).
   static std::string line(const kernel::Event& e, const RunNames& names);
-  // A diagnostic that does not come from the cycle (decoder warnings).
-  static std::string line(double t_s, std::size_t ch, const Diagnostic& d);
   void write_line(const std::string& line);
   std::optional<std::string> commit() { return file_.commit(); }
 

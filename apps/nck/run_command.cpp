@@ -30,18 +30,6 @@ bool print_load_diagnostics(const config::LoadResult& r) {
   return r.ok();
 }
 
-// Decoder warnings appear when decoded; errors travel through the channel
-// queue so they are raised when execution reaches them.
-void report_new_warnings(const sim::DryRun& run, double t_s, RunOutputs& out, Progress& progress) {
-  for (std::size_t ch = 0; ch < run.channel_count(); ++ch)
-    for (const Diagnostic& d : run.new_warnings(ch)) {
-      out.summary.warning();
-      progress.clear();
-      fmt::print(stderr, "{}\n", format(d));
-      if (out.wants_events()) out.event(EventWriter::line(t_s, ch, d), false);
-    }
-}
-
 // A cycle whose events did not all fit its output: never lost silently.
 void report_dropped_events(const kernel::TickOutput& o, const RunNames& names, RunOutputs& out, Progress& progress) {
   if (o.events_dropped == 0) return;
@@ -129,7 +117,6 @@ std::optional<kernel::EndReason> run_loop(sim::DryRun& run, const RunOptions& op
   for (std::uint64_t cycle = 0;; ++cycle) {
     const double t_s = run.time_s();
     run.prepare();
-    report_new_warnings(run, t_s, out, progress);
     run.cycle(*o);
     record_events(*o, names, out, progress);
     report_dropped_events(*o, names, out, progress);
@@ -137,6 +124,7 @@ std::optional<kernel::EndReason> run_loop(sim::DryRun& run, const RunOptions& op
     out.report.sample(run.kernel().cycles() - 1, *o, names);
     if (run.done()) return std::nullopt;
     if (g_stop_signal != 0) return kernel::EndReason::interrupted;
+    if (run.held_for_good()) return kernel::EndReason::hold;
     if (t_s + run.kernel().cycle_time_s() >= opt.max_time_s) return kernel::EndReason::max_time;
     // The clock is read every 1024 cycles only: a run's cycle takes well under a microsecond.
     if (opt.max_wall_s > 0 && cycle % 1024 == 0 && std::chrono::steady_clock::now() - wall_start >= wall_limit)
@@ -146,16 +134,30 @@ std::optional<kernel::EndReason> run_loop(sim::DryRun& run, const RunOptions& op
   }
 }
 
+kernel::StateReason state_reason_of(kernel::EndReason r) {
+  using R = kernel::EndReason;
+  switch (r) {
+    case R::max_time: return kernel::StateReason::max_time;
+    case R::max_wall: return kernel::StateReason::max_wall;
+    case R::interrupted: return kernel::StateReason::interrupted;
+    case R::hold: return kernel::StateReason::hold;
+    default: return kernel::StateReason::error;
+  }
+}
+
 // Every channel still running ends with the loop's reason; stderr says why.
 void end_unfinished_channels(const sim::DryRun& run, kernel::EndReason reason, const RunOptions& opt,
                              const RunNames& names, RunOutputs& out) {
   const kernel::Kernel& k = run.kernel();
   for (std::size_t ch = 0; ch < k.channel_count(); ++ch) {
-    const kernel::ChannelStatus st = k.channel_state(ch).status;
-    if (st == kernel::ChannelStatus::ended || st == kernel::ChannelStatus::aborted) continue;
-    kernel::Event e;
+    const kernel::ChannelState st = k.channel_state(ch);
+    if (st.status == kernel::ChannelStatus::ended || st.status == kernel::ChannelStatus::aborted) continue;
+    kernel::Event e = st.at;
     e.t_s = run.time_s();
-    e.channel = static_cast<std::uint8_t>(ch + 1);
+    e.state_from = static_cast<std::uint8_t>(st.program_state);
+    e.state_to = static_cast<std::uint8_t>(kernel::ProgramState::ended);
+    e.state_reason = static_cast<std::uint8_t>(state_reason_of(reason));
+    out.event(EventWriter::line(e, names), false);
     e.kind = kernel::EventKind::end;
     e.end_reason = reason;
     out.event(EventWriter::line(e, names), false);
@@ -165,6 +167,11 @@ void end_unfinished_channels(const sim::DryRun& run, kernel::EndReason reason, c
   else if (reason == kernel::EndReason::max_wall)
     fmt::print(stderr, "nck: error {}: the wall-clock limit of {} s was reached before the program end\n",
                number(ErrorId::AppWallTimeLimit), opt.max_wall_s);
+  else if (reason == kernel::EndReason::hold)
+    fmt::print(stderr,
+               "nck: error {}: the program holds (M0/M1) and nothing releases it: the --plc scenario "
+               "switched auto_cycle_start off and has no cycle_start line left\n",
+               number(ErrorId::AppHeldForGood));
   else if (reason == kernel::EndReason::interrupted)
     fmt::print(stderr, "nck: interrupted at {} s (simulated); the output files are complete\n", run.time_s());
 }
@@ -231,7 +238,7 @@ int run_simulation(const RunOptions& opt) {
     return 2;
   }
   std::vector<std::filesystem::path> programs(opt.programs.begin(), opt.programs.end());
-  auto created = sim::DryRun::create(m, programs, {opt.clamp_index, !opt.report.empty()});
+  auto created = sim::DryRun::create(m, programs, {opt.clamp_index, !opt.report.empty(), opt.prep_thread});
   if (!created) {
     fmt::print(stderr, "{}\n", format(created.error()));
     return 2;
@@ -263,6 +270,7 @@ int run_simulation(const RunOptions& opt) {
     StopSignals signals;
     stopped = run_loop(run, opt, names, out);
   }
+  run.stop_preparation();  // what is read below belongs to preparation
   if (stopped) end_unfinished_channels(run, *stopped, opt, names, out);
   return finish_outputs(run, opt, m, stopped, out);
 }

@@ -16,6 +16,7 @@ struct RunOptions {
   double max_wall_s = 0;      // wall-clock seconds (0 = no limit)
   std::uint32_t clamp_index = 0;  // clamp-offset group (pzv_grp) at program start
   bool realtime = false;
+  bool prep_thread = false;  // preparation in a thread of its own
   bool progress = true;       // on a terminal only
   std::vector<std::string> cycles;  // --cycles DIR: searched after startup.lis cycle_path[i]
 };

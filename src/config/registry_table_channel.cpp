@@ -74,7 +74,7 @@ constexpr ParamInfo kTable[] = {
     {"messtyp", "P-CHAN-00057", C, T::integer, 1, 7, 1, 1, "—", "—", "Measuring-move variant."},
     {"versch_im_durchm", "P-CHAN-00091", C, T::boolean, 0, 1, 0, 1, "—", "—", "Face-axis offsets are diameters."},
     {"exact_stop_after_g00", "P-CHAN-00235", C, T::boolean, 0, 1, 0, 1, "—", "—", "Every G0 block ends with an exact stop (G60)."},
-    {"configuration.interpolator.number_blocks_lah", "P-CHAN-00653", C, T::integer, 10, 500, 120, 1, "blocks", "blocks", "Motion blocks in the velocity look-ahead window."},
+    {"configuration.interpolator.number_blocks_lah", "P-CHAN-00653", C, T::integer, 10, 500, 120, 1, "blocks", "blocks", "Motion blocks in the velocity look-ahead window; nck takes at most 120 (its command queue must hold every block the window planned with: docs/decisions.md)."},
     {"move_tool_offsets_directly", "P-CHAN-00100", C, T::boolean, 0, 1, 0, 1, "—", "—", "Tool offsets move with the D word (1) or at the next absolute move (0)."},
     {"modal_i_j_k_for_circle", "P-CHAN-00159", C, T::boolean, 0, 1, 0, 1, "—", "—", "Circle centre I/J/K stay modal."},
     {"use_alias_name_in_ax_list", "P-CHAN-00253", C, T::boolean, 0, 1, 0, 1, "—", "—", "Alias names A1..A32 allowed in axis-specific moves."},

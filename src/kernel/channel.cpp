@@ -1,7 +1,10 @@
 #include "channel.hpp"
 
+#include "nck/kernel/braking_reserve.hpp"
+
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace nck::kernel {
 
@@ -28,8 +31,39 @@ Event Channel::event(EventKind k, double t_s) const noexcept {
   return e;
 }
 
+void Channel::set_state(ProgramState to, StateReason why, double t_s, TickOutput& sink) noexcept {
+  if (to == state_) return;
+  Event e = event(EventKind::state, t_s);
+  e.state_from = static_cast<std::uint8_t>(state_);
+  e.state_to = static_cast<std::uint8_t>(to);
+  e.state_reason = static_cast<std::uint8_t>(why);
+  sink.emit(e);
+  state_ = to;
+}
+
+namespace {
+
+// The program state a program end leaves, and why.
+std::pair<ProgramState, StateReason> state_after(EndReason r) noexcept {
+  switch (r) {
+    case EndReason::m30: return {ProgramState::ended, StateReason::m30};
+    case EndReason::m2: return {ProgramState::ended, StateReason::m2};
+    case EndReason::error: return {ProgramState::error, StateReason::error};
+    case EndReason::reset: return {ProgramState::idle, StateReason::reset};
+    case EndReason::max_time: return {ProgramState::ended, StateReason::max_time};
+    case EndReason::max_wall: return {ProgramState::ended, StateReason::max_wall};
+    case EndReason::interrupted: return {ProgramState::ended, StateReason::interrupted};
+    case EndReason::hold: return {ProgramState::ended, StateReason::hold};
+  }
+  return {ProgramState::ended, StateReason::m30};
+}
+
+}  // namespace
+
 void Channel::end_program(EndReason reason, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept {
   dissolve_links(reason, t_s, sink, ctx);
+  const auto [state, why] = state_after(reason);
+  set_state(state, why, t_s, sink);
   Event e = event(EventKind::end, t_s);
   e.end_reason = reason;
   sink.emit(e);
@@ -37,7 +71,7 @@ void Channel::end_program(EndReason reason, double t_s, TickOutput& sink, Channe
   status_ = ok ? ChannelStatus::ended : ChannelStatus::aborted;
   active_ = false;
   velocity_ = 0;
-  passing_ = false;
+  passing_ = reserve_ = starved_ = false;
   profile_.reset();
   waits_.clear();
   late_.clear();
@@ -73,6 +107,7 @@ void Channel::raise(ErrorId id, std::uint32_t message, double t_s, TickOutput& s
 
 void Channel::start(const Command& c, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept {
   current_ = c;
+  if (state_ == ProgramState::idle) set_state(ProgramState::running, StateReason::start, t_s, sink);
   // Only motions (and blocks without motion in between) continue a path
   // at speed; anything else starts from standstill.
   if (c.kind != CommandKind::motion && c.kind != CommandKind::nop) {
@@ -132,13 +167,16 @@ void Channel::execute(double t_s, double dt_s, const ChannelInput& in, TickOutpu
     }
     const double ovr = in.feedhold ? 0.0 : std::clamp(in.feed_override_pct, 0.0, 100.0) / 100.0;
     limit_path(ctx);
+    keep_braking_reserve(dt_s);
     const motion::ProfileSample st = profile_.step(dt_s, ovr);
+    if (reserve_ && st.braking) note_starved(t_s, sink);
     moved_this_cycle_ = st.v_mm_s > 0;
     probe_armed_ = current_.measure;
     place(st.s_mm);
     follow_path(st.s_mm, st.v_mm_s, ctx);
     velocity_ = st.v_mm_s;
     if (!st.finished) return;
+    if (!reserve_) starved_ = false;  // the episode ends with a block that ran as planned
     place(current_.segment.length());
     // Continuous path: the block ends at speed and the next one takes over
     // within this cycle (the look-ahead planned nothing to wait for between).
@@ -157,6 +195,27 @@ void Channel::execute(double t_s, double dt_s, const ChannelInput& in, TickOutpu
   } else {
     phase_ = Phase::post_wait;
   }
+}
+
+// While the commands queued after a motion do not reach a stop or a braking
+// distance, its end speed is lowered to what they leave room for; raised
+// again, up to the planned speed, as soon as preparation queues more.
+void Channel::keep_braking_reserve(double dt_s) noexcept {
+  if (!reserve_) return;
+  const double v_end = reserve_end_speed(current_, *commands_, dt_s);
+  profile_.set_end_velocity(v_end);
+  reserve_ = v_end < current_.v_end_mm_s;
+}
+
+// The braking reserve slowed the path: preparation fell behind. One
+// warning per episode (until a block runs as planned again).
+void Channel::note_starved(double t_s, TickOutput& sink) noexcept {
+  if (starved_) return;
+  starved_ = true;
+  Event e = event(EventKind::warning, t_s);
+  e.id = ErrorId::KernelPrepStarved;
+  e.message_index = kNoMessage;
+  sink.emit(e);
 }
 
 // G4 S..: the dwell lasts as many revolutions as the spindle really turns
@@ -235,12 +294,18 @@ void Channel::end_block(double t_s, const ChannelInput& in, TickOutput& sink, Ch
   if (current_.kind == CommandKind::end && dist_wind_down()) return;
   active_ = false;
   if (current_.kind == CommandKind::stop) {
-    // A dry run has no operator: the stop is reported and the program goes
-    // on. M1 stops only while the HLI's optional-stop switch is on.
-    if (!current_.optional_stop || in.optional_stop) sink.emit(event(EventKind::stop, t_s));
+    stop_program(in, t_s, sink);
   } else if (current_.kind == CommandKind::end) {
     end_program(current_.end_reason, t_s, sink, ctx);
   }
+}
+
+// M1 stops only while the HLI's optional-stop switch is on. The channel
+// then holds before its next block until a cycle start (ChannelInput).
+void Channel::stop_program(const ChannelInput& in, double t_s, TickOutput& sink) noexcept {
+  if (current_.optional_stop && !in.optional_stop) return;
+  sink.emit(event(EventKind::stop, t_s));
+  set_state(ProgramState::hold, current_.optional_stop ? StateReason::m1 : StateReason::m0, t_s, sink);
 }
 
 // Runs the current block's phases as far as this cycle allows.
@@ -256,7 +321,9 @@ void Channel::advance(double t_s, double dt_s, const ChannelInput& in, TickOutpu
     }
     phase_ = Phase::body;
     if (current_.kind == CommandKind::motion) {
-      profile_.start(current_.segment.length(), current_.v_cmd_mm_s, current_.limits, current_.v_end_mm_s);
+      const double v_end = reserve_end_speed(current_, *commands_, dt_s);
+      reserve_ = v_end < current_.v_end_mm_s;
+      profile_.start(current_.segment.length(), current_.v_cmd_mm_s, current_.limits, v_end);
       if (!start_links(t_s, sink, ctx)) return;
       if (passing_) {
         // The block before ran into this one during this cycle: the set
@@ -296,6 +363,10 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
     } else {
       for (;;) {
         if (!active_) {
+          if (state_ == ProgramState::hold) {
+            if (!in.cycle_start) break;
+            set_state(ProgramState::running, StateReason::cycle_start, t_s, sink);
+          }
           if (commands_->empty()) break;
           start(commands_->front(), t_s, sink, ctx);
           commands_->pop();
@@ -321,6 +392,7 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
   dist_output(out);
   out.path_velocity_mm_s = velocity_;
   out.status = status_;
+  out.program_state = state_;
 }
 
 // Handwheel turns move the axes that are in manual mode (G201); the offset

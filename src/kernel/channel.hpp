@@ -49,6 +49,9 @@ class Channel {
   void on_ack(plc::OutputHandle h) noexcept;
 
   ChannelStatus status() const noexcept { return status_; }
+  ProgramState program_state() const noexcept { return state_; }
+  // An event of kind k at the block the channel stands at.
+  Event event(EventKind k, double t_s) const noexcept;
   bool done() const noexcept {
     return status_ == ChannelStatus::ended || status_ == ChannelStatus::aborted;
   }
@@ -97,6 +100,8 @@ class Channel {
                ChannelContext& ctx) noexcept;
   void execute(double t_s, double dt_s, const ChannelInput& in, TickOutput& sink, ChannelContext& ctx) noexcept;
   void place(double s_mm) noexcept;
+  void keep_braking_reserve(double dt_s) noexcept;
+  void note_starved(double t_s, TickOutput& sink) noexcept;
   void dwell_revolutions(double t_s, double dt_s, TickOutput& sink, ChannelContext& ctx) noexcept;
   void end_measuring_run(double t_s, const ChannelInput& in, TickOutput& sink, ChannelContext& ctx) noexcept;
   void send_feedback(const Feedback& f, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
@@ -106,7 +111,10 @@ class Channel {
   void end_program(EndReason reason, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
   void raise(ErrorId id, std::uint32_t message, double t_s, TickOutput& sink,
              ChannelContext& ctx) noexcept;
-  Event event(EventKind k, double t_s) const noexcept;
+  // Enters program state `to` (a `state` event when it changes).
+  void set_state(ProgramState to, StateReason why, double t_s, TickOutput& sink) noexcept;
+  // A programmed stop that applies holds the channel until cycle start.
+  void stop_program(const ChannelInput& in, double t_s, TickOutput& sink) noexcept;
 
   // synchronisation (channel_sync.cpp)
   void issue_all(SyncPoint phase, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept;
@@ -125,6 +133,7 @@ class Channel {
   std::size_t n_axes_ = 0;
   FixedVector<std::int8_t, config::kMaxSpindles> spindles_;  // kernel index per channel spindle
   ChannelStatus status_ = ChannelStatus::idle;
+  ProgramState state_ = ProgramState::idle;
   bool active_ = false;  // `current_` is being executed
   Phase phase_ = Phase::pre_wait;
   std::size_t next_action_ = 0;  // spindle actions of the block issued so far
@@ -134,6 +143,8 @@ class Channel {
   double dwell_revs_left_ = 0;
   double velocity_ = 0;
   bool passing_ = false;  // the last motion ended at speed: the next one takes over this cycle
+  bool reserve_ = false;  // the motion's end speed is lowered: its successors are not all queued yet
+  bool starved_ = false;  // the braking reserve slowed the path (a KernelPrepStarved episode)
   bool moved_this_cycle_ = false, moved_last_cycle_ = false;  // the path advanced in this / the last cycle
   motion::AxisVector pos_{};
   // Every output and spindle action of a block may wait once, and the late

@@ -91,7 +91,9 @@ FeedbackQueue& Kernel::feedback(std::size_t ch) { return *feedback_queues_.at(ch
 
 ChannelState Kernel::channel_state(std::size_t ch) const {
   const Channel& c = *channels_.at(ch);
-  return ChannelState{c.position(), c.manual_offsets(), c.machine_position(), c.status(),
+  return ChannelState{c.position(),      c.manual_offsets(),
+                      c.machine_position(), c.status(),
+                      c.program_state(), c.event(EventKind::state, 0.0),
                       static_cast<std::uint8_t>(c.dist_state()), c.dist_offset_mm()};
 }
 
@@ -115,6 +117,10 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
 
 bool Kernel::channel_done(std::size_t ch) const noexcept {
   return ch < channels_.size() && channels_[ch]->done();
+}
+
+ProgramState Kernel::program_state(std::size_t ch) const noexcept {
+  return ch < channels_.size() ? channels_[ch]->program_state() : ProgramState::idle;
 }
 
 bool Kernel::all_channels_done() const noexcept {

@@ -105,6 +105,13 @@ bool PathProfile::start(double length_mm, double v_cmd_mm_s, const PathLimits& l
   return true;
 }
 
+void PathProfile::set_end_velocity(double v_end_mm_s) noexcept {
+  const double v = positive_finite(v_end_mm_s) ? std::min(v_end_mm_s, v_cmd_mm_s_) : 0.0;
+  if (v == v_end_mm_s_) return;
+  v_end_mm_s_ = v;
+  beyond_dt_s_ = 0.0;  // the braking curve's end point moves
+}
+
 void PathProfile::limit_first_step(double a_mm_s2) noexcept {
   if (a_mm_s2 >= 0.0) first_acc_mm_s2_ = std::min(first_acc_mm_s2_, a_mm_s2);  // NaN: ignored
 }
@@ -151,6 +158,7 @@ ProfileSample PathProfile::step(double dt_s, double override_factor) noexcept {
   // profile runs at v_end (pass_brake_distance), so it crosses at exactly
   // that speed.
   const bool holding = v_end_mm_s_ > 0.0 && left_mm <= kHoldCycles * v_end_mm_s_ * dt_s;
+  bool braking = false;
   const double goal = holding ? std::min(target, v_end_mm_s_) : target;
   double v = v_prev < goal ? std::min(v_prev + a_acc * dt_s, goal) : std::max(v_prev - a_dec * dt_s, goal);
   // Rounding must not leave a residue like 1e-14 mm/s (a "moving" feedhold).
@@ -166,7 +174,11 @@ ProfileSample PathProfile::step(double dt_s, double override_factor) noexcept {
     // Far from the end the braking curve is not reached: it lies above
     // sqrt(2 a d) - a dt / 2, so the staircase is skipped there.
     const double rest_mm = left_mm + beyond_mm_, v_safe = v + 1.5 * a * dt_s;
-    if (v_safe * v_safe > 2.0 * a * rest_mm) v = std::min(v, discrete_brake_velocity(rest_mm, a, dt_s));
+    if (v_safe * v_safe > 2.0 * a * rest_mm) {
+      const double v_brake = discrete_brake_velocity(rest_mm, a, dt_s);
+      braking = v_brake < v;
+      v = std::min(v, v_brake);
+    }
   }
   v = std::max(v, 0.0);
 
@@ -181,7 +193,7 @@ ProfileSample PathProfile::step(double dt_s, double override_factor) noexcept {
   }
   s_mm_ += move_mm;
   v_mm_s_ = v;
-  return ProfileSample{s_mm_, v, (v - v_prev) / dt_s, false};
+  return ProfileSample{s_mm_, v, (v - v_prev) / dt_s, false, braking};
 }
 
 }  // namespace nck::motion

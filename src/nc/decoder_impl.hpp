@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "nck/core/append_log.hpp"
 #include "block_words.hpp"
 #include "file_cache.hpp"
 #include "nck/nc/decoder.hpp"
@@ -72,7 +73,7 @@ struct Decoder::Impl {
   explicit Impl(DecoderConfig c);
 
   DecoderConfig cfg;
-  std::vector<std::string> files;
+  AppendLog<std::string> files;  // read by other threads while decoding (event file names)
   std::vector<Diagnostic> diags;
   detail::Variables vars;
   detail::ErrorSlot err;

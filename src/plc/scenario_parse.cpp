@@ -38,6 +38,8 @@ constexpr std::array kActions = {
     ActionSpelling{"spindle_cmd", ActionKind::spindle_cmd},
     ActionSpelling{"handwheel", ActionKind::handwheel},
     ActionSpelling{"variable", ActionKind::variable},
+    ActionSpelling{"cycle_start", ActionKind::cycle_start},
+    ActionSpelling{"auto_cycle_start", ActionKind::auto_cycle_start},
 };
 
 // Parses one line; reports its first problem and returns nothing then.
@@ -171,8 +173,10 @@ bool LineParser::parse_args(ScenarioAction& a) {
     case ActionKind::feedhold:
     case ActionKind::optional_stop:
     case ActionKind::silent:
+    case ActionKind::auto_cycle_start:
       return take_switch(a.on);
     case ActionKind::reset:
+    case ActionKind::cycle_start:
       return true;
     case ActionKind::spindle_reset:
       return take_spindle(a);

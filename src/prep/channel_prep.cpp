@@ -1,5 +1,6 @@
 #include "nck/prep/channel_prep.hpp"
 
+#include <algorithm>
 
 #include "nck/plc/hli.hpp"
 #include "nck/prep/decoder_setup.hpp"
@@ -24,9 +25,11 @@ ChannelPrep::ChannelPrep(const config::Machine& m, std::size_t ch, const std::fi
                          PlanStore& store, const PrepOptions& options)
     : planner_(std::make_unique<Planner>(m, ch, store, PlannerOptions{options.clamp_index},
                                          kernel_spindles(m, ch))),
-      window_(m.channels[ch].lookahead_blocks, m.cycle_time_us * 1e-6),
+      window_(std::min<std::size_t>(m.channels[ch].lookahead_blocks, kernel::kMaxLookAheadDepth),
+              m.cycle_time_us * 1e-6),
       trc_(m, ch),
-      store_(options.record_frames ? &store : nullptr) {
+      store_(&store),
+      record_frames_(options.record_frames) {
   if (program.empty()) {
     done_ = true;
     return;
@@ -50,8 +53,14 @@ bool ChannelPrep::needs_feedback(const nc::Block& b) {
          (b.hash && std::holds_alternative<nc::GetManualOffsets>(*b.hash));
 }
 
-void ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& feedback, bool channel_done) {
-  new_warnings_.clear();
+bool ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& feedback, bool channel_done) {
+  const std::uint64_t before = decoded_ + window_.released();
+  feed_blocks(commands, feedback, channel_done);
+  return decoded_ + window_.released() != before;
+}
+
+void ChannelPrep::feed_blocks(kernel::CommandQueue& commands, kernel::FeedbackQueue& feedback,
+                              bool channel_done) {
   if (!drain_backlog(commands)) return;
   if (flushing_) {
     if (!window_.release(commands, true)) return;
@@ -63,11 +72,13 @@ void ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& fe
       take_feedback(feedback.front());
       feedback.pop();
     }
+    ++decoded_;
     awaiting_feedback_ = false;
   }
   while (!done_ && !awaiting_feedback_ && backlog_.empty() &&
          commands.free_slots() >= kernel::kMaxCommandsPerBlock) {
     nc::Decoder::Result r = decoder_->next();
+    ++decoded_;
     collect_warnings();
     if (r.status == nc::Decoder::Status::block) {
       if (r.block.depth == 0) last_main_line_ = r.block.line;
@@ -124,12 +135,13 @@ void ChannelPrep::plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& comm
   };
   for (TrcOut& o : outs) {
     PlannedBlock planned = plan_one(o);
+    if (!planned.empty()) attach_warnings(planned[0]);
     if (!o.error) {
       if (o.inserted)
         for (kernel::Command& c : planned) c.emit_block_event = false;
       else if (const auto st = trc_.report(o.block); st && !planned.empty())
         set_trc_event(planned[0], *st);
-      if (store_) {
+      if (record_frames_) {
         const std::uint32_t frame = frame_index_now();
         for (kernel::Command& c : planned) c.frame_index = frame;
       }
@@ -158,6 +170,7 @@ void ChannelPrep::hand_over(const kernel::Command& c, kernel::CommandQueue& comm
   trc_.discard();
   PlannedBlock b;
   (void)b.push_back(c);
+  attach_warnings(b[0]);
   flushing_ = true;
   if (!backlog_.empty()) {
     backlog_.push_back(b);
@@ -205,7 +218,13 @@ std::uint32_t ChannelPrep::frame_index_now() {
 void ChannelPrep::collect_warnings() {
   const auto& ds = decoder_->diagnostics();
   for (; diagnostics_seen_ < ds.size(); ++diagnostics_seen_)
-    if (ds[diagnostics_seen_].severity == Severity::warning) new_warnings_.push_back(ds[diagnostics_seen_]);
+    if (ds[diagnostics_seen_].severity == Severity::warning) pending_warnings_.push_back(ds[diagnostics_seen_]);
+}
+
+void ChannelPrep::attach_warnings(kernel::Command& c) {
+  if (pending_warnings_.empty()) return;
+  add_warnings(c, pending_warnings_, *store_);
+  pending_warnings_.clear();
 }
 
 }  // namespace nck::prep

@@ -154,18 +154,7 @@ bool Planner::apply_frames(const nc::Block& b, Command& c, Command& error) {
     error = error_command(changes.error().id, changes.error().message, b.file_id, b.line);
     return false;
   }
-  for (std::size_t i = 0; i < changes->warnings.size(); ++i) {
-    const Diagnostic& w = changes->warnings[i];
-    if (c.warnings.size() + 1 < Command::kMaxWarnings || i + 1 == changes->warnings.size()) {
-      (void)c.warnings.push_back({w.id, store_.add_message(w.message)});
-      continue;
-    }
-    const std::size_t more = changes->warnings.size() - i;  // this one and the rest
-    (void)c.warnings.push_back({ErrorId::KernelWarningsDropped,
-                                store_.add_message(fmt::format("{} more warning(s) of this block, the first: {}",
-                                                               more, w.message))});
-    break;
-  }
+  add_warnings(c, changes->warnings, store_);
   for (frames::OffsetKind k : changes->kinds) {
     const std::string kind(frames::to_string(k));
     const bool seen = std::any_of(c.offset_events.begin(), c.offset_events.end(),

@@ -14,17 +14,32 @@ std::expected<DryRun, Diagnostic> DryRun::create(const config::Machine& m,
   run.sim_ = std::make_unique<MachineSim>(*run.machine_);
   run.store_ = std::make_unique<prep::PlanStore>();
   run.in_ = std::make_unique<kernel::TickInput>();
+  run.threaded_ = options.prep_thread;
   for (std::size_t ch = 0; ch < run.machine_->channels.size(); ++ch)
     run.preps_.emplace_back(*run.machine_, ch, ch < programs.size() ? programs[ch] : std::filesystem::path(),
                             *run.store_, prep::PrepOptions{options.clamp_index, options.record_frames});
   return run;
 }
 
-DryRun::~DryRun() = default;
+DryRun::~DryRun() { stop_preparation(); }
 DryRun::DryRun(DryRun&&) noexcept = default;
 DryRun& DryRun::operator=(DryRun&&) noexcept = default;
 
+// With a preparation thread the cycles run on while every queue holds this
+// many commands: enough for any braking the look-ahead plans within its
+// depth, so the kernel's reserve never binds where one thread's would not.
+constexpr std::size_t kQueuedAhead = kernel::kMaxLookAheadDepth;
+
 void DryRun::prepare() {
+  if (threaded_) {
+    // Started here, once this object has stopped moving.
+    if (!prep_thread_) prep_thread_ = std::make_unique<PrepThread>(preps_, *kernel_);
+    prep_thread_->wait_caught_up(kQueuedAhead);
+    prep_thread_->rethrow_failure();
+    for (std::size_t ch = 0; ch < preps_.size(); ++ch)
+      if (prep_thread_->sensor_wanted(ch)) sim_->switch_sensor_on(ch);
+    return;
+  }
   for (std::size_t ch = 0; ch < preps_.size(); ++ch) {
     preps_[ch].feed(kernel_->commands(ch), kernel_->feedback(ch), kernel_->channel_done(ch));
     // Preparation runs ahead of the kernel: the sensor is on before the
@@ -37,12 +52,29 @@ void DryRun::cycle(kernel::TickOutput& out) noexcept {
   sim_->read(kernel_->time_s(), *in_);
   kernel_->tick(*in_, out);
   sim_->write(out);
+  if (prep_thread_) prep_thread_->cycle_done();
+}
+
+void DryRun::stop_preparation() {
+  if (prep_thread_) prep_thread_->stop();
 }
 
 bool DryRun::done() const noexcept {
   for (std::size_t ch = 0; ch < preps_.size(); ++ch)
     if (preps_[ch].has_program() && !kernel_->channel_done(ch)) return false;
   return true;
+}
+
+bool DryRun::held_for_good() const noexcept {
+  if (sim_->scenario_pending()) return false;
+  bool any = false;
+  for (std::size_t ch = 0; ch < preps_.size(); ++ch) {
+    if (!preps_[ch].has_program() || kernel_->channel_done(ch)) continue;
+    if (kernel_->program_state(ch) != kernel::ProgramState::hold || sim_->auto_cycle_start(ch))
+      return false;
+    any = true;
+  }
+  return any;
 }
 
 ChannelSnapshot DryRun::snapshot(std::size_t ch) const {

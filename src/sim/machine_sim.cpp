@@ -19,6 +19,9 @@ MachineSim::MachineSim(const config::Machine& m)
     : plc_(m.sim), hli_(plc::make_hli_image(m)), map_(plc::build_spindle_map(m)) {
   channels_ = std::min(m.channels.size(), config::kMaxChannels);
   spindles_ = std::min(map_.count, kernel::kMaxMachineSpindles);
+  // A dry run has no operator: unless the scenario says otherwise, every
+  // hold is released in the cycle it begins, so M0 costs no time.
+  auto_cycle_start_.fill(true);
   for (std::size_t ch = 0; ch < channels_; ++ch) {
     probes_[ch] = make_probe(m, ch);
     sensors_[ch] = DistanceSensor(m.sim, m.channels[ch], m.cycle_time_us * 1e-6);
@@ -50,6 +53,8 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
     ci.optional_stop = c.optional_stop;
     ci.reset = c.reset;
     c.reset = false;  // a request: handed over once
+    ci.cycle_start = c.cycle_start || auto_cycle_start_[ch];
+    c.cycle_start = false;
     ci.probe_switched = probe_switched_[ch];
     if (probe_switched_[ch]) ci.probe_latched_mcs = probes_[ch].latched();
     if (sensor_on_[ch]) sensors_[ch].sample(t_s, ci.dist_sensor_valid, ci.dist_sensor_mm);
@@ -80,6 +85,8 @@ void MachineSim::apply(const plc::ScenarioAction& a, kernel::TickInput& in) noex
     case plc::ActionKind::feedhold: ch.feedhold = a.on; return;
     case plc::ActionKind::reset: ch.reset = true; return;
     case plc::ActionKind::optional_stop: ch.optional_stop = a.on; return;
+    case plc::ActionKind::cycle_start: ch.cycle_start = true; return;
+    case plc::ActionKind::auto_cycle_start: auto_cycle_start_[c] = a.on; return;
     case plc::ActionKind::silent: plc_.set_silent(a.on); return;
     case plc::ActionKind::handwheel:
       if (a.axis >= 0) in.channels[c].handwheel_mm[static_cast<std::size_t>(a.axis)] += a.value;

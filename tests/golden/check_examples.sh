@@ -20,10 +20,18 @@ trap 'rm -rf "$tmp"' EXIT
 while IFS='|' read -r name machine programs extra; do
   name=$(echo $name)
   [ -z "$name" ] || [ "${name:0:1}" = "#" ] && continue
+  # common:N = bench/common_program.py's program of N blocks (dense: the
+  # look-ahead's case), run from the temporary folder so that its events
+  # name it as common.nc.
+  dir=.
+  if [[ $(echo $programs) == common:* ]]; then
+    python3 bench/common_program.py "$tmp/common.nc" "$(echo $programs | cut -d: -f2)"
+    programs=common.nc machine="$PWD/$(echo $machine)" dir="$tmp"
+  fi
   rc=0
   # shellcheck disable=SC2086  # programs and options are word lists
-  "$nck" run $machine $programs $extra "${threading[@]}" --no-progress --events "$tmp/ev" --trace "$tmp/tr" \
-    >/dev/null 2>"$tmp/err" || rc=$?
+  (cd "$dir" && "$nck" run $machine $programs $extra "${threading[@]}" --no-progress --events "$tmp/ev" \
+    --trace "$tmp/tr" >/dev/null 2>"$tmp/err") || rc=$?
   ev=$(grep -v '"ev":"state"' "$tmp/ev" | sha256sum | cut -c1-64)
   tr=$(sha256sum <"$tmp/tr" | cut -c1-64)
   echo "$name exit=$rc events=$ev trace=$tr" >>"$tmp/now"

@@ -44,6 +44,8 @@ class SpscQueue {
   }
   // consumer: the oldest element; only while !empty().
   const T& front() const noexcept { return items_[head_.load(std::memory_order_relaxed) % N]; }
+  // consumer: the i-th oldest element (0 = front); only while i < size().
+  const T& at(std::size_t i) const noexcept { return items_[(head_.load(std::memory_order_relaxed) + i) % N]; }
   // consumer: drops the oldest element (nothing when empty).
   void pop() noexcept {
     const std::size_t head = head_.load(std::memory_order_relaxed);

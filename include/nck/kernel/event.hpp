@@ -25,11 +25,13 @@ enum class EventKind : std::uint8_t {
   end,        // program end of a channel
   dist_ctrl,  // 3D distance control changed state (dist_state)
   trc,        // tool radius compensation selected, deselected or its D changed (trc_*)
+  state,      // the channel's program state changed (state_from / state_to / state_reason)
 };
 
 inline constexpr std::uint32_t kNoMessage = 0xFFFFFFFFu;
 
-enum class EndReason : std::uint8_t { m30, m2, error, reset, max_time, max_wall, interrupted };
+// hold: the run ended while a channel held and nothing could release it (nck run)
+enum class EndReason : std::uint8_t { m30, m2, error, reset, max_time, max_wall, interrupted, hold };
 
 // What a plc_out/plc_ack/wait refers to; extended by the spindle work.
 enum class FunctionKind : std::uint8_t { none, m, h, s, t };
@@ -71,6 +73,8 @@ struct Event {
   std::uint8_t trc_state = 0;
   std::int32_t trc_d = 0;
   double trc_radius_mm = 0;
+  // state: ProgramState left and entered, StateReason (program_state.hpp)
+  std::uint8_t state_from = 0, state_to = 0, state_reason = 0;
 };
 
 enum class WaitReason : std::uint8_t {

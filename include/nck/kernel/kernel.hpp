@@ -34,6 +34,8 @@ struct ChannelState {
   motion::AxisVector manual_offsets{};  // handwheel offsets reached (G201)
   motion::AxisVector axis_mcs{};        // machine set point: path + handwheel
   ChannelStatus status = ChannelStatus::idle;
+  ProgramState program_state = ProgramState::idle;
+  Event at{};  // the block the channel stands at: file_id, line, has_n, n
   std::uint8_t dist_state = 0;  // distctrl::State
   double dist_offset_mm = 0;    // distance-control offset in axis_mcs
 };
@@ -70,6 +72,7 @@ class Kernel {
 
   bool all_channels_done() const noexcept;
   bool channel_done(std::size_t ch) const noexcept;
+  ProgramState program_state(std::size_t ch) const noexcept;
   std::uint64_t cycles() const noexcept { return cycles_; }
   // Simulated time at the start of the next cycle.
   double time_s() const noexcept { return static_cast<double>(cycles_ * cycle_us_) / 1e6; }

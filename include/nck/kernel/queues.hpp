@@ -15,10 +15,15 @@
 
 namespace nck::kernel {
 
-inline constexpr std::size_t kCommandQueueLength = 64;
+inline constexpr std::size_t kCommandQueueLength = 128;
 // One block plans into at most this many commands (G74 homing: one per
 // order group); preparation plans a block only when this many slots are free.
 inline constexpr std::size_t kMaxCommandsPerBlock = 4;
+// The look-ahead plans each block's end speed so that the path can stop
+// within the commands that follow it in the window. The kernel trusts only
+// what is queued (kernel/braking_reserve.hpp), so the window may look no
+// further ahead than the queue holds: P-CHAN-00653 above this is capped.
+inline constexpr std::size_t kMaxLookAheadDepth = kCommandQueueLength - 2 * kMaxCommandsPerBlock;
 
 using CommandQueue = SpscQueue<Command, kCommandQueueLength>;
 

@@ -14,6 +14,7 @@
 #include "nck/core/axes.hpp"
 #include "nck/core/fixed_vector.hpp"
 #include "nck/kernel/event.hpp"
+#include "nck/kernel/program_state.hpp"
 #include "nck/plc/ext_command.hpp"
 #include "nck/plc/hli.hpp"
 
@@ -38,6 +39,9 @@ struct ChannelInput {
   bool feedhold = false;
   bool reset = false;          // a request, acted on in this cycle
   bool optional_stop = false;  // M1 stops the program only while this is on
+  // Cycle start: releases a program hold (M0/M1) that is in force in this
+  // cycle, also one the channel reaches within it.
+  bool cycle_start = false;
   // The measuring probe switched during the last cycle, with the axes'
   // machine positions latched at that instant.
   bool probe_switched = false;
@@ -73,6 +77,7 @@ struct ChannelOutput {
   std::uint8_t dist_state = 0;  // distctrl::State
   std::int8_t dist_axis = -1;   // the tool axis carrying the offset, -1 none yet
   ChannelStatus status = ChannelStatus::idle;
+  ProgramState program_state = ProgramState::idle;
 };
 
 struct SpindleOutput {

@@ -20,6 +20,7 @@ struct ProfileSample {
   double v_mm_s = 0.0;       // velocity during the last step
   double a_mm_s2 = 0.0;      // (v_k - v_{k-1}) / dt of the last step
   bool finished = false;     // s_mm == length (end reached)
+  bool braking = false;      // the braking curve towards the end speed set the velocity
 };
 
 class PathProfile {
@@ -51,6 +52,12 @@ class PathProfile {
   // The first step after start() changes the speed by at most a * dt (a
   // start out of a sharp corner's exact stop; 0 stands still a cycle). rt
   void limit_first_step(double a_mm_s2) noexcept;
+  // Changes the speed at the segment's end while it runs (the kernel's
+  // braking reserve: 0 while no successor is queued, the planned v_end once
+  // one is). Raising it is always possible; lowering it is only safe while
+  // the braking curve to the new value is not yet passed. rt
+  void set_end_velocity(double v_end_mm_s) noexcept;
+  double end_velocity() const noexcept { return v_end_mm_s_; }
   // Ignore the feed override (G33: the path follows the spindle). rt
   void set_override_ignored(bool ignored) noexcept { override_ignored_ = ignored; }
 

@@ -66,6 +66,7 @@ struct ChannelControl {
   bool feedhold = false;
   bool reset = false;          // a request, the CNC clears it when it has reset the channel
   bool optional_stop = false;  // M01 stops only while this is on
+  bool cycle_start = false;    // a request: releases a program hold (M0 / M1), cleared when handed over
 };
 
 // A technology function output to the PLC and its handshake.

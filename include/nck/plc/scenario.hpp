@@ -30,6 +30,8 @@ enum class ActionKind : std::uint8_t {
   spindle_cmd,          // spindle_cmd S2 M3 REV500   (external spindle command)
   handwheel,            // handwheel X 0.5            (mm moved by the handwheel in G201 manual mode)
   variable,             // variable V.E.GAP 1.5       (a channel variable the PLC writes, e.g. a distance sensor)
+  cycle_start,          // cycle_start                (releases a program hold: M0 / M1)
+  auto_cycle_start,     // auto_cycle_start on|off    (the simulated operator releases every hold at once)
 };
 
 // The action's name as written in the file (the primary spelling).

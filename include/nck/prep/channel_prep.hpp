@@ -47,8 +47,10 @@ class ChannelPrep {
   // Decodes and plans while the command queue has room, until the program
   // ends or a block needs feedback from execution (G100, #GET MANUAL
   // OFFSETS); takes that feedback when it has come. channel_done: the
-  // channel ended (no feedback will come any more).
-  void feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& feedback, bool channel_done);
+  // channel ended (no feedback will come any more). Returns whether it did
+  // anything (decoded, took feedback or handed commands over): a call that
+  // did nothing will do nothing again until the kernel has run a cycle.
+  bool feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& feedback, bool channel_done);
   // Plans one decoded block into the queue through the window (feed() uses
   // it; tests call it with blocks of their own). False when the queue has
   // no room for it.
@@ -58,8 +60,8 @@ class ChannelPrep {
   // Everything up to the program end (or the error that stopped decoding)
   // is in the command queue.
   bool done() const { return done_ && window_.empty() && backlog_.empty(); }
-  // Decoder warnings found by the last feed() (for the caller to report).
-  const std::vector<Diagnostic>& new_warnings() const { return new_warnings_; }
+  // Planning waits for feedback from execution (a G100 result ...).
+  bool awaiting_feedback() const { return awaiting_feedback_; }
   // Corner blending so far (G61/G261): fillets placed, path length they cut.
   const BlendStats& blend_stats() const { return window_.blend_stats(); }
   const nc::Decoder* decoder() const { return decoder_ ? &*decoder_ : nullptr; }
@@ -72,10 +74,12 @@ class ChannelPrep {
   static bool needs_feedback(const nc::Block& b);
 
  private:
+  void feed_blocks(kernel::CommandQueue& commands, kernel::FeedbackQueue& feedback, bool channel_done);
   void take_feedback(const kernel::Feedback& f);
   void hand_over(const kernel::Command& c, kernel::CommandQueue& commands);
   bool push_out(kernel::CommandQueue& commands);
   void collect_warnings();
+  void attach_warnings(kernel::Command& c);
   // Plans what tool radius compensation handed out, into the window or,
   // while it is full, the backlog (one block may become several).
   void plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& commands);
@@ -89,13 +93,16 @@ class ChannelPrep {
   // The window must empty into the queue (program end, an error, a block
   // whose feedback later blocks need) before anything else is decoded.
   bool flushing_ = false;
-  std::vector<Diagnostic> new_warnings_;
+  // Decoder warnings not yet handed over: they ride on the next command
+  // (raised when it starts, with its block), never beside the queue.
+  std::vector<Diagnostic> pending_warnings_;
   std::size_t diagnostics_seen_ = 0;
   bool done_ = false;
   bool awaiting_feedback_ = false;
+  std::uint64_t decoded_ = 0;  // decoder calls and feedback taken (feed()'s progress)
   std::uint32_t last_main_line_ = 0;  // of the main program's last block decoded
-  // record_frames: the store and the last map put there
   PlanStore* store_ = nullptr;
+  bool record_frames_ = false;  // and the last map put there:
   std::uint32_t frame_index_ = kernel::kNoMessage;
   PrepObserver* observer_ = nullptr;
   std::uint32_t frame_index_now();

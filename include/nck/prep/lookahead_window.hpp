@@ -73,6 +73,8 @@ class LookAheadWindow {
   // flushing) to q while it has room. True when nothing that should leave
   // is left behind.
   bool release(kernel::CommandQueue& q, bool flush);
+  // Commands handed to the queue so far.
+  std::uint64_t released() const { return head_; }
 
  private:
   struct Entry {

@@ -1,11 +1,16 @@
 #pragma once
 // Texts and values that events refer to by index: prepared while planning
-// (setup side, may allocate) so the cyclic path only copies an index.
+// (setup side, may allocate) so the cyclic path only copies an index. The
+// logs may be read while preparation appends (its own thread: AppendLog).
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "nck/core/append_log.hpp"
+#include "nck/core/diagnostic.hpp"
 #include "nck/kernel/affine_map.hpp"
+#include "nck/kernel/command.hpp"
 
 namespace nck::prep {
 
@@ -21,29 +26,21 @@ struct LinkPayload {
 };
 
 struct PlanStore {
-  std::vector<std::string> messages;
-  std::vector<OffsetPayload> offsets;
-  std::vector<LinkPayload> links;
+  AppendLog<std::string> messages;
+  AppendLog<OffsetPayload> offsets;
+  AppendLog<LinkPayload> links;
   // Program -> machine maps of executed blocks (block events' message_index),
   // recorded only for a report (PrepOptions::record_frames).
-  std::vector<kernel::AffineMap> frames;
+  AppendLog<kernel::AffineMap> frames;
 
-  std::uint32_t add_message(std::string m) {
-    messages.push_back(std::move(m));
-    return static_cast<std::uint32_t>(messages.size() - 1);
-  }
-  std::uint32_t add_offset(OffsetPayload p) {
-    offsets.push_back(std::move(p));
-    return static_cast<std::uint32_t>(offsets.size() - 1);
-  }
-  std::uint32_t add_frame(const kernel::AffineMap& m) {
-    frames.push_back(m);
-    return static_cast<std::uint32_t>(frames.size() - 1);
-  }
-  std::uint32_t add_link(LinkPayload p) {
-    links.push_back(std::move(p));
-    return static_cast<std::uint32_t>(links.size() - 1);
-  }
+  std::uint32_t add_message(std::string m) { return static_cast<std::uint32_t>(messages.push_back(std::move(m))); }
+  std::uint32_t add_offset(OffsetPayload p) { return static_cast<std::uint32_t>(offsets.push_back(std::move(p))); }
+  std::uint32_t add_frame(const kernel::AffineMap& m) { return static_cast<std::uint32_t>(frames.push_back(m)); }
+  std::uint32_t add_link(LinkPayload p) { return static_cast<std::uint32_t>(links.push_back(std::move(p))); }
 };
+
+// Puts warnings into c (raised when it starts). Beyond its capacity the last
+// one says how many more there were and which came first.
+void add_warnings(kernel::Command& c, const std::vector<Diagnostic>& warnings, PlanStore& store);
 
 }  // namespace nck::prep

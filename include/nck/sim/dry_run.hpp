@@ -6,9 +6,10 @@
 //   run.prepare();        // setup side: decode and plan what fits (allocates)
 //   run.cycle(out);       // rt: sim.read -> kernel.tick -> sim.write
 //
-// A threaded integration keeps the same shape: prepare() in the prep thread,
-// cycle() (with real I/O instead of MachineSim) in the real-time thread; they
-// share only the kernel's SPSC queues (docs/decisions.md).
+// With DryRunOptions::prep_thread, preparation runs in a thread of its own
+// (PrepThread) and prepare() only waits until it has caught up, so the
+// outputs stay those of the single thread; the two share only the kernel's
+// SPSC queues, the plan store's append-only logs and a few atomics.
 #include <cstdint>
 #include <expected>
 #include <filesystem>
@@ -26,12 +27,14 @@
 #include "nck/prep/channel_prep.hpp"
 #include "nck/prep/plan_store.hpp"
 #include "nck/sim/machine_sim.hpp"
+#include "nck/sim/prep_thread.hpp"
 
 namespace nck::sim {
 
 struct DryRunOptions {
   std::uint32_t clamp_index = 0;  // clamp-offset group at program start (--clamp-index)
   bool record_frames = false;     // blocks carry their program -> machine map (--report)
+  bool prep_thread = false;       // preparation in a thread of its own (--prep-thread)
 };
 
 // What a channel knows about its programmed state, for --final.
@@ -57,8 +60,8 @@ class DryRun {
   // setup: the --plc scenario; it must stay alive while the run goes on.
   void load_scenario(const plc::Scenario& scenario) { sim_->load_scenario(scenario); }
 
-  // setup side: every channel's preparation decodes and plans what fits.
-  // Decoder warnings it found are in new_warnings(ch) until the next call.
+  // setup side: every channel's preparation decodes and plans what fits
+  // (with prep_thread: waits until the preparation thread has caught up).
   void prepare();
   // rt: one cycle of the simulated machine and the kernel.
   void cycle(kernel::TickOutput& out) noexcept;
@@ -68,12 +71,18 @@ class DryRun {
     cycle(out);
   }
 
+  // Ends the preparation thread (if any): call before reading prep(ch),
+  // snapshot() or anything else preparation owns. The destructor does it.
+  void stop_preparation();
+
   // Every channel that has a program has ended.
   bool done() const noexcept;
+  // Every channel still running holds (M0/M1) and nothing will release it:
+  // no automatic cycle start, no scenario line still to come.
+  bool held_for_good() const noexcept;
   double time_s() const noexcept { return kernel_->time_s(); }
 
   std::size_t channel_count() const { return preps_.size(); }
-  const std::vector<Diagnostic>& new_warnings(std::size_t ch) const { return preps_.at(ch).new_warnings(); }
   const prep::ChannelPrep& prep(std::size_t ch) const { return preps_.at(ch); }
   const kernel::Kernel& kernel() const { return *kernel_; }
   const MachineSim& machine() const { return *sim_; }
@@ -96,6 +105,8 @@ class DryRun {
   std::unique_ptr<prep::PlanStore> store_;
   std::vector<prep::ChannelPrep> preps_;
   std::unique_ptr<kernel::TickInput> in_;
+  bool threaded_ = false;
+  std::unique_ptr<PrepThread> prep_thread_;  // last: ends before what it uses
 };
 
 }  // namespace nck::sim

@@ -45,6 +45,10 @@ class MachineSim {
   // The HLI image as the PLC sees it: controls as the PLC (scenario) set
   // them, spindle status as the CNC last wrote it.
   const plc::HliImage& hli() const noexcept { return hli_; }
+  // Channel ch's holds are released at once (the scenario's auto_cycle_start, default on).
+  bool auto_cycle_start(std::size_t ch) const noexcept { return ch < channels_ && auto_cycle_start_[ch]; }
+  // The scenario has actions still to come.
+  bool scenario_pending() const noexcept { return !player_.finished(); }
 
  private:
   void apply(const plc::ScenarioAction& a, kernel::TickInput& in) noexcept;
@@ -58,6 +62,7 @@ class MachineSim {
   std::array<DistanceSensor, config::kMaxChannels> sensors_{};
   std::array<bool, config::kMaxChannels> sensor_on_{};  // sampled only once a program needs it
   std::array<bool, config::kMaxChannels> probe_switched_{};  // in the last cycle
+  std::array<bool, config::kMaxChannels> auto_cycle_start_{};  // all on (constructor)
   std::size_t channels_ = 0;
   std::size_t spindles_ = 0;
   double t_s_ = 0;  // start of the cycle being computed

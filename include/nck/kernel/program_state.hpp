@@ -1,0 +1,65 @@
+#pragma once
+// A channel's program state as the operator sees it (SPEC 2.7): every
+// change is a `state` event with the state left, the state entered and why.
+#include <cstdint>
+#include <string_view>
+
+namespace nck::kernel {
+
+enum class ProgramState : std::uint8_t {
+  idle,       // no program started (or reset)
+  running,    // the program runs (moving, dwelling or waiting for a synchronisation)
+  hold,       // a programmed stop (M0, or M1 with the optional-stop switch) waits for cycle start
+  searching,  // block search: decoding without motion up to the restart mark
+  returning,  // back to the contour after a block search
+  error,      // aborted by an error; a reset leaves it
+  ended,      // program end (M30 / M2) or a limit of the run
+};
+
+enum class StateReason : std::uint8_t {
+  start,        // the channel took its first block
+  m0,           // programmed stop
+  m1,           // optional stop (the switch is on)
+  cycle_start,  // the hold was released
+  m30,
+  m2,
+  error,
+  reset,
+  max_time,
+  max_wall,
+  interrupted,
+  hold,  // the run ended in a hold nothing could release (nck run)
+};
+
+constexpr std::string_view state_name(ProgramState s) noexcept {
+  switch (s) {
+    case ProgramState::idle: return "idle";
+    case ProgramState::running: return "running";
+    case ProgramState::hold: return "hold";
+    case ProgramState::searching: return "searching";
+    case ProgramState::returning: return "returning";
+    case ProgramState::error: return "error";
+    case ProgramState::ended: return "ended";
+  }
+  return "idle";
+}
+
+constexpr std::string_view state_reason_name(StateReason r) noexcept {
+  switch (r) {
+    case StateReason::start: return "start";
+    case StateReason::m0: return "M0";
+    case StateReason::m1: return "M1";
+    case StateReason::cycle_start: return "cycle_start";
+    case StateReason::m30: return "M30";
+    case StateReason::m2: return "M2";
+    case StateReason::error: return "error";
+    case StateReason::reset: return "reset";
+    case StateReason::max_time: return "max_time";
+    case StateReason::max_wall: return "max_wall";
+    case StateReason::interrupted: return "interrupted";
+    case StateReason::hold: return "hold";
+  }
+  return "start";
+}
+
+}  // namespace nck::kernel

@@ -1,0 +1,22 @@
+#include "nck/prep/plan_store.hpp"
+
+#include <fmt/format.h>
+
+namespace nck::prep {
+
+void add_warnings(kernel::Command& c, const std::vector<Diagnostic>& warnings, PlanStore& store) {
+  for (std::size_t i = 0; i < warnings.size(); ++i) {
+    const Diagnostic& w = warnings[i];
+    if (c.warnings.size() + 1 < kernel::Command::kMaxWarnings || i + 1 == warnings.size()) {
+      if (!c.warnings.push_back({w.id, store.add_message(w.message)})) break;
+      continue;
+    }
+    const std::size_t more = warnings.size() - i;  // this one and the rest
+    (void)c.warnings.push_back({ErrorId::KernelWarningsDropped,
+                                store.add_message(fmt::format("{} more warning(s) of this block, the first: {}",
+                                                              more, w.message))});
+    break;
+  }
+}
+
+}  // namespace nck::prep
