@@ -98,6 +98,8 @@ void Channel::end_program(EndReason reason, double t_s, TickOutput& sink, Channe
 
 void Channel::raise(ErrorId id, std::uint32_t message, double t_s, TickOutput& sink,
                     ChannelContext& ctx) noexcept {
+  // The state changes first, so that the error stays right before its end.
+  set_state(ProgramState::error, StateReason::error, t_s, sink);
   Event e = event(EventKind::error, t_s);
   e.id = id;
   e.message_index = message;

@@ -470,6 +470,7 @@ std::vector<std::uint32_t> stop_lines(bool optional_stop_switch) {
   rig.push_block(0, end_block(3));
   TickInput in;
   in.channels[0].optional_stop = optional_stop_switch;
+  in.channels[0].cycle_start = true;  // the operator releases each hold at once
   const Log r = run(rig.k, never(), 10, in);
   EXPECT_TRUE(r.issued.empty());  // M0/M1 are not PLC outputs
   std::vector<std::uint32_t> lines;
@@ -480,6 +481,25 @@ std::vector<std::uint32_t> stop_lines(bool optional_stop_switch) {
 TEST(ChannelSync, M1StopsOnlyWithTheOptionalStopSwitchM0Always) {
   EXPECT_EQ(stop_lines(false), (std::vector<std::uint32_t>{2}));
   EXPECT_EQ(stop_lines(true), (std::vector<std::uint32_t>{1, 2}));
+}
+
+// Without a cycle start the channel holds after M0 and starts no further block.
+TEST(ChannelSync, M0HoldsUntilCycleStart) {
+  KernelRig rig(fast_machine());
+  nc::Block m0 = nop(1);
+  m0.m = {0};
+  m0.stop = true;
+  rig.push_block(0, m0);
+  rig.push_block(0, end_block(2));
+  TickInput in;
+  TickOutput out;
+  for (int i = 0; i < 100; ++i) rig.k.tick(in, out);
+  EXPECT_EQ(rig.k.program_state(0), ProgramState::hold);
+  EXPECT_FALSE(rig.k.channel_done(0));
+  in.channels[0].cycle_start = true;
+  rig.k.tick(in, out);
+  EXPECT_TRUE(rig.k.channel_done(0));  // released: M30 ran in the same cycle
+  EXPECT_EQ(rig.k.program_state(0), ProgramState::ended);
 }
 
 // --- the bound on outstanding outputs -------------------------------------
