@@ -252,7 +252,7 @@ std::string EventWriter::line(double t_s, std::size_t ch, const Diagnostic& d) {
 
 namespace {
 bool has_dist_ctrl(const config::ChannelConfig& ch) {
-  return (ch.decoder_function & config::decoder_fct::FCT_3D_DIST_CTRL) != 0;
+  return ch.dist_ctrl_enabled();
 }
 }  // namespace
 

@@ -18,6 +18,7 @@ struct RunOptions {
   bool realtime = false;
   bool progress = true;       // on a terminal only
   std::vector<std::string> cycles;  // --cycles DIR: searched after startup.lis cycle_path[i]
+  std::string start_mode = "ISG_STANDARD";  // --start-mode: P-CHAN-00508 condition of this run
 };
 
 // Exit codes (SPEC 2.2): 0 program end reached, 1 aborted by an NC error or a
