@@ -15,6 +15,7 @@
 #include <limits>
 
 #include "commands.hpp"
+#include "nck/config/machine.hpp"
 #include "nck/core/edit_distance.hpp"
 #include "nck/core/diagnostic.hpp"
 #include "run_command.hpp"
@@ -94,6 +95,20 @@ CLI::Validator number_at_least(double min, bool whole) {
       whole ? fmt::format("INTEGER >= {}", min) : fmt::format("NUMBER >= {}", min));
 }
 
+// --start-mode: a P-CHAN-00508 symbol; SV (block search) belongs to a
+// block search, which nck does not have.
+CLI::Validator start_mode_validator() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const std::string mode = config::canonical_start_mode(text);
+        if (mode.empty()) return fmt::format("'{}' is no start mode of fct_condition (P-CHAN-00508)", text);
+        if (mode == "SV") return "SV / BLOCK_SEARCH applies only during a block search, which nck does not have";
+        text = mode;
+        return {};
+      },
+      "MODE");
+}
+
 }  // namespace
 
 int main_cli(int argc, char** argv) {
@@ -125,6 +140,10 @@ int main_cli(int argc, char** argv) {
   runc->add_option("--clamp-index", run.clamp_index, "clamp-offset group pzv_grp[N] at program start")
       ->check(number_at_least(0, true));
   runc->add_flag("!--no-progress", run.progress, "no progress display on the terminal");
+  runc->add_option("--start-mode", run.start_mode,
+                   "program-start mode for fct_condition[i] (P-CHAN-00508): ISG_STANDARD (default), "
+                   "DRY_RUN, CONTOUR_VISU, SYNTAX_CHECK, PROD_TIME, ONLINE_PROD_TIME, ON_LINE, SCENE")
+      ->check(start_mode_validator());
   runc->add_option("--cycles", run.cycles, "search DIR for L CYCLE files (after the machine's cycle_path[i]); repeat")
       ->allow_extra_args(false);
 

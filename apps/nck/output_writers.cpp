@@ -250,7 +250,7 @@ std::string EventWriter::line(const kernel::Event& e, const RunNames& names) {
 
 namespace {
 bool has_dist_ctrl(const config::ChannelConfig& ch) {
-  return (ch.decoder_function & config::decoder_fct::FCT_3D_DIST_CTRL) != 0;
+  return ch.dist_ctrl_enabled();
 }
 }  // namespace
 

@@ -231,6 +231,7 @@ int run_simulation(const RunOptions& opt) {
   config::LoadResult loaded = config::load_machine(opt.machine);
   if (!print_load_diagnostics(loaded)) return 2;
   for (const std::string& dir : opt.cycles) loaded.machine->cycle_paths.emplace_back(dir);
+  for (config::ChannelConfig& c : loaded.machine->channels) c.start_mode = opt.start_mode;
   const config::Machine& m = *loaded.machine;
   if (opt.programs.empty() || opt.programs.size() > m.channels.size()) {
     fmt::print(stderr, "nck: error 940001: {} program(s) given for {} channel(s); give one per channel\n",

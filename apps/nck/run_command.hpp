@@ -19,6 +19,7 @@ struct RunOptions {
   bool prep_thread = false;  // preparation in a thread of its own
   bool progress = true;       // on a terminal only
   std::vector<std::string> cycles;  // --cycles DIR: searched after startup.lis cycle_path[i]
+  std::string start_mode = "ISG_STANDARD";  // --start-mode: P-CHAN-00508 condition of this run
 };
 
 // Exit codes (SPEC 2.2): 0 program end reached, 1 aborted by an NC error or a

@@ -4,14 +4,13 @@
 #include <set>
 
 #include "build.hpp"
+#include "nck/core/axis_name.hpp"
 
 namespace nck::config::detail {
 namespace {
 
-bool starts_with_any(std::string_view name, std::string_view letters) {
-  return !name.empty() && letters.find(name.front()) != std::string_view::npos;
-}
-constexpr std::string_view kPathLetters = "ABCUVWXYZQ";
+constexpr std::string_view kNameRule =
+    "must start with A, B, C, U, V, W, X, Y, Z or Q, followed by letters, digits and _ only";
 
 void read_axes(const ParamList& l, ChannelConfig& c, Diagnostics& d) {
   auto js = l.indices("gruppe[0].achse[", 1);
@@ -22,9 +21,9 @@ void read_axes(const ParamList& l, ChannelConfig& c, Diagnostics& d) {
     ax.name = l.text(k("bezeichnung"), "");
     ax.log_axis_nr = l.u32(k("log_achs_nr"), 0);
     SourceLoc where = l.has(k("bezeichnung")) ? l.loc(k("bezeichnung")) : l.loc_prefix(k(""));
-    if (!starts_with_any(ax.name, kPathLetters))
-      d.add(ErrorId::ConfigAxisName, where,
-            fmt::format("path axis name '{}' must start with A, B, C, U, V, W, X, Y, Z or Q", ax.name));
+    // A name the list reader refused (too long) has its diagnostic at its line.
+    if (!valid_path_axis_name(ax.name) && !l.rejected(k("bezeichnung")))
+      d.add(ErrorId::ConfigAxisName, where, fmt::format("path axis name '{}' {}", ax.name, kNameRule));
     if (ax.log_axis_nr == 0)
       d.add(ErrorId::ConfigAxisNrZero, l.has(k("log_achs_nr")) ? l.loc(k("log_achs_nr")) : where,
             fmt::format("{} needs a logical axis number other than 0", k("log_achs_nr")));
@@ -122,11 +121,27 @@ void check_names_and_numbers(const ParamList& l, const ChannelConfig& c, Diagnos
   }
   if (!c.default_ax_name_of_spindle.empty()) {
     auto where = l.loc("default_ax_name_of_spindle");
-    if (!starts_with_any(c.default_ax_name_of_spindle, kPathLetters))
-      d.add(ErrorId::ConfigAxisName, where, "default_ax_name_of_spindle must start with A, B, C, U, V, W, X, Y, Z or Q");
+    if (!valid_path_axis_name(c.default_ax_name_of_spindle))
+      d.add(ErrorId::ConfigAxisName, where, fmt::format("default_ax_name_of_spindle {}", kNameRule));
     else if (names.contains(c.default_ax_name_of_spindle))
       d.add(ErrorId::ConfigDuplicateName, where,
             fmt::format("default_ax_name_of_spindle '{}' clashes with a channel axis", c.default_ax_name_of_spindle));
+  }
+}
+
+// P-CHAN-00253: A1..A32 are alias names only; an axis named so switches
+// the alias names off (TF5200 warning 22016, start-up goes on).
+void check_alias_names(const ParamList& l, ChannelConfig& c, Diagnostics& d) {
+  if (!c.use_alias_names) return;
+  for (std::size_t j = 0; j < c.axes.size(); ++j) {
+    const std::string& n = c.axes[j].name;
+    if (!is_alias_axis_name(n)) continue;
+    d.add(ErrorId::ConfigAliasNameAsAxisName, l.loc(fmt::format("gruppe[0].achse[{}].bezeichnung", j)),
+          fmt::format("axis name '{}' is one of the alias names A1..A32 while use_alias_name_in_ax_list is 1; "
+                      "use_alias_name_in_ax_list is taken as 0",
+                      n));
+    c.use_alias_names = false;
+    return;
   }
 }
 
@@ -217,7 +232,7 @@ void read_dist_ctrl(const ParamList& l, DistCtrlConfig& x) {
 void check_dist_ctrl(const ParamList& l, const ChannelConfig& c, Diagnostics& d) {
   const auto& x = c.dist_ctrl;
   auto k = [](std::string_view r) { return fmt::format("dist_ctrl[0].{}", r); };
-  if (c.dist_ctrl_enabled() && x.a_max_mm_s2 <= 0)
+  if (c.dist_ctrl_possible() && x.a_max_mm_s2 <= 0)
     d.add(ErrorId::ConfigDistCtrlAMaxMissing,
           l.has(k("a_max")) ? l.loc(k("a_max")) : l.loc("configuration.decoder.function"),
           "FCT_3D_DIST_CTRL is enabled but dist_ctrl[0].a_max is not set (> 0)");
@@ -235,6 +250,7 @@ void read_switches(const ParamList& l, ChannelConfig& c) {
   c.main_spindle_ax_nr = l.u32("main_spindle_ax_nr", 0);
   c.main_spindle_gear_change = l.flag("main_spindle_gear_change", false);
   c.default_ax_name_of_spindle = l.text("default_ax_name_of_spindle", "");
+  c.use_alias_names = l.flag("use_alias_name_in_ax_list", false);
   c.cax_face_id = l.u32("cax_face_id", 0);
   for (std::size_t i = 0; i < c.trafo_ids.size(); ++i) c.trafo_ids[i] = l.u32(fmt::format("trafo[{}].id", i), 0);
   c.move_tool_offsets_directly = l.flag("move_tool_offsets_directly", false);
@@ -275,6 +291,7 @@ ChannelConfig build_channel(const ParamList& l, std::uint32_t number, Diagnostic
   read_dist_ctrl(l, c.dist_ctrl);
   check_names_and_numbers(l, c, d);
   check_main_spindle(l, c, d);
+  check_alias_names(l, c, d);
   warn_no_synch(l, c, d);
   check_dist_ctrl(l, c, d);
   return c;

@@ -174,7 +174,10 @@ ParamList ParamList::parse(const ListText& text, ListKind kind, Diagnostics& dia
     if (!info || !index_ok(line, *info, parts, text.file, diags)) continue;
     ParamValue v{info, canonical, parts.index, 0, {}, SourceLoc{text.file, line.line, 0}};
     std::optional<std::string> ref;
-    if (!parser.convert(line, *info, v, ref)) continue;
+    if (!parser.convert(line, *info, v, ref)) {
+      list.rejected_.insert(canonical);
+      continue;
+    }
     if (auto it = list.values_.find(canonical); it != list.values_.end())
       diags.add(ErrorId::ConfigDuplicateKey, v.loc,
                 fmt::format("'{}' was already set in line {}; this line wins", canonical, it->second.loc.line));

@@ -101,7 +101,7 @@ constexpr ParamInfo kTable[] = {
     {"dist_ctrl[].a_max", "P-CHAN-00803", C, T::integer, 0, kS32 - 1, 0, 1, "mm/s²", "mm/s²", "Acceleration limit of the correction; must be > 0 when enabled (315001).", {1}},
     {"dist_ctrl[].max_act_value_change", "P-CHAN-00804", C, T::integer, 0, kS32 - 1, 5000, 1e-3, "µm/s", "mm/s", "Largest allowed rate of change of the measured distance.", {1}},
     {"dist_ctrl[].ref_offset", "P-CHAN-00805", C, T::integer, kS32Min, kS32 - 1, 0, 1e-4, "0.1 µm", "mm", "Shift of the sensor range (reference point).", {1}},
-    {"dist_ctrl[].max_pos", "P-CHAN-00806", C, T::integer, kS32Min, kS32 - 1, 50000, 1e-4, "0.1 µm", "mm", "Upper sensor limit.", {1}},
+    {"dist_ctrl[].max_pos", "P-CHAN-00806", C, T::integer, 0, kS32 - 1, 50000, 1e-4, "0.1 µm", "mm", "Upper sensor limit.", {1}},
     {"dist_ctrl[].min_pos", "P-CHAN-00807", C, T::integer, kS32Min, kS32 - 1, -50000, 1e-4, "0.1 µm", "mm", "Lower sensor limit (negative allowed, as its default).", {1}},
     {"dist_ctrl[].tolerance", "P-CHAN-00808", C, T::integer, 0, kS32 - 1, 0, 1e-4, "0.1 µm", "mm", "Safety band inside the sensor limits (310019/310020).", {1}},
     {"dist_ctrl[].check_sw_limit_switch", "P-CHAN-00809", C, T::boolean, 0, 1, 0, 1, "—", "—", "Include the correction in software-limit checks.", {1}},

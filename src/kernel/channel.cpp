@@ -62,11 +62,6 @@ std::pair<ProgramState, StateReason> state_after(EndReason r) noexcept {
 
 void Channel::end_program(EndReason reason, double t_s, TickOutput& sink, ChannelContext& ctx) noexcept {
   dissolve_links(reason, t_s, sink, ctx);
-  const auto [state, why] = state_after(reason);
-  set_state(state, why, t_s, sink);
-  Event e = event(EventKind::end, t_s);
-  e.end_reason = reason;
-  sink.emit(e);
   const bool ok = reason == EndReason::m30 || reason == EndReason::m2;
   status_ = ok ? ChannelStatus::ended : ChannelStatus::aborted;
   active_ = false;
@@ -94,6 +89,16 @@ void Channel::end_program(EndReason reason, double t_s, TickOutput& sink, Channe
       (void)u.axis.stop();
     }
   }
+  // `end` is the channel's last event (SPEC 2.3): what the end did to its
+  // spindles is reported before it, not by the spindles' cycle after it.
+  for (std::int8_t s : spindles_)
+    if (s >= 0 && static_cast<std::size_t>(s) < ctx.spindle_count && ctx.spindles[s].channel == number_)
+      report_spindle_changes(ctx.spindles[s], s, t_s, sink);
+  const auto [state, why] = state_after(reason);
+  set_state(state, why, t_s, sink);
+  Event e = event(EventKind::end, t_s);
+  e.end_reason = reason;
+  sink.emit(e);
 }
 
 void Channel::raise(ErrorId id, std::uint32_t message, double t_s, TickOutput& sink,

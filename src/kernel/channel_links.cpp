@@ -101,7 +101,8 @@ void Channel::limit_path(ChannelContext& ctx) noexcept {
     case FeedLinkKind::tap:
     case FeedLinkKind::tap_rigid:
       // The spindle follows; its top speed caps the path.
-      profile_.set_velocity_limit(link_velocity_mm_s(vb_max_rpm(*u), f.mm_per_rev));
+      profile_.set_velocity_limit(
+          link_velocity_mm_s(f.spindle_max_rpm > 0 ? f.spindle_max_rpm : vb_max_rpm(*u), f.mm_per_rev));
       break;
     case FeedLinkKind::none: break;
   }

@@ -77,19 +77,31 @@ bool check_dwell(const Words& w, BlockCtx& b, const ModalState& modal) {
   std::uint32_t gpos = 0;
   for (const auto& g : w.g)
     if (g.code == GCode::g4) gpos = g.pos;
-  const int axis = plane_axes(modal.plane).first;  // G4 reads the plane's first main axis
+  (void)modal;
+  const int axis = kDwellAxis;  // G4 reads the first main axis: the channel's first, in every plane
+  const std::string first = b.axis_upper.empty() ? std::string("X") : b.axis_upper.front();
   int values = (w.dwell_direct.v ? 1 : 0) + (w.s.v ? 1 : 0) + (w.axes[axis] ? 1 : 0);
   if (values > 1)
     return fail(b, ErrorId::NcDwellTwoValues, gpos, "G4 has more than one dwell value; program one");
+  if (values == 0 && w.axis_count > 0)
+    for (int i = 0; i < static_cast<int>(kMaxAxes); ++i)
+      if (w.axes[i])
+        return fail(b, ErrorId::NcDwellNotFirstAxis, w.axis_pos[i],
+                    fmt::format("G4 takes the dwell on the first main axis {}, not on {}: G4 {}<s>", first,
+                                b.axis_upper[static_cast<std::size_t>(i)], first));
   if (values == 0)
-    return fail(b, ErrorId::NcBadValue, gpos, "G4 needs a dwell: G4 <s>, G4 <1st axis><s> or G4 S<revs>");
+    return fail(b, ErrorId::NcBadValue, gpos,
+                fmt::format("G4 needs a dwell: G4 <s>, G4 {}<s> (the first main axis) or G4 S<revs>", first));
   int others = w.word_count - 1 - values - (w.axis_count - (w.axes[axis] ? 1 : 0));
   if (others > 0 || w.g.size() > 1 || w.time_s.v)
     return fail(b, ErrorId::NcDwellNotAlone, gpos, "G4 must be alone in its block (only N may precede it)");
   for (int i = 0; i < static_cast<int>(kMaxAxes); ++i)
     if (w.axes[i] && i != axis)
       b.x.err.warn(ErrorId::NcDwellExtraAxes, w.axis_pos[i],
-                   "G4 only reads the first main axis; the other axis value is ignored");
+                   fmt::format("G4 with {} beside the first main axis {}: the dwell is read from {} only, {} "
+                               "is ignored",
+                               b.axis_upper[static_cast<std::size_t>(i)], first, first,
+                               b.axis_upper[static_cast<std::size_t>(i)]));
   double v = w.dwell_direct.v ? *w.dwell_direct.v : w.s.v ? *w.s.v : *w.axes[axis];
   if (v < 0) return fail(b, ErrorId::NcDwellOutOfRange, gpos, fmt::format("dwell {} is negative", v));
   return true;

@@ -167,7 +167,7 @@ json to_json(const Block& b, const Decoder& d) {
   json axes = json::object();
   const auto& names = d.config().axis_names;
   for (std::size_t i = 0; i < b.axes.size(); ++i)
-    if (b.axes[i]) axes[i < names.size() ? names[i] : std::to_string(i)] = *b.axes[i];
+    if (b.axes[i]) axes[i < names.size() && !names[i].empty() ? names[i] : std::to_string(i)] = *b.axes[i];
   if (!axes.empty()) j["axes"] = axes;
   static constexpr const char* ijk[] = {"I", "J", "K"};
   for (int i = 0; i < 3; ++i)

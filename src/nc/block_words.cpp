@@ -31,6 +31,12 @@ int find_axis(const BlockCtx& b, std::string_view name_upper) {
   return -1;
 }
 
+int find_alias(const BlockCtx& b, std::string_view name_upper) {
+  for (std::size_t i = 0; i < b.alias_upper.size() && i < kMaxAxes; ++i)
+    if (!b.alias_upper[i].empty() && b.alias_upper[i] == name_upper) return static_cast<int>(i);
+  return -1;
+}
+
 namespace {
 
 // The value after an address: blanks, an optional '=', then a word value.
@@ -107,6 +113,7 @@ bool parse_letter_word(Cursor& c, BlockCtx& b, Words& w) {
   if (e - pos > 1 && eq < c.s.size() && c.s[eq] == '=') {
     std::string name = to_upper(c.s.substr(pos, e - pos));
     int ax = find_axis(b, name);
+    if (ax < 0) ax = find_alias(b, name);
     c.pos = e;
     double v = 0;
     if (ax >= 0) {

@@ -92,14 +92,21 @@ struct BlockCtx {
   const DecoderConfig& cfg;
   ExprCtx& x;
   std::string& main_target;       // configured name of the current main spindle
-  std::vector<std::string> axis_upper;  // axis names, upper case
+  std::vector<std::string> axis_upper;  // axis names, upper case (the C axis's as #CAX names it)
+  std::vector<std::string> alias_upper;  // P-CHAN-00253 alias names per axis ("" none)
   // #DIST CTRL state kept by the decoder (facts D: mode changes, SET_POS).
   int dist_state = 0;             // 0 off, 1 on surface, 2 on const, 3 freeze
   bool dist_set_pos_known = false;
   Plane plane = Plane::g17;       // the working plane before the block (cycle @X/@Y/@Z)
 };
 
+// G4 <axis><s>: TF5200's "first main axis" is the channel's first axis
+// (gruppe[0].achse[0]) in every plane, X on a lathe in G18 (docs/decisions.md).
+inline constexpr int kDwellAxis = 0;
+
 int find_axis(const BlockCtx& b, std::string_view name_upper);
+// The axis with alias name A1..A32 (P-CHAN-00253), -1 when none or off.
+int find_alias(const BlockCtx& b, std::string_view name_upper);
 
 bool parse_words(Cursor& c, BlockCtx& b, Words& w);
 // A cycle's @ word (cycle_words.cpp): @P<n>=.., @X/@Y/@Z, @I/@J/@K, @S.

@@ -16,9 +16,10 @@ Decoder::Impl::Impl(DecoderConfig c)
       vars(cfg.axis_names, cfg.max_zero_offset_index, cfg.max_variable_elements),
       x{vars, err, 0},
       main_target(cfg.main_spindle),
-      bctx{cfg, x, main_target, {}, 0, false},
+      bctx{cfg, x, main_target, {}, {}, 0, false},
       cache(cfg.use_cached_files, cfg.max_cache_number, cfg.max_cache_size_kb) {
   for (const auto& a : cfg.axis_names) bctx.axis_upper.push_back(to_upper(a));
+  for (const auto& a : cfg.axis_aliases) bctx.alias_upper.push_back(to_upper(a));
 }
 
 SourceLoc Decoder::Impl::loc(std::size_t pos) const {
@@ -103,6 +104,11 @@ Decoder::Result Decoder::Impl::next() {
   if (fatal) return Result{Status::error, {}};
   for (;;) {
     err.clear();
+    if (goto_pending) {  // the $GOTO of the block just handed out
+      goto_pending = false;
+      if (jump(goto_label, goto_pos) == Outcome::error) return error_result();
+      continue;
+    }
     if (end_pending) {
       ended = true;
       return Result{Status::end, {}};
@@ -243,7 +249,9 @@ Outcome Decoder::Impl::process_block(Block& out) {
     }
     return declare(c);
   }
-  if (c.peek() == '$') return control(c);
+  if (c.peek() == '$' && !Cursor{c.s, c.pos + 1}.peek_keyword("GOTO")) return control(c);
+  if (const std::size_t at = find_goto(c.s, c.pos); at != std::string_view::npos)
+    return words_with_goto(c, n, out, at);  // "$GOTO [X]", also with commands beside it
   if (c.peek() == '#') {
     if (disable_modal_cycle(c)) return Outcome::nothing;
     if (const std::size_t e = comment_phrase_end(c.s.substr(c.pos), "BEGIN"); e != std::string_view::npos) {

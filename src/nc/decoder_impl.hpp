@@ -67,6 +67,10 @@ struct ModalCycle {
 // What processing one block led to.
 enum class Outcome : std::uint8_t { nothing, block, error, end };
 
+// Where "$GOTO" stands in a block from `from` on (not in comments or
+// strings); npos when nowhere.
+std::size_t find_goto(std::string_view text, std::size_t from);
+
 }  // namespace detail
 
 struct Decoder::Impl {
@@ -98,6 +102,11 @@ struct Decoder::Impl {
   std::uint64_t reentry_offset = 0;
   detail::ModalCycle modal_cycle;  // MODAL_MOVE / MODAL_BLOCK call in effect
   bool modal_cycle_due = false;    // start it before the next block
+  // "G90 $GOTO [END]": the jump after the block has been handed out.
+  bool goto_pending = false;
+  std::string goto_label;
+  std::size_t goto_pos = 0;
+  std::string goto_text;           // the block without its $GOTO
 
   Result next();
 
@@ -118,6 +127,9 @@ struct Decoder::Impl {
   bool open_structures_closed_later();
   // goto_jump.cpp: $GOTO N<expr> / $GOTO [NAME]; `c` after the keyword
   detail::Outcome go_to(detail::Cursor& c, std::size_t pos);
+  detail::Outcome jump(const std::string& label, std::size_t pos);
+  // A block with commands beside its $GOTO (at `at`): the commands, then the jump.
+  detail::Outcome words_with_goto(detail::Cursor& c, std::optional<std::int64_t> n, Block& out, std::size_t at);
   // subprograms.cpp
   bool open_frame(const std::filesystem::path& p, bool cached, detail::Frame& f);
   // A frame reading a section of an open file again (a local subroutine or

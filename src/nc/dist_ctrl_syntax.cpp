@@ -10,7 +10,9 @@ namespace nck::nc::detail {
 bool parse_dist_ctrl(Cursor& c, BlockCtx& b, std::size_t pos, HashCommand& out) {
   if (!b.cfg.dist_ctrl_available)
     return b.x.err.fail(ErrorId::NcDistCtrlNotEnabled, pos,
-                        "3D distance control is not enabled: add FCT_3D_DIST_CTRL to configuration.decoder.function");
+                        "3D distance control is not enabled in this start mode: add FCT_3D_DIST_CTRL to "
+                        "configuration.decoder.function, or to fct_enable[i] whose fct_condition[i] is the "
+                        "start mode (nck run: ISG_STANDARD)");
   DistCtrl d;
   d.op = DistCtrlOp::settings;
   if (keywords(c, {"WAIT"})) d.wait = true;

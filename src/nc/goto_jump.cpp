@@ -7,6 +7,7 @@
 // the jump leaves and which it enters.
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 #include <cstdint>
 #include <fmt/format.h>
 
@@ -233,8 +234,55 @@ Outcome Decoder::Impl::go_to(Cursor& c, std::size_t pos) {
   if (label.empty()) return Outcome::error;
   if (!c.rest_empty())
     return report(ErrorId::NcGotoSyntax, c.pos, "nothing may follow the $GOTO target in its block");
+  return jump(label, pos);
+}
+
+Outcome Decoder::Impl::jump(const std::string& label, std::size_t pos) {
   Frame& f = frames.back();
   return Jump{*this, f, f.reader->block_pos()}.run(label, pos);
+}
+
+std::size_t detail::find_goto(std::string_view text, std::size_t from) {
+  for (std::size_t i = from; i < text.size(); ++i) {
+    const char ch = text[i];
+    if (ch == ';') return std::string_view::npos;
+    if (ch == '(') {  // a comment, nested
+      int depth = 0;
+      for (; i < text.size(); ++i)
+        if (text[i] == '(') ++depth;
+        else if (text[i] == ')' && --depth == 0) break;
+      continue;
+    }
+    if (ch == '"') {  // a string (#MSG ...)
+      const std::size_t end = text.find('"', i + 1);
+      if (end == std::string_view::npos) return std::string_view::npos;
+      i = end;
+      continue;
+    }
+    if (ch == '$' && Cursor{text, i + 1}.peek_keyword("GOTO")) return i;
+  }
+  return std::string_view::npos;
+}
+
+// The block's words without "$GOTO <target>" (blanked, so columns stay):
+// they make the block; the jump follows when it has been handed out.
+Outcome Decoder::Impl::words_with_goto(Cursor& c, std::optional<std::int64_t> n, Block& out, std::size_t at) {
+  Cursor g{c.s, at + 5};
+  std::string label = target_label(*this, g);
+  if (label.empty()) return Outcome::error;
+  goto_text.assign(c.s);
+  std::fill(goto_text.begin() + static_cast<std::ptrdiff_t>(at), goto_text.begin() + static_cast<std::ptrdiff_t>(g.pos),
+            ' ');
+  Cursor words_cursor{goto_text, c.pos};
+  if (words_cursor.rest_empty()) return jump(label, at);
+  const Outcome o = run_words(words_cursor, n, out);
+  if (o == Outcome::nothing) return jump(label, at);
+  if (o == Outcome::block && !end_pending && !return_pending) {
+    goto_pending = true;
+    goto_label = std::move(label);
+    goto_pos = at;
+  }
+  return o;
 }
 
 }  // namespace nck::nc

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "hash_parse_util.hpp"
+#include "nck/core/axis_name.hpp"
 
 namespace nck::nc {
 namespace detail {
@@ -115,6 +116,27 @@ bool parse_main_spindle(HashCtx& h) {
   return true;
 }
 
+// The C axis's name from here on: the one #CAX gives (a valid path-axis
+// name no other axis has), else P-CHAN-00010's; #CAX OFF goes back to that.
+bool name_c_axis(HashCtx& h, const CAxis& a) {
+  BlockCtx& b = h.b;
+  if (b.cfg.c_axis < 0 || static_cast<std::size_t>(b.cfg.c_axis) >= b.axis_upper.size())
+    return true;  // no C axis: preparation says why (21184)
+  std::string name = to_upper(a.on && !a.axis.empty() ? a.axis : b.cfg.c_axis_default_name);
+  if (a.on && !a.axis.empty()) {
+    const int other = find_axis(b, name);
+    if (!valid_path_axis_name(name))
+      return b.x.err.fail(ErrorId::KernelCaxBadAxes, h.pos,
+                          fmt::format("#CAX: '{}' is no axis name (A, B, C, U, V, W, X, Y, Z or Q, then letters, "
+                                      "digits and _)", a.axis));
+    if (other >= 0 && other != b.cfg.c_axis)
+      return b.x.err.fail(ErrorId::KernelCaxBadAxes, h.pos,
+                          fmt::format("#CAX: {} is already a channel axis; give the C axis a name of its own", a.axis));
+  }
+  b.axis_upper[static_cast<std::size_t>(b.cfg.c_axis)] = std::move(name);
+  return true;
+}
+
 bool parse_cax(HashCtx& h) {
   Cursor& c = h.c;
   BlockCtx& b = h.b;
@@ -135,6 +157,7 @@ bool parse_cax(HashCtx& h) {
       a.axis = names[0];
     }
   }
+  if (!name_c_axis(h, a)) return false;
   h.cmd = a;
   return true;
 }

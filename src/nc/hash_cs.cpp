@@ -175,6 +175,8 @@ bool parse_mcs(HashCtx& h) {
       c.skip_spaces();
       if (!c.match(']')) return args_error(h.b, c.pos, "']' expected");
       m.ex_tool = true;
+    } else if (c.peek_keyword("EX")) {  // the option without its brackets
+      return args_error(h.b, c.pos, "the option of #MCS ON stands in brackets: #MCS ON [EX TOOL]");
     }
   } else if (c.match_keyword("OFF")) {
     m.on = false;

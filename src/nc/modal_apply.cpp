@@ -182,7 +182,7 @@ bool apply_words(Words& w, BlockCtx& b, ModalState& modal, Block& out) {
   // Axis words: a G4 dwell axis and #PSET values are not motion.
   int dwell_axis = -1;
   if (w.has_g(GCode::g4)) {
-    dwell_axis = plane_axes(modal.plane).first;
+    dwell_axis = kDwellAxis;
     if (w.dwell_direct.v) out.dwell_s = w.dwell_direct.v;
     else if (w.axes[dwell_axis]) out.dwell_s = w.axes[dwell_axis];
   }

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "nck/core/axis_name.hpp"
+
 namespace nck::prep {
 
 nc::DecoderConfig decoder_config(const config::Machine& m, std::size_t ch) {
@@ -9,6 +11,18 @@ nc::DecoderConfig decoder_config(const config::Machine& m, std::size_t ch) {
   d.main_spindle.clear();
   const config::ChannelConfig& c = m.channels.at(ch);
   for (const auto& ax : c.axes) d.axis_names.push_back(ax.name);
+  if (c.c_axis >= 0 && static_cast<std::size_t>(c.c_axis) < d.axis_names.size()) {
+    // The program names the C axis by #CAX, else by P-CHAN-00010 (none: only after #CAX [S, name]).
+    d.c_axis = c.c_axis;
+    d.c_axis_default_name = c.default_ax_name_of_spindle;
+    d.axis_names[static_cast<std::size_t>(c.c_axis)] = c.default_ax_name_of_spindle;
+  }
+  if (c.use_alias_names)  // P-CHAN-00253: A1..A32 of the axis lists (P-AXIS-00297)
+    for (const auto& ax : c.axes) {
+      const bool listed = ax.axis_index >= 0 && static_cast<std::size_t>(ax.axis_index) < m.axes.size();
+      const std::string alias = listed ? m.axes[static_cast<std::size_t>(ax.axis_index)].name : std::string();
+      d.axis_aliases.push_back(is_alias_axis_name(alias) ? alias : std::string());
+    }
   for (const auto& s : c.spindles) {
     d.spindle_names.push_back(s.name);
     d.spindle_log_axis_numbers.push_back(static_cast<int>(s.log_axis_nr));  // #MAIN SPINDLE [nr]
@@ -18,8 +32,10 @@ nc::DecoderConfig decoder_config(const config::Machine& m, std::size_t ch) {
     d.main_spindle = c.spindles.empty() ? std::string() : c.spindles.front().name;
   d.main_spindle_name = c.main_spindle_name.empty() ? "S" : c.main_spindle_name;
   // The one place machine data switches decoder functions on or off.
-  d.dist_ctrl_available = c.dist_ctrl_enabled();
-  d.use_cached_files = (c.decoder_function & config::decoder_fct::FCT_USE_CACHED_FILES) != 0;
+  // P-CHAN-00507/00508: only the functions of the run's start mode.
+  const std::uint32_t fct = c.decoder_functions();
+  d.dist_ctrl_available = (fct & config::decoder_fct::FCT_3D_DIST_CTRL) != 0;
+  d.use_cached_files = (fct & config::decoder_fct::FCT_USE_CACHED_FILES) != 0;
   d.max_cache_number = c.max_cache_number;
   d.max_cache_size_kb = c.max_cache_size_kb;
   d.cycle_dirs = m.cycle_paths;

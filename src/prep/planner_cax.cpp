@@ -68,6 +68,11 @@ motion::AxisMask Planner::length_axes() const {
   return motion::kAllAxes & ~(motion::AxisMask{1} << static_cast<unsigned>(c_axis_));
 }
 
+// The C axis's name in the program: as the last #CAX gave it, else the list's.
+const std::string& Planner::c_axis_name() const {
+  return cax_.name.empty() ? channel_.axes[static_cast<std::size_t>(c_axis_)].name : cax_.name;
+}
+
 // What a block may not do around C-axis mode; "" when nothing.
 std::string Planner::cax_violation(const nc::Block& b, ErrorId& id) const {
   if (c_axis_ < 0) return {};
@@ -75,7 +80,7 @@ std::string Planner::cax_violation(const nc::Block& b, ErrorId& id) const {
   const bool cax_block = b.hash && std::holds_alternative<nc::CAxis>(*b.hash);
   if (!cax_.on && b.axes[jc] && !cax_block) {
     id = ErrorId::KernelCaxAxisNotInMode;
-    return fmt::format("{} is the main spindle and not in C-axis mode: program #CAX first", channel_.axes[jc].name);
+    return fmt::format("{} is the main spindle and not in C-axis mode: program #CAX first", c_axis_name());
   }
   if (cax_.on)
     for (const nc::SpindleCommand& s : b.spindles) {
@@ -83,8 +88,7 @@ std::string Planner::cax_violation(const nc::Block& b, ErrorId& id) const {
       if (s.m != nc::SpindleM::none || s.rev_rpm || s.pos_deg || s.g74 || s.gear_stage || s.g112_stage) {
         id = ErrorId::KernelCaxSpindleFunction;
         return fmt::format("{} is the C axis {}: spindle functions need #CAX OFF first",
-                           channel_.spindles[static_cast<std::size_t>(c_spindle_channel_)].name,
-                           channel_.axes[jc].name);
+                           channel_.spindles[static_cast<std::size_t>(c_spindle_channel_)].name, c_axis_name());
       }
     }
   if (cax_.trafo.kind != motion::CaxTrafoKind::none && b.modal.plane != cax_.plane) {
@@ -103,6 +107,7 @@ bool Planner::plan_cax(const nc::Block& b, Command& c, Command& error) {
       error = error_command(ErrorId::KernelCaxOffWithTrafo, "#CAX OFF while #FACE or #CYL is active", b.file_id, b.line);
       return false;
     }
+    cax_.name.clear();  // the program names it by the list's name again
     if (!cax_.on) return true;
     cax_.on = false;
     c.cax = Command::CaxOp::off;
@@ -121,17 +126,17 @@ bool Planner::plan_cax_on(const nc::Block& b, const nc::CAxis& a, Command& c, Co
     return false;
   };
   if (c_axis_ < 0)
-    return fail(ErrorId::KernelCaxWrongAxisMode,
-                channel_.default_ax_name_of_spindle.empty()
-                    ? std::string("#CAX: the channel list names no default_ax_name_of_spindle")
-                    : std::string("#CAX: the main spindle's axis list needs kenngr.achs_mode 0x0204"));
-  const auto jc = static_cast<std::size_t>(c_axis_);
+    return fail(ErrorId::KernelCaxWrongAxisMode, "#CAX: the main spindle's axis list needs kenngr.achs_mode 0x0204");
   const config::ChannelSpindle& sp = channel_.spindles[static_cast<std::size_t>(c_spindle_channel_)];
   if (!a.spindle.empty() && !iequals(a.spindle, sp.name) && !iequals(a.spindle, channel_.main_spindle_name))
     return fail(ErrorId::KernelCaxWrongAxisMode, fmt::format("#CAX: only {} can become the C axis", sp.name));
-  if (!a.axis.empty() && !iequals(a.axis, channel_.axes[jc].name))
-    return fail(ErrorId::KernelCaxBadAxes, fmt::format("#CAX: the C axis is named {} (default_ax_name_of_spindle)",
-                                                       channel_.axes[jc].name));
+  // The name is the decoder's (it addresses the axis words); without one the
+  // channel's default_ax_name_of_spindle (P-CHAN-00010) must give it.
+  const std::string& name = a.axis.empty() ? channel_.default_ax_name_of_spindle : a.axis;
+  if (name.empty())
+    return fail(ErrorId::KernelCaxWrongAxisMode,
+                "#CAX: the channel list names no default_ax_name_of_spindle; name the C axis: #CAX [S, C]");
+  cax_.name = name;
   cax_.on = true;
   // Also when C-axis mode is on already: the channel answers with C's
   // position, which preparation waits for after every #CAX.
@@ -158,7 +163,7 @@ bool Planner::plan_trafo(const nc::Block& b, Command& c, Command& error) {
   if (!cax_.on) return fail(ErrorId::KernelCaxNotActive, fmt::format("{} needs the C axis: program #CAX first", name));
   if (cax_.trafo.kind != motion::CaxTrafoKind::none)
     return fail(ErrorId::KernelTrafoActive, fmt::format("{}: switch the active #FACE / #CYL off first", name));
-  const std::string& c_name = channel_.axes[static_cast<std::size_t>(c_axis_)].name;
+  const std::string& c_name = c_axis_name();
   motion::CaxTrafo t;
   t.kind = kind;
   t.c = static_cast<std::int8_t>(c_axis_);

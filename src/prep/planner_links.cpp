@@ -48,6 +48,17 @@ double Planner::main_vb_max_rpm() const {
   return machine_->axes[static_cast<std::size_t>(ax)].gear(stage).vb_max / 6.0;  // deg/s -> rpm
 }
 
+// G63 makes the main spindle an axis in the gear stage of P-AXIS-00052
+// (kenngr.def_cax_gear_st, FCT-S1 2.8.6), as #CAX does: its top speed in
+// rpm (0 = none).
+double Planner::main_cax_vb_max_rpm() const {
+  if (main_channel_spindle_ >= channel_.spindles.size()) return 0;
+  const int ax = channel_.spindles[main_channel_spindle_].axis_index;
+  if (ax < 0 || !machine_ || static_cast<std::size_t>(ax) >= machine_->axes.size()) return 0;
+  const config::AxisConfig& a = machine_->axes[static_cast<std::size_t>(ax)];
+  return a.gear(a.def_cax_gear_st).vb_max / 6.0;  // deg/s -> rpm
+}
+
 // What every command of a block carries: G96 (modal), the tapping mark (the
 // spindle stays a tracking axis while G63/G331/G332 is modal, G4 included),
 // and the positioning of the spindle when G331 is selected. Errors as a command.
@@ -152,6 +163,7 @@ std::optional<Command> Planner::plan_feed(const nc::Block& b, const motion::Axis
       return error_command(ErrorId::NcTapSpeedZero, "G63 with S0: program the tapping speed", b.file_id, b.line);
     f.mm_per_rev = m.feed_mm_min / std::fabs(last_s_rpm_);
     f.direction = last_s_rpm_ < 0 ? -1 : 1;
+    f.spindle_max_rpm = main_cax_vb_max_rpm();
     v_cmd = m.feed_mm_min / 60.0;
     return std::nullopt;
   }

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -255,7 +256,15 @@ struct ChannelConfig {
   bool thread_chain = false;                    // P-CHAN-00837
   bool rotation_mode_fixed = false;             // P-CHAN-00393
   std::string rotation_sequence = "ZYX";        // P-CHAN-00394
-  bool dist_ctrl_enabled() const {
+  // The program-start mode of the run (P-CHAN-00508's symbols; nck run
+  // --start-mode); fct_enable[i] acts only when fct_condition[i] names it.
+  std::string start_mode = "ISG_STANDARD";
+  bool use_alias_names = false;                 // P-CHAN-00253 (0 after warning 22016)
+  // P-CHAN-00500 with the P-CHAN-00507 entries whose condition is the start mode.
+  std::uint32_t decoder_functions() const;
+  bool dist_ctrl_enabled() const { return (decoder_functions() & decoder_fct::FCT_3D_DIST_CTRL) != 0; }
+  // In some start mode (checks at load, which do not know the run's mode).
+  bool dist_ctrl_possible() const {
     return ((decoder_function | decoder_fct_enable[0] | decoder_fct_enable[1]) &
             decoder_fct::FCT_3D_DIST_CTRL) != 0;
   }
@@ -346,6 +355,11 @@ struct Machine {
     return nullptr;
   }
 };
+
+// P-CHAN-00508's start modes: the first of a pair of synonyms ("SV" for
+// "BLOCK_SEARCH", "MACHINE_LOCK" for "DRY_RUN" ...), upper case; "" when
+// `name` is none of them.
+std::string canonical_start_mode(std::string_view name);
 
 // A PLC spindle: plc_control 1 (no axis list) or an axis list with
 // achs_mode 0x40000; the PLC commands and acknowledges it.

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -52,6 +53,8 @@ class ParamList {
   std::vector<std::uint32_t> indices(std::string_view prefix, std::size_t position = 0) const;
   // Earliest line of a key starting with `prefix` (file, line 0 when none).
   SourceLoc loc_prefix(std::string_view prefix) const;
+  // Given, but its value was refused (a diagnostic says why at its line).
+  bool rejected(std::string_view key) const { return rejected_.contains(key); }
   // True when any key starts with `prefix`.
   bool any_with_prefix(std::string_view prefix) const;
 
@@ -63,6 +66,7 @@ class ParamList {
   ListKind kind_ = ListKind::startup;
   std::string file_;
   std::map<std::string, ParamValue, std::less<>> values_;
+  std::set<std::string, std::less<>> rejected_;
 };
 
 }  // namespace nck::config

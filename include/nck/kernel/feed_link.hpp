@@ -26,6 +26,9 @@ struct FeedLink {
   // while the path moves forward; G95 with a PLC spindle: the programmed rpm.
   double direction = 1;
   double programmed_rpm = 0;  // G95 on a PLC spindle (programmed values only, facts B10)
+  // Tapping: the spindle's top speed as an axis (G63: the gear stage of
+  // P-AXIS-00052 def_cax_gear_st), 0 = its current gear stage's.
+  double spindle_max_rpm = 0;
   bool use_programmed = false;
   double start_deg = 0;       // G33: spindle angle at which the path starts
   bool ignore_override = true;  // G33: the path follows the spindle, not the feed override

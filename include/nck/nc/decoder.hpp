@@ -18,6 +18,13 @@ namespace nck::nc {
 
 struct DecoderConfig {
   std::vector<std::string> axis_names;     // channel path axes, index = Block::axes index
+  // P-CHAN-00253 on: per axis its alias A1..A32 (P-AXIS-00297), "" none;
+  // empty when alias names are off. Programmed as A2=.. beside the names.
+  std::vector<std::string> axis_aliases;
+  // The main spindle's slot among the axes when it may become the C axis
+  // (-1: none): addressed by the name #CAX gives it, else P-CHAN-00010's.
+  int c_axis = -1;
+  std::string c_axis_default_name;         // P-CHAN-00010, "" = none
   std::vector<std::string> spindle_names;  // channel spindles ("S1", "S2"...)
   std::string main_spindle_name = "S";     // the name DIN words address
   std::string main_spindle = "S1";         // which configured spindle is the main one

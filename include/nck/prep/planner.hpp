@@ -101,6 +101,7 @@ class Planner final : public nc::KernelStateReader {
   void find_main_spindle(const std::vector<std::int8_t>& spindles);
   void note_spindle_words(const nc::Block& b);
   double main_vb_max_rpm() const;
+  double main_cax_vb_max_rpm() const;
   std::optional<Command> plan_links(const nc::Block& b, Command& c);
   std::optional<Command> plan_feed(const nc::Block& b, const motion::AxisVector& start,
                                    const motion::AxisVector& target, double length_mm, Command& c,
@@ -168,12 +169,14 @@ class Planner final : public nc::KernelStateReader {
     // the nearer solution every cycle follows the contour (set from the cycle time).
     double c_cycle_limit_deg_s = 45000;
     double c_before_deg = 0;  // machine C where the last planned face motion started
+    std::string name;         // the C axis's name as the last #CAX gave it
   };
   CaxState cax_{};
   int c_axis_ = -1;               // channel index of the C axis (ChannelConfig::c_axis)
   std::int8_t c_spindle_ = -1;    // its spindle: kernel index
   int c_spindle_channel_ = -1;    // and index in the channel's spindle list
   void init_c_axis(const config::Machine& machine, const std::vector<std::int8_t>& spindles);
+  const std::string& c_axis_name() const;
   bool plan_cax(const nc::Block& b, Command& c, Command& error);
   // #DIST CTRL (planner_dist.cpp)
   bool plan_dist(const nc::Block& b, Command& c, Command& error);

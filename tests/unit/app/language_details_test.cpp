@@ -45,6 +45,17 @@ TEST(LanguageDetails, CommentCommandsMustStandAlone) {
   EXPECT_NE(r.output.find("main.nc:3:14: error 20569"), std::string::npos) << r.output;
 }
 
+// An option written without its brackets is told the syntax, not that the
+// # command must be alone in its block.
+TEST(LanguageDetails, McsOnExToolWithoutBracketsNamesTheSyntax) {
+  CliResult r = run_nck("parse " + write("mcs_ex_tool", "G0 X0\n#MCS ON EX TOOL\nM30\n").string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("main.nc:2:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("error 920081"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("#MCS ON [EX TOOL]"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("920082"), std::string::npos) << r.output;
+}
+
 TEST(LanguageDetails, HashCommandBracketListsContinueOverLines) {
   // #CS DEF with its value list over three lines decodes like the one-line form.
   CliResult r = run_nck("parse --json " +

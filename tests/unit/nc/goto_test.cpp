@@ -18,6 +18,17 @@ TEST(NcGoto, ForwardJumpSkipsBlocks) {
   EXPECT_EQ(d.errors(), 0u);
 }
 
+// TF5200: commands may stand before and after $GOTO; the jump comes last.
+TEST(NcGoto, CommandsBesideTheJumpMakeTheBlock) {
+  auto d = decode("N10 X1 $GOTO N30\nN20 X2\nN30: X3 $GOTO [E] Y5 (not $GOTO [F])\nX9\n[E] M30\n");
+  EXPECT_EQ(xs(d), (std::vector<double>{1, 3})) << dump(d);
+  EXPECT_EQ(ns(d), (std::vector<std::int64_t>{10, 30}));
+  ASSERT_GE(d.blocks.size(), 2u);
+  ASSERT_TRUE(d.blocks[1].axes[1]);
+  EXPECT_DOUBLE_EQ(*d.blocks[1].axes[1], 5);
+  EXPECT_EQ(d.errors(), 0u);
+}
+
 TEST(NcGoto, StringLabelAndLeadingZeros) {
   auto d = decode("X1\n$GOTO [Skip_it]\nX2\n[SKIP_IT] X3\n$GOTO N010\nX4\nN10: X5\nM30\n");
   EXPECT_EQ(xs(d), (std::vector<double>{1, 3, 5})) << dump(d);
@@ -114,7 +125,7 @@ TEST(NcGoto, SyntaxErrors) {
   EXPECT_EQ(d.find(ErrorId::NcGotoSyntax)->loc.line, 2u);
   EXPECT_TRUE(decode("$GOTO N2.5\nM30\n").has(ErrorId::NcGotoSyntax));
   EXPECT_TRUE(decode("$GOTO [A\nM30\n").has(ErrorId::NcGotoSyntax));
-  EXPECT_TRUE(decode("$GOTO N2 X1\nN2: M30\n").has(ErrorId::NcGotoSyntax));
+  EXPECT_TRUE(decode("$IF 1 $GOTO N2 X1\nN2: M30\n").has(ErrorId::NcGotoSyntax));
   EXPECT_FALSE(decode("$GOTO N2\nN2: M30\n").has(ErrorId::NcUnsupported));
 }
 

@@ -145,14 +145,14 @@ TEST(NcWords, NonModalGCodesAreListed) {
 }
 
 TEST(NcWords, DwellForms) {
-  auto d = decode("G4 X4.5\nG04 2.5\nG4 S10\n#TIME 1.25\nG18\nG4 Z3\nM30\n");
+  auto d = decode("G4 X4.5\nG04 2.5\nG4 S10\n#TIME 1.25\nG18\nG4 X3\nM30\n");
   ASSERT_EQ(d.blocks.size(), 7u) << dump(d);
   EXPECT_DOUBLE_EQ(*d.blocks[0].dwell_s, 4.5);
   EXPECT_FALSE(d.blocks[0].has_axis_words());
   EXPECT_DOUBLE_EQ(*d.blocks[1].dwell_s, 2.5);
   EXPECT_DOUBLE_EQ(*d.blocks[2].dwell_revs, 10);
   EXPECT_DOUBLE_EQ(*d.blocks[3].dwell_s, 1.25);
-  EXPECT_DOUBLE_EQ(*d.blocks[5].dwell_s, 3);  // G18: Z is the first main axis
+  EXPECT_DOUBLE_EQ(*d.blocks[5].dwell_s, 3);  // G18: X, the channel's first axis, is still the first main axis
 }
 
 TEST(NcWords, DwellErrors) {
@@ -163,6 +163,8 @@ TEST(NcWords, DwellErrors) {
   auto w = decode("G4 X1 Y2\nM30\n");
   EXPECT_TRUE(w.has(ErrorId::NcDwellExtraAxes));
   EXPECT_EQ(w.errors(), 0u);
+  EXPECT_TRUE(decode("G4 Y2\n").has(ErrorId::NcDwellNotFirstAxis));      // TF5200 20014
+  EXPECT_TRUE(decode("G18\nG4 Z2\n").has(ErrorId::NcDwellNotFirstAxis));  // in every plane
 }
 
 TEST(NcWords, MFunctionsAndStops) {
