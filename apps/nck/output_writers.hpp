@@ -48,6 +48,7 @@ class EventWriter {
   static std::string line(double t_s, std::size_t ch, const Diagnostic& d);
   void write_line(const std::string& line);
   std::optional<std::string> commit() { return file_.commit(); }
+  void discard() { file_.discard(); }
 
  private:
   OutputFile file_;
@@ -61,6 +62,7 @@ class TraceWriter {
   bool is_open() const { return file_.is_open(); }
   void write(std::uint64_t cycle, const kernel::TickOutput& out);
   std::optional<std::string> commit() { return file_.commit(); }
+  void discard() { file_.discard(); }
   static std::vector<std::string> column_names(const config::Machine& m);
 
  private:

@@ -82,6 +82,7 @@ struct Decoder::Impl {
   ModalState modal;
   std::vector<detail::Frame> frames;
   detail::FileCache cache;
+  detail::WorkMeter meter;  // every block read: the reading budget and the stop request
   detail::Words words;
 
   bool fatal = false;        // decoding cannot go on
@@ -99,6 +100,8 @@ struct Decoder::Impl {
   bool modal_cycle_due = false;    // start it before the next block
 
   Result next();
+  Result next_block();  // next() without the meter's verdict
+  Result halted();      // the result once the meter has halted
 
   // decoder.cpp
   detail::Outcome process_block(Block& out);
@@ -118,7 +121,8 @@ struct Decoder::Impl {
   // goto_jump.cpp: $GOTO N<expr> / $GOTO [NAME]; `c` after the keyword
   detail::Outcome go_to(detail::Cursor& c, std::size_t pos);
   // subprograms.cpp
-  bool open_frame(const std::filesystem::path& p, bool cached, detail::Frame& f);
+  // `main`: the main program, whose first pass is free of the reading budget.
+  bool open_frame(const std::filesystem::path& p, bool cached, detail::Frame& f, bool main = false);
   // A frame reading a section of an open file again (a local subroutine or
   // cycle: path, cached text, index of the caller's file) from `body`; false
   // when the file cannot be read again.

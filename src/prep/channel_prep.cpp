@@ -32,7 +32,9 @@ ChannelPrep::ChannelPrep(const config::Machine& m, std::size_t ch, const std::fi
     return;
   }
   window_.set_blend_axes(planner_->blend_axes());
-  decoder_.emplace(program, decoder_config(m, ch));
+  nc::DecoderConfig cfg = decoder_config(m, ch);
+  cfg.stop = options.stop;
+  decoder_.emplace(program, std::move(cfg));
   // The planner lives on the heap, so the pointer survives moves of this object.
   decoder_->set_kernel_state_reader(planner_.get());
   for (const auto& [name, value] : initial_variables(m, ch, options.clamp_index))
@@ -69,6 +71,7 @@ void ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& fe
          commands.free_slots() >= kernel::kMaxCommandsPerBlock) {
     nc::Decoder::Result r = decoder_->next();
     collect_warnings();
+    if (r.status == nc::Decoder::Status::stopped) return;  // the caller stops the run
     if (r.status == nc::Decoder::Status::block) {
       if (r.block.depth == 0) last_main_line_ = r.block.line;
       (void)prepare(r.block, commands);

@@ -9,6 +9,7 @@
 // A threaded integration keeps the same shape: prepare() in the prep thread,
 // cycle() (with real I/O instead of MachineSim) in the real-time thread; they
 // share only the kernel's SPSC queues (docs/decisions.md).
+#include <atomic>
 #include <cstdint>
 #include <expected>
 #include <filesystem>
@@ -32,6 +33,7 @@ namespace nck::sim {
 struct DryRunOptions {
   std::uint32_t clamp_index = 0;  // clamp-offset group at program start (--clamp-index)
   bool record_frames = false;     // blocks carry their program -> machine map (--report)
+  const std::atomic<bool>* stop = nullptr;  // stops decoding at once when set (prep::PrepOptions::stop)
 };
 
 // What a channel knows about its programmed state, for --final.
