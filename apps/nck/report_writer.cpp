@@ -154,7 +154,14 @@ std::uint16_t ReportWriter::file_index(const std::string& name) {
 
 const std::string& ReportWriter::line_text(std::uint16_t file, std::uint32_t line) const {
   static const std::string none;
-  return file < files_.size() ? files_[file].line(line) : none;
+  if (file >= files_.size()) return none;
+  // A program may call thousands of subroutine files: few stay open at a time.
+  constexpr std::size_t kMaxOpenFiles = 16;
+  if (!files_[file].is_open() && ++open_files_ > kMaxOpenFiles) {
+    for (SourceLines& f : files_) f.close();
+    open_files_ = 1;
+  }
+  return files_[file].line(line);
 }
 
 void ReportWriter::take(const kernel::Event& e, const RunNames& names) {

@@ -131,6 +131,7 @@ class ReportWriter {
   std::vector<double> row_;
   EnvelopeSeries series_;
   mutable std::vector<SourceLines> files_;  // mutable: reading a line moves the file's stream and cache
+  mutable std::size_t open_files_ = 0;       // of files_ (at most 16)
   std::unordered_map<std::string, std::uint16_t> file_ids_;
   // (channel, file, line) and (channel, tool) -> cycles spent there
   std::map<std::tuple<std::size_t, std::uint16_t, std::uint32_t>, Accum> blocks_;

@@ -4,13 +4,19 @@
 
 namespace nck::app {
 
-SourceLines::SourceLines(std::string path) : name_(std::move(path)), in_(name_, std::ios::binary) {
+SourceLines::SourceLines(std::string path) : name_(std::move(path)) {
+  std::ifstream in(name_, std::ios::binary);
   std::uint64_t offset = 0;
-  for (std::string l; line_count_ < std::numeric_limits<std::uint32_t>::max() && std::getline(in_, l);) {
+  for (std::string l; line_count_ < std::numeric_limits<std::uint32_t>::max() && std::getline(in, l);) {
     if (line_count_ % kStride == 0) offsets_.push_back(offset);
     ++line_count_;
     offset += l.size() + 1;
   }
+}
+
+void SourceLines::close() {
+  in_.close();
+  next_ = 0;
 }
 
 bool SourceLines::read_line(std::string& out) {
@@ -31,6 +37,10 @@ const std::string& SourceLines::line(std::uint32_t n) {
   if (slot.line == n) return slot.text;
   // Forward from where the stream is when the line is near, else from the
   // noted offset before it.
+  if (!in_.is_open()) {
+    in_.open(name_, std::ios::binary);
+    next_ = 0;
+  }
   if (next_ == 0 || n < next_ || n - next_ >= kStride) {
     const std::uint32_t block = (n - 1) / kStride;
     in_.clear();

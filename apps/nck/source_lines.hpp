@@ -16,8 +16,11 @@ class SourceLines {
  public:
   explicit SourceLines(std::string path);
   const std::string& name() const { return name_; }
-  // Line n (1-based) without its line break ("" when there is none).
+  // Line n (1-based) without its line break ("" when there is none); opens
+  // the file when it is closed.
   const std::string& line(std::uint32_t n);
+  bool is_open() const { return in_.is_open(); }
+  void close();  // the cache stays
 
   static constexpr std::uint32_t kStride = 64;      // lines between two noted offsets
   static constexpr std::size_t kCacheLines = 256;   // direct-mapped by line number

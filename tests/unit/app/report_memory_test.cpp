@@ -51,12 +51,17 @@ Measured run_measured(const std::string& binary, const std::vector<std::string>&
   return m;
 }
 
-// `lines` short blocks, each a line of its own (the per-line table's worst case).
+// `lines` short blocks, each a line of its own (the per-line table's worst
+// case): feed changes, several per cycle, and every tenth a 1 µm move (a
+// backplot vertex each).
 std::filesystem::path short_blocks(const std::filesystem::path& dir, std::size_t lines) {
   const auto p = dir / ("short_" + std::to_string(lines) + ".nc");
   std::ofstream out(p, std::ios::binary);
   out << "G90 G1 F60000\n";
-  for (std::size_t i = 0; i < lines; ++i) out << "X" << (i % 2 ? 0.5 : 0) << " Y" << (i % 3) * 0.25 << "\n";
+  for (std::size_t i = 0; i < lines; ++i) {
+    if (i % 10 == 0) out << "X" << (i % 20 == 0 ? "0.001" : "0") << "\n";
+    else out << "F" << 1000 + i % 7 << "\n";
+  }
   out << "M30\n";
   return p;
 }
