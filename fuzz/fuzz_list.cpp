@@ -22,15 +22,22 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A copy of examples/mill per fuzzing process.
+// A copy of examples/mill per fuzzing process, removed when it exits.
+struct MachineCopy {
+  fs::path dir = fs::temp_directory_path() / ("nck_fuzz_machine_" + std::to_string(::getpid()));
+  MachineCopy() {
+    fs::remove_all(dir);
+    fs::copy(NCK_SOURCE_DIR "/examples/mill", dir, fs::copy_options::recursive);
+  }
+  ~MachineCopy() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+};
+
 const fs::path& machine_copy() {
-  static const fs::path dir = [] {
-    const fs::path d = fs::temp_directory_path() / ("nck_fuzz_machine_" + std::to_string(::getpid()));
-    fs::remove_all(d);
-    fs::copy(NCK_SOURCE_DIR "/examples/mill", d, fs::copy_options::recursive);
-    return d;
-  }();
-  return dir;
+  static const MachineCopy copy;
+  return copy.dir;
 }
 
 void load_whole_machine(std::string_view text, std::uint8_t pick) {
