@@ -39,6 +39,12 @@ Measured run_measured(const std::string& binary, const std::vector<std::string>&
     argv.push_back(nullptr);
     std::freopen("/dev/null", "w", stdout);
     std::freopen("/dev/null", "w", stderr);
+    if (kSanitized) {  // freed memory waits in ASan's quarantine (256 MB): the RSS would show it, not what nck keeps
+      const char* old = std::getenv("ASAN_OPTIONS");
+      const std::string options = std::string(old != nullptr ? old : "") +
+                                  ":quarantine_size_mb=1:thread_local_quarantine_size_kb=64";
+      setenv("ASAN_OPTIONS", options.c_str(), 1);
+    }
     execv(binary.c_str(), argv.data());
     _exit(127);
   }

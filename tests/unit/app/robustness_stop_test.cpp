@@ -206,9 +206,17 @@ pid_t start_nck(const std::vector<std::string>& args) {
   _exit(127);
 }
 
-// Finding 7: a signal while the run is still being set up (here: 60 ms in,
-// while a 4,000,000-line program is indexed, which takes some 300 ms) ends
-// nck with its exit code and complete outputs, not by the signal.
+// Whether process `pid` has `file` open (polled from /proc).
+bool has_open(pid_t pid, const std::filesystem::path& file) {
+  std::error_code ec;
+  for (const auto& fd : std::filesystem::directory_iterator("/proc/" + std::to_string(pid) + "/fd", ec))
+    if (std::filesystem::read_symlink(fd.path(), ec) == file) return true;
+  return false;
+}
+
+// Finding 7: a signal while the run is still being set up (here: as soon as
+// nck opens the 4,000,000-line program to index it, which takes some
+// 300 ms) ends nck with its exit code and complete outputs, not by the signal.
 TEST(RobustnessStop, ASignalDuringSetUpEndsWithItsCode) {
   const auto dir = temp_dir("early_signal");
   {
@@ -216,8 +224,9 @@ TEST(RobustnessStop, ASignalDuringSetUpEndsWithItsCode) {
     for (int i = 0; i < 4'000'000; ++i) big << (i % 2 ? "G1 X1 F60000\n" : "G1 X0 F60000\n");
     big << "M30\n";
   }
-  const pid_t pid = start_nck({"run", mill(), (dir / "big.nc").string(), "--events", (dir / "e.jsonl").string()});
-  std::this_thread::sleep_for(std::chrono::milliseconds(60));
+  const auto big = std::filesystem::canonical(dir / "big.nc");
+  const pid_t pid = start_nck({"run", mill(), big.string(), "--events", (dir / "e.jsonl").string()});
+  for (int ms = 0; ms < 10'000 && !has_open(pid, big); ++ms) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   kill(pid, SIGTERM);
   int status = 0;
   waitpid(pid, &status, 0);
