@@ -27,6 +27,7 @@ nck::nc::DecoderConfig config() {
   c.main_spindle = "S1";
   c.continue_after_error = true;
   c.max_loop_iterations = 20'000;
+  c.max_lines_read = 500'000;  // the reading budget: a few seconds under ASan+UBSan
   c.max_variable_elements = 50'000;
   return c;
 }
@@ -42,7 +43,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (int blocks = 0; blocks < 100'000; ++blocks) {
     const std::size_t before = d.diagnostics().size();
     const nck::nc::Decoder::Result r = d.next();
-    if (r.status == nck::nc::Decoder::Status::end) break;
+    if (r.status == nck::nc::Decoder::Status::end || r.status == nck::nc::Decoder::Status::stopped) break;
     if (r.status == nck::nc::Decoder::Status::error && d.diagnostics().size() == before) break;
   }
   return 0;

@@ -1,12 +1,28 @@
-// libFuzzer target: any bytes as a --plc scenario file.
+// libFuzzer target: any bytes as a --plc scenario file, the whole path of
+// `nck run --plc`: parsed, then its spindle and axis names resolved against
+// the milling example's machine (loaded once).
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
 
+#include "nck/config/load.hpp"
+#include "nck/plc/hli.hpp"
 #include "nck/plc/scenario.hpp"
+
+namespace {
+
+const nck::config::Machine* machine() {
+  static const nck::config::LoadResult loaded = nck::config::load_machine(NCK_SOURCE_DIR "/examples/mill");
+  return loaded.machine ? &*loaded.machine : nullptr;
+}
+
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   nck::Diagnostics diags;
-  (void)nck::plc::parse_scenario(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz.plc", diags);
+  nck::plc::Scenario sc =
+      nck::plc::parse_scenario(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz.plc", diags);
+  if (const nck::config::Machine* m = machine())
+    nck::plc::resolve_spindles(sc, *m, nck::plc::build_spindle_map(*m), diags);
   return 0;
 }

@@ -19,6 +19,7 @@
 #include "nck/core/edit_distance.hpp"
 #include "nck/core/diagnostic.hpp"
 #include "run_command.hpp"
+#include "stop_request.hpp"
 
 namespace nck::app {
 namespace {
@@ -112,6 +113,7 @@ CLI::Validator start_mode_validator() {
 }  // namespace
 
 int main_cli(int argc, char** argv) {
+  install_signal_handlers();  // before anything that a signal could leave half done
   CLI::App app{"nck - an open NC kernel: check machine data, decode and run NC programs"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "nck 0.1.0");
@@ -153,6 +155,8 @@ int main_cli(int argc, char** argv) {
   parsec->add_flag("--json", parse.json, "print the decoded blocks as JSON lines");
   parsec->add_option("--machine", parse.machine, "take axis and spindle names from this machine");
   parsec->add_option("--channel", parse.channel, "channel of --machine (1-based)")->check(number_at_least(1, true));
+  parsec->add_option("--max-wall", parse.max_wall_s, "wall-clock limit in seconds")
+      ->check(number_at_least(0.001, false));
   parsec->add_option("--cycles", parse.cycles, "search DIR for L CYCLE files (after --machine's cycle_path[i]); repeat")
       ->allow_extra_args(false);
 
@@ -208,7 +212,10 @@ int main_cli(int argc, char** argv) {
     std::fprintf(stderr, "nck: error %u: %s\n", number(ErrorId::AppInternalError), e.what());
     return 2;
   }
-  return stdout_written() ? code : 2;
+  if (!stdout_written()) code = 2;
+  // A stop signal during a command that does not watch for it ends it with
+  // the signal's code once the command is done.
+  return signal_exit_code() != 0 && code != 2 ? signal_exit_code() : code;
 }
 
 }  // namespace nck::app

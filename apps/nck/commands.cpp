@@ -9,6 +9,7 @@
 #include "nck/nc/block_json.hpp"
 #include "nck/spindle/accel_curve.hpp"
 #include "output_file.hpp"
+#include "stop_request.hpp"
 
 #include <filesystem>
 #include <sstream>
@@ -58,6 +59,8 @@ int parse_program(const ParseOptions& opt) {
     return 2;
   }
   cfg.continue_after_error = true;  // lint: report every bad block, not only the first
+  cfg.stop = &stop_flag();          // SIGINT, SIGTERM, --max-wall
+  const WallClockLimit wall(opt.max_wall_s);
   nc::Decoder dec(opt.program, cfg);
   std::size_t blocks = 0;
   std::size_t shown = 0;
@@ -75,9 +78,21 @@ int parse_program(const ParseOptions& opt) {
     if (res.status == nc::Decoder::Status::error && dec.diagnostics().size() > before) continue;
     if (res.status != nc::Decoder::Status::block) break;
     ++blocks;
-    if (opt.json)
-      (void)write_stdout(nc::to_json(res.block, dec).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+    // A closed pipe (nck parse --json | head) ends the listing; main_cli reports it.
+    if (opt.json && !write_stdout(nc::to_json(res.block, dec).dump(-1, ' ', false,
+                                                                   nlohmann::json::error_handler_t::replace) +
+                                  "\n"))
+      break;
     if (res.block.program_end) break;
+  }
+  if (stop_flag().load()) {
+    std::fflush(stdout);
+    if (wall.reached())
+      fmt::print(stderr, "nck: error {}: the wall-clock limit of {} s was reached after {} block(s)\n",
+                 number(ErrorId::AppWallTimeLimit), opt.max_wall_s, blocks);
+    else
+      fmt::print(stderr, "nck: interrupted after {} block(s)\n", blocks);
+    return wall.reached() && stop_signal() == 0 ? 1 : signal_exit_code();
   }
   std::size_t errors = 0;
   for (const Diagnostic& d : dec.diagnostics()) errors += d.severity == Severity::error;

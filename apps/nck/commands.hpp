@@ -13,8 +13,10 @@ struct ParseOptions {
   std::string machine;   // optional: names from this machine
   std::size_t channel = 1;
   std::vector<std::string> cycles;  // --cycles DIR
+  double max_wall_s = 0;            // wall-clock seconds (0 = no limit)
 };
-// nck parse PROGRAM: 0 without errors, 1 with errors, 2 bad machine.
+// nck parse PROGRAM: 0 without errors, 1 with errors or at --max-wall, 2 bad
+// machine, 130/143 stopped by SIGINT/SIGTERM.
 int parse_program(const ParseOptions& opt);
 
 struct FitOptions {

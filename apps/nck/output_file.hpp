@@ -26,9 +26,10 @@ class OutputFile {
   // Flushes, closes and renames into place; the error text, if any write,
   // the close or the rename failed (the target is then left as it was).
   std::optional<std::string> commit();
+  // Drops what was written: the temporary is removed, the target left as it was.
+  void discard();
 
  private:
-  void discard();
 
   std::FILE* f_ = nullptr;
   std::string path_;  // the target

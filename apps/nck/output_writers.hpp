@@ -46,6 +46,7 @@ class EventWriter {
   static std::string line(const kernel::Event& e, const RunNames& names);
   void write_line(const std::string& line);
   std::optional<std::string> commit() { return file_.commit(); }
+  void discard() { file_.discard(); }
 
  private:
   OutputFile file_;
@@ -59,6 +60,7 @@ class TraceWriter {
   bool is_open() const { return file_.is_open(); }
   void write(std::uint64_t cycle, const kernel::TickOutput& out);
   std::optional<std::string> commit() { return file_.commit(); }
+  void discard() { file_.discard(); }
   static std::vector<std::string> column_names(const config::Machine& m);
 
  private:

@@ -161,7 +161,7 @@ std::string ReportWriter::summary_json(std::vector<LineRef>& lines_used) const {
     s += "}";
     lines_used.emplace_back(file, line);
   }
-  s += fmt::format("],\"blocks_total\":{},\"tools\":[", blocks.size());
+  s += fmt::format("],\"blocks_total\":{},\"tools\":[", block_lines_);
   bool first = true;
   for (const auto& [key, acc] : tools_) {
     s += fmt::format(R"({}{{"ch":{},"tool":{},"count":{},"time_s":)", first ? "" : ",", key.first + 1,
@@ -181,7 +181,7 @@ std::string ReportWriter::data_json(double end_s, int exit_code) const {
   append_number(s, end_s, 4);
   s += fmt::format(R"(,"exit_code":{},"end":{},"cycle_s":{},"errors":{},"warnings":{},"stride":{},"c_axis":{}}})",
                    exit_code, quoted(end_reason_), cycle_s_, errors_, warnings_, series_.stride(), c_axis_used_);
-  s += ",\"files\":" + array_of(files_, [](std::string& o, const SourceFile& f) { o += quoted(f.name); });
+  s += ",\"files\":" + array_of(files_, [](std::string& o, const SourceLines& f) { o += quoted(f.name()); });
   s += ",\"spindles\":" + array_of(spindles_, [](std::string& o, const std::string& n) { o += quoted(n); });
   s += ",\"series\":" + array_of(series_meta_, [](std::string& o, const std::string& m) { o += m; });
   s += ",\"ts\":" + series_.json(decimals_);
@@ -228,7 +228,8 @@ void ReportWriter::note_link(const std::string& json_line) {
   if (!j.is_object()) return;
   const int ch = j.value("ch", 0), group = j.value("group", 0);
   if (j.value("on", false)) {
-    links_.push_back({ch, group, j.value("pairs", json::array()).dump(), j.value("t", 0.0), -1, ""});
+    if (links_.size() < kMaxListed)
+      links_.push_back({ch, group, j.value("pairs", json::array()).dump(), j.value("t", 0.0), -1, ""});
     return;
   }
   for (LinkPeriod& p : links_)

@@ -180,18 +180,48 @@ void PathRecorder::add(const std::array<double, 3>& pos, std::uint32_t line, std
       return;
     }
   }
-  // The tip becomes a vertex and the anchor of a new run towards pos.
-  anchor_ = tip_;
-  double len = 0;
+  double step[3], len = 0;
   for (int i = 0; i < 3; ++i) {
-    dir_[i] = pos[i] - anchor_[i];
-    len += dir_[i] * dir_[i];
+    step[i] = pos[i] - tip_[i];
+    len += step[i] * step[i];
   }
   len = std::sqrt(len);
-  for (double& d : dir_) d /= len;
-  has_dir_ = true;
+  if (same_block && len < kMinStepMm) {  // creeping: the tip moves, no new vertex
+    tip = {to_float(pos), line, file, rapid, frame};
+    tip_ = pos;
+    return;
+  }
+  // The tip becomes a vertex and the anchor of a new run towards pos.
+  anchor_ = tip_;
+  has_dir_ = len >= kMinStepMm;  // a new block's first step may be tiny: no direction yet
+  if (has_dir_)
+    for (int i = 0; i < 3; ++i) dir_[i] = step[i] / len;
   points_.push_back({to_float(pos), line, file, rapid, frame});
   tip_ = pos;
+  if (points_.size() > kMaxVertices) thin_in_place();
+}
+
+// Halves the vertices at least: thinned with a tolerance doubling from
+// twice the last one; if breaks (G0/G1, maps) alone leave too many, every
+// second vertex goes. The newest point stays the tip.
+void PathRecorder::thin_in_place() {
+  auto breaks = [](const PathPoint& a, const PathPoint& b) { return a.rapid != b.rapid || a.frame != b.frame; };
+  constexpr double kMaxTolMm = 1e6;
+  const PathPoint tip = points_.back();
+  for (double tol = std::max(2 * thin_tol_mm_, 2 * kRecordTolMm); points_.size() > kMaxVertices / 2; tol *= 2) {
+    if (tol > kMaxTolMm) {
+      std::vector<PathPoint> half;
+      half.reserve(points_.size() / 2 + 1);
+      for (std::size_t i = 0; i < points_.size(); i += 2) half.push_back(points_[i]);
+      points_ = std::move(half);
+      break;
+    }
+    points_ = thin(points_, tol, breaks);
+    thin_tol_mm_ = tol;
+  }
+  if (points_.empty() || points_.back().pos != tip.pos) points_.push_back(tip);
+  has_dir_ = false;  // the next point starts a new run from the tip
+  anchor_ = tip_;
 }
 
 std::vector<PathPoint> PathRecorder::simplified(double tol_mm) const {

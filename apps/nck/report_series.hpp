@@ -64,13 +64,24 @@ class PathRecorder {
   bool empty() const { return points_.empty(); }
 
   static constexpr double kRecordTolMm = 0.001;
+  // Vertices kept: beyond, the path is thinned with a doubling tolerance to
+  // half as many (a block per vertex in a 5-million-block program, or a
+  // vertex per cycle of a crawling feed, stays bounded).
+  static constexpr std::size_t kMaxVertices = 240000;
+  // A step shorter than this moves the newest point without giving a
+  // direction (F1e-300 steps underflow; their direction is noise).
+  static constexpr double kMinStepMm = 1e-9;
+  double thinned_tol_mm() const { return thin_tol_mm_; }
 
  private:
+  void thin_in_place();
+
   std::vector<PathPoint> points_;  // vertices; the last one is the newest set point
   std::array<double, 3> tip_{};    // the newest set point in full precision
   std::array<double, 3> anchor_{}, dir_{};  // the current run: its start and unit direction
   bool has_dir_ = false;
   std::array<double, 3> min_{}, max_{};
+  double thin_tol_mm_ = 0;  // the tolerance of the last in-place thinning (0: none yet)
 };
 
 // Distance of p from the line through a and b (from a when a == b).

@@ -146,23 +146,22 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
 
 std::uint16_t ReportWriter::file_index(const std::string& name) {
   if (auto it = file_ids_.find(name); it != file_ids_.end()) return it->second;
-  SourceFile f{name, {}};
-  std::ifstream in(name, std::ios::binary);
-  for (std::string l; std::getline(in, l);) {
-    if (!l.empty() && l.back() == '\r') l.pop_back();
-    f.lines.push_back(std::move(l));
-  }
-  if (!f.lines.empty() && f.lines.front().rfind("\xEF\xBB\xBF", 0) == 0) f.lines.front().erase(0, 3);
   const auto id = static_cast<std::uint16_t>(files_.size());
-  files_.push_back(std::move(f));
+  files_.emplace_back(name);
   file_ids_.emplace(name, id);
   return id;
 }
 
 const std::string& ReportWriter::line_text(std::uint16_t file, std::uint32_t line) const {
   static const std::string none;
-  if (file >= files_.size() || line == 0 || line > files_[file].lines.size()) return none;
-  return files_[file].lines[line - 1];
+  if (file >= files_.size()) return none;
+  // A program may call thousands of subroutine files: few stay open at a time.
+  constexpr std::size_t kMaxOpenFiles = 16;
+  if (!files_[file].is_open() && ++open_files_ > kMaxOpenFiles) {
+    for (SourceLines& f : files_) f.close();
+    open_files_ = 1;
+  }
+  return files_[file].line(line);
 }
 
 void ReportWriter::take(const kernel::Event& e, const RunNames& names) {
@@ -182,8 +181,11 @@ void ReportWriter::take(const kernel::Event& e, const RunNames& names) {
       ch.line = e.line;
       if (e.message_index != kernel::kNoMessage) take_frame(ch, e.message_index, names);
       scan_g_words(line_text(ch.file, ch.line), ch.motion, ch.plane);
-      ch.block = &blocks_[{c, ch.file, ch.line}];
+      auto [it, added] = blocks_.try_emplace({c, ch.file, ch.line});
+      ch.block = &it->second;
       ++ch.block->count;
+      block_lines_ += added;
+      if (blocks_.size() > kMaxBlockLines) drop_shortest_blocks();
       break;
     }
     case K::plc_out: {
@@ -200,6 +202,7 @@ void ReportWriter::take(const kernel::Event& e, const RunNames& names) {
       Wait w{c + 1, e.t_s, -1, wait_reason_name(static_cast<kernel::WaitReason>(e.wait_reason)), function_text(e),
              spindle_name(e.spindle), "", e.line ? e.line : ch.line, ch.file};
       if (auto it = ch.last_sync.find(w.fn); it != ch.last_sync.end() && !w.fn.empty()) w.sync = sync_name(it->second);
+      if (waits_.size() >= kMaxListed) break;
       ch.open_wait = waits_.size();
       waits_.push_back(std::move(w));
       break;
@@ -216,6 +219,28 @@ void ReportWriter::take(const kernel::Event& e, const RunNames& names) {
   }
 }
 
+// Keeps the half of the lines with the most time (and the lines the
+// channels are in): the table shows the longest 300, memory stays bounded.
+void ReportWriter::drop_shortest_blocks() {
+  std::vector<double> times;
+  times.reserve(blocks_.size());
+  for (const auto& [key, acc] : blocks_) times.push_back(acc.time_s);
+  const auto keep = static_cast<std::ptrdiff_t>(kMaxBlockLines / 2);
+  std::nth_element(times.begin(), times.begin() + keep, times.end(), std::greater<>());
+  const double threshold = times[static_cast<std::size_t>(keep)];
+  auto in_use = [&](const Accum* a) {
+    for (const Channel& ch : channels_)
+      if (ch.block == a) return true;
+    return false;
+  };
+  for (auto it = blocks_.begin(); it != blocks_.end();)
+    it = it->second.time_s <= threshold && !in_use(&it->second) ? blocks_.erase(it) : std::next(it);
+}
+
+void ReportWriter::add_mark(Mark m) {
+  if (marks_.size() < kMaxListed) marks_.push_back(std::move(m));
+}
+
 void ReportWriter::sample(std::uint64_t cycle, const kernel::TickOutput& out, const RunNames& names) {
   if (!enabled_) return;
   for (const kernel::Event& e : out.events) {
@@ -223,10 +248,10 @@ void ReportWriter::sample(std::uint64_t cycle, const kernel::TickOutput& out, co
     using K = kernel::EventKind;
     const auto s = static_cast<std::size_t>(e.spindle);
     if (e.spindle < 0 || s >= spindles_.size()) continue;
-    if (e.kind == K::gear) marks_.push_back({e.t_s, s, 0, "gear", fmt::format("{} gear stage {}", function_text(e), e.gear)});
-    if (e.kind == K::speed_reached) marks_.push_back({e.t_s, s, 0, "speed_reached", fmt::format("speed reached {:g} rpm", e.value)});
+    if (e.kind == K::gear) add_mark({e.t_s, s, 0, "gear", fmt::format("{} gear stage {}", function_text(e), e.gear)});
+    if (e.kind == K::speed_reached) add_mark({e.t_s, s, 0, "speed_reached", fmt::format("speed reached {:g} rpm", e.value)});
     if (e.kind == K::plc_out && e.fn == kernel::FunctionKind::s)
-      marks_.push_back({e.t_s, s, 0, "s", fmt::format("S {:g} rpm programmed", e.value)});
+      add_mark({e.t_s, s, 0, "s", fmt::format("S {:g} rpm programmed", e.value)});
   }
   watch_plc(out.t_s, names);
   std::size_t k = 0;
@@ -282,7 +307,7 @@ void ReportWriter::watch_plc(double t_s, const RunNames& names) {
   if (!names.run) return;
   const plc::HliImage& hli = names.run->machine().hli();
   auto hold = [&](bool on, std::optional<std::size_t>& open, Wait w) {
-    if (on && !open) {
+    if (on && !open && waits_.size() < kMaxListed) {
       open = waits_.size();
       waits_.push_back(std::move(w));
     } else if (!on && open) {
@@ -294,14 +319,14 @@ void ReportWriter::watch_plc(double t_s, const RunNames& names) {
     Channel& ch = channels_[c];
     const double ovr = hli.channel[c].feed_override_percent;
     if (ovr != ch.feed_override_pct)
-      marks_.push_back({t_s, 0, c + 1, "override", fmt::format("feed override {:g} %", ovr)});
+      add_mark({t_s, 0, c + 1, "override", fmt::format("feed override {:g} %", ovr)});
     ch.feed_override_pct = ovr;
     hold(hli.channel[c].feedhold, ch.hold, Wait{c + 1, t_s, -1, "feedhold", "", "", "", ch.line, ch.file});
   }
   for (std::size_t s = 0; s < spindles_.size() && s < hli.spindle_control.size(); ++s) {
     const double ovr = hli.spindle_control[s].effective_override_percent();
     if (ovr != spindle_override_pct_[s])
-      marks_.push_back({t_s, s, 0, "override", fmt::format("spindle override {:g} %", ovr)});
+      add_mark({t_s, s, 0, "override", fmt::format("spindle override {:g} %", ovr)});
     spindle_override_pct_[s] = ovr;
     hold(hli.spindle_control[s].feedhold, spindle_hold_[s], Wait{0, t_s, -1, "feedhold", "", spindles_[s], "", 0, 0});
   }
@@ -318,7 +343,7 @@ void ReportWriter::event(const std::string& json_line, bool is_error) {
   if (block) return;
   const bool warning = json_line.find("\"ev\":\"warning\"") != std::string::npos;
   if (is_error || warning) {
-    diagnostics_.push_back(json_line);
+    if (diagnostics_.size() < kMaxListed) diagnostics_.push_back(json_line);
     ++(is_error ? errors_ : warnings_);
     const json j = json::parse(json_line, nullptr, false);
     if (j.is_object() && j.contains("file") && j["file"].is_string()) file_index(j["file"].get<std::string>());

@@ -18,6 +18,7 @@
 #include "nck/kernel/tick_io.hpp"
 #include "report_contour.hpp"
 #include "report_series.hpp"
+#include "source_lines.hpp"
 #include "run_command.hpp"
 
 namespace nck::sim {
@@ -47,6 +48,12 @@ class ReportWriter {
   static constexpr std::size_t kMaxTableBlocks = 2000;   // block events in the table
   static constexpr std::size_t kMaxBackplotPoints = 60000;  // per channel, after thinning
   static constexpr std::size_t kMaxFrames = 1000;  // different program -> machine maps per channel
+  // Lines with their cycle time: when more have run, the half with the least
+  // time is dropped (a top-N table; a dropped line that runs again starts anew).
+  static constexpr std::size_t kMaxBlockLines = 20000;
+  // Diagnostics, waits, marks and coupling periods kept for the page; the
+  // rest are counted (errors_, warnings_) or left out.
+  static constexpr std::size_t kMaxListed = 20000;
 
  private:
   struct Accum {
@@ -89,10 +96,7 @@ class ReportWriter {
     double feed_override_pct = 100;
     std::optional<std::size_t> hold;  // the feedhold in progress (waits_ index)
   };
-  struct SourceFile {
-    std::string name;
-    std::vector<std::string> lines;
-  };
+  void add_mark(Mark m);
   std::uint16_t file_index(const std::string& name);
   const std::string& line_text(std::uint16_t file, std::uint32_t line) const;
   void take(const kernel::Event& e, const RunNames& names);
@@ -126,10 +130,13 @@ class ReportWriter {
   std::vector<int> decimals_;
   std::vector<double> row_;
   EnvelopeSeries series_;
-  std::vector<SourceFile> files_;
+  mutable std::vector<SourceLines> files_;  // mutable: reading a line moves the file's stream and cache
+  mutable std::size_t open_files_ = 0;       // of files_ (at most 16)
   std::unordered_map<std::string, std::uint16_t> file_ids_;
   // (channel, file, line) and (channel, tool) -> cycles spent there
   std::map<std::tuple<std::size_t, std::uint16_t, std::uint32_t>, Accum> blocks_;
+  std::uint64_t block_lines_ = 0;  // lines that ran (counted again after a drop)
+  void drop_shortest_blocks();
   std::map<std::pair<std::size_t, std::string>, Accum> tools_;
   std::vector<Wait> waits_;
   std::vector<Mark> marks_;

@@ -11,7 +11,6 @@
 #include <sstream>
 #include <cstdio>
 #include <fmt/format.h>
-#include <csignal>
 #include <thread>
 #include <unistd.h>
 
@@ -21,6 +20,7 @@
 #include "output_writers.hpp"
 #include "progress.hpp"
 #include "run_outputs.hpp"
+#include "stop_request.hpp"
 
 namespace nck::app {
 namespace {
@@ -45,11 +45,21 @@ void report_dropped_events(const kernel::TickOutput& o, const RunNames& names, R
   if (out.wants_events()) out.event(EventWriter::line(e, names), false);
 }
 
+// A reset from the --plc scenario ends the program with exit 1: say so with an ID.
+void report_reset(const kernel::Event& e, RunOutputs& out, Progress& progress) {
+  const std::string text = fmt::format("the PLC scenario reset channel {} at {} s, before its program end",
+                                       e.channel, e.t_s);
+  progress.clear();
+  fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppChannelReset), text);
+  out.errors.push_back(FinalError{number(ErrorId::AppChannelReset), e.channel, 0, std::string(), text});
+}
+
 void record_events(const kernel::TickOutput& o, const RunNames& names, RunOutputs& out, Progress& progress) {
   progress.take(o);
   for (const kernel::Event& e : o.events) {
     out.summary.take(e);
     if (out.wants_events()) out.event(EventWriter::line(e, names), e.kind == kernel::EventKind::error);
+    if (e.kind == kernel::EventKind::end && e.end_reason == kernel::EndReason::reset) report_reset(e, out, progress);
     const bool error = e.kind == kernel::EventKind::error;
     if (!error && e.kind != kernel::EventKind::warning) continue;
     const std::size_t ch = e.channel - 1u;
@@ -80,41 +90,14 @@ std::optional<plc::Scenario> load_scenario(const std::string& path, const config
   return sc;
 }
 
-// SIGINT / SIGTERM stop the run at the next cycle (the only global state of
-// nck: a signal handler can reach nothing else).
-volatile std::sig_atomic_t g_stop_signal = 0;
-
-void on_stop_signal(int sig) { g_stop_signal = sig; }
-
-class StopSignals {
- public:
-  StopSignals() {
-    g_stop_signal = 0;
-    struct sigaction sa{};
-    sa.sa_handler = on_stop_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old_int_);
-    sigaction(SIGTERM, &sa, &old_term_);
-  }
-  ~StopSignals() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-  }
-  StopSignals(const StopSignals&) = delete;
-  StopSignals& operator=(const StopSignals&) = delete;
-
- private:
-  struct sigaction old_int_{}, old_term_{};
-};
-
 // Why the loop stopped before every channel ended, if it did.
 std::optional<kernel::EndReason> run_loop(sim::DryRun& run, const RunOptions& opt, const RunNames& names,
                                           RunOutputs& out) {
   auto o = std::make_unique<kernel::TickOutput>();
   Progress progress(opt.progress, opt.programs);
   const auto wall_start = std::chrono::steady_clock::now();
-  const auto wall_limit = std::chrono::duration<double>(opt.max_wall_s);
-  for (std::uint64_t cycle = 0;; ++cycle) {
+  const WallClockLimit wall(opt.max_wall_s);  // raises stop_flag(), also inside a long decode
+  for (;;) {
     const double t_s = run.time_s();
     run.prepare();
     run.cycle(*o);
@@ -123,12 +106,10 @@ std::optional<kernel::EndReason> run_loop(sim::DryRun& run, const RunOptions& op
     out.trace.write(run.kernel().cycles() - 1, *o);
     out.report.sample(run.kernel().cycles() - 1, *o, names);
     if (run.done()) return std::nullopt;
-    if (g_stop_signal != 0) return kernel::EndReason::interrupted;
+    if (stop_flag().load(std::memory_order_relaxed))
+      return stop_signal() != 0 ? kernel::EndReason::interrupted : kernel::EndReason::max_wall;
     if (run.held_for_good()) return kernel::EndReason::hold;
     if (t_s + run.kernel().cycle_time_s() >= opt.max_time_s) return kernel::EndReason::max_time;
-    // The clock is read every 1024 cycles only: a run's cycle takes well under a microsecond.
-    if (opt.max_wall_s > 0 && cycle % 1024 == 0 && std::chrono::steady_clock::now() - wall_start >= wall_limit)
-      return kernel::EndReason::max_wall;
     if (opt.realtime) std::this_thread::sleep_until(wall_start + std::chrono::duration<double>(t_s));
     progress.update(t_s);
   }
@@ -184,14 +165,15 @@ bool any_channel_aborted(const sim::DryRun& run) {
 
 // SPEC 2.2: 0 program end, 1 NC error or a limit, 130/143 SIGINT/SIGTERM.
 int exit_code_of(const sim::DryRun& run, std::optional<kernel::EndReason> stopped) {
-  if (stopped == kernel::EndReason::interrupted) return g_stop_signal == SIGTERM ? 143 : 130;
+  if (stopped == kernel::EndReason::interrupted) return signal_exit_code();
   return stopped || any_channel_aborted(run) ? 1 : 0;
 }
 
 // The final state's "end": why the run ended.
-std::string end_of_run(const sim::DryRun& run, std::optional<kernel::EndReason> stopped) {
+std::string end_of_run(const sim::DryRun& run, std::optional<kernel::EndReason> stopped, const RunSummary& s) {
   if (stopped) return end_name(*stopped);
-  return any_channel_aborted(run) ? "error" : "program_end";
+  if (!any_channel_aborted(run)) return "program_end";
+  return s.reset_seen() ? "reset" : "error";
 }
 
 // Completes every output file; a file that cannot be written is error 940002
@@ -201,15 +183,22 @@ int finish_outputs(const sim::DryRun& run, const RunOptions& opt, const config::
   int code = exit_code_of(run, stopped);
   const double end_s = run.time_s();
   std::vector<std::string> failures;
-  if (auto e = out.events.commit()) failures.push_back(*e);
-  if (auto e = out.trace.commit()) failures.push_back(*e);
-  if (auto e = out.report.write(opt.report, end_s, code)) failures.push_back(*e);
-  if (!opt.final_state.empty())
-    if (auto e = write_final(opt.final_state, m, run, end_s, end_of_run(run, stopped), out.errors))
+  // Only now are all the files known that the programs called.
+  const OutputsOverInputs over = outputs_over_inputs(opt, run);
+  if (over.events) out.events.discard();
+  else if (auto e = out.events.commit()) failures.push_back(*e);
+  if (over.trace) out.trace.discard();
+  else if (auto e = out.trace.commit()) failures.push_back(*e);
+  if (!over.report)
+    if (auto e = out.report.write(opt.report, end_s, code)) failures.push_back(*e);
+  if (!opt.final_state.empty() && !over.final_state)
+    if (auto e = write_final(opt.final_state, m, run, end_s, end_of_run(run, stopped, out.summary), out.errors))
       failures.push_back(*e);
   for (const std::string& f : failures) fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppOutputFile), f);
-  fmt::print(stderr, "{}\n", out.summary.text(end_of_run(run, stopped), end_s));
-  if (!failures.empty() && code != 130 && code != 143) code = 2;
+  for (const std::string& f : over.messages)
+    fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppOutputPathConflict), f);
+  fmt::print(stderr, "{}\n", out.summary.text(end_of_run(run, stopped, out.summary), end_s));
+  if ((!failures.empty() || over.any()) && code != 130 && code != 143) code = 2;
   return code;
 }
 
@@ -239,7 +228,7 @@ int run_simulation(const RunOptions& opt) {
     return 2;
   }
   std::vector<std::filesystem::path> programs(opt.programs.begin(), opt.programs.end());
-  auto created = sim::DryRun::create(m, programs, {opt.clamp_index, !opt.report.empty(), opt.prep_thread});
+  auto created = sim::DryRun::create(m, programs, {opt.clamp_index, !opt.report.empty(), opt.prep_thread, &stop_flag()});
   if (!created) {
     fmt::print(stderr, "{}\n", format(created.error()));
     return 2;
@@ -266,11 +255,7 @@ int run_simulation(const RunOptions& opt) {
   RunNames names;
   names.run = &run;
 
-  std::optional<kernel::EndReason> stopped;
-  {
-    StopSignals signals;
-    stopped = run_loop(run, opt, names, out);
-  }
+  const std::optional<kernel::EndReason> stopped = run_loop(run, opt, names, out);
   run.stop_preparation();  // what is read below belongs to preparation
   if (stopped) end_unfinished_channels(run, *stopped, opt, names, out);
   return finish_outputs(run, opt, m, stopped, out);

@@ -3,7 +3,10 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <system_error>
+#include <tuple>
 #include <utility>
+
+#include "input_files.hpp"
 
 namespace nck::app {
 namespace fs = std::filesystem;
@@ -45,6 +48,33 @@ std::optional<std::string> output_path_conflict(const RunOptions& opt) {
     seen.emplace_back(p, option);
   }
   return std::nullopt;
+}
+
+OutputsOverInputs outputs_over_inputs(const RunOptions& opt, const sim::DryRun& run) {
+  InputFiles read;
+  for (const std::string& p : opt.programs) read.add(p, "the program " + p);
+  if (!opt.plc.empty()) read.add(opt.plc, "the --plc file " + opt.plc);
+  read.add_folder(opt.machine, "the machine file ");
+  for (std::size_t ch = 0; ch < run.channel_count(); ++ch)
+    if (const nc::Decoder* d = run.prep(ch).decoder())
+      for (std::size_t id = 0; id < d->file_count(); ++id) {
+        const std::string& name = d->file_name(static_cast<std::uint16_t>(id));
+        read.add(name, "the file " + name + " that the program read");
+      }
+  OutputsOverInputs over;
+  const std::tuple<const std::string*, const char*, bool*> outputs[] = {
+      {&opt.events, "--events", &over.events},
+      {&opt.trace, "--trace", &over.trace},
+      {&opt.final_state, "--final", &over.final_state},
+      {&opt.report, "--report", &over.report}};
+  for (const auto& [path, option, refused] : outputs) {
+    if (path->empty() || *path == "-") continue;
+    if (auto what = read.find(*path)) {
+      *refused = true;
+      over.messages.push_back(fmt::format("{} {} would replace {}; it was not written", option, *path, *what));
+    }
+  }
+  return over;
 }
 
 }  // namespace nck::app

@@ -31,4 +31,15 @@ struct RunOutputs {
 // exit 2). Paths are compared after resolving links and "..".
 std::optional<std::string> output_path_conflict(const RunOptions& opt);
 
+// The outputs whose target is, at the end of the run, a file the run read:
+// a subroutine or cycle the programs called as well as the inputs above,
+// compared by device and inode (links, hard links, other spellings). They
+// are not written (940004); the others are.
+struct OutputsOverInputs {
+  bool events = false, trace = false, final_state = false, report = false;
+  std::vector<std::string> messages;
+  bool any() const { return !messages.empty(); }
+};
+OutputsOverInputs outputs_over_inputs(const RunOptions& opt, const sim::DryRun& run);
+
 }  // namespace nck::app

@@ -19,6 +19,9 @@ void RunSummary::take(const kernel::Event& e) {
     case K::block: ++blocks_; break;
     case K::error: ++errors_; break;
     case K::warning: ++warnings_; break;
+    case K::end:
+      if (e.end_reason == kernel::EndReason::reset) ++resets_, ++errors_;
+      break;
     case K::wait: open_.push_back({e.channel, e.spindle, e.fn, e.fn_number, e.wait_reason, e.t_s}); break;
     case K::wait_end: {
       auto it = std::find_if(open_.begin(), open_.end(), [&](const OpenWait& w) {

@@ -17,6 +17,8 @@ class RunSummary {
   void warning() { ++warnings_; }  // a decoder warning, reported outside the cycle
   // "nck: M30 after 0:00:29.749 simulated; 123 blocks, 0 errors, 1 warning; waited plc_ack 0.010 s ..."
   std::string text(const std::string& end_reason, double end_s) const;
+  // A PLC reset ended a channel's program (counted as an error: 940007).
+  bool reset_seen() const { return resets_ > 0; }
 
  private:
   struct OpenWait {
@@ -27,7 +29,7 @@ class RunSummary {
     std::uint8_t reason;
     double since_s;
   };
-  std::uint64_t blocks_ = 0, errors_ = 0, warnings_ = 0;
+  std::uint64_t blocks_ = 0, errors_ = 0, warnings_ = 0, resets_ = 0;
   std::vector<OpenWait> open_;
   std::array<double, 16> waited_s_{};  // by WaitReason
 };

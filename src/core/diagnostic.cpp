@@ -4,6 +4,8 @@
 #include <iterator>
 #include <fmt/format.h>
 
+#include "nck/core/utf8.hpp"
+
 namespace nck {
 namespace {
 
@@ -44,9 +46,10 @@ std::string format(const Diagnostic& d) {
   std::string where = d.loc.file.empty() ? std::string("<input>") : d.loc.file;
   if (d.loc.line > 0) where += fmt::format(":{}", d.loc.line);
   if (d.loc.line > 0 && d.loc.column > 0) where += fmt::format(":{}", d.loc.column);
-  return fmt::format("{}: {} {}: {}", where,
-                     d.severity == Severity::error ? "error" : "warning",
-                     number(d.id), d.message);
+  // The same conversion as every JSON, CSV and HTML output: a Latin-1 list
+  // key or file name reaches a UTF-8 terminal or log as text, not raw bytes.
+  return to_utf8(fmt::format("{}: {} {}: {}", where, d.severity == Severity::error ? "error" : "warning",
+                             number(d.id), d.message));
 }
 
 bool Diagnostics::has_errors() const { return error_count() > 0; }

@@ -13,11 +13,12 @@ using namespace detail;
 
 Decoder::Impl::Impl(DecoderConfig c)
     : cfg(std::move(c)),
-      vars(cfg.axis_names, cfg.max_zero_offset_index, cfg.max_variable_elements),
+      vars(cfg.axis_names, cfg.max_zero_offset_index, cfg.max_variable_elements, cfg.max_variable_bytes),
       x{vars, err, 0},
       main_target(cfg.main_spindle),
       bctx{cfg, x, main_target, {}, {}, 0, false},
-      cache(cfg.use_cached_files, cfg.max_cache_number, cfg.max_cache_size_kb) {
+      cache(cfg.use_cached_files, cfg.max_cache_number, cfg.max_cache_size_kb),
+      meter(cfg.max_lines_read, cfg.stop) {
   for (const auto& a : cfg.axis_names) bctx.axis_upper.push_back(to_upper(a));
   for (const auto& a : cfg.axis_aliases) bctx.alias_upper.push_back(to_upper(a));
 }
@@ -99,7 +100,35 @@ Decoder::Result Decoder::Impl::error_result() {
   return Result{Status::error, {}};
 }
 
+// A halted meter cut the reading short: whatever the cut made of the block
+// (an "unclosed" structure, a missing M30) is no diagnostic of the program.
 Decoder::Result Decoder::Impl::next() {
+  if (meter.halted() != WorkMeter::Halt::none) return halted();
+  const std::size_t known = diags.size();
+  Result r = next_block();
+  if (meter.halted() == WorkMeter::Halt::none) return r;
+  diags.resize(known);
+  err.clear();
+  fatal = false;  // set by the cut, if at all: halted() says what happened
+  return halted();
+}
+
+Decoder::Result Decoder::Impl::halted() {
+  if (meter.halted() == WorkMeter::Halt::stop) return Result{Status::stopped, {}};
+  if (!fatal) {
+    const SourceLoc at = loc(0);
+    diags.push_back(make_diagnostic(
+        ErrorId::NcReadLimit, at,
+        fmt::format("the decoder read {} blocks beyond the program's first pass (loop bodies, skipped "
+                    "branches, $GOTO searches, subroutines), the run's limit, when it came here; check the "
+                    "loops and jumps around this line{}",
+                    meter.max_lines(), call_chain())));
+    fatal = true;
+  }
+  return Result{Status::error, {}};
+}
+
+Decoder::Result Decoder::Impl::next_block() {
   if (ended) return Result{Status::end, {}};
   if (fatal) return Result{Status::error, {}};
   for (;;) {
@@ -347,6 +376,8 @@ const std::string& Decoder::file_name(std::uint16_t id) const {
   static const std::string kNone;
   return id < impl_->files.size() ? impl_->files[id] : kNone;
 }
+
+std::size_t Decoder::file_count() const { return impl_->files.size(); }
 
 const DecoderConfig& Decoder::config() const { return impl_->cfg; }
 

@@ -87,6 +87,7 @@ struct Decoder::Impl {
   ModalState modal;
   std::vector<detail::Frame> frames;
   detail::FileCache cache;
+  detail::WorkMeter meter;  // every block read: the reading budget and the stop request
   detail::Words words;
 
   bool fatal = false;        // decoding cannot go on
@@ -109,6 +110,8 @@ struct Decoder::Impl {
   std::string goto_text;           // the block without its $GOTO
 
   Result next();
+  Result next_block();  // next() without the meter's verdict
+  Result halted();      // the result once the meter has halted
 
   // decoder.cpp
   detail::Outcome process_block(Block& out);
@@ -131,7 +134,8 @@ struct Decoder::Impl {
   // A block with commands beside its $GOTO (at `at`): the commands, then the jump.
   detail::Outcome words_with_goto(detail::Cursor& c, std::optional<std::int64_t> n, Block& out, std::size_t at);
   // subprograms.cpp
-  bool open_frame(const std::filesystem::path& p, bool cached, detail::Frame& f);
+  // `main`: the main program, whose first pass is free of the reading budget.
+  bool open_frame(const std::filesystem::path& p, bool cached, detail::Frame& f, bool main = false);
   // A frame reading a section of an open file again (a local subroutine or
   // cycle: path, cached text, index of the caller's file) from `body`; false
   // when the file cannot be read again.

@@ -37,6 +37,10 @@ bool status_error(ExprCtx& x, VarStatus s, std::size_t pos, const std::string& n
     case VarStatus::undeclared:
       return fail(x, ErrorId::NcVarDeclaration, pos,
                   fmt::format("{} is not declared; declare it in #VAR .. #ENDVAR", name));
+    case VarStatus::memory_cap:
+      return fail(x, ErrorId::NcVariableMemory, pos,
+                  fmt::format("the text assigned to {} would take the program's variables past their memory cap",
+                              name));
   }
   return false;
 }

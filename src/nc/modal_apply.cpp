@@ -123,6 +123,11 @@ bool apply_assignments(Words& w, BlockCtx& b, Block& out) {
         if (s == VarStatus::not_string)
           return b.x.err.fail(ErrorId::NcTypeMismatch, a.target.pos,
                               fmt::format("{} is numeric; a string cannot be assigned", a.target.key));
+        if (s == VarStatus::memory_cap)
+          return b.x.err.fail(ErrorId::NcVariableMemory, a.target.pos,
+                              fmt::format("the text assigned to {} would take the program's variables past "
+                                          "their memory cap ({} MiB)",
+                                          a.target.key, b.cfg.max_variable_bytes >> 20));
         return write_lvalue(a.target, b.x, 0);  // reports the error
       }
       continue;

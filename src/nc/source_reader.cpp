@@ -113,6 +113,14 @@ bool SourceReader::next_line(std::size_t room) {
 }
 
 bool SourceReader::read_block(std::size_t max_chars) {
+  if (meter_ == nullptr) return read_next(max_chars);
+  if (!meter_->count(first_pass_free_ && offset_ >= first_pass_end_)) return false;
+  const bool read = read_next(max_chars);
+  if (offset_ > first_pass_end_) first_pass_end_ = offset_;
+  return read;
+}
+
+bool SourceReader::read_next(std::size_t max_chars) {
   text_.clear();
   segs_.clear();
   too_long_ = false;

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "work_meter.hpp"
+
 namespace nck::nc::detail {
 
 struct SourcePos {
@@ -26,8 +28,15 @@ class SourceReader {
 
   bool open_file(const std::filesystem::path& p);
   void open_memory(std::shared_ptr<const std::string> text);
+  // Counts every block read against `m` (not owned; nullptr: none);
+  // `first_pass_free`: blocks read for the first time are not counted (the
+  // main program). Once the meter halts, read_block() reads nothing more.
+  void set_meter(WorkMeter* m, bool first_pass_free) {
+    meter_ = m;
+    first_pass_free_ = first_pass_free;
+  }
 
-  // Reads the next block; false at end of file. The block text never holds
+  // Reads the next block; false at end of file (or when the meter halts). The block text never holds
   // more than max_chars characters; block_too_long() tells if more were cut.
   bool read_block(std::size_t max_chars);
   const std::string& text() const { return text_; }
@@ -41,6 +50,7 @@ class SourceReader {
   void locate(std::size_t text_pos, std::uint32_t& line, std::uint32_t& column) const;
 
  private:
+  bool read_next(std::size_t max_chars);  // read_block() without the meter
   bool next_line(std::size_t room);  // appends one physical line to text_
   bool fill();
 
@@ -52,6 +62,9 @@ class SourceReader {
   std::uint64_t offset_ = 0;      // file offset of the next unread byte
   std::uint32_t line_ = 1;        // line number of the next unread line
   bool eof_ = false;
+  WorkMeter* meter_ = nullptr;
+  bool first_pass_free_ = false;
+  std::uint64_t first_pass_end_ = 0;  // offset up to which the file was read before
 
   std::string text_;
   bool too_long_ = false;

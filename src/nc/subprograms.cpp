@@ -12,10 +12,11 @@ using namespace detail;
 
 // Opens `p` for a frame: from the cache when enabled, else streamed from
 // disk with a separate pass for the section index.
-bool Decoder::Impl::open_frame(const std::filesystem::path& p, bool cached, Frame& f) {
+bool Decoder::Impl::open_frame(const std::filesystem::path& p, bool cached, Frame& f, bool main) {
   Decoder::Impl& d = *this;
   f.path = p;
   f.reader = std::make_unique<SourceReader>();
+  f.reader->set_meter(&meter, main);
   if (cached && d.cache.enabled()) {
     if (auto e = d.cache.get(p, d.cfg.max_block_chars)) {
       f.mem = e->text;
@@ -25,6 +26,7 @@ bool Decoder::Impl::open_frame(const std::filesystem::path& p, bool cached, Fram
     }
   }
   SourceReader scan;
+  if (!main) scan.set_meter(&meter, false);  // a subroutine's index, read again on every call
   if (!scan.open_file(p) || !f.reader->open_file(p)) return false;
   f.index = std::make_shared<const ProgramIndex>(scan_sections(scan, d.cfg.max_block_chars));
   return true;
@@ -36,6 +38,7 @@ bool Decoder::Impl::open_local_frame(const std::filesystem::path& path, std::sha
   f.index = std::move(index);
   f.mem = std::move(mem);
   f.reader = std::make_unique<SourceReader>();
+  f.reader->set_meter(&meter, false);
   if (f.mem) f.reader->open_memory(f.mem);
   else if (!f.reader->open_file(f.path)) return false;
   f.reader->seek(body);
@@ -57,7 +60,7 @@ void Decoder::Impl::keep_text_for_local_calls(Frame& f) {
 bool Decoder::Impl::open_main(const std::filesystem::path& p) {
   Frame f;
   f.file_id = file_id(p.string());
-  if (!open_frame(p, false, f)) {
+  if (!open_frame(p, false, f, true)) {
     diags.push_back(make_diagnostic(ErrorId::NcFileUnreadable, SourceLoc{p.string(), 0, 0},
                                     fmt::format("cannot read the NC program '{}'", p.string())));
     fatal = true;

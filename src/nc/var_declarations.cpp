@@ -45,6 +45,7 @@ Outcome Decoder::Impl::declare(Cursor& c) {
   }
   c.skip_spaces();
   bool is_string = false;
+  std::size_t string_chars = 0;
   if (c.match(':')) {
     c.skip_spaces();
     std::size_t tp = c.pos;
@@ -55,19 +56,25 @@ Outcome Decoder::Impl::declare(Cursor& c) {
     is_string = t == "STRING";
     c.skip_spaces();
     if (c.match('[')) {
+      const std::size_t len_at = c.pos;
       double len = 0;
       if (!eval_expr(c, x, len)) return Outcome::error;
       c.skip_spaces();
       if (!c.match(']')) return bad(c.pos, "']' expected after the string length");
+      if (!(len >= 1 && len <= static_cast<double>(kMaxStringChars)) || len != std::round(len))
+        return bad(len_at, fmt::format("a string length is a whole number from 1 to {} (a block's length), not {}",
+                                       kMaxStringChars, len));
+      if (is_string) string_chars = static_cast<std::size_t>(len);
     }
   }
-  switch (vars.declare(base, dims, is_string)) {
+  switch (vars.declare(base, dims, is_string, string_chars)) {
     case Variables::Declared::ok: break;
     case Variables::Declared::array_too_large: return bad(at, "the array is too large (at most 100000 elements)");
     case Variables::Declared::memory_cap:
       return report(ErrorId::NcVariableMemory, at,
-                    fmt::format("declaring {} would take the program's variables past {} elements", base,
-                                cfg.max_variable_elements));
+                    fmt::format("declaring {} would take the program's variables past {} elements or {} MiB "
+                                "(8 bytes per number, the declared length per string)",
+                                base, cfg.max_variable_elements, cfg.max_variable_bytes >> 20));
   }
   c.skip_spaces();
   if (!c.match('=')) return c.rest_empty() ? Outcome::nothing : bad(c.pos, "'=' or end of declaration expected");

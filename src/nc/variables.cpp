@@ -35,10 +35,13 @@ bool split_indices(std::string_view key, std::string_view& base, std::vector<int
 }
 }  // namespace
 
-Variables::Variables(std::vector<std::string> axis_names, int max_zero_index, std::size_t max_elements)
-    : axes_(std::move(axis_names)), max_zero_index_(max_zero_index), max_elements_(max_elements) {
+Variables::Variables(std::vector<std::string> axis_names, int max_zero_index, std::size_t max_elements,
+                     std::size_t max_bytes)
+    : axes_(std::move(axis_names)), max_zero_index_(max_zero_index), max_elements_(max_elements),
+      max_bytes_(max_bytes) {
   for (auto& a : axes_) a = to_upper(a);
   locals_.emplace_back();
+  local_bytes_.push_back(0);
   cycles_.emplace_back();
 }
 
@@ -171,9 +174,59 @@ VarStatus Variables::write_string(const std::string& key, std::string v) {
   if (!m) return VarStatus::undeclared;
   auto it = m->find(key);
   if (it == m->end()) return check_index(*m, key);
-  if (!it->second.is_string) return VarStatus::not_string;
-  it->second.str = std::move(v);
+  VarValue& var = it->second;
+  if (!var.is_string) return VarStatus::not_string;
+  if (v.size() > var.charged) {  // longer than declared: the text counts
+    if (declared_bytes() + (v.size() - var.charged) > max_bytes_) return VarStatus::memory_cap;
+    bytes_of(m) += v.size() - var.charged;
+    var.charged = static_cast<std::uint32_t>(v.size());
+  }
+  var.str = std::move(v);
   return VarStatus::ok;
+}
+
+// Removes the scalar or every array element `base` names in m, and their
+// bytes (dims from the last declaration of `base`).
+void Variables::forget(const std::string& base, Map& m) {
+  auto drop = [&](const std::string& key) {
+    auto it = m.find(key);
+    if (it == m.end()) return;
+    bytes_of(&m) -= it->second.charged;
+    m.erase(it);
+  };
+  drop(base);
+  auto d = dims_.find(base);
+  if (d == dims_.end() || d->second.empty()) return;
+  const std::vector<int>& dims = d->second;
+  std::string first = base;
+  for (std::size_t i = 0; i < dims.size(); ++i) first += "[0]";
+  if (!m.contains(first)) return;  // an array of this name in another scope
+  std::vector<int> idx(dims.size(), 0);
+  for (bool more = true; more;) {
+    std::string key = base;
+    for (int i : idx) key += fmt::format("[{}]", i);
+    drop(key);
+    more = false;
+    for (std::size_t k = dims.size(); k-- > 0;) {
+      if (++idx[k] < dims[k]) {
+        more = true;
+        break;
+      }
+      idx[k] = 0;
+    }
+  }
+}
+
+std::size_t& Variables::bytes_of(const Map* m) {
+  for (std::size_t i = 0; i < locals_.size(); ++i)
+    if (&locals_[i] == m) return local_bytes_[i];
+  return global_bytes_;
+}
+
+std::size_t Variables::declared_bytes() const {
+  std::size_t n = global_bytes_;
+  for (std::size_t b : local_bytes_) n += b;
+  return n;
 }
 
 std::size_t Variables::declared_elements() const {
@@ -182,7 +235,8 @@ std::size_t Variables::declared_elements() const {
   return n;
 }
 
-Variables::Declared Variables::declare(const std::string& base, const std::vector<int>& dims, bool is_string) {
+Variables::Declared Variables::declare(const std::string& base, const std::vector<int>& dims, bool is_string,
+                                       std::size_t string_chars) {
   Map* m = scope_for(base);
   if (!m) return Declared::array_too_large;
   std::size_t total = 1;
@@ -191,9 +245,14 @@ Variables::Declared Variables::declare(const std::string& base, const std::vecto
     total *= static_cast<std::size_t>(d);
     if (total > kMaxArrayElements) return Declared::array_too_large;
   }
+  forget(base, *m);  // declared again (a #VAR in a loop): the old one goes
   if (declared_elements() + total > max_elements_) return Declared::memory_cap;
+  const std::size_t element_bytes = is_string ? string_chars : sizeof(double);
+  if (declared_bytes() + total * element_bytes > max_bytes_) return Declared::memory_cap;
+  bytes_of(m) += total * element_bytes;
   VarValue init;
   init.is_string = is_string;
+  init.charged = static_cast<std::uint32_t>(element_bytes);
   if (dims.empty()) {
     (*m)[base] = init;
     return Declared::ok;

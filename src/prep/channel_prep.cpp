@@ -35,7 +35,9 @@ ChannelPrep::ChannelPrep(const config::Machine& m, std::size_t ch, const std::fi
     return;
   }
   window_.set_blend_axes(planner_->blend_axes());
-  decoder_.emplace(program, decoder_config(m, ch));
+  nc::DecoderConfig cfg = decoder_config(m, ch);
+  cfg.stop = options.stop;
+  decoder_.emplace(program, std::move(cfg));
   // The planner lives on the heap, so the pointer survives moves of this object.
   decoder_->set_kernel_state_reader(planner_.get());
   for (const auto& [name, value] : initial_variables(m, ch, options.clamp_index))
@@ -78,8 +80,10 @@ void ChannelPrep::feed_blocks(kernel::CommandQueue& commands, kernel::FeedbackQu
   while (!done_ && !awaiting_feedback_ && backlog_.empty() &&
          commands.free_slots() >= kernel::kMaxCommandsPerBlock) {
     nc::Decoder::Result r = decoder_->next();
-    ++decoded_;
     collect_warnings();
+    // The caller stops the run; no progress, so a preparation thread rests.
+    if (r.status == nc::Decoder::Status::stopped) return;
+    ++decoded_;
     if (r.status == nc::Decoder::Status::block) {
       if (r.block.depth == 0) last_main_line_ = r.block.line;
       (void)prepare(r.block, commands);

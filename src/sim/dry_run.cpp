@@ -17,7 +17,7 @@ std::expected<DryRun, Diagnostic> DryRun::create(const config::Machine& m,
   run.threaded_ = options.prep_thread;
   for (std::size_t ch = 0; ch < run.machine_->channels.size(); ++ch)
     run.preps_.emplace_back(*run.machine_, ch, ch < programs.size() ? programs[ch] : std::filesystem::path(),
-                            *run.store_, prep::PrepOptions{options.clamp_index, options.record_frames});
+                            *run.store_, prep::PrepOptions{options.clamp_index, options.record_frames, options.stop});
   return run;
 }
 

@@ -17,7 +17,9 @@ namespace nck::config {
 
 inline constexpr std::size_t kMaxListLineLength = 4096;
 inline constexpr std::size_t kMaxListFileBytes = 64u * 1024u * 1024u;
-inline constexpr std::size_t kMaxDiagnosticsPerList = 50;
+inline constexpr std::size_t kMaxDiagnosticsPerList = 50;  // of the line syntax
+// Of the keys and values (ParamList::parse): further unknown keys are counted only.
+inline constexpr std::size_t kMaxKeyDiagnosticsPerList = 200;
 
 struct ListLine {
   std::string key;     // lower case, e.g. "spindel[0].m3_synch"

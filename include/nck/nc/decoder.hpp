@@ -3,6 +3,7 @@
 // channel consumes them, reading the program incrementally (bounded memory
 // for programs of millions of blocks). Setup-time code: allocates, never
 // throws on bad input, never crashes, never hangs.
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -36,8 +37,19 @@ struct DecoderConfig {
   // One budget for all loop iterations of a run (nested loops share it):
   // guards against endless $WHILE / $FOR / $DO.
   std::uint64_t max_loop_iterations = 10'000'000;
+  // One budget for the reading of a run: every block read except the first
+  // pass through the main program (loop bodies read again, skipped
+  // branches, $GOTO searches, subroutine and cycle bodies). A loop budget
+  // alone does not bound the work: one iteration may skip 5,000 lines.
+  std::uint64_t max_lines_read = 100'000'000;
+  // Set by the caller (another thread or a signal handler) to stop decoding:
+  // polled at every block read; next() then returns Status::stopped. Not owned.
+  const std::atomic<bool>* stop = nullptr;
   // Declared program variables (#VAR, every scope together): bounded memory.
   std::size_t max_variable_elements = 1'000'000;
+  // ... and their declared bytes: 8 per number, a STRING[n] element n (at
+  // most 4,000) or the longer text assigned to it.
+  std::size_t max_variable_bytes = 64u << 20;
 
   // Added by the decoder work:
   std::vector<int> spindle_log_axis_numbers;  // same order as spindle_names (#MAIN SPINDLE [nr])
@@ -65,7 +77,9 @@ class KernelStateReader {
 
 class Decoder {
  public:
-  enum class Status { block, end, error };
+  // stopped: DecoderConfig::stop was set; decoding ends here, without a
+  // diagnostic (the caller asked for it).
+  enum class Status { block, end, error, stopped };
   struct Result {
     Status status = Status::end;
     Block block;                 // valid when status == block
@@ -79,12 +93,15 @@ class Decoder {
   Decoder& operator=(Decoder&&) noexcept;
 
   // The next executable block, the end of the program (M30/M2 block is
-  // returned as a block with program_end set, then Status::end), or an error.
+  // returned as a block with program_end set, then Status::end), an error,
+  // or Status::stopped (DecoderConfig::stop).
   Result next();
 
   // All diagnostics so far (warnings and the error that stopped decoding).
   const std::vector<Diagnostic>& diagnostics() const;
   const std::string& file_name(std::uint16_t file_id) const;
+  // Every file the decoder opened so far (ids 0 .. file_count() - 1; 0 is the main program).
+  std::size_t file_count() const;
   // The id of a file named in a diagnostic (SourceLoc::file), if decoded.
   std::optional<std::uint16_t> file_id(std::string_view name) const;
   const DecoderConfig& config() const;

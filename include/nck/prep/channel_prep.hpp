@@ -7,6 +7,7 @@
 // (the "prep thread"); the kernel's tick() runs in another (or the same).
 // They share only the two SPSC queues of nck/kernel/queues.hpp: this class is
 // the only producer of commands and the only consumer of feedback.
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -33,6 +34,9 @@ struct PrepOptions {
   // Each command carries its block's program -> machine map (PlanStore::frames)
   // into the block event: the report's program-coordinate backplot.
   bool record_frames = false;
+  // Set by the caller to stop decoding within one block read (SIGINT, SIGTERM,
+  // --max-wall): feed() then returns and decodes nothing more. Not owned.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 class ChannelPrep {

@@ -10,6 +10,7 @@
 // (PrepThread) and prepare() only waits until it has caught up, so the
 // outputs stay those of the single thread; the two share only the kernel's
 // SPSC queues, the plan store's append-only logs and a few atomics.
+#include <atomic>
 #include <cstdint>
 #include <expected>
 #include <filesystem>
@@ -35,6 +36,7 @@ struct DryRunOptions {
   std::uint32_t clamp_index = 0;  // clamp-offset group at program start (--clamp-index)
   bool record_frames = false;     // blocks carry their program -> machine map (--report)
   bool prep_thread = false;       // preparation in a thread of its own (--prep-thread)
+  const std::atomic<bool>* stop = nullptr;  // stops decoding at once when set (prep::PrepOptions::stop)
 };
 
 // What a channel knows about its programmed state, for --final.

@@ -1,0 +1,7 @@
+L sub.nc
+L CYCLE [NAME=mycyc.ecy @P1=2]
+LL LOCAL
+M30
+%L LOCAL
+G0 X1
+M17
