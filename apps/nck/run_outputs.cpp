@@ -1,6 +1,8 @@
 #include "run_outputs.hpp"
 
 #include <filesystem>
+#include <fstream>
+#include <string_view>
 #include <fmt/format.h>
 #include <system_error>
 #include <tuple>
@@ -18,6 +20,24 @@ fs::path resolved(const std::string& p) {
   const fs::path abs = fs::absolute(p, ec);
   fs::path r = fs::weakly_canonical(abs, ec);
   return ec ? abs.lexically_normal() : r;
+}
+
+// --realtime writes --events and --trace in place, so that they can be
+// followed while the run goes on: the target is emptied when the run starts,
+// before the program has called any subroutine. Only an nck output of an
+// earlier run (its first bytes are `own_start`) or an empty file may be
+// emptied then; anything else may be a file the program is about to read.
+std::optional<std::string> live_output_over_other_file(const std::string& path, std::string_view own_start,
+                                                       const char* option) {
+  std::error_code ec;
+  if (path == "-" || !fs::is_regular_file(path, ec) || fs::file_size(path, ec) == 0 || ec) return std::nullopt;
+  std::string head(own_start.size(), '\0');
+  std::ifstream in(path, std::ios::binary);
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  if (in && head == own_start) return std::nullopt;
+  return fmt::format("{} {} would empty an existing file that is not an nck output before the run starts "
+                     "(--realtime writes in place); remove it or choose another name",
+                     option, path);
 }
 
 }  // namespace
@@ -46,6 +66,10 @@ std::optional<std::string> output_path_conflict(const RunOptions& opt) {
     for (const auto& [other, other_option] : seen)
       if (p == other) return fmt::format("{} and {} name the same file {}", other_option, option, *path);
     seen.emplace_back(p, option);
+  }
+  if (opt.realtime) {
+    if (auto e = live_output_over_other_file(opt.events, "{\"t\":", "--events")) return e;
+    if (auto e = live_output_over_other_file(opt.trace, "t,", "--trace")) return e;
   }
   return std::nullopt;
 }

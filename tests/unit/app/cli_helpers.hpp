@@ -68,6 +68,22 @@ inline std::filesystem::path temp_dir(const std::string& name) {
   return d;
 }
 
+// The mill example machine folder (examples/mill).
+inline std::string mill() { return root() + "/examples/mill"; }
+
+// Writes `text` to p as is (binary) and returns p.
+inline std::filesystem::path write(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+  return p;
+}
+
+// How often `needle` occurs in `haystack` (overlapping occurrences count).
+inline std::size_t count(const std::string& haystack, const std::string& needle) {
+  std::size_t n = 0;
+  for (auto at = haystack.find(needle); at != std::string::npos; at = haystack.find(needle, at + 1)) ++n;
+  return n;
+}
+
 inline std::string read_file(const std::filesystem::path& p) {
   std::ifstream f(p);
   std::stringstream s;

@@ -12,8 +12,6 @@
 namespace nck::app::testing {
 namespace {
 
-std::string mill() { return root() + "/examples/mill"; }
-
 TEST(CliPoints, DashWritesEventsTraceOrFinalToStdout) {
   const std::string run = "run " + mill() + " " + mill() + "/contour.nc --no-progress ";
   const CliResult events = run_nck_raw(run + "--events - 2>/dev/null");

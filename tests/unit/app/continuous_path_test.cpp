@@ -238,7 +238,7 @@ void check_random_programs(const std::string& prelude, double end_tol_mm, double
       ASSERT_LT(distance_to_trace(tr, q), end_tol_mm) << q[0] << " " << q[1] << " " << q[2] << "\n" << program.text;
     // Chords of the trace are never longer than the path; blends may cut.
     // Rounding of the trace (1e-6 mm) adds up to ~2e-6 mm per cycle.
-    const double blocks = static_cast<double>(program.points.size()), rounding = 2e-6 * tr.p.size();
+    const double blocks = static_cast<double>(program.points.size()), rounding = 2e-6 * static_cast<double>(tr.p.size());
     EXPECT_GE(travelled_mm, program.length_mm - max_short_per_block_mm * blocks - rounding) << program.text;
     EXPECT_LE(travelled_mm, program.length_mm + rounding) << program.text;
   }

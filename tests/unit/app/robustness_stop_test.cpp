@@ -17,16 +17,9 @@ constexpr double kSlack_s = 3;  // the issue's bound under ASan
 constexpr double kSlack_s = 1;  // ... and in a plain build
 #endif
 
-std::string mill() { return root() + "/examples/mill"; }
-
 // nck under a hard 60 s limit: the runs below that ended only by SIGKILL
 // before issue 26 must not hang the suite (timeout relays SIGINT/SIGTERM).
 std::string bounded_nck() { return std::string("timeout -s KILL 60 ") + NCK_BINARY; }
-
-std::filesystem::path write(const std::filesystem::path& p, const std::string& text) {
-  std::ofstream(p, std::ios::binary) << text;
-  return p;
-}
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -162,6 +155,28 @@ TEST(RobustnessStop, AnOutputOverACalledFileIsRefused) {
   EXPECT_EQ(read_file(dir / "sub.nc"), sub);
   for (const auto& f : std::filesystem::directory_iterator(dir))
     EXPECT_EQ(f.path().string().find(".tmp"), std::string::npos) << f.path();
+}
+
+// --realtime writes in place, so it would empty sub.nc before the program
+// calls it: a live output may only replace an earlier nck output (or an
+// empty file), and says so at once.
+TEST(RobustnessStop, ALiveOutputNeverEmptiesAFileThatIsNotAnOutput) {
+  const auto dir = temp_dir("live_over_called");
+  const std::string sub = "G0 X1\nM17\n";
+  write(dir / "sub.nc", sub);
+  const auto p = write(dir / "p.nc", "L sub.nc\nM30\n");
+  const std::string run = "run " + mill() + " " + p.string() + " --realtime --no-progress";
+  for (const char* option : {" --events ", " --trace "}) {
+    CliResult r = run_nck(run + option + (dir / "sub.nc").string());
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("940004"), std::string::npos) << r.output;
+    EXPECT_EQ(read_file(dir / "sub.nc"), sub);
+  }
+  // An earlier run's outputs are replaced live as before.
+  const std::string outputs = " --events " + (dir / "e.jsonl").string() + " --trace " + (dir / "t.csv").string();
+  ASSERT_EQ(run_nck(run + outputs).exit_code, 0);
+  CliResult again = run_nck(run + outputs);
+  EXPECT_EQ(again.exit_code, 0) << again.output;
 }
 
 // Finding 3: a closed pipe is a failed write (940002, exit 2), not SIGPIPE.

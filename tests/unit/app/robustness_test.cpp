@@ -10,19 +10,6 @@
 namespace nck::app::testing {
 namespace {
 
-std::string mill() { return root() + "/examples/mill"; }
-
-std::filesystem::path write(const std::filesystem::path& p, const std::string& text) {
-  std::ofstream(p, std::ios::binary) << text;
-  return p;
-}
-
-std::size_t count(const std::string& haystack, const std::string& needle) {
-  std::size_t n = 0;
-  for (auto at = haystack.find(needle); at != std::string::npos; at = haystack.find(needle, at + 1)) ++n;
-  return n;
-}
-
 // Finding 1: bytes that are not UTF-8 (a Latin-1 'ä' in a comment, N\xff).
 TEST(Robustness, Latin1BytesReachJsonAsUtf8NotAnAbort) {
   const auto dir = temp_dir("latin1");

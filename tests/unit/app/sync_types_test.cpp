@@ -182,6 +182,39 @@ TEST(SyncTypes, ChannelMFunctionsFollowTheirMSynch) {
   EXPECT_GE(block_t[40], ack_t["M10"]);                    // ... synchronised after it
 }
 
+// The mill with M20 as an MVS_SLM function (waited for at the next feed
+// motion), and a program with `late` M20 blocks before its first G1.
+PatchedMachine late_waits(const std::string& name, int late) {
+  const auto m = patched_example("mill", name, "channel1.lis", "m_synch[20]  MVS_SLM");
+  std::string program = "N1 G0 X0\n";
+  for (int i = 0; i < late; ++i) program += "M20\n";
+  program += "G1 X10 F1000\nM30\n";
+  std::ofstream(m.dir / "p.nc") << program;
+  return m;
+}
+
+// A channel holds 16 late waits; the 17th is error 930014 instead of a
+// silently lost wait.
+TEST(SyncTypes, TooManyLateWaitsIsAnErrorNotALostWait) {
+  const auto m = late_waits("late_waits", 17);
+  CliResult r = run_nck("run " + m.dir.string() + " " + (m.dir / "p.nc").string() + " --events " +
+                        (m.dir / "e.jsonl").string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  std::vector<nlohmann::json> errors;
+  for (const auto& e : read_jsonl(m.dir / "e.jsonl"))
+    if (e["ev"] == "error") errors.push_back(e);
+  ASSERT_EQ(errors.size(), 1u) << r.output;
+  EXPECT_EQ(errors[0]["id"], 930014);
+  EXPECT_EQ(errors[0]["line"], 18);  // the 17th M20
+}
+
+// 16 late waits fit and are all taken at the G1 (the bound is exact).
+TEST(SyncTypes, SixteenLateWaitsFit) {
+  const auto m = late_waits("late_waits_fit", 16);
+  CliResult r = run_nck("run " + m.dir.string() + " " + (m.dir / "p.nc").string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+}
+
 }  // namespace
 
 // FCT-S1 2.5.2, second example, as written (s_synch 0x2, m3_synch 0x1, no S

@@ -1,5 +1,6 @@
-// Spindle defects of the acceptance review (issue 9), each through `nck run`
-// on the mill example: numbers from the seed FCT-S1 or computed by hand.
+// Spindle behaviour through `nck run` on the mill example (positioning,
+// tool speed limits, PLC spindles, acknowledgements, gear reverse, HLI
+// objects): numbers from the seed FCT-S1 or computed by hand.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,7 +14,7 @@ namespace {
 using namespace testing;
 using nlohmann::json;
 
-struct ReviewRun {
+struct SpindleRunResult {
   int exit_code = -1;
   std::string output;
   std::vector<json> events;
@@ -37,8 +38,8 @@ std::map<std::string, std::vector<double>> read_trace(const std::filesystem::pat
 }
 
 // Runs `program_text` on `machine` with events, an every-cycle trace and --final.
-ReviewRun run(const std::filesystem::path& machine, const std::string& program_text, const std::string& args = "") {
-  ReviewRun r;
+SpindleRunResult run(const std::filesystem::path& machine, const std::string& program_text, const std::string& args = "") {
+  SpindleRunResult r;
   r.dir = temp_dir("review");
   std::ofstream(r.dir / "p.nc") << program_text;
   const CliResult c = run_nck("run " + machine.string() + " " + (r.dir / "p.nc").string() + " --events " +
@@ -53,7 +54,7 @@ ReviewRun run(const std::filesystem::path& machine, const std::string& program_t
   return r;
 }
 
-std::filesystem::path mill() { return root() + "/examples/mill"; }
+
 
 std::filesystem::path mill_with(const std::string& name, const std::string& file, const std::string& lines) {
   return patched_example("mill", name, file, lines).dir;
@@ -74,8 +75,8 @@ std::vector<std::string> modes(const std::vector<json>& events, const std::strin
 
 // Item 3, seed 2.3.2 "distance optimisation from standstill": from 0 deg the
 // shorter way to 350 deg is -10 deg, also when the first M19 homes first.
-TEST(SpindleReview, M19FromStandstillTakesTheShorterWayAlsoWhenItHomesFirst) {
-  const ReviewRun r = run(mill(), "%a\nN10 M19 S.POS=350 S100\nN20 M30\n");
+TEST(SpindleRun, M19FromStandstillTakesTheShorterWayAlsoWhenItHomesFirst) {
+  const SpindleRunResult r = run(mill(), "%a\nN10 M19 S.POS=350 S100\nN20 M30\n");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto& rpm = r.trace.at("S1.rpm");
   EXPECT_LT(*std::min_element(rpm.begin(), rpm.end()), 0.0);
@@ -89,11 +90,11 @@ TEST(SpindleReview, M19FromStandstillTakesTheShorterWayAlsoWhenItHomesFirst) {
 
 // Item 8: kenngr.achs_mode 0x100 (ACHSMODE_KEINE_AUTO_RPF): no automatic
 // homing before M19 (seed 2.7: digital drives home with G74 only).
-TEST(SpindleReview, AchsModeKeineAutoRpfPositionsWithoutHoming) {
-  const ReviewRun plain = run(mill(), "%b\nN10 M19 S.POS=90 S100\nN20 M30\n");
+TEST(SpindleRun, AchsModeKeineAutoRpfPositionsWithoutHoming) {
+  const SpindleRunResult plain = run(mill(), "%b\nN10 M19 S.POS=90 S100\nN20 M30\n");
   ASSERT_EQ(plain.exit_code, 0) << plain.output;
   EXPECT_TRUE(plain.final_state["spindles"]["S1"]["homed"].get<bool>());  // the default homes first
-  const ReviewRun r = run(mill_with("noautorpf", "s1.lis", "kenngr.achs_mode 0x00000104"),
+  const SpindleRunResult r = run(mill_with("noautorpf", "s1.lis", "kenngr.achs_mode 0x00000104"),
                     "%b\nN10 M19 S.POS=90 S100\nN20 M30\n");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto m = modes(r.events, "S1");
@@ -105,8 +106,8 @@ TEST(SpindleReview, AchsModeKeineAutoRpfPositionsWithoutHoming) {
 
 // Item 10, seed 2.8.5: the tool's minimum speed limits endless turning only.
 // Tool 5 (tools.lis) gives S1 vb_min 10 rpm; M19 at 5 rpm stays at 5 rpm.
-TEST(SpindleReview, ToolMinimumSpeedLimitsOnlyEndlessTurning) {
-  const ReviewRun r = run(mill(), "%c\nN10 D5\nN20 M19 S.POS=90 S5\nN30 S5 M3\nN40 G4 X0.2\nN50 M30\n");
+TEST(SpindleRun, ToolMinimumSpeedLimitsOnlyEndlessTurning) {
+  const SpindleRunResult r = run(mill(), "%c\nN10 D5\nN20 M19 S.POS=90 S5\nN30 S5 M3\nN40 G4 X0.2\nN50 M30\n");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::vector<double> rotate_rpm;
   for (const json& e : of_kind(r.events, "spindle", "S1"))
@@ -123,12 +124,12 @@ TEST(SpindleReview, ToolMinimumSpeedLimitsOnlyEndlessTurning) {
 
 // Item 6: a PLC spindle over the channel HLI has no axis list, so no NC
 // speed limit: 700 rpm stays 700 rpm (not the default vb_max 33.3 rpm).
-TEST(SpindleReview, ChannelPlcSpindleIsNotClampedToTheDefaultVbMax) {
+TEST(SpindleRun, ChannelPlcSpindleIsNotClampedToTheDefaultVbMax) {
   const auto m = mill_with("plcnolimit", "channel1.lis",
                            "spdl_anzahl 3\nspindel[2].bezeichnung S3\nspindel[2].log_achs_nr 9\n"
                            "spindel[2].plc_control 1\n");
   // Default acceleration 1000 deg/s^2: 700 rpm (4200 deg/s) after 4.2 s.
-  const ReviewRun r = run(m, "%d\nN10 S3[M3 REV700]\nN20 G4 X5\nN30 M30\n");
+  const SpindleRunResult r = run(m, "%d\nN10 S3[M3 REV700]\nN20 G4 X5\nN30 M30\n");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("950007"), std::string::npos) << r.output;
   const auto ev = of_kind(r.events, "spindle", "S3");
@@ -141,8 +142,8 @@ TEST(SpindleReview, ChannelPlcSpindleIsNotClampedToTheDefaultVbMax) {
 // from its internal command value. S2 ramps at 30000 deg/s^2: 900 rpm (the
 // -10 % edge of 1000 rpm) = 5400 deg/s after 0.18 s; the simulated actual
 // (20 ms lag) would need 0.2 s.
-TEST(SpindleReview, SensorlessSpindleAcknowledgesFromTheInternalCommandValue) {
-  const ReviewRun r = run(mill(), "%e\nN10 S2[M3 REV1000]\nN20 M30\n");
+TEST(SpindleRun, SensorlessSpindleAcknowledgesFromTheInternalCommandValue) {
+  const SpindleRunResult r = run(mill(), "%e\nN10 S2[M3 REV1000]\nN20 M30\n");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto start = of_kind(r.events, "spindle", "S2");
   const auto reached = of_kind(r.events, "speed_reached", "S2");
@@ -154,9 +155,9 @@ TEST(SpindleReview, SensorlessSpindleAcknowledgesFromTheInternalCommandValue) {
 // Item 13, P-AXIS-00159 getriebe[i].reverse: the drive value goes out with
 // the other sign (M3 3000 rpm -> -32767, seed 2.2.4.1 scaling) and the actual
 // comes back flipped again, so the NC still sees M3 and reaches its speed.
-TEST(SpindleReview, GearReverseInvertsDriveValueAndActualValues) {
+TEST(SpindleRun, GearReverseInvertsDriveValueAndActualValues) {
   const auto m = mill_with("reverse", "s2.lis", "getriebe[0].reverse 1");
-  const ReviewRun r = run(m, "%f\nN10 S2[M3 REV3000]\nN20 G4 X0.5\nN30 M30\n");
+  const SpindleRunResult r = run(m, "%f\nN10 S2[M3 REV3000]\nN20 G4 X0.5\nN30 M30\n");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto& rpm = r.trace.at("S2.rpm");
   const auto& drive = r.trace.at("S2.drive");
@@ -171,16 +172,16 @@ TEST(SpindleReview, GearReverseInvertsDriveValueAndActualValues) {
   EXPECT_TRUE(seen);
   EXPECT_EQ(of_kind(r.events, "speed_reached", "S2").size(), 1u);
   // A position-controlled spindle with reverse still positions exactly.
-  const ReviewRun p = run(mill_with("reverse1", "s1.lis", "getriebe[0].reverse 1"), "%f\nN10 M19 S.POS=90 S100\nN20 M30\n");
+  const SpindleRunResult p = run(mill_with("reverse1", "s1.lis", "getriebe[0].reverse 1"), "%f\nN10 M19 S.POS=90 S100\nN20 M30\n");
   ASSERT_EQ(p.exit_code, 0) << p.output;
   EXPECT_NEAR(p.final_state["hli"]["spindles"]["S1"]["actual_pos"].get<double>(), 900000, 100);
 }
 
 // Item 14, seed 2.3: a conflicting direction (60254) puts the spindle into
 // error state; the events and the final state of the aborted run show it.
-TEST(SpindleReview, PreferredDirectionErrorStateIsVisibleAfterTheAbort) {
+TEST(SpindleRun, PreferredDirectionErrorStateIsVisibleAfterTheAbort) {
   const auto m = mill_with("errstate", "s1.lis", "kenngr.vorz_richtung 1\nkenngr.beweg_richt 1\n");
-  const ReviewRun r = run(m, "%g\nN10 S500 M4\nN20 M30\n");
+  const SpindleRunResult r = run(m, "%g\nN10 S500 M4\nN20 M30\n");
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_EQ(modes(r.events, "S1"), (std::vector<std::string>{"error"}));
   EXPECT_EQ(std::count_if(r.events.begin(), r.events.end(), [](const json& e) { return e["ev"] == "error"; }), 1);
@@ -190,8 +191,8 @@ TEST(SpindleReview, PreferredDirectionErrorStateIsVisibleAfterTheAbort) {
 
 // Item 15, seed 2.9: --final lists the spindle's HLI objects, named after
 // the facts sheet's paths. 200 rpm = 1200 deg/s = 1200000 in 0.001 deg/s.
-TEST(SpindleReview, FinalStateListsTheSeedsHliSpindleObjects) {
-  const ReviewRun rot = run(mill(), "%h\nN10 S200 M3\nN20 G4 X0.5\nN30 M30\n");
+TEST(SpindleRun, FinalStateListsTheSeedsHliSpindleObjects) {
+  const SpindleRunResult rot = run(mill(), "%h\nN10 S200 M3\nN20 G4 X0.5\nN30 M30\n");
   ASSERT_EQ(rot.exit_code, 0) << rot.output;
   const json& a = rot.final_state["hli"]["spindles"]["S1"];
   EXPECT_EQ(a["cmd_rev_r"], 1200000);
@@ -200,7 +201,7 @@ TEST(SpindleReview, FinalStateListsTheSeedsHliSpindleObjects) {
   EXPECT_EQ(a["command_error"], false);
   EXPECT_EQ(a["distance_to_go"], 0);
   // M19 at 10 rpm (60 deg/s) to 180 deg, stopped after 1 s: about 120 deg to go.
-  const ReviewRun pos = run(mill(), "%h\nN10 M19 S.POS=180 S10\nN20 M30\n", "--max-time 1");
+  const SpindleRunResult pos = run(mill(), "%h\nN10 M19 S.POS=180 S10\nN20 M30\n", "--max-time 1");
   EXPECT_EQ(pos.exit_code, 1) << pos.output;
   const json& b = pos.final_state["hli"]["spindles"]["S1"];
   EXPECT_EQ(b["target_pos"], 1800000);

@@ -1,4 +1,5 @@
-// Acceptance review, issue 9 items 16-20, through `nck run` on examples/mill
+// Coordinate systems, presets, handwheel offsets and offset variables
+// through `nck run` on examples/mill
 // (zero.lis: G54 X100 Y50 Z-150, G55 X200 Y100 Z-150; tools.lis: D1 100 mm).
 // Every expected machine position is computed by hand in the comment beside it.
 #include <gtest/gtest.h>
@@ -43,7 +44,7 @@ const json& channel(const ProgramRun& r) { return r.final_state["channels"][0]; 
 // Item 16. Seed 2.2.1 / 2.2.3 / 2.2.6: zero offsets programmed while a CS
 // (ACS, MCS) is active are valid only until it is deselected. Selecting one
 // again afterwards must act, although the decoder's modal code never changed.
-TEST(CoordinatesReview, ZeroOffsetSelectedAgainAfterCsOffActs) {
+TEST(CoordinateSystemsRun, ZeroOffsetSelectedAgainAfterCsOffActs) {
   ProgramRun r = run_blocks("zo_cs", "N10 G54 G0 X0 Y0 Z0\nN20 #CS ON [0,0,0,0,0,0]\nN30 G55 G0 X0\nN40 #CS OFF\n"
                               "N50 G0 X0\nN60 G55 G0 X0\nN70 M30\n");
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -53,7 +54,7 @@ TEST(CoordinatesReview, ZeroOffsetSelectedAgainAfterCsOffActs) {
   EXPECT_EQ(channel(r)["modal"]["zero_offset"], "G55");
 }
 
-TEST(CoordinatesReview, G53SelectedAgainAfterAcsOffActs) {
+TEST(CoordinateSystemsRun, G53SelectedAgainAfterAcsOffActs) {
   ProgramRun r = run_blocks("zo_acs", "N10 G54 G0 X0 Y0 Z0\nN20 #ACS ON [0,0,0,0,0,0]\nN30 G53 G0 X0\nN40 #ACS OFF\n"
                                "N50 G0 X0\nN60 G53 G0 X0\nN70 M30\n");
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -63,7 +64,7 @@ TEST(CoordinatesReview, G53SelectedAgainAfterAcsOffActs) {
   EXPECT_EQ(channel(r)["modal"]["zero_offset"], "G53");
 }
 
-TEST(CoordinatesReview, ZeroOffsetSelectedAgainAfterMcsOffActs) {
+TEST(CoordinateSystemsRun, ZeroOffsetSelectedAgainAfterMcsOffActs) {
   ProgramRun r = run_blocks("zo_mcs", "N10 G54 G0 X0 Y0 Z0\nN20 #MCS ON\nN30 G55 G0 X0\nN40 #MCS OFF\n"
                                "N50 G0 X0\nN60 G55 G0 X0\nN70 M30\n");
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -73,7 +74,7 @@ TEST(CoordinatesReview, ZeroOffsetSelectedAgainAfterMcsOffActs) {
 }
 
 // --final names the zero offset in force, not the decoder's last modal code.
-TEST(CoordinatesReview, FinalReportsTheZeroOffsetInForceAfterCsOff) {
+TEST(CoordinateSystemsRun, FinalReportsTheZeroOffsetInForceAfterCsOff) {
   ProgramRun r = run_blocks("zo_final", "N10 G54 G0 X0 Y0 Z0\nN20 #CS ON [0,0,0,0,0,0]\nN30 G55 G0 X0\nN40 #CS OFF\n"
                                  "N50 G0 X0\nN60 M30\n");
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -84,14 +85,14 @@ TEST(CoordinatesReview, FinalReportsTheZeroOffsetInForceAfterCsOff) {
 // Item 17. Seed 2.5 (Istwertverschiebung): #PSET gives the current axis
 // position a new value in program coordinates, so the tool length (machining
 // directions, tool_fixed 0) and an active #CS stay out of the preset.
-TEST(CoordinatesReview, PsetKeepsTheToolLength) {
+TEST(CoordinateSystemsRun, PsetKeepsTheToolLength) {
   ProgramRun r = run_blocks("pset_tool", "N10 D1 G0 X0 Y0 Z0\nN20 #PSET Z0\nN30 G0 Z10\nN40 M30\n");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NEAR(r.at_block.at(20)[2], 100.0, 1e-9);  // Z0 + D1 100
   EXPECT_NEAR(r.at_block.at(40)[2], 110.0, 1e-9);  // the preset is 0: Z10 + 100
 }
 
-TEST(CoordinatesReview, PsetInsideACsKeepsTheCsShift) {
+TEST(CoordinateSystemsRun, PsetInsideACsKeepsTheCsShift) {
   ProgramRun r = run_blocks("pset_cs", "N10 G0 X0 Y0 Z0\nN20 #CS ON [10,0,0,0,0,0]\nN30 G0 X0\nN40 #PSET X0\n"
                                 "N50 G0 X5\nN60 M30\n");
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -99,7 +100,7 @@ TEST(CoordinatesReview, PsetInsideACsKeepsTheCsShift) {
   EXPECT_NEAR(r.at_block.at(60)[0], 15.0, 1e-9);  // X0 already read 0: X5 = 10 + 5
 }
 
-TEST(CoordinatesReview, PsetStillShiftsByTheDifference) {
+TEST(CoordinateSystemsRun, PsetStillShiftsByTheDifference) {
   ProgramRun r = run_blocks("pset_shift", "N10 D1 G0 X0 Y0 Z0\nN20 #PSET Z20\nN30 G0 Z0\nN40 M30\n");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NEAR(r.at_block.at(40)[2], 80.0, 1e-9);  // machine 100 reads Z20: Z0 is 20 lower
@@ -108,7 +109,7 @@ TEST(CoordinatesReview, PsetStillShiftsByTheDifference) {
 // Item 19. Seed 2.10: #SUPPRESS OFFSETS without kinds leaves out every
 // offset, the handwheel's too; seed 2.2.6: #MCS ON removes every offset
 // included in the axes. The handwheel adds X +1.5 in G201 (manual.plc style).
-TEST(CoordinatesReview, SuppressOffsetsAndMcsLeaveOutTheHandwheelOffset) {
+TEST(CoordinateSystemsRun, SuppressOffsetsAndMcsLeaveOutTheHandwheelOffset) {
   const auto plc = temp_dir("hw_plc") / "s.plc";
   std::ofstream(plc) << "0.5 handwheel X 1.5\n";
   ProgramRun r = run_blocks("hw_suppress",
@@ -129,7 +130,7 @@ TEST(CoordinatesReview, SuppressOffsetsAndMcsLeaveOutTheHandwheelOffset) {
   EXPECT_NEAR(channel(r)["offsets"]["manual"]["X"].get<double>(), 1.5, 1e-9);
 }
 
-TEST(CoordinatesReview, HandwheelOffsetLeavesAlongThePathWithoutAJump) {
+TEST(CoordinateSystemsRun, HandwheelOffsetLeavesAlongThePathWithoutAJump) {
   const auto plc = temp_dir("hw_jump_plc") / "s.plc";
   std::ofstream(plc) << "0.5 handwheel X 1.5\n";
   ProgramRun r = run_blocks("hw_jump", "N10 G0 X0 Y0 Z0\nN20 G201 X1\nN30 G4 X2\nN40 G202\nN50 G0 X10\n"
@@ -165,7 +166,7 @@ std::string show_in_x(int first_n, int count) {
   return blocks + "N" + std::to_string(first_n + 10 * count) + " M30\n";
 }
 
-TEST(CoordinatesReview, ToolRotationZeroAndPositionVariablesReadTheStateInForce) {
+TEST(CoordinateSystemsRun, ToolRotationZeroAndPositionVariablesReadTheStateInForce) {
   ProgramRun r = run_blocks("kvars",
                      "N10 G54 D1 G0 X1 Y2 Z3\n"
                      "N20 P1 = V.A.ABS.X P2 = V.A.ABS.Z P3 = V.G.NP_AKT.V.Y\n"
@@ -180,7 +181,7 @@ TEST(CoordinatesReview, ToolRotationZeroAndPositionVariablesReadTheStateInForce)
   for (int i = 0; i < 10; ++i) EXPECT_NEAR(r.at_block.at(210 + 10 * i)[0], want[i], 1e-9) << "P" << i + 1;
 }
 
-TEST(CoordinatesReview, VariablesAfterTheirFunctionIsOffReadZero) {
+TEST(CoordinateSystemsRun, VariablesAfterTheirFunctionIsOffReadZero) {
   ProgramRun r = run_blocks("kvars_off", "N10 G54 D1 G0 X0 Y0 Z0\nN20 #ROTATION ON [ANGLE=30]\nN30 #ROTATION OFF\nN35 D0 G53\n"
                                   "N40 P1 = V.G.ROT_ACTIVE + V.G.ROT_ANGLE + V.G.WZ_AKT.L + V.G.NP_AKT.V.X + 7\n" +
                                       show_in_x(200, 1));
@@ -189,7 +190,7 @@ TEST(CoordinatesReview, VariablesAfterTheirFunctionIsOffReadZero) {
 }
 
 // V.A.MEIN: the measuring offset G101 included (measure.nc: 7 mm on Z).
-TEST(CoordinatesReview, MeinReadsTheMeasuringOffsetIncluded) {
+TEST(CoordinateSystemsRun, MeinReadsTheMeasuringOffsetIncluded) {
   ProgramRun r = run_blocks("kvars_mein", "N10 G17 G90 G54 D1 G0 X0 Y0 Z-50\nN20 G100 Z-80 F300\nN30 G101 Z1\n"
                                    "N40 P1 = V.A.MEIN.Z\nN50 G102\nN60 P2 = V.A.MEIN.Z + 1\n" + show_in_x(200, 2));
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -199,7 +200,7 @@ TEST(CoordinatesReview, MeinReadsTheMeasuringOffsetIncluded) {
 
 // Item 20: the offset events and --final show the whole CS stack; the
 // outermost CS keeps the plain keys, the next ones are prefixed "2." ...
-TEST(CoordinatesReview, NestedCsAreAllReported) {
+TEST(CoordinateSystemsRun, NestedCsAreAllReported) {
   ProgramRun r = run_blocks("cs_nested", "N10 G54 G0 X0 Y0 Z0\nN20 #CS ON [1][10,0,0,0,0,0]\n"
                                   "N30 #CS ON [2][0,5,0,0,0,90]\nN40 G0 X1 Y0\nN50 M30\n");
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -218,7 +219,7 @@ TEST(CoordinatesReview, NestedCsAreAllReported) {
   }
 }
 
-TEST(CoordinatesReview, CsSelectReportsTheStackAndHowManyAct) {
+TEST(CoordinateSystemsRun, CsSelectReportsTheStackAndHowManyAct) {
   ProgramRun r = run_blocks("cs_select", "N10 G54 G0 X0 Y0 Z0\nN20 #CS ADD [A][10,0,0,0,0,0]\n"
                                   "N30 #CS ADD [B][0,5,0,0,0,0]\nN40 #CS SELECT [A]\nN50 G0 X0 Y0\nN60 M30\n");
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -230,7 +231,7 @@ TEST(CoordinatesReview, CsSelectReportsTheStackAndHowManyAct) {
   EXPECT_EQ(cs.at("selected"), 1.0);
 }
 
-TEST(CoordinatesReview, CsOffBringingAZeroOffsetBackIsAnEvent) {
+TEST(CoordinateSystemsRun, CsOffBringingAZeroOffsetBackIsAnEvent) {
   ProgramRun r = run_blocks("cs_off_zero", "N10 G54 G0 X0 Y0 Z0\nN20 #CS ON [0,0,0,0,0,0]\nN30 G55\nN40 #CS OFF\n"
                                     "N50 M30\n");
   ASSERT_EQ(r.exit_code, 0) << r.output;
