@@ -66,8 +66,11 @@ std::string did_you_mean(const CLI::App& app, int argc, char** argv) {
     for (const std::string& n : o->get_lnames()) options.push_back("--" + n);
   for (int i = 2; i < argc; ++i) {
     std::string arg = argv[i];
+    if (arg.size() > 2 && arg[0] == '-' && arg[1] != '-') arg = "-" + arg;  // "-report": a dash short
     if (arg.rfind("--", 0) != 0) continue;
     arg = arg.substr(0, arg.find('='));
+    if (arg != argv[i] && std::find(options.begin(), options.end(), arg) != options.end())
+      return fmt::format(" (did you mean '{}'?)", arg);
     if (std::find(options.begin(), options.end(), arg) != options.end()) continue;
     const std::string guess = nearest(arg, options);
     if (!guess.empty()) return fmt::format(" (did you mean '{}'?)", guess);
@@ -127,12 +130,12 @@ int main_cli(int argc, char** argv) {
   runc->add_option("MACHINE", run.machine, "machine folder (with startup.lis)")->required();
   runc->add_option("PROGRAM", run.programs, "NC program per channel (PROGRAM2 runs in channel 2...)")
       ->required();
-  runc->add_option("--events", run.events, "write events as JSON lines to FILE");
-  runc->add_option("--trace", run.trace, "write set points as CSV to FILE");
+  runc->add_option("--events", run.events, "write events as JSON lines to FILE (- for stdout)");
+  runc->add_option("--trace", run.trace, "write set points as CSV to FILE (- for stdout)");
   runc->add_option("--trace-every", run.trace_every, "trace every Nth cycle")->check(number_at_least(1, true));
-  runc->add_option("--final", run.final_state, "write the final state as JSON to FILE");
+  runc->add_option("--final", run.final_state, "write the final state as JSON to FILE (- for stdout)");
   runc->add_option("--plc", run.plc, "timed HLI actions (docs/plc-scenario.md)");
-  runc->add_option("--report", run.report, "write a self-contained HTML report with plots to FILE");
+  runc->add_option("--report", run.report, "write a self-contained HTML report with plots to FILE (- for stdout)");
   runc->add_option("--max-time", run.max_time_s, "simulated-time limit in seconds")
       ->check(number_at_least(0.001, false));
   runc->add_option("--max-wall", run.max_wall_s, "wall-clock limit in seconds")->check(number_at_least(0.001, false));

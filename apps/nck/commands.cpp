@@ -12,6 +12,7 @@
 #include "stop_request.hpp"
 
 #include <filesystem>
+#include <initializer_list>
 #include <sstream>
 #include <vector>
 
@@ -131,9 +132,25 @@ std::string lower(std::string s) {
   return s;
 }
 
-// The table rows of a generated markdown page whose first two columns
-// contain `lookup`, under the page's table header.
-int print_matching_rows(const std::string& markdown, const std::string& lookup, const char* what) {
+// The cells of a markdown table row ("| a | b |" -> {"a", "b"}).
+std::vector<std::string> cells(const std::string& row) {
+  std::vector<std::string> out;
+  std::size_t from = row.find('|');
+  while (from != std::string::npos) {
+    const std::size_t to = row.find('|', from + 1);
+    if (to == std::string::npos) break;
+    std::string cell = row.substr(from + 1, to - from - 1);
+    const std::size_t first = cell.find_first_not_of(' '), last = cell.find_last_not_of(' ');
+    out.push_back(first == std::string::npos ? std::string() : cell.substr(first, last - first + 1));
+    from = to;
+  }
+  return out;
+}
+
+// The table rows of a generated markdown page in which one of the columns
+// `searched` contains `lookup` (case-insensitive), under the page's header.
+int print_matching_rows(const std::string& markdown, const std::string& lookup,
+                        std::initializer_list<std::size_t> searched, const char* what) {
   if (lookup.empty()) {
     (void)write_stdout(markdown);
     return 0;
@@ -147,8 +164,12 @@ int print_matching_rows(const std::string& markdown, const std::string& lookup, 
     const bool is_header = i + 1 < lines.size() && lines[i + 1].starts_with("|---");
     if (is_header && header.empty()) header = lines[i] + "\n" + lines[i + 1] + "\n";
     if (is_header || !lines[i].starts_with("| ")) continue;
-    const std::size_t second_bar = lines[i].find('|', lines[i].find('|', 1) + 1);
-    if (lower(lines[i].substr(0, second_bar)).find(needle) != std::string::npos) rows += lines[i] + "\n";
+    const std::vector<std::string> row = cells(lines[i]);
+    for (std::size_t c : searched)
+      if (c < row.size() && lower(row[c]).find(needle) != std::string::npos) {
+        rows += lines[i] + "\n";
+        break;
+      }
   }
   if (rows.empty()) {
     fmt::print(stderr, "nck: no {} matches '{}'\n", what, lookup);
@@ -161,7 +182,7 @@ int print_matching_rows(const std::string& markdown, const std::string& lookup, 
 }  // namespace
 
 int print_parameters(const std::string& lookup) {
-  return print_matching_rows(config::parameters_markdown(), lookup, "list key");
+  return print_matching_rows(config::parameters_markdown(), lookup, {0, 1}, "list key");
 }
 
 std::string errors_markdown() {
@@ -178,6 +199,9 @@ std::string errors_markdown() {
   return out;
 }
 
-int print_errors(const std::string& lookup) { return print_matching_rows(errors_markdown(), lookup, "diagnostic ID"); }
+// By ID or by name ("940004", "OutputPath").
+int print_errors(const std::string& lookup) {
+  return print_matching_rows(errors_markdown(), lookup, {0, 2}, "diagnostic ID or name");
+}
 
 }  // namespace nck::app
