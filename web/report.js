@@ -39,11 +39,28 @@
       (w.fn ? " (" + w.fn + ")" : "") + (w.sync ? ", " + w.sync : "");
   }
 
+  // Seconds waited per reason: a channel waiting for two spindles at once
+  // waits once (the union of its intervals per channel and reason).
+  function waitSecondsByReason(waits) {
+    const groups = {};
+    for (const w of waits) (groups[w.ch + " " + w.reason] ||= { reason: w.reason, spans: [] }).spans.push([w.t0, w.t1]);
+    const by = {};
+    for (const g of Object.values(groups)) {
+      g.spans.sort((a, b) => a[0] - b[0]);
+      let total = 0, [from, to] = g.spans[0];
+      for (const [t0, t1] of g.spans) {
+        if (t0 > to) { total += to - from; from = t0; to = t1; } else to = Math.max(to, t1);
+      }
+      total += to - from;
+      by[g.reason] = (by[g.reason] || 0) + total;
+    }
+    return by;
+  }
+
   // --- summary ---------------------------------------------------------
   function summary() {
     const m = D.meta;
-    const waitsBy = {};
-    for (const w of D.waits) waitsBy[w.reason] = (waitsBy[w.reason] || 0) + (w.t1 - w.t0);
+    const waitsBy = waitSecondsByReason(D.waits);
     const waits = Object.entries(waitsBy).map(([r, s]) => esc(REASONS[r] || r) + " " + s.toFixed(3) + " s").join(", ") || "none";
     const rows = [
       ["machine", "<code>" + esc(m.machine) + "</code>"],

@@ -81,14 +81,19 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
   for (std::size_t c = 0; c < m.channels.size(); ++c) {
     Channel ch;
     const auto& axes = m.channels[c].axes;
+    // The backplot's three axes: X, Y, Z by name; a channel without them
+    // (the twin-spindle machine's X, Y1, Z1) takes its first linear axes.
     for (std::size_t j = 0; j < axes.size(); ++j) {
       static constexpr const char* kMain[] = {"X", "Y", "Z"};
       for (int a = 0; a < 3; ++a)
-        if (axes[j].name == kMain[a] && ch.axis[a] < 0) {
-          ch.axis[a] = static_cast<int>(j);
-          ch.axis_name[a] = columns[col + j];
-        }
+        if (axes[j].name == kMain[a] && ch.axis[a] < 0) ch.axis[a] = static_cast<int>(j);
     }
+    for (int a = 0; a < 3; ++a)
+      for (std::size_t j = 0; j < axes.size() && ch.axis[a] < 0; ++j)
+        if (!is_rotary_name(axes[j].name) && std::find(ch.axis.begin(), ch.axis.end(), static_cast<int>(j)) == ch.axis.end())
+          ch.axis[a] = static_cast<int>(j);
+    for (int a = 0; a < 3; ++a)
+      if (ch.axis[a] >= 0) ch.axis_name[a] = columns[col + static_cast<std::size_t>(ch.axis[a])];
     const std::string ch_name = fmt::format("channel {}", c + 1);
     series_meta_.push_back(fmt::format(R"({{"name":{},"unit":"mm/min","panel":{},"kind":"velocity","ch":{}}})",
                                        quoted(fmt::format("{}path velocity", c > 0 ? fmt::format("{}.", c + 1) : "")),
@@ -203,17 +208,25 @@ void ReportWriter::take(const kernel::Event& e, const RunNames& names) {
              spindle_name(e.spindle), "", e.line ? e.line : ch.line, ch.file};
       if (auto it = ch.last_sync.find(w.fn); it != ch.last_sync.end() && !w.fn.empty()) w.sync = sync_name(it->second);
       if (waits_.size() >= kMaxListed) break;
-      ch.open_wait = waits_.size();
+      ch.open_waits.push_back(waits_.size());
       waits_.push_back(std::move(w));
       break;
     }
     case K::spindle:
       if (e.spindle_mode == static_cast<std::uint8_t>(spindle::SpindleMode::axis)) c_axis_used_ = true;
       break;
-    case K::wait_end:
-      if (ch.open_wait) waits_[*ch.open_wait].t1 = e.t_s;
-      ch.open_wait.reset();
+    case K::wait_end: {  // ends the wait for the same spindle, function and reason
+      const std::string reason = wait_reason_name(static_cast<kernel::WaitReason>(e.wait_reason));
+      const std::string fn = function_text(e), spindle = spindle_name(e.spindle);
+      const auto it = std::find_if(ch.open_waits.begin(), ch.open_waits.end(), [&](std::size_t i) {
+        const Wait& w = waits_[i];
+        return w.reason == reason && w.fn == fn && w.spindle == spindle;
+      });
+      if (it == ch.open_waits.end()) break;
+      waits_[*it].t1 = e.t_s;
+      ch.open_waits.erase(it);
       break;
+    }
     default:
       break;
   }

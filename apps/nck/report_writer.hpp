@@ -85,7 +85,7 @@ class ReportWriter {
     Accum* block = nullptr;  // where this channel's cycles count
     Accum* tool_acc = nullptr;
     std::map<std::string, std::uint32_t> last_sync;  // fn -> sync bits of its last plc_out
-    std::optional<std::size_t> open_wait;
+    std::vector<std::size_t> open_waits;  // waits_ indices: one per spindle/function waited for
     PathRecorder path;
     // program -> machine maps of the blocks executed, in order of appearance
     // (PathPoint::frame); the PlanStore index of the newest

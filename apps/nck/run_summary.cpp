@@ -22,19 +22,32 @@ void RunSummary::take(const kernel::Event& e) {
     case K::end:
       if (e.end_reason == kernel::EndReason::reset) ++resets_, ++errors_;
       break;
-    case K::wait: open_.push_back({e.channel, e.spindle, e.fn, e.fn_number, e.wait_reason, e.t_s}); break;
+    case K::wait:
+      // A channel waiting for two spindles at once waits once: the time
+      // counts from the first of them (the one open before this, if any).
+      open_.push_back({e.channel, e.spindle, e.fn, e.fn_number, e.wait_reason,
+                       first_open(e.channel, e.wait_reason).value_or(e.t_s)});
+      break;
     case K::wait_end: {
       auto it = std::find_if(open_.begin(), open_.end(), [&](const OpenWait& w) {
         return w.channel == e.channel && w.spindle == e.spindle && w.fn == e.fn && w.fn_number == e.fn_number &&
                w.reason == e.wait_reason;
       });
       if (it == open_.end()) break;
-      if (it->reason < waited_s_.size()) waited_s_[it->reason] += e.t_s - it->since_s;
+      const OpenWait ended = *it;
       open_.erase(it);
+      if (!first_open(ended.channel, ended.reason) && ended.reason < waited_s_.size())
+        waited_s_[ended.reason] += e.t_s - ended.since_s;  // the last of them
       break;
     }
     default: break;
   }
+}
+
+std::optional<double> RunSummary::first_open(std::uint8_t channel, std::uint8_t reason) const {
+  for (const OpenWait& w : open_)
+    if (w.channel == channel && w.reason == reason) return w.since_s;
+  return std::nullopt;
 }
 
 std::string RunSummary::text(const std::string& end_reason, double end_s) const {

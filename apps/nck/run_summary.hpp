@@ -4,6 +4,7 @@
 // waiting per reason).
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,8 +28,10 @@ class RunSummary {
     kernel::FunctionKind fn;
     std::int32_t fn_number;
     std::uint8_t reason;
-    double since_s;
+    double since_s;  // since when the channel waits for this reason (overlapping waits count once)
   };
+  // The start of the channel's open waits for `reason`, if it waits for one.
+  std::optional<double> first_open(std::uint8_t channel, std::uint8_t reason) const;
   std::uint64_t blocks_ = 0, errors_ = 0, warnings_ = 0, resets_ = 0;
   std::vector<OpenWait> open_;
   std::array<double, 16> waited_s_{};  // by WaitReason

@@ -42,6 +42,8 @@ export function writeHoldProgram(dir) {
   fs.writeFileSync(path.join(dir, "hold.nc"), "N10 G17 G90 G0 X0 Y0 Z0\nN20 G1 X100 F3000\nN30 M30\n");
   // feedhold for 0.8 s from 0.5 s; the feed override drops to 50 % at 1.5 s
   fs.writeFileSync(path.join(dir, "hold.plc"), "0.5 feedhold on\n1.3 feedhold off\n1.5 feed_override 50\n");
+  // S1 and S2 waited for at once: speed reached at 0.326 s and 0.54 s
+  fs.writeFileSync(path.join(dir, "two_waits.nc"), "N10 S1000 M3 S2[M4 REV3000]\nN20 G4 X0.1\nN30 M30\n");
 }
 
 export function expectations(longProgram, blocks, longCaps, out) {
@@ -94,6 +96,13 @@ export function expectations(longProgram, blocks, longCaps, out) {
       wait: { panel: "channel 1: path velocity", reason: "feedhold", span: [0.5, 1.3],
               text: /^N20 held 0\.800 s by the PLC's feedhold \(HLI\)$/ },
       marks: [{ panel: "channel 1: path velocity", kind: "override", t: 1.5, text: /^1\.500 s: feed override 50 %$/ }],
+    },
+    {
+      // overlapping waits count once in the summary (0.540 s, not 0.856 s)
+      name: "two-waits", machine: "examples/mill", programs: [path.join(out, "two_waits.nc")],
+      minPlots: 1,
+      backplots: [{ view: "XY", min: [null, null, null], max: [null, null, null], tol: 0.01 }],
+      summary: /waitsthe PLC's acknowledgement 0\.010 s, speed reached 0\.540 s/,
     },
     {
       name: "lathe", image: "report-lathe.png", machine: "examples/lathe", programs: ["examples/lathe/turn.nc"],

@@ -68,6 +68,10 @@ async function check(browser, c) {
     };
   });
   const name = c.name;
+  if (c.summary) {
+    const text = await page.locator("#summary").textContent();
+    if (!c.summary.test(text)) fail(name, `summary "${text}" does not match ${c.summary}`); else ok(name, "summary " + c.summary);
+  }
   if (problems.length) fail(name, "console: " + problems.join(" | ")); else ok(name, "no console errors or warnings");
   if (requests.length) fail(name, "network requests: " + requests.join(", ")); else ok(name, "no network request");
   if (info.plots.length < c.minPlots) fail(name, `${info.plots.length} time plots, expected >= ${c.minPlots}`);

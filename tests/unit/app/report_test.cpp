@@ -3,6 +3,8 @@
 // (tests/browser/ checks the page itself in chromium.)
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include <fmt/format.h>
 #include <numbers>
 
@@ -143,6 +145,33 @@ TEST(Report, ContourBackplotHasTheProgramsExtentsRapidsAndLines) {
   EXPECT_NEAR(tools_s, d["meta"]["end_s"].get<double>(), 0.0011);
   // no spindle turns in contour.nc
   EXPECT_DOUBLE_EQ(series_max(d, "S1 set"), 0);
+}
+
+// Two spindles waited for at once: each wait ends with its own spindle (S1
+// at 0.326 s, S2 at 0.54 s, not at program end), and the time waited for
+// speed counts once where they overlap: 0.54 s, not 0.54 + 0.316 s.
+TEST(Report, WaitsForTwoSpindlesAtOnceArePairedPerSpindleAndCountedOnce) {
+  const auto dir = temp_dir("report_two_waits");
+  const auto p = write(dir / "p.nc", "N10 S1000 M3 S2[M4 REV3000]\nN20 G4 X0.1\nN30 M30\n");
+  const CliResult r = run_nck("run " + mill() + " " + p.string() + " --report " + (dir / "r.html").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("speed_reached 0.540 s"), std::string::npos) << r.output;
+  const json d = report_data(read_file(dir / "r.html"));
+  std::map<std::string, double> ends;
+  for (const json& w : d["waits"])
+    if (w["reason"] == "speed_reached") ends[w["spindle"].get<std::string>()] = w["t1"].get<double>();
+  EXPECT_NEAR(ends["S1"], 0.326, 1e-9) << d["waits"].dump();
+  EXPECT_NEAR(ends["S2"], 0.54, 1e-9) << d["waits"].dump();
+}
+
+// The twin-spindle machine's channel has X, Y1, Z1 (no Y or Z): the
+// backplot takes its first linear axes, so it is not empty.
+TEST(Report, BackplotTakesTheFirstLinearAxesWithoutXyzNames) {
+  const std::string twin = root() + "/examples/twin-spindle";
+  const json d = run_report("report_twin", twin + " " + twin + "/twin.nc");
+  const json& ch = d["channels"][0];
+  EXPECT_EQ(ch["has"], json::array({true, true, true})) << ch.dump().substr(0, 400);
+  EXPECT_GT(ch["x"].size(), 2u);
 }
 
 TEST(Report, LatheShowsTheZxPlaneAndTwoChannelsOneBackplotEach) {
