@@ -15,7 +15,10 @@ bool iequal(const std::string& a, const std::string& b) {
                                                 std::toupper(static_cast<unsigned char>(y)); });
 }
 
-std::unexpected<LinkError> fail(ErrorId id, std::string msg) { return std::unexpected(LinkError{id, std::move(msg)}); }
+// The line is the block's: the planner sets it when it makes the error command.
+std::unexpected<Diagnostic> fail(ErrorId id, std::string msg) {
+  return std::unexpected(make_diagnostic(id, {}, std::move(msg)));
+}
 
 }  // namespace
 
@@ -37,7 +40,7 @@ std::string AxLinkGroups::member_name(const LinkMember& m) const {
 
 // A name (path axis, spindle, or the main spindle's name) or, with NBR, a
 // logical axis number of the channel.
-std::expected<LinkMember, LinkError> AxLinkGroups::resolve(const std::string& token, bool by_number) const {
+std::expected<LinkMember, Diagnostic> AxLinkGroups::resolve(const std::string& token, bool by_number) const {
   const std::size_t n_axes = channel_.axes.size();
   if (by_number) {
     std::uint32_t nr = 0;
@@ -60,24 +63,24 @@ std::expected<LinkMember, LinkError> AxLinkGroups::resolve(const std::string& to
   return fail(ErrorId::AxLinkUnknownAxis, fmt::format("{} is no path axis or spindle of this channel", token));
 }
 
-std::optional<LinkError> AxLinkGroups::check_pair(const nc::AxLinkPair& p, const LinkPairDef& d) const {
+std::expected<void, Diagnostic> AxLinkGroups::check_pair(const nc::AxLinkPair& p, const LinkPairDef& d) const {
   if (d.slave.spindle != d.master.spindle)
-    return LinkError{ErrorId::AxLinkMixedPair,
+    return fail(ErrorId::AxLinkMixedPair,
                      fmt::format("pair {}={}: {} is a {}, {} a {}; a pair couples two path axes or two spindles",
                                  p.slave, p.master, p.slave, d.slave.spindle ? "spindle" : "path axis", p.master,
-                                 d.master.spindle ? "spindle" : "path axis")};
+                                 d.master.spindle ? "spindle" : "path axis"));
   if (same(d.slave, d.master))
-    return LinkError{ErrorId::AxLinkUnknownAxis, fmt::format("pair {}={} couples a spindle or axis with itself", p.slave, p.master)};
+    return fail(ErrorId::AxLinkUnknownAxis, fmt::format("pair {}={} couples a spindle or axis with itself", p.slave, p.master));
   if (d.slave.spindle && (p.gantry || p.numerator))
-    return LinkError{ErrorId::AxLinkGantryLimits,
-                     fmt::format("pair {}={}: spindles are coupled 1:1, without gantry or scaling", p.slave, p.master)};
+    return fail(ErrorId::AxLinkGantryLimits,
+                     fmt::format("pair {}={}: spindles are coupled 1:1, without gantry or scaling", p.slave, p.master));
   if (d.gantry && (d.limit1_mm < 0 || d.limit2_mm < d.limit1_mm))
-    return LinkError{ErrorId::AxLinkGantryLimits,
-                     fmt::format("gantry pair {}={}: limits {} and {} mm", p.slave, p.master, d.limit1_mm, d.limit2_mm)};
-  return std::nullopt;
+    return fail(ErrorId::AxLinkGantryLimits,
+                     fmt::format("gantry pair {}={}: limits {} and {} mm", p.slave, p.master, d.limit1_mm, d.limit2_mm));
+  return {};
 }
 
-std::expected<void, LinkError> AxLinkGroups::define(const nc::SetAxLink& s) {
+std::expected<void, Diagnostic> AxLinkGroups::define(const nc::SetAxLink& s) {
   if (s.group < 1 || s.group > kernel::kMaxLinkGroupNr)
     return fail(ErrorId::AxLinkGroupRange,
                 fmt::format("coupling group {}: the program defines groups 1..{}", s.group, kernel::kMaxLinkGroupNr));
@@ -101,7 +104,7 @@ std::expected<void, LinkError> AxLinkGroups::define(const nc::SetAxLink& s) {
     d.limit1_mm = p.limit1_mm.value_or(0);
     d.limit2_mm = p.limit2_mm.value_or(0);
     if (p.numerator && p.denominator) d.ratio = *p.numerator / *p.denominator;
-    if (auto e = check_pair(p, d)) return std::unexpected(*e);
+    if (auto r = check_pair(p, d); !r) return r;
     for (const LinkPairDef& o : def.pairs)
       if (same(o.slave, d.slave))
         return fail(ErrorId::AxLinkSlaveTwice, fmt::format("{} is the slave of two pairs in group {}", p.slave, s.group));
@@ -112,25 +115,25 @@ std::expected<void, LinkError> AxLinkGroups::define(const nc::SetAxLink& s) {
 }
 
 // A member of group g against the groups enabled now (21283..21285).
-std::optional<LinkError> AxLinkGroups::check_against_enabled(int group) const {
+std::expected<void, Diagnostic> AxLinkGroups::check_against_enabled(int group) const {
   for (int other : enable_order_) {
     for (const LinkPairDef& p : groups_[static_cast<std::size_t>(group)].pairs) {
       for (const LinkPairDef& q : groups_[static_cast<std::size_t>(other)].pairs) {
         const std::string name = member_name(p.slave);
         if (same(p.slave, q.slave))
-          return LinkError{ErrorId::AxLinkSlaveAlreadySlave, fmt::format("{} is already the slave of enabled group {}", name, other)};
+          return fail(ErrorId::AxLinkSlaveAlreadySlave, fmt::format("{} is already the slave of enabled group {}", name, other));
         if (same(p.slave, q.master))
-          return LinkError{ErrorId::AxLinkSlaveIsMaster, fmt::format("{} is the master of enabled group {}", name, other)};
+          return fail(ErrorId::AxLinkSlaveIsMaster, fmt::format("{} is the master of enabled group {}", name, other));
         if (same(p.master, q.slave))
-          return LinkError{ErrorId::AxLinkMasterIsSlave,
-                           fmt::format("{} is the slave of enabled group {}", member_name(p.master), other)};
+          return fail(ErrorId::AxLinkMasterIsSlave,
+                           fmt::format("{} is the slave of enabled group {}", member_name(p.master), other));
       }
     }
   }
-  return std::nullopt;
+  return {};
 }
 
-std::expected<const LinkGroupDef*, LinkError> AxLinkGroups::enable(std::optional<int> group) {
+std::expected<const LinkGroupDef*, Diagnostic> AxLinkGroups::enable(std::optional<int> group) {
   const int g = group.value_or(0);
   if (g < 0 || g > kernel::kMaxLinkGroupNr)
     return fail(ErrorId::AxLinkGroupRange, fmt::format("coupling group {}: groups are 0..{}", g, kernel::kMaxLinkGroupNr));
@@ -150,13 +153,13 @@ std::expected<const LinkGroupDef*, LinkError> AxLinkGroups::enable(std::optional
   for (const LinkPairDef& p : def.pairs)
     if (!p.slave.spindle && p.slave.index < 3)
       return fail(ErrorId::AxLinkSlaveIsMainAxis, fmt::format("{} is a main axis of the channel", member_name(p.slave)));
-  if (auto e = check_against_enabled(g)) return std::unexpected(*e);
+  if (auto r = check_against_enabled(g); !r) return std::unexpected(r.error());
   def.enabled = true;
   enable_order_.push_back(g);
   return &def;
 }
 
-std::expected<std::uint32_t, LinkError> AxLinkGroups::disable(const nc::DisableAxLink& d) {
+std::expected<std::uint32_t, Diagnostic> AxLinkGroups::disable(const nc::DisableAxLink& d) {
   if (d.all) return disable_all();
   if (!d.group) {  // the group enabled last; nothing enabled: nothing to do
     if (enable_order_.empty()) return 0u;
@@ -183,7 +186,7 @@ std::uint32_t AxLinkGroups::disable_all() {
   return mask;
 }
 
-std::expected<void, LinkError> AxLinkGroups::change_main_spindle(int spindle) {
+std::expected<void, Diagnostic> AxLinkGroups::change_main_spindle(int spindle) {
   for (int g : enable_order_)
     for (const LinkPairDef& p : groups_[static_cast<std::size_t>(g)].pairs)
       if ((p.slave.spindle && p.slave.index == spindle) || (p.master.spindle && p.master.index == spindle))

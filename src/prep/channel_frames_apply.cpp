@@ -80,18 +80,18 @@ void ChannelFrames::note_changed_translations(const OffsetValues& before, FrameC
     if (after[i] != before[i]) (void)out.kinds.push_back(kTranslationKinds[i]);
 }
 
-std::optional<Diagnostic> ChannelFrames::measure_apply(std::size_t j, double factor,
+std::expected<void, Diagnostic> ChannelFrames::measure_apply(std::size_t j, double factor,
                                                        std::optional<double> measured_mm,
                                                        double target_mm, const nc::Block& b) {
   auto r = chain_.measure_apply(to_chain_[j], factor, measured_mm, target_mm);
-  if (r) return std::nullopt;
-  return frame_diagnostic(r.error(), b, names_, to_channel_.data());
+  if (r) return {};
+  return std::unexpected(frame_diagnostic(r.error(), b, names_, to_channel_.data()));
 }
 
-std::optional<Diagnostic> ChannelFrames::measure_clear(std::optional<std::size_t> j, const nc::Block& b) {
+std::expected<void, Diagnostic> ChannelFrames::measure_clear(std::optional<std::size_t> j, const nc::Block& b) {
   auto r = chain_.measure_clear(j ? std::optional<int>(to_chain_[*j]) : std::nullopt);
-  if (r) return std::nullopt;
-  return frame_diagnostic(r.error(), b, names_, to_channel_.data());
+  if (r) return {};
+  return std::unexpected(frame_diagnostic(r.error(), b, names_, to_channel_.data()));
 }
 
 Result ChannelFrames::apply_words(const nc::Block& b, FrameChanges& out) {

@@ -4,6 +4,7 @@
 
 #include "nck/plc/hli.hpp"
 #include "nck/prep/decoder_setup.hpp"
+#include "nck/prep/error_command.hpp"
 #include "nck/prep/planner.hpp"
 
 namespace nck::prep {
@@ -91,8 +92,9 @@ void ChannelPrep::feed_blocks(kernel::CommandQueue& commands, kernel::FeedbackQu
       awaiting_feedback_ = needs_feedback(r.block);
     } else if (r.status == nc::Decoder::Status::end) {
       // Where the program ends: its last block (file 0 is the main program).
-      hand_over(planner_->error_command(ErrorId::KernelMissingProgramEnd,
-                                        "the program has no M30 (or M2) at its end", 0, last_main_line_),
+      hand_over(error_command(make_diagnostic(ErrorId::KernelMissingProgramEnd, {"", last_main_line_, 0},
+                                              "the program has no M30 (or M2) at its end"),
+                              0, *store_),
                 commands);
       done_ = true;
     } else {
@@ -100,8 +102,7 @@ void ChannelPrep::feed_blocks(kernel::CommandQueue& commands, kernel::FeedbackQu
       const Diagnostic d = ds.empty() ? make_diagnostic(ErrorId::NcFileUnreadable, {}, "decoder stopped")
                                       : ds.back();
       // The error names the file its line is in (a subroutine's, not the main program's).
-      hand_over(planner_->error_command(d.id, d.message, decoder_->file_id(d.loc.file).value_or(0), d.loc.line),
-                commands);
+      hand_over(error_command(d, decoder_->file_id(d.loc.file).value_or(0), *store_), commands);
       done_ = true;
     }
   }
@@ -134,7 +135,7 @@ void ChannelPrep::plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& comm
   auto plan_one = [&](const TrcOut& o) {
     if (!o.error) return planner_->plan(o.block);
     PlannedBlock b;
-    (void)b.push_back(planner_->error_command(*o.error, o.message, o.block.file_id, o.block.line));
+    (void)b.push_back(error_command(*o.error, o.block.file_id, *store_));
     return b;
   };
   for (TrcOut& o : outs) {

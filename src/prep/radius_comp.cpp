@@ -46,53 +46,43 @@ bool RadiusComp::relevant(const nc::Block& b) const {
 
 // What may not be programmed while compensation is selected (facts A1, A7,
 // A14; TF5200 20049, 20133).
-std::optional<ErrorId> RadiusComp::forbidden(const nc::Block& b, std::string& why) const {
-  if (!queue_.empty() && b.modal.plane != plane_) {
-    why = fmt::format("G{} while tool radius compensation is active", static_cast<int>(b.modal.plane));
-    return ErrorId::KernelTrcPlaneChange;
-  }
-  if (b.g_nonmodal.has(nc::GCode::g100)) {
-    why = "measuring run G100 while tool radius compensation is selected";
-    return ErrorId::KernelTrcMeasure;
-  }
+PlanResult RadiusComp::forbidden(const nc::Block& b) const {
+  auto selected = [&](ErrorId id) {
+    return block_error(id, b, fmt::format("{} while tool radius compensation is selected",
+                                          nc::hash_command_name(*b.hash)));
+  };
+  if (!queue_.empty() && b.modal.plane != plane_)
+    return block_error(ErrorId::KernelTrcPlaneChange, b,
+                       fmt::format("G{} while tool radius compensation is active", static_cast<int>(b.modal.plane)));
+  if (b.g_nonmodal.has(nc::GCode::g100))
+    return block_error(ErrorId::KernelTrcMeasure, b, "measuring run G100 while tool radius compensation is selected");
   if (b.hash) {
     const nc::HashCommand& h = *b.hash;
-    if (const auto* cs = std::get_if<nc::CoordSystem>(&h); cs && cs->op != nc::CsOp::def && cs->op != nc::CsOp::add) {
-      why = fmt::format("{} while tool radius compensation is selected", nc::hash_command_name(h));
-      return ErrorId::FrCsChangeWithTrc;
-    }
-    if (std::holds_alternative<nc::Mcs>(h) || std::holds_alternative<nc::Ecs>(h)) {
-      why = fmt::format("{} while tool radius compensation is selected", nc::hash_command_name(h));
-      return ErrorId::FrCsChangeWithTrc;
-    }
-    if (const auto* t = std::get_if<nc::Tlc>(&h); t && t->on) {
-      why = "#TLC ON while tool radius compensation is selected";
-      return ErrorId::FrTlcWithTrc;
-    }
-    if (std::holds_alternative<nc::PSet>(h) || std::holds_alternative<nc::PReset>(h)) {
-      why = fmt::format("{} while tool radius compensation is selected", nc::hash_command_name(h));
-      return ErrorId::KernelTrcPreset;
-    }
+    if (const auto* cs = std::get_if<nc::CoordSystem>(&h); cs && cs->op != nc::CsOp::def && cs->op != nc::CsOp::add)
+      return selected(ErrorId::FrCsChangeWithTrc);
+    if (std::holds_alternative<nc::Mcs>(h) || std::holds_alternative<nc::Ecs>(h))
+      return selected(ErrorId::FrCsChangeWithTrc);
+    if (const auto* t = std::get_if<nc::Tlc>(&h); t && t->on)
+      return block_error(ErrorId::FrTlcWithTrc, b, "#TLC ON while tool radius compensation is selected");
+    if (std::holds_alternative<nc::PSet>(h) || std::holds_alternative<nc::PReset>(h))
+      return selected(ErrorId::KernelTrcPreset);
     if (std::holds_alternative<nc::CAxis>(h) || std::holds_alternative<nc::Face>(h) ||
         std::holds_alternative<nc::Cylinder>(h) || std::holds_alternative<nc::Rotation>(h) ||
-        std::holds_alternative<nc::SuppressOffsets>(h) || std::holds_alternative<nc::GetManualOffsets>(h)) {
-      why = fmt::format("{} while tool radius compensation is selected", nc::hash_command_name(h));
-      return ErrorId::KernelTrcNotAllowed;
-    }
+        std::holds_alternative<nc::SuppressOffsets>(h) || std::holds_alternative<nc::GetManualOffsets>(h))
+      return selected(ErrorId::KernelTrcNotAllowed);
   }
   const nc::Motion m = b.modal.motion;
   const bool thread = m == nc::Motion::thread || m == nc::Motion::tap || m == nc::Motion::tap_rigid ||
                       m == nc::Motion::tap_retract;
-  if (b.manual_g || b.g_nonmodal.has_any(kNotWithTrc) || (thread && b.has_axis_words())) {
-    why = "G74/G92/G101/G102, G201/G202 and thread or tapping motions are not possible while tool radius "
-          "compensation is selected";
-    return ErrorId::KernelTrcNotAllowed;
-  }
-  return std::nullopt;
+  if (b.manual_g || b.g_nonmodal.has_any(kNotWithTrc) || (thread && b.has_axis_words()))
+    return block_error(ErrorId::KernelTrcNotAllowed, b,
+                       "G74/G92/G101/G102, G201/G202 and thread or tapping motions are not possible while tool "
+                       "radius compensation is selected");
+  return {};
 }
 
 // Selection: the plane's axes, and where the tool stands in program coordinates.
-bool RadiusComp::select_plane(const nc::Block& b, const Planner& planner, std::string& why) {
+PlanResult RadiusComp::select_plane(const nc::Block& b, const Planner& planner) {
   plane_ = b.modal.plane;
   const PlaneAxes pa = plane_axes(plane_);
   ia_ = static_cast<std::size_t>(pa.first);
@@ -102,14 +92,13 @@ bool RadiusComp::select_plane(const nc::Block& b, const Planner& planner, std::s
     if (axis_names_[j] == kMainAxisNames[ia_]) ax_a_ = static_cast<int>(j);
     if (axis_names_[j] == kMainAxisNames[ib_]) ax_b_ = static_cast<int>(j);
   }
-  if (ax_a_ < 0 || ax_b_ < 0) {
-    why = fmt::format("tool radius compensation in G{} needs axes {} and {}", static_cast<int>(plane_),
-                      kMainAxisNames[ia_], kMainAxisNames[ib_]);
-    return false;
-  }
+  if (ax_a_ < 0 || ax_b_ < 0)
+    return block_error(ErrorId::KernelAxisNotInPlane, b,
+                       fmt::format("tool radius compensation in G{} needs axes {} and {}", static_cast<int>(plane_),
+                                   kMainAxisNames[ia_], kMainAxisNames[ib_]));
   const motion::AxisVector& pcs = planner.planned_pcs();
   prog_ = {pcs[static_cast<std::size_t>(ax_a_)], pcs[static_cast<std::size_t>(ax_b_)]};
-  return true;
+  return {};
 }
 
 // The tool radius of the D in force with the side: left (G41) positive.
@@ -124,22 +113,22 @@ double RadiusComp::offset_of(const nc::Block& b) const {
 // the plane (G18: Z, X). Only G18 has the longitudinal axis first and the
 // facing axis second, as the positions are defined; a position 1..8 in
 // another plane is refused rather than applied the wrong way round.
-std::optional<Vec2> RadiusComp::tip_of(const nc::Block& b, std::string& why) const {
+std::expected<Vec2, Diagnostic> RadiusComp::tip_of(const nc::Block& b) const {
   if (b.modal.radius_comp == nc::RadiusComp::g40) return Vec2{};
   const auto d = static_cast<std::size_t>(std::max<std::int64_t>(b.modal.d, 0));
   if (d == 0 || d >= tools_.size()) return Vec2{};
   const config::ToolRecord& t = tools_[d];
   const Vec2 tip = trc::tip_from_centre(t.typ == 1 ? t.srk_lage : 0, t.radius_mm);
   if (trc::length(tip) < kTiny || plane_ == Plane::g18) return tip;
-  why = fmt::format("turning tool D{} has cutting-edge position {} (wz[{}].srk_lage), defined in the Z X plane "
-                    "(G18), with tool radius compensation in G{}",
-                    d, t.srk_lage, d, static_cast<int>(plane_));
-  return std::nullopt;
+  return block_error(ErrorId::KernelTrcEdgePlane, b,
+                     fmt::format("turning tool D{} has cutting-edge position {} (wz[{}].srk_lage), defined in the "
+                                 "Z X plane (G18), with tool radius compensation in G{}",
+                                 d, t.srk_lage, d, static_cast<int>(plane_)));
 }
 
 // The programmed element of b, from the programmed end of the last one.
-std::optional<motion::trc::Element> RadiusComp::element_of(const nc::Block& b, const Planner& planner,
-                                                           ErrorId& id, std::string& why) const {
+std::expected<motion::trc::Element, Diagnostic> RadiusComp::element_of(const nc::Block& b,
+                                                                      const Planner& planner) const {
   Element e;
   e.start = prog_;
   e.end = prog_;
@@ -161,20 +150,14 @@ std::optional<motion::trc::Element> RadiusComp::element_of(const nc::Block& b, c
     e.center = base + Vec2{ci.value_or(0), cj.value_or(0)};
     return e;
   }
-  if (!b.r) {
-    id = ErrorId::KernelArcNoCenter;
-    why = "program I/J/K or R with G2/G3";
-    return std::nullopt;
-  }
+  if (!b.r) return block_error(ErrorId::KernelArcNoCenter, b, "program I/J/K or R with G2/G3");
   // R: the centre on the chord's perpendicular; R > 0 the shorter arc.
   const Vec2 chord = e.end - e.start;
   const double half = trc::length(chord) / 2;
   const double h2 = *b.r * *b.r - half * half;
-  if (half < kTiny || h2 < -1e-9) {
-    id = half < kTiny ? ErrorId::KernelArcFullCircleWithR : ErrorId::KernelArcRadiusTooSmall;
-    why = half < kTiny ? "a full circle cannot be programmed with R" : "circle: R is smaller than half the chord";
-    return std::nullopt;
-  }
+  if (half < kTiny || h2 < -1e-9)
+    return half < kTiny ? block_error(ErrorId::KernelArcFullCircleWithR, b, "a full circle cannot be programmed with R")
+                        : block_error(ErrorId::KernelArcRadiusTooSmall, b, "circle: R is smaller than half the chord");
   const double side = (e.ccw ? 1.0 : -1.0) * (*b.r > 0 ? 1.0 : -1.0);
   e.center = e.start + 0.5 * chord + (side * std::sqrt(std::max(h2, 0.0)) / (2 * half)) * trc::left_of(chord);
   return e;
@@ -182,13 +165,16 @@ std::optional<motion::trc::Element> RadiusComp::element_of(const nc::Block& b, c
 
 // An error in place of b. What is held does not run: its end would
 // depend on the block refused, and ending it anyhow could cut into the part.
-void RadiusComp::fail(const nc::Block& b, ErrorId id, std::string why, std::vector<TrcOut>& out) {
+void RadiusComp::fail(const nc::Block& b, Diagnostic d, std::vector<TrcOut>& out) {
   queue_.clear();
   TrcOut e;
   e.block = b;
-  e.error = id;
-  e.message = std::move(why);
+  e.error = std::move(d);
   out.push_back(std::move(e));
+}
+
+void RadiusComp::fail(const nc::Block& b, ErrorId id, std::string why, std::vector<TrcOut>& out) {
+  fail(b, block_error(id, b, std::move(why)).error(), out);
 }
 
 void RadiusComp::push(const nc::Block& b, const Planner& planner, std::vector<TrcOut>& out) {
@@ -198,8 +184,7 @@ void RadiusComp::push(const nc::Block& b, const Planner& planner, std::vector<Tr
     out.push_back(TrcOut::of(b));
     return;
   }
-  std::string why;
-  if (auto id = forbidden(b, why)) return fail(b, *id, why, out);
+  if (auto r = forbidden(b); !r) return fail(b, r.error(), out);
   if (b.program_end) {
     flush(out);
     out.push_back(TrcOut::of(b));
@@ -219,10 +204,10 @@ void RadiusComp::push(const nc::Block& b, const Planner& planner, std::vector<Tr
     queue_.back().held.push_back(b);
     return;
   }
-  if (queue_.empty() && !select_plane(b, planner, why)) return fail(b, ErrorId::KernelAxisNotInPlane, why, out);
-  ErrorId id{};
-  auto el = element_of(b, planner, id, why);
-  if (!el) return fail(b, id, why, out);
+  if (queue_.empty())
+    if (auto r = select_plane(b, planner); !r) return fail(b, r.error(), out);
+  auto el = element_of(b, planner);
+  if (!el) return fail(b, el.error(), out);
   if (!el->arc && trc::length(el->end - el->start) < kTiny) {
     // No motion in the plane after all: the plane axes stay where the tool is.
     nc::Block still = b;
@@ -236,8 +221,8 @@ void RadiusComp::push(const nc::Block& b, const Planner& planner, std::vector<Tr
   item.block = b;
   item.prog = *el;
   item.o = offset_of(b);
-  const auto tip = tip_of(b, why);
-  if (!tip) return fail(b, ErrorId::KernelTrcEdgePlane, why, out);
+  const auto tip = tip_of(b);
+  if (!tip) return fail(b, tip.error(), out);
   item.tip = *tip;
   if (!want) item.role = Role::departure;
   else if (queue_.empty() || item.o != queue_.back().o || trc::length(item.tip - queue_.back().tip) > kTiny)

@@ -152,7 +152,10 @@ std::expected<std::optional<SpindleAction>, Diagnostic> main_action(const nc::Bl
     if (!point) m = SpindleM::none;  // NO_SYNCH: the M function is not executed (SPEC 3.3)
   }
   // S / REV, POS and POS_SHIFT are modal whatever the function does (S with M5 is kept).
-  if (c.rev_rpm) st.speed_rpm = std::fabs(*c.rev_rpm);
+  if (c.rev_rpm) {
+    st.speed_rpm = std::fabs(*c.rev_rpm);
+    st.signed_speed_rpm = *c.rev_rpm;
+  }
   if (c.pos_deg) st.pos_deg = *c.pos_deg;
   if (c.pos_shift_deg) st.pos_shift_deg = *c.pos_shift_deg;
 

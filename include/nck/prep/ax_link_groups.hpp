@@ -17,11 +17,6 @@
 
 namespace nck::prep {
 
-struct LinkError {
-  ErrorId id{};
-  std::string message;
-};
-
 // One end of a pair: a channel path axis or a channel spindle.
 struct LinkMember {
   bool spindle = false;
@@ -47,18 +42,18 @@ class AxLinkGroups {
   // setup: group 0 from synchro_data.koppel_gruppe[0] (already checked by config).
   explicit AxLinkGroups(const config::ChannelConfig& channel, int main_spindle);
 
-  std::expected<void, LinkError> define(const nc::SetAxLink& s);
+  std::expected<void, Diagnostic> define(const nc::SetAxLink& s);
   // Enables group g (nullopt: group 0); the group's pairs on success.
-  std::expected<const LinkGroupDef*, LinkError> enable(std::optional<int> group);
+  std::expected<const LinkGroupDef*, Diagnostic> enable(std::optional<int> group);
   // Disables: the named group, the group enabled last, or all. Returns the
   // mask of groups switched off (0: nothing was enabled, without a group).
-  std::expected<std::uint32_t, LinkError> disable(const nc::DisableAxLink& d);
+  std::expected<std::uint32_t, Diagnostic> disable(const nc::DisableAxLink& d);
   // Program end: every group off (P-CHAN-00105 decides whether the kernel
   // keeps them; preparation starts the next program from the kernel's state).
   std::uint32_t disable_all();
   // #MAIN SPINDLE: the new main spindle (channel spindle index) must not be
   // linked in an enabled group.
-  std::expected<void, LinkError> change_main_spindle(int spindle);
+  std::expected<void, Diagnostic> change_main_spindle(int spindle);
 
   // Is the channel spindle / path axis the slave of an enabled group?
   bool spindle_is_slave(int spindle) const;
@@ -71,9 +66,9 @@ class AxLinkGroups {
   std::string member_name(const LinkMember& m) const;
 
  private:
-  std::expected<LinkMember, LinkError> resolve(const std::string& token, bool by_number) const;
-  std::optional<LinkError> check_pair(const nc::AxLinkPair& p, const LinkPairDef& d) const;
-  std::optional<LinkError> check_against_enabled(int group) const;
+  std::expected<LinkMember, Diagnostic> resolve(const std::string& token, bool by_number) const;
+  std::expected<void, Diagnostic> check_pair(const nc::AxLinkPair& p, const LinkPairDef& d) const;
+  std::expected<void, Diagnostic> check_against_enabled(int group) const;
   static bool same(const LinkMember& a, const LinkMember& b) { return a.spindle == b.spindle && a.index == b.index; }
 
   const config::ChannelConfig& channel_;

@@ -37,10 +37,10 @@ class ChannelFrames {
 
   // Axis j (channel index) is programmed absolutely: pending offsets act.
   void commit_axis(std::size_t j);
-  // G101 / G102 on channel axis j (nullopt: all axes); an error as a diagnostic.
-  std::optional<Diagnostic> measure_apply(std::size_t j, double factor, std::optional<double> measured_mm,
-                                          double target_mm, const nc::Block& b);
-  std::optional<Diagnostic> measure_clear(std::optional<std::size_t> j, const nc::Block& b);
+  // G101 / G102 on channel axis j (nullopt: all axes); its error as a diagnostic.
+  std::expected<void, Diagnostic> measure_apply(std::size_t j, double factor, std::optional<double> measured_mm,
+                                                double target_mm, const nc::Block& b);
+  std::expected<void, Diagnostic> measure_clear(std::optional<std::size_t> j, const nc::Block& b);
   // G74 homed axis j: its #PSET preset is cleared.
   void preset_axis(std::size_t j) { (void)chain_.preset(to_chain_[j]); }
   motion::AxisVector to_mcs(const motion::AxisVector& pcs, frames::SuppressMask m) const;

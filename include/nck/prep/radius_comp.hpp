@@ -10,6 +10,7 @@
 // holds one such block (and the blocks without plane motion after it)
 // until the next one is known. Setup side: may allocate, never in tick().
 #include <cstddef>
+#include <expected>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "nck/core/diagnostic.hpp"
 #include "nck/motion/offset_contour.hpp"
 #include "nck/nc/block.hpp"
+#include "nck/prep/units/plan_context.hpp"
 
 namespace nck::prep {
 
@@ -27,8 +29,7 @@ class Planner;
 struct TrcOut {
   nc::Block block;
   bool inserted = false;  // a corner arc of the compensation (no block event of its own)
-  std::optional<ErrorId> error;
-  std::string message;
+  std::optional<Diagnostic> error;  // raised in place of the block
 
   // A block handed on to the planner as it is.
   static TrcOut of(nc::Block b) {
@@ -97,12 +98,11 @@ class RadiusComp {
   };
 
   bool relevant(const nc::Block& b) const;
-  std::optional<ErrorId> forbidden(const nc::Block& b, std::string& why) const;
-  bool select_plane(const nc::Block& b, const Planner& planner, std::string& why);
-  std::optional<Element> element_of(const nc::Block& b, const Planner& planner, ErrorId& id,
-                                    std::string& why) const;
+  PlanResult forbidden(const nc::Block& b) const;
+  PlanResult select_plane(const nc::Block& b, const Planner& planner);
+  std::expected<Element, Diagnostic> element_of(const nc::Block& b, const Planner& planner) const;
   double offset_of(const nc::Block& b) const;
-  std::optional<Vec2> tip_of(const nc::Block& b, std::string& why) const;
+  std::expected<Vec2, Diagnostic> tip_of(const nc::Block& b) const;
   bool close_last(Item& next, std::vector<TrcOut>& out);
   bool check_last(std::vector<TrcOut>& out);
   bool check_crossings(std::vector<TrcOut>& out);
@@ -113,6 +113,8 @@ class RadiusComp {
   nc::Block corner_arc(const nc::Block& before, const nc::Block& after, Vec2 center, Vec2 from, Vec2 to,
                        bool ccw) const;
   void set_plane_words(nc::Block& r, Vec2 from, Vec2 to) const;
+  // An error in place of b (d, or id with why at b's line).
+  void fail(const nc::Block& b, Diagnostic d, std::vector<TrcOut>& out);
   void fail(const nc::Block& b, ErrorId id, std::string why, std::vector<TrcOut>& out);
 
   std::vector<config::ToolRecord> tools_;

@@ -25,6 +25,7 @@ using SpindleActions = FixedVector<SpindleAction, Command::kMaxSpindleActions>;
 // The modal spindle data of the program, as planned so far.
 struct PlannedSpindle {
   std::optional<double> speed_rpm;   // last S / REV (modal, unsigned as programmed)
+  double signed_speed_rpm = 0;       // the same with its sign (G63 turns back on a negative S), 0 before any
   std::optional<double> pos_deg;     // last POS / S.POS (modal)
   double pos_shift_deg = 0;          // S.POS_SHIFT (modal, added to every POS)
   std::uint32_t gear_stage = 1;      // 1..6; starts at kenngr.getriebe_stufe

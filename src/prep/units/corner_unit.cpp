@@ -5,42 +5,42 @@
 #include <cmath>
 
 #include "nck/motion/junction.hpp"
-#include "nck/prep/planner.hpp"
+#include "nck/prep/units/corner_unit.hpp"
 
 namespace nck::prep {
 
 // setup: each axis's velocity budget for a kink. Along the path an axis
 // already accelerates with up to max(a_acc, a_dec) of the block's mode; a
 // kink may add only what is left of a_max, spent within one cycle.
-void Planner::setup_corner_budgets(const config::Machine& machine) {
-  const double dt_s = cycle_s_ = machine.cycle_time_us * 1e-6;
-  for (std::size_t j = 0; j < n_axes_; ++j) {
-    const double a_max = axis_a_max_[j];
+CornerUnit::CornerUnit(const AxisTable& axes, std::uint32_t cycle_time_us) {
+  const double dt_s = cycle_s_ = cycle_time_us * 1e-6;
+  for (std::size_t j = 0; j < axes.count(); ++j) {
+    const double a_max = axes.accel_cap_mm_s2(j);
     auto budget = [&](const motion::AxisDynamics& d) {
       return std::max(a_max - std::max(d.a_acc_mm_s2, d.a_dec_mm_s2), 0.0) * dt_s;
     };
-    corner_dv_feed_[j] = budget(feed_dyn_[j]);
-    corner_dv_rapid_[j] = budget(rapid_dyn_[j]);
+    dv_feed_mm_s_[j] = budget(axes.dynamics(false)[j]);
+    dv_rapid_mm_s_[j] = budget(axes.dynamics(true)[j]);
   }
 }
 
-BlendAxes Planner::blend_axes() const {
+BlendAxes CornerUnit::blend_axes(const AxisTable& axes) const {
   BlendAxes a;
-  a.n_axes = n_axes_;
-  a.feed_dyn = feed_dyn_;
-  a.corner_dv_mm_s = corner_dv_feed_;
+  a.n_axes = axes.count();
+  a.feed_dyn = axes.feed();
+  a.corner_dv_mm_s = dv_feed_mm_s_;
   return a;
 }
 
 // The unit direction of c's path at its start or end, in machine axes.
-motion::AxisVector Planner::machine_tangent(const Command& c, bool at_end) const {
+motion::AxisVector CornerUnit::machine_tangent(const Command& c, bool at_end, std::size_t n_axes) const {
   motion::AxisVector t{};
   c.segment.tangent_at(at_end ? c.segment.length() : 0.0, t);
   if (!c.mapped) return t;
   motion::AxisVector mapped{}, origin{}, zero{};
-  c.map.apply(t, mapped, n_axes_);
-  c.map.apply(zero, origin, n_axes_);
-  for (std::size_t j = 0; j < n_axes_; ++j) mapped[j] -= origin[j];
+  c.map.apply(t, mapped, n_axes);
+  c.map.apply(zero, origin, n_axes);
+  for (std::size_t j = 0; j < n_axes; ++j) mapped[j] -= origin[j];
   return mapped;
 }
 
@@ -50,15 +50,15 @@ motion::AxisVector Planner::machine_tangent(const Command& c, bool at_end) const
 // velocity by at most a_max * dt between them (a reversal, a sharp turn
 // start gently instead of standing still a cycle). Unknown previous
 // motion: 0, one cycle at standstill.
-double Planner::start_acceleration(const Command& c) const {
-  if (!last_motion_.valid) return 0.0;
-  const motion::AxisVector t = machine_tangent(c, false);
+double CornerUnit::start_acceleration(const Command& c, const PlanContext& ctx) const {
+  if (!last_.valid) return 0.0;
+  const motion::AxisVector t = machine_tangent(c, false, ctx.n_axes);
   double a = c.limits.a_acc_mm_s2;
-  for (std::size_t j = 0; j < n_axes_; ++j) {
+  for (std::size_t j = 0; j < ctx.n_axes; ++j) {
     if (std::fabs(t[j]) < 1e-12) continue;
     // |p - a t_j| <= a_max with p the last step's share: a <= (a_max + p sgn t_j) / |t_j|
-    const double p = last_motion_.a_dec_mm_s2 * last_motion_.tangent[j];
-    a = std::min(a, (axis_a_max_[j] + (t[j] > 0 ? p : -p)) / std::fabs(t[j]));
+    const double p = last_.a_dec_mm_s2 * last_.tangent[j];
+    a = std::min(a, (ctx.axes.accel_cap_mm_s2(j) + (t[j] > 0 ? p : -p)) / std::fabs(t[j]));
   }
   return std::max(a, 0.0);
 }
@@ -68,9 +68,10 @@ double Planner::start_acceleration(const Command& c) const {
 // from the previous motion, and neither block's feed exceeded — a lower F
 // is reached before its block starts, a higher one is taken up after the
 // transition (the ISG rule).
-void Planner::note_transition(const nc::Block& b, Command& c, bool rapid) {
+void CornerUnit::note_transition(const nc::Block& b, Command& c, bool rapid, const PlanContext& ctx) {
+  const config::ChannelConfig& channel = ctx.channel;
   c.exact_stop = b.g_nonmodal.has(nc::GCode::g60) || b.modal.exact_stop ||
-                 (rapid && channel_.exact_stop_after_g00);
+                 (rapid && channel.exact_stop_after_g00);
   // G61 (this block) or G261 (modal): the look-ahead window may blend the
   // corner at this feed motion's end (docs/decisions.md, corner blending).
   const bool blend = b.g_nonmodal.has(nc::GCode::g61) || b.modal.contour;
@@ -81,27 +82,27 @@ void Planner::note_transition(const nc::Block& b, Command& c, bool rapid) {
   // the spindle: such blocks start and end at standstill, except G33 blocks
   // of a thread chain (P-CHAN-00837), which pass on to the next G33 block.
   const bool thread_chain =
-      channel_.thread_chain && c.trafo.kind == motion::CaxTrafoKind::none && c.feed_link.kind == kernel::FeedLinkKind::thread;
+      channel.thread_chain && c.trafo.kind == motion::CaxTrafoKind::none && c.feed_link.kind == kernel::FeedLinkKind::thread;
   if (!thread_chain && (c.trafo.kind != motion::CaxTrafoKind::none || c.feed_link.kind != kernel::FeedLinkKind::none)) {
     c.exact_stop = true;
-    last_motion_.valid = false;
+    last_.valid = false;
     return;
   }
   // A chain joins only G33 blocks: the first one starts on the start angle
   // from standstill, the block after the last one from standstill too.
-  if (last_motion_.valid && last_motion_.thread != thread_chain) last_motion_.valid = false;
-  c.feed_link.chained = thread_chain && last_motion_.valid;
-  const auto& dv = rapid ? corner_dv_rapid_ : corner_dv_feed_;
+  if (last_.valid && last_.thread != thread_chain) last_.valid = false;
+  c.feed_link.chained = thread_chain && last_.valid;
+  const auto& dv = rapid ? dv_rapid_mm_s_ : dv_feed_mm_s_;
   const double cruise_mm_s = std::min(c.v_cmd_mm_s, c.limits.v_max_mm_s);
-  c.start_a_mm_s2 = start_acceleration(c);
-  if (last_motion_.valid) {
+  c.start_a_mm_s2 = start_acceleration(c, ctx);
+  if (last_.valid) {
     std::array<double, kMaxAxes> budget{};
-    for (std::size_t j = 0; j < n_axes_; ++j) budget[j] = std::min(dv[j], last_motion_.corner_dv[j]);
+    for (std::size_t j = 0; j < ctx.n_axes; ++j) budget[j] = std::min(dv[j], last_.corner_dv[j]);
     c.v_entry_max_mm_s = motion::transition_velocity(
-        last_motion_.tangent, machine_tangent(c, false), std::span<const double>(budget.data(), n_axes_),
-        last_motion_.a_dec_mm_s2 * cycle_s_, last_motion_.cruise_mm_s, cruise_mm_s);
+        last_.tangent, machine_tangent(c, false, ctx.n_axes), std::span<const double>(budget.data(), ctx.n_axes),
+        last_.a_dec_mm_s2 * cycle_s_, last_.cruise_mm_s, cruise_mm_s);
   }
-  last_motion_ = {true, machine_tangent(c, true), dv, cruise_mm_s, c.limits.a_dec_mm_s2, thread_chain};
+  last_ = {true, machine_tangent(c, true, ctx.n_axes), dv, cruise_mm_s, c.limits.a_dec_mm_s2, thread_chain};
 }
 
 }  // namespace nck::prep

@@ -1,11 +1,10 @@
-// #DIST CTRL: the decoded switch (facts D2) becomes the fixed-size
-// distctrl::Switch the channel executes, with the overrides checked against
-// the ranges of their channel parameters (P-CHAN-00800..00827).
+// #DIST CTRL in preparation; see dist_unit.hpp.
+#include "nck/prep/units/dist_unit.hpp"
+
 #include <algorithm>
-#include <cmath>
 #include <fmt/format.h>
 
-#include "nck/prep/planner.hpp"
+#include "nck/prep/units/axis_table.hpp"
 
 namespace nck::prep {
 namespace {
@@ -42,42 +41,36 @@ std::string override_range(const nc::DistCtrl& d) {
 
 }  // namespace
 
-bool Planner::plan_dist(const nc::Block& b, Command& c, Command& error) {
-  const auto* d = b.hash ? std::get_if<nc::DistCtrl>(&*b.hash) : nullptr;
-  if (!d) return true;
-  if (std::string why = override_range(*d); !why.empty()) {
-    error = error_command(ErrorId::DistCtrlOverride, why, b.file_id, b.line);
-    return false;
-  }
-  if (d->sensor_source) {
+PlanResult DistUnit::plan_source(const nc::Block& b, const nc::DistCtrl& d, Command& c) {
+  if (d.sensor_source) {
     std::int8_t source = -1;
-    if (*d->sensor_source == "VARIABLE") source = 1;
-    else if (*d->sensor_source == "SIMULATION" || *d->sensor_source == "SENSOR") source = 0;
-    if (source < 0) {
-      error = error_command(ErrorId::DistCtrlSourceNotAllowed,
-                            fmt::format("SENSOR_SOURCE={} is not available for 3D distance control: "
-                                        "SIMULATION or VARIABLE", *d->sensor_source),
-                            b.file_id, b.line);
-      return false;
-    }
-    if (dist_on_ && source != dist_source_) {
-      error = error_command(ErrorId::DistCtrlSourceChange,
-                            fmt::format("SENSOR_SOURCE={} while distance control is on", *d->sensor_source),
-                            b.file_id, b.line);
-      return false;
-    }
-    dist_source_ = source;
+    if (*d.sensor_source == "VARIABLE") source = 1;
+    else if (*d.sensor_source == "SIMULATION" || *d.sensor_source == "SENSOR") source = 0;
+    if (source < 0)
+      return block_error(ErrorId::DistCtrlSourceNotAllowed, b,
+                         fmt::format("SENSOR_SOURCE={} is not available for 3D distance control: "
+                                     "SIMULATION or VARIABLE", *d.sensor_source));
+    if (on_ && source != source_)
+      return block_error(ErrorId::DistCtrlSourceChange, b,
+                         fmt::format("SENSOR_SOURCE={} while distance control is on", *d.sensor_source));
+    source_ = source;
     c.dist_source = source;
   }
-  if (d->sensor_var) {
-    if (d->sensor_var->empty() || d->sensor_var->size() >= c.dist_var.size()) {
-      error = error_command(ErrorId::DistCtrlBadVariable, "SENSOR_VAR must name a channel variable (up to 31 characters)",
-                            b.file_id, b.line);
-      return false;
-    }
-    std::copy(d->sensor_var->begin(), d->sensor_var->end(), c.dist_var.begin());
-    c.dist_source = dist_source_;
+  if (d.sensor_var) {
+    if (d.sensor_var->empty() || d.sensor_var->size() >= c.dist_var.size())
+      return block_error(ErrorId::DistCtrlBadVariable, b,
+                         "SENSOR_VAR must name a channel variable (up to 31 characters)");
+    std::copy(d.sensor_var->begin(), d.sensor_var->end(), c.dist_var.begin());
+    c.dist_source = source_;
   }
+  return {};
+}
+
+PlanResult DistUnit::plan(const nc::Block& b, Command& c, const PlanContext& ctx) {
+  const auto* d = b.hash ? std::get_if<nc::DistCtrl>(&*b.hash) : nullptr;
+  if (!d) return {};
+  if (std::string why = override_range(*d); !why.empty()) return block_error(ErrorId::DistCtrlOverride, b, why);
+  if (auto r = plan_source(b, *d, c); !r) return r;
   distctrl::Switch& w = c.dist;
   switch (d->op) {
     case nc::DistCtrlOp::on: w.op = distctrl::Op::on; break;
@@ -85,12 +78,9 @@ bool Planner::plan_dist(const nc::Block& b, Command& c, Command& error) {
     case nc::DistCtrlOp::off: w.op = distctrl::Op::off; break;
     case nc::DistCtrlOp::settings: w.op = distctrl::Op::none; break;
   }
-  if (w.op == distctrl::Op::on && dist_source_ == 1 && !d->sensor_var && !dist_var_known_) {
-    error = error_command(ErrorId::DistCtrlBadVariable, "SENSOR_SOURCE=VARIABLE needs SENSOR_VAR=<variable>",
-                          b.file_id, b.line);
-    return false;
-  }
-  if (d->sensor_var) dist_var_known_ = true;
+  if (w.op == distctrl::Op::on && source_ == 1 && !d->sensor_var && !var_known_)
+    return block_error(ErrorId::DistCtrlBadVariable, b, "SENSOR_SOURCE=VARIABLE needs SENSOR_VAR=<variable>");
+  if (d->sensor_var) var_known_ = true;
   w.const_dist = d->const_dist;
   w.no_move = d->no_move;
   if (d->set_pos_mm) w.set_pos_mm = *d->set_pos_mm;
@@ -104,17 +94,17 @@ bool Planner::plan_dist(const nc::Block& b, Command& c, Command& error) {
   if (d->n_cycles) w.n_cycles = static_cast<std::int16_t>(*d->n_cycles);
   if (d->order) w.order = static_cast<std::int16_t>(*d->order);
   if (d->filter_type) w.filter = filter_kind(*d->filter_type);
-  if (w.op == distctrl::Op::on || w.op == distctrl::Op::freeze) dist_on_ = dist_programmed_ = true;
-  if (w.op == distctrl::Op::off) dist_on_ = false;
+  if (w.op == distctrl::Op::on || w.op == distctrl::Op::freeze) on_ = programmed_ = true;
+  if (w.op == distctrl::Op::off) on_ = false;
   // The tool axis of the working plane carries the offset (Z for G17).
   const int tool = plane_axes(b.modal.plane).tool;
-  c.dist_axis = static_cast<std::int8_t>(tool < static_cast<int>(n_axes_) ? tool : -1);
-  c.dist_check_sw = channel_.dist_ctrl.check_sw_limit_switch;
+  c.dist_axis = static_cast<std::int8_t>(tool < static_cast<int>(ctx.n_axes) ? tool : -1);
+  c.dist_check_sw = ctx.channel.dist_ctrl.check_sw_limit_switch;
   if (c.dist_axis >= 0) {
-    c.dist_sw_neg_mm = swe_neg_[static_cast<std::size_t>(tool)];
-    c.dist_sw_pos_mm = swe_pos_[static_cast<std::size_t>(tool)];
+    c.dist_sw_neg_mm = ctx.axes.sw_limit_neg_mm(static_cast<std::size_t>(tool));
+    c.dist_sw_pos_mm = ctx.axes.sw_limit_pos_mm(static_cast<std::size_t>(tool));
   }
-  return true;
+  return {};
 }
 
 }  // namespace nck::prep

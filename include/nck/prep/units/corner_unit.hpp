@@ -1,0 +1,44 @@
+#pragma once
+// Continuous path in preparation (docs/decisions.md): what the look-ahead
+// needs of each motion block — whether it must end at standstill, how fast
+// the path may pass into it from the motion planned before it, and which
+// corners may be blended. Owns the last planned motion and each axis's
+// velocity budget for a kink.
+#include <array>
+
+#include "nck/prep/lookahead_window.hpp"
+#include "nck/prep/units/axis_table.hpp"
+#include "nck/prep/units/plan_context.hpp"
+
+namespace nck::prep {
+
+class CornerUnit {
+ public:
+  // setup: after the C axis (if any) has its data in `axes`.
+  CornerUnit(const AxisTable& axes, std::uint32_t cycle_time_us);
+
+  // The axes' feed dynamics and kink budgets, for corner blending (setup).
+  BlendAxes blend_axes(const AxisTable& axes) const;
+  // Motion c of block b has been planned: its exact stop, blending and entry limits.
+  void note_transition(const nc::Block& b, Command& c, bool rapid, const PlanContext& ctx);
+
+ private:
+  motion::AxisVector machine_tangent(const Command& c, bool at_end, std::size_t n_axes) const;
+  double start_acceleration(const Command& c, const PlanContext& ctx) const;
+
+  // The last planned motion, for the corner into the next one.
+  struct LastMotion {
+    bool valid = false;
+    motion::AxisVector tangent{};  // at its end, machine axes
+    std::array<double, kMaxAxes> corner_dv{};
+    double cruise_mm_s = 0;
+    double a_dec_mm_s2 = 0;  // along its path
+    bool thread = false;     // a G33 block of a thread chain (P-CHAN-00837)
+  };
+  LastMotion last_{};
+  double cycle_s_ = 0.001;
+  // Velocity change a kink may cause per axis within one cycle (feed / G0).
+  std::array<double, kMaxAxes> dv_feed_mm_s_{}, dv_rapid_mm_s_{};
+};
+
+}  // namespace nck::prep

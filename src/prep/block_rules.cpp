@@ -1,0 +1,115 @@
+// What a block must satisfy before planning, and its PLC outputs; see block_rules.hpp.
+#include "nck/prep/block_rules.hpp"
+
+#include <fmt/format.h>
+
+namespace nck::prep {
+namespace {
+
+bool is_fixed_m(int m) {
+  switch (m) {
+    case 0: case 1: case 2: case 17: case 29: case 30:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// # commands this version executes: the offset chain's, #EXPL SYN,
+// #MAIN SPINDLE (whose name mapping the decoder does) and the technology
+// units' (couplings, C axis and transformations, distance control, manual offsets).
+bool is_executed_command(const nc::HashCommand& h) {
+  if (std::holds_alternative<nc::ExplSyn>(h) || std::holds_alternative<nc::MainSpindle>(h) ||
+      std::holds_alternative<nc::GetManualOffsets>(h) || std::holds_alternative<nc::DistCtrl>(h))
+    return true;
+  if (std::holds_alternative<nc::SetAxLink>(h) || std::holds_alternative<nc::EnableAxLink>(h) ||
+      std::holds_alternative<nc::DisableAxLink>(h))
+    return true;  // units/coupling_unit.cpp
+  if (std::holds_alternative<nc::CAxis>(h) || std::holds_alternative<nc::Face>(h) ||
+      std::holds_alternative<nc::Cylinder>(h))
+    return true;  // units/cax_unit.cpp
+  return std::holds_alternative<nc::CoordSystem>(h) || std::holds_alternative<nc::Ecs>(h) ||
+         std::holds_alternative<nc::Mcs>(h) || std::holds_alternative<nc::Rotation>(h) ||
+         std::holds_alternative<nc::PSet>(h) || std::holds_alternative<nc::PReset>(h) ||
+         std::holds_alternative<nc::Tlc>(h) || std::holds_alternative<nc::SuppressOffsets>(h) ||
+         std::holds_alternative<nc::ToolData>(h);
+}
+
+// The non-modal G functions this version executes.
+constexpr nc::GCodeSet kExecutedNonModal{nc::GCode::g4,   nc::GCode::g60,  nc::GCode::g61,  nc::GCode::g74,  nc::GCode::g92,  nc::GCode::g100,
+                                         nc::GCode::g101, nc::GCode::g102, nc::GCode::g112, nc::GCode::g130,
+                                         nc::GCode::g135, nc::GCode::g136, nc::GCode::g137, nc::GCode::g167,
+                                         nc::GCode::g196};
+
+// Names what the block asks for that this version does not execute yet, or "".
+std::string unsupported(const nc::Block& b) {
+  if (b.hash && !is_executed_command(*b.hash))
+    return fmt::format("{} is not executed yet", nc::hash_command_name(*b.hash));
+  for (nc::GCode g : b.g_nonmodal)
+    if (!kExecutedNonModal.has(g)) return fmt::format("G{} is not executed yet", nc::g_number(g));
+  for (const nc::VariableWrite& w : b.kernel_writes)
+    if (w.name.rfind("V.G.NP[", 0) != 0) return fmt::format("writing {} is not executed yet", w.name);
+  return {};
+}
+
+}  // namespace
+
+PlanResult check_supported(const nc::Block& b) {
+  if (std::string why = unsupported(b); !why.empty())
+    return block_error(ErrorId::KernelNotYetSupported, b, why + " in this version of nck");
+  return {};
+}
+
+PlanResult check_spindle_scope(const nc::Block& b) {
+  for (const nc::SpindleCommand& s : b.spindles) {
+    if (s.callax || s.putax)
+      return block_error(ErrorId::SpindleFunctionOutOfScope, b,
+                         fmt::format("{}: CALLAX / PUTAX (axis exchange) are not modelled by nck", s.name));
+    if (s.feed_link)
+      return block_error(ErrorId::SpindleFunctionOutOfScope, b,
+                         fmt::format("{}: FEED_LINK (spindle speed from the path feed) is not modelled by nck", s.name));
+    if (s.override_speed_fact_pct)
+      return block_error(ErrorId::SpindleFunctionOutOfScope, b,
+                         fmt::format("{}: OVERRIDE SPEED_FACT (programmed spindle override) is not modelled by nck",
+                                     s.name));
+  }
+  return {};
+}
+
+PlanResult check_plc_spindles(const nc::Block& b, const config::ChannelConfig& channel) {
+  for (const nc::SpindleCommand& s : b.spindles) {
+    if (!s.spindle_index || *s.spindle_index >= channel.spindles.size()) continue;
+    const config::ChannelSpindle& sp = channel.spindles[*s.spindle_index];
+    if (!sp.plc_control) continue;
+    if (s.g74 || s.g167 || s.g130_pct || s.g135 || s.g137 || s.g136_pct || s.gear_stage || s.g112_stage ||
+        s.get_dynamic_data || s.default_dynamic_data || !s.user_m.empty() || !s.user_h.empty())
+      return block_error(ErrorId::KernelPlcSpindleFunction, b,
+                         fmt::format("{} is a PLC spindle over the channel interface: only its speed and "
+                                     "M3/M4/M5/M19 can be programmed",
+                                     sp.name));
+  }
+  return {};
+}
+
+PlanResult add_outputs(const nc::Block& b, Command& c, const config::ChannelConfig& channel) {
+  auto overflow = [&] { return block_error(ErrorId::KernelQueueOverflow, b, "more than 8 PLC outputs in one block"); };
+  for (int m : b.m) {
+    if (is_fixed_m(m)) continue;
+    const std::uint32_t sync = m >= 0 && static_cast<std::size_t>(m) < channel.m_synch.size()
+                                   ? channel.m_synch[static_cast<std::size_t>(m)]
+                                   : config::sync::MOS;
+    // A channel M function with NO_SYNCH is not output (FCT-S1 2.5).
+    if (sync == config::sync::NO_SYNCH) continue;
+    if (!c.outputs.push_back({FunctionKind::m, m, sync})) return overflow();
+  }
+  for (int h : b.h)
+    if (!c.outputs.push_back({FunctionKind::h, h, config::sync::MOS})) return overflow();
+  // #TOOL PREP [basic, ...] is the T word's form (facts B16): the PLC gets the basic number.
+  std::optional<std::int64_t> t = b.t;
+  if (const auto* td = b.hash ? std::get_if<nc::ToolData>(&*b.hash) : nullptr; td && td->prep) t = td->fields[0];
+  if (t && !c.outputs.push_back({FunctionKind::t, static_cast<std::int32_t>(*t), config::sync::MOS}))
+    return overflow();
+  return {};
+}
+
+}  // namespace nck::prep
