@@ -11,18 +11,6 @@ void HandwheelUnit::start(const Command& c) noexcept {
   share_start_ = share_;
 }
 
-// A motion block takes the handwheel offset of its axes in or out (command
-// manual_offset_axes) in step with its path, 0 at its start and 1 at its
-// end, so the set point never jumps by the offset.
-void HandwheelUnit::blend(const Command& c, double s_mm, std::size_t n_axes) noexcept {
-  const double length = c.segment.length();
-  const double fraction = length > 0 ? std::clamp(s_mm / length, 0.0, 1.0) : 1.0;
-  for (std::size_t j = 0; j < n_axes; ++j) {
-    const double target = (c.manual_offset_axes >> j) & 1u ? 1.0 : 0.0;
-    share_[j] = share_start_[j] + (target - share_start_[j]) * fraction;
-  }
-}
-
 // The offset is travelled at a limited speed (docs/decisions.md).
 Fault HandwheelUnit::follow(Cycle& cy) noexcept {
   // Until the first G201 every handwheel offset is zero: nothing to follow.

@@ -1,7 +1,5 @@
 #include "path_unit.hpp"
 
-#include <algorithm>
-
 #include "nck/kernel/braking_reserve.hpp"
 
 namespace nck::kernel {
@@ -29,16 +27,6 @@ bool PathUnit::carry_on(const Command& c) noexcept {
   // (Command::start_a_mm_s2: a sharp turn or a reversal).
   if (moved_last_cycle_) profile_.limit_first_step(c.start_a_mm_s2);
   return false;
-}
-
-motion::ProfileSample PathUnit::step(const Command& c, const CommandQueue& queued, Cycle& cy) noexcept {
-  const double ovr = cy.in.feedhold ? 0.0 : std::clamp(cy.in.feed_override_pct, 0.0, 100.0) / 100.0;
-  keep_braking_reserve(c, queued, cy.dt_s);
-  const motion::ProfileSample st = profile_.step(cy.dt_s, ovr);
-  if (reserve_ && st.braking) note_starved(cy);
-  moved_this_cycle_ = st.v_mm_s > 0;
-  velocity_ = st.v_mm_s;
-  return st;
 }
 
 void PathUnit::end_motion() noexcept {

@@ -5,6 +5,8 @@
 // reserve while preparation has not queued enough). Other units read the
 // set point and some (C axis, synchronous operation, measuring) move axes
 // of it.
+#include <algorithm>
+
 #include "nck/kernel/command.hpp"
 #include "nck/kernel/queues.hpp"
 #include "nck/motion/path_profile.hpp"
@@ -62,5 +64,16 @@ class PathUnit {
   bool starved_ = false;  // the braking reserve slowed the path (a KernelPrepStarved episode)
   bool moved_this_cycle_ = false, moved_last_cycle_ = false;  // the path advanced in this / the last cycle
 };
+
+// Every cycle of a motion: defined here so that it inlines into the channel.
+inline motion::ProfileSample PathUnit::step(const Command& c, const CommandQueue& queued, Cycle& cy) noexcept {
+  const double ovr = cy.in.feedhold ? 0.0 : std::clamp(cy.in.feed_override_pct, 0.0, 100.0) / 100.0;
+  if (reserve_) keep_braking_reserve(c, queued, cy.dt_s);
+  const motion::ProfileSample st = profile_.step(cy.dt_s, ovr);
+  if (reserve_ && st.braking) note_starved(cy);
+  moved_this_cycle_ = st.v_mm_s > 0;
+  velocity_ = st.v_mm_s;
+  return st;
+}
 
 }  // namespace nck::kernel
