@@ -62,7 +62,9 @@ void AxisLinkUnit::dissolve(std::size_t i, LinkReason why, Cycle& cy) noexcept {
 void AxisLinkUnit::end(EndReason end, Cycle& cy) noexcept {
   const bool regular = end == EndReason::m30 || end == EndReason::m2;
   if (regular && preserve_) return;
-  const LinkReason why = regular ? LinkReason::program_end : end == EndReason::reset ? LinkReason::reset : LinkReason::abort;
+  const LinkReason why = regular                    ? LinkReason::program_end
+                         : end == EndReason::reset ? LinkReason::reset
+                                                   : LinkReason::abort;
   while (!links_.empty()) dissolve(links_.size() - 1, why, cy);
 }
 
