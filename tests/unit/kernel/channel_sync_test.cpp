@@ -1,5 +1,5 @@
 // The channel's synchronisation of PLC and spindle functions with its motion
-// (src/kernel/channel_sync.cpp, FCT-S1 2.5), driven through the kernel's only
+// (src/kernel/units/sync_unit.cpp, FCT-S1 2.5), driven through the kernel's only
 // PLC interface: outputs leave in TickOutput::tech_outputs, acknowledgements
 // come back in TickInput::acks. The test plays the PLC and decides in which
 // cycle each output is acknowledged.

@@ -1,0 +1,58 @@
+#pragma once
+// Handwheel and manual offsets (G201 / G202, #SUPPRESS OFFSETS, #MCS,
+// #GET MANUAL OFFSETS): handwheel turns move the axes in manual mode; the
+// offset reached is travelled at a limited speed and is in each axis's
+// machine set point with a share (0..1) that a motion block blends along
+// its path, so nothing jumps.
+#include <algorithm>
+#include <cstdint>
+
+#include "nck/kernel/command.hpp"
+#include "cycle.hpp"
+
+namespace nck::kernel {
+
+inline constexpr double kHandwheelSpeed_mm_s = 10.0;  // how fast a handwheel offset is travelled
+
+class HandwheelUnit {
+ public:
+  HandwheelUnit() noexcept {
+    share_.fill(1.0);
+    share_start_.fill(1.0);
+  }
+  // A block starts: axes enter / leave manual mode, #GET MANUAL OFFSETS. rt
+  void start(const Command& c) noexcept;
+  // The path of block c reached s_mm: the share of each axis's offset. rt
+  void blend(const Command& c, double s_mm, std::size_t n_axes) noexcept;
+  // Every cycle: follow the handwheel; at #GET MANUAL OFFSETS send the
+  // offsets reached at the end of its cycle. rt
+  Fault follow(Cycle& cy) noexcept;
+  // The offset in the set point now (less than travelled while
+  // #SUPPRESS OFFSETS or #MCS leaves it out).
+  const motion::AxisVector& in_force_mm() const noexcept { return in_force_mm_; }
+
+ private:
+  bool fetch_pending_ = false;    // #GET MANUAL OFFSETS: send them at the end of this cycle
+  std::uint32_t manual_mask_ = 0;  // axes in manual mode (G201)
+  bool used_ = false;              // some axis was in manual mode in this run
+  motion::AxisVector offset_mm_{};  // handwheel offset reached so far
+  motion::AxisVector target_mm_{};
+  // Share (0..1) of the handwheel offset in each set point, when the block
+  // started and now.
+  motion::AxisVector share_start_{}, share_{};
+  motion::AxisVector in_force_mm_{};
+};
+
+// A motion block takes the handwheel offset of its axes in or out (command
+// manual_offset_axes) in step with its path, 0 at its start and 1 at its
+// end, so the set point never jumps by the offset.
+inline void HandwheelUnit::blend(const Command& c, double s_mm, std::size_t n_axes) noexcept {
+  const double length = c.segment.length();
+  const double fraction = length > 0 ? std::clamp(s_mm / length, 0.0, 1.0) : 1.0;
+  for (std::size_t j = 0; j < n_axes; ++j) {
+    const double target = (c.manual_offset_axes >> j) & 1u ? 1.0 : 0.0;
+    share_[j] = share_start_[j] + (target - share_start_[j]) * fraction;
+  }
+}
+
+}  // namespace nck::kernel

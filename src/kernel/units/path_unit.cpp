@@ -1,0 +1,84 @@
+#include "path_unit.hpp"
+
+#include "nck/kernel/braking_reserve.hpp"
+
+namespace nck::kernel {
+
+void PathUnit::start_block(const Command& c) noexcept {
+  if (c.kind != CommandKind::motion && c.kind != CommandKind::nop) {
+    passing_ = false;
+    profile_.reset();
+  }
+}
+
+void PathUnit::start_motion(const Command& c, const CommandQueue& queued, double dt_s) noexcept {
+  const double v_end = reserve_end_speed(c, queued, dt_s);
+  reserve_ = v_end < c.v_end_mm_s;
+  profile_.start(c.segment.length(), c.v_cmd_mm_s, c.limits, v_end);
+}
+
+bool PathUnit::carry_on(const Command& c) noexcept {
+  if (passing_) {
+    passing_ = false;
+    velocity_ = profile_.v();
+    return true;
+  }
+  // Right after an exact stop the first step may be gentler
+  // (Command::start_a_mm_s2: a sharp turn or a reversal).
+  if (moved_last_cycle_) profile_.limit_first_step(c.start_a_mm_s2);
+  return false;
+}
+
+void PathUnit::end_motion() noexcept {
+  if (!reserve_) starved_ = false;  // the episode ends with a block that ran as planned
+  // Continuous path: the block ends at speed and the next one takes over
+  // within this cycle (the look-ahead planned nothing to wait for between).
+  passing_ = profile_.v() > 0;
+  velocity_ = profile_.v();
+}
+
+void PathUnit::place(const Command& c, double s_mm, std::size_t n_axes) noexcept {
+  const bool trafo = c.trafo.kind != motion::CaxTrafoKind::none;
+  if (!c.mapped && !trafo) {
+    c.segment.point_at(s_mm, pos_);
+    return;
+  }
+  motion::AxisVector pcs = pos_;
+  c.segment.point_at(s_mm, pcs);
+  if (!trafo) {
+    c.map.apply(pcs, pos_, n_axes);
+    return;
+  }
+  motion::AxisVector cart = pcs;
+  if (c.mapped) c.map.apply(pcs, cart, n_axes);
+  motion::cax_to_machine(c.trafo, cart, pos_, n_axes);  // pos_ holds the previous C
+}
+
+void PathUnit::reset() noexcept {
+  velocity_ = 0;
+  passing_ = reserve_ = starved_ = false;
+  profile_.reset();
+}
+
+// While the commands queued after a motion do not reach a stop or a braking
+// distance, its end speed is lowered to what they leave room for; raised
+// again, up to the planned speed, as soon as preparation queues more.
+void PathUnit::keep_braking_reserve(const Command& c, const CommandQueue& queued, double dt_s) noexcept {
+  if (!reserve_) return;
+  const double v_end = reserve_end_speed(c, queued, dt_s);
+  profile_.set_end_velocity(v_end);
+  reserve_ = v_end < c.v_end_mm_s;
+}
+
+// The braking reserve slowed the path: preparation fell behind. One
+// warning per episode (until a block runs as planned again).
+void PathUnit::note_starved(Cycle& cy) noexcept {
+  if (starved_) return;
+  starved_ = true;
+  Event e = cy.event(EventKind::warning);
+  e.id = ErrorId::KernelPrepStarved;
+  e.message_index = kNoMessage;
+  cy.sink.emit(e);
+}
+
+}  // namespace nck::kernel

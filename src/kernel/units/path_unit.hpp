@@ -1,0 +1,79 @@
+#pragma once
+// The path of a channel, its core technology: the velocity profile of the
+// motion block that runs, the path set point, and the continuous path
+// between blocks (passing into the next block within a cycle, the braking
+// reserve while preparation has not queued enough). Other units read the
+// set point and some (C axis, synchronous operation, measuring) move axes
+// of it.
+#include <algorithm>
+
+#include "nck/kernel/command.hpp"
+#include "nck/kernel/queues.hpp"
+#include "nck/motion/path_profile.hpp"
+#include "cycle.hpp"
+
+namespace nck::kernel {
+
+class PathUnit {
+ public:
+  // Cycle start: whether the path moved in the cycle before. rt
+  void begin_cycle() noexcept {
+    moved_last_cycle_ = moved_this_cycle_;
+    moved_this_cycle_ = false;
+  }
+  // A block starts: only motions (and blocks without motion in between)
+  // continue a path at speed; anything else starts from standstill. rt
+  void start_block(const Command& c) noexcept;
+  // The body of motion c begins: its profile, ending no faster than the
+  // queued commands leave room to brake in (braking_reserve.hpp). rt
+  void start_motion(const Command& c, const CommandQueue& queued, double dt_s) noexcept;
+  // After start_motion: true when the block before ran into this one during
+  // this cycle (the set point is the distance it ran past its end, s()). rt
+  bool carry_on(const Command& c) noexcept;
+  // The last motion ended at speed: the next block takes over this cycle.
+  bool passing() const noexcept { return passing_; }
+  // One cycle of motion c (the couplings limited the profile before). rt
+  motion::ProfileSample step(const Command& c, const CommandQueue& queued, Cycle& cy) noexcept;
+  // Motion c reached its end (its end point placed). rt
+  void end_motion() noexcept;
+  // The set point of motion c at path length s_mm: the segment's point,
+  // mapped from program to machine coordinates when a rotation acts, and
+  // from Cartesian to machine X/C under #FACE / #CYL. rt
+  void place(const Command& c, double s_mm, std::size_t n_axes) noexcept;
+  // The path stands where it is (a G100 run ended at the probe). rt
+  void halt() noexcept { velocity_ = 0; }
+  // Program end: standstill, nothing carried on. rt
+  void reset() noexcept;
+
+  const motion::AxisVector& position() const noexcept { return pos_; }
+  motion::AxisVector& position() noexcept { return pos_; }
+  double velocity_mm_s() const noexcept { return velocity_; }
+  double s_mm() const noexcept { return profile_.s(); }
+  // The spindle-path couplings limit the profile each cycle.
+  motion::PathProfile& profile() noexcept { return profile_; }
+
+ private:
+  void keep_braking_reserve(const Command& c, const CommandQueue& queued, double dt_s) noexcept;
+  void note_starved(Cycle& cy) noexcept;
+
+  motion::PathProfile profile_{};
+  motion::AxisVector pos_{};
+  double velocity_ = 0;
+  bool passing_ = false;  // the last motion ended at speed: the next one takes over this cycle
+  bool reserve_ = false;  // the motion's end speed is lowered: its successors are not all queued yet
+  bool starved_ = false;  // the braking reserve slowed the path (a KernelPrepStarved episode)
+  bool moved_this_cycle_ = false, moved_last_cycle_ = false;  // the path advanced in this / the last cycle
+};
+
+// Every cycle of a motion: defined here so that it inlines into the channel.
+inline motion::ProfileSample PathUnit::step(const Command& c, const CommandQueue& queued, Cycle& cy) noexcept {
+  const double ovr = cy.in.feedhold ? 0.0 : std::clamp(cy.in.feed_override_pct, 0.0, 100.0) / 100.0;
+  if (reserve_) keep_braking_reserve(c, queued, cy.dt_s);
+  const motion::ProfileSample st = profile_.step(cy.dt_s, ovr);
+  if (reserve_ && st.braking) note_starved(cy);
+  moved_this_cycle_ = st.v_mm_s > 0;
+  velocity_ = st.v_mm_s;
+  return st;
+}
+
+}  // namespace nck::kernel

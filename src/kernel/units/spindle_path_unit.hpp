@@ -1,0 +1,43 @@
+#pragma once
+// The spindle-path couplings in the cycle (feed_link.hpp): each cycle the
+// block's feed link becomes a velocity limit of the path profile (G95, G33,
+// G63/G331 through the spindle's speed limit), the spindle follows the path
+// as a tracking axis (G63, G331, G332), and under G96 the spindle speed
+// follows the face axis. The planner only described the coupling; this
+// unit reads a command's feed_link and css.
+#include <cstdint>
+
+#include "nck/kernel/feed_link.hpp"
+#include "nck/motion/path_profile.hpp"
+#include "cycle.hpp"
+
+namespace nck::kernel {
+
+class SpindlePathUnit {
+ public:
+  // At a block's start (its feed link and G96 state). rt
+  void start(const FeedLink& f, const CssLink& css, ChannelContext& ctx) noexcept;
+  // When a motion's body begins (an error ends the program). rt
+  Fault start_motion(const FeedLink& f, motion::PathProfile& path, ChannelContext& ctx) noexcept;
+  // Before the path's step: the speed the coupling allows this cycle. rt
+  void limit_path(const FeedLink& f, motion::PathProfile& path, ChannelContext& ctx) noexcept;
+  // After the path moved to s_mm at v_mm_s: the tracking spindle's set point. rt
+  void follow_path(const FeedLink& f, double s_mm, double v_mm_s, ChannelContext& ctx) noexcept;
+  // G96, every cycle, from the machine set point (program set point pos_mm
+  // plus handwheel offset manual_mm). rt
+  void follow_css(const motion::AxisVector& pos_mm, const motion::AxisVector& manual_mm,
+                  ChannelContext& ctx) noexcept;
+  // Program end: no tracking spindle, no G96. rt
+  void end(ChannelContext& ctx) noexcept;
+
+ private:
+  void release_tap_spindle(ChannelContext& ctx) noexcept;
+
+  std::int8_t tap_spindle_ = -1;  // the spindle tracking the path (G63/G331/G332), -1 none
+  double tap_start_deg_ = 0;      // its set point when the block's motion began
+  bool thread_waiting_ = false;   // G33: the path waits for the start angle
+  double thread_last_deg_ = 0;    // the spindle's set point one cycle ago
+  CssLink css_{};                 // G96 in force
+};
+
+}  // namespace nck::kernel
