@@ -7,7 +7,7 @@
 
 #include "nck/config/load.hpp"
 #include "nck/plc/hli.hpp"
-#include "nck/plc/scenario.hpp"
+#include "nck/sim/scenario.hpp"
 
 namespace {
 
@@ -20,9 +20,9 @@ const nck::config::Machine* machine() {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   nck::Diagnostics diags;
-  nck::plc::Scenario sc =
-      nck::plc::parse_scenario(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz.plc", diags);
+  nck::sim::Scenario sc =
+      nck::sim::parse_scenario(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz.plc", diags);
   if (const nck::config::Machine* m = machine())
-    nck::plc::resolve_spindles(sc, *m, nck::plc::build_spindle_map(*m), diags);
+    nck::sim::resolve_spindles(sc, *m, nck::plc::build_spindle_map(*m), diags);
   return 0;
 }

@@ -15,7 +15,7 @@
 #include <unistd.h>
 
 #include "nck/config/load.hpp"
-#include "nck/plc/scenario.hpp"
+#include "nck/sim/scenario.hpp"
 #include "nck/sim/dry_run.hpp"
 #include "output_writers.hpp"
 #include "progress.hpp"
@@ -73,7 +73,7 @@ void record_events(const kernel::TickOutput& o, const RunNames& names, RunOutput
 }
 
 // The --plc scenario; its diagnostics go to stderr, errors make it unusable.
-std::optional<plc::Scenario> load_scenario(const std::string& path, const config::Machine& m) {
+std::optional<sim::Scenario> load_scenario(const std::string& path, const config::Machine& m) {
   std::error_code ec;
   std::ifstream f(path, std::ios::binary);
   if (!std::filesystem::is_regular_file(path, ec) || !f) {
@@ -83,8 +83,8 @@ std::optional<plc::Scenario> load_scenario(const std::string& path, const config
   std::stringstream text;
   text << f.rdbuf();
   Diagnostics ds;
-  plc::Scenario sc = plc::parse_scenario(text.str(), path, ds);
-  plc::resolve_spindles(sc, m, plc::build_spindle_map(m), ds);
+  sim::Scenario sc = sim::parse_scenario(text.str(), path, ds);
+  sim::resolve_spindles(sc, m, plc::build_spindle_map(m), ds);
   for (const Diagnostic& d : ds.items()) fmt::print(stderr, "{}\n", format(d));
   if (ds.has_errors()) return std::nullopt;
   return sc;
@@ -234,7 +234,7 @@ int run_simulation(const RunOptions& opt) {
     return 2;
   }
   sim::DryRun& run = *created;
-  plc::Scenario scenario;
+  sim::Scenario scenario;
   if (!opt.plc.empty()) {
     auto loaded_scenario = load_scenario(opt.plc, m);
     if (!loaded_scenario) return 2;

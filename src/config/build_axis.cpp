@@ -43,9 +43,9 @@ void read_gear(const ParamList& l, std::size_t g, GearStage& s, Diagnostics& d) 
   s.kv_1_s = l.num(k("kv"), s.kv_1_s);
   s.moduloo = l.num(k("moduloo"), s.moduloo);
   s.modulou = l.num(k("modulou"), s.modulou);
-  s.vb_min_null = l.num(k("vb_min_null"), s.vb_min_null);
-  s.vb_regelgrenze = l.num(k("vb_regelgrenze"), s.vb_regelgrenze);
-  s.getr_schalt_pos = l.num(k("getr_schalt_pos"), s.getr_schalt_pos);
+  s.zero_speed_deg_s = l.num(k("vb_min_null"), s.zero_speed_deg_s);
+  s.control_limit_deg_s = l.num(k("vb_regelgrenze"), s.control_limit_deg_s);
+  s.gear_change_pos_deg = l.num(k("getr_schalt_pos"), s.gear_change_pos_deg);
   s.pos_refpkt = l.num(k("pos_refpkt"), s.pos_refpkt);
   s.wegaufz = encoder_part(l, k("wegaufz"), ErrorId::ConfigWegaufzZero, d);
   s.wegaufn = encoder_part(l, k("wegaufn"), ErrorId::ConfigWegaufnZero, d);
@@ -104,9 +104,9 @@ void read_head(const ParamList& l, AxisConfig& a) {
   a.swe_neg = l.num("kenngr.swe_neg", a.swe_neg);
   a.swe_pos = l.num("kenngr.swe_pos", a.swe_pos);
   a.initial_gear_stage = l.u32("kenngr.getriebe_stufe", a.initial_gear_stage);
-  a.vorz_richtung = l.flag("kenngr.vorz_richtung", a.vorz_richtung);
-  a.beweg_richt_positive = l.flag("kenngr.beweg_richt", a.beweg_richt_positive);
-  a.vb_prozent_permille = l.num("kenngr.vb_prozent", a.vb_prozent_permille);
+  a.has_preferred_direction = l.flag("kenngr.vorz_richtung", a.has_preferred_direction);
+  a.preferred_direction_positive = l.flag("kenngr.beweg_richt", a.preferred_direction_positive);
+  a.speed_reached_tolerance_permille = l.num("kenngr.vb_prozent", a.speed_reached_tolerance_permille);
   a.ref_ohne_nocken = l.flag("kenngr.ref_ohne_nocken", a.ref_ohne_nocken);
   a.ref_ohne_rev = l.flag("kenngr.ref_ohne_rev", a.ref_ohne_rev);
   a.no_stop_by_channel_reset = l.flag("kenngr.no_stop_by_channel_reset", a.no_stop_by_channel_reset);
@@ -121,10 +121,10 @@ void read_head(const ParamList& l, AxisConfig& a) {
 }
 
 void read_drive(const ParamList& l, AxisConfig& a) {
-  a.operation_mode = l.text("antr.operation_mode", a.operation_mode);
-  a.v_reso_num = l.u32("antr.v_reso_num", a.v_reso_num);
-  a.v_reso_denom = l.u32("antr.v_reso_denom", a.v_reso_denom);
-  a.v_time_base = l.u32("antr.v_time_base", a.v_time_base);
+  if (const auto mode = drive_mode_from(l.text("antr.operation_mode", "DRIVE_DEFAULT"))) a.drive_mode = *mode;
+  a.speed_increments_num = l.u32("antr.v_reso_num", a.speed_increments_num);
+  a.speed_increments_denom = l.u32("antr.v_reso_denom", a.speed_increments_denom);
+  a.speed_time_base = l.u32("antr.v_time_base", a.speed_time_base);
   a.velocity_position_control_on = l.num("antr.velocity_position_control_on", a.velocity_position_control_on);
   a.velocity_position_control_off = l.num("antr.velocity_position_control_off", a.velocity_position_control_off);
   a.secondary_encoder = l.text("antr.secondary_encoder", a.secondary_encoder);
@@ -152,3 +152,30 @@ AxisConfig build_axis(const ParamList& l, Diagnostics& d) {
 }
 
 }  // namespace nck::config::detail
+
+namespace nck::config {
+
+std::optional<DriveMode> drive_mode_from(std::string_view symbol) noexcept {
+  struct Name {
+    std::string_view symbol;
+    DriveMode mode;
+  };
+  static constexpr Name kNames[] = {
+      {"DRIVE_DEFAULT", DriveMode::drive_default},
+      {"DRIVE_POSITION_CONTROL", DriveMode::drive_position_control},
+      {"CNC_POSITION_CONTROL", DriveMode::cnc_position_control},
+      {"DSC_POSITION_CONTROL", DriveMode::dsc_position_control},
+      {"OPEN_POSITION_LOOP_MODE", DriveMode::open_loop},
+      {"OPEN_POSITION_LOOP_MODE_EXACT", DriveMode::open_loop_exact},
+      {"OPEN_POSITION_LOOP_POS_FEEDBACK", DriveMode::open_loop_pos_feedback},
+      {"OPEN_POSITION_LOOP_VEL_FEEDBACK", DriveMode::open_loop_vel_feedback},
+      {"OPEN_POSITION_LOOP_NO_FEEDBACK", DriveMode::open_loop_no_feedback},
+  };
+  for (const Name& n : kNames)
+    if (n.symbol == symbol) return n.mode;
+  // Any other OPEN_POSITION_LOOP* spelling still means speed-controlled.
+  if (symbol.starts_with("OPEN_POSITION_LOOP")) return DriveMode::open_loop;
+  return std::nullopt;
+}
+
+}  // namespace nck::config

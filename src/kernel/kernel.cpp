@@ -44,7 +44,7 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
       const config::AxisConfig* ax =
           sp.axis_index >= 0 ? &machine_->axes[static_cast<std::size_t>(sp.axis_index)] : nullptr;
       SpindleUnit& u = spindles_[static_cast<std::size_t>(k)];
-      if (auto ok = u.axis.configure(ax, sp, machine_->sim, cycle_s_); !ok) return std::unexpected(ok.error());
+      if (auto ok = u.axis.configure(ax, sp, cycle_s_); !ok) return std::unexpected(ok.error());
       u.plc_spindle = config::is_plc_spindle(*machine_, sp);
       u.channel = static_cast<std::uint8_t>(c + 1);
       u.channel_index = static_cast<std::int8_t>(i);
@@ -106,6 +106,7 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   out.tech_outputs.clear();
   take_acknowledgements(in, t_s, out);
   take_spindle_controls(in);
+  take_spindle_measured(in);
   take_external_commands(in, t_s, out);
   run_external_commands(t_s, out);
   ChannelContext ctx{spindles_.data(), spindles_.size(), plc_outputs_.get(), &in.spindles};

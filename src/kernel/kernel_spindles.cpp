@@ -35,6 +35,17 @@ void Kernel::take_spindle_controls(const TickInput& in) noexcept {
   }
 }
 
+// A real machine's measured spindle values, taken at the start of the
+// cycle so that the channels judge the freshest ones.
+void Kernel::take_spindle_measured(const TickInput& in) noexcept {
+  if (drives_ != nullptr) return;  // the attached drives answer in tick_spindles
+  for (std::size_t i = 0; i < spindles_.size(); ++i) {
+    const spindle::DriveFeedback& m = in.spindle_measured[i];
+    const spindle::DriveFeedback& last = spindles_[i].axis.feedback();
+    if (m.valid || last.valid) spindles_[i].axis.take_feedback(m);
+  }
+}
+
 void Kernel::take_external_commands(const TickInput& in, double t_s, TickOutput& out) noexcept {
   std::uint32_t lost = in.ext_commands_lost;
   std::uint8_t channel = 1;
@@ -139,12 +150,20 @@ void Kernel::tick_spindles(double t_s, TickOutput& out) noexcept {
     SpindleUnit& u = spindles_[i];
     const auto idx = static_cast<std::int8_t>(i);
     advance_gear_job(u, idx, *plc_outputs_, t_s, out);
-    u.axis.tick(cycle_s_);
+    if (u.axis.tick(cycle_s_)) step_drive(i);
     report_spindle_changes(u, idx, t_s, out);
     fill_hli_status(u, out.hli_spindles[i]);
     const spindle::SpindleStatus& s = u.axis.status();
-    out.spindles[i] = {s.set_rpm, s.set_pos_deg, s.act_rpm, s.drive_output};
+    out.spindles[i] = {s.set_rpm, s.set_pos_deg, s.act_rpm, s.drive_output, u.axis.drive_command()};
   }
+}
+
+// A drive that answers within the cycle judges this cycle's set point at
+// once; a real one answers with the next TickInput (take_spindle_measured),
+// until then its last measured values stand. rt
+void Kernel::step_drive(std::size_t index) noexcept {
+  spindle::SpindleAxis& axis = spindles_[index].axis;
+  if (drives_ != nullptr) axis.take_feedback(drives_->step(index, axis.drive_command()));
 }
 
 }  // namespace nck::kernel

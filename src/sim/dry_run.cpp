@@ -12,6 +12,7 @@ std::expected<DryRun, Diagnostic> DryRun::create(const config::Machine& m,
   run.kernel_ = std::make_unique<kernel::Kernel>();
   if (auto ok = run.kernel_->configure(*run.machine_); !ok) return std::unexpected(ok.error());
   run.sim_ = std::make_unique<MachineSim>(*run.machine_);
+  run.kernel_->attach_drives(&run.sim_->drives());
   run.store_ = std::make_unique<prep::PlanStore>();
   run.in_ = std::make_unique<kernel::TickInput>();
   run.threaded_ = options.prep_thread;

@@ -16,7 +16,7 @@ Probe make_probe(const config::Machine& m, std::size_t ch) {
 }  // namespace
 
 MachineSim::MachineSim(const config::Machine& m)
-    : plc_(m.sim), hli_(plc::make_hli_image(m)), map_(plc::build_spindle_map(m)) {
+    : plc_(m.sim), drives_(m), hli_(plc::make_hli_image(m)), map_(plc::build_spindle_map(m)) {
   channels_ = std::min(m.channels.size(), config::kMaxChannels);
   spindles_ = std::min(map_.count, kernel::kMaxMachineSpindles);
   // A dry run has no operator: unless the scenario says otherwise, every
@@ -28,7 +28,7 @@ MachineSim::MachineSim(const config::Machine& m)
   }
 }
 
-void MachineSim::load_scenario(const plc::Scenario& scenario) { player_ = ScenarioPlayer(scenario); }
+void MachineSim::load_scenario(const sim::Scenario& scenario) { player_ = ScenarioPlayer(scenario); }
 
 void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
   t_s_ = t_s;
@@ -38,7 +38,7 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
     for (std::size_t ch = 0; ch < channels_; ++ch) in.channels[ch].handwheel_mm.fill(0.0);
     handwheel_turned_ = false;
   }
-  for (const plc::ScenarioAction& a : player_.due(t_s)) apply(a, in);
+  for (const sim::ScenarioAction& a : player_.due(t_s)) apply(a, in);
 
   plc_.tick(t_s);
   plc_.drain_acks(acks_);
@@ -77,22 +77,22 @@ void MachineSim::write(const kernel::TickOutput& out) noexcept {
 
 // One scenario action: the PLC writes its HLI controls, falls silent,
 // passes an external spindle command on, or a handwheel is turned.
-void MachineSim::apply(const plc::ScenarioAction& a, kernel::TickInput& in) noexcept {
+void MachineSim::apply(const sim::ScenarioAction& a, kernel::TickInput& in) noexcept {
   const std::size_t c = a.channel >= 1 && a.channel <= channels_ ? a.channel - 1u : 0u;
   plc::ChannelControl& ch = hli_.channel[c];
   switch (a.kind) {
-    case plc::ActionKind::feed_override: ch.feed_override_percent = a.value; return;
-    case plc::ActionKind::feedhold: ch.feedhold = a.on; return;
-    case plc::ActionKind::reset: ch.reset = true; return;
-    case plc::ActionKind::optional_stop: ch.optional_stop = a.on; return;
-    case plc::ActionKind::cycle_start: ch.cycle_start = true; return;
-    case plc::ActionKind::auto_cycle_start: auto_cycle_start_[c] = a.on; return;
-    case plc::ActionKind::silent: plc_.set_silent(a.on); return;
-    case plc::ActionKind::handwheel:
+    case sim::ActionKind::feed_override: ch.feed_override_percent = a.value; return;
+    case sim::ActionKind::feedhold: ch.feedhold = a.on; return;
+    case sim::ActionKind::reset: ch.reset = true; return;
+    case sim::ActionKind::optional_stop: ch.optional_stop = a.on; return;
+    case sim::ActionKind::cycle_start: ch.cycle_start = true; return;
+    case sim::ActionKind::auto_cycle_start: auto_cycle_start_[c] = a.on; return;
+    case sim::ActionKind::silent: plc_.set_silent(a.on); return;
+    case sim::ActionKind::handwheel:
       if (a.axis >= 0) in.channels[c].handwheel_mm[static_cast<std::size_t>(a.axis)] += a.value;
       handwheel_turned_ = true;
       return;
-    case plc::ActionKind::variable: {
+    case sim::ActionKind::variable: {
       auto& vars = in.channels[c].variables;
       for (kernel::ChannelVariable& v : vars)
         if (v.name == a.var_name) {
@@ -102,10 +102,10 @@ void MachineSim::apply(const plc::ScenarioAction& a, kernel::TickInput& in) noex
       (void)vars.push_back(kernel::ChannelVariable{a.var_name, a.value});  // beyond 16: ignored
       return;
     }
-    case plc::ActionKind::spindle_cmd:
+    case sim::ActionKind::spindle_cmd:
       if (!in.ext_commands.push_back(a.cmd)) ++in.ext_commands_lost;
       return;
-    case plc::ActionKind::spindle_stop_at_end:
+    case sim::ActionKind::spindle_stop_at_end:
       if (!a.has_spindle()) {  // every spindle of the channel
         for (std::int32_t i = 0; i < static_cast<std::int32_t>(config::kMaxSpindles); ++i) {
           const std::int8_t h = map_.at(a.channel, i);
@@ -120,15 +120,15 @@ void MachineSim::apply(const plc::ScenarioAction& a, kernel::TickInput& in) noex
   }
 }
 
-void MachineSim::apply_to_spindle(const plc::ScenarioAction& a) noexcept {
+void MachineSim::apply_to_spindle(const sim::ScenarioAction& a) noexcept {
   if (a.hli_spindle < 0 || static_cast<std::size_t>(a.hli_spindle) >= spindles_) return;
   plc::SpindleControl& sc = hli_.spindle_control[static_cast<std::size_t>(a.hli_spindle)];
   switch (a.kind) {
-    case plc::ActionKind::spindle_override: sc.override_percent = a.value; sc.override_valid = true; return;
-    case plc::ActionKind::override_valid: sc.override_valid = a.on; return;
-    case plc::ActionKind::spindle_feedhold: sc.feedhold = a.on; return;
-    case plc::ActionKind::spindle_stop_at_end: sc.stop_at_program_end = a.on; return;
-    case plc::ActionKind::spindle_reset: sc.reset = true; return;
+    case sim::ActionKind::spindle_override: sc.override_percent = a.value; sc.override_valid = true; return;
+    case sim::ActionKind::override_valid: sc.override_valid = a.on; return;
+    case sim::ActionKind::spindle_feedhold: sc.feedhold = a.on; return;
+    case sim::ActionKind::spindle_stop_at_end: sc.stop_at_program_end = a.on; return;
+    case sim::ActionKind::spindle_reset: sc.reset = true; return;
     default: return;
   }
 }

@@ -8,7 +8,7 @@ constexpr double kTimeEps_s = 1e-9;  // same rounding guard as the PLC's delays
 
 }  // namespace
 
-std::span<const plc::ScenarioAction> ScenarioPlayer::due(double now_s) noexcept {
+std::span<const sim::ScenarioAction> ScenarioPlayer::due(double now_s) noexcept {
   const std::size_t first = next_;
   while (next_ < actions_.size() && actions_[next_].t_s <= now_s + kTimeEps_s) ++next_;
   return actions_.subspan(first, next_ - first);

@@ -14,8 +14,8 @@ double wrap_modulo(double pos_deg, double lo_deg, double hi_deg) noexcept {
 }
 
 Direction preferred_direction(const config::AxisConfig& ax) noexcept {
-  if (!ax.vorz_richtung) return Direction::none;
-  return ax.beweg_richt_positive ? Direction::positive : Direction::negative;
+  if (!ax.has_preferred_direction) return Direction::none;
+  return ax.preferred_direction_positive ? Direction::positive : Direction::negative;
 }
 
 std::expected<void, ErrorId> check_preferred_direction(const config::AxisConfig& ax, Direction dir) noexcept {

@@ -27,15 +27,14 @@ std::string_view mode_name(SpindleMode m) noexcept {
 }
 
 std::expected<void, Diagnostic> SpindleAxis::configure(const config::AxisConfig* axis,
-                                                       const config::ChannelSpindle& sp,
-                                                       const config::SimConfig& sim, double cycle_s) {
+                                                       const config::ChannelSpindle& sp, double cycle_s) {
   if (!(cycle_s > 0) || !std::isfinite(cycle_s))
     return std::unexpected(make_diagnostic(ErrorId::SpindleNotConfigured,
                                            SourceLoc{sp.source.file, sp.source.line, 0},
                                            fmt::format("spindle {}: cycle time {} s is not positive",
                                                        sp.name, cycle_s)));
   *this = SpindleAxis{};
-  cfg_ = SpindleConfig::from(axis, sp, sim, cycle_s);
+  cfg_ = SpindleConfig::from(axis, sp, cycle_s);
   gear_ = cfg_.initial_gear;
   set_.pos_deg = gear().wrap(0);
   configured_ = true;

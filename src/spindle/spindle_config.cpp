@@ -14,12 +14,11 @@ GearConfig GearConfig::from(const config::GearStage& g) noexcept {
   c.accel_max_deg_s2 = g.a_max;
   c.speed_max_deg_s = g.vb_max;
   c.rapid_speed_deg_s = g.vb_eilgang;
-  c.kv_1_s = g.kv_1_s;
   c.modulo_low_deg = g.modulou;
   c.modulo_high_deg = g.moduloo;
-  c.zero_speed_deg_s = g.vb_min_null;
-  c.control_limit_deg_s = g.vb_regelgrenze;
-  c.gear_change_pos_deg = g.getr_schalt_pos;
+  c.zero_speed_deg_s = g.zero_speed_deg_s;
+  c.control_limit_deg_s = g.control_limit_deg_s;
+  c.gear_change_pos_deg = g.gear_change_pos_deg;
   c.reference_pos_deg = g.pos_refpkt;
   c.accel_curve = g.curve;
   c.reverse = g.reverse;
@@ -51,30 +50,28 @@ SpindleConfig without_axis_limits(SpindleConfig c) noexcept {
 }  // namespace
 
 SpindleConfig SpindleConfig::from(const config::AxisConfig* axis, const config::ChannelSpindle& sp,
-                                  const config::SimConfig& sim, double cycle_s) {
+                                  double cycle_s) {
   SpindleConfig c;
   c.plc_control = sp.plc_control;
   c.cycle_s = cycle_s;
-  c.speed_time_constant_s = std::max(0.0, sim.drive_speed_time_constant_s);
   // Without an axis list the gear stages keep the machine model's defaults.
   const auto stages = axis != nullptr ? axis->gears : decltype(axis->gears){};
   std::ranges::transform(stages, c.gears.begin(), GearConfig::from);
   if (axis == nullptr) return without_axis_limits(c);
   c.initial_gear = std::clamp<std::uint32_t>(axis->initial_gear_stage, 1, config::kMaxGearStages);
   c.preferred_direction = spindle::preferred_direction(*axis);
-  c.speed_reached_tolerance_permille = axis->vb_prozent_permille;
+  c.speed_reached_tolerance_permille = axis->speed_reached_tolerance_permille;
   c.keep_running_on_reset = axis->no_stop_by_channel_reset;
   c.open_loop = axis->is_speed_controlled();
   // Of the open-loop modes only the one with position feedback knows where
   // the spindle is; the others (and the seed's sensorless example) cannot
   // position or home.
-  c.can_position = !c.open_loop || axis->operation_mode == "OPEN_POSITION_LOOP_POS_FEEDBACK";
+  c.can_position = !c.open_loop || axis->drive_mode == config::DriveMode::open_loop_pos_feedback;
   // Neither position nor speed feedback: the speed acknowledgement comes
   // from the interpolator's own command value (FCT-S1 2.2.4, case 3).
-  c.sensorless = c.open_loop && !c.can_position && axis->operation_mode != "OPEN_POSITION_LOOP_VEL_FEEDBACK";
+  c.sensorless = c.open_loop && !c.can_position && axis->drive_mode != config::DriveMode::open_loop_vel_feedback;
   c.auto_homing = (axis->achs_mode & kNoAutomaticHoming) == 0;
-  c.feedforward_ta_s = std::max(0.0, axis->feedforward_ta_s);
-  c.drive_speed_scaling = SpeedScaling{axis->v_reso_num, axis->v_reso_denom, axis->v_time_base};
+  c.drive_speed_scaling = SpeedScaling{axis->speed_increments_num, axis->speed_increments_denom, axis->speed_time_base};
   return c;
 }
 

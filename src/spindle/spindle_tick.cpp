@@ -10,11 +10,11 @@ namespace {
 int sign_of(double v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
 }  // namespace
 
-void SpindleAxis::tick(double dt) noexcept {
-  if (!configured_ || !(dt > 0) || !std::isfinite(dt)) return;
+bool SpindleAxis::tick(double dt) noexcept {
+  if (!configured_ || !(dt > 0) || !std::isfinite(dt)) return false;
   if (at_rest()) {  // a stopped spindle whose drive has settled: nothing changes
     set_.step_deg = 0;
-    return;
+    return false;
   }
   const double v_old = set_.vel_deg_s;
   set_.step_deg = 0;
@@ -32,15 +32,16 @@ void SpindleAxis::tick(double dt) noexcept {
       break;
   }
   set_.accel_deg_s2 = (set_.vel_deg_s - v_old) / dt;
-  drive_model(set_.step_deg, dt);
-  update_status();
+  update_status();  // with the last feedback, until the drive's answer comes (take_feedback)
+  return true;
 }
 
-// Stopped, standing, drive settled to exactly zero: a whole tick would
-// compute the same state again (most spindles, most of the time).
+// Stopped, standing, the drive measured exactly no speed and no following
+// error (a simulated drive cuts its decay to zero once settled): a whole
+// tick would compute the same state again (most spindles, most of the time).
 bool SpindleAxis::at_rest() const noexcept {
-  return mode_ == SpindleMode::stop && set_.vel_deg_s == 0 && set_.accel_deg_s2 == 0 && drive_.lag_deg == 0 &&
-         drive_.act_vel_deg_s == 0 && drive_.filtered_vel_deg_s == 0;
+  return mode_ == SpindleMode::stop && set_.vel_deg_s == 0 && set_.accel_deg_s2 == 0 &&
+         status_.act_rpm == 0 && status_.lag_deg == 0;
 }
 
 void SpindleAxis::advance(double step_deg) noexcept {

@@ -69,9 +69,10 @@ struct GearStage {
   double vb_eilgang = 166.666;  // P-AXIS-00209 rapid
   double kv_1_s = 10;       // P-AXIS-00099 position-loop gain
   double moduloo = 360, modulou = 0;  // P-AXIS-00126/00127
-  double vb_min_null = 0.1;           // P-AXIS-00216 (deg/s)
-  double vb_regelgrenze = 200;        // P-AXIS-00220 (deg/s)
-  double getr_schalt_pos = 0;         // P-AXIS-00078 (deg)
+  // Spindle only (the list keys in parentheses):
+  double zero_speed_deg_s = 0.1;      // P-AXIS-00216 (vb_min_null): standstill below this
+  double control_limit_deg_s = 200;   // P-AXIS-00220 (vb_regelgrenze): position loop opens above
+  double gear_change_pos_deg = 0;     // P-AXIS-00078 (getr_schalt_pos)
   double pos_refpkt = 0;              // P-AXIS-00152
   std::uint32_t wegaufz = 1, wegaufn = 1;
   bool reverse = false;
@@ -99,6 +100,23 @@ inline constexpr std::uint32_t FCT_VOL_COMP_COMPUTATION = 0x00001000;  // accept
 inline constexpr std::uint32_t FCT_3D_DIST_CTRL = 0x00100000;          // see docs/decisions.md
 }  // namespace decoder_fct
 
+// Where a drive's position loop is closed (antr.operation_mode, P-AXIS-00320).
+// The open-loop modes make a speed-controlled spindle.
+enum class DriveMode : std::uint8_t {
+  drive_default,           // DRIVE_DEFAULT
+  drive_position_control,  // DRIVE_POSITION_CONTROL
+  cnc_position_control,    // CNC_POSITION_CONTROL
+  dsc_position_control,    // DSC_POSITION_CONTROL
+  open_loop,               // OPEN_POSITION_LOOP_MODE
+  open_loop_exact,         // OPEN_POSITION_LOOP_MODE_EXACT
+  open_loop_pos_feedback,  // OPEN_POSITION_LOOP_POS_FEEDBACK: knows its position
+  open_loop_vel_feedback,  // OPEN_POSITION_LOOP_VEL_FEEDBACK: knows its speed only
+  open_loop_no_feedback,   // OPEN_POSITION_LOOP_NO_FEEDBACK
+};
+constexpr bool is_open_loop(DriveMode m) noexcept { return m >= DriveMode::open_loop; }
+// The mode an antr.operation_mode symbol names, or nullopt (setup).
+std::optional<DriveMode> drive_mode_from(std::string_view symbol) noexcept;
+
 // One axis list (achs_mds[i]): a path axis or a spindle.
 struct AxisConfig {
   SourceRef source;
@@ -109,13 +127,15 @@ struct AxisConfig {
   std::uint32_t antr_typ = 4;           // kenngr.antr_typ (4 = simulation)
   double swe_neg = -10000, swe_pos = 10000;  // software limits (mm / deg)
   std::uint32_t initial_gear_stage = 1; // kenngr.getriebe_stufe
-  bool vorz_richtung = false;           // P-AXIS-00224
-  bool beweg_richt_positive = false;    // P-AXIS-00031
-  double vb_prozent_permille = 100;     // P-AXIS-00217 (0.1 %)
+  bool has_preferred_direction = false;       // P-AXIS-00224 (kenngr.vorz_richtung), spindle
+  bool preferred_direction_positive = false;  // P-AXIS-00031 (kenngr.beweg_richt), spindle
+  double speed_reached_tolerance_permille = 100;  // P-AXIS-00217 (kenngr.vb_prozent), spindle
   bool ref_ohne_nocken = false, ref_ohne_rev = false;
   bool no_stop_by_channel_reset = false;  // P-AXIS-00455
-  std::string operation_mode = "DRIVE_DEFAULT";  // antr.operation_mode
-  std::uint32_t v_reso_num = 1, v_reso_denom = 36, v_time_base = 0;
+  DriveMode drive_mode = DriveMode::drive_default;  // antr.operation_mode
+  // Speed command scaling of a speed-controlled spindle (antr.v_reso_num,
+  // v_reso_denom, v_time_base): increments per 0.001 deg per time base.
+  std::uint32_t speed_increments_num = 1, speed_increments_denom = 36, speed_time_base = 0;
   std::array<GearStage, kMaxGearStages> gears{};
   // Added by the config layer (all in internal units):
   std::uint32_t def_cax_gear_st = 1;            // P-AXIS-00052
@@ -130,7 +150,7 @@ struct AxisConfig {
   bool fast_from_cam = true;                    // P-AXIS-00064
   std::string feedhold_deceleration_mode = "DEFAULT_DECELERATION";  // P-AXIS-00556
   std::string secondary_encoder;                // P-AXIS-00824
-  bool is_speed_controlled() const { return operation_mode.rfind("OPEN_POSITION_LOOP", 0) == 0; }
+  bool is_speed_controlled() const { return is_open_loop(drive_mode); }
 
   bool is_spindle() const { return kind == AxisKind::spindle; }
   // P-AXIS-00015 0x0204: a spindle that may become a C axis (#CAX).

@@ -17,6 +17,7 @@
 #include "nck/config/machine.hpp"
 #include "nck/core/diagnostic.hpp"
 #include "nck/kernel/queues.hpp"
+#include "nck/kernel/spindle_drives.hpp"
 #include "nck/kernel/tick_io.hpp"
 #include "nck/plc/ext_command.hpp"
 #include "nck/plc/hli.hpp"
@@ -49,6 +50,10 @@ class Kernel {
 
   // setup: builds channels, spindles and queues from the machine.
   std::expected<void, Diagnostic> configure(const config::Machine& machine);
+  // setup: drives that answer within the cycle (a simulated machine); they
+  // must outlive the kernel's ticks. Without them (nullptr) the measured
+  // values come with TickInput::spindle_measured.
+  void attach_drives(SpindleDrives* drives) noexcept { drives_ = drives; }
 
   std::size_t channel_count() const;
   // The machine's spindles (a spindle shared by channels is one), in the
@@ -80,10 +85,12 @@ class Kernel {
  private:
   void take_acknowledgements(const TickInput& in, double t_s, TickOutput& out) noexcept;
   void take_spindle_controls(const TickInput& in) noexcept;
+  void take_spindle_measured(const TickInput& in) noexcept;
   void take_external_commands(const TickInput& in, double t_s, TickOutput& out) noexcept;
   void run_external_commands(double t_s, TickOutput& out) noexcept;
   void hand_out_external_commands() noexcept;
   void tick_spindles(double t_s, TickOutput& out) noexcept;
+  void step_drive(std::size_t index) noexcept;
 
   std::unique_ptr<const config::Machine> machine_;  // own copy: channels refer into it
   std::vector<SpindleUnit> spindles_;
@@ -91,6 +98,7 @@ class Kernel {
   plc::SpindleMap spindle_map_;
   plc::ExtCommandQueue ext_commands_;
   std::unique_ptr<PlcOutputs> plc_outputs_;
+  SpindleDrives* drives_ = nullptr;  // not owned
   std::vector<std::unique_ptr<CommandQueue>> command_queues_;
   std::vector<std::unique_ptr<FeedbackQueue>> feedback_queues_;
   std::vector<std::unique_ptr<Channel>> channels_;

@@ -4,7 +4,8 @@
 // Like ros2_control's read -> update -> write: whatever stands for the
 // machine (the simulated one in nck/sim, or an integrator's real I/O) fills
 // a TickInput before each cycle — the PLC's HLI controls and
-// acknowledgements, external spindle commands, handwheel and probe — and
+// acknowledgements, external spindle commands, handwheel and probe, the
+// spindle drives' measured actual values — and
 // takes the TickOutput after it — set points, technology functions for the
 // PLC, the HLI spindle status, events. The kernel sees nothing else.
 #include <array>
@@ -17,6 +18,7 @@
 #include "nck/kernel/program_state.hpp"
 #include "nck/plc/ext_command.hpp"
 #include "nck/plc/hli.hpp"
+#include "nck/spindle/drive_io.hpp"
 
 namespace nck::kernel {
 
@@ -59,6 +61,11 @@ struct ChannelInput {
 struct TickInput {
   std::array<ChannelInput, config::kMaxChannels> channels{};
   std::array<plc::SpindleControl, kMaxMachineSpindles> spindles{};  // by kernel spindle index
+  // What each spindle's drive measured at the start of this cycle (drive
+  // sense, by kernel spindle index): the kernel judges speed reached, in
+  // position and standstill from it. Not read while a Kernel::attach_drives
+  // interface answers within the cycle (the simulated machine).
+  std::array<spindle::DriveFeedback, kMaxMachineSpindles> spindle_measured{};
   // Outputs the PLC acknowledged since the last cycle (by the handle the
   // kernel gave them), and external spindle commands that arrived.
   FixedVector<plc::PlcAck, kMaxPendingOutputs> acks;
@@ -83,8 +90,9 @@ struct ChannelOutput {
 struct SpindleOutput {
   double set_rpm = 0;       // signed set-point speed
   double set_pos_deg = 0;   // set-point position in the modulo range
-  double act_rpm = 0;       // simulated actual speed
+  double act_rpm = 0;       // measured actual speed (the drive's feedback)
   double drive_output = 0;  // speed command in drive units (antr.v_reso_*)
+  spindle::DriveCommand drive{};  // the set point as the drive gets it (drive sense)
 };
 
 // A technology function handed to the PLC in this cycle.

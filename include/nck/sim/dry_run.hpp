@@ -24,7 +24,7 @@
 #include "nck/core/diagnostic.hpp"
 #include "nck/kernel/kernel.hpp"
 #include "nck/nc/modal.hpp"
-#include "nck/plc/scenario.hpp"
+#include "nck/sim/scenario.hpp"
 #include "nck/prep/channel_prep.hpp"
 #include "nck/prep/plan_store.hpp"
 #include "nck/sim/machine_sim.hpp"
@@ -60,7 +60,7 @@ class DryRun {
   DryRun& operator=(DryRun&&) noexcept;
 
   // setup: the --plc scenario; it must stay alive while the run goes on.
-  void load_scenario(const plc::Scenario& scenario) { sim_->load_scenario(scenario); }
+  void load_scenario(const sim::Scenario& scenario) { sim_->load_scenario(scenario); }
 
   // setup side: every channel's preparation decodes and plans what fits
   // (with prep_thread: waits until the preparation thread has caught up).

@@ -4,7 +4,9 @@
 // PLC's HLI controls and acknowledgements, external spindle commands from
 // the --plc scenario, handwheel turns, the measuring probe), write() takes
 // the TickOutput after it (technology functions to acknowledge, the HLI
-// spindle status, the axes' set points that the probe watches).
+// spindle status, the axes' set points that the probe watches). Its spindle
+// drives (SpindleDrives) answer within the cycle: the kernel steps them
+// through the interface it is given (Kernel::attach_drives).
 //
 // An integrator replaces this class with real I/O; the kernel cannot tell
 // the difference. Real-time contract: read() and write() never allocate,
@@ -15,11 +17,12 @@
 #include "nck/config/machine.hpp"
 #include "nck/kernel/tick_io.hpp"
 #include "nck/plc/hli.hpp"
-#include "nck/plc/scenario.hpp"
+#include "nck/sim/scenario.hpp"
 #include "nck/sim/distance_sensor.hpp"
 #include "nck/sim/plc_sim.hpp"
 #include "nck/sim/probe.hpp"
 #include "nck/sim/scenario_player.hpp"
+#include "nck/sim/spindle_drives.hpp"
 
 namespace nck::sim {
 
@@ -30,7 +33,7 @@ class MachineSim {
  public:
   explicit MachineSim(const config::Machine& m);  // setup
   // setup: the --plc scenario; it must stay alive while the sim runs.
-  void load_scenario(const plc::Scenario& scenario);
+  void load_scenario(const sim::Scenario& scenario);
 
   // rt: the machine's inputs for the cycle starting at t_s.
   void read(double t_s, kernel::TickInput& in) noexcept;
@@ -42,6 +45,10 @@ class MachineSim {
     if (ch < sensor_on_.size()) sensor_on_[ch] = true;
   }
 
+  // The spindle drives, for Kernel::attach_drives (this object must outlive
+  // the kernel's ticks).
+  SpindleDrives& drives() noexcept { return drives_; }
+
   // The HLI image as the PLC sees it: controls as the PLC (scenario) set
   // them, spindle status as the CNC last wrote it.
   const plc::HliImage& hli() const noexcept { return hli_; }
@@ -51,10 +58,11 @@ class MachineSim {
   bool scenario_pending() const noexcept { return !player_.finished(); }
 
  private:
-  void apply(const plc::ScenarioAction& a, kernel::TickInput& in) noexcept;
-  void apply_to_spindle(const plc::ScenarioAction& a) noexcept;
+  void apply(const sim::ScenarioAction& a, kernel::TickInput& in) noexcept;
+  void apply_to_spindle(const sim::ScenarioAction& a) noexcept;
 
   PlcSim plc_;
+  SpindleDrives drives_;
   plc::HliImage hli_;
   plc::SpindleMap map_;
   ScenarioPlayer player_;

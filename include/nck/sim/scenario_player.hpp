@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <span>
 
-#include "nck/plc/scenario.hpp"
+#include "nck/sim/scenario.hpp"
 
 namespace nck::sim {
 
@@ -13,14 +13,14 @@ class ScenarioPlayer {
  public:
   ScenarioPlayer() = default;
   // The scenario must outlive the player (it only keeps a view).
-  explicit ScenarioPlayer(const plc::Scenario& sc) noexcept : actions_(sc.actions) {}
+  explicit ScenarioPlayer(const sim::Scenario& sc) noexcept : actions_(sc.actions) {}
 
-  std::span<const plc::ScenarioAction> due(double now_s) noexcept;
+  std::span<const sim::ScenarioAction> due(double now_s) noexcept;
   bool finished() const noexcept { return next_ >= actions_.size(); }
   void rewind() noexcept { next_ = 0; }
 
  private:
-  std::span<const plc::ScenarioAction> actions_;
+  std::span<const sim::ScenarioAction> actions_;
   std::size_t next_ = 0;
 };
 

@@ -23,7 +23,7 @@ inline double drive_output_value(const SpeedScaling& sc, double speed_rpm, doubl
 }
 
 inline double drive_output_value(const config::AxisConfig& ax, double speed_rpm, double cycle_s) noexcept {
-  return drive_output_value(ax.v_reso_num, ax.v_reso_denom, ax.v_time_base, speed_rpm, cycle_s);
+  return drive_output_value(ax.speed_increments_num, ax.speed_increments_denom, ax.speed_time_base, speed_rpm, cycle_s);
 }
 
 }  // namespace nck::spindle

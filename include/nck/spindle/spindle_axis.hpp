@@ -3,6 +3,10 @@
 // configured at setup, then commanded and ticked from the kernel's cyclic
 // path. Everything after configure() is noexcept and allocation-free.
 //
+// It makes the set point and judges the drive's measured actual values
+// (take_feedback); the drive itself is not part of it (nck/sim simulates
+// one, a real machine has its own).
+//
 // Speeds are rpm at the command edge (signed: M3 +, M4 -), deg/s inside;
 // positions are degrees in the gear stage's modulo range.
 #include <cstdint>
@@ -10,6 +14,7 @@
 
 #include "nck/config/machine.hpp"
 #include "nck/core/diagnostic.hpp"
+#include "nck/spindle/drive_io.hpp"
 #include "nck/spindle/positioning.hpp"
 #include "nck/spindle/spindle_config.hpp"
 #include "nck/spindle/spindle_state.hpp"
@@ -22,8 +27,7 @@ class SpindleAxis {
   // `axis` may be null for a PLC spindle over the channel HLI (plc_control):
   // it then runs on default gear data. Fails on a non-positive cycle time. // setup
   std::expected<void, Diagnostic> configure(const config::AxisConfig* axis,
-                                            const config::ChannelSpindle& sp,
-                                            const config::SimConfig& sim, double cycle_s);
+                                            const config::ChannelSpindle& sp, double cycle_s);
 
   // --- commands (rt) -------------------------------------------------------
   SpindleResult rotate(double rpm, bool g167 = false) noexcept;        // M3 (+) / M4 (-) / S
@@ -50,8 +54,19 @@ class SpindleAxis {
   void axis_set_point(double pos_deg, double vel_deg_s) noexcept;     // per cycle in axis mode
   SpindleResult leave_axis_mode() noexcept;
 
-  // One interpolation cycle of dt_s seconds. // rt
-  void tick(double dt_s) noexcept;
+  // One interpolation cycle of dt_s seconds: the set point moves, and the
+  // status follows with the last feedback. False when the spindle is at
+  // rest (stopped, its drive settled): nothing changed, the drive needs no
+  // new command. // rt
+  bool tick(double dt_s) noexcept;
+  // What the drive gets for the cycle just ticked (drive sense). // rt
+  DriveCommand drive_command() const noexcept;
+  // The drive's measured actual values (drive sense); the status (actual
+  // speed and position, speed reached, standstill, in position) follows
+  // from them and the set point. Invalid feedback: the set point counts as
+  // the actual value. // rt
+  void take_feedback(const DriveFeedback& feedback) noexcept;
+  const DriveFeedback& feedback() const noexcept { return feedback_; }
 
   const SpindleStatus& status() const noexcept { return status_; }
   const SpindleConfig& config() const noexcept { return cfg_; }
@@ -90,9 +105,8 @@ class SpindleAxis {
   double homing_speed_deg_s() const noexcept;
   double positioning_speed_deg_s() const noexcept;
   void on_reference() noexcept;
-  // drive.cpp
+  // spindle_status.cpp
   double drive_sense() const noexcept;  // -1 with getriebe[i].reverse
-  void drive_model(double step_deg, double dt) noexcept;
   void update_status() noexcept;
 
   SpindleConfig cfg_{};
@@ -109,7 +123,7 @@ class SpindleAxis {
   ToolLimits tool_{};
   Feedforward ff_{};
   AxisModeInput axis_{};
-  DriveModel drive_{};
+  DriveFeedback feedback_{};  // the drive's last measured values (drive sense)
 
   SpindleStatus status_{};
 };

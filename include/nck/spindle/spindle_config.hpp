@@ -21,7 +21,6 @@ struct GearConfig {
   double accel_max_deg_s2 = 1000;      // a_max: cap over every weighting; <= 0 none
   double speed_max_deg_s = 200;        // vb_max; <= 0 none
   double rapid_speed_deg_s = 166.666;  // vb_eilgang: gear-change approach, homing
-  double kv_1_s = 10;                  // position-loop gain of the drive model
   double modulo_low_deg = 0;           // modulou
   double modulo_high_deg = 360;        // moduloo
   double zero_speed_deg_s = 0.1;       // vb_min_null: standstill below this
@@ -50,15 +49,13 @@ struct SpindleConfig {
   bool auto_homing = true;      // home before M19 / M5 when unreferenced (not with achs_mode 0x100)
   bool sensorless = false;      // open loop without any feedback: acknowledge from the set speed
   bool plc_control = false;     // PLC spindle over the channel HLI (no axis list)
-  double feedforward_ta_s = 1e-6;       // drive time constant Ta of the feedforward path
-  double speed_time_constant_s = 0.02;  // drive speed lag of a speed-controlled spindle
   SpeedScaling drive_speed_scaling{};   // antr.v_reso_num / v_reso_denom / v_time_base
   double cycle_s = 0.001;
   double in_position_window_deg = 0.01;  // nck's own: no parameter in the seeds
 
   // `axis` may be null (PLC spindle without an axis list): default gear data. // setup
   static SpindleConfig from(const config::AxisConfig* axis, const config::ChannelSpindle& sp,
-                            const config::SimConfig& sim, double cycle_s);
+                            double cycle_s);
 };
 
 }  // namespace nck::spindle

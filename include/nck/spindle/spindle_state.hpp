@@ -86,11 +86,4 @@ struct AxisModeInput {
   double vel_deg_s = 0;
 };
 
-// The simulated drive behind the set point.
-struct DriveModel {
-  double lag_deg = 0;
-  double filtered_vel_deg_s = 0; // set speed through the drive time constant Ta
-  double act_vel_deg_s = 0;
-};
-
 }  // namespace nck::spindle

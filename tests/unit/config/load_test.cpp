@@ -82,7 +82,7 @@ TEST(LoadExamples, LatheHasThreeGearStages) {
   EXPECT_TRUE(a.gear(2).given);
   EXPECT_FALSE(a.gear(4).given);
   EXPECT_DOUBLE_EQ(a.gear(1).vb_max, 4800.0);  // 800 rpm
-  EXPECT_DOUBLE_EQ(a.gear(2).getr_schalt_pos, 45.0);
+  EXPECT_DOUBLE_EQ(a.gear(2).gear_change_pos_deg, 45.0);
   EXPECT_EQ(a.gear(3).curve.type, 2u);
   EXPECT_DOUBLE_EQ(a.gear(3).curve.n_grenz_deg_s, 12000.0);
   EXPECT_DOUBLE_EQ(a.gear(3).curve.b3, -1.92901234e-10);

@@ -324,8 +324,8 @@ TEST(ChannelSync, MvsSlpWaitsAtExplicitSynchronisationOnly) {
 // --- spindle functions ----------------------------------------------------
 
 // X Y Z plus one spindle S1 (log 6, the main spindle "S", kernel index 0),
-// built so its speed can be followed by hand: speed-controlled with no drive
-// lag (the actual speed is the set speed), 60000 deg/s^2 = 10 rpm more per
+// built so its speed can be followed by hand: no drive attached and no
+// measured values (the actual speed is the set speed), 60000 deg/s^2 = 10 rpm more per
 // cycle, at most 6000 deg/s = 1000 rpm, "speed reached" within 9.5 % of the
 // commanded speed (vb_prozent 95 permille).
 config::Machine spindle_machine() {
@@ -334,8 +334,8 @@ config::Machine spindle_machine() {
   ax.log_axis_nr = 6;
   ax.name = "S1";
   ax.kind = config::AxisKind::spindle;
-  ax.operation_mode = "OPEN_POSITION_LOOP";
-  ax.vb_prozent_permille = 95;
+  ax.drive_mode = config::DriveMode::open_loop;
+  ax.speed_reached_tolerance_permille = 95;
   for (auto& g : ax.gears) {
     g.vb_max = 6000;
     g.a_beschl = g.a_brems = g.a_grenz = g.a_max = 60000;
@@ -347,7 +347,6 @@ config::Machine spindle_machine() {
   sp.axis_index = static_cast<int>(m.axes.size() - 1);
   m.channels[0].spindles.push_back(sp);
   m.channels[0].main_spindle_ax_nr = 6;
-  m.sim.drive_speed_time_constant_s = 0;
   return m;
 }
 

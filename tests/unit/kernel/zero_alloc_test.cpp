@@ -15,7 +15,7 @@
 #include <sstream>
 
 #include "nck/config/load.hpp"
-#include "nck/plc/scenario.hpp"
+#include "nck/sim/scenario.hpp"
 #include "nck/sim/dry_run.hpp"
 
 // GCC 12 takes the malloc/free inside these replacements for a mismatch
@@ -74,14 +74,14 @@ std::uint64_t run_counting(const Example& ex, bool prep_thread = false) {
   auto run = sim::DryRun::create(*loaded.machine, programs, options);
   EXPECT_TRUE(run.has_value());
   if (!run) return 0;
-  plc::Scenario scenario;
+  sim::Scenario scenario;
   if (ex.plc) {
     Diagnostics ds;
     std::ifstream f(root + "/" + ex.plc);
     std::stringstream text;
     text << f.rdbuf();
-    scenario = plc::parse_scenario(text.str(), ex.plc, ds);
-    plc::resolve_spindles(scenario, *loaded.machine, plc::build_spindle_map(*loaded.machine), ds);
+    scenario = sim::parse_scenario(text.str(), ex.plc, ds);
+    sim::resolve_spindles(scenario, *loaded.machine, plc::build_spindle_map(*loaded.machine), ds);
     EXPECT_FALSE(ds.has_errors()) << ex.plc;
     run->load_scenario(scenario);
   }

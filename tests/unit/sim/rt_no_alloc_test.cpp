@@ -9,7 +9,7 @@
 
 #include <memory>
 
-#include "nck/plc/scenario.hpp"
+#include "nck/sim/scenario.hpp"
 #include "nck/sim/machine_sim.hpp"
 
 namespace {
@@ -49,11 +49,11 @@ TEST(SimRealTime, ReadAndWriteDoNotAllocate) {
   m.channels[0].spindles[0].log_axis_nr = 1;
   m.sim.m_ack_delay_s = {{8, 0.02}};
   Diagnostics d;
-  auto sc = plc::parse_scenario(
+  auto sc = sim::parse_scenario(
       "0.001 override S1 50\n0.002 spindle_cmd S1 M3 REV100\n0.003 silent on\n0.004 silent off\n"
       "0.005 spindle_stop_at_end on\n0.006 reset\n",
       "rt.plc", d);
-  plc::resolve_spindles(sc, m, plc::build_spindle_map(m), d);
+  sim::resolve_spindles(sc, m, plc::build_spindle_map(m), d);
   ASSERT_FALSE(d.has_errors());
   MachineSim sim(m);
   sim.load_scenario(sc);

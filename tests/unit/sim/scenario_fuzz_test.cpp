@@ -9,10 +9,10 @@
 
 #include <gtest/gtest.h>
 
-#include "nck/plc/scenario.hpp"
+#include "nck/sim/scenario.hpp"
 #include "nck/sim/machine_sim.hpp"
 
-namespace nck::plc {
+namespace nck::sim {
 namespace {
 
 constexpr std::string_view kValid =
@@ -64,7 +64,7 @@ void run(std::string_view text) {
   m.channels[0].spindles.resize(1);
   m.channels[0].spindles[0].name = "S1";
   m.channels[0].spindles[0].log_axis_nr = 1;
-  auto map = build_spindle_map(m);
+  auto map = plc::build_spindle_map(m);
   resolve_spindles(sc, m, map, d);
   sim::MachineSim machine(m);
   machine.load_scenario(sc);
@@ -127,4 +127,4 @@ TEST(ScenarioFuzz, HugeNumbersAndLongLines) {
 }
 
 }  // namespace
-}  // namespace nck::plc
+}  // namespace nck::sim

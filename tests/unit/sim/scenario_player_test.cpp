@@ -2,15 +2,15 @@
 
 #include <memory>
 
-#include "../plc/scenario_fixture.hpp"
+#include "scenario_fixture.hpp"
 #include "nck/sim/machine_sim.hpp"
 #include "nck/sim/scenario_player.hpp"
 
 namespace nck::sim {
 namespace {
 
-using plc::ActionKind;
-using plc::testing::Fixture;
+using sim::ActionKind;
+using sim::testing::Fixture;
 
 TEST(ScenarioPlayer, YieldsDueActionsOnceAtTheirCycle) {
   Fixture f("0.002 reset\n0.0005 feedhold on\n0.002 feedhold off\n0.010 silent on\n");

@@ -10,9 +10,9 @@ namespace {
 
 TEST(DriveScaling, SensorlessExample3000RpmIs32767) {
   config::AxisConfig ax;
-  ax.v_time_base = 0;
-  ax.v_reso_num = 32767;
-  ax.v_reso_denom = 1080000000;
+  ax.speed_time_base = 0;
+  ax.speed_increments_num = 32767;
+  ax.speed_increments_denom = 1080000000;
   EXPECT_NEAR(drive_output_value(ax, 3000, 0.001), 32767, 1e-6);
   EXPECT_NEAR(drive_output_value(ax, -3000, 0.001), -32767, 1e-6);
   EXPECT_NEAR(drive_output_value(ax, 1500, 0.001), 16383.5, 1e-6);
@@ -20,9 +20,9 @@ TEST(DriveScaling, SensorlessExample3000RpmIs32767) {
 
 TEST(DriveScaling, SpeedFeedbackExample1RpmIs1) {
   config::AxisConfig ax;
-  ax.v_time_base = 0;
-  ax.v_reso_num = 1;
-  ax.v_reso_denom = 360000;
+  ax.speed_time_base = 0;
+  ax.speed_increments_num = 1;
+  ax.speed_increments_denom = 360000;
   EXPECT_NEAR(drive_output_value(ax, 1, 0.001), 1, 1e-12);
   EXPECT_NEAR(drive_output_value(ax, 2500, 0.001), 2500, 1e-9);
 }

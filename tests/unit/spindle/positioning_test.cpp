@@ -41,14 +41,14 @@ TEST(Positioning, M19WithoutDirection) {
 TEST(Positioning, PreferredDirection60254) {
   config::AxisConfig ax;
   EXPECT_TRUE(check_preferred_direction(ax, Direction::negative).has_value());  // not configured
-  ax.vorz_richtung = true;
-  ax.beweg_richt_positive = true;
+  ax.has_preferred_direction = true;
+  ax.preferred_direction_positive = true;
   EXPECT_TRUE(check_preferred_direction(ax, Direction::positive).has_value());
   auto bad = check_preferred_direction(ax, Direction::negative);
   ASSERT_FALSE(bad.has_value());
   EXPECT_EQ(number(bad.error()), 60254u);
   EXPECT_TRUE(check_preferred_direction(ax, Direction::none).has_value());
-  ax.beweg_richt_positive = false;
+  ax.preferred_direction_positive = false;
   EXPECT_FALSE(check_preferred_direction(ax, Direction::positive).has_value());
   EXPECT_EQ(preferred_direction(ax), Direction::negative);
 }

@@ -17,8 +17,8 @@ inline config::AxisConfig spindle_axis_config() {
     g.vb_max = 60000;        // 10000 rpm
     g.vb_eilgang = 600;      // 100 rpm
     g.kv_1_s = 10;
-    g.vb_regelgrenze = 0;    // no control limit unless a test sets one
-    g.vb_min_null = 0.1;
+    g.control_limit_deg_s = 0;    // no control limit unless a test sets one
+    g.zero_speed_deg_s = 0.1;
     g.pos_refpkt = 0;
   }
   return ax;
@@ -43,8 +43,7 @@ int run_until(SpindleAxis& s, Done done, int max_ticks, double dt = 0.001) {
 
 inline SpindleAxis make_spindle(const config::AxisConfig& ax, double cycle_s = 0.001) {
   SpindleAxis s;
-  config::SimConfig sim;
-  auto r = s.configure(&ax, channel_spindle(), sim, cycle_s);
+  auto r = s.configure(&ax, channel_spindle(), cycle_s);
   (void)r;
   return s;
 }

@@ -3,9 +3,9 @@
 // channel 2) and a scenario parsed and resolved against it.
 #include <string_view>
 
-#include "nck/plc/scenario.hpp"
+#include "nck/sim/scenario.hpp"
 
-namespace nck::plc::testing {
+namespace nck::sim::testing {
 
 inline config::Machine machine() {
   config::Machine m;
@@ -28,7 +28,7 @@ inline config::Machine machine() {
 
 struct Fixture {
   config::Machine m = machine();
-  SpindleMap map = build_spindle_map(m);
+  plc::SpindleMap map = plc::build_spindle_map(m);
   Diagnostics diags;
   Scenario sc;
   explicit Fixture(std::string_view text) {
@@ -37,4 +37,4 @@ struct Fixture {
   }
 };
 
-}  // namespace nck::plc::testing
+}  // namespace nck::sim::testing

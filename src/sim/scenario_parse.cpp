@@ -8,10 +8,10 @@
 #include <fmt/format.h>
 
 #include "nck/core/edit_distance.hpp"
-#include "nck/plc/scenario.hpp"
+#include "nck/sim/scenario.hpp"
 #include "scenario_text.hpp"
 
-namespace nck::plc {
+namespace nck::sim {
 namespace {
 
 using detail::iequals;
@@ -238,7 +238,7 @@ bool LineParser::take_spindle(ScenarioAction& a) {
     return fail(ErrorId::PlcScenarioBadSpindleName, t.column,
                 fmt::format("'{}' is not a spindle name; write S or S followed by letters, digits "
                             "or _ (at most {} characters), e.g. S1",
-                            detail::printable(t.text), kSpindleNameChars - 1));
+                            detail::printable(t.text), plc::kSpindleNameChars - 1));
   std::copy(t.text.begin(), t.text.end(), a.spindle_name.begin());
   a.spindle_name[t.text.size()] = '\0';
   return true;
@@ -297,7 +297,7 @@ bool LineParser::take_keyword_value(std::string_view key, double& value, bool& s
 }
 
 bool LineParser::take_spindle_cmd(ScenarioAction& a) {
-  ExtSpindleCommand& c = a.cmd;
+  plc::ExtSpindleCommand& c = a.cmd;
   c.channel = a.channel;
   c.spindle_name = a.spindle_name;
   bool have_fn = false;
@@ -311,7 +311,7 @@ bool LineParser::take_spindle_cmd(ScenarioAction& a) {
       if (have_fn)
         return fail(ErrorId::PlcScenarioBadSpindleCommand, t.column,
                     "only one of M3/M4/M5/M19 per command");
-      c.fn = static_cast<ExtFunction>(*fn);
+      c.fn = static_cast<plc::ExtFunction>(*fn);
       have_fn = true;
       ++next_;
     } else {
@@ -325,9 +325,9 @@ bool LineParser::take_spindle_cmd(ScenarioAction& a) {
   if (!have_fn)
     return fail(ErrorId::PlcScenarioBadSpindleCommand, col,
                 "the spindle command names no M3/M4/M5/M19");
-  if (c.fn == ExtFunction::m5 && (c.has_rev || c.has_pos))
+  if (c.fn == plc::ExtFunction::m5 && (c.has_rev || c.has_pos))
     return fail(ErrorId::PlcScenarioBadSpindleCommand, col, "M5 takes neither REV nor POS");
-  if (c.has_pos && c.fn != ExtFunction::m19)
+  if (c.has_pos && c.fn != plc::ExtFunction::m19)
     return fail(ErrorId::PlcScenarioBadSpindleCommand, col, "POS needs M19");
   return true;
 }
@@ -373,4 +373,4 @@ Scenario parse_scenario(std::string_view text, std::string file, Diagnostics& di
   return sc;
 }
 
-}  // namespace nck::plc
+}  // namespace nck::sim

@@ -3,10 +3,10 @@
 
 #include <fmt/format.h>
 
-#include "nck/plc/scenario.hpp"
+#include "nck/sim/scenario.hpp"
 #include "scenario_text.hpp"
 
-namespace nck::plc {
+namespace nck::sim {
 namespace {
 
 bool needs_spindle(ActionKind k) {
@@ -20,20 +20,20 @@ bool needs_spindle(ActionKind k) {
   }
 }
 
-// Index of the named spindle in the channel, or kNoSpindle. The exact
+// Index of the named spindle in the channel, or plc::kNoSpindle. The exact
 // designation wins; otherwise the channel's main-spindle name addresses the
 // configured main spindle.
 std::int8_t find_spindle(const config::ChannelConfig& ch, std::string_view name) {
   for (std::size_t i = 0; i < ch.spindles.size() && i < config::kMaxSpindles; ++i)
     if (detail::iequals(ch.spindles[i].name, name)) return static_cast<std::int8_t>(i);
-  if (!detail::iequals(ch.main_spindle_name, name)) return kNoSpindle;
+  if (!detail::iequals(ch.main_spindle_name, name)) return plc::kNoSpindle;
   for (std::size_t i = 0; i < ch.spindles.size() && i < config::kMaxSpindles; ++i)
     if (ch.spindles[i].log_axis_nr == ch.main_spindle_ax_nr) return static_cast<std::int8_t>(i);
-  return kNoSpindle;
+  return plc::kNoSpindle;
 }
 
 // false when the action must be dropped.
-bool resolve_one(ScenarioAction& a, const config::Machine& m, const SpindleMap& map,
+bool resolve_one(ScenarioAction& a, const config::Machine& m, const plc::SpindleMap& map,
                  const std::string& file, Diagnostics& diags) {
   if (a.channel < 1 || a.channel > m.channels.size()) {
     diags.add(ErrorId::PlcScenarioBadChannel, SourceLoc{file, a.line, 0},
@@ -53,7 +53,7 @@ bool resolve_one(ScenarioAction& a, const config::Machine& m, const SpindleMap& 
   }
   if (!a.has_spindle()) return !needs_spindle(a.kind);
   a.spindle = find_spindle(ch, a.spindle_view());
-  if (a.spindle == kNoSpindle) {
+  if (a.spindle == plc::kNoSpindle) {
     std::string known;
     for (const auto& s : ch.spindles) known += (known.empty() ? "" : ", ") + s.name;
     diags.add(ErrorId::PlcScenarioUnknownSpindle, SourceLoc{file, a.line, 0},
@@ -69,9 +69,9 @@ bool resolve_one(ScenarioAction& a, const config::Machine& m, const SpindleMap& 
 
 }  // namespace
 
-void resolve_spindles(Scenario& sc, const config::Machine& m, const SpindleMap& map,
+void resolve_spindles(Scenario& sc, const config::Machine& m, const plc::SpindleMap& map,
                       Diagnostics& diags) {
   std::erase_if(sc.actions, [&](ScenarioAction& a) { return !resolve_one(a, m, map, sc.file, diags); });
 }
 
-}  // namespace nck::plc
+}  // namespace nck::sim

@@ -2,9 +2,9 @@
 
 #include <gtest/gtest.h>
 
-#include "nck/plc/scenario.hpp"
+#include "nck/sim/scenario.hpp"
 
-namespace nck::plc {
+namespace nck::sim {
 namespace {
 
 struct Parsed {
@@ -64,7 +64,7 @@ TEST(ScenarioParse, SpecExamples) {
   a = one("3.0 spindle_cmd S2 M3 REV500");
   EXPECT_EQ(a.kind, ActionKind::spindle_cmd);
   EXPECT_EQ(a.spindle_view(), "S2");
-  EXPECT_EQ(a.cmd.fn, ExtFunction::m3);
+  EXPECT_EQ(a.cmd.fn, plc::ExtFunction::m3);
   EXPECT_TRUE(a.cmd.has_rev);
   EXPECT_DOUBLE_EQ(a.cmd.rev_rpm, 500);
   EXPECT_FALSE(a.cmd.has_pos);
@@ -100,7 +100,7 @@ TEST(ScenarioParse, EveryOtherAction) {
 
 TEST(ScenarioParse, SpindleCommandForms) {
   auto a = one("1 spindle_cmd S1 M19 REV=200 POS=90.5");
-  EXPECT_EQ(a.cmd.fn, ExtFunction::m19);
+  EXPECT_EQ(a.cmd.fn, plc::ExtFunction::m19);
   EXPECT_DOUBLE_EQ(a.cmd.rev_rpm, 200);
   EXPECT_TRUE(a.cmd.has_pos);
   EXPECT_DOUBLE_EQ(a.cmd.pos_deg, 90.5);
@@ -108,10 +108,10 @@ TEST(ScenarioParse, SpindleCommandForms) {
   EXPECT_DOUBLE_EQ(a.cmd.pos_deg, 45);
   EXPECT_FALSE(a.cmd.has_rev);
   a = one("1 spindle_cmd s1 m04 rev1500");
-  EXPECT_EQ(a.cmd.fn, ExtFunction::m4);
+  EXPECT_EQ(a.cmd.fn, plc::ExtFunction::m4);
   EXPECT_DOUBLE_EQ(a.cmd.rev_rpm, 1500);
   a = one("1 spindle_cmd S1 M05");
-  EXPECT_EQ(a.cmd.fn, ExtFunction::m5);
+  EXPECT_EQ(a.cmd.fn, plc::ExtFunction::m5);
   a = one("1 spindle_cmd S1 M19 POS-30");
   EXPECT_DOUBLE_EQ(a.cmd.pos_deg, -30);
 }
@@ -254,9 +254,9 @@ TEST(ScenarioParse, ActionNames) {
 }
 
 }  // namespace
-}  // namespace nck::plc
+}  // namespace nck::sim
 
-namespace nck::plc {
+namespace nck::sim {
 namespace {
 
 // variable <name> <value>: a channel variable (SENSOR_SOURCE=VARIABLE reads it).
@@ -271,4 +271,4 @@ TEST(ScenarioParse, ChannelVariable) {
 }
 
 }  // namespace
-}  // namespace nck::plc
+}  // namespace nck::sim

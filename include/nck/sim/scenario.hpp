@@ -14,7 +14,7 @@
 #include "nck/plc/ext_command.hpp"
 #include "nck/plc/hli.hpp"
 
-namespace nck::plc {
+namespace nck::sim {
 
 enum class ActionKind : std::uint8_t {
   spindle_override,     // override S1 50 / spindle_override S1 50
@@ -42,13 +42,13 @@ struct ScenarioAction {
   std::uint32_t line = 0;      // 1-based line in the scenario file
   std::uint8_t channel = 1;    // 1-based
   ActionKind kind = ActionKind::reset;
-  std::array<char, kSpindleNameChars> spindle_name{};  // empty: none given
-  std::int8_t spindle = kNoSpindle;      // channel's spindle index (resolve_spindles)
-  std::int8_t hli_spindle = kNoSpindle;  // HLI object index (resolve_spindles)
+  std::array<char, plc::kSpindleNameChars> spindle_name{};  // empty: none given
+  std::int8_t spindle = plc::kNoSpindle;      // channel's spindle index (resolve_spindles)
+  std::int8_t hli_spindle = plc::kNoSpindle;  // HLI object index (resolve_spindles)
   double value = 0;            // percent for the overrides
   bool on = false;             // switches
-  ExtSpindleCommand cmd;       // spindle_cmd only
-  std::array<char, kSpindleNameChars> axis_name{};  // handwheel: the path axis
+  plc::ExtSpindleCommand cmd;       // spindle_cmd only
+  std::array<char, plc::kSpindleNameChars> axis_name{};  // handwheel: the path axis
   std::int8_t axis = -1;       // handwheel: channel axis index (resolve_spindles)
   std::array<char, 32> var_name{};  // variable: its name as the NC program writes it
   bool has_spindle() const noexcept { return spindle_name[0] != '\0'; }
@@ -71,7 +71,7 @@ Scenario parse_scenario(std::string_view text, std::string file, Diagnostics& di
 // spindle / hli_spindle (and cmd.spindle). "S" names the channel's main
 // spindle as configured (main_spindle_ax_nr). Unresolvable actions are
 // reported and removed.
-void resolve_spindles(Scenario& sc, const config::Machine& m, const SpindleMap& map,
+void resolve_spindles(Scenario& sc, const config::Machine& m, const plc::SpindleMap& map,
                       Diagnostics& diags);
 
-}  // namespace nck::plc
+}  // namespace nck::sim

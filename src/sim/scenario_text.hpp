@@ -1,5 +1,5 @@
 #pragma once
-// Small text helpers of the scenario parser (private to src/plc).
+// Small text helpers of the scenario parser (private to src/sim).
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -11,7 +11,7 @@
 
 #include "nck/plc/ext_command.hpp"
 
-namespace nck::plc::detail {
+namespace nck::sim::detail {
 
 struct Token {
   std::string_view text;
@@ -57,7 +57,7 @@ inline std::optional<double> to_number(std::string_view s) {
 }
 
 inline bool valid_spindle_name(std::string_view s) {
-  if (s.empty() || s.size() >= kSpindleNameChars || (s[0] != 'S' && s[0] != 's')) return false;
+  if (s.empty() || s.size() >= plc::kSpindleNameChars || (s[0] != 'S' && s[0] != 's')) return false;
   return std::all_of(s.begin(), s.end(), [](char c) {
     return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
   });
@@ -93,4 +93,4 @@ inline std::string printable(std::string_view s) {
   return out;
 }
 
-}  // namespace nck::plc::detail
+}  // namespace nck::sim::detail

@@ -2,7 +2,7 @@
 
 #include "scenario_fixture.hpp"
 
-namespace nck::plc {
+namespace nck::sim {
 namespace {
 
 using testing::Fixture;
@@ -34,4 +34,4 @@ TEST(ScenarioResolve, UnknownSpindleOrChannelIsReportedWithLine) {
 }
 
 }  // namespace
-}  // namespace nck::plc
+}  // namespace nck::sim

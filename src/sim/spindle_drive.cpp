@@ -1,0 +1,58 @@
+#include "nck/sim/spindle_drive.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace nck::sim {
+
+SpindleDriveConfig SpindleDriveConfig::from(const config::AxisConfig* axis, const config::SimConfig& sim,
+                                            double cycle_s) {
+  SpindleDriveConfig c;
+  c.cycle_s = cycle_s;
+  c.speed_time_constant_s = std::max(0.0, sim.drive_speed_time_constant_s);
+  const auto stages = axis != nullptr ? axis->gears : decltype(axis->gears){};
+  for (std::size_t i = 0; i < stages.size(); ++i) c.kv_1_s[i] = stages[i].kv_1_s;
+  if (axis == nullptr) return c;
+  c.open_loop = axis->is_speed_controlled();
+  c.feedforward_ta_s = std::max(0.0, axis->feedforward_ta_s);
+  return c;
+}
+
+spindle::DriveFeedback SpindleDrive::step(const spindle::DriveCommand& cmd) noexcept {
+  const double dt = cfg_.cycle_s;
+  const double v_cmd = cmd.step_deg / dt;  // what the set point really moved this cycle
+  if (cfg_.open_loop) {
+    const double t = cfg_.speed_time_constant_s;
+    const double k = t > 0 ? 1.0 - std::exp(-dt / t) : 1.0;
+    act_vel_deg_s_ += (v_cmd - act_vel_deg_s_) * k;
+    lag_deg_ += (v_cmd - act_vel_deg_s_) * dt;
+  } else {
+    const double ta = cfg_.feedforward_ta_s;
+    const double kf = dt / (ta + dt);  // backward Euler: ramp lag is exactly a*Ta
+    filtered_vel_deg_s_ += (v_cmd - filtered_vel_deg_s_) * kf;  // the drive answers with time constant Ta
+    const double w = cmd.feedforward_weight;
+    const std::uint32_t g = cmd.gear_stage >= 1 && cmd.gear_stage <= config::kMaxGearStages ? cmd.gear_stage - 1 : 0;
+    const double kv = cfg_.kv_1_s[g] > 0 ? cfg_.kv_1_s[g] : 10.0;
+    // Exact solution of d(lag)/dt = v_cmd - w*v_filt - kv*lag over one cycle:
+    // stable for any kv*dt.
+    const double e = std::exp(-kv * dt);
+    const double lag_new = lag_deg_ * e + (v_cmd - w * filtered_vel_deg_s_) * (1.0 - e) / kv;
+    act_vel_deg_s_ = v_cmd - (lag_new - lag_deg_) / dt;
+    lag_deg_ = lag_new;
+  }
+  // With the command at rest, the decaying lag and speed are cut to zero once
+  // far below any encoder's resolution: the drive then reports exactly no
+  // speed and no following error, and the spindle counts as settled
+  // (SpindleAxis::at_rest) instead of decaying through denormals forever.
+  if (v_cmd == 0 && std::fabs(lag_deg_) < 1e-12 && std::fabs(act_vel_deg_s_) < 1e-9 &&
+      std::fabs(filtered_vel_deg_s_) < 1e-9)
+    lag_deg_ = act_vel_deg_s_ = filtered_vel_deg_s_ = 0;
+  if (!std::isfinite(lag_deg_) || !std::isfinite(act_vel_deg_s_)) {  // never let NaN out
+    lag_deg_ = 0;
+    act_vel_deg_s_ = v_cmd;
+    filtered_vel_deg_s_ = v_cmd;
+  }
+  return spindle::DriveFeedback{act_vel_deg_s_, cmd.pos_deg - lag_deg_, true};
+}
+
+}  // namespace nck::sim
