@@ -150,7 +150,7 @@ void Kernel::tick_spindles(double t_s, TickOutput& out) noexcept {
     SpindleUnit& u = spindles_[i];
     const auto idx = static_cast<std::int8_t>(i);
     advance_gear_job(u, idx, *plc_outputs_, t_s, out);
-    if (u.axis.tick(cycle_s_)) step_drive(i);
+    if (u.axis.tick(cycle_s_, drives_ == nullptr)) step_drive(i);  // an attached drive refreshes the status
     report_spindle_changes(u, idx, t_s, out);
     fill_hli_status(u, out.hli_spindles[i]);
     const spindle::SpindleStatus& s = u.axis.status();

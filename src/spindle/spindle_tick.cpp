@@ -10,7 +10,7 @@ namespace {
 int sign_of(double v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
 }  // namespace
 
-bool SpindleAxis::tick(double dt) noexcept {
+bool SpindleAxis::tick(double dt, bool refresh_status) noexcept {
   if (!configured_ || !(dt > 0) || !std::isfinite(dt)) return false;
   if (at_rest()) {  // a stopped spindle whose drive has settled: nothing changes
     set_.step_deg = 0;
@@ -32,7 +32,7 @@ bool SpindleAxis::tick(double dt) noexcept {
       break;
   }
   set_.accel_deg_s2 = (set_.vel_deg_s - v_old) / dt;
-  update_status();  // with the last feedback, until the drive's answer comes (take_feedback)
+  if (refresh_status) update_status();  // with the last feedback, until the drive's answer comes
   return true;
 }
 

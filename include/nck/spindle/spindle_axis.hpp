@@ -55,10 +55,11 @@ class SpindleAxis {
   SpindleResult leave_axis_mode() noexcept;
 
   // One interpolation cycle of dt_s seconds: the set point moves, and the
-  // status follows with the last feedback. False when the spindle is at
-  // rest (stopped, its drive settled): nothing changed, the drive needs no
-  // new command. // rt
-  bool tick(double dt_s) noexcept;
+  // status follows with the last feedback (refresh_status false: a drive
+  // answers within this cycle and its take_feedback updates the status
+  // once). False when the spindle is at rest (stopped, its drive settled):
+  // nothing changed, the drive needs no new command. // rt
+  bool tick(double dt_s, bool refresh_status = true) noexcept;
   // What the drive gets for the cycle just ticked (drive sense). // rt
   DriveCommand drive_command() const noexcept;
   // The drive's measured actual values (drive sense); the status (actual
