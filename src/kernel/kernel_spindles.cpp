@@ -150,20 +150,17 @@ void Kernel::tick_spindles(double t_s, TickOutput& out) noexcept {
     SpindleUnit& u = spindles_[i];
     const auto idx = static_cast<std::int8_t>(i);
     advance_gear_job(u, idx, *plc_outputs_, t_s, out);
-    if (u.axis.tick(cycle_s_, drives_ == nullptr)) step_drive(i);  // an attached drive refreshes the status
+    // A drive that answers within the cycle judges this cycle's set point at
+    // once (and refreshes the status); a real one answers with the next
+    // TickInput (take_spindle_measured), until then its last values stand.
+    const bool moved = u.axis.tick(cycle_s_, drives_ == nullptr);
+    const spindle::DriveCommand cmd = u.axis.drive_command();
+    if (moved && drives_ != nullptr) u.axis.take_feedback(drives_->step(i, cmd));
     report_spindle_changes(u, idx, t_s, out);
     fill_hli_status(u, out.hli_spindles[i]);
     const spindle::SpindleStatus& s = u.axis.status();
-    out.spindles[i] = {s.set_rpm, s.set_pos_deg, s.act_rpm, s.drive_output, u.axis.drive_command()};
+    out.spindles[i] = {s.set_rpm, s.set_pos_deg, s.act_rpm, s.drive_output, cmd};
   }
-}
-
-// A drive that answers within the cycle judges this cycle's set point at
-// once; a real one answers with the next TickInput (take_spindle_measured),
-// until then its last measured values stand. rt
-void Kernel::step_drive(std::size_t index) noexcept {
-  spindle::SpindleAxis& axis = spindles_[index].axis;
-  if (drives_ != nullptr) axis.take_feedback(drives_->step(index, axis.drive_command()));
 }
 
 }  // namespace nck::kernel

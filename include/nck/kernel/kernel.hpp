@@ -90,7 +90,6 @@ class Kernel {
   void run_external_commands(double t_s, TickOutput& out) noexcept;
   void hand_out_external_commands() noexcept;
   void tick_spindles(double t_s, TickOutput& out) noexcept;
-  void step_drive(std::size_t index) noexcept;
 
   std::unique_ptr<const config::Machine> machine_;  // own copy: channels refer into it
   std::vector<SpindleUnit> spindles_;
