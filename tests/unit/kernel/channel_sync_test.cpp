@@ -330,23 +330,9 @@ TEST(ChannelSync, MvsSlpWaitsAtExplicitSynchronisationOnly) {
 // commanded speed (vb_prozent 95 permille).
 config::Machine spindle_machine() {
   config::Machine m = fast_machine();
-  config::AxisConfig ax;
-  ax.log_axis_nr = 6;
-  ax.name = "S1";
-  ax.kind = config::AxisKind::spindle;
+  config::AxisConfig& ax = testing::add_spindle_s1(m);
   ax.drive_mode = config::DriveMode::open_loop;
   ax.speed_reached_tolerance_permille = 95;
-  for (auto& g : ax.gears) {
-    g.vb_max = 6000;
-    g.a_beschl = g.a_brems = g.a_grenz = g.a_max = 60000;
-  }
-  m.axes.push_back(ax);
-  config::ChannelSpindle sp;
-  sp.name = "S1";
-  sp.log_axis_nr = 6;
-  sp.axis_index = static_cast<int>(m.axes.size() - 1);
-  m.channels[0].spindles.push_back(sp);
-  m.channels[0].main_spindle_ax_nr = 6;
   return m;
 }
 

@@ -15,6 +15,7 @@ namespace {
 
 using testing::end_block;
 using testing::KernelRig;
+using testing::add_spindle_s1;
 using testing::move;
 using testing::xyz_machine;
 
@@ -22,21 +23,7 @@ using testing::xyz_machine;
 // 10 rpm per cycle up to 1000 rpm; speed reached within +-10 %.
 config::Machine spindle_machine() {
   config::Machine m = xyz_machine(100, 100000);
-  config::AxisConfig ax;
-  ax.log_axis_nr = 6;
-  ax.name = "S1";
-  ax.kind = config::AxisKind::spindle;
-  for (auto& g : ax.gears) {
-    g.vb_max = 6000;
-    g.a_beschl = g.a_brems = g.a_grenz = g.a_max = 60000;
-  }
-  m.axes.push_back(ax);
-  config::ChannelSpindle sp;
-  sp.name = "S1";
-  sp.log_axis_nr = 6;
-  sp.axis_index = static_cast<int>(m.axes.size() - 1);
-  m.channels[0].spindles.push_back(sp);
-  m.channels[0].main_spindle_ax_nr = 6;
+  add_spindle_s1(m);
   return m;
 }
 

@@ -35,6 +35,27 @@ inline config::Machine xyz_machine(double vb_max_mm_s = 500, double a_mm_s2 = 20
   return m;
 }
 
+// Adds spindle S1 (logical axis 6, 6000 deg/s = 1000 rpm top speed,
+// 60000 deg/s^2) to channel 1 as its main spindle; returns its axis.
+inline config::AxisConfig& add_spindle_s1(config::Machine& m) {
+  config::AxisConfig ax;
+  ax.log_axis_nr = 6;
+  ax.name = "S1";
+  ax.kind = config::AxisKind::spindle;
+  for (auto& g : ax.gears) {
+    g.vb_max = 6000;
+    g.a_beschl = g.a_brems = g.a_grenz = g.a_max = 60000;
+  }
+  m.axes.push_back(ax);
+  config::ChannelSpindle sp;
+  sp.name = "S1";
+  sp.log_axis_nr = 6;
+  sp.axis_index = static_cast<int>(m.axes.size() - 1);
+  m.channels[0].spindles.push_back(sp);
+  m.channels[0].main_spindle_ax_nr = 6;
+  return m.axes.back();
+}
+
 inline nc::Block move(std::uint32_t line, nc::Motion motion, std::optional<double> x,
                       std::optional<double> y = {}, std::optional<double> z = {},
                       double f_mm_min = 6000) {
