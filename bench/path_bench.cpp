@@ -68,7 +68,7 @@ void run_common(benchmark::State& state, const std::string& prelude) {
   }
   const double dt_s = m.cycle_time_us * 1e-6;
   struct {
-    double v_share = 0, a_share = 0;  // largest |v| / vb_max and |a| / a_max of any axis
+    double v_share = 0, a_share = 0;  // largest |v| / max_speed_mm_s and |a| / a_max of any axis
   } worst;
   nck::prep::BlendStats blends{};
   for (auto _ : state) {
@@ -79,7 +79,7 @@ void run_common(benchmark::State& state, const std::string& prelude) {
     }
     // The path the set points travel (X, Y, Z), to state how much of the
     // programmed length blending cuts, and the limit check of the property
-    // test on every cycle: no axis beyond vb_max or a_max.
+    // test on every cycle: no axis beyond max_speed_mm_s or a_max.
     std::array<double, 3> last{}, v_last{};
     std::size_t cycles = 0;
     travelled_mm = 0;
@@ -90,7 +90,7 @@ void run_common(benchmark::State& state, const std::string& prelude) {
       if (cycles > 0) travelled_mm += std::hypot(p[0] - last[0], p[1] - last[1], p[2] - last[2]);
       for (std::size_t k = 0; k < 3 && cycles > 0; ++k) {
         const double v = (p[k] - last[k]) / dt_s;
-        worst.v_share = std::max(worst.v_share, std::fabs(v) / limits[k].vb_max);
+        worst.v_share = std::max(worst.v_share, std::fabs(v) / limits[k].max_speed_mm_s);
         if (cycles > 1) worst.a_share = std::max(worst.a_share, std::fabs(v - v_last[k]) / dt_s / limits[k].a_max);
         v_last[k] = v;
       }

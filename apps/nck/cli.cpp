@@ -168,10 +168,10 @@ int main_cli(int argc, char** argv) {
   fitc->add_option("TYPE", fit.type, "hyperbola or polynomial")
       ->required()
       ->check(CLI::IsMember({"hyperbola", "polynomial"}));
-  fitc->add_option("--n-grenz", fit.n_grenz_deg_s, "limit speed n_grenz in deg/s")
+  fitc->add_option("--n-grenz", fit.limit_speed_deg_s, "limit speed n_grenz in deg/s")
       ->required()
       ->check(number_at_least(0, false));
-  fitc->add_option("--a-konst", fit.a_konst_deg_s2, "constant acceleration below n_grenz in deg/s^2")
+  fitc->add_option("--a-konst", fit.const_accel_deg_s2, "constant acceleration below n_grenz in deg/s^2")
       ->required()
       ->check(number_at_least(0, false));
   fitc->add_option("--point", fit.points, "speed,acceleration above n_grenz (deg/s,deg/s^2); repeat")

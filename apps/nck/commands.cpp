@@ -115,8 +115,8 @@ int fit_curve(const FitOptions& opt) {
     points.push_back(cp);
   }
   auto c = opt.type == "hyperbola"
-               ? spindle::fit_hyperbola(opt.n_grenz_deg_s, opt.a_konst_deg_s2, points)
-               : spindle::fit_polynomial(opt.n_grenz_deg_s, opt.a_konst_deg_s2, points);
+               ? spindle::fit_hyperbola(opt.limit_speed_deg_s, opt.const_accel_deg_s2, points)
+               : spindle::fit_polynomial(opt.limit_speed_deg_s, opt.const_accel_deg_s2, points);
   if (!c) {
     fmt::print(stderr, "nck: error 950011: {}\n", c.error());
     return 2;

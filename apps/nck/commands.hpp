@@ -21,8 +21,8 @@ int parse_program(const ParseOptions& opt);
 
 struct FitOptions {
   std::string type;  // hyperbola | polynomial
-  double n_grenz_deg_s = 0;
-  double a_konst_deg_s2 = 0;
+  double limit_speed_deg_s = 0;
+  double const_accel_deg_s2 = 0;
   std::vector<std::string> points;  // "n,a"
 };
 // nck fit-curve: prints b1 b2 b3; 0 ok, 2 bad input.

@@ -87,7 +87,7 @@ std::optional<std::string> write_final(const std::string& path, const config::Ma
     if (m.channels[c].dist_ctrl_enabled()) {  // 3D distance control: its state and offset at the end
       const kernel::ChannelState st = k.channel_state(c);
       channels.back()["dist_ctrl"] = json{
-          {"state", distctrl::state_name(static_cast<distctrl::State>(st.dist_state))},
+          {"state", distctrl::state_name(st.dist_state)},
           {"offset", st.dist_offset_mm}};
     }
   }

@@ -123,8 +123,8 @@ const char* end_name(kernel::EndReason r) {
 
 namespace {
 
-std::string function_name(kernel::FunctionKind fn, std::int32_t number) {
-  using F = kernel::FunctionKind;
+std::string function_name(plc::TechKind fn, std::int32_t number) {
+  using F = plc::TechKind;
   switch (fn) {
     case F::m: return fmt::format("M{}", number);
     case F::h: return fmt::format("H{}", number);
@@ -165,19 +165,19 @@ std::string EventWriter::line(const kernel::Event& e, const RunNames& names) {
     case K::plc_ack:
       j["fn"] = function_name(e.fn, e.fn_number);
       j["spindle"] = names.spindle(e.spindle);
-      j["value"] = e.fn == kernel::FunctionKind::s ? json(e.value) : json(nullptr);
+      j["value"] = e.fn == plc::TechKind::s ? json(e.value) : json(nullptr);
       if (e.kind == K::plc_out) j["sync"] = sync_name(e.sync);
       break;
     case K::wait:
     case K::wait_end:
-      j["reason"] = wait_reason_name(static_cast<kernel::WaitReason>(e.wait_reason));
+      j["reason"] = wait_reason_name(e.wait_reason);
       j["spindle"] = names.spindle(e.spindle);
       j["fn"] = function_name(e.fn, e.fn_number);
       j["line"] = e.line;
       break;
     case K::spindle:
       j["spindle"] = names.spindle(e.spindle);
-      j["mode"] = spindle::mode_name(static_cast<spindle::SpindleMode>(e.spindle_mode));
+      j["mode"] = spindle::mode_name(e.spindle_mode);
       j["rpm"] = e.value;
       j["gear"] = e.gear;
       break;
@@ -202,9 +202,9 @@ std::string EventWriter::line(const kernel::Event& e, const RunNames& names) {
       j["reason"] = end_name(e.end_reason);
       break;
     case K::state:
-      j["from"] = kernel::state_name(static_cast<kernel::ProgramState>(e.state_from));
-      j["to"] = kernel::state_name(static_cast<kernel::ProgramState>(e.state_to));
-      j["reason"] = kernel::state_reason_name(static_cast<kernel::StateReason>(e.state_reason));
+      j["from"] = kernel::state_name(e.state_from);
+      j["to"] = kernel::state_name(e.state_to);
+      j["reason"] = kernel::state_reason_name(e.state_reason);
       j["line"] = e.line;
       j["n"] = e.has_n ? json(e.n) : json(nullptr);
       j["file"] = names.file(ch, e.file_id);
@@ -216,17 +216,18 @@ std::string EventWriter::line(const kernel::Event& e, const RunNames& names) {
       for (const auto& [slave, master] : p.pairs) pairs.push_back(json::array({slave, master}));
       j["pairs"] = pairs;
       j["on"] = e.link_on;
-      j["reason"] = link_reason_name(static_cast<kernel::LinkReason>(e.link_reason));
+      j["reason"] = link_reason_name(e.link_reason);
       j["line"] = e.line;
       break;
     }
     case K::dist_ctrl:
-      j["state"] = distctrl::state_name(static_cast<distctrl::State>(e.dist_state));
+      j["state"] = distctrl::state_name(e.dist_state);
       j["line"] = e.line;
       break;
     case K::trc: {
-      constexpr const char* kStates[] = {"G40", "G41", "G42"};
-      j["state"] = kStates[e.trc_state < 3 ? e.trc_state : 0];
+      j["state"] = e.trc_mode == nc::RadiusComp::g41   ? "G41"
+                   : e.trc_mode == nc::RadiusComp::g42 ? "G42"
+                                                       : "G40";
       j["d"] = e.trc_d;
       j["radius_mm"] = e.trc_radius_mm;
       j["line"] = e.line;
@@ -304,7 +305,7 @@ void TraceWriter::write(std::uint64_t cycle, const kernel::TickOutput& out) {
   for (std::size_t c = 0; c < dist_ctrl_.size(); ++c)
     if (dist_ctrl_[c])
       fmt::format_to(std::back_inserter(row_), ",{:.6f},{:.6f},{}", out.channels[c].dist_offset_mm,
-                     out.channels[c].dist_sensor_mm, out.channels[c].dist_state);
+                     out.channels[c].dist_sensor_mm, static_cast<int>(out.channels[c].dist_state));
   for (std::size_t s = 0; s < spindle_count_; ++s) {
     const kernel::SpindleOutput& o = out.spindles[s];
     fmt::format_to(std::back_inserter(row_), ",{:.3f},{:.4f},{:.3f}", o.set_rpm, o.set_pos_deg, o.act_rpm);

@@ -25,7 +25,7 @@ bool is_rotary_name(const std::string& name) {
 }
 
 std::string function_text(const kernel::Event& e) {
-  using F = kernel::FunctionKind;
+  using F = plc::TechKind;
   switch (e.fn) {
     case F::m: return fmt::format("M{}", e.fn_number);
     case F::h: return fmt::format("H{}", e.fn_number);
@@ -196,7 +196,7 @@ void ReportWriter::take(const kernel::Event& e, const RunNames& names) {
     case K::plc_out: {
       const std::string fn = function_text(e);
       ch.last_sync[fn] = e.sync;
-      if (e.fn == kernel::FunctionKind::t) {
+      if (e.fn == plc::TechKind::t) {
         ch.tool = fn;
         ch.tool_acc = &tools_[{c, ch.tool}];
         ++ch.tool_acc->count;
@@ -204,7 +204,7 @@ void ReportWriter::take(const kernel::Event& e, const RunNames& names) {
       break;
     }
     case K::wait: {
-      Wait w{c + 1, e.t_s, -1, wait_reason_name(static_cast<kernel::WaitReason>(e.wait_reason)), function_text(e),
+      Wait w{c + 1, e.t_s, -1, wait_reason_name(e.wait_reason), function_text(e),
              spindle_name(e.spindle), "", e.line ? e.line : ch.line, ch.file};
       if (auto it = ch.last_sync.find(w.fn); it != ch.last_sync.end() && !w.fn.empty()) w.sync = sync_name(it->second);
       if (waits_.size() >= kMaxListed) break;
@@ -213,10 +213,10 @@ void ReportWriter::take(const kernel::Event& e, const RunNames& names) {
       break;
     }
     case K::spindle:
-      if (e.spindle_mode == static_cast<std::uint8_t>(spindle::SpindleMode::axis)) c_axis_used_ = true;
+      if (e.spindle_mode == spindle::SpindleMode::axis) c_axis_used_ = true;
       break;
     case K::wait_end: {  // ends the wait for the same spindle, function and reason
-      const std::string reason = wait_reason_name(static_cast<kernel::WaitReason>(e.wait_reason));
+      const std::string reason = wait_reason_name(e.wait_reason);
       const std::string fn = function_text(e), spindle = spindle_name(e.spindle);
       const auto it = std::find_if(ch.open_waits.begin(), ch.open_waits.end(), [&](std::size_t i) {
         const Wait& w = waits_[i];
@@ -263,7 +263,7 @@ void ReportWriter::sample(std::uint64_t cycle, const kernel::TickOutput& out, co
     if (e.spindle < 0 || s >= spindles_.size()) continue;
     if (e.kind == K::gear) add_mark({e.t_s, s, 0, "gear", fmt::format("{} gear stage {}", function_text(e), e.gear)});
     if (e.kind == K::speed_reached) add_mark({e.t_s, s, 0, "speed_reached", fmt::format("speed reached {:g} rpm", e.value)});
-    if (e.kind == K::plc_out && e.fn == kernel::FunctionKind::s)
+    if (e.kind == K::plc_out && e.fn == plc::TechKind::s)
       add_mark({e.t_s, s, 0, "s", fmt::format("S {:g} rpm programmed", e.value)});
   }
   watch_plc(out.t_s, names);

@@ -135,9 +135,9 @@ void end_unfinished_channels(const sim::DryRun& run, kernel::EndReason reason, c
     if (st.status == kernel::ChannelStatus::ended || st.status == kernel::ChannelStatus::aborted) continue;
     kernel::Event e = st.at;
     e.t_s = run.time_s();
-    e.state_from = static_cast<std::uint8_t>(st.program_state);
-    e.state_to = static_cast<std::uint8_t>(kernel::ProgramState::ended);
-    e.state_reason = static_cast<std::uint8_t>(state_reason_of(reason));
+    e.state_from = st.program_state;
+    e.state_to = kernel::ProgramState::ended;
+    e.state_reason = state_reason_of(reason);
     out.event(EventWriter::line(e, names), false);
     e.kind = kernel::EventKind::end;
     e.end_reason = reason;

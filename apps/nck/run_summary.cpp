@@ -36,15 +36,16 @@ void RunSummary::take(const kernel::Event& e) {
       if (it == open_.end()) break;
       const OpenWait ended = *it;
       open_.erase(it);
-      if (!first_open(ended.channel, ended.reason) && ended.reason < waited_s_.size())
-        waited_s_[ended.reason] += e.t_s - ended.since_s;  // the last of them
+      const auto r = static_cast<std::size_t>(ended.reason);
+      if (!first_open(ended.channel, ended.reason) && r < waited_s_.size())
+        waited_s_[r] += e.t_s - ended.since_s;  // the last of them
       break;
     }
     default: break;
   }
 }
 
-std::optional<double> RunSummary::first_open(std::uint8_t channel, std::uint8_t reason) const {
+std::optional<double> RunSummary::first_open(std::uint8_t channel, kernel::WaitReason reason) const {
   for (const OpenWait& w : open_)
     if (w.channel == channel && w.reason == reason) return w.since_s;
   return std::nullopt;

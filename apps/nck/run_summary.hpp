@@ -25,13 +25,13 @@ class RunSummary {
   struct OpenWait {
     std::uint8_t channel;
     std::int8_t spindle;
-    kernel::FunctionKind fn;
+    plc::TechKind fn;
     std::int32_t fn_number;
-    std::uint8_t reason;
+    kernel::WaitReason reason;
     double since_s;  // since when the channel waits for this reason (overlapping waits count once)
   };
   // The start of the channel's open waits for `reason`, if it waits for one.
-  std::optional<double> first_open(std::uint8_t channel, std::uint8_t reason) const;
+  std::optional<double> first_open(std::uint8_t channel, kernel::WaitReason reason) const;
   std::uint64_t blocks_ = 0, errors_ = 0, warnings_ = 0, resets_ = 0;
   std::vector<OpenWait> open_;
   std::array<double, 16> waited_s_{};  // by WaitReason

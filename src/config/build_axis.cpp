@@ -11,8 +11,8 @@ std::string gkey(std::size_t g, std::string_view rest) { return fmt::format("get
 void read_curve(const ParamList& l, std::size_t g, AccelCurve& c) {
   auto k = [g](std::string_view r) { return gkey(g, fmt::format("beschl_kennlinie.{}", r)); };
   c.type = l.u32(k("typ"), c.type);
-  c.n_grenz_deg_s = l.num(k("n_grenz"), c.n_grenz_deg_s);
-  c.a_konst_deg_s2 = l.num(k("a_konst"), c.a_konst_deg_s2);
+  c.limit_speed_deg_s = l.num(k("n_grenz"), c.limit_speed_deg_s);
+  c.const_accel_deg_s2 = l.num(k("a_konst"), c.const_accel_deg_s2);
   c.a_min_deg_s2 = l.num(k("a_min"), c.a_min_deg_s2);
   c.b1 = l.num(k("b1"), c.b1);
   c.b2 = l.num(k("b2"), c.b2);
@@ -22,7 +22,7 @@ void read_curve(const ParamList& l, std::size_t g, AccelCurve& c) {
   c.n2_deg_s = l.num(k("n2"), c.n2_deg_s);
 }
 
-// wegaufz / wegaufn 0: the seed's warning and correction to 1.
+// encoder_ratio_num / encoder_ratio_denom 0: the seed's warning and correction to 1.
 std::uint32_t encoder_part(const ParamList& l, const std::string& key, ErrorId id, Diagnostics& d) {
   std::uint32_t v = l.u32(key, 1);
   if (v != 0) return v;
@@ -33,28 +33,28 @@ std::uint32_t encoder_part(const ParamList& l, const std::string& key, ErrorId i
 void read_gear(const ParamList& l, std::size_t g, GearStage& s, Diagnostics& d) {
   auto k = [g](std::string_view r) { return gkey(g, r); };
   s.given = l.any_with_prefix(fmt::format("getriebe[{}].", g));
-  s.a_beschl = l.num(k("slope_profil.a_beschl"), s.a_beschl);
-  s.a_brems = l.num(k("slope_profil.a_brems"), s.a_brems);
-  s.a_grenz = l.num(k("slope_profil.a_grenz"), s.a_grenz);
+  s.accel_mm_s2 = l.num(k("slope_profil.a_beschl"), s.accel_mm_s2);
+  s.decel_mm_s2 = l.num(k("slope_profil.a_brems"), s.decel_mm_s2);
+  s.rapid_accel_mm_s2 = l.num(k("slope_profil.a_grenz"), s.rapid_accel_mm_s2);
   s.a_max = l.num(k("dynamik.a_max"), s.a_max);
   s.a_emergency = l.num(k("dynamik.a_emergency"), s.a_emergency);
-  s.vb_max = l.num(k("dynamik.vb_max"), s.vb_max);
-  s.vb_eilgang = l.num(k("vb_eilgang"), s.vb_eilgang);
-  s.kv_1_s = l.num(k("kv"), s.kv_1_s);
-  s.moduloo = l.num(k("moduloo"), s.moduloo);
-  s.modulou = l.num(k("modulou"), s.modulou);
+  s.max_speed_mm_s = l.num(k("dynamik.vb_max"), s.max_speed_mm_s);
+  s.rapid_mm_s = l.num(k("vb_eilgang"), s.rapid_mm_s);
+  s.position_gain_1_s = l.num(k("kv"), s.position_gain_1_s);
+  s.modulo_upper = l.num(k("moduloo"), s.modulo_upper);
+  s.modulo_lower = l.num(k("modulou"), s.modulo_lower);
   s.zero_speed_deg_s = l.num(k("vb_min_null"), s.zero_speed_deg_s);
   s.control_limit_deg_s = l.num(k("vb_regelgrenze"), s.control_limit_deg_s);
   s.gear_change_pos_deg = l.num(k("getr_schalt_pos"), s.gear_change_pos_deg);
-  s.pos_refpkt = l.num(k("pos_refpkt"), s.pos_refpkt);
-  s.wegaufz = encoder_part(l, k("wegaufz"), ErrorId::ConfigWegaufzZero, d);
-  s.wegaufn = encoder_part(l, k("wegaufn"), ErrorId::ConfigWegaufnZero, d);
-  s.reverse = l.flag(k("reverse"), s.reverse);
+  s.reference_pos = l.num(k("pos_refpkt"), s.reference_pos);
+  s.encoder_ratio_num = encoder_part(l, k("wegaufz"), ErrorId::ConfigWegaufzZero, d);
+  s.encoder_ratio_denom = encoder_part(l, k("wegaufn"), ErrorId::ConfigWegaufnZero, d);
+  s.reverse_sense = l.flag(k("reverse"), s.reverse_sense);
   s.slope_type = l.u32(k("slope_type"), s.slope_type);
   s.multi_gain_z = l.u32(k("multi_gain_z"), s.multi_gain_z);
   s.multi_gain_n = l.u32(k("multi_gain_n"), s.multi_gain_n);
-  s.modulo_fehler = static_cast<std::int32_t>(l.num(k("modulo_fehler"), 0));
-  s.modulo_umdreh = static_cast<std::int32_t>(l.num(k("modulo_umdreh"), 0));
+  s.modulo_error_incr = static_cast<std::int32_t>(l.num(k("modulo_fehler"), 0));
+  s.modulo_revolutions = static_cast<std::int32_t>(l.num(k("modulo_umdreh"), 0));
   read_curve(l, g, s.curve);
 }
 
@@ -66,30 +66,30 @@ void check_gear(const ParamList& l, const AxisConfig& a, std::size_t g, Diagnost
   // Values in the list's own units; linear axes read the first unit of "µm/s · 0.001°/s".
   const std::size_t unit_part = a.kind == AxisKind::translatory ? 0 : 1;
   auto show = [&](const std::string& key, double v) { return listed(l, key, v, unit_part); };
-  cross_check(l, k("vb_eilgang"), k("dynamik.vb_max"), s.vb_eilgang <= s.vb_max,
-              fmt::format("{} must not exceed {}", show(k("vb_eilgang"), s.vb_eilgang),
-                          show(k("dynamik.vb_max"), s.vb_max)), d);
-  for (auto [key, v] : {std::pair{k("slope_profil.a_beschl"), s.a_beschl}, {k("slope_profil.a_brems"), s.a_brems},
-                        {k("slope_profil.a_grenz"), s.a_grenz}, {k("beschl_kennlinie.a_max"), s.curve.a_max_deg_s2}})
+  cross_check(l, k("vb_eilgang"), k("dynamik.vb_max"), s.rapid_mm_s <= s.max_speed_mm_s,
+              fmt::format("{} must not exceed {}", show(k("vb_eilgang"), s.rapid_mm_s),
+                          show(k("dynamik.vb_max"), s.max_speed_mm_s)), d);
+  for (auto [key, v] : {std::pair{k("slope_profil.a_beschl"), s.accel_mm_s2}, {k("slope_profil.a_brems"), s.decel_mm_s2},
+                        {k("slope_profil.a_grenz"), s.rapid_accel_mm_s2}, {k("beschl_kennlinie.a_max"), s.curve.a_max_deg_s2}})
     cross_check(l, key, amax, v <= s.a_max,
                 fmt::format("{} must not exceed {}", show(key, v), show(amax, s.a_max)), d);
   cross_check(l, k("dynamik.a_emergency"), amax, s.a_emergency <= 2 * s.a_max,
               fmt::format("{} must not exceed 2 x {}", k("dynamik.a_emergency"), amax), d);
   if (a.is_modulo())
-    cross_check(l, k("modulou"), k("moduloo"), s.modulou < s.moduloo,
-                fmt::format("{} must be below {}", show(k("modulou"), s.modulou), show(k("moduloo"), s.moduloo)), d);
+    cross_check(l, k("modulou"), k("moduloo"), s.modulo_lower < s.modulo_upper,
+                fmt::format("{} must be below {}", show(k("modulou"), s.modulo_lower), show(k("moduloo"), s.modulo_upper)), d);
   const AccelCurve& c = s.curve;
   auto ck = [&](std::string_view r) { return k(fmt::format("beschl_kennlinie.{}", r)); };
   if (c.type == 1 || c.type == 2)
-    cross_check(l, ck("typ"), ck("n_grenz"), c.n_grenz_deg_s > 0,
+    cross_check(l, ck("typ"), ck("n_grenz"), c.limit_speed_deg_s > 0,
                 fmt::format("curve type {} needs {} > 0", c.type, ck("n_grenz")), d);
   if (c.type == 3) {
     cross_check(l, ck("typ"), ck("a_max"), c.a_max_deg_s2 > 0,
                 fmt::format("curve type 3 needs {} > 0", ck("a_max")), d);
     cross_check(l, ck("n1"), ck("n2"), c.n1_deg_s <= c.n2_deg_s,
                 fmt::format("{} must not exceed {}", show(ck("n1"), c.n1_deg_s), show(ck("n2"), c.n2_deg_s)), d);
-    cross_check(l, ck("n2"), k("dynamik.vb_max"), c.n2_deg_s <= s.vb_max,
-                fmt::format("{} must not exceed {}", show(ck("n2"), c.n2_deg_s), show(k("dynamik.vb_max"), s.vb_max)),
+    cross_check(l, ck("n2"), k("dynamik.vb_max"), c.n2_deg_s <= s.max_speed_mm_s,
+                fmt::format("{} must not exceed {}", show(ck("n2"), c.n2_deg_s), show(k("dynamik.vb_max"), s.max_speed_mm_s)),
                 d);
   }
 }
@@ -99,24 +99,24 @@ void read_head(const ParamList& l, AxisConfig& a) {
   a.log_axis_nr = l.u32("kopf.achs_nr", 1);
   a.name = l.text("kopf.log_achs_name", a.name);
   a.kind = static_cast<AxisKind>(l.u32("kenngr.achs_typ", 1));
-  a.achs_mode = l.u32("kenngr.achs_mode", a.achs_mode);
-  a.antr_typ = l.u32("kenngr.antr_typ", a.antr_typ);
-  a.swe_neg = l.num("kenngr.swe_neg", a.swe_neg);
-  a.swe_pos = l.num("kenngr.swe_pos", a.swe_pos);
+  a.axis_mode = l.u32("kenngr.achs_mode", a.axis_mode);
+  a.drive_type = l.u32("kenngr.antr_typ", a.drive_type);
+  a.sw_limit_neg = l.num("kenngr.swe_neg", a.sw_limit_neg);
+  a.sw_limit_pos = l.num("kenngr.swe_pos", a.sw_limit_pos);
   a.initial_gear_stage = l.u32("kenngr.getriebe_stufe", a.initial_gear_stage);
   a.has_preferred_direction = l.flag("kenngr.vorz_richtung", a.has_preferred_direction);
   a.preferred_direction_positive = l.flag("kenngr.beweg_richt", a.preferred_direction_positive);
   a.speed_reached_tolerance_permille = l.num("kenngr.vb_prozent", a.speed_reached_tolerance_permille);
-  a.ref_ohne_nocken = l.flag("kenngr.ref_ohne_nocken", a.ref_ohne_nocken);
-  a.ref_ohne_rev = l.flag("kenngr.ref_ohne_rev", a.ref_ohne_rev);
+  a.homing_without_cam = l.flag("kenngr.ref_ohne_nocken", a.homing_without_cam);
+  a.homing_without_reversal = l.flag("kenngr.ref_ohne_rev", a.homing_without_reversal);
   a.no_stop_by_channel_reset = l.flag("kenngr.no_stop_by_channel_reset", a.no_stop_by_channel_reset);
-  a.def_cax_gear_st = l.u32("kenngr.def_cax_gear_st", a.def_cax_gear_st);
-  a.durchm_prog_abs = l.flag("kenngr.durchm_prog_abs", a.durchm_prog_abs);
-  a.durchm_prog_rel = l.flag("kenngr.durchm_prog_rel", a.durchm_prog_rel);
+  a.cax_gear_stage = l.u32("kenngr.def_cax_gear_st", a.cax_gear_stage);
+  a.diameter_prog_abs = l.flag("kenngr.durchm_prog_abs", a.diameter_prog_abs);
+  a.diameter_prog_rel = l.flag("kenngr.durchm_prog_rel", a.diameter_prog_rel);
   a.fast_from_cam = l.flag("kenngr.fast_from_cam", a.fast_from_cam);
-  a.vb_messen = l.num("kenngr.vb_messen", a.vb_messen);
+  a.measure_speed = l.num("kenngr.vb_messen", a.measure_speed);
   a.feedhold_deceleration_mode = l.text("kenngr.feedhold_deceleration_mode", a.feedhold_deceleration_mode);
-  a.mod_komp = l.flag("lr_param.mod_komp", a.mod_komp);
+  a.modulo_compensation = l.flag("lr_param.mod_komp", a.modulo_compensation);
   a.distance_control_on = l.flag("lr_param.distance_control_on", a.distance_control_on);
 }
 
@@ -140,12 +140,12 @@ AxisConfig build_axis(const ParamList& l, Diagnostics& d) {
   read_head(l, a);
   read_drive(l, a);
   for (std::size_t g = 0; g < kMaxGearStages; ++g) read_gear(l, g, a.gears[g], d);
-  if (a.ref_ohne_nocken && !a.ref_ohne_rev)
+  if (a.homing_without_cam && !a.homing_without_reversal)
     d.add(ErrorId::ConfigRefWithoutCam, l.loc("kenngr.ref_ohne_nocken"),
           "kenngr.ref_ohne_nocken 1 requires kenngr.ref_ohne_rev 1");
   if (!a.is_modulo())
-    cross_check(l, "kenngr.swe_neg", "kenngr.swe_pos", a.swe_neg < a.swe_pos,
-                fmt::format("kenngr.swe_neg ({}) must be below kenngr.swe_pos ({})", a.swe_neg, a.swe_pos), d);
+    cross_check(l, "kenngr.swe_neg", "kenngr.swe_pos", a.sw_limit_neg < a.sw_limit_pos,
+                fmt::format("kenngr.swe_neg ({}) must be below kenngr.swe_pos ({})", a.sw_limit_neg, a.sw_limit_pos), d);
   for (std::size_t g = 0; g < kMaxGearStages; ++g)
     if (g == 0 || a.gears[g].given) check_gear(l, a, g, d);
   return a;

@@ -56,16 +56,16 @@ void read_spindles(const ParamList& l, ChannelConfig& c, Diagnostics& d) {
     s.log_axis_nr = l.u32(k("log_achs_nr"), 0);
     s.plc_control = l.flag(k("plc_control"), false);
     s.autom_range = l.flag(k("autom_range"), false);
-    s.s_synch = l.u32(k("s_synch"), s.s_synch);
-    s.m3_synch = l.u32(k("m3_synch"), s.m3_synch);
-    s.m4_synch = l.u32(k("m4_synch"), s.m4_synch);
-    s.m5_synch = l.u32(k("m5_synch"), s.m5_synch);
-    s.m19_synch = l.u32(k("m19_synch"), s.m19_synch);
-    s.s_prozess_zeit_s = l.num(k("s_prozess_zeit"), 0);
-    s.m3_prozess_zeit_s = l.num(k("m3_prozess_zeit"), 0);
-    s.m4_prozess_zeit_s = l.num(k("m4_prozess_zeit"), 0);
-    s.m5_prozess_zeit_s = l.num(k("m5_prozess_zeit"), 0);
-    s.m19_prozess_zeit_s = l.num(k("m19_prozess_zeit"), 0);
+    s.s_sync = l.u32(k("s_synch"), s.s_sync);
+    s.m3_sync = l.u32(k("m3_synch"), s.m3_sync);
+    s.m4_sync = l.u32(k("m4_synch"), s.m4_sync);
+    s.m5_sync = l.u32(k("m5_synch"), s.m5_sync);
+    s.m19_sync = l.u32(k("m19_synch"), s.m19_sync);
+    s.s_ack_timeout_s = l.num(k("s_prozess_zeit"), 0);
+    s.m3_ack_timeout_s = l.num(k("m3_prozess_zeit"), 0);
+    s.m4_ack_timeout_s = l.num(k("m4_prozess_zeit"), 0);
+    s.m5_ack_timeout_s = l.num(k("m5_prozess_zeit"), 0);
+    s.m19_ack_timeout_s = l.num(k("m19_prozess_zeit"), 0);
     read_spindle_ranges(l, i, s, d);
     SourceLoc where{l.file(), s.source.line, 0};
     if (!s.name.starts_with('S'))
@@ -81,13 +81,13 @@ void warn_no_synch(const ParamList& l, const ChannelConfig& c, Diagnostics& d) {
   for (std::size_t n = 0; n < c.spindles.size(); ++n) {
     const auto& s = c.spindles[n];
     // Unlike M3..M19, S under NO_SYNCH is still executed: say what is lost.
-    if ((s.s_synch & ~sync::PLC_INFO) == sync::NO_SYNCH)
+    if ((s.s_sync & ~sync::PLC_INFO) == sync::NO_SYNCH)
       d.add(ErrorId::ConfigNoSynchSpeed, l.loc(fmt::format("spindel[{}].s_synch", n)),
             fmt::format("spindel[{}].s_synch of spindle {} is NO_SYNCH: S changes the speed but is "
                         "not output to the PLC and the path does not wait for the speed",
                         n, s.name));
     if (c.spindle_m_fct_free) continue;  // M3..M19 are plain M functions then
-    for (auto [fn, v] : {std::pair{"m3", s.m3_synch}, {"m4", s.m4_synch}, {"m5", s.m5_synch}, {"m19", s.m19_synch}}) {
+    for (auto [fn, v] : {std::pair{"m3", s.m3_sync}, {"m4", s.m4_sync}, {"m5", s.m5_sync}, {"m19", s.m19_sync}}) {
       if (v != sync::NO_SYNCH) continue;
       auto key = fmt::format("spindel[{}].{}_synch", n, fn);
       d.add(ErrorId::ConfigNoSynchSpindle, l.loc(key),

@@ -33,17 +33,17 @@ std::vector<ToolRecord> build_tools(const ParamList& l, Diagnostics& d) {
     t.given = true;
     // Geometry is in 0.1 um, or 0.0001 inch when mass_einheit is 1.
     double unit = l.u32(k("mass_einheit"), 0) == 1 ? 25.4 : 1.0;
-    t.laenge_mm = l.num(k("laenge"), 0) * unit;
+    t.length_mm = l.num(k("laenge"), 0) * unit;
     t.radius_mm = l.num(k("radius"), 0) * unit;
     for (auto j : l.indices(k("ax_versatz["), 1))
-      t.ax_versatz_mm[j] = l.num(fmt::format("wz[{}].ax_versatz[{}]", i, j), 0) * unit;
+      t.axis_offset_mm[j] = l.num(fmt::format("wz[{}].ax_versatz[{}]", i, j), 0) * unit;
     t.tool_fixed = l.flag(k("tool_fixed"), false);
     t.log_ax_nr_spdl = l.u32(k("log_ax_nr_spdl"), 0);
     t.vb_min_rpm = l.num(k("vb_min"), 0);
     t.vb_max_rpm = l.num(k("vb_max"), 1.0 / 6000.0);
     t.a_max_deg_s2 = l.num(k("a_max"), 1);
     t.typ = l.u32(k("typ"), 0);
-    t.srk_lage = l.u32(k("srk_lage"), 0);
+    t.cutting_edge_pos = l.u32(k("srk_lage"), 0);
     cross_check(l, k("vb_min"), k("vb_max"), t.vb_min_rpm <= t.vb_max_rpm,
                 fmt::format("{} must not exceed {}", listed(l, k("vb_min"), t.vb_min_rpm),
                             listed(l, k("vb_max"), t.vb_max_rpm)), d);
@@ -53,7 +53,7 @@ std::vector<ToolRecord> build_tools(const ParamList& l, Diagnostics& d) {
 
 ZeroOffsets build_zero(const ParamList& l) {
   ZeroOffsets z;
-  z.g53_verfuegbar = l.flag("g53_verfuegbar", false);
+  z.g53_available = l.flag("g53_verfuegbar", false);
   z.default_index = l.u32("default_index", 0);
   z.versch = read_groups(l, "np_grp", "versch");
   auto inactive = read_groups(l, "np_grp", "inaktiv");

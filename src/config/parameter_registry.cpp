@@ -139,7 +139,7 @@ std::optional<KeyRewrite> rewrite_alias(ListKind list, std::string_view key) {
     if (find_parameter(list, detail::split_key(k).pattern)) return KeyRewrite{k, true};
     return std::nullopt;
   }
-  // The seeds' short axis forms (achs_typ, antr_typ, achs_mode ...) without "kenngr.".
+  // The seeds' short axis forms (achs_typ, drive_type, axis_mode ...) without "kenngr.".
   if (list == ListKind::axis && k.find('.') == std::string::npos) {
     std::string full = "kenngr." + k;
     if (find_parameter(list, detail::split_key(full).pattern)) return KeyRewrite{full, false};

@@ -260,7 +260,7 @@ OffsetChain::Result OffsetChain::set_clamp_offsets(const AxisValues& offset_mm) 
 // per-axis offsets; machine or machining directions per tool_fixed.
 void OffsetChain::apply_tool(State& s, bool commit_now) const {
   AxisValues vec{};
-  for (std::size_t j = 0; j < config_.axis_count; ++j) vec[j] = s.tool.ax_versatz_mm[j];
+  for (std::size_t j = 0; j < config_.axis_count; ++j) vec[j] = s.tool.axis_offset_mm[j];
   auto t = static_cast<std::size_t>(plane_axes(plane_).tool);
   if (t < config_.axis_count) vec[t] += s.tool.length_mm;
   s.tool_pcs.selected = s.tool.tool_fixed ? AxisValues{} : vec;
@@ -280,7 +280,7 @@ void OffsetChain::apply_tlc(State& s) const {
 OffsetChain::Result OffsetChain::select_tool(const ToolOffsets& tool) {
   if (!std::isfinite(tool.length_mm)) return fail(ErrorId::FrValueNotFinite);
   for (std::size_t j = 0; j < config_.axis_count; ++j)
-    if (!std::isfinite(tool.ax_versatz_mm[j])) return fail(ErrorId::FrValueNotFinite, static_cast<int>(j));
+    if (!std::isfinite(tool.axis_offset_mm[j])) return fail(ErrorId::FrValueNotFinite, static_cast<int>(j));
   // P-CHAN-00100 = 1 moves the offsets with the D word, except under a
   // kinematic transformation where the next absolute position decides.
   bool direct = config_.move_tool_offsets_directly && !rtcp_active_;

@@ -7,7 +7,7 @@ std::expected<AxisValues, FrameError> ZeroOffsetTable::resolve(int index) const 
   if (static_cast<std::size_t>(index) >= groups.size())
     return std::unexpected(FrameError{ErrorId::NcZeroOffsetIndexTooLarge, -1, index});
   AxisValues out{};
-  // G53 normally means "no zero offset"; only g53_verfuegbar makes group 0 usable.
+  // G53 normally means "no zero offset"; only g53_available makes group 0 usable.
   if (index == 0 && !g53_available) return out;
   const ZeroOffsetGroup& g = groups[static_cast<std::size_t>(index)];
   for (std::size_t j = 0; j < kMaxAxes; ++j)

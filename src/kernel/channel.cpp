@@ -1,6 +1,7 @@
 #include "channel.hpp"
 
 #include <utility>
+#include <variant>
 
 namespace nck::kernel {
 
@@ -47,7 +48,7 @@ void Channel::run_blocks(Cycle& cy) noexcept {
         set_state(ProgramState::running, StateReason::cycle_start, cy);
       }
       if (commands_->empty()) break;
-      start(commands_->front(), cy);
+      start(cy);
       commands_->pop();
       if (done()) break;
     }
@@ -75,68 +76,98 @@ motion::AxisVector Channel::machine_position() const noexcept {
   return m;
 }
 
-void Channel::start(const Command& c, Cycle& cy) noexcept {
-  current_ = c;
-  if (state_ == ProgramState::idle) set_state(ProgramState::running, StateReason::start, cy);
-  path_.start_block(current_);
-  active_ = true;
-  phase_ = Phase::pre_wait;
-  emit_block_events(cy);
-  if (current_.kind == CommandKind::error) {
-    raise(current_.error_id, current_.message_index, cy);
-    return;
-  }
-  if (!start_units(cy)) return;
-  (void)fail(sync_.issue_all(current_, SyncPoint::before, cy), cy);
-}
+namespace {
 
-// The block event and what the block reports with it.
-void Channel::emit_block_events(Cycle& cy) noexcept {
-  const Command& c = current_;
-  if (c.emit_block_event) {
-    Event e = cy.event(EventKind::block);
-    e.message_index = c.frame_index;  // the block's program -> machine map (report)
-    cy.sink.emit(e);
-  }
-  for (const Command::Warning& w : c.warnings) {
+// What a block's attachments give the units when it starts: pointers into
+// the command queue, valid while the command is its front (start()).
+struct BlockAttachments {
+  const StartPoint* start = nullptr;
+  const ProgramMap* map = nullptr;
+  const CaxChange* cax = nullptr;
+  const LinkCommand* link = nullptr;
+  const DistChange* dist = nullptr;
+  const FeedLink* feed = nullptr;
+  const CssLink* css = nullptr;
+  const ManualChange* manual = nullptr;
+};
+
+// Sorts a block's attachments: what is reported goes out as an event (after
+// the block event, in queue order), outputs and spindle actions go to the
+// sync unit, the rest is noted for the units that take it.
+struct AttachmentSorter {
+  BlockAttachments& parts;
+  SyncUnit& sync;
+  Cycle& cy;
+
+  void operator()(const Warning& w) const noexcept {
     Event e = cy.event(EventKind::warning);
     e.id = w.id;
     e.message_index = w.message_index;
     cy.sink.emit(e);
   }
-  for (std::uint32_t payload : c.offset_events) {
+  void operator()(const OffsetEvent& o) const noexcept {
     Event e = cy.event(EventKind::offset);
-    e.message_index = payload;
+    e.message_index = o.index;
     cy.sink.emit(e);
   }
-  if (c.trc_event) {
+  void operator()(const TrcChange& t) const noexcept {
     Event e = cy.event(EventKind::trc);
-    e.trc_state = c.trc_state;
-    e.trc_d = c.trc_d;
-    e.trc_radius_mm = c.trc_radius_mm;
+    e.trc_mode = t.mode;
+    e.trc_d = t.d;
+    e.trc_radius_mm = t.radius_mm;
     cy.sink.emit(e);
   }
-}
+  void operator()(const Output& o) const noexcept { sync.take(o); }
+  void operator()(const SpindleAction& a) const noexcept { sync.take(a); }
+  void operator()(const StartPoint& x) const noexcept { parts.start = &x; }
+  void operator()(const ProgramMap& x) const noexcept { parts.map = &x; }
+  void operator()(const CaxChange& x) const noexcept { parts.cax = &x; }
+  void operator()(const LinkCommand& x) const noexcept { parts.link = &x; }
+  void operator()(const DistChange& x) const noexcept { parts.dist = &x; }
+  void operator()(const FeedLink& x) const noexcept { parts.feed = &x; }
+  void operator()(const CssLink& x) const noexcept { parts.css = &x; }
+  void operator()(const ManualChange& x) const noexcept { parts.manual = &x; }
+};
 
-// Each unit takes its part of the block; false when one ended the program.
-bool Channel::start_units(Cycle& cy) noexcept {
-  if (fail(cax_.start(current_, path_.position(), cy), cy)) return false;
-  if (fail(ax_links_.start(current_.link, path_.position(), cy), cy)) return false;
-  if (fail(dist_.start(current_, cy), cy)) return false;
-  spindle_path_.start(current_.feed_link, current_.css, cy.machine);
-  handwheel_.start(current_);
-  sync_.take_late_waits(current_);
-  return true;
+}  // namespace
+
+// The queue's front command starts (it leaves the queue after this).
+void Channel::start(Cycle& cy) noexcept {
+  current_ = commands_->front();
+  if (state_ == ProgramState::idle) set_state(ProgramState::running, StateReason::start, cy);
+  active_ = true;
+  phase_ = Phase::pre_wait;
+  if (current_.emit_block_event) {
+    Event e = cy.event(EventKind::block);
+    e.message_index = current_.frame_index.value_or(kNoMessage);  // the block's program -> machine map (report)
+    cy.sink.emit(e);
+  }
+  BlockAttachments parts;
+  sync_.start_block(current_);
+  const AttachmentSorter sort{parts, sync_, cy};
+  for (std::size_t i = 0; i < current_.attachments; ++i) std::visit(sort, commands_->attachment(i));
+  path_.start_block(current_, parts.start, parts.map);
+  if (const Error* e = current_.as<Error>()) {
+    raise(e->id, e->message_index, cy);
+    return;
+  }
+  // Each unit takes its part of the block; a fault ends the program.
+  if (parts.cax && fail(cax_.start(*parts.cax, path_.position(), cy), cy)) return;
+  if (parts.link && fail(ax_links_.start(*parts.link, path_.position(), cy), cy)) return;
+  if (parts.dist && fail(dist_.start(*parts.dist, cy), cy)) return;
+  spindle_path_.start(parts.feed, parts.css, cy.machine);
+  handwheel_.start(parts.manual);
+  (void)fail(sync_.issue_all(SyncPoint::before, cy), cy);
 }
 
 // Runs the current block's phases as far as this cycle allows.
 void Channel::advance(Cycle& cy) noexcept {
   if (phase_ == Phase::pre_wait && !begin_body(cy)) return;
   if (phase_ == Phase::body) {
-    const bool timed = current_.kind == CommandKind::motion || current_.kind == CommandKind::dwell;
+    const bool timed = current_.is<Motion>() || current_.is<Dwell>();
     execute(cy);
     if (phase_ != Phase::post_wait) return;
-    (void)fail(sync_.issue_all(current_, SyncPoint::after, cy), cy);
+    (void)fail(sync_.issue_all(SyncPoint::after, cy), cy);
     // A motion or dwell used this cycle; its post waits are checked next
     // cycle — unless the path passes on into the next block now.
     if (timed && !path_.passing()) return;
@@ -150,61 +181,61 @@ bool Channel::begin_body(Cycle& cy) noexcept {
   for (;;) {
     if (!waits_done(SyncPoint::before, cy) || done()) return false;
     // Actions held back behind a gear change go out once it is done.
-    if (!sync_.actions_left(current_)) break;
-    (void)fail(sync_.issue_spindle_actions(current_, SyncPoint::before, cy), cy);
+    if (!sync_.actions_left()) break;
+    (void)fail(sync_.issue_spindle_actions(SyncPoint::before, cy), cy);
     if (done()) return false;
   }
   phase_ = Phase::body;
-  if (current_.kind == CommandKind::motion) {
-    path_.start_motion(current_, *commands_, cy.dt_s);
-    if (fail(spindle_path_.start_motion(current_.feed_link, path_.profile(), cy.machine), cy)) return false;
-    if (path_.carry_on(current_)) {
+  if (const Motion* m = current_.as<Motion>()) {
+    path_.start_motion(*m, *commands_, cy.dt_s);
+    if (fail(spindle_path_.start_motion(path_.profile(), cy.machine), cy)) return false;
+    if (path_.carry_on(*m)) {
       // The block before ran into this one during this cycle: the set
       // point is already the distance it ran past its end.
-      place(path_.s_mm());
+      place(*m, path_.s_mm());
       return false;
     }
   }
-  dwell_.start(current_);
+  if (const Dwell* d = current_.as<Dwell>()) dwell_.start(*d);
   return true;
 }
 
 // The body of the block: motion, dwell, or nothing.
 void Channel::execute(Cycle& cy) noexcept {
-  if (current_.kind == CommandKind::motion) {
-    run_motion(cy);
-  } else if (current_.kind == CommandKind::dwell) {
+  if (const Motion* m = current_.as<Motion>()) {
+    run_motion(*m, cy);
+  } else if (const Dwell* d = current_.as<Dwell>()) {
     bool over = false;
-    if (!fail(dwell_.step(current_, cy, over), cy) && over) phase_ = Phase::post_wait;
+    if (!fail(dwell_.step(*d, cy, over), cy) && over) phase_ = Phase::post_wait;
   } else {
     phase_ = Phase::post_wait;
   }
 }
 
-void Channel::run_motion(Cycle& cy) noexcept {
-  if (measuring_.run_ends(current_, cy.in)) {
+void Channel::run_motion(const Motion& m, Cycle& cy) noexcept {
+  if (measuring_.run_ends(m, cy.in)) {
     const Fault f = measuring_.end_run(path_.position(), handwheel_.in_force_mm(), cy);
     path_.halt();
     phase_ = Phase::post_wait;
     (void)fail(f, cy);
     return;
   }
-  spindle_path_.limit_path(current_.feed_link, path_.profile(), cy.machine);
-  const motion::ProfileSample st = path_.step(current_, *commands_, cy);
-  measuring_.stepped(current_);
-  place(st.s_mm);
-  spindle_path_.follow_path(current_.feed_link, st.s_mm, st.v_mm_s, cy.machine);
+  spindle_path_.limit_path(path_.profile(), cy.machine);
+  const motion::ProfileSample st = path_.step(m, *commands_, cy);
+  measuring_.stepped(m);
+  place(m, st.s_mm);
+  spindle_path_.follow_path(st.s_mm, st.v_mm_s, cy.machine);
   if (!st.finished) return;
-  place(current_.segment.length());
+  place(m, path_.segment().length());
   path_.end_motion();
-  if (!measuring_.reached_end(current_)) phase_ = Phase::post_wait;
+  if (!measuring_.reached_end(m)) phase_ = Phase::post_wait;
 }
 
 // The set point at path length s: the path's point and the handwheel
 // offset's share in it.
-void Channel::place(double s_mm) noexcept {
-  handwheel_.blend(current_, s_mm, n_axes_);
-  path_.place(current_, s_mm, n_axes_);
+void Channel::place(const Motion& m, double s_mm) noexcept {
+  handwheel_.blend(m, path_.segment().length(), s_mm, n_axes_);
+  path_.place(m, s_mm, n_axes_);
 }
 
 bool Channel::waits_done(SyncPoint phase, Cycle& cy) noexcept {
@@ -216,29 +247,30 @@ bool Channel::waits_done(SyncPoint phase, Cycle& cy) noexcept {
 void Channel::end_block(Cycle& cy) noexcept {
   // Program end switches distance control off: the block ends once the
   // offset has been travelled out (TURNING_OFF).
-  if (current_.kind == CommandKind::end && dist_.wind_down()) return;
+  const End* end = current_.as<End>();
+  if (end && dist_.wind_down()) return;
   active_ = false;
-  if (current_.kind == CommandKind::stop) {
-    stop_program(cy);
-  } else if (current_.kind == CommandKind::end) {
-    end_program(current_.end_reason, cy);
+  if (const Hold* hold = current_.as<Hold>()) {
+    stop_program(*hold, cy);
+  } else if (end) {
+    end_program(end->reason, cy);
   }
 }
 
 // M1 stops only while the HLI's optional-stop switch is on. The channel
 // then holds before its next block until a cycle start (ChannelInput).
-void Channel::stop_program(Cycle& cy) noexcept {
-  if (current_.optional_stop && !cy.in.optional_stop) return;
+void Channel::stop_program(const Hold& hold, Cycle& cy) noexcept {
+  if (hold.optional_stop && !cy.in.optional_stop) return;
   cy.sink.emit(cy.event(EventKind::stop));
-  set_state(ProgramState::hold, current_.optional_stop ? StateReason::m1 : StateReason::m0, cy);
+  set_state(ProgramState::hold, hold.optional_stop ? StateReason::m1 : StateReason::m0, cy);
 }
 
 void Channel::set_state(ProgramState to, StateReason why, Cycle& cy) noexcept {
   if (to == state_) return;
   Event e = cy.event(EventKind::state);
-  e.state_from = static_cast<std::uint8_t>(state_);
-  e.state_to = static_cast<std::uint8_t>(to);
-  e.state_reason = static_cast<std::uint8_t>(why);
+  e.state_from = state_;
+  e.state_to = to;
+  e.state_reason = why;
   cy.sink.emit(e);
   state_ = to;
 }

@@ -12,7 +12,7 @@
 // raises what they report as a Fault.
 //
 // Continuous path: a motion ends at the velocity the look-ahead planned
-// (Command::v_end_mm_s, 0 = exact stop). When it ends at speed, the next
+// (Motion::v_end_mm_s, 0 = exact stop). When it ends at speed, the next
 // block starts within the same cycle and carries on from the distance the
 // path ran past the end, so the set points never pause at a transition.
 // The look-ahead lets the path pass only into blocks that do not wait;
@@ -88,14 +88,12 @@ class Channel {
 
   // the block sequence
   void run_blocks(Cycle& cy) noexcept;
-  void start(const Command& c, Cycle& cy) noexcept;
-  void emit_block_events(Cycle& cy) noexcept;
-  bool start_units(Cycle& cy) noexcept;
+  void start(Cycle& cy) noexcept;
   void advance(Cycle& cy) noexcept;
   bool begin_body(Cycle& cy) noexcept;
   void execute(Cycle& cy) noexcept;
-  void run_motion(Cycle& cy) noexcept;
-  void place(double s_mm) noexcept;
+  void run_motion(const Motion& m, Cycle& cy) noexcept;
+  void place(const Motion& m, double s_mm) noexcept;
   bool waits_done(SyncPoint phase, Cycle& cy) noexcept;
   void end_block(Cycle& cy) noexcept;
   void write_output(ChannelOutput& out) const noexcept;
@@ -109,7 +107,7 @@ class Channel {
   // Enters program state `to` (a `state` event when it changes).
   void set_state(ProgramState to, StateReason why, Cycle& cy) noexcept;
   // A programmed stop that applies holds the channel until cycle start.
-  void stop_program(Cycle& cy) noexcept;
+  void stop_program(const Hold& hold, Cycle& cy) noexcept;
 
   // what the channel is
   CommandQueue* commands_ = nullptr;

@@ -94,7 +94,7 @@ ChannelState Kernel::channel_state(std::size_t ch) const {
   return ChannelState{c.position(),      c.manual_offsets(),
                       c.machine_position(), c.status(),
                       c.program_state(), c.event(EventKind::state, 0.0),
-                      static_cast<std::uint8_t>(c.dist_state()), c.dist_offset_mm()};
+                      c.dist_state(), c.dist_offset_mm()};
 }
 
 void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {

@@ -15,7 +15,7 @@ void Kernel::take_acknowledgements(const TickInput& in, double t_s, TickOutput& 
     e.t_s = t_s;
     e.channel = a.output.channel;
     e.kind = EventKind::plc_ack;
-    e.fn = function_kind(a.output.kind);
+    e.fn = a.output.kind;
     e.fn_number = a.output.number;
     e.spindle = spindle_map_.at(a.output.channel, a.output.spindle);
     out.emit(e);
@@ -85,7 +85,7 @@ void acknowledge_external_command(SpindleUnit& u, std::int8_t index, plc::ExtCom
   e.t_s = t_s;
   e.channel = u.channel;
   e.kind = EventKind::plc_ack;
-  e.fn = FunctionKind::m;
+  e.fn = plc::TechKind::m;
   e.fn_number = u.ext_m;
   e.spindle = index;
   out.emit(e);

@@ -20,7 +20,7 @@ void report_spindle_changes(SpindleUnit& u, std::int8_t index, double t_s, TickO
   const spindle::SpindleStatus& s = u.axis.status();
   if (s.mode != u.last_mode || (s.cmd_rpm != u.last_cmd_rpm && !u.speed_law)) {
     Event e = spindle_event(u, index, t_s, EventKind::spindle);
-    e.spindle_mode = static_cast<std::uint8_t>(s.mode);
+    e.spindle_mode = s.mode;
     e.value = s.cmd_rpm;
     e.gear = s.gear_stage;
     out.emit(e);
@@ -62,7 +62,7 @@ void advance_gear_job(SpindleUnit& u, std::int8_t index, PlcOutputs& plc, double
     }
     u.gear_output_delayed = false;
     Event e = spindle_event(u, index, t_s, EventKind::plc_out);
-    e.fn = FunctionKind::m;
+    e.fn = plc::TechKind::m;
     e.fn_number = m;
     e.sync = config::sync::MVS_SVS;
     out.emit(e);
@@ -71,7 +71,7 @@ void advance_gear_job(SpindleUnit& u, std::int8_t index, PlcOutputs& plc, double
     (void)u.axis.finish_gear_change();
     Event e = spindle_event(u, index, t_s, EventKind::gear);
     e.gear = u.gear_stage;
-    e.fn = FunctionKind::m;
+    e.fn = plc::TechKind::m;
     e.fn_number = m;
     out.emit(e);
     u.last_gear = u.gear_stage;

@@ -57,25 +57,6 @@ struct SpindleUnit {
   std::uint32_t last_gear = 1;
 };
 
-// The event's function kind of a PLC technology function, and back. rt
-constexpr FunctionKind function_kind(plc::TechKind k) noexcept {
-  switch (k) {
-    case plc::TechKind::h: return FunctionKind::h;
-    case plc::TechKind::s: return FunctionKind::s;
-    case plc::TechKind::t: return FunctionKind::t;
-    case plc::TechKind::m: break;
-  }
-  return FunctionKind::m;
-}
-constexpr plc::TechKind tech_kind(FunctionKind fn) noexcept {
-  switch (fn) {
-    case FunctionKind::h: return plc::TechKind::h;
-    case FunctionKind::s: return plc::TechKind::s;
-    case FunctionKind::t: return plc::TechKind::t;
-    default: return plc::TechKind::m;
-  }
-}
-
 // Emits spindle / speed_reached events for what changed since
 // the last cycle. rt
 void report_spindle_changes(SpindleUnit& u, std::int8_t index, double t_s, TickOutput& out) noexcept;

@@ -49,6 +49,43 @@ std::string_view describe(ArcError e) noexcept {
   return "unknown arc error";
 }
 
+SegmentTail Segment::tail() const noexcept {
+  SegmentTail t;
+  t.kind = kind_;
+  t.n_axes = static_cast<std::uint8_t>(n_axes_);
+  t.plane_a = static_cast<std::uint8_t>(plane_a_);
+  t.plane_b = static_cast<std::uint8_t>(plane_b_);
+  t.end = end_;
+  t.length_mm = length_mm_;
+  t.center_a = center_a_;
+  t.center_b = center_b_;
+  t.r_start_mm = r_start_mm_;
+  t.r_end_mm = r_end_mm_;
+  t.angle_start_rad = angle_start_rad_;
+  t.sweep_rad = sweep_rad_;
+  t.plane_len_mm = plane_len_mm_;
+  return t;
+}
+
+Segment Segment::joined(const AxisVector& start, const SegmentTail& t) noexcept {
+  Segment s;
+  s.kind_ = t.kind;
+  s.n_axes_ = t.n_axes;
+  s.plane_a_ = t.plane_a;
+  s.plane_b_ = t.plane_b;
+  s.start_ = start;
+  s.end_ = t.end;
+  s.length_mm_ = t.length_mm;
+  s.center_a_ = t.center_a;
+  s.center_b_ = t.center_b;
+  s.r_start_mm_ = t.r_start_mm;
+  s.r_end_mm_ = t.r_end_mm;
+  s.angle_start_rad_ = t.angle_start_rad;
+  s.sweep_rad_ = t.sweep_rad;
+  s.plane_len_mm_ = t.plane_len_mm;
+  return s;
+}
+
 double Segment::fraction(double s_mm) const noexcept {
   if (!(length_mm_ > 0.0)) return 1.0;
   if (!(s_mm > 0.0)) return 0.0;  // also catches NaN

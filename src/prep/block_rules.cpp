@@ -91,7 +91,7 @@ PlanResult check_plc_spindles(const nc::Block& b, const config::ChannelConfig& c
   return {};
 }
 
-PlanResult add_outputs(const nc::Block& b, Command& c, const config::ChannelConfig& channel) {
+PlanResult add_outputs(const nc::Block& b, PlannedCommand& c, const config::ChannelConfig& channel) {
   auto overflow = [&] { return block_error(ErrorId::KernelQueueOverflow, b, "more than 8 PLC outputs in one block"); };
   for (int m : b.m) {
     if (is_fixed_m(m)) continue;
@@ -100,14 +100,14 @@ PlanResult add_outputs(const nc::Block& b, Command& c, const config::ChannelConf
                                    : config::sync::MOS;
     // A channel M function with NO_SYNCH is not output (FCT-S1 2.5).
     if (sync == config::sync::NO_SYNCH) continue;
-    if (!c.outputs.push_back({FunctionKind::m, m, sync})) return overflow();
+    if (!c.outputs.push_back({TechKind::m, m, sync})) return overflow();
   }
   for (int h : b.h)
-    if (!c.outputs.push_back({FunctionKind::h, h, config::sync::MOS})) return overflow();
+    if (!c.outputs.push_back({TechKind::h, h, config::sync::MOS})) return overflow();
   // #TOOL PREP [basic, ...] is the T word's form (facts B16): the PLC gets the basic number.
   std::optional<std::int64_t> t = b.t;
   if (const auto* td = b.hash ? std::get_if<nc::ToolData>(&*b.hash) : nullptr; td && td->prep) t = td->fields[0];
-  if (t && !c.outputs.push_back({FunctionKind::t, static_cast<std::int32_t>(*t), config::sync::MOS}))
+  if (t && !c.outputs.push_back({TechKind::t, static_cast<std::int32_t>(*t), config::sync::MOS}))
     return overflow();
   return {};
 }

@@ -36,7 +36,7 @@ ChannelFrames::ChannelFrames(const config::ChannelConfig& ch, const config::Chan
   cfg.move_tool_offsets_directly = ch.move_tool_offsets_directly;
   chain_ = frames::OffsetChain(cfg);
 
-  zero_table_.g53_available = data.zero.g53_verfuegbar;
+  zero_table_.g53_available = data.zero.g53_available;
   zero_table_.default_index = static_cast<int>(data.zero.default_index);
   if (zero_table_.groups.size() < data.zero.versch.size()) zero_table_.groups.resize(data.zero.versch.size());
   for (std::size_t i = 0; i < data.zero.versch.size(); ++i) {

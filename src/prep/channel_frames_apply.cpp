@@ -134,8 +134,8 @@ Result ChannelFrames::apply_words(const nc::Block& b, FrameChanges& out) {
         return std::unexpected(make_diagnostic(ErrorId::KernelUnknownTool, {"", b.line, 0},
                                                fmt::format("D{} is not in the tool list", *d)));
       const config::ToolRecord& r = tools_[static_cast<std::size_t>(*d)];
-      t.length_mm = r.laenge_mm;
-      t.ax_versatz_mm = to_chain_order(r.ax_versatz_mm);
+      t.length_mm = r.length_mm;
+      t.axis_offset_mm = to_chain_order(r.axis_offset_mm);
       t.tool_fixed = r.tool_fixed;
     }
     auto r = chain_.select_tool(t);

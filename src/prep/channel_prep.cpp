@@ -121,12 +121,7 @@ bool ChannelPrep::prepare(const nc::Block& b, kernel::CommandQueue& commands) {
 
 namespace {
 
-void set_trc_event(kernel::Command& c, const RadiusComp::State& s) {
-  c.trc_event = true;
-  c.trc_state = s.g;
-  c.trc_d = s.d;
-  c.trc_radius_mm = s.radius_mm;
-}
+void set_trc_event(PlannedCommand& c, const RadiusComp::State& s) { c.trc = kernel::TrcChange{s.mode, s.d, s.radius_mm}; }
 
 }  // namespace
 
@@ -143,12 +138,12 @@ void ChannelPrep::plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& comm
     if (!planned.empty()) attach_warnings(planned[0]);
     if (!o.error) {
       if (o.inserted)
-        for (kernel::Command& c : planned) c.emit_block_event = false;
+        for (PlannedCommand& c : planned) c.emit_block_event = false;
       else if (const auto st = trc_.report(o.block); st && !planned.empty())
         set_trc_event(planned[0], *st);
       if (record_frames_) {
         const std::uint32_t frame = frame_index_now();
-        for (kernel::Command& c : planned) c.frame_index = frame;
+        for (PlannedCommand& c : planned) c.frame_index = frame;
       }
     }
     if (backlog_.empty() && (window_.has_room() || window_.release(commands, false)))
@@ -171,7 +166,7 @@ bool ChannelPrep::drain_backlog(kernel::CommandQueue& commands) {
 // An error or the missing program end comes after every block before it.
 // What tool radius compensation still holds does not run: its end would
 // depend on blocks that never come (the same rule as for its own errors).
-void ChannelPrep::hand_over(const kernel::Command& c, kernel::CommandQueue& commands) {
+void ChannelPrep::hand_over(const PlannedCommand& c, kernel::CommandQueue& commands) {
   trc_.discard();
   PlannedBlock b;
   (void)b.push_back(c);
@@ -226,7 +221,7 @@ void ChannelPrep::collect_warnings() {
     if (ds[diagnostics_seen_].severity == Severity::warning) pending_warnings_.push_back(ds[diagnostics_seen_]);
 }
 
-void ChannelPrep::attach_warnings(kernel::Command& c) {
+void ChannelPrep::attach_warnings(PlannedCommand& c) {
   if (pending_warnings_.empty()) return;
   add_warnings(c, pending_warnings_, *store_);
   pending_warnings_.clear();

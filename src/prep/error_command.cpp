@@ -2,8 +2,8 @@
 
 namespace nck::prep {
 
-Command error_command(const Diagnostic& d, std::uint16_t file_id, PlanStore& store) {
-  Command c;
+PlannedCommand error_command(const Diagnostic& d, std::uint16_t file_id, PlanStore& store) {
+  PlannedCommand c;
   c.kind = CommandKind::error;
   c.error_id = d.id;
   c.file_id = file_id;

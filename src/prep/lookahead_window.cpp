@@ -9,23 +9,21 @@
 namespace nck::prep {
 namespace {
 
-using kernel::Command;
-using kernel::CommandKind;
 using kernel::SyncPoint;
 
 // Nothing around it makes the channel wait or act at a block boundary: no
 // output, spindle function, probing, manual mode or feedback. Only then can
 // the path run through its ends.
-bool is_quiet(const Command& c) {
+bool is_quiet(const PlannedCommand& c) {
   return c.outputs.empty() && c.spindle_actions.empty() && !c.measure && c.manual_on == 0 &&
          c.manual_off == 0 && !c.get_manual_offsets && !c.expl_syn;
 }
 
 // A block without motion the path may run through (it only writes events).
-bool is_transparent(const Command& c) { return c.kind == CommandKind::nop && is_quiet(c); }
+bool is_transparent(const PlannedCommand& c) { return c.kind == CommandKind::nop && is_quiet(c); }
 
 // An MVS_SLM function: the channel waits for it when the next G1/G2/G3 starts.
-bool waits_at_next_feed_motion(const Command& c) {
+bool waits_at_next_feed_motion(const PlannedCommand& c) {
   for (const kernel::Output& o : c.outputs)
     if (kernel::sync_point(o.sync) == SyncPoint::late_motion) return true;
   for (const kernel::SpindleAction& a : c.spindle_actions)
@@ -40,12 +38,12 @@ LookAheadWindow::LookAheadWindow(std::size_t depth, double cycle_s)
 
 bool LookAheadWindow::push(const PlannedBlock& b) {
   if (!has_room()) return false;
-  for (const Command& c : b) append(c);
+  for (const PlannedCommand& c : b) append(c);
   return true;
 }
 
-void LookAheadWindow::append(const Command& command) {
-  Command c = command;
+void LookAheadWindow::append(const PlannedCommand& command) {
+  PlannedCommand c = command;
   const bool must_wait = late_wait_pending_ && c.feed_motion;
   const bool linkable =
       c.kind == CommandKind::motion && open_motion_ != 0 && open_motion_ - 1 >= head_ && is_quiet(c) && !must_wait;
@@ -97,7 +95,7 @@ void LookAheadWindow::raise_chain(std::uint64_t next) {
 // profile starts c at the distance the block before ran past its end (up to
 // one cycle of travel) and may pass into c up to one braking step faster
 // than planned; the margins keep its braking within a_dec nonetheless.
-double LookAheadWindow::entry_limit(const Command& c) const {
+double LookAheadWindow::entry_limit(const PlannedCommand& c) const {
   const double length = c.segment.length(), a = c.limits.a_dec_mm_s2;
   const double v = motion::entry_velocity_limit(length, c.v_end_mm_s, a, cycle_s_);
   const double shorter = std::max(length - v * cycle_s_, 0.0);
@@ -128,7 +126,7 @@ motion::PathLimits LookAheadWindow::fillet_limits(const motion::Segment& fillet,
 // command able to brake: follows the lowered end velocities back along the
 // chain until they stop changing (the normal case: at once), and fails when
 // they would reach a command that has left the window.
-bool LookAheadWindow::lowering_is_safe(std::uint64_t seq, Command changed) const {
+bool LookAheadWindow::lowering_is_safe(std::uint64_t seq, PlannedCommand changed) const {
   for (;;) {
     const Entry& e = at(seq);
     const double limit = entry_limit(changed);
@@ -143,12 +141,12 @@ bool LookAheadWindow::lowering_is_safe(std::uint64_t seq, Command changed) const
   }
 }
 
-double LookAheadWindow::cruise(const Command& c) const { return std::min(c.v_cmd_mm_s, c.limits.v_max_mm_s); }
+double LookAheadWindow::cruise(const PlannedCommand& c) const { return std::min(c.v_cmd_mm_s, c.limits.v_max_mm_s); }
 
 // The velocity limit at a transition the blend made tangent: what is left
 // of a kink (an arc's end radius rounding) by the planner's corner rule,
 // and neither side's cruise velocity exceeded.
-double LookAheadWindow::tangent_cap(const Command& from, const Command& to) const {
+double LookAheadWindow::tangent_cap(const PlannedCommand& from, const PlannedCommand& to) const {
   motion::AxisVector t_in{}, t_out{};
   from.segment.tangent_at(from.segment.length(), t_in);
   to.segment.tangent_at(0.0, t_out);
@@ -160,7 +158,7 @@ double LookAheadWindow::tangent_cap(const Command& from, const Command& to) cons
 // appended): shortens both, appends the fillet as a motion of prev's block
 // and makes it the open motion. False (nothing changed) where no fillet
 // fits or it would not let the path pass faster than the sharp corner.
-bool LookAheadWindow::blend(std::uint64_t prev, Command& next) {
+bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   Entry& p = at(prev);
   if (axes_.n_axes == 0 || !next.feed_motion || next.mapped || next.trafo.kind != motion::CaxTrafoKind::none ||
       next.feed_link.kind != kernel::FeedLinkKind::none)
@@ -174,7 +172,7 @@ bool LookAheadWindow::blend(std::uint64_t prev, Command& next) {
                                        0.45 * p.programmed_mm, 0.45 * next.segment.length());
   if (!cb) return false;
   const std::span<const motion::AxisDynamics> dyn(axes_.feed_dyn.data(), axes_.n_axes);
-  Command f;
+  PlannedCommand f;
   f.kind = CommandKind::motion;
   f.file_id = p.command.file_id;
   f.line = p.command.line;
@@ -190,7 +188,7 @@ bool LookAheadWindow::blend(std::uint64_t prev, Command& next) {
   if (!motion::valid(f.limits) || cruise(f) <= next.v_entry_max_mm_s) return false;
   // Every piece must take more than a cycle's travel, or the profile would
   // stand still for a cycle at its end (it carries one cycle at most).
-  Command before = p.command, after = next;
+  PlannedCommand before = p.command, after = next;
   before.segment = cb->before;
   after.segment = cb->after;
   const double dt2 = 2 * cycle_s_;
@@ -236,8 +234,7 @@ bool LookAheadWindow::blend(std::uint64_t prev, Command& next) {
 bool LookAheadWindow::release(kernel::CommandQueue& q, bool flush) {
   const std::size_t keep = flush ? 0 : depth_;
   while (size() > keep) {
-    if (q.free_slots() == 0) return false;
-    (void)q.push(at(head_).command);  // fits: checked above
+    if (!packer_.pack(at(head_).command, q)) return false;
     ++head_;
   }
   return true;

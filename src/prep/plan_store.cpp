@@ -4,10 +4,10 @@
 
 namespace nck::prep {
 
-void add_warnings(kernel::Command& c, const std::vector<Diagnostic>& warnings, PlanStore& store) {
+void add_warnings(PlannedCommand& c, const std::vector<Diagnostic>& warnings, PlanStore& store) {
   for (std::size_t i = 0; i < warnings.size(); ++i) {
     const Diagnostic& w = warnings[i];
-    if (c.warnings.size() + 1 < kernel::Command::kMaxWarnings || i + 1 == warnings.size()) {
+    if (c.warnings.size() + 1 < PlannedCommand::kMaxWarnings || i + 1 == warnings.size()) {
       if (!c.warnings.push_back({w.id, store.add_message(w.message)})) break;
       continue;
     }

@@ -34,7 +34,6 @@ Planner::Planner(const config::Machine& machine, std::size_t channel_index, Plan
       spindles_(machine, channel_index, std::vector<int>(spindles.begin(), spindles.end())),
       feed_(channel_, spindles),
       diameter_(machine, channel_, n_axes_),
-      measure_(machine, channel_, n_axes_),
       couplings_(channel_, spindles) {
   planned_.reread(frames_);  // the clamp / default zero offset act from the start
 }
@@ -79,7 +78,7 @@ Planner::Planned Planner::plan_one(const nc::Block& b, PlanContext& ctx) {
   modal_ = b.modal;
   if (auto r = check_supported(b); !r) return std::unexpected(r.error());
   if (auto r = check_spindle_scope(b); !r) return std::unexpected(r.error());
-  Command c;
+  PlannedCommand c;
   c.file_id = b.file_id;
   c.line = b.line;
   c.has_n = b.n.has_value();
@@ -90,7 +89,7 @@ Planner::Planned Planner::plan_one(const nc::Block& b, PlanContext& ctx) {
 }
 
 // The block's functions, unit after unit.
-PlanResult Planner::plan_technologies(const nc::Block& b, Command& c, PlanContext& ctx) {
+PlanResult Planner::plan_technologies(const nc::Block& b, PlannedCommand& c, PlanContext& ctx) {
   if (auto r = diameter_.check(b, c, ctx); !r) return r;
   if (auto r = apply_frames(b, c); !r) return r;
   modal_.zero_offset = frames_.zero_index();  // what is in force, for --final
@@ -115,7 +114,7 @@ PlanResult Planner::plan_technologies(const nc::Block& b, Command& c, PlanContex
 }
 
 // Runs the block's offset functions.
-PlanResult Planner::apply_frames(const nc::Block& b, Command& c) {
+PlanResult Planner::apply_frames(const nc::Block& b, PlannedCommand& c) {
   auto changes = frames_.apply(b, planned_.mcs);
   if (!changes) return std::unexpected(changes.error());
   add_warnings(c, changes->warnings, store_);
@@ -132,7 +131,7 @@ PlanResult Planner::apply_frames(const nc::Block& b, Command& c) {
 }
 
 // What the block executes: program end, stop, dwell, motion or nothing.
-Planner::Planned Planner::plan_execution(const nc::Block& b, Command c, PlanContext& ctx) {
+Planner::Planned Planner::plan_execution(const nc::Block& b, PlannedCommand c, PlanContext& ctx) {
   if (b.program_end) {
     c.kind = CommandKind::end;
     c.end_reason = std::find(b.m.begin(), b.m.end(), 2) != b.m.end() ? EndReason::m2 : EndReason::m30;
@@ -185,7 +184,7 @@ Planner::Planned Planner::plan_execution(const nc::Block& b, Command c, PlanCont
 
 // G0/G1/G2/G3: the target through the offsets, the path segment, its feed
 // and dynamic limits, and the transition from the motion before it.
-Planner::Planned Planner::plan_motion(const nc::Block& b, Command c, PlanContext& ctx) {
+Planner::Planned Planner::plan_motion(const nc::Block& b, PlannedCommand c, PlanContext& ctx) {
   const frames::SuppressMask mask = suppress_mask(b);
   AxisArray radius_mm{};
   for (std::size_t j = 0; j < n_axes_; ++j)
@@ -202,13 +201,13 @@ Planner::Planned Planner::plan_motion(const nc::Block& b, Command c, PlanContext
     if (!seg) return block_error(ErrorId::KernelBadDynamics, b, "degenerate line");
     c.segment = *seg;
   }
-  double v_cmd = 0;  // rapid: the path limit (set below)
+  PathSpeed speed{PathSpeed::Kind::axes_max, 0};  // rapid: the path limit
   if (rapid) {
     c.feed_link = FeedLink{};
   } else {
     auto v = feed_.plan_feed(b, planned_.mcs, *target, c.segment.length(), c, ctx, main_planned());
     if (!v) return std::unexpected(v.error());
-    v_cmd = *v;
+    speed = *v;
   }
   planned_.mcs = *target;
   if (c.segment.length() <= 0) {
@@ -220,16 +219,18 @@ Planner::Planned Planner::plan_motion(const nc::Block& b, Command c, PlanContext
   c.limits = motion::path_limits(c.segment, std::span<const motion::AxisDynamics>(dyn.data(), n_axes_));
   cax_.limit_transformed(c, dyn, n_axes_);
   if (!motion::valid(c.limits)) return block_error(ErrorId::KernelBadDynamics, b, "the axes of this block cannot move");
-  // A coupling (v_cmd infinite) limits the speed each cycle in the channel.
-  c.v_cmd_mm_s = rapid || std::isinf(v_cmd) ? c.limits.v_max_mm_s : v_cmd;
-  if (v_cmd < 0) c.v_cmd_mm_s = -v_cmd * c.limits.v_max_mm_s;  // G194: a share of the maximum
+  switch (speed.kind) {
+    case PathSpeed::Kind::programmed: c.v_cmd_mm_s = speed.value; break;
+    case PathSpeed::Kind::axes_max: c.v_cmd_mm_s = c.limits.v_max_mm_s; break;
+    case PathSpeed::Kind::share_of_max: c.v_cmd_mm_s = speed.value * c.limits.v_max_mm_s; break;
+  }
   corner_.note_transition(b, c, rapid, ctx);
   return c;
 }
 
 // A circle: start and end in program coordinates of this block's map; the
 // start is where the axes are, so a changed offset never makes the path jump.
-PlanResult Planner::plan_arc(const nc::Block& b, Command& c, const motion::AxisVector& target,
+PlanResult Planner::plan_arc(const nc::Block& b, PlannedCommand& c, const motion::AxisVector& target,
                              frames::SuppressMask mask, AxisDynamicsArray& dyn, PlanContext& ctx) {
   const AffineMap map = frames_.affine(mask);
   const motion::AxisVector start_pcs = map.pure_translation ? planned_.mcs : frames_.to_pcs(planned_.mcs, mask);

@@ -118,12 +118,12 @@ std::expected<Vec2, Diagnostic> RadiusComp::tip_of(const nc::Block& b) const {
   const auto d = static_cast<std::size_t>(std::max<std::int64_t>(b.modal.d, 0));
   if (d == 0 || d >= tools_.size()) return Vec2{};
   const config::ToolRecord& t = tools_[d];
-  const Vec2 tip = trc::tip_from_centre(t.typ == 1 ? t.srk_lage : 0, t.radius_mm);
+  const Vec2 tip = trc::tip_from_centre(t.typ == 1 ? t.cutting_edge_pos : 0, t.radius_mm);
   if (trc::length(tip) < kTiny || plane_ == Plane::g18) return tip;
   return block_error(ErrorId::KernelTrcEdgePlane, b,
                      fmt::format("turning tool D{} has cutting-edge position {} (wz[{}].srk_lage), defined in the "
                                  "Z X plane (G18), with tool radius compensation in G{}",
-                                 d, t.srk_lage, d, static_cast<int>(plane_)));
+                                 d, t.cutting_edge_pos, d, static_cast<int>(plane_)));
 }
 
 // The programmed element of b, from the programmed end of the last one.

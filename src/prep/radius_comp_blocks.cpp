@@ -119,14 +119,12 @@ nc::Block RadiusComp::corner_arc(const nc::Block& before, const nc::Block& after
 
 std::optional<RadiusComp::State> RadiusComp::report(const nc::Block& b) {
   State s;
-  s.g = static_cast<std::uint8_t>(b.modal.radius_comp == nc::RadiusComp::g41   ? 1
-                                  : b.modal.radius_comp == nc::RadiusComp::g42 ? 2
-                                                                                : 0);
+  s.mode = b.modal.radius_comp;
   s.d = static_cast<std::int32_t>(b.modal.d);
   const auto d = static_cast<std::size_t>(std::max<std::int64_t>(b.modal.d, 0));
   s.radius_mm = d > 0 && d < tools_.size() ? tools_[d].radius_mm : 0.0;
   // Under G40 a new D changes nothing of the compensation: no event.
-  if (s.g == reported_.g && (s.g == 0 || s.d == reported_.d)) return std::nullopt;
+  if (s.mode == reported_.mode && (s.mode == nc::RadiusComp::g40 || s.d == reported_.d)) return std::nullopt;
   reported_ = s;
   return s;
 }

@@ -20,21 +20,21 @@ Diagnostic diag(const nc::Block& b, const nc::SpindleCommand& c, ErrorId id, std
 
 std::uint32_t bits_for(const config::ChannelSpindle& sp, SpindleM m) {
   switch (m) {
-    case SpindleM::m3: return sp.m3_synch;
-    case SpindleM::m4: return sp.m4_synch;
-    case SpindleM::m5: return sp.m5_synch;
-    case SpindleM::m19: return sp.m19_synch;
-    default: return sp.s_synch;
+    case SpindleM::m3: return sp.m3_sync;
+    case SpindleM::m4: return sp.m4_sync;
+    case SpindleM::m5: return sp.m5_sync;
+    case SpindleM::m19: return sp.m19_sync;
+    default: return sp.s_sync;
   }
 }
 
 double timeout_for(const config::ChannelSpindle& sp, SpindleM m) {
   switch (m) {
-    case SpindleM::m3: return sp.m3_prozess_zeit_s;
-    case SpindleM::m4: return sp.m4_prozess_zeit_s;
-    case SpindleM::m5: return sp.m5_prozess_zeit_s;
-    case SpindleM::m19: return sp.m19_prozess_zeit_s;
-    default: return sp.s_prozess_zeit_s;
+    case SpindleM::m3: return sp.m3_ack_timeout_s;
+    case SpindleM::m4: return sp.m4_ack_timeout_s;
+    case SpindleM::m5: return sp.m5_ack_timeout_s;
+    case SpindleM::m19: return sp.m19_ack_timeout_s;
+    default: return sp.s_ack_timeout_s;
   }
 }
 
@@ -61,7 +61,7 @@ SpindleAction plain(std::int8_t spindle, SpindleOp op) {
   SpindleAction a;
   a.spindle = spindle;
   a.op = op;
-  a.fn = 'S';
+  a.fn = TechKind::s;
   return a;
 }
 
@@ -130,9 +130,9 @@ std::optional<SpindleAction> speed_only(const nc::SpindleCommand& c, const confi
   SpindleAction a = plain(kidx, SpindleOp::speed);
   a.g167 = c.g167;
   a.rpm = *st.speed_rpm;
-  const std::optional<SyncPoint> s_point = sync_point(sp.s_synch);
-  synchronise(a, sp.s_synch, s_point.value_or(SyncPoint::none), SpindleWait::speed_reached,
-              sp.s_prozess_zeit_s, plc);
+  const std::optional<SyncPoint> s_point = sync_point(sp.s_sync);
+  synchronise(a, sp.s_sync, s_point.value_or(SyncPoint::none), SpindleWait::speed_reached,
+              sp.s_ack_timeout_s, plc);
   if (!s_point) a.output = false;
   return a;
 }
@@ -162,7 +162,7 @@ std::expected<std::optional<SpindleAction>, Diagnostic> main_action(const nc::Bl
   SpindleAction a;
   a.spindle = kidx;
   a.g167 = c.g167;
-  a.fn = 'M';
+  a.fn = TechKind::m;
   a.fn_number = static_cast<std::int32_t>(m);
   const std::uint32_t bits = bits_for(sp, m);
   const double timeout_s = timeout_for(sp, m);
@@ -228,7 +228,7 @@ std::expected<void, Diagnostic> SpindlePlanner::plan_command(const nc::Block& b,
     return std::unexpected(diag(b, c, ErrorId::KernelSpindleTooManyActions,
                                 fmt::format("more than {} spindle actions in one block; split the "
                                             "spindle commands over several blocks",
-                                            Command::kMaxSpindleActions)));
+                                            PlannedCommand::kMaxSpindleActions)));
   };
   std::expected<void, Diagnostic> r;
   if (c.default_dynamic_data) r = push(plain(s.kernel_spindle, SpindleOp::default_dynamic_data));
@@ -258,7 +258,7 @@ std::expected<void, Diagnostic> SpindlePlanner::plan_command(const nc::Block& b,
   }
   if (r && c.g74) r = push(plain(s.kernel_spindle, SpindleOp::home));
   if (r && *main) r = push(**main);
-  auto user = [&](char fn, int n) {
+  auto user = [&](TechKind fn, int n) {
     SpindleAction a = plain(s.kernel_spindle, SpindleOp::user_function);
     a.fn = fn;
     a.fn_number = n;
@@ -266,9 +266,9 @@ std::expected<void, Diagnostic> SpindlePlanner::plan_command(const nc::Block& b,
     return push(a);
   };
   for (int n : c.user_m)
-    if (r) r = user('M', n);
+    if (r) r = user(TechKind::m, n);
   for (int n : c.user_h)
-    if (r) r = user('H', n);
+    if (r) r = user(TechKind::h, n);
   return r;
 }
 

@@ -73,7 +73,7 @@ std::expected<void, Diagnostic> SpindlePlanner::plan_gear(Step& s, std::optional
     SpindleAction a;
     a.spindle = s.kernel_spindle;
     a.op = SpindleOp::user_function;
-    a.fn = 'M';
+    a.fn = TechKind::m;
     a.fn_number = 39 + *c.gear_stage;
     a.sync_bits = channel_->m_synch[static_cast<std::size_t>(a.fn_number)];
     const std::optional<SyncPoint> point = sync_point(a.sync_bits);
@@ -107,7 +107,7 @@ std::expected<void, Diagnostic> SpindlePlanner::plan_gear(Step& s, std::optional
   a.sync = SyncPoint::before;
   a.output = true;
   a.wait = SpindleWait::gear_change;
-  a.fn = 'M';
+  a.fn = TechKind::m;
   a.fn_number = static_cast<std::int32_t>(39 + d->stage);
   s.st.gear_stage = d->stage;
   return push(a);
@@ -129,7 +129,7 @@ std::expected<void, Diagnostic> SpindlePlanner::plan_tool(const nc::Block& b, Sp
     SpindleAction a;
     a.spindle = static_cast<std::int8_t>(k);
     a.op = SpindleOp::tool_dynamics;
-    a.fn = 'S';
+    a.fn = TechKind::s;
     a.tool_vb_min_rpm = t.vb_min_rpm;
     a.tool_vb_max_rpm = t.vb_max_rpm;
     a.tool_a_max_deg_s2 = t.a_max_deg_s2;

@@ -61,7 +61,7 @@ std::optional<double> read_state_variable(std::string_view key, const ChannelFra
                                           std::size_t n_axes, Plane plane) {
   const config::ToolRecord* tool = frames.tool_in_force();
   if (key == "V.G.WZ_AKT.NR") return frames.tool_number();
-  if (key == "V.G.WZ_AKT.L") return tool ? tool->laenge_mm : 0.0;
+  if (key == "V.G.WZ_AKT.L") return tool ? tool->length_mm : 0.0;
   if (key == "V.G.WZ_AKT.R") return tool ? tool->radius_mm : 0.0;
   if (key.starts_with(kRotation)) return rotation_variable(key.substr(kRotation.size()), frames, plane);
   return axis_variable(key, frames, channel, pcs, n_axes);

@@ -41,7 +41,8 @@ double PlcSim::ack_delay_s(const TechOutput& out) const noexcept {
     case TechKind::s: return spindle_delay_s_;
     case TechKind::t: return tool_delay_s_;
     case TechKind::h: return default_delay_s_;
-    case TechKind::m: break;
+    case TechKind::m:
+    case TechKind::none: break;
   }
   // A delay configured for this very M number wins over the generic ones.
   if (out.number >= 0 && static_cast<std::size_t>(out.number) < kMaxMNumber &&

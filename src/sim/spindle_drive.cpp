@@ -11,7 +11,7 @@ SpindleDriveConfig SpindleDriveConfig::from(const config::AxisConfig* axis, cons
   c.cycle_s = cycle_s;
   c.speed_time_constant_s = std::max(0.0, sim.drive_speed_time_constant_s);
   const auto stages = axis != nullptr ? axis->gears : decltype(axis->gears){};
-  for (std::size_t i = 0; i < stages.size(); ++i) c.kv_1_s[i] = stages[i].kv_1_s;
+  for (std::size_t i = 0; i < stages.size(); ++i) c.position_gain_1_s[i] = stages[i].position_gain_1_s;
   if (axis == nullptr) return c;
   c.open_loop = axis->is_speed_controlled();
   c.feedforward_ta_s = std::max(0.0, axis->feedforward_ta_s);
@@ -32,7 +32,7 @@ spindle::DriveFeedback SpindleDrive::step(const spindle::DriveCommand& cmd) noex
     filtered_vel_deg_s_ += (v_cmd - filtered_vel_deg_s_) * kf;  // the drive answers with time constant Ta
     const double w = cmd.feedforward_weight;
     const std::uint32_t g = cmd.gear_stage >= 1 && cmd.gear_stage <= config::kMaxGearStages ? cmd.gear_stage - 1 : 0;
-    const double kv = cfg_.kv_1_s[g] > 0 ? cfg_.kv_1_s[g] : 10.0;
+    const double kv = cfg_.position_gain_1_s[g] > 0 ? cfg_.position_gain_1_s[g] : 10.0;
     // Exact solution of d(lag)/dt = v_cmd - w*v_filt - kv*lag over one cycle:
     // stable for any kv*dt.
     const double e = std::exp(-kv * dt);

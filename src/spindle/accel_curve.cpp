@@ -7,15 +7,15 @@ namespace nck::spindle {
 namespace {
 
 double hyperbola(const config::AccelCurve& c, double n) {
-  const double x = (n / c.n_grenz_deg_s) * (n / c.n_grenz_deg_s);
+  const double x = (n / c.limit_speed_deg_s) * (n / c.limit_speed_deg_s);
   return c.b1 / (1.0 + c.b2 * x * (1.0 + c.b3 * x));
 }
 
 double polynomial(const config::AccelCurve& c, double n) {
   // SPEC erratum: the seed prints dn = n_grenz - n, but its own coefficients
   // only reproduce its table with dn = n - n_grenz.
-  const double dn = n - c.n_grenz_deg_s;
-  return ((c.b3 * dn + c.b2) * dn + c.b1) * dn + c.a_konst_deg_s2;
+  const double dn = n - c.limit_speed_deg_s;
+  return ((c.b3 * dn + c.b2) * dn + c.b1) * dn + c.const_accel_deg_s2;
 }
 
 double asynchronous(const config::AccelCurve& c, double n) {
@@ -31,10 +31,10 @@ double curve_accel_deg_s2(const config::AccelCurve& curve, double speed_deg_s,
                           double slope_accel_deg_s2) noexcept {
   const double n = std::fabs(speed_deg_s);
   if (curve.type < 1 || curve.type > 3 || !std::isfinite(n)) return slope_accel_deg_s2;
-  if (curve.type != 3 && curve.n_grenz_deg_s <= 0) return slope_accel_deg_s2;  // curve unusable
+  if (curve.type != 3 && curve.limit_speed_deg_s <= 0) return slope_accel_deg_s2;  // curve unusable
   double a = 0;
-  if (curve.n_grenz_deg_s > 0 && n < curve.n_grenz_deg_s) {
-    a = curve.a_konst_deg_s2;
+  if (curve.limit_speed_deg_s > 0 && n < curve.limit_speed_deg_s) {
+    a = curve.const_accel_deg_s2;
   } else if (curve.type == 1) {
     a = hyperbola(curve, n);
   } else if (curve.type == 2) {

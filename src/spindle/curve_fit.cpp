@@ -44,17 +44,17 @@ bool usable(double v) { return std::isfinite(v); }
 
 }  // namespace
 
-std::expected<Coefficients, std::string> fit_polynomial(double n_grenz_deg_s, double a_konst_deg_s2,
+std::expected<Coefficients, std::string> fit_polynomial(double limit_speed_deg_s, double const_accel_deg_s2,
                                                         std::span<const CurvePoint> points) {
-  auto pts = points_above(n_grenz_deg_s, a_konst_deg_s2, points, 3, "polynomial");
+  auto pts = points_above(limit_speed_deg_s, const_accel_deg_s2, points, 3, "polynomial");
   if (!pts) return std::unexpected(pts.error());
   // The seed's closed form with dn_i = n_i - n_grenz and e_i = a_konst - a(n_i).
-  const double d2 = (*pts)[0].speed_deg_s - n_grenz_deg_s;
-  const double d3 = (*pts)[1].speed_deg_s - n_grenz_deg_s;
-  const double d4 = (*pts)[2].speed_deg_s - n_grenz_deg_s;
-  const double e2 = a_konst_deg_s2 - (*pts)[0].accel_deg_s2;
-  const double e3 = a_konst_deg_s2 - (*pts)[1].accel_deg_s2;
-  const double e4 = a_konst_deg_s2 - (*pts)[2].accel_deg_s2;
+  const double d2 = (*pts)[0].speed_deg_s - limit_speed_deg_s;
+  const double d3 = (*pts)[1].speed_deg_s - limit_speed_deg_s;
+  const double d4 = (*pts)[2].speed_deg_s - limit_speed_deg_s;
+  const double e2 = const_accel_deg_s2 - (*pts)[0].accel_deg_s2;
+  const double e3 = const_accel_deg_s2 - (*pts)[1].accel_deg_s2;
+  const double e4 = const_accel_deg_s2 - (*pts)[2].accel_deg_s2;
   Coefficients c;
   c.b3 = (d4 * e2 - d2 * e4) / (d4 * d2 * (d4 - d2) * (d4 - d3)) -
          (d3 * e2 - d2 * e3) / (d3 * d2 * (d3 - d2) * (d4 - d3));
@@ -65,17 +65,17 @@ std::expected<Coefficients, std::string> fit_polynomial(double n_grenz_deg_s, do
   return c;
 }
 
-std::expected<Coefficients, std::string> fit_hyperbola(double n_grenz_deg_s, double a_konst_deg_s2,
+std::expected<Coefficients, std::string> fit_hyperbola(double limit_speed_deg_s, double const_accel_deg_s2,
                                                        std::span<const CurvePoint> points) {
-  auto pts = points_above(n_grenz_deg_s, a_konst_deg_s2, points, 2, "hyperbola");
+  auto pts = points_above(limit_speed_deg_s, const_accel_deg_s2, points, 2, "hyperbola");
   if (!pts) return std::unexpected(pts.error());
   // With u = b2 and w = b2*b3 each point gives one linear equation
   // (c-1) + u(c-x) + w(c-x^2) = 0, c = a_konst/a(n), x = (n/n_grenz)^2.
   double m[2][3];
   for (int i = 0; i < 2; ++i) {
-    const double r = (*pts)[i].speed_deg_s / n_grenz_deg_s;
+    const double r = (*pts)[i].speed_deg_s / limit_speed_deg_s;
     const double x = r * r;
-    const double c = a_konst_deg_s2 / (*pts)[i].accel_deg_s2;
+    const double c = const_accel_deg_s2 / (*pts)[i].accel_deg_s2;
     m[i][0] = c - x;
     m[i][1] = c - x * x;
     m[i][2] = 1.0 - c;  // right-hand side
@@ -91,7 +91,7 @@ std::expected<Coefficients, std::string> fit_hyperbola(double n_grenz_deg_s, dou
   Coefficients c;
   c.b2 = u;
   c.b3 = w / u;
-  c.b1 = a_konst_deg_s2 * (1.0 + u + w);
+  c.b1 = const_accel_deg_s2 * (1.0 + u + w);
   if (!usable(c.b1) || !usable(c.b2) || !usable(c.b3))
     return std::unexpected(std::string("the hyperbola fit did not give finite coefficients"));
   return c;

@@ -9,19 +9,19 @@ namespace nck::spindle {
 
 GearConfig GearConfig::from(const config::GearStage& g) noexcept {
   GearConfig c;
-  c.accel_deg_s2 = g.a_beschl;
-  c.decel_deg_s2 = g.a_brems;
+  c.accel_deg_s2 = g.accel_mm_s2;
+  c.decel_deg_s2 = g.decel_mm_s2;
   c.accel_max_deg_s2 = g.a_max;
-  c.speed_max_deg_s = g.vb_max;
-  c.rapid_speed_deg_s = g.vb_eilgang;
-  c.modulo_low_deg = g.modulou;
-  c.modulo_high_deg = g.moduloo;
+  c.speed_max_deg_s = g.max_speed_mm_s;
+  c.rapid_speed_deg_s = g.rapid_mm_s;
+  c.modulo_low_deg = g.modulo_lower;
+  c.modulo_high_deg = g.modulo_upper;
   c.zero_speed_deg_s = g.zero_speed_deg_s;
   c.control_limit_deg_s = g.control_limit_deg_s;
   c.gear_change_pos_deg = g.gear_change_pos_deg;
-  c.reference_pos_deg = g.pos_refpkt;
+  c.reference_pos_deg = g.reference_pos;
   c.accel_curve = g.curve;
-  c.reverse = g.reverse;
+  c.reverse_sense = g.reverse_sense;
   return c;
 }
 
@@ -38,7 +38,7 @@ constexpr std::uint32_t kNoAutomaticHoming = 0x100;
 
 // A PLC spindle over the channel HLI has no axis list: its drive belongs to
 // the PLC, so the NC must not cap its speed with the machine model's default
-// vb_max (200 deg/s = 33.3 rpm) nor open a control limit it does not have.
+// max_speed_mm_s (200 deg/s = 33.3 rpm) nor open a control limit it does not have.
 SpindleConfig without_axis_limits(SpindleConfig c) noexcept {
   for (GearConfig& g : c.gears) {
     g.speed_max_deg_s = 0;
@@ -70,7 +70,7 @@ SpindleConfig SpindleConfig::from(const config::AxisConfig* axis, const config::
   // Neither position nor speed feedback: the speed acknowledgement comes
   // from the interpolator's own command value (FCT-S1 2.2.4, case 3).
   c.sensorless = c.open_loop && !c.can_position && axis->drive_mode != config::DriveMode::open_loop_vel_feedback;
-  c.auto_homing = (axis->achs_mode & kNoAutomaticHoming) == 0;
+  c.auto_homing = (axis->axis_mode & kNoAutomaticHoming) == 0;
   c.drive_speed_scaling = SpeedScaling{axis->speed_increments_num, axis->speed_increments_denom, axis->speed_time_base};
   return c;
 }

@@ -1,6 +1,6 @@
 // The limits the spindle interpolator works with: acceleration from the slope
 // or characteristic curve of the active gear stage, weighted by G130 and
-// capped by a_max and the tool; speed capped by vb_max and the tool.
+// capped by a_max and the tool; speed capped by max_speed_mm_s and the tool.
 #include <algorithm>
 #include <cmath>
 
@@ -51,7 +51,7 @@ double SpindleAxis::override_factor() const noexcept {
 }
 
 double SpindleAxis::limit_speed(double speed_deg_s) const noexcept {
-  // |speed| capped by vb_max and the tool's vb_max; 0 stays 0.
+  // |speed| capped by max_speed_mm_s and the tool's max_speed_mm_s; 0 stays 0.
   const double s = std::fabs(speed_deg_s);
   if (s == 0 || !std::isfinite(s)) return 0;
   return std::copysign(std::min(s, max_speed_deg_s()), speed_deg_s);

@@ -8,7 +8,7 @@
 
 namespace nck::spindle {
 
-double SpindleAxis::drive_sense() const noexcept { return gear().reverse ? -1.0 : 1.0; }
+double SpindleAxis::drive_sense() const noexcept { return gear().reverse_sense ? -1.0 : 1.0; }
 
 DriveCommand SpindleAxis::drive_command() const noexcept {
   // getriebe[i].reverse (P-AXIS-00159): the command goes out inverted, the

@@ -49,8 +49,8 @@ inline constexpr std::uint32_t NOT_VALID = 0x80000000;
 // Characteristic acceleration curve of a spindle gear stage (P-AXIS-00202...).
 struct AccelCurve {
   std::uint32_t type = 0;        // 0 none, 1 hyperbola, 2 polynomial, 3 asynchronous drive
-  double n_grenz_deg_s = 0;      // limit speed
-  double a_konst_deg_s2 = 0;
+  double limit_speed_deg_s = 0;      // n_grenz: limit speed
+  double const_accel_deg_s2 = 0;     // a_konst
   double a_min_deg_s2 = 0;
   double b1 = 0, b2 = 0, b3 = 0; // as in the list (units per seed)
   double a_max_deg_s2 = 0;       // type 3
@@ -61,26 +61,26 @@ struct AccelCurve {
 // Velocities in mm/s (deg/s for rotary axes and spindles), accelerations
 // in mm/s^2 (deg/s^2).
 struct GearStage {
-  double a_beschl = 1000;   // P-AXIS-00001 acceleration on feed moves
-  double a_brems = 1000;    // P-AXIS-00002 deceleration on feed moves
-  double a_grenz = 1000;    // P-AXIS-00004 acceleration for G0
+  double accel_mm_s2 = 1000;   // P-AXIS-00001 (a_beschl) acceleration on feed moves
+  double decel_mm_s2 = 1000;    // P-AXIS-00002 (a_brems) deceleration on feed moves
+  double rapid_accel_mm_s2 = 1000;    // P-AXIS-00004 (a_grenz) acceleration for G0
   double a_max = 1000;      // P-AXIS-00008 hard cap
-  double vb_max = 200;      // P-AXIS-00212 (list 200000 um/s)
-  double vb_eilgang = 166.666;  // P-AXIS-00209 rapid
-  double kv_1_s = 10;       // P-AXIS-00099 position-loop gain
-  double moduloo = 360, modulou = 0;  // P-AXIS-00126/00127
+  double max_speed_mm_s = 200;      // P-AXIS-00212 (vb_max; list 200000 um/s)
+  double rapid_mm_s = 166.666;  // P-AXIS-00209 (vb_eilgang) rapid
+  double position_gain_1_s = 10;       // P-AXIS-00099 (kv) position-loop gain
+  double modulo_upper = 360, modulo_lower = 0;  // P-AXIS-00126/00127 (moduloo/modulou)
   // Spindle only (the list keys in parentheses):
   double zero_speed_deg_s = 0.1;      // P-AXIS-00216 (vb_min_null): standstill below this
   double control_limit_deg_s = 200;   // P-AXIS-00220 (vb_regelgrenze): position loop opens above
   double gear_change_pos_deg = 0;     // P-AXIS-00078 (getr_schalt_pos)
-  double pos_refpkt = 0;              // P-AXIS-00152
-  std::uint32_t wegaufz = 1, wegaufn = 1;
-  bool reverse = false;
+  double reference_pos = 0;              // P-AXIS-00152 (pos_refpkt)
+  std::uint32_t encoder_ratio_num = 1, encoder_ratio_denom = 1;  // wegaufz / wegaufn
+  bool reverse_sense = false;         // P-AXIS-00159 (reverse)
   double a_emergency = 0;             // P-AXIS-00003, 0 = use a_max
   std::uint32_t slope_type = 0;       // P-AXIS-00270: 0 step, 1 trapezoid, 2 sine-square
   std::uint32_t multi_gain_z = 2000, multi_gain_n = 1;  // P-AXIS-00129/00128
-  std::int32_t modulo_fehler = 0;     // P-AXIS-00124 (increments)
-  std::int32_t modulo_umdreh = 0;     // P-AXIS-00125
+  std::int32_t modulo_error_incr = 0;     // P-AXIS-00124 (modulo_fehler, increments)
+  std::int32_t modulo_revolutions = 0;     // P-AXIS-00125 (modulo_umdreh)
   AccelCurve curve;
   bool given = false;       // true when the list names this stage
 };
@@ -123,14 +123,14 @@ struct AxisConfig {
   std::uint32_t log_axis_nr = 0;        // kopf.achs_nr (P-AXIS-00016)
   std::string name;                     // kopf.log_achs_name
   AxisKind kind = AxisKind::translatory;  // kenngr.achs_typ
-  std::uint32_t achs_mode = 0x1;        // kenngr.achs_mode
-  std::uint32_t antr_typ = 4;           // kenngr.antr_typ (4 = simulation)
-  double swe_neg = -10000, swe_pos = 10000;  // software limits (mm / deg)
+  std::uint32_t axis_mode = 0x1;        // kenngr.achs_mode
+  std::uint32_t drive_type = 4;           // kenngr.antr_typ (4 = simulation)
+  double sw_limit_neg = -10000, sw_limit_pos = 10000;  // kenngr.swe_neg/swe_pos software limits (mm / deg)
   std::uint32_t initial_gear_stage = 1; // kenngr.getriebe_stufe
   bool has_preferred_direction = false;       // P-AXIS-00224 (kenngr.vorz_richtung), spindle
   bool preferred_direction_positive = false;  // P-AXIS-00031 (kenngr.beweg_richt), spindle
   double speed_reached_tolerance_permille = 100;  // P-AXIS-00217 (kenngr.vb_prozent), spindle
-  bool ref_ohne_nocken = false, ref_ohne_rev = false;
+  bool homing_without_cam = false, homing_without_reversal = false;  // kenngr.ref_ohne_nocken/_rev
   bool no_stop_by_channel_reset = false;  // P-AXIS-00455
   DriveMode drive_mode = DriveMode::drive_default;  // antr.operation_mode
   // Speed command scaling of a speed-controlled spindle (antr.v_reso_num,
@@ -138,15 +138,15 @@ struct AxisConfig {
   std::uint32_t speed_increments_num = 1, speed_increments_denom = 36, speed_time_base = 0;
   std::array<GearStage, kMaxGearStages> gears{};
   // Added by the config layer (all in internal units):
-  std::uint32_t def_cax_gear_st = 1;            // P-AXIS-00052
+  std::uint32_t cax_gear_stage = 1;            // P-AXIS-00052 (def_cax_gear_st)
   double velocity_position_control_on = 2000000;  // P-AXIS-00265 (deg/s)
   double velocity_position_control_off = 0;       // P-AXIS-00266 (deg/s)
   double feedforward_ta_s = 1e-6;               // P-AXIS-00225/00226 (Ta = faktor us / nenner)
-  double vb_messen = 16.666;                    // P-AXIS-00215 (mm/s, deg/s)
-  bool mod_komp = false;                        // P-AXIS-00120
+  double measure_speed = 16.666;                    // P-AXIS-00215 (vb_messen; mm/s, deg/s)
+  bool modulo_compensation = false;                        // P-AXIS-00120 (mod_komp)
   bool distance_control_on = false;             // P-AXIS-00328
-  bool durchm_prog_abs = false;                 // P-AXIS-00058
-  bool durchm_prog_rel = false;                 // P-AXIS-00059
+  bool diameter_prog_abs = false;                 // P-AXIS-00058 (durchm_prog_abs)
+  bool diameter_prog_rel = false;                 // P-AXIS-00059 (durchm_prog_rel)
   bool fast_from_cam = true;                    // P-AXIS-00064
   std::string feedhold_deceleration_mode = "DEFAULT_DECELERATION";  // P-AXIS-00556
   std::string secondary_encoder;                // P-AXIS-00824
@@ -155,9 +155,9 @@ struct AxisConfig {
   bool is_spindle() const { return kind == AxisKind::spindle; }
   // P-AXIS-00015 0x0204: a spindle that may become a C axis (#CAX).
   static constexpr std::uint32_t kCAxisMode = 0x0204;
-  bool c_axis_capable() const { return (achs_mode & kCAxisMode) == kCAxisMode; }
-  bool is_modulo() const { return (achs_mode & 0x4) != 0 || is_spindle(); }
-  bool is_face_turning() const { return (achs_mode & 0x40) != 0; }  // "Plandrehachse"
+  bool c_axis_capable() const { return (axis_mode & kCAxisMode) == kCAxisMode; }
+  bool is_modulo() const { return (axis_mode & 0x4) != 0 || is_spindle(); }
+  bool is_face_turning() const { return (axis_mode & 0x40) != 0; }  // "Plandrehachse"
   const GearStage& gear(std::uint32_t stage_1based) const {
     std::uint32_t i = stage_1based == 0 ? 0 : stage_1based - 1;
     return gears[i < kMaxGearStages ? i : 0];
@@ -187,11 +187,11 @@ struct ChannelSpindle {
   std::array<SpindleRange, kMaxGearStages> range_table{};
   std::array<std::uint8_t, kMaxGearStages> range_way{1, 2, 3, 4, 5, 6};  // search order (stage numbers)
   std::uint32_t range_way_param = 0;  // P-CHAN-00074 as written: 0 bottom up, >0 top down
-  std::uint32_t s_synch = sync::MVS_SVS, m3_synch = sync::MVS_SVS, m4_synch = sync::MVS_SVS,
-                m5_synch = sync::MVS_SVS, m19_synch = sync::MVS_SVS;
-  // PLC acknowledgement timeouts in s (0 = no timeout)
-  double s_prozess_zeit_s = 0, m3_prozess_zeit_s = 0, m4_prozess_zeit_s = 0,
-         m5_prozess_zeit_s = 0, m19_prozess_zeit_s = 0;
+  std::uint32_t s_sync = sync::MVS_SVS, m3_sync = sync::MVS_SVS, m4_sync = sync::MVS_SVS,
+                m5_sync = sync::MVS_SVS, m19_sync = sync::MVS_SVS;  // *_synch
+  // PLC acknowledgement timeouts in s (0 = no timeout; *_prozess_zeit)
+  double s_ack_timeout_s = 0, m3_ack_timeout_s = 0, m4_ack_timeout_s = 0,
+         m5_ack_timeout_s = 0, m19_ack_timeout_s = 0;
 };
 
 struct LinkPair {
@@ -247,7 +247,7 @@ struct ChannelConfig {
   std::string default_ax_name_of_spindle;       // P-CHAN-00010
   std::uint32_t cax_face_id = 0;                // P-CHAN-00008: 1 lathe, 2 milling machine
   // C-axis machining (#CAX): when the main spindle can become a C axis
-  // (default_ax_name_of_spindle set, its achs_mode has 0x200) it is also the
+  // (default_ax_name_of_spindle set, its axis_mode has 0x200) it is also the
   // last entry of `axes`, named default_ax_name_of_spindle, with the
   // spindle's axis list; c_axis is that index (-1: none). Added after the
   // checks (config/c_axis.cpp), so the lists never name it.
@@ -293,17 +293,17 @@ struct ChannelConfig {
 
 struct ToolRecord {               // wz[i]; lengths in mm (inch lists converted)
   bool given = false;
-  double laenge_mm = 0, radius_mm = 0;
-  AxisArray ax_versatz_mm{};
+  double length_mm = 0, radius_mm = 0;  // laenge, radius
+  AxisArray axis_offset_mm{};   // ax_versatz[j]
   bool tool_fixed = false;
   std::uint32_t log_ax_nr_spdl = 0;
   double vb_min_rpm = 0, vb_max_rpm = 0, a_max_deg_s2 = 0;
   std::uint32_t typ = 0;       // P-TOOL-00001: 0 milling, 1 turning, 2 grinding, 3 wire
-  std::uint32_t srk_lage = 0;  // P-TOOL-00002: cutting-edge position 1..9 of a turning tool (0 = none)
+  std::uint32_t cutting_edge_pos = 0;  // P-TOOL-00002 (srk_lage): cutting-edge position 1..9 of a turning tool (0 = none)
 };
 
 struct ZeroOffsets {              // nullp list
-  bool g53_verfuegbar = false;
+  bool g53_available = false;
   std::uint32_t default_index = 0;
   // groups[i][j] offset of channel axis j in group i (mm / deg); inactive flags beside
   std::vector<AxisArray> versch;
@@ -382,11 +382,11 @@ struct Machine {
 std::string canonical_start_mode(std::string_view name);
 
 // A PLC spindle: plc_control 1 (no axis list) or an axis list with
-// achs_mode 0x40000; the PLC commands and acknowledges it.
+// axis_mode 0x40000; the PLC commands and acknowledges it.
 inline bool is_plc_spindle(const Machine& m, const ChannelSpindle& sp) noexcept {
   if (sp.plc_control) return true;
   if (sp.axis_index < 0 || static_cast<std::size_t>(sp.axis_index) >= m.axes.size()) return false;
-  return (m.axes[static_cast<std::size_t>(sp.axis_index)].achs_mode & 0x40000u) != 0;
+  return (m.axes[static_cast<std::size_t>(sp.axis_index)].axis_mode & 0x40000u) != 0;
 }
 
 }  // namespace nck::config

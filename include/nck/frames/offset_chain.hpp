@@ -45,7 +45,7 @@ struct ChainConfig {
 struct ToolOffsets {
   int d_number = 0;             // 0 = D0, no offsets
   double length_mm = 0;         // wz[i].laenge: along the tool axis
-  AxisValues ax_versatz_mm{};   // wz[i].ax_versatz[j]: per channel axis
+  AxisValues axis_offset_mm{};   // wz[i].ax_versatz[j]: per channel axis
   bool tool_fixed = false;      // P-TOOL-00010: 1 = machine directions
 };
 

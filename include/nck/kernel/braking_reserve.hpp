@@ -15,6 +15,6 @@ namespace nck::kernel {
 // queued commands after it reach a planned stop, or are long enough to brake
 // to standstill within them; otherwise the speed from which the path stops
 // within the queued motions (0 without any). rt
-double reserve_end_speed(const Command& current, const CommandQueue& queued, double dt_s) noexcept;
+double reserve_end_speed(const Motion& current, const CommandQueue& queued, double dt_s) noexcept;
 
 }  // namespace nck::kernel

@@ -5,6 +5,12 @@
 #include <cstdint>
 
 #include "nck/core/diagnostic.hpp"
+#include "nck/distctrl/controller.hpp"
+#include "nck/kernel/ax_link.hpp"
+#include "nck/kernel/program_state.hpp"
+#include "nck/nc/modal.hpp"
+#include "nck/plc/hli.hpp"
+#include "nck/spindle/spindle_status.hpp"
 
 namespace nck::kernel {
 
@@ -33,8 +39,10 @@ inline constexpr std::uint32_t kNoMessage = 0xFFFFFFFFu;
 // hold: the run ended while a channel held and nothing could release it (nck run)
 enum class EndReason : std::uint8_t { m30, m2, error, reset, max_time, max_wall, interrupted, hold };
 
-// What a plc_out/plc_ack/wait refers to; extended by the spindle work.
-enum class FunctionKind : std::uint8_t { none, m, h, s, t };
+
+enum class WaitReason : std::uint8_t {
+  plc_ack, speed_reached, in_position, standstill, homing, gear_change, expl_syn, dwell, feedhold
+};
 
 struct Event {
   double t_s = 0;             // cycle start
@@ -51,14 +59,14 @@ struct Event {
                                     // (kNoMessage: the ID's table text); block: the
                                     // PlanStore::frames index of its map (kNoMessage: none)
   // plc_out / plc_ack / wait
-  FunctionKind fn = FunctionKind::none;
+  plc::TechKind fn = plc::TechKind::none;
   std::int32_t fn_number = 0;       // M3, T5 ...
   double value = 0;                 // S: rpm
   std::uint32_t sync = 0;           // synchronisation type bits
   std::int8_t spindle = -1;         // kernel spindle index (Kernel::spindle_name), -1 = none
-  std::uint8_t wait_reason = 0;     // WaitReason
+  WaitReason wait_reason = WaitReason::plc_ack;
   // spindle / gear
-  std::uint8_t spindle_mode = 0;    // spindle::SpindleMode
+  spindle::SpindleMode spindle_mode = spindle::SpindleMode::stop;
   std::uint32_t gear = 0;           // gear stage 1..6
   // end
   EndReason end_reason = EndReason::m30;
@@ -66,19 +74,16 @@ struct Event {
   // in the plan store at message_index
   std::int8_t link_group = -1;
   bool link_on = false;
-  std::uint8_t link_reason = 0;
-  // dist_ctrl: distctrl::State
-  std::uint8_t dist_state = 0;
-  // trc: 0 G40, 1 G41, 2 G42; the D in force and its tool radius
-  std::uint8_t trc_state = 0;
+  LinkReason link_reason = LinkReason::program;
+  // dist_ctrl
+  distctrl::State dist_state = distctrl::State::inactive;
+  // trc: the mode, the D in force and its tool radius
+  nc::RadiusComp trc_mode = nc::RadiusComp::g40;
   std::int32_t trc_d = 0;
   double trc_radius_mm = 0;
-  // state: ProgramState left and entered, StateReason (program_state.hpp)
-  std::uint8_t state_from = 0, state_to = 0, state_reason = 0;
-};
-
-enum class WaitReason : std::uint8_t {
-  plc_ack, speed_reached, in_position, standstill, homing, gear_change, expl_syn, dwell, feedhold
+  // state: the program state left and entered, and why
+  ProgramState state_from = ProgramState::idle, state_to = ProgramState::idle;
+  StateReason state_reason = StateReason::start;
 };
 
 }  // namespace nck::kernel

@@ -37,7 +37,7 @@ struct ChannelState {
   ChannelStatus status = ChannelStatus::idle;
   ProgramState program_state = ProgramState::idle;
   Event at{};  // the block the channel stands at: file_id, line, has_n, n
-  std::uint8_t dist_state = 0;  // distctrl::State
+  distctrl::State dist_state = distctrl::State::inactive;
   double dist_offset_mm = 0;    // distance-control offset in axis_mcs
 };
 

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "nck/config/machine.hpp"
+#include "nck/plc/hli.hpp"
 #include "nck/spindle/positioning.hpp"
 
 namespace nck::kernel {
@@ -78,7 +79,7 @@ struct SpindleAction {
   SpindleWait wait = SpindleWait::none;  // internal acknowledgement waited for
   double ack_timeout_s = 0;        // *_prozess_zeit, 0 = none
   // for plc_out / plc_ack / wait events: "M3", "S", "M41", "M<n>", "H<n>"
-  char fn = 'M';                   // 'M', 'S' or 'H'
+  plc::TechKind fn = plc::TechKind::m;  // m, s or h
   std::int32_t fn_number = 0;
 };
 

@@ -81,7 +81,7 @@ struct ChannelOutput {
   double dist_offset_mm = 0;  // 3D distance control's offset on the tool axis (0 while inactive)
   double dist_sensor_mm = 0;  // the last valid sensor value it took
   double dist_error_mm = 0;   // wanted minus measured (filtered) gap
-  std::uint8_t dist_state = 0;  // distctrl::State
+  distctrl::State dist_state = distctrl::State::inactive;
   std::int8_t dist_axis = -1;   // the tool axis carrying the offset, -1 none yet
   ChannelStatus status = ChannelStatus::idle;
   ProgramState program_state = ProgramState::idle;

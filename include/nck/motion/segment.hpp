@@ -42,9 +42,30 @@ struct ArcTolerance {
   double rel = 1e-4;
 };
 
+// A segment without its start point: how the command queue carries a
+// motion, since each starts where the motion before it ended (the start
+// would be stored twice). Segment::tail() and Segment::joined() convert
+// without computing anything, so the joined segment is bit for bit the one
+// that was planned.
+struct SegmentTail {
+  SegmentKind kind = SegmentKind::line;
+  std::uint8_t n_axes = 0;
+  std::uint8_t plane_a = 0, plane_b = 1;
+  AxisVector end{};
+  double length_mm = 0;
+  // arc only
+  double center_a = 0, center_b = 0;
+  double r_start_mm = 0, r_end_mm = 0;
+  double angle_start_rad = 0, sweep_rad = 0, plane_len_mm = 0;
+};
+
 class Segment {
  public:
   Segment() = default;  // an empty line of length 0 with no axes
+
+  // The segment without its start, and back (SegmentTail). rt
+  SegmentTail tail() const noexcept;
+  static Segment joined(const AxisVector& start, const SegmentTail& t) noexcept;
 
   SegmentKind kind() const noexcept { return kind_; }
   std::size_t axis_count() const noexcept { return n_axes_; }

@@ -70,7 +70,9 @@ struct ChannelControl {
 };
 
 // A technology function output to the PLC and its handshake.
-enum class TechKind : std::uint8_t { m, h, s, t };
+// The kind of a technology function: one enum from the planned block to the
+// PLC and the events (none: an event that carries no function).
+enum class TechKind : std::uint8_t { none, m, h, s, t };
 
 struct TechOutput {
   TechKind kind = TechKind::m;

@@ -15,7 +15,7 @@ PlanResult check_spindle_scope(const nc::Block& b);
 // speed and M3/M4/M5/M19 (FCT-S1 2.2.2.2).
 PlanResult check_plc_spindles(const nc::Block& b, const config::ChannelConfig& channel);
 // The block's M (with their synchronisation), H and T outputs into c.
-PlanResult add_outputs(const nc::Block& b, Command& c, const config::ChannelConfig& channel);
+PlanResult add_outputs(const nc::Block& b, PlannedCommand& c, const config::ChannelConfig& channel);
 
 // With these the axis words are the function's values (homing order, G92
 // offset, G101 factor, G102 selection), not a motion target.

@@ -80,10 +80,10 @@ class ChannelPrep {
  private:
   void feed_blocks(kernel::CommandQueue& commands, kernel::FeedbackQueue& feedback, bool channel_done);
   void take_feedback(const kernel::Feedback& f);
-  void hand_over(const kernel::Command& c, kernel::CommandQueue& commands);
+  void hand_over(const PlannedCommand& c, kernel::CommandQueue& commands);
   bool push_out(kernel::CommandQueue& commands);
   void collect_warnings();
-  void attach_warnings(kernel::Command& c);
+  void attach_warnings(PlannedCommand& c);
   // Plans what tool radius compensation handed out, into the window or,
   // while it is full, the backlog (one block may become several).
   void plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& commands);

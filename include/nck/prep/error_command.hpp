@@ -11,6 +11,6 @@
 namespace nck::prep {
 
 // d's ID and message, at d's line in file `file_id` (the decoder's number).
-Command error_command(const Diagnostic& d, std::uint16_t file_id, PlanStore& store);
+PlannedCommand error_command(const Diagnostic& d, std::uint16_t file_id, PlanStore& store);
 
 }  // namespace nck::prep

@@ -15,7 +15,7 @@
 // change, which keeps the cost per block small.
 //
 // Corner blending (G61/G261, docs/decisions.md): when a motion chains after
-// one whose end may be blended (Command::blend_dev_mm), a circular fillet
+// one whose end may be blended (PlannedCommand::blend_dev_mm), a circular fillet
 // (motion/corner_blend.hpp) is put between them as a motion command of its
 // own, both neighbours shortened to its tangent points; where none fits,
 // the corner stays sharp with its velocity limit.
@@ -31,11 +31,13 @@
 #include "nck/core/fixed_vector.hpp"
 #include "nck/kernel/queues.hpp"
 #include "nck/motion/limits.hpp"
+#include "nck/prep/command_packer.hpp"
+#include "nck/prep/planned_command.hpp"
 
 namespace nck::prep {
 
 // The commands one block planned into.
-using PlannedBlock = FixedVector<kernel::Command, kernel::kMaxCommandsPerBlock>;
+using PlannedBlock = FixedVector<PlannedCommand, kernel::kMaxCommandsPerBlock>;
 
 // What blending needs of the channel's axes (from the planner, setup).
 struct BlendAxes {
@@ -78,22 +80,22 @@ class LookAheadWindow {
 
  private:
   struct Entry {
-    kernel::Command command;
+    PlannedCommand command;
     std::uint64_t prev_motion = 0;  // sequence number + 1 of the motion chained before, 0 = none
     double end_cap_mm_s = 0;        // corner/feed limit at its end while chained, else 0
     double programmed_mm = 0;       // its length before any blend shortened it
   };
   Entry& at(std::uint64_t seq) { return ring_[seq % ring_.size()]; }
   const Entry& at(std::uint64_t seq) const { return ring_[seq % ring_.size()]; }
-  void append(const kernel::Command& c);
+  void append(const PlannedCommand& c);
   void raise_chain(std::uint64_t next);
-  double entry_limit(const kernel::Command& c) const;
-  bool blend(std::uint64_t prev, kernel::Command& next);
+  double entry_limit(const PlannedCommand& c) const;
+  bool blend(std::uint64_t prev, PlannedCommand& next);
   static motion::PathLimits fillet_limits(const motion::Segment& fillet,
                                          std::span<const motion::AxisDynamics> dyn);
-  bool lowering_is_safe(std::uint64_t seq, kernel::Command changed) const;
-  double cruise(const kernel::Command& c) const;
-  double tangent_cap(const kernel::Command& from, const kernel::Command& to) const;
+  bool lowering_is_safe(std::uint64_t seq, PlannedCommand changed) const;
+  double cruise(const PlannedCommand& c) const;
+  double tangent_cap(const PlannedCommand& from, const PlannedCommand& to) const;
 
   std::vector<Entry> ring_;
   std::uint64_t head_ = 0, tail_ = 0;  // sequence numbers: [head_, tail_) are in the window
@@ -103,6 +105,7 @@ class LookAheadWindow {
   bool late_wait_pending_ = false;  // an MVS_SLM function waits at the next feed motion
   BlendAxes axes_{};
   BlendStats stats_{};
+  CommandPacker packer_;  // packs what leaves for the queue
 };
 
 }  // namespace nck::prep

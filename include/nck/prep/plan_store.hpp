@@ -10,7 +10,7 @@
 #include "nck/core/append_log.hpp"
 #include "nck/core/diagnostic.hpp"
 #include "nck/kernel/affine_map.hpp"
-#include "nck/kernel/command.hpp"
+#include "nck/prep/planned_command.hpp"
 
 namespace nck::prep {
 
@@ -41,6 +41,6 @@ struct PlanStore {
 
 // Puts warnings into c (raised when it starts). Beyond its capacity the last
 // one says how many more there were and which came first.
-void add_warnings(kernel::Command& c, const std::vector<Diagnostic>& warnings, PlanStore& store);
+void add_warnings(PlannedCommand& c, const std::vector<Diagnostic>& warnings, PlanStore& store);
 
 }  // namespace nck::prep

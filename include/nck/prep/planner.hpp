@@ -81,14 +81,14 @@ class Planner final : public nc::KernelStateReader {
   motion::AxisVector cartesian(const motion::AxisVector& m) const { return cax_.cartesian(m, n_axes_); }
 
  private:
-  using Planned = std::expected<Command, Diagnostic>;
+  using Planned = std::expected<PlannedCommand, Diagnostic>;
   PlanContext context();
   Planned plan_one(const nc::Block& b, PlanContext& ctx);
-  PlanResult plan_technologies(const nc::Block& b, Command& c, PlanContext& ctx);
-  PlanResult apply_frames(const nc::Block& b, Command& c);
-  Planned plan_execution(const nc::Block& b, Command c, PlanContext& ctx);
-  Planned plan_motion(const nc::Block& b, Command c, PlanContext& ctx);
-  PlanResult plan_arc(const nc::Block& b, Command& c, const motion::AxisVector& target, frames::SuppressMask mask,
+  PlanResult plan_technologies(const nc::Block& b, PlannedCommand& c, PlanContext& ctx);
+  PlanResult apply_frames(const nc::Block& b, PlannedCommand& c);
+  Planned plan_execution(const nc::Block& b, PlannedCommand c, PlanContext& ctx);
+  Planned plan_motion(const nc::Block& b, PlannedCommand c, PlanContext& ctx);
+  PlanResult plan_arc(const nc::Block& b, PlannedCommand& c, const motion::AxisVector& target, frames::SuppressMask mask,
                       AxisDynamicsArray& dyn, PlanContext& ctx);
   // The main spindle's planned state (a default one when the channel has none).
   const PlannedSpindle& main_planned() const;

@@ -62,9 +62,9 @@ class RadiusComp {
   bool holding() const { return !queue_.empty(); }
 
   // The compensation state a block handed on carries (for the `trc` event):
-  // 0 G40, 1 G41, 2 G42, the D in force and its tool radius.
+  // the mode, the D in force and its tool radius.
   struct State {
-    std::uint8_t g = 0;
+    nc::RadiusComp mode = nc::RadiusComp::g40;
     std::int32_t d = 0;
     double radius_mm = 0;
   };

@@ -20,7 +20,7 @@
 
 namespace nck::prep {
 
-using SpindleActions = FixedVector<SpindleAction, Command::kMaxSpindleActions>;
+using SpindleActions = FixedVector<SpindleAction, PlannedCommand::kMaxSpindleActions>;
 
 // The modal spindle data of the program, as planned so far.
 struct PlannedSpindle {

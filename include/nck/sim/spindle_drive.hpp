@@ -20,7 +20,7 @@ struct SpindleDriveConfig {
   bool open_loop = false;               // speed-controlled
   double speed_time_constant_s = 0.02;  // speed lag of a speed-controlled drive
   double feedforward_ta_s = 1e-6;       // time constant Ta of the feedforward path
-  std::array<double, config::kMaxGearStages> kv_1_s{};  // position-loop gain per gear stage
+  std::array<double, config::kMaxGearStages> position_gain_1_s{};  // position-loop gain per gear stage
   double cycle_s = 0.001;
 
   // `axis` may be null (a PLC spindle without an axis list): default gear data. // setup

@@ -12,7 +12,7 @@
 namespace nck::spindle {
 
 // Acceleration the curve allows at |speed_deg_s|. Type 0 (no curve) returns
-// `slope_accel_deg_s2`, the caller's a_beschl / a_brems. Types 1..3 use
+// `slope_accel_deg_s2`, the caller's accel_mm_s2 / decel_mm_s2. Types 1..3 use
 // a_konst below n_grenz and never return less than a_min. An unknown type or
 // a non-finite result falls back to the slope value. // rt
 double curve_accel_deg_s2(const config::AccelCurve& curve, double speed_deg_s,
@@ -30,13 +30,13 @@ struct Coefficients {
 // Polynomial a(n) = b3*dn^3 + b2*dn^2 + b1*dn + a_konst, dn = n - n_grenz.
 // Needs exactly 3 points above n_grenz (the seed's P2..P4); a point at
 // n_grenz itself (P1) is skipped. // setup
-std::expected<Coefficients, std::string> fit_polynomial(double n_grenz_deg_s, double a_konst_deg_s2,
+std::expected<Coefficients, std::string> fit_polynomial(double limit_speed_deg_s, double const_accel_deg_s2,
                                                         std::span<const CurvePoint> points);
 
 // Hyperbola a(n) = b1 / (1 + b2*x*(1 + b3*x)), x = (n/n_grenz)^2, through
 // (n_grenz, a_konst). Needs exactly 2 points above n_grenz (P2, P3); a point
 // at n_grenz is skipped. // setup
-std::expected<Coefficients, std::string> fit_hyperbola(double n_grenz_deg_s, double a_konst_deg_s2,
+std::expected<Coefficients, std::string> fit_hyperbola(double limit_speed_deg_s, double const_accel_deg_s2,
                                                        std::span<const CurvePoint> points);
 
 }  // namespace nck::spindle

@@ -90,7 +90,7 @@ class SpindleAxis {
   double min_accel_down(double up_to_deg_s) const noexcept;
   double max_speed_deg_s() const noexcept;
   double override_factor() const noexcept;
-  double limit_speed(double speed_deg_s) const noexcept;           // vb_max caps
+  double limit_speed(double speed_deg_s) const noexcept;           // max_speed_mm_s caps
   double limit_rotation_speed(double speed_deg_s) const noexcept;  // + tool vb_min (M3/M4 only)
   double rotation_speed_deg_s() const noexcept;  // programmed x override, limited, signed
   // tick.cpp

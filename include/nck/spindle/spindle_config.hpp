@@ -27,7 +27,7 @@ struct GearConfig {
   double control_limit_deg_s = 200;    // vb_regelgrenze: encoder invalid above; <= 0 none
   double gear_change_pos_deg = 0;      // getr_schalt_pos
   double reference_pos_deg = 0;        // pos_refpkt: the zero mark
-  bool reverse = false;                // reverse: drive output and actual values with flipped sign
+  bool reverse_sense = false;          // reverse: drive output and actual values with flipped sign
   config::AccelCurve accel_curve{};    // beschl_kennlinie: a(n) instead of the slope
 
   static GearConfig from(const config::GearStage& g) noexcept;  // setup

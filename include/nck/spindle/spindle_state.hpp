@@ -8,7 +8,7 @@
 
 namespace nck::spindle {
 
-// Tool-related limits (wz[i].vb_min / vb_max / a_max); 0 = no limit.
+// Tool-related limits (wz[i].vb_min / max_speed_mm_s / a_max); 0 = no limit.
 struct ToolDynamics {
   double vb_min_rpm = 0;
   double vb_max_rpm = 0;

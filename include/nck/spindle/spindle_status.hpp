@@ -25,9 +25,9 @@ struct SpindleResult {
 struct SpindleStatus {
   SpindleMode mode = SpindleMode::stop;
   double set_rpm = 0;           // signed set-point speed (M3 +, M4 -)
-  double set_pos_deg = 0;       // set-point position in [modulou, moduloo)
+  double set_pos_deg = 0;       // set-point position in [modulo_lower, modulo_upper)
   double act_rpm = 0;           // simulated actual speed
-  double act_pos_deg = 0;       // simulated actual position in [modulou, moduloo)
+  double act_pos_deg = 0;       // simulated actual position in [modulo_lower, modulo_upper)
   double cmd_rpm = 0;           // speed the spindle runs towards (programmed x override, limited), signed
   double programmed_rpm = 0;    // last programmed speed, signed
   double set_accel_deg_s2 = 0;  // set-point acceleration of the last cycle

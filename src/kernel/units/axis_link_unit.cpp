@@ -41,7 +41,7 @@ void AxisLinkUnit::emit(const ActiveLink& l, bool on, LinkReason why, Cycle& cy)
   e.message_index = l.cmd.payload;
   e.link_group = l.cmd.group;
   e.link_on = on;
-  e.link_reason = static_cast<std::uint8_t>(why);
+  e.link_reason = why;
   cy.sink.emit(e);
 }
 

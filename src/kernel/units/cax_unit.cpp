@@ -8,13 +8,12 @@ void CaxUnit::setup(std::int8_t axis, std::int8_t spindle, std::size_t n_axes) n
   spindle_ = ok ? spindle : std::int8_t{-1};
 }
 
-Fault CaxUnit::start(const Command& c, motion::AxisVector& pos_mm, Cycle& cy) noexcept {
-  if (c.cax == Command::CaxOp::none) return {};
-  const bool known = axis_ >= 0 && c.cax_axis == axis_ && c.cax_spindle == spindle_ &&
+Fault CaxUnit::start(const CaxChange& c, motion::AxisVector& pos_mm, Cycle& cy) noexcept {
+  const bool known = axis_ >= 0 && c.axis == axis_ && c.spindle == spindle_ &&
                      static_cast<std::size_t>(spindle_) < cy.machine.spindle_count;
   if (!known) return {ErrorId::KernelCaxMismatch};
   SpindleUnit& u = cy.machine.spindles[spindle_];
-  if (c.cax == Command::CaxOp::off) {
+  if (!c.on) {
     end(cy.machine);
     return {};
   }

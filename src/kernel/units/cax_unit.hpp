@@ -7,7 +7,7 @@
 // that C-axis mode starts from there.
 #include <cstdint>
 
-#include "nck/kernel/command.hpp"
+#include "nck/kernel/attachment.hpp"
 #include "cycle.hpp"
 
 namespace nck::kernel {
@@ -16,9 +16,9 @@ class CaxUnit {
  public:
   // setup: channel axis `axis` (of n_axes) is spindle `spindle` (kernel index).
   void setup(std::int8_t axis, std::int8_t spindle, std::size_t n_axes) noexcept;
-  // #CAX / #CAX OFF at the start of block c (its cax, cax_axis, cax_spindle);
-  // C-axis mode starts where the spindle stands (in pos_mm). rt
-  Fault start(const Command& c, motion::AxisVector& pos_mm, Cycle& cy) noexcept;
+  // #CAX / #CAX OFF at the start of a block; C-axis mode starts where the
+  // spindle stands (in pos_mm). rt
+  Fault start(const CaxChange& c, motion::AxisVector& pos_mm, Cycle& cy) noexcept;
   // After the cycle's path step: the spindle follows C, or C shows the spindle. rt
   void follow(double dt_s, motion::AxisVector& pos_mm, ChannelContext& ctx) noexcept;
   // Program end: the spindle is a spindle again. rt

@@ -39,8 +39,8 @@ inline Event block_event(const Command& c, std::uint8_t channel, EventKind k, do
   e.kind = k;
   e.file_id = c.file_id;
   e.line = c.line;
-  e.has_n = c.has_n;
-  e.n = c.n;
+  e.has_n = c.n.has_value();
+  e.n = c.n.value_or(0);
   return e;
 }
 

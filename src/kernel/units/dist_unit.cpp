@@ -2,18 +2,16 @@
 
 namespace nck::kernel {
 
-Fault DistUnit::start(const Command& c, Cycle& cy) noexcept {
-  if (!c.dist.any()) return {};
+Fault DistUnit::start(const DistChange& c, Cycle& cy) noexcept {
   // The tool axis is fixed while the offset is in the set point: a plane
   // change moves it only once distance control is off again.
-  if (!ctrl_.engaged() && ctrl_.offset_mm() == 0) axis_ = c.dist_axis;
-  if (axis_ < 0) axis_ = c.dist_axis;
-  check_sw_ = c.dist_check_sw;
-  if (c.dist_source >= 0) source_ = c.dist_source;
-  if (c.dist_var[0] != '\0') var_ = c.dist_var;
-  sw_neg_mm_ = c.dist_sw_neg_mm;
-  sw_pos_mm_ = c.dist_sw_pos_mm;
-  const ErrorId e = ctrl_.apply(c.dist);
+  if (!ctrl_.engaged() && ctrl_.offset_mm() == 0) axis_ = c.axis;
+  if (axis_ < 0) axis_ = c.axis;
+  check_sw_ = c.sw_limits_mm.has_value();
+  if (c.sw_limits_mm) sw_limits_mm_ = *c.sw_limits_mm;
+  if (c.source) source_ = *c.source;
+  if (c.variable[0] != '\0') var_ = c.variable;
+  const ErrorId e = ctrl_.apply(c.sw);
   note_state(cy);
   return {e};
 }
@@ -25,14 +23,14 @@ Fault DistUnit::run(const motion::AxisVector& pos_mm, bool channel_done, Cycle& 
   }
   const double prog_mm = pos_mm[static_cast<std::size_t>(axis_)];
   distctrl::Sample smp{cy.in.dist_sensor_valid, cy.in.dist_sensor_mm};
-  if (source_ == 1) {  // a variable not (yet) written counts as no value
+  if (source_ == DistChange::Source::variable) {  // a variable not (yet) written counts as no value
     smp.valid = false;
     for (const ChannelVariable& v : cy.in.variables)
       if (v.name == var_) smp = {true, v.value};
   }
   ErrorId e = ctrl_.step(smp, prog_mm);
   // P-CHAN-00809: the set point with the offset stays inside the software limits.
-  if (e == ErrorId{} && check_sw_) e = ctrl_.clamp_to(sw_neg_mm_ - prog_mm, sw_pos_mm_ - prog_mm);
+  if (e == ErrorId{} && check_sw_) e = ctrl_.clamp_to(sw_limits_mm_[0] - prog_mm, sw_limits_mm_[1] - prog_mm);
   note_state(cy);
   return {e};
 }
@@ -42,7 +40,7 @@ void DistUnit::note_state(Cycle& cy) noexcept {
   if (ctrl_.state() == reported_) return;
   reported_ = ctrl_.state();
   Event e = cy.event(EventKind::dist_ctrl);
-  e.dist_state = static_cast<std::uint8_t>(reported_);
+  e.dist_state = reported_;
   cy.sink.emit(e);
 }
 
@@ -68,7 +66,7 @@ void DistUnit::output(ChannelOutput& out, std::size_t n_axes) const noexcept {
   out.dist_offset_mm = ctrl_.offset_mm();
   out.dist_sensor_mm = ctrl_.sensor_mm();
   out.dist_error_mm = ctrl_.dist_error_mm();
-  out.dist_state = static_cast<std::uint8_t>(ctrl_.state());
+  out.dist_state = ctrl_.state();
   out.dist_axis = axis_;
   if (axis_ >= 0 && static_cast<std::size_t>(axis_) < n_axes)
     out.axis_mcs[static_cast<std::size_t>(axis_)] += ctrl_.offset_mm();

@@ -8,7 +8,7 @@
 #include <cstdint>
 
 #include "nck/distctrl/controller.hpp"
-#include "nck/kernel/command.hpp"
+#include "nck/kernel/attachment.hpp"
 #include "cycle.hpp"
 
 namespace nck::kernel {
@@ -17,9 +17,8 @@ class DistUnit {
  public:
   // setup: the channel's settings (dist_ctrl[0]) and cycle time.
   void setup(const distctrl::Settings& s, double dt_s) noexcept { ctrl_.setup(s, dt_s); }
-  // #DIST CTRL at the start of block c (its dist, dist_axis, dist_source,
-  // dist_var, dist_check_sw and software limits). rt
-  Fault start(const Command& c, Cycle& cy) noexcept;
+  // #DIST CTRL at the start of a block. rt
+  Fault start(const DistChange& c, Cycle& cy) noexcept;
   // Every cycle, after the path: the offset for the program set point
   // pos_mm (nothing once the channel is done). rt
   Fault run(const motion::AxisVector& pos_mm, bool channel_done, Cycle& cy) noexcept;
@@ -41,10 +40,10 @@ class DistUnit {
   distctrl::Controller ctrl_;
   distctrl::State reported_ = distctrl::State::inactive;
   std::int8_t axis_ = -1;  // tool axis carrying the offset
-  bool check_sw_ = false;
-  std::int8_t source_ = 0;  // 0 the sensor in TickInput, 1 the variable var_
+  bool check_sw_ = false;  // the set point stays within sw_limits_mm_ (negative, positive)
+  std::array<double, 2> sw_limits_mm_{};
+  DistChange::Source source_ = DistChange::Source::machine;  // the variable: var_
   std::array<char, 32> var_{};
-  double sw_neg_mm_ = 0, sw_pos_mm_ = 0;
 };
 
 }  // namespace nck::kernel

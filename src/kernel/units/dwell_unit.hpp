@@ -8,16 +8,16 @@ namespace nck::kernel {
 
 class DwellUnit {
  public:
-  // The body of block c begins. rt
-  void start(const Command& c) noexcept {
-    if (c.kind == CommandKind::dwell) left_s_ = c.dwell_s;
-    revs_left_ = c.dwell_revs;
+  // Dwell d begins. rt
+  void start(const Dwell& d) noexcept {
+    left_s_ = d.time_s;
+    revs_left_ = d.revolutions ? d.revolutions->revs : 0.0;
   }
-  // One cycle of dwell c; `over` when it has lasted its time. rt
-  Fault step(const Command& c, Cycle& cy, bool& over) noexcept;
+  // One cycle of dwell d; `over` when it has lasted its time. rt
+  Fault step(const Dwell& d, Cycle& cy, bool& over) noexcept;
 
  private:
-  Fault step_revolutions(const Command& c, Cycle& cy, bool& over) noexcept;
+  Fault step_revolutions(const Dwell::Revolutions& r, Cycle& cy, bool& over) noexcept;
 
   double left_s_ = 0;
   double revs_left_ = 0;

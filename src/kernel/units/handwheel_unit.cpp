@@ -4,10 +4,12 @@
 
 namespace nck::kernel {
 
-void HandwheelUnit::start(const Command& c) noexcept {
-  manual_mask_ = (manual_mask_ | c.manual_on) & ~c.manual_off;
+void HandwheelUnit::start(const ManualChange* c) noexcept {
+  if (c) {
+    manual_mask_ = (manual_mask_ | c->on) & ~c->off;
+    if (c->get_offsets) fetch_pending_ = true;
+  }
   if (manual_mask_ != 0) used_ = true;  // until the first G201 every offset is zero
-  if (c.get_manual_offsets) fetch_pending_ = true;
   share_start_ = share_;
 }
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "nck/kernel/attachment.hpp"
 #include "nck/kernel/command.hpp"
 #include "cycle.hpp"
 
@@ -21,9 +22,9 @@ class HandwheelUnit {
     share_start_.fill(1.0);
   }
   // A block starts: axes enter / leave manual mode, #GET MANUAL OFFSETS. rt
-  void start(const Command& c) noexcept;
-  // The path of block c reached s_mm: the share of each axis's offset. rt
-  void blend(const Command& c, double s_mm, std::size_t n_axes) noexcept;
+  void start(const ManualChange* c) noexcept;
+  // Motion m (path length length_mm) reached s_mm: the share of each axis's offset. rt
+  void blend(const Motion& m, double length_mm, double s_mm, std::size_t n_axes) noexcept;
   // Every cycle: follow the handwheel; at #GET MANUAL OFFSETS send the
   // offsets reached at the end of its cycle. rt
   Fault follow(Cycle& cy) noexcept;
@@ -43,14 +44,13 @@ class HandwheelUnit {
   motion::AxisVector in_force_mm_{};
 };
 
-// A motion block takes the handwheel offset of its axes in or out (command
-// manual_offset_axes) in step with its path, 0 at its start and 1 at its
-// end, so the set point never jumps by the offset.
-inline void HandwheelUnit::blend(const Command& c, double s_mm, std::size_t n_axes) noexcept {
-  const double length = c.segment.length();
-  const double fraction = length > 0 ? std::clamp(s_mm / length, 0.0, 1.0) : 1.0;
+// A motion block takes the handwheel offset of its axes in or out
+// (Motion::handwheel_axes) in step with its path, 0 at its start and 1 at
+// its end, so the set point never jumps by the offset.
+inline void HandwheelUnit::blend(const Motion& m, double length_mm, double s_mm, std::size_t n_axes) noexcept {
+  const double fraction = length_mm > 0 ? std::clamp(s_mm / length_mm, 0.0, 1.0) : 1.0;
   for (std::size_t j = 0; j < n_axes; ++j) {
-    const double target = (c.manual_offset_axes >> j) & 1u ? 1.0 : 0.0;
+    const double target = (m.handwheel_axes >> j) & 1u ? 1.0 : 0.0;
     share_[j] = share_start_[j] + (target - share_start_[j]) * fraction;
   }
 }

@@ -13,16 +13,16 @@ class MeasuringUnit {
  public:
   // Before the path's step: does the G100 run c end in this cycle? A switch
   // counts once this run has moved (not one left from the block before). rt
-  bool run_ends(const Command& c, const ChannelInput& in) const noexcept {
-    return c.measure && (awaiting_probe_ || (in.probe_switched && probe_armed_));
+  bool run_ends(const Motion& m, const ChannelInput& in) const noexcept {
+    return m.measure && (awaiting_probe_ || (in.probe_switched && probe_armed_));
   }
-  // The path of block c stepped: a probe switch from now on is its own. rt
-  void stepped(const Command& c) noexcept { probe_armed_ = c.measure; }
-  // Motion c reached its end point: true for a G100 run (it waits one more
+  // The path of motion m stepped: a probe switch from now on is its own. rt
+  void stepped(const Motion& m) noexcept { probe_armed_ = m.measure; }
+  // Motion m reached its end point: true for a G100 run (it waits one more
   // cycle for the probe). rt
-  bool reached_end(const Command& c) noexcept {
-    if (c.measure) awaiting_probe_ = true;
-    return c.measure;
+  bool reached_end(const Motion& m) noexcept {
+    if (m.measure) awaiting_probe_ = true;
+    return m.measure;
   }
   // Ends the run: the set point pos_mm goes to the latched point when the
   // probe switched (machine position less the handwheel offset manual_mm),

@@ -4,28 +4,35 @@
 
 namespace nck::kernel {
 
-void PathUnit::start_block(const Command& c) noexcept {
-  if (c.kind != CommandKind::motion && c.kind != CommandKind::nop) {
-    passing_ = false;
-    profile_.reset();
+void PathUnit::start_block(const Command& c, const StartPoint* start, const ProgramMap* map) noexcept {
+  const Motion* m = c.as<Motion>();
+  if (!m) {
+    if (!c.is<Nop>()) {
+      passing_ = false;
+      profile_.reset();
+    }
+    return;
   }
+  segment_ = motion::Segment::joined(start ? start->pos : segment_.end_point(), m->path);
+  if (map) map_ = map->map;
+  else map_.reset();
 }
 
-void PathUnit::start_motion(const Command& c, const CommandQueue& queued, double dt_s) noexcept {
-  const double v_end = reserve_end_speed(c, queued, dt_s);
-  reserve_ = v_end < c.v_end_mm_s;
-  profile_.start(c.segment.length(), c.v_cmd_mm_s, c.limits, v_end);
+void PathUnit::start_motion(const Motion& m, const CommandQueue& queued, double dt_s) noexcept {
+  const double v_end = reserve_end_speed(m, queued, dt_s);
+  reserve_ = v_end < m.v_end_mm_s;
+  profile_.start(segment_.length(), m.v_cmd_mm_s, m.limits, v_end);
 }
 
-bool PathUnit::carry_on(const Command& c) noexcept {
+bool PathUnit::carry_on(const Motion& m) noexcept {
   if (passing_) {
     passing_ = false;
     velocity_ = profile_.v();
     return true;
   }
   // Right after an exact stop the first step may be gentler
-  // (Command::start_a_mm_s2: a sharp turn or a reversal).
-  if (moved_last_cycle_) profile_.limit_first_step(c.start_a_mm_s2);
+  // (Motion::start_a_mm_s2: a sharp turn or a reversal).
+  if (moved_last_cycle_ && m.start_a_mm_s2) profile_.limit_first_step(*m.start_a_mm_s2);
   return false;
 }
 
@@ -37,21 +44,21 @@ void PathUnit::end_motion() noexcept {
   velocity_ = profile_.v();
 }
 
-void PathUnit::place(const Command& c, double s_mm, std::size_t n_axes) noexcept {
-  const bool trafo = c.trafo.kind != motion::CaxTrafoKind::none;
-  if (!c.mapped && !trafo) {
-    c.segment.point_at(s_mm, pos_);
+void PathUnit::place(const Motion& m, double s_mm, std::size_t n_axes) noexcept {
+  const bool trafo = m.trafo.kind != motion::CaxTrafoKind::none;
+  if (!map_ && !trafo) {
+    segment_.point_at(s_mm, pos_);
     return;
   }
   motion::AxisVector pcs = pos_;
-  c.segment.point_at(s_mm, pcs);
+  segment_.point_at(s_mm, pcs);
   if (!trafo) {
-    c.map.apply(pcs, pos_, n_axes);
+    map_->apply(pcs, pos_, n_axes);
     return;
   }
   motion::AxisVector cart = pcs;
-  if (c.mapped) c.map.apply(pcs, cart, n_axes);
-  motion::cax_to_machine(c.trafo, cart, pos_, n_axes);  // pos_ holds the previous C
+  if (map_) map_->apply(pcs, cart, n_axes);
+  motion::cax_to_machine(m.trafo, cart, pos_, n_axes);  // pos_ holds the previous C
 }
 
 void PathUnit::reset() noexcept {
@@ -63,11 +70,11 @@ void PathUnit::reset() noexcept {
 // While the commands queued after a motion do not reach a stop or a braking
 // distance, its end speed is lowered to what they leave room for; raised
 // again, up to the planned speed, as soon as preparation queues more.
-void PathUnit::keep_braking_reserve(const Command& c, const CommandQueue& queued, double dt_s) noexcept {
+void PathUnit::keep_braking_reserve(const Motion& m, const CommandQueue& queued, double dt_s) noexcept {
   if (!reserve_) return;
-  const double v_end = reserve_end_speed(c, queued, dt_s);
+  const double v_end = reserve_end_speed(m, queued, dt_s);
   profile_.set_end_velocity(v_end);
-  reserve_ = v_end < c.v_end_mm_s;
+  reserve_ = v_end < m.v_end_mm_s;
 }
 
 // The braking reserve slowed the path: preparation fell behind. One

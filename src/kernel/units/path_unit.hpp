@@ -6,7 +6,9 @@
 // set point and some (C axis, synchronous operation, measuring) move axes
 // of it.
 #include <algorithm>
+#include <optional>
 
+#include "nck/kernel/attachment.hpp"
 #include "nck/kernel/command.hpp"
 #include "nck/kernel/queues.hpp"
 #include "nck/motion/path_profile.hpp"
@@ -22,24 +24,26 @@ class PathUnit {
     moved_this_cycle_ = false;
   }
   // A block starts: only motions (and blocks without motion in between)
-  // continue a path at speed; anything else starts from standstill. rt
-  void start_block(const Command& c) noexcept;
-  // The body of motion c begins: its profile, ending no faster than the
+  // continue a path at speed; anything else starts from standstill. A
+  // motion's segment starts where the one before ended, or at `start`;
+  // `map` maps it from program coordinates. rt
+  void start_block(const Command& c, const StartPoint* start, const ProgramMap* map) noexcept;
+  // The body of motion m begins: its profile, ending no faster than the
   // queued commands leave room to brake in (braking_reserve.hpp). rt
-  void start_motion(const Command& c, const CommandQueue& queued, double dt_s) noexcept;
+  void start_motion(const Motion& m, const CommandQueue& queued, double dt_s) noexcept;
   // After start_motion: true when the block before ran into this one during
   // this cycle (the set point is the distance it ran past its end, s()). rt
-  bool carry_on(const Command& c) noexcept;
+  bool carry_on(const Motion& m) noexcept;
   // The last motion ended at speed: the next block takes over this cycle.
   bool passing() const noexcept { return passing_; }
   // One cycle of motion c (the couplings limited the profile before). rt
-  motion::ProfileSample step(const Command& c, const CommandQueue& queued, Cycle& cy) noexcept;
+  motion::ProfileSample step(const Motion& m, const CommandQueue& queued, Cycle& cy) noexcept;
   // Motion c reached its end (its end point placed). rt
   void end_motion() noexcept;
-  // The set point of motion c at path length s_mm: the segment's point,
+  // The set point of motion m at path length s_mm: the segment's point,
   // mapped from program to machine coordinates when a rotation acts, and
   // from Cartesian to machine X/C under #FACE / #CYL. rt
-  void place(const Command& c, double s_mm, std::size_t n_axes) noexcept;
+  void place(const Motion& m, double s_mm, std::size_t n_axes) noexcept;
   // The path stands where it is (a G100 run ended at the probe). rt
   void halt() noexcept { velocity_ = 0; }
   // Program end: standstill, nothing carried on. rt
@@ -49,14 +53,18 @@ class PathUnit {
   motion::AxisVector& position() noexcept { return pos_; }
   double velocity_mm_s() const noexcept { return velocity_; }
   double s_mm() const noexcept { return profile_.s(); }
+  // The segment of the motion that runs (or ran last).
+  const motion::Segment& segment() const noexcept { return segment_; }
   // The spindle-path couplings limit the profile each cycle.
   motion::PathProfile& profile() noexcept { return profile_; }
 
  private:
-  void keep_braking_reserve(const Command& c, const CommandQueue& queued, double dt_s) noexcept;
+  void keep_braking_reserve(const Motion& m, const CommandQueue& queued, double dt_s) noexcept;
   void note_starved(Cycle& cy) noexcept;
 
   motion::PathProfile profile_{};
+  motion::Segment segment_{};
+  std::optional<AffineMap> map_;  // the segment is in program coordinates
   motion::AxisVector pos_{};
   double velocity_ = 0;
   bool passing_ = false;  // the last motion ended at speed: the next one takes over this cycle
@@ -66,9 +74,9 @@ class PathUnit {
 };
 
 // Every cycle of a motion: defined here so that it inlines into the channel.
-inline motion::ProfileSample PathUnit::step(const Command& c, const CommandQueue& queued, Cycle& cy) noexcept {
+inline motion::ProfileSample PathUnit::step(const Motion& m, const CommandQueue& queued, Cycle& cy) noexcept {
   const double ovr = cy.in.feedhold ? 0.0 : std::clamp(cy.in.feed_override_pct, 0.0, 100.0) / 100.0;
-  if (reserve_) keep_braking_reserve(c, queued, cy.dt_s);
+  if (reserve_) keep_braking_reserve(m, queued, cy.dt_s);
   const motion::ProfileSample st = profile_.step(cy.dt_s, ovr);
   if (reserve_ && st.braking) note_starved(cy);
   moved_this_cycle_ = st.v_mm_s > 0;

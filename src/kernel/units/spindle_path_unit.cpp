@@ -7,7 +7,7 @@ namespace {
 
 bool is_tap(FeedLinkKind k) noexcept { return k == FeedLinkKind::tap || k == FeedLinkKind::tap_rigid; }
 
-// The gear stage's top speed (vb_max) in rpm, 0 = none.
+// The gear stage's top speed (max_speed_mm_s) in rpm, 0 = none.
 double vb_max_rpm(const SpindleUnit& u) noexcept {
   const std::uint32_t g = u.axis.status().gear_stage;
   if (g < 1 || g > u.axis.config().gears.size()) return 0;
@@ -19,16 +19,18 @@ double vb_max_rpm(const SpindleUnit& u) noexcept {
 // A block outside G63/G331/G332 ends the tracking (G4 and blocks without
 // motion under G63 keep it, FCT-S1 2.8.6); G96 is taken over from every
 // block (G97 freezes the speed reached).
-void SpindlePathUnit::start(const FeedLink& f, const CssLink& css, ChannelContext& ctx) noexcept {
-  if (!is_tap(f.kind)) release_tap_spindle(ctx);
-  if (SpindleUnit* u = ctx.spindle(css_.spindle); u && !(css.active && css.spindle == css_.spindle))
+void SpindlePathUnit::start(const FeedLink* f, const CssLink* css, ChannelContext& ctx) noexcept {
+  link_ = f ? *f : FeedLink{};
+  if (!is_tap(link_.kind)) release_tap_spindle(ctx);
+  const CssLink next = css ? *css : CssLink{};
+  if (SpindleUnit* u = ctx.spindle(css_.spindle); u && !(next.active && next.spindle == css_.spindle))
     u->speed_law = false;
-  css_ = css;
+  css_ = next;
 }
 
 void SpindlePathUnit::end(ChannelContext& ctx) noexcept {
   release_tap_spindle(ctx);
-  start(FeedLink{}, CssLink{}, ctx);
+  start(nullptr, nullptr, ctx);
 }
 
 void SpindlePathUnit::release_tap_spindle(ChannelContext& ctx) noexcept {
@@ -39,7 +41,8 @@ void SpindlePathUnit::release_tap_spindle(ChannelContext& ctx) noexcept {
 // Tapping makes the spindle a tracking axis (it must stand still, 950008),
 // G95/G33 need a turning spindle (60131), G33 waits for the spindle's start
 // angle.
-Fault SpindlePathUnit::start_motion(const FeedLink& f, motion::PathProfile& path, ChannelContext& ctx) noexcept {
+Fault SpindlePathUnit::start_motion(motion::PathProfile& path, ChannelContext& ctx) noexcept {
+  const FeedLink& f = link_;
   thread_waiting_ = false;
   SpindleUnit* u = ctx.spindle(f.spindle);
   if (f.kind == FeedLinkKind::none || !u) return {};
@@ -63,7 +66,8 @@ Fault SpindlePathUnit::start_motion(const FeedLink& f, motion::PathProfile& path
   return {};
 }
 
-void SpindlePathUnit::limit_path(const FeedLink& f, motion::PathProfile& path, ChannelContext& ctx) noexcept {
+void SpindlePathUnit::limit_path(motion::PathProfile& path, ChannelContext& ctx) noexcept {
+  const FeedLink& f = link_;
   const SpindleUnit* u = ctx.spindle(f.spindle);
   if (f.kind == FeedLinkKind::none || !u) return;
   const spindle::SpindleStatus& st = u->axis.status();
@@ -94,7 +98,8 @@ void SpindlePathUnit::limit_path(const FeedLink& f, motion::PathProfile& path, C
   }
 }
 
-void SpindlePathUnit::follow_path(const FeedLink& f, double s_mm, double v_mm_s, ChannelContext& ctx) noexcept {
+void SpindlePathUnit::follow_path(double s_mm, double v_mm_s, ChannelContext& ctx) noexcept {
+  const FeedLink& f = link_;
   if (!is_tap(f.kind) || tap_spindle_ != f.spindle) return;
   SpindleUnit* u = ctx.spindle(f.spindle);
   if (!u) return;

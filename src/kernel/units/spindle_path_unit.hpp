@@ -15,14 +15,14 @@ namespace nck::kernel {
 
 class SpindlePathUnit {
  public:
-  // At a block's start (its feed link and G96 state). rt
-  void start(const FeedLink& f, const CssLink& css, ChannelContext& ctx) noexcept;
+  // At a block's start: its feed link and G96 state (none: off). rt
+  void start(const FeedLink* f, const CssLink* css, ChannelContext& ctx) noexcept;
   // When a motion's body begins (an error ends the program). rt
-  Fault start_motion(const FeedLink& f, motion::PathProfile& path, ChannelContext& ctx) noexcept;
+  Fault start_motion(motion::PathProfile& path, ChannelContext& ctx) noexcept;
   // Before the path's step: the speed the coupling allows this cycle. rt
-  void limit_path(const FeedLink& f, motion::PathProfile& path, ChannelContext& ctx) noexcept;
+  void limit_path(motion::PathProfile& path, ChannelContext& ctx) noexcept;
   // After the path moved to s_mm at v_mm_s: the tracking spindle's set point. rt
-  void follow_path(const FeedLink& f, double s_mm, double v_mm_s, ChannelContext& ctx) noexcept;
+  void follow_path(double s_mm, double v_mm_s, ChannelContext& ctx) noexcept;
   // G96, every cycle, from the machine set point (program set point pos_mm
   // plus handwheel offset manual_mm). rt
   void follow_css(const motion::AxisVector& pos_mm, const motion::AxisVector& manual_mm,
@@ -37,6 +37,7 @@ class SpindlePathUnit {
   double tap_start_deg_ = 0;      // its set point when the block's motion began
   bool thread_waiting_ = false;   // G33: the path waits for the start angle
   double thread_last_deg_ = 0;    // the spindle's set point one cycle ago
+  FeedLink link_{};               // the block's feed link
   CssLink css_{};                 // G96 in force
 };
 

@@ -5,10 +5,6 @@
 namespace nck::kernel {
 namespace {
 
-FunctionKind function_kind(char fn) {
-  return fn == 'S' ? FunctionKind::s : fn == 'H' ? FunctionKind::h : FunctionKind::m;
-}
-
 WaitReason reason_of(SpindleWait w) {
   switch (w) {
     case SpindleWait::speed_reached: return WaitReason::speed_reached;
@@ -100,7 +96,9 @@ bool SyncUnit::add_wait(const Wait& w, SyncPoint sync) noexcept {
   return true;
 }
 
-void SyncUnit::take_late_waits(const Command& c) noexcept {
+void SyncUnit::start_block(const Command& c) noexcept {
+  outputs_.clear();
+  actions_.clear();
   if (c.feed_motion) take_late_waits(SyncPoint::late_motion);
   if (c.expl_syn) take_late_waits(SyncPoint::late_explicit);
 }
@@ -159,7 +157,7 @@ Fault SyncUnit::issue_spindle(const SpindleAction& a, Cycle& cy) noexcept {
   Wait w;
   w.spindle = a.spindle;
   w.what = now.wait;
-  w.fn = function_kind(a.fn);
+  w.fn = a.fn;
   w.fn_number = a.fn_number;
   w.deadline_s = a.ack_timeout_s > 0 ? cy.t_s + a.ack_timeout_s : 0;
   // The gear change's M function goes out when the spindle is at the change
@@ -176,7 +174,7 @@ Fault SyncUnit::output_spindle_function(const SpindleAction& a, const SpindleAct
                                         Cycle& cy) noexcept {
   const SpindleUnit& u = cy.machine.spindles[a.spindle];
   plc::TechOutput o;
-  o.kind = tech_kind(w.fn);
+  o.kind = w.fn;
   o.number = a.fn_number;
   o.channel = cy.channel;
   o.spindle = u.channel_index;
@@ -196,7 +194,7 @@ Fault SyncUnit::output_spindle_function(const SpindleAction& a, const SpindleAct
 
 Fault SyncUnit::issue_output(const Output& o, Cycle& cy) noexcept {
   plc::TechOutput t;
-  t.kind = tech_kind(o.fn);
+  t.kind = o.fn;
   t.number = o.number;
   t.channel = cy.channel;
   t.sync = o.sync;
@@ -215,20 +213,20 @@ Fault SyncUnit::issue_output(const Output& o, Cycle& cy) noexcept {
   return {};
 }
 
-Fault SyncUnit::issue_all(const Command& c, SyncPoint phase, Cycle& cy) noexcept {
-  for (const Output& o : c.outputs) {
+Fault SyncUnit::issue_all(SyncPoint phase, Cycle& cy) noexcept {
+  for (const Output& o : outputs_) {
     if (!issued_in(sync_point(o.sync).value_or(SyncPoint::none), phase)) continue;
     if (const Fault f = issue_output(o, cy); f.any()) return f;
   }
   next_action_ = 0;
-  return issue_spindle_actions(c, phase, cy);
+  return issue_spindle_actions(phase, cy);
 }
 
 // Issues the block's spindle actions of `phase` from next_action_ on. A gear
 // change must be finished before the speed of the new stage is commanded:
 // the actions after it wait.
-Fault SyncUnit::issue_spindle_actions(const Command& c, SyncPoint phase, Cycle& cy) noexcept {
-  const auto& actions = c.spindle_actions;
+Fault SyncUnit::issue_spindle_actions(SyncPoint phase, Cycle& cy) noexcept {
+  const auto& actions = actions_;
   while (next_action_ < actions.size()) {
     const SpindleAction& a = actions[next_action_++];
     if (!issued_in(a.sync, phase)) continue;
@@ -267,7 +265,7 @@ Fault SyncUnit::check(Wait& w, bool& stays, Cycle& cy) noexcept {
   e.spindle = w.spindle;
   e.fn = w.fn;
   e.fn_number = w.fn_number;
-  e.wait_reason = static_cast<std::uint8_t>(w.reason);
+  e.wait_reason = w.reason;
   const WaitReason now = acked ? reason_of(w.what) : WaitReason::plc_ack;
   if (satisfied || (w.announced && now != w.reason)) {
     if (w.announced) {  // ends the wait, or its reason changes (PLC acknowledged, speed not yet)
@@ -281,7 +279,7 @@ Fault SyncUnit::check(Wait& w, bool& stays, Cycle& cy) noexcept {
     }
   }
   e.kind = EventKind::wait;
-  e.wait_reason = static_cast<std::uint8_t>(now);
+  e.wait_reason = now;
   w.reason = now;
   if (u && u->axis.status().mode == spindle::SpindleMode::error) return {u->axis.status().error};
   if (w.deadline_s > 0 && cy.t_s >= w.deadline_s && !acked) return {ErrorId::PlcAckTimeout};

@@ -1,11 +1,12 @@
 #pragma once
 // Synchronisation of a block's spindle and PLC functions with its motion
 // (FCT-S1 2.5): what is output when, and what the channel waits for before
-// and after the block's motion. This unit reads a command's outputs,
-// spindle_actions, feed_motion and expl_syn.
+// and after the block's motion. This unit takes a block's Output and
+// SpindleAction attachments, and reads its feed_motion and expl_syn.
 #include <cstddef>
 #include <cstdint>
 
+#include "nck/kernel/attachment.hpp"
 #include "nck/kernel/command.hpp"
 #include "cycle.hpp"
 
@@ -14,15 +15,18 @@ namespace nck::kernel {
 class SyncUnit {
  public:
   // At a block's start: late functions (MVS_SLM / MVS_SLP) carried from
-  // earlier blocks synchronise before this block's motion. rt
-  void take_late_waits(const Command& c) noexcept;
-  // Outputs and spindle actions of block c issued in `phase` (before or
+  // earlier blocks synchronise before this block's motion; the block's
+  // outputs and spindle actions follow (take), in their order. rt
+  void start_block(const Command& c) noexcept;
+  void take(const Output& o) noexcept { (void)outputs_.push_back(o); }
+  void take(const SpindleAction& a) noexcept { (void)actions_.push_back(a); }
+  // Outputs and spindle actions of the block issued in `phase` (before or
   // after the motion). rt
-  Fault issue_all(const Command& c, SyncPoint phase, Cycle& cy) noexcept;
+  Fault issue_all(SyncPoint phase, Cycle& cy) noexcept;
   // Issues the spindle actions of `phase` held back behind a gear change. rt
-  Fault issue_spindle_actions(const Command& c, SyncPoint phase, Cycle& cy) noexcept;
-  // Spindle actions of block c not issued yet (behind a gear change). rt
-  bool actions_left(const Command& c) const noexcept { return next_action_ < c.spindle_actions.size(); }
+  Fault issue_spindle_actions(SyncPoint phase, Cycle& cy) noexcept;
+  // Spindle actions of the block not issued yet (behind a gear change). rt
+  bool actions_left() const noexcept { return next_action_ < actions_.size(); }
   // Checks the waits of `phase`: announces new ones, ends satisfied ones,
   // and returns a timeout or a spindle error. rt
   Fault update_waits(SyncPoint phase, Cycle& cy) noexcept;
@@ -45,7 +49,7 @@ class SyncUnit {
     bool acked = false;
     double deadline_s = 0;  // 0 = no timeout
     SyncPoint when = SyncPoint::before;
-    FunctionKind fn = FunctionKind::none;
+    plc::TechKind fn = plc::TechKind::none;
     std::int32_t fn_number = 0;
     bool announced = false;
     WaitReason reason = WaitReason::plc_ack;  // as last announced
@@ -62,7 +66,9 @@ class SyncUnit {
   // waits (MVS_SLM / MVS_SLP) carried from earlier blocks join them; late
   // waits beyond kMaxLateWaits raise KernelWaitOverflow.
   static constexpr std::size_t kMaxLateWaits = 16;
-  FixedVector<Wait, Command::kMaxOutputs + Command::kMaxSpindleActions + kMaxLateWaits> waits_;
+  FixedVector<Output, kMaxOutputs> outputs_;                // of the block
+  FixedVector<SpindleAction, kMaxSpindleActions> actions_;  // of the block
+  FixedVector<Wait, kMaxOutputs + kMaxSpindleActions + kMaxLateWaits> waits_;
   FixedVector<Wait, kMaxLateWaits> late_;
   std::size_t next_action_ = 0;  // spindle actions of the block issued so far
 };

@@ -6,14 +6,14 @@
 namespace nck::prep {
 namespace {
 
-// Feed moves: a_beschl up, a_brems down; rapid: a_grenz; all capped by a_max.
+// Feed moves: accel_mm_s2 up, decel_mm_s2 down; rapid: rapid_accel_mm_s2; all capped by a_max.
 motion::AxisDynamics feed_dynamics(const config::GearStage& g) {
-  return {g.vb_max, std::min(g.a_beschl, g.a_max), std::min(g.a_brems, g.a_max)};
+  return {g.max_speed_mm_s, std::min(g.accel_mm_s2, g.a_max), std::min(g.decel_mm_s2, g.a_max)};
 }
 
 motion::AxisDynamics rapid_dynamics(const config::GearStage& g) {
-  const double a_rapid = std::min(g.a_grenz, g.a_max);
-  return {std::min(g.vb_eilgang, g.vb_max), a_rapid, a_rapid};
+  const double a_rapid = std::min(g.rapid_accel_mm_s2, g.a_max);
+  return {std::min(g.rapid_mm_s, g.max_speed_mm_s), a_rapid, a_rapid};
 }
 
 }  // namespace
@@ -29,16 +29,16 @@ AxisTable::AxisTable(const config::Machine& machine, const config::ChannelConfig
     feed_dyn_[j] = feed_dynamics(g);
     rapid_dyn_[j] = rapid_dynamics(g);
     accel_cap_mm_s2_[j] = g.a_max;
-    sw_neg_mm_[j] = ax.swe_neg;
-    sw_pos_mm_[j] = ax.swe_pos;
-    home_pos_mm_[j] = g.pos_refpkt;
+    sw_neg_mm_[j] = ax.sw_limit_neg;
+    sw_pos_mm_[j] = ax.sw_limit_pos;
+    home_pos_mm_[j] = g.reference_pos;
     if (idx >= 0 && ax.is_face_turning()) face_axes_ |= 1u << j;
   }
   if (c_axis >= 0 && c_list) make_c_axis(static_cast<std::size_t>(c_axis), *c_list);
 }
 
 void AxisTable::make_c_axis(std::size_t j, const config::AxisConfig& list) {
-  const config::GearStage& g = list.gear(list.def_cax_gear_st);
+  const config::GearStage& g = list.gear(list.cax_gear_stage);
   feed_dyn_[j] = feed_dynamics(g);
   rapid_dyn_[j] = rapid_dynamics(g);
   sw_neg_mm_[j] = -std::numeric_limits<double>::infinity();

@@ -89,7 +89,7 @@ PlanResult CaxUnit::check(const nc::Block& b, const PlanContext& ctx) const {
 }
 
 // The block's #CAX / #FACE / #CYL.
-PlanResult CaxUnit::plan(const nc::Block& b, Command& c, PlanContext& ctx) {
+PlanResult CaxUnit::plan(const nc::Block& b, PlannedCommand& c, PlanContext& ctx) {
   if (!b.hash) return {};
   if (const auto* a = std::get_if<nc::CAxis>(&*b.hash)) {
     if (a->on) return plan_cax_on(b, *a, c, ctx);
@@ -98,7 +98,7 @@ PlanResult CaxUnit::plan(const nc::Block& b, Command& c, PlanContext& ctx) {
     name_.clear();  // the program names it by the list's name again
     if (!on_) return {};
     on_ = false;
-    c.cax = Command::CaxOp::off;
+    c.cax = PlannedCommand::CaxOp::off;
     c.cax_spindle = c_spindle_;
     c.cax_axis = static_cast<std::int8_t>(c_axis_);
     return {};
@@ -108,7 +108,7 @@ PlanResult CaxUnit::plan(const nc::Block& b, Command& c, PlanContext& ctx) {
   return {};
 }
 
-PlanResult CaxUnit::plan_cax_on(const nc::Block& b, const nc::CAxis& a, Command& c, const PlanContext& ctx) {
+PlanResult CaxUnit::plan_cax_on(const nc::Block& b, const nc::CAxis& a, PlannedCommand& c, const PlanContext& ctx) {
   const config::ChannelConfig& channel = ctx.channel;
   if (c_axis_ < 0)
     return block_error(ErrorId::KernelCaxWrongAxisMode, b,
@@ -126,7 +126,7 @@ PlanResult CaxUnit::plan_cax_on(const nc::Block& b, const nc::CAxis& a, Command&
   on_ = true;
   // Also when C-axis mode is on already: the channel answers with C's
   // position, which preparation waits for after every #CAX.
-  c.cax = Command::CaxOp::on;
+  c.cax = PlannedCommand::CaxOp::on;
   c.cax_spindle = c_spindle_;
   c.cax_axis = static_cast<std::int8_t>(c_axis_);
   return {};
@@ -220,7 +220,7 @@ bool CaxUnit::trafo_plane(int& a, int& b) const {
 // C has the radial axis's dynamics (face) or C's scaled to the reference
 // radius (cylinder); on the face the path speed is further limited so that
 // C's angular speed, growing near the centre, stays within C's own.
-void CaxUnit::limit_transformed(Command& c, AxisDynamicsArray dyn, std::size_t n_axes) {
+void CaxUnit::limit_transformed(PlannedCommand& c, AxisDynamicsArray dyn, std::size_t n_axes) {
   if (trafo_.kind == motion::CaxTrafoKind::none || c.kind != CommandKind::motion) return;
   c.trafo = trafo_;
   const auto jc = static_cast<std::size_t>(c_axis_);
@@ -248,10 +248,10 @@ namespace {
 
 // The motion part of `piece` as a command of `block`: the first carries the
 // block's functions and events, the following ones only their motion.
-Command as_part_of(const Command& block, const Command& piece, bool first) {
-  Command c = block;
+PlannedCommand as_part_of(const PlannedCommand& block, const PlannedCommand& piece, bool first) {
+  PlannedCommand c = block;
   if (!first) {
-    c = Command{};
+    c = PlannedCommand{};
     c.file_id = block.file_id;
     c.line = block.line;
     c.emit_block_event = false;
@@ -275,7 +275,7 @@ Command as_part_of(const Command& block, const Command& piece, bool first) {
 // there and C turns half a turn between the halves. The mill lets X pass
 // through 0 instead (docs/decisions.md). At most three commands: line to
 // the centre, turn, line from it; the first carries the block's functions.
-void CaxUnit::face_centre_commands(const Command& c, PlannedBlock& out, const PlanContext& ctx) {
+void CaxUnit::face_centre_commands(const PlannedCommand& c, PlannedBlock& out, const PlanContext& ctx) {
   const motion::CaxTrafo& t = c.trafo;
   const auto jx = static_cast<std::size_t>(t.radial), jc = static_cast<std::size_t>(t.c);
   const bool lathe = ctx.channel.cax_face_id == 1;
@@ -306,7 +306,7 @@ void CaxUnit::face_centre_commands(const Command& c, PlannedBlock& out, const Pl
       if (std::abs(to - c_deg) > 1e-9) (void)out.push_back(as_part_of(c, face_turn(c, a, c_deg, to, ctx), out.empty()));
       c_deg = to;
     }
-    Command piece = c;
+    PlannedCommand piece = c;
     if (lines.size() > 1)
       if (auto s = motion::make_line(a, b, ctx.n_axes)) piece.segment = *s;  // same direction: same limits
     c_deg = motion::face_end_c_deg(t, piece.segment, c_deg);
@@ -317,14 +317,14 @@ void CaxUnit::face_centre_commands(const Command& c, PlannedBlock& out, const Pl
 
 // C alone turning from_deg -> to_deg with the tool at the face's centre (a
 // machine move, no transformation), at C's own limits.
-Command CaxUnit::face_turn(const Command& like, const motion::AxisVector& centre_cart, double from_deg,
+PlannedCommand CaxUnit::face_turn(const PlannedCommand& like, const motion::AxisVector& centre_cart, double from_deg,
                            double to_deg, const PlanContext& ctx) const {
   const auto jx = static_cast<std::size_t>(like.trafo.radial), jc = static_cast<std::size_t>(like.trafo.c);
   motion::AxisVector a = centre_cart, b = centre_cart;
   a[jx] = b[jx] = 0;
   a[jc] = from_deg;
   b[jc] = to_deg;
-  Command turn = like;
+  PlannedCommand turn = like;
   turn.kind = CommandKind::motion;
   turn.trafo = motion::CaxTrafo{};
   turn.mapped = false;

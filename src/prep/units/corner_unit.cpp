@@ -33,7 +33,7 @@ BlendAxes CornerUnit::blend_axes(const AxisTable& axes) const {
 }
 
 // The unit direction of c's path at its start or end, in machine axes.
-motion::AxisVector CornerUnit::machine_tangent(const Command& c, bool at_end, std::size_t n_axes) const {
+motion::AxisVector CornerUnit::machine_tangent(const PlannedCommand& c, bool at_end, std::size_t n_axes) const {
   motion::AxisVector t{};
   c.segment.tangent_at(at_end ? c.segment.length() : 0.0, t);
   if (!c.mapped) return t;
@@ -50,7 +50,7 @@ motion::AxisVector CornerUnit::machine_tangent(const Command& c, bool at_end, st
 // velocity by at most a_max * dt between them (a reversal, a sharp turn
 // start gently instead of standing still a cycle). Unknown previous
 // motion: 0, one cycle at standstill.
-double CornerUnit::start_acceleration(const Command& c, const PlanContext& ctx) const {
+double CornerUnit::start_acceleration(const PlannedCommand& c, const PlanContext& ctx) const {
   if (!last_.valid) return 0.0;
   const motion::AxisVector t = machine_tangent(c, false, ctx.n_axes);
   double a = c.limits.a_acc_mm_s2;
@@ -68,7 +68,7 @@ double CornerUnit::start_acceleration(const Command& c, const PlanContext& ctx) 
 // from the previous motion, and neither block's feed exceeded — a lower F
 // is reached before its block starts, a higher one is taken up after the
 // transition (the ISG rule).
-void CornerUnit::note_transition(const nc::Block& b, Command& c, bool rapid, const PlanContext& ctx) {
+void CornerUnit::note_transition(const nc::Block& b, PlannedCommand& c, bool rapid, const PlanContext& ctx) {
   const config::ChannelConfig& channel = ctx.channel;
   c.exact_stop = b.g_nonmodal.has(nc::GCode::g60) || b.modal.exact_stop ||
                  (rapid && channel.exact_stop_after_g00);

@@ -29,7 +29,7 @@ CouplingUnit::CouplingUnit(const config::ChannelConfig& channel, const std::vect
       groups_(channel, configured_main_spindle_),
       kernel_spindles_(spindles) {}
 
-PlanResult CouplingUnit::plan(const nc::Block& b, Command& c, PlanContext& ctx) {
+PlanResult CouplingUnit::plan(const nc::Block& b, PlannedCommand& c, PlanContext& ctx) {
   if (b.hash)
     if (auto r = plan_hash(b, c, ctx); !r) return r;
   // A slave is moved by its master only.
@@ -46,7 +46,7 @@ PlanResult CouplingUnit::plan(const nc::Block& b, Command& c, PlanContext& ctx) 
 }
 
 // The # commands: definitions, enabling, disabling, and #MAIN SPINDLE's rule.
-PlanResult CouplingUnit::plan_hash(const nc::Block& b, Command& c, PlanContext& ctx) {
+PlanResult CouplingUnit::plan_hash(const nc::Block& b, PlannedCommand& c, PlanContext& ctx) {
   const config::ChannelConfig& channel = ctx.channel;
   const nc::HashCommand& h = *b.hash;
   if (const auto* s = std::get_if<nc::SetAxLink>(&h)) {

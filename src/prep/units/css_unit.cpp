@@ -9,7 +9,7 @@
 
 namespace nck::prep {
 
-PlanResult CssUnit::plan(const nc::Block& b, Command& c, const PlanContext& ctx, const MainSpindle& main,
+PlanResult CssUnit::plan(const nc::Block& b, PlannedCommand& c, const PlanContext& ctx, const MainSpindle& main,
                          double vb_max_rpm) {
   const nc::ModalState& m = b.modal;
   if (m.speed_mode != nc::SpeedMode::g96 || !(m.css_m_min > 0)) return {};

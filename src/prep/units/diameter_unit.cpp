@@ -14,8 +14,8 @@ DiameterUnit::DiameterUnit(const config::Machine& machine, const config::Channel
     if (idx < 0) continue;
     const config::AxisConfig& ax = machine.axes[static_cast<std::size_t>(idx)];
     if (!ax.is_face_turning()) continue;
-    if (ax.durchm_prog_abs) abs_axes_ |= 1u << j;
-    if (ax.durchm_prog_rel) rel_axes_ |= 1u << j;
+    if (ax.diameter_prog_abs) abs_axes_ |= 1u << j;
+    if (ax.diameter_prog_rel) rel_axes_ |= 1u << j;
   }
 }
 
@@ -30,7 +30,7 @@ double DiameterUnit::programmed_radius(const nc::Block& b, std::size_t j) const 
 }
 
 // G51 or G52 programmed: exactly one face-turning axis in the plane.
-PlanResult DiameterUnit::check_switch(const nc::Block& b, Command& c, const PlanContext& ctx) const {
+PlanResult DiameterUnit::check_switch(const nc::Block& b, PlannedCommand& c, const PlanContext& ctx) const {
   const PlaneAxes pa = plane_axes(b.modal.plane);
   const std::uint32_t face_axes = ctx.axes.face_axes();
   int in_plane = -1, count = 0;
@@ -55,7 +55,7 @@ PlanResult DiameterUnit::check_switch(const nc::Block& b, Command& c, const Plan
   return {};
 }
 
-PlanResult DiameterUnit::check(const nc::Block& b, Command& c, const PlanContext& ctx) {
+PlanResult DiameterUnit::check(const nc::Block& b, PlannedCommand& c, const PlanContext& ctx) {
   const bool switched = b.modal.diameter != on_;
   on_ = b.modal.diameter;
   if (switched)

@@ -41,19 +41,20 @@ std::string override_range(const nc::DistCtrl& d) {
 
 }  // namespace
 
-PlanResult DistUnit::plan_source(const nc::Block& b, const nc::DistCtrl& d, Command& c) {
+PlanResult DistUnit::plan_source(const nc::Block& b, const nc::DistCtrl& d, PlannedCommand& c) {
   if (d.sensor_source) {
-    std::int8_t source = -1;
-    if (*d.sensor_source == "VARIABLE") source = 1;
-    else if (*d.sensor_source == "SIMULATION" || *d.sensor_source == "SENSOR") source = 0;
-    if (source < 0)
+    using Source = kernel::DistChange::Source;
+    std::optional<Source> source;
+    if (*d.sensor_source == "VARIABLE") source = Source::variable;
+    else if (*d.sensor_source == "SIMULATION" || *d.sensor_source == "SENSOR") source = Source::machine;
+    if (!source)
       return block_error(ErrorId::DistCtrlSourceNotAllowed, b,
                          fmt::format("SENSOR_SOURCE={} is not available for 3D distance control: "
                                      "SIMULATION or VARIABLE", *d.sensor_source));
-    if (on_ && source != source_)
+    if (on_ && *source != source_)
       return block_error(ErrorId::DistCtrlSourceChange, b,
                          fmt::format("SENSOR_SOURCE={} while distance control is on", *d.sensor_source));
-    source_ = source;
+    source_ = *source;
     c.dist_source = source;
   }
   if (d.sensor_var) {
@@ -66,7 +67,7 @@ PlanResult DistUnit::plan_source(const nc::Block& b, const nc::DistCtrl& d, Comm
   return {};
 }
 
-PlanResult DistUnit::plan(const nc::Block& b, Command& c, const PlanContext& ctx) {
+PlanResult DistUnit::plan(const nc::Block& b, PlannedCommand& c, const PlanContext& ctx) {
   const auto* d = b.hash ? std::get_if<nc::DistCtrl>(&*b.hash) : nullptr;
   if (!d) return {};
   if (std::string why = override_range(*d); !why.empty()) return block_error(ErrorId::DistCtrlOverride, b, why);
@@ -78,7 +79,7 @@ PlanResult DistUnit::plan(const nc::Block& b, Command& c, const PlanContext& ctx
     case nc::DistCtrlOp::off: w.op = distctrl::Op::off; break;
     case nc::DistCtrlOp::settings: w.op = distctrl::Op::none; break;
   }
-  if (w.op == distctrl::Op::on && source_ == 1 && !d->sensor_var && !var_known_)
+  if (w.op == distctrl::Op::on && source_ == kernel::DistChange::Source::variable && !d->sensor_var && !var_known_)
     return block_error(ErrorId::DistCtrlBadVariable, b, "SENSOR_SOURCE=VARIABLE needs SENSOR_VAR=<variable>");
   if (d->sensor_var) var_known_ = true;
   w.const_dist = d->const_dist;

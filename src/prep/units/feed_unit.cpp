@@ -10,7 +10,7 @@
 namespace nck::prep {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr PathSpeed kCoupled{PathSpeed::Kind::axes_max, 0};
 
 bool tapping(nc::Motion m) {
   return m == nc::Motion::tap || m == nc::Motion::tap_rigid || m == nc::Motion::tap_retract;
@@ -21,7 +21,7 @@ bool tapping(nc::Motion m) {
 FeedUnit::FeedUnit(const config::ChannelConfig& channel, const std::vector<std::int8_t>& spindles)
     : main_(MainSpindle::find(channel, spindles)) {}
 
-PlanResult FeedUnit::plan_block(const nc::Block& b, Command& c, const PlanContext& ctx,
+PlanResult FeedUnit::plan_block(const nc::Block& b, PlannedCommand& c, const PlanContext& ctx,
                                 const PlannedSpindle& main) {
   const nc::ModalState& m = b.modal;
   const bool needs_spindle = m.feed_mode == nc::FeedMode::g95 || m.speed_mode == nc::SpeedMode::g96 ||
@@ -42,7 +42,7 @@ PlanResult FeedUnit::plan_block(const nc::Block& b, Command& c, const PlanContex
     a.rpm = s_rpm > 0 ? s_rpm : main_.vb_max_rpm(ctx.machine, ctx.channel, main.gear_stage) / 10;
     a.sync = SyncPoint::before;
     a.wait = SpindleWait::in_position;
-    a.fn = 'M';
+    a.fn = TechKind::m;
     a.fn_number = 19;
     if (!c.spindle_actions.push_back(a))
       return block_error(ErrorId::KernelSpindleTooManyActions, b, "too many spindle actions with G331");
@@ -77,9 +77,9 @@ PlanResult FeedUnit::thread_link(const nc::Block& b, const motion::AxisVector& s
   return {};
 }
 
-std::expected<double, Diagnostic> FeedUnit::plan_feed(const nc::Block& b, const motion::AxisVector& start,
+std::expected<PathSpeed, Diagnostic> FeedUnit::plan_feed(const nc::Block& b, const motion::AxisVector& start,
                                                       const motion::AxisVector& target, double length_mm,
-                                                      Command& c, const PlanContext& ctx,
+                                                      PlannedCommand& c, const PlanContext& ctx,
                                                       const PlannedSpindle& main) {
   const nc::ModalState& m = b.modal;
   const double s_rpm = main.signed_speed_rpm;  // the main spindle's last S
@@ -87,7 +87,7 @@ std::expected<double, Diagnostic> FeedUnit::plan_feed(const nc::Block& b, const 
   f.spindle = main_.kernel;
   if (m.motion == nc::Motion::thread) {
     if (auto r = thread_link(b, start, target, length_mm, f, ctx); !r) return std::unexpected(r.error());
-    return kInf;
+    return kCoupled;
   }
   if (m.motion == nc::Motion::tap) {
     // G63: F = S x pitch, so the pitch is F / S; the spindle follows the path.
@@ -97,14 +97,14 @@ std::expected<double, Diagnostic> FeedUnit::plan_feed(const nc::Block& b, const 
     f.mm_per_rev = m.feed_mm_min / std::fabs(s_rpm);
     f.direction = s_rpm < 0 ? -1 : 1;
     f.spindle_max_rpm = main_.axis_vb_max_rpm(ctx.machine, ctx.channel);
-    return m.feed_mm_min / 60.0;
+    return PathSpeed{PathSpeed::Kind::programmed, m.feed_mm_min / 60.0};
   }
   if (m.motion == nc::Motion::tap_rigid || m.motion == nc::Motion::tap_retract) {
     if (s_rpm == 0) return block_error(ErrorId::NcTapSpeedZero, b, "G331/G332 need a spindle speed S");
     // The pitch's sign picks the thread hand; G332 turns the other way.
     f.mm_per_rev = std::fabs(m.tap_pitch_mm);
     f.direction = (m.tap_pitch_mm < 0 ? -1 : 1) * (m.motion == nc::Motion::tap_retract ? -1 : 1);
-    return kernel::link_velocity_mm_s(s_rpm, f.mm_per_rev);
+    return PathSpeed{PathSpeed::Kind::programmed, kernel::link_velocity_mm_s(s_rpm, f.mm_per_rev)};
   }
   if (m.feed_mode == nc::FeedMode::g95) {
     if (!(m.feed_mm_rev > 0)) return block_error(ErrorId::KernelNoFeed, b, "F is 0: program a feed in mm/rev (G95)");
@@ -118,23 +118,23 @@ std::expected<double, Diagnostic> FeedUnit::plan_feed(const nc::Block& b, const 
       f.use_programmed = true;
       f.programmed_rpm = rpm;
     }
-    return kInf;
+    return kCoupled;
   }
   if (m.feed_mode == nc::FeedMode::g194) {
-    // G194: F % of the path's maximum speed (the axes' vb_max); set by the planner.
+    // G194: F % of the path's maximum speed (the axes' max_speed_mm_s); set by the planner.
     if (!(m.feed_pct > 0))
       return block_error(ErrorId::KernelNoFeed, b, "F is 0: program a weighting in % (G194)");
-    return -m.feed_pct / 100.0;  // a share of v_max, negative as a mark
+    return PathSpeed{PathSpeed::Kind::share_of_max, m.feed_pct / 100.0};
   }
   if (m.feed_mode == nc::FeedMode::g93) {
     // G93: F is the block's time in seconds.
     if (!(m.feed_time_s > 0))
       return block_error(ErrorId::KernelNoFeed, b, "F is 0: program the block time in s (G93)");
-    return length_mm / m.feed_time_s;
+    return PathSpeed{PathSpeed::Kind::programmed, length_mm / m.feed_time_s};
   }
   // G94: F in mm/min.
   if (!(m.feed_mm_min > 0)) return block_error(ErrorId::KernelNoFeed, b, "F is 0: program a feed in mm/min");
-  return m.feed_mm_min / 60.0;
+  return PathSpeed{PathSpeed::Kind::programmed, m.feed_mm_min / 60.0};
 }
 
 }  // namespace nck::prep

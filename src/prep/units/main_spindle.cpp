@@ -28,12 +28,12 @@ MainSpindle MainSpindle::find(const config::ChannelConfig& channel, const std::v
 double MainSpindle::vb_max_rpm(const config::Machine& machine, const config::ChannelConfig& channel,
                                std::uint32_t stage) const {
   const config::AxisConfig* a = axis_list(machine, channel, list_index);
-  return a ? a->gear(stage).vb_max / 6.0 : 0;  // deg/s -> rpm
+  return a ? a->gear(stage).max_speed_mm_s / 6.0 : 0;  // deg/s -> rpm
 }
 
 double MainSpindle::axis_vb_max_rpm(const config::Machine& machine, const config::ChannelConfig& channel) const {
   const config::AxisConfig* a = axis_list(machine, channel, list_index);
-  return a ? a->gear(a->def_cax_gear_st).vb_max / 6.0 : 0;  // deg/s -> rpm
+  return a ? a->gear(a->cax_gear_stage).max_speed_mm_s / 6.0 : 0;  // deg/s -> rpm
 }
 
 }  // namespace nck::prep

@@ -3,7 +3,7 @@
 
 namespace nck::prep {
 
-void ManualUnit::plan(const nc::Block& b, Command& c, std::size_t n_axes) const {
+void ManualUnit::plan(const nc::Block& b, PlannedCommand& c, std::size_t n_axes) const {
   c.get_manual_offsets = b.hash && std::holds_alternative<nc::GetManualOffsets>(*b.hash);
   if (!b.manual_g) return;
   // With G201/G202 the axis words select the axes.
@@ -24,7 +24,7 @@ void ManualUnit::moved(const nc::Block& b, frames::SuppressMask mask, const Plan
 }
 
 void ManualUnit::stamp(PlannedBlock& out) const {
-  for (Command& cmd : out) cmd.manual_offset_axes = axes_;
+  for (PlannedCommand& cmd : out) cmd.manual_offset_axes = axes_;
 }
 
 }  // namespace nck::prep

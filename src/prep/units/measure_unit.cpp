@@ -6,19 +6,8 @@
 
 namespace nck::prep {
 
-MeasureUnit::MeasureUnit(const config::Machine& machine, const config::ChannelConfig& channel,
-                         std::size_t n_axes) {
-  for (std::size_t j = 0; j < n_axes; ++j)
-    if (!machine.sim.probe_axis.empty() && channel.axes[j].name == machine.sim.probe_axis) {
-      probe_axis_ = static_cast<std::int8_t>(j);
-      probe_pos_mm_ = machine.sim.probe_position_mm;
-    }
-}
-
-void MeasureUnit::start_run(Command& c, const PlanContext& ctx) {
+void MeasureUnit::start_run(PlannedCommand& c, const PlanContext& ctx) {
   c.measure = true;
-  c.probe_axis = probe_axis_;
-  c.probe_pos_mm = probe_pos_mm_;
   target_pcs_ = ctx.planned.pcs;
 }
 
@@ -42,7 +31,7 @@ std::vector<std::pair<std::string, double>> MeasureUnit::take_measurement(const 
   return vars;
 }
 
-PlanResult MeasureUnit::apply_offset(const nc::Block& b, Command& c, PlanContext& ctx) const {
+PlanResult MeasureUnit::apply_offset(const nc::Block& b, PlannedCommand& c, PlanContext& ctx) const {
   const bool g101 = b.g_nonmodal.has(nc::GCode::g101);
   const bool g102 = b.g_nonmodal.has(nc::GCode::g102);
   if (!g101 && !g102) return {};

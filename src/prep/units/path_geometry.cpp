@@ -105,7 +105,7 @@ std::expected<motion::Segment, Diagnostic> arc_segment(const nc::Block& b, const
   return *seg;
 }
 
-std::expected<PlannedBlock, Diagnostic> plan_homing(const nc::Block& b, const Command& first, PlanContext& ctx) {
+std::expected<PlannedBlock, Diagnostic> plan_homing(const nc::Block& b, const PlannedCommand& first, PlanContext& ctx) {
   PlannedBlock out;
   AxisArray order{};
   std::vector<double> groups;
@@ -121,7 +121,7 @@ std::expected<PlannedBlock, Diagnostic> plan_homing(const nc::Block& b, const Co
                                    out.capacity()));
   motion::AxisVector& mcs = ctx.planned.mcs;
   const AxisDynamicsArray& rapid = ctx.axes.dynamics(true);
-  Command c = first;
+  PlannedCommand c = first;
   for (double g : groups) {
     motion::AxisVector target = mcs;
     for (std::size_t j = 0; j < ctx.n_axes; ++j)
@@ -137,7 +137,7 @@ std::expected<PlannedBlock, Diagnostic> plan_homing(const nc::Block& b, const Co
     }
     mcs = target;
     (void)out.push_back(c);
-    c = Command{};  // the following groups: motion only
+    c = PlannedCommand{};  // the following groups: motion only
     c.file_id = b.file_id;
     c.line = b.line;
     c.emit_block_event = false;

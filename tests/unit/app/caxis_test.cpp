@@ -103,12 +103,12 @@ TEST(CAxis, MillExampleMachinePositionsOnTheFace) {
     const long next = std::next(x.start.find(n))->first;
     return x.start.at(next);
   };
-  // C moves with S1's own gear-stage dynamics (def_cax_gear_st 1): G0 C90
-  // at vb_eilgang 3000 deg/s and a_grenz 20000 deg/s^2 never reaches full
+  // C moves with S1's own gear-stage dynamics (cax_gear_stage 1): G0 C90
+  // at rapid_mm_s 3000 deg/s and rapid_accel_mm_s2 20000 deg/s^2 never reaches full
   // speed (that takes 225 deg): 2 * sqrt(45 / (20000 / 2)) = 0.134 s.
   EXPECT_NEAR(static_cast<double>(x.start.at(50) - x.start.at(40)) * 1e-3, 2.0 * std::sqrt(45.0 / 10000.0), 0.003);
   // N50: C does not count for the path length: 20 mm of X at F600
-  // (10 mm/s) take 2 s plus X's ramps (a_beschl 2500: 4 ms).
+  // (10 mm/s) take 2 s plus X's ramps (accel_mm_s2 2500: 4 ms).
   EXPECT_NEAR(static_cast<double>(x.start.at(60) - x.start.at(50)) * 1e-3, 2.004, 0.003);
   // N40 G0 C90; N50 G1 X20 C180 (C in degrees, the spindle follows).
   EXPECT_NEAR(t.at(end_of(40), "C"), 90.0, 1e-6);
@@ -175,7 +175,7 @@ TEST(CAxis, SpindleReportsAxisModeAndBack) {
 TEST(CAxis, FaceSpeedNearTheCentreKeepsCWithinItsDynamics) {
   // A line passing the centre at 0.05 mm: C turns 180 deg there, at
   // 1/0.05 rad = 1145.9 deg per mm of path. At F6000 (100 mm/s) C would
-  // need 114592 deg/s, more than S1's vb_max (72000 deg/s); the path slows
+  // need 114592 deg/s, more than S1's max_speed_mm_s (72000 deg/s); the path slows
   // so that C turns at most 45 deg per 1 ms cycle (docs/decisions.md), and
   // the machine point stays on the programmed line.
   const auto dir = temp_dir("cax_near");
@@ -354,7 +354,7 @@ TEST(CAxis, ErrorsWithTheirIds) {
 }
 
 TEST(CAxis, WrongAxisModeAndMissingTrafoId) {
-  // Without achs_mode 0x0204 the spindle cannot become C: 21184.
+  // Without axis_mode 0x0204 the spindle cannot become C: 21184.
   {
     const auto dir = temp_dir("cax_mode");
     const auto m = replaced_in_example("cax_mode_m", "s1.lis", "0x00000204", "0x00000004");

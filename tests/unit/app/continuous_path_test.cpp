@@ -1,6 +1,6 @@
 // Continuous path through `nck run` (issue 12): the path keeps its speed
 // through tangent transitions, stops exactly where G60/G360 ask, and no
-// axis ever exceeds its velocity or acceleration (mill: vb_max 500 mm/s,
+// axis ever exceeds its velocity or acceleration (mill: max_speed_mm_s 500 mm/s,
 // a_max X/Y 3000, Z 2500 mm/s^2, 1 ms cycle).
 #include <gtest/gtest.h>
 
@@ -206,7 +206,7 @@ double distance_to_trace(const Trace& tr, const std::array<double, 3>& q) {
 }
 
 // Runs `count` random programs (with `prelude` after the first block) and
-// checks every cycle: no axis beyond vb_max or a_max, every programmed end
+// checks every cycle: no axis beyond max_speed_mm_s or a_max, every programmed end
 // point within end_tol_mm of the trace, and the trace no shorter than the
 // programmed path minus max_short_per_block_mm per block.
 void check_random_programs(const std::string& prelude, double end_tol_mm, double max_short_per_block_mm) {

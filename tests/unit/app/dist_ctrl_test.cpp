@@ -298,7 +298,7 @@ TEST(DistCtrlErrors, MaxDeviationIs930501) {
 }
 
 TEST(DistCtrlErrors, SoftwareLimitIs930502) {
-  // Z's swe_pos 3 mm: programmed 1.5 plus more than 1.5 mm of offset is out.
+  // Z's sw_limit_pos 3 mm: programmed 1.5 plus more than 1.5 mm of offset is out.
   const Case c = run_cutter("dist_swe", "G0 X0 Z1.5\n#DIST CTRL ON [SURFACE SET_POS=0]\nG1 X70 F6000\nM30\n",
                             "z.lis", "kenngr.swe_pos 30000");
   expect_error(c, 930502, 3);

@@ -118,7 +118,7 @@ TEST(SpindlePath, G93TakesFAsTheBlockTime) {
   EXPECT_NEAR(r.line_t(4) - r.line_t(3), 2.0, 0.01);
 }
 
-// G194 F25: a quarter of Z's vb_max (500 mm/s) = 125 mm/s; F100 is refused.
+// G194 F25: a quarter of Z's max_speed_mm_s (500 mm/s) = 125 mm/s; F100 is refused.
 TEST(SpindlePath, G194WeightsTheAxisMaximum) {
   const PathRun r = run_text("lathe", "G18 G90\nG0 X10 Z2\nG194 G1 Z-398 F25\nM30\n", "g194");
   ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;

@@ -123,7 +123,7 @@ TEST(SpindleRun, ToolMinimumSpeedLimitsOnlyEndlessTurning) {
 }
 
 // Item 6: a PLC spindle over the channel HLI has no axis list, so no NC
-// speed limit: 700 rpm stays 700 rpm (not the default vb_max 33.3 rpm).
+// speed limit: 700 rpm stays 700 rpm (not the default max_speed_mm_s 33.3 rpm).
 TEST(SpindleRun, ChannelPlcSpindleIsNotClampedToTheDefaultVbMax) {
   const auto m = mill_with("plcnolimit", "channel1.lis",
                            "spdl_anzahl 3\nspindel[2].bezeichnung S3\nspindel[2].log_achs_nr 9\n"

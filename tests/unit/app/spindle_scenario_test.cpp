@@ -68,7 +68,7 @@ TEST(SpindleScenario, OverrideAndG167FollowTheSeedExample) {
   EXPECT_DOUBLE_EQ(s1[2], 1500.0);
 }
 
-// FCT-S1 2.5.2: s_synch MVS_SVS, m3_synch MOS.
+// FCT-S1 2.5.2: s_sync MVS_SVS, m3_sync MOS.
 std::filesystem::path sync_example_machine(const std::string& name) {
   return patched("mill", name, "channel1.lis",
                  "spindel[0].s_synch MVS_SVS\nspindel[0].m3_synch MOS\n");
@@ -257,7 +257,7 @@ TEST(SpindleScenario, ToolDynamicsLimitTheNextStart) {
   for (const json& e : of_kind(r.events, "spindle"))
     if (e["mode"] == "rotate") rpm.push_back(e["rpm"]);
   ASSERT_EQ(rpm.size(), 2u);
-  EXPECT_DOUBLE_EQ(rpm[0], 500.0);   // the tool's vb_max
+  EXPECT_DOUBLE_EQ(rpm[0], 500.0);   // the tool's max_speed_mm_s
   EXPECT_DOUBLE_EQ(rpm[1], 1000.0);  // back to the axis data
 }
 

@@ -1,5 +1,5 @@
 // Every synchronisation type of FCT-S1 2.5 through `nck run`: the mill's S1
-// gets the type as m3_synch, and the events show when M3 is executed and
+// gets the type as m3_sync, and the events show when M3 is executed and
 // where the path waits for speed reached.
 #include <gtest/gtest.h>
 
@@ -217,7 +217,7 @@ TEST(SyncTypes, SixteenLateWaitsFit) {
 
 }  // namespace
 
-// FCT-S1 2.5.2, second example, as written (s_synch 0x2, m3_synch 0x1, no S
+// FCT-S1 2.5.2, second example, as written (s_sync 0x2, m3_sync 0x1, no S
 // before N10): M3 selects the direction at 0 rpm (facts B1) and is no error;
 // N20's S500 turns the spindle in the M3 direction and the path waits for
 // the speed before N20's motion, N30 waits for 100 rpm before its motion.

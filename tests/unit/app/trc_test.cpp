@@ -60,7 +60,7 @@ TEST(Trc, MillContoursFollowTheToolCentrePathsWorkedOutByHand) {
 }
 
 // The per-axis limits of the continuous path hold on compensated paths,
-// inserted corner arcs included (mill: vb_max 500 mm/s, a_max X/Y 3000 mm/s^2).
+// inserted corner arcs included (mill: max_speed_mm_s 500 mm/s, a_max X/Y 3000 mm/s^2).
 TEST(Trc, AxisLimitsHoldOnTheCompensatedPath) {
   const TrcRun r = run_text("mill", "trc-limits",
                          "N10 G17 G90 G26 D1\nN20 G0 X-20 Y-20\n"

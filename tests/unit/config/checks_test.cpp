@@ -122,8 +122,8 @@ TEST(Checks, EncoderZeroIsWarnedAndCorrected) {
   expect_one(f, r, {ErrorId::ConfigWegaufzZero, "s1.lis", 3});
   expect_one(f, r, {ErrorId::ConfigWegaufnZero, "s1.lis", 4});
   EXPECT_FALSE(r.diagnostics.has_errors()) << dump(r.diagnostics);
-  EXPECT_EQ(r.machine->axes[1].gear(1).wegaufz, 1u);
-  EXPECT_EQ(r.machine->axes[1].gear(2).wegaufn, 1u);
+  EXPECT_EQ(r.machine->axes[1].gear(1).encoder_ratio_num, 1u);
+  EXPECT_EQ(r.machine->axes[1].gear(2).encoder_ratio_denom, 1u);
 }
 
 TEST(Checks, DistanceControlNeedsAMax) {

@@ -22,7 +22,7 @@ TEST(LoadExamples, MillIsCleanAndConverted) {
   const Machine& m = *r.machine;
   ASSERT_EQ(m.channels.size(), 1u);
   const auto& c = m.channels[0];
-  // X Y Z and the main spindle S1 as C axis (achs_mode 0x0204, #CAX).
+  // X Y Z and the main spindle S1 as C axis (axis_mode 0x0204, #CAX).
   ASSERT_EQ(c.axes.size(), 4u);
   EXPECT_EQ(c.axes[2].name, "Z");
   EXPECT_EQ(c.axes[2].axis_index, 2);
@@ -34,17 +34,17 @@ TEST(LoadExamples, MillIsCleanAndConverted) {
   ASSERT_EQ(c.spindles.size(), 2u);
   EXPECT_EQ(c.spindles[0].name, "S1");
   EXPECT_EQ(c.spindles[0].axis_index, 3);
-  EXPECT_EQ(c.spindles[0].m3_synch, sync::PLC_INFO | sync::MVS_SVS);
-  EXPECT_EQ(c.spindles[0].m4_synch, 0x00020004u);
-  EXPECT_DOUBLE_EQ(c.spindles[0].m3_prozess_zeit_s, 2.0);
+  EXPECT_EQ(c.spindles[0].m3_sync, sync::PLC_INFO | sync::MVS_SVS);
+  EXPECT_EQ(c.spindles[0].m4_sync, 0x00020004u);
+  EXPECT_DOUBLE_EQ(c.spindles[0].m3_ack_timeout_s, 2.0);
   EXPECT_EQ(c.main_spindle_ax_nr, 4u);
   const AxisConfig& x = m.axes[0];
-  EXPECT_DOUBLE_EQ(x.gear(1).vb_max, 500.0);  // 500000 um/s = 30 m/min
+  EXPECT_DOUBLE_EQ(x.gear(1).max_speed_mm_s, 500.0);  // 500000 um/s = 30 m/min
   EXPECT_DOUBLE_EQ(x.gear(1).a_max, 3000.0);
-  EXPECT_DOUBLE_EQ(x.swe_pos, 500.0);
+  EXPECT_DOUBLE_EQ(x.sw_limit_pos, 500.0);
   const AxisConfig& s1 = m.axes[3];
   EXPECT_TRUE(s1.is_spindle());
-  EXPECT_DOUBLE_EQ(s1.gear(1).vb_max, 72000.0);  // 12000 rpm in deg/s
+  EXPECT_DOUBLE_EQ(s1.gear(1).max_speed_mm_s, 72000.0);  // 12000 rpm in deg/s
   EXPECT_TRUE(c.dist_ctrl_enabled());
   EXPECT_DOUBLE_EQ(c.dist_ctrl.a_max_mm_s2, 500.0);
   EXPECT_DOUBLE_EQ(c.dist_ctrl.max_deviation_mm, 5.0);
@@ -55,7 +55,7 @@ TEST(LoadExamples, MillIsCleanAndConverted) {
   EXPECT_EQ(c.default_link_group.pairs[0].master, "S1");
   const auto& data = m.channel_data[0];
   ASSERT_GE(data.tools.size(), 6u);
-  EXPECT_DOUBLE_EQ(data.tools[1].laenge_mm, 100.0);
+  EXPECT_DOUBLE_EQ(data.tools[1].length_mm, 100.0);
   EXPECT_DOUBLE_EQ(data.tools[5].vb_max_rpm, 500.0);
   EXPECT_DOUBLE_EQ(data.zero.versch[1][0], 100.0);   // G54 X
   EXPECT_DOUBLE_EQ(data.zero.versch[2][1], 100.0);   // G55 Y
@@ -81,10 +81,10 @@ TEST(LoadExamples, LatheHasThreeGearStages) {
   const AxisConfig& a = r.machine->axes[static_cast<std::size_t>(s.axis_index)];
   EXPECT_TRUE(a.gear(2).given);
   EXPECT_FALSE(a.gear(4).given);
-  EXPECT_DOUBLE_EQ(a.gear(1).vb_max, 4800.0);  // 800 rpm
+  EXPECT_DOUBLE_EQ(a.gear(1).max_speed_mm_s, 4800.0);  // 800 rpm
   EXPECT_DOUBLE_EQ(a.gear(2).gear_change_pos_deg, 45.0);
   EXPECT_EQ(a.gear(3).curve.type, 2u);
-  EXPECT_DOUBLE_EQ(a.gear(3).curve.n_grenz_deg_s, 12000.0);
+  EXPECT_DOUBLE_EQ(a.gear(3).curve.limit_speed_deg_s, 12000.0);
   EXPECT_DOUBLE_EQ(a.gear(3).curve.b3, -1.92901234e-10);
   EXPECT_EQ(c.m_synch[41], sync::MVS_SVS);
 }
@@ -104,7 +104,7 @@ TEST(LoadExamples, TwoChannelsShareSpindles) {
   EXPECT_EQ(m.channels[1].axes[0].log_axis_nr, 4u);
   const AxisConfig* s3 = m.axis_by_log_nr(30);
   ASSERT_NE(s3, nullptr);
-  EXPECT_EQ(s3->achs_mode, 0x40000u);  // PLC spindle written in the seed's short form
+  EXPECT_EQ(s3->axis_mode, 0x40000u);  // PLC spindle written in the seed's short form
   EXPECT_TRUE(s3->is_spindle());
 }
 
@@ -115,9 +115,9 @@ TEST(Load, MinimalMachineDefaults) {
   EXPECT_TRUE(r.ok()) << dump(r.diagnostics);
   const auto& m = *r.machine;
   EXPECT_EQ(m.cycle_time_us, 1000u);
-  EXPECT_EQ(m.channels[0].spindles[0].m3_synch, sync::MVS_SVS);
-  EXPECT_DOUBLE_EQ(m.axes[0].gear(1).vb_max, 200.0);
-  EXPECT_DOUBLE_EQ(m.axes[0].gear(1).kv_1_s, 10.0);
+  EXPECT_EQ(m.channels[0].spindles[0].m3_sync, sync::MVS_SVS);
+  EXPECT_DOUBLE_EQ(m.axes[0].gear(1).max_speed_mm_s, 200.0);
+  EXPECT_DOUBLE_EQ(m.axes[0].gear(1).position_gain_1_s, 10.0);
 }
 
 TEST(Load, MissingStartupIsFatal910001) {
@@ -148,7 +148,7 @@ TEST(Load, DefaultListsAndBackslashPaths) {
   auto r = f.load();
   ASSERT_TRUE(r.machine);
   EXPECT_TRUE(r.ok()) << dump(r.diagnostics);
-  EXPECT_DOUBLE_EQ(r.machine->axes[0].gear(1).kv_1_s, 30.0);
+  EXPECT_DOUBLE_EQ(r.machine->axes[0].gear(1).position_gain_1_s, 30.0);
 }
 
 TEST(Load, GarbageStartupNeverCrashes) {

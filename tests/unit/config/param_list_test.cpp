@@ -122,7 +122,7 @@ TEST(ParamList, ValueReferringToAnotherParameter) {
                  "getriebe[1].slope_profil.a_beschl P-AXIS-00008.0\n",
                  ListKind::axis, d);
   EXPECT_TRUE(d.empty());
-  EXPECT_DOUBLE_EQ(l.num("getriebe[0].vb_eilgang", 0), 500.0);            // as vb_max, in mm/s
+  EXPECT_DOUBLE_EQ(l.num("getriebe[0].vb_eilgang", 0), 500.0);            // as max_speed_mm_s, in mm/s
   EXPECT_DOUBLE_EQ(l.num("getriebe[1].slope_profil.a_beschl", 0), 1000.0);  // a_max default
 }
 

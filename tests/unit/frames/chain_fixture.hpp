@@ -44,7 +44,7 @@ inline ZeroOffsetTable zero_table() {
   t.groups[1].offset_mm[1] = -5.0;
   t.groups[2].offset_mm[2] = 3.0;   // G55 Z3
   t.groups[7].offset_mm[0] = 70.0;  // G159=7
-  t.groups[0].offset_mm[0] = 7.0;   // G53 group, used only with g53_verfuegbar
+  t.groups[0].offset_mm[0] = 7.0;   // G53 group, used only with g53_available
   return t;
 }
 

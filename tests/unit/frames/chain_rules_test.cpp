@@ -69,7 +69,7 @@ TEST(Suppress, EachOptionRemovesOnlyItsKind) {
   ok(c.measure_apply(0, 1, 1, 0));      // X1
   ok(c.set_manual_offset(0, 0.1));
   ToolOffsets d{1, 0, {}, false};
-  d.ax_versatz_mm[0] = 0.01;
+  d.axis_offset_mm[0] = 0.01;
   ok(c.select_tool(d));
   c.commit_all();
   ok(c.cs_on(CsFamily::cs, 1, CsValues{{100000, 0, 0}, {}}));

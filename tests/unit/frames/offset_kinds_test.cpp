@@ -101,8 +101,8 @@ std::vector<Case> single_kinds() {
       {"tool ax_versatz X2 C0.5",
        [](OffsetChain& c) {
          ToolOffsets d{2, 0, {}, false};
-         d.ax_versatz_mm[0] = 2;
-         d.ax_versatz_mm[3] = 0.5;
+         d.axis_offset_mm[0] = 2;
+         d.axis_offset_mm[3] = 0.5;
          ok(c.select_tool(d));
        },
        pcs(0, 0, 0, 0), mcs(2, 0, 0, 0.5)},
@@ -169,7 +169,7 @@ std::vector<Case> combinations() {
       {"CS rotZ90 + tool ax_versatz X2 length 60 (tool_fixed 0)",
        [](OffsetChain& c) {
          ToolOffsets d{1, 60, {}, false};
-         d.ax_versatz_mm[0] = 2;
+         d.axis_offset_mm[0] = 2;
          ok(c.select_tool(d));
          c.commit_all();
          ok(c.cs_on(CsFamily::cs, 1, CsValues{{0, 0, 0}, {0, 0, 90}}));
@@ -179,7 +179,7 @@ std::vector<Case> combinations() {
       {"CS rotZ90 + tool ax_versatz X2 length 60 (tool_fixed 1)",
        [](OffsetChain& c) {
          ToolOffsets d{1, 60, {}, true};
-         d.ax_versatz_mm[0] = 2;
+         d.axis_offset_mm[0] = 2;
          ok(c.select_tool(d));
          c.commit_all();
          ok(c.cs_on(CsFamily::cs, 1, CsValues{{0, 0, 0}, {0, 0, 90}}));
@@ -225,7 +225,7 @@ TEST(OffsetKinds, RoundTripEverythingActive) {
   ok(c.measure_apply(0, 0.8, 1.3, 1.0));
   ok(c.set_manual_offset(3, 2));
   ToolOffsets d{4, 80, {}, false};
-  d.ax_versatz_mm[1] = -1.25;
+  d.axis_offset_mm[1] = -1.25;
   ok(c.select_tool(d));
   ok(c.tlc_on(0.3));
   c.commit_all();

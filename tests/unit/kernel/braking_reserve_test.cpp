@@ -3,7 +3,7 @@
 // plans a polygon of short chords (passed at speed: the look-ahead plans
 // each chord's end speed from the chords after it in its window) much more
 // slowly than the kernel runs; the kernel must brake within what is queued,
-// stay within every axis's vb_max and a_max in every cycle, never jump,
+// stay within every axis's max_speed_mm_s and a_max in every cycle, never jump,
 // resume from the real speed, warn once per episode (930600), and still
 // reach the end.
 #include <gtest/gtest.h>
@@ -39,9 +39,9 @@ struct Rig {
   Rig() : m(std::make_unique<config::Machine>(xyz_machine(kVbMax_mm_s, kAMax_mm_s2))) {
     m->channels[0].lookahead_blocks = 16;
     // Headroom between the path's and the axes' acceleration: kinks are
-    // passed at speed (with a_beschl = a_max every kink is an exact stop).
+    // passed at speed (with accel_mm_s2 = a_max every kink is an exact stop).
     for (auto& ax : m->axes)
-      for (auto& g : ax.gears) g.a_beschl = g.a_brems = 0.5 * kAMax_mm_s2;
+      for (auto& g : ax.gears) g.accel_mm_s2 = g.decel_mm_s2 = 0.5 * kAMax_mm_s2;
     EXPECT_TRUE(k.configure(*m));
     prep.emplace(*m, 0, "", store, prep::PrepOptions{});
   }
@@ -55,7 +55,7 @@ struct Rig {
 
 struct Observed {
   int starved_warnings = 0;
-  double worst_v_ratio = 0, worst_a_ratio = 0;  // |v| / vb_max, |a| / a_max over all axes and cycles
+  double worst_v_ratio = 0, worst_a_ratio = 0;  // |v| / max_speed_mm_s, |a| / a_max over all axes and cycles
   double reported_v_when_standing_mm_s = 0;     // path velocity reported in a cycle without motion
   int standing_cycles = 0;  // between the first motion and the program end, the axes stood
   motion::AxisVector end{};
@@ -135,23 +135,24 @@ TEST(BrakingReserve, PreparationThatKeepsUpIsNeverStarved) {
 // is the planned one, without any it is standstill, and with a short queue
 // it is what braking within the queued path allows.
 TEST(BrakingReserve, EndSpeedFollowsTheQueuedPath) {
-  CommandQueue q;
-  Command cur;
-  cur.kind = CommandKind::motion;
+  auto q = std::make_unique<CommandQueue>();
+  Motion cur;
   cur.v_end_mm_s = 100;
   cur.limits.a_dec_mm_s2 = 1000;
-  EXPECT_EQ(reserve_end_speed(cur, q, 0.001), 0.0);
-  Command next = cur;
-  next.segment = *motion::make_line({}, motion::AxisVector{1.0}, 1);  // 1 mm: too short to stop from 100 mm/s
-  ASSERT_TRUE(q.push(next));
-  const double v = reserve_end_speed(cur, q, 0.001);
+  EXPECT_EQ(reserve_end_speed(cur, *q, 0.001), 0.0);
+  Motion next_motion = cur;
+  next_motion.path = motion::make_line({}, motion::AxisVector{1.0}, 1)->tail();  // 1 mm: too short to stop from 100 mm/s
+  Command next;
+  next.action = next_motion;
+  ASSERT_TRUE(q->push(next));
+  const double v = reserve_end_speed(cur, *q, 0.001);
   EXPECT_GT(v, 0.0);
   EXPECT_LT(v, 100.0);
   EXPECT_NEAR(motion::discrete_brake_distance(v, 1000, 0.001), 1.0, 0.1);
   Command stop;
-  stop.kind = CommandKind::dwell;  // a planned stop follows: the planner's speed holds
-  ASSERT_TRUE(q.push(stop));
-  EXPECT_EQ(reserve_end_speed(cur, q, 0.001), 100.0);
+  stop.action = Dwell{};  // a planned stop follows: the planner's speed holds
+  ASSERT_TRUE(q->push(stop));
+  EXPECT_EQ(reserve_end_speed(cur, *q, 0.001), 100.0);
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 //
 // Time base of every test: cycle_time_us = 1000, so cycle i starts at
 // t = i ms. The machine is xyz_machine(100, 100000): a path speed of
-// 100 mm/s (F6000, and the rapid speed vb_eilgang = vb_max = 100 mm/s) is
+// 100 mm/s (F6000, and the rapid speed rapid_mm_s = max_speed_mm_s = 100 mm/s) is
 // reached in the first cycle (100000 mm/s^2 * 1 ms = 100 mm/s) and the
 // discrete braking staircase never cuts it below 100 mm/s before the last
 // cycle, so a 1 mm move is exactly 10 cycles of 0.1 mm.
@@ -156,9 +156,9 @@ TEST(ChannelSync, MvsSvsMotionStartsOnlyWithTheAcknowledgement) {
   ASSERT_EQ(waits.size(), 1u);
   ASSERT_EQ(ends.size(), 1u);
   EXPECT_EQ(cycle_of(waits[0].t_s), 0);
-  EXPECT_EQ(waits[0].fn, FunctionKind::m);
+  EXPECT_EQ(waits[0].fn, plc::TechKind::m);
   EXPECT_EQ(waits[0].fn_number, 10);
-  EXPECT_EQ(waits[0].wait_reason, static_cast<std::uint8_t>(WaitReason::plc_ack));
+  EXPECT_EQ(waits[0].wait_reason, WaitReason::plc_ack);
   EXPECT_EQ(waits[0].line, 1u);
   EXPECT_EQ(cycle_of(ends[0].t_s), 5);
   EXPECT_EQ(cycle_of(r.of(EventKind::plc_ack).at(0).t_s), 5);
@@ -357,7 +357,7 @@ nc::Block move_with_m3(std::uint32_t line, double x, double rpm) {
 // channel reads the status of the cycle before, so its wait ends in s + 91.
 constexpr int kSpeedReachedAfter = 90;
 
-// N1 M3 S1000 G1 X1 (default m3_synch MVS_SVS, not output): the block waits
+// N1 M3 S1000 G1 X1 (default m3_sync MVS_SVS, not output): the block waits
 // for speed reached from cycle 0, moves from cycle 91 on (cycles 91..100)
 // and M30 runs in cycle 101.
 TEST(ChannelSync, SpindleWaitEndsInTheCycleAfterSpeedReached) {
@@ -375,9 +375,9 @@ TEST(ChannelSync, SpindleWaitEndsInTheCycleAfterSpeedReached) {
   ASSERT_EQ(waits.size(), 1u);
   ASSERT_EQ(ends.size(), 1u);
   EXPECT_EQ(cycle_of(waits[0].t_s), 0);
-  EXPECT_EQ(waits[0].wait_reason, static_cast<std::uint8_t>(WaitReason::speed_reached));
+  EXPECT_EQ(waits[0].wait_reason, WaitReason::speed_reached);
   EXPECT_EQ(waits[0].spindle, 0);
-  EXPECT_EQ(waits[0].fn, FunctionKind::m);
+  EXPECT_EQ(waits[0].fn, plc::TechKind::m);
   EXPECT_EQ(waits[0].fn_number, 3);
   EXPECT_EQ(cycle_of(ends[0].t_s), kSpeedReachedAfter + 1);
   EXPECT_EQ(r.motion_start(), kSpeedReachedAfter + 1);
@@ -389,8 +389,8 @@ TEST(ChannelSync, SpindleWaitEndsInTheCycleAfterSpeedReached) {
 // M3 S1000 G1 X2 starts in cycle 10: output, wait, deadline 10 + 5 ms.
 Log timeout_run(const AckPolicy& plc) {
   config::Machine m = spindle_machine();
-  m.channels[0].spindles[0].m3_synch = sync::MVS_SVS | sync::PLC_INFO;
-  m.channels[0].spindles[0].m3_prozess_zeit_s = 0.005;
+  m.channels[0].spindles[0].m3_sync = sync::MVS_SVS | sync::PLC_INFO;
+  m.channels[0].spindles[0].m3_ack_timeout_s = 0.005;
   KernelRig rig(m);
   rig.push_block(0, move(1, nc::Motion::linear, 1.0));
   rig.push_block(0, move_with_m3(2, 2.0, 1000));
@@ -428,10 +428,10 @@ TEST(ChannelSync, AcknowledgedInTimeThenWaitsForTheSpeed) {
   ASSERT_EQ(waits.size(), 2u);
   ASSERT_EQ(ends.size(), 2u);
   EXPECT_EQ(cycle_of(waits[0].t_s), kOneMm);
-  EXPECT_EQ(waits[0].wait_reason, static_cast<std::uint8_t>(WaitReason::plc_ack));
+  EXPECT_EQ(waits[0].wait_reason, WaitReason::plc_ack);
   EXPECT_EQ(cycle_of(ends[0].t_s), 14);
   EXPECT_EQ(cycle_of(waits[1].t_s), 14);
-  EXPECT_EQ(waits[1].wait_reason, static_cast<std::uint8_t>(WaitReason::speed_reached));
+  EXPECT_EQ(waits[1].wait_reason, WaitReason::speed_reached);
   const int moves = kOneMm + kSpeedReachedAfter + 1;
   EXPECT_EQ(cycle_of(ends[1].t_s), moves);
   EXPECT_DOUBLE_EQ(r.x[static_cast<std::size_t>(moves - 1)], 1.0);

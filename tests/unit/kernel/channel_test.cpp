@@ -139,7 +139,7 @@ TEST(Channel, FeedMoveWithoutFeedIsAnErrorAtItsLine) {
 
 TEST(Channel, SoftwareLimitIsAnError) {
   config::Machine m = xyz_machine();
-  m.axes[0].swe_pos = 50;
+  m.axes[0].sw_limit_pos = 50;
   KernelRig rig(m);
   Kernel& k = rig.k;
   rig.push_block(0, move(3, nc::Motion::linear, 60.0));
@@ -205,7 +205,7 @@ TEST(Channel, ResetEndsTheProgram) {
   k.tick(in, out);
   ASSERT_EQ(out.events.size(), 2u);  // the state change to idle, then the end
   EXPECT_EQ(out.events[0].kind, EventKind::state);
-  EXPECT_EQ(static_cast<ProgramState>(out.events[0].state_to), ProgramState::idle);
+  EXPECT_EQ(out.events[0].state_to, ProgramState::idle);
   EXPECT_EQ(out.events[1].end_reason, EndReason::reset);
 }
 

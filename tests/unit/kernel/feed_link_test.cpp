@@ -26,7 +26,7 @@ TEST(FeedLink, ConstantCuttingSpeedFollowsTheRadius) {
   EXPECT_NEAR(css_speed_rpm(200, 50, 0, 0), 636.6198, 1e-4);
   // Half the radius, twice the speed; the side of the centre does not matter.
   EXPECT_NEAR(css_speed_rpm(200, -25, 0, 0), 1273.2395, 1e-4);
-  // G196 S1000 caps it near the centre, the gear stage's vb_max below that.
+  // G196 S1000 caps it near the centre, the gear stage's max_speed_mm_s below that.
   EXPECT_EQ(css_speed_rpm(200, 25, 1000, 0), 1000.0);
   EXPECT_EQ(css_speed_rpm(200, 25, 1000, 800), 800.0);
   EXPECT_EQ(css_speed_rpm(200, 0, 1000, 2500), 1000.0);  // at the centre: the limit, not a division by 0

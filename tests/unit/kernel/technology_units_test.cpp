@@ -24,37 +24,35 @@ struct Bench {
 
 TEST(DwellUnit, DwellOfKCyclesTakesExactlyKCycles) {
   Bench b;
-  b.block.kind = CommandKind::dwell;
-  b.block.dwell_s = 5 * kDt_s;
+  const Dwell d{5 * kDt_s, std::nullopt};
+  b.block.action = d;
   DwellUnit dwell;
-  dwell.start(b.block);
+  dwell.start(d);
   int cycles = 0;
   for (bool over = false; !over; ++cycles) {
     Cycle cy = b.cycle(cycles * kDt_s);
-    ASSERT_FALSE(dwell.step(b.block, cy, over).any());
+    ASSERT_FALSE(dwell.step(d, cy, over).any());
   }
   EXPECT_EQ(cycles, 5);
 }
 
 TEST(DwellUnit, RevolutionsOfAMissingSpindleAreAFault) {
   Bench b;
-  b.block.kind = CommandKind::dwell;
-  b.block.dwell_spindle = 0;  // no spindle in the context: it stands
-  b.block.dwell_revs = 2;
+  const Dwell d{0, Dwell::Revolutions{2, 0}};  // no spindle in the context: it stands
+  b.block.action = d;
   DwellUnit dwell;
-  dwell.start(b.block);
+  dwell.start(d);
   Cycle cy = b.cycle(0);
   bool over = false;
-  EXPECT_EQ(dwell.step(b.block, cy, over).id, ErrorId::KernelDwellSpindleStopped);
+  EXPECT_EQ(dwell.step(d, cy, over).id, ErrorId::KernelDwellSpindleStopped);
   EXPECT_FALSE(over);
 }
 
 TEST(HandwheelUnit, OffsetIsTravelledAtItsSpeedAndReported) {
   Bench b;
-  b.block.manual_on = 0b001;  // G201 X
-  b.block.get_manual_offsets = true;
+  const ManualChange g201{0b001, 0, true};  // G201 X, #GET MANUAL OFFSETS
   HandwheelUnit hw;
-  hw.start(b.block);
+  hw.start(&g201);
   b.in.handwheel_mm[0] = 1.0;
   Cycle cy = b.cycle(0);
   ASSERT_FALSE(hw.follow(cy).any());
@@ -66,21 +64,17 @@ TEST(HandwheelUnit, OffsetIsTravelledAtItsSpeedAndReported) {
 
 TEST(HandwheelUnit, MotionBlendsTheOffsetOutAlongItsPath) {
   Bench b;
-  b.block.manual_on = 0b001;
+  const ManualChange g201{0b001, 0, false};
   HandwheelUnit hw;
-  hw.start(b.block);
+  hw.start(&g201);
   b.in.handwheel_mm[0] = 0.005;
   Cycle cy = b.cycle(0);
   (void)hw.follow(cy);  // 5 µm reached, all of it in force
   b.in.handwheel_mm[0] = 0;
-  Command motion{};
-  motion.kind = CommandKind::motion;
-  motion::AxisVector end{};
-  end[0] = 10.0;
-  motion.segment = *motion::make_line({}, end, 3, motion::kAllAxes);
-  motion.manual_offset_axes = 0;  // #SUPPRESS OFFSETS: this block takes it out
-  hw.start(motion);
-  hw.blend(motion, 5.0, 3);  // half way
+  Motion motion{};
+  motion.handwheel_axes = 0;  // #SUPPRESS OFFSETS: this block takes it out
+  hw.start(nullptr);
+  hw.blend(motion, 10.0, 5.0, 3);  // half way along 10 mm
   (void)hw.follow(cy);
   EXPECT_DOUBLE_EQ(hw.in_force_mm()[0], 0.005 * 0.5);
 }

@@ -23,9 +23,9 @@ inline config::Machine xyz_machine(double vb_max_mm_s = 500, double a_mm_s2 = 20
     ax.log_axis_nr = i + 1;
     ax.name = names[i];
     for (auto& g : ax.gears) {
-      g.vb_max = vb_max_mm_s;
-      g.vb_eilgang = vb_max_mm_s;
-      g.a_beschl = g.a_brems = g.a_grenz = g.a_max = a_mm_s2;
+      g.max_speed_mm_s = vb_max_mm_s;
+      g.rapid_mm_s = vb_max_mm_s;
+      g.accel_mm_s2 = g.decel_mm_s2 = g.rapid_accel_mm_s2 = g.a_max = a_mm_s2;
     }
     m.axes.push_back(ax);
     ch.axes.push_back({names[i], i + 1, static_cast<int>(i)});
@@ -43,8 +43,8 @@ inline config::AxisConfig& add_spindle_s1(config::Machine& m) {
   ax.name = "S1";
   ax.kind = config::AxisKind::spindle;
   for (auto& g : ax.gears) {
-    g.vb_max = 6000;
-    g.a_beschl = g.a_brems = g.a_grenz = g.a_max = 60000;
+    g.max_speed_mm_s = 6000;
+    g.accel_mm_s2 = g.decel_mm_s2 = g.rapid_accel_mm_s2 = g.a_max = 60000;
   }
   m.axes.push_back(ax);
   config::ChannelSpindle sp;

@@ -1,5 +1,5 @@
 // The velocity look-ahead: programs planned for the mill example (X/Y
-// a_max 3000, a_beschl = a_brems 2500 mm/s^2: a kink may change an axis's
+// a_max 3000, accel_mm_s2 = decel_mm_s2 2500 mm/s^2: a kink may change an axis's
 // velocity by 0.5 mm/s per 1 ms cycle), pushed through the window; the
 // velocities at the block ends are checked against hand-worked limits.
 // Each test plans with a new rig: a planner remembers where the axes are.
@@ -24,9 +24,9 @@ struct Rig {
   explicit Rig(std::size_t depth = 120)
       : machine(example_machine("mill")), planner(machine, 0, store, PlannerOptions{}, {0, 1}), window(depth, 0.001) {}
 
-  // Plans the program into the window and flushes it; the commands in order.
-  std::vector<Command> run(const std::string& text) {
-    std::vector<Command> out;
+  // Plans the program into the window and flushes it; the queued commands in order.
+  std::vector<kernel::Command> run(const std::string& text) {
+    std::vector<kernel::Command> out;
     auto drain = [&] {
       while (!queue.empty()) {
         out.push_back(queue.front());
@@ -48,8 +48,8 @@ struct Rig {
   // v_end of the motion commands, in order.
   std::vector<double> ends(const std::string& text) {
     std::vector<double> v;
-    for (const Command& c : run(text))
-      if (c.kind == CommandKind::motion) v.push_back(c.v_end_mm_s);
+    for (const kernel::Command& c : run(text))
+      if (const auto* m = c.as<kernel::Motion>()) v.push_back(m->v_end_mm_s);
     return v;
   }
 
@@ -129,9 +129,9 @@ TEST(LookAhead, ExactStopAfterG0WhenConfigured) {
   m.channels[0].exact_stop_after_g00 = true;
   PlanStore store;
   Planner p(m, 0, store, PlannerOptions{}, {0, 1});
-  std::vector<Command> cs;
+  std::vector<PlannedCommand> cs;
   for (const nc::Block& b : decode_blocks(m, "N10 G0 X10\nN20 G1 X20 F1200\nN30 M30\n"))
-    for (const Command& c : p.plan(b)) cs.push_back(c);
+    for (const PlannedCommand& c : p.plan(b)) cs.push_back(c);
   EXPECT_TRUE(cs[0].exact_stop);
   EXPECT_FALSE(cs[1].exact_stop);
 }

@@ -3,9 +3,9 @@
 // configuration; every expected number is worked out by hand from the
 // example lists (examples/mill: G54 = X100 Y50 Z-150, G55 = X200 Y100 Z-150,
 // D1 = length 100 mm, D2 = 125 mm, clamp group 1 = X10 Y-5; axes X Y Z with
-// vb_max = vb_eilgang = 500 mm/s, X/Y a_beschl 2500 a_grenz 3000 a_max 3000,
-// Z a_beschl 2000 a_grenz 2500 a_max 2500, software limits X ±500, Y ±400,
-// Z -400..200, pos_refpkt 0).
+// max_speed_mm_s = rapid_mm_s = 500 mm/s, X/Y accel_mm_s2 2500 rapid_accel_mm_s2 3000 a_max 3000,
+// Z accel_mm_s2 2000 rapid_accel_mm_s2 2500 a_max 2500, software limits X ±500, Y ±400,
+// Z -400..200, reference_pos 0).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -36,10 +36,10 @@ struct PlannerRig {
     return v;
   }
 
-  std::vector<Command> plan(const std::string& text) {
-    std::vector<Command> out;
+  std::vector<PlannedCommand> plan(const std::string& text) {
+    std::vector<PlannedCommand> out;
     for (const nc::Block& b : decode_blocks(machine, text))
-      for (const Command& c : planner.plan(b)) out.push_back(c);
+      for (const PlannedCommand& c : planner.plan(b)) out.push_back(c);
     return out;
   }
 
@@ -49,7 +49,7 @@ struct PlannerRig {
 };
 
 // Machine-coordinate end point of a motion command, first three axes.
-void expect_end(const Command& c, double x, double y, double z) {
+void expect_end(const PlannedCommand& c, double x, double y, double z) {
   ASSERT_EQ(c.kind, CommandKind::motion) << "line " << c.line;
   const motion::AxisVector& e = c.segment.end_point();
   EXPECT_NEAR(e[0], x, 1e-9) << "line " << c.line;
@@ -57,7 +57,7 @@ void expect_end(const Command& c, double x, double y, double z) {
   EXPECT_NEAR(e[2], z, 1e-9) << "line " << c.line;
 }
 
-void expect_error(const Command& c, ErrorId id, std::uint32_t line) {
+void expect_error(const PlannedCommand& c, ErrorId id, std::uint32_t line) {
   EXPECT_EQ(c.kind, CommandKind::error);
   EXPECT_EQ(c.error_id, id);
   EXPECT_EQ(c.line, line);
@@ -79,10 +79,10 @@ TEST(Planner, RapidMoveAtG53GoesToTheProgrammedMachinePosition) {
 TEST(Planner, RapidAlongOneAxisUsesRapidVelocityAndAGrenz) {
   PlannerRig r("mill");
   auto c = r.plan("G0 X100\nG0 Z-10\nM30\n");
-  // X: vb_eilgang 500 mm/s, min(a_grenz 3000, a_max 3000).
+  // X: rapid_mm_s 500 mm/s, min(rapid_accel_mm_s2 3000, a_max 3000).
   EXPECT_DOUBLE_EQ(c[0].v_cmd_mm_s, 500.0);
   EXPECT_DOUBLE_EQ(c[0].limits.a_acc_mm_s2, 3000.0);
-  // Z: min(a_grenz 2500, a_max 2500).
+  // Z: min(rapid_accel_mm_s2 2500, a_max 2500).
   EXPECT_DOUBLE_EQ(c[1].limits.a_acc_mm_s2, 2500.0);
   EXPECT_DOUBLE_EQ(c[1].segment.length(), 10.0);
 }
@@ -92,9 +92,9 @@ TEST(Planner, FeedInMmPerMinuteBecomesMmPerSecond) {
   auto c = r.plan("G1 X100 F1200\nG1 Z-10\nM30\n");
   EXPECT_TRUE(c[0].feed_motion);
   EXPECT_DOUBLE_EQ(c[0].v_cmd_mm_s, 20.0);            // 1200 / 60
-  EXPECT_DOUBLE_EQ(c[0].limits.a_acc_mm_s2, 2500.0);  // X a_beschl
+  EXPECT_DOUBLE_EQ(c[0].limits.a_acc_mm_s2, 2500.0);  // X accel_mm_s2
   EXPECT_DOUBLE_EQ(c[1].v_cmd_mm_s, 20.0);            // F is modal
-  EXPECT_DOUBLE_EQ(c[1].limits.a_acc_mm_s2, 2000.0);  // Z a_beschl
+  EXPECT_DOUBLE_EQ(c[1].limits.a_acc_mm_s2, 2000.0);  // Z accel_mm_s2
 }
 
 TEST(Planner, DiagonalLineLimitsComeFromTheLoadedAxis) {
@@ -212,7 +212,7 @@ TEST(Planner, PsetMakesTheCurrentPositionReadTheGivenValue) {
 
 TEST(Planner, SoftwareLimitIsError930003) {
   PlannerRig r("mill");
-  auto c = r.plan("G0 X1\nG0 Z250\nM30\n");  // Z swe_pos 200 mm
+  auto c = r.plan("G0 X1\nG0 Z250\nM30\n");  // Z sw_limit_pos 200 mm
   expect_error(c[1], ErrorId::KernelSoftwareLimit, 2);
 }
 
@@ -289,7 +289,7 @@ TEST(Planner, RadiusSmallerThanHalfTheChordIsError930006) {
 TEST(Planner, HomingSplitsIntoOrderGroups) {
   PlannerRig r("mill");
   // G74 X1 Y2 Z1: X and Z (order 1) home together, then Y (order 2), each to
-  // pos_refpkt 0 at rapid; only the first command shows the block.
+  // reference_pos 0 at rapid; only the first command shows the block.
   auto c = r.plan("G0 X10 Y20 Z30\nG74 X1 Y2 Z1\nM30\n");
   ASSERT_EQ(c.size(), 4u);
   expect_end(c[1], 0, 20, 0);
@@ -332,7 +332,7 @@ TEST(Planner, ChannelMFunctionsAreOutputWithTheirSynchronisation) {
   // channel1.lis: m_synch[8] MOS, m_synch[6] MVS_SVS.
   auto c = r.plan("M8\nM6\nM30\n");
   ASSERT_EQ(c[0].outputs.size(), 1u);
-  EXPECT_EQ(c[0].outputs[0].fn, FunctionKind::m);
+  EXPECT_EQ(c[0].outputs[0].fn, TechKind::m);
   EXPECT_EQ(c[0].outputs[0].number, 8);
   EXPECT_EQ(c[0].outputs[0].sync, config::sync::MOS);
   ASSERT_EQ(c[1].outputs.size(), 1u);
@@ -430,7 +430,7 @@ TEST(Planner, IncrementalG92AddsToTheShift) {
 
 TEST(Planner, SoftwareLimitAppliesToTheMachinePositionAfterOffsets) {
   PlannerRig r("mill");
-  // G55 X301 is MCS 501, beyond swe_pos 500; X299 (MCS 499) is fine.
+  // G55 X301 is MCS 501, beyond sw_limit_pos 500; X299 (MCS 499) is fine.
   auto c = r.plan("G55 G0 X299\nG0 X301\nM30\n");
   expect_end(c[0], 499, 0, 0);
   expect_error(c[1], ErrorId::KernelSoftwareLimit, 2);

@@ -98,7 +98,7 @@ TEST(SpindlePlanner, RotateStoreStopAndModalSpeed) {
   EXPECT_EQ(a[0].op, SpindleOp::speed);
   EXPECT_EQ(a[0].rpm, 1000);
   EXPECT_EQ(a[0].wait, SpindleWait::speed_reached);  // dropped by the kernel when only stored
-  EXPECT_EQ(a[0].fn, 'S');
+  EXPECT_EQ(a[0].fn, plc::TechKind::s);
   a = ok(p, din(20, SpindleM::m3));  // N20 M03: the stored speed
   ASSERT_EQ(a.size(), 1u);
   EXPECT_EQ(a[0].op, SpindleOp::rotate);
@@ -108,13 +108,13 @@ TEST(SpindlePlanner, RotateStoreStopAndModalSpeed) {
   EXPECT_EQ(a[0].sync, SyncPoint::before);  // default MVS_SVS
   EXPECT_EQ(a[0].wait, SpindleWait::speed_reached);
   EXPECT_FALSE(a[0].output);
-  EXPECT_EQ(a[0].fn, 'M');
+  EXPECT_EQ(a[0].fn, plc::TechKind::m);
   EXPECT_EQ(a[0].fn_number, 3);
   a = ok(p, din(40, SpindleM::none, 500));  // N40 S500: the kernel keeps the direction
   ASSERT_EQ(a.size(), 1u);
   EXPECT_EQ(a[0].op, SpindleOp::speed);
   EXPECT_EQ(a[0].rpm, 500);
-  EXPECT_EQ(a[0].fn, 'S');
+  EXPECT_EQ(a[0].fn, plc::TechKind::s);
   a = ok(p, din(45, SpindleM::m4));
   EXPECT_EQ(a[0].rpm, -500);
   EXPECT_EQ(a[0].direction, spindle::Direction::negative);
@@ -192,9 +192,9 @@ TEST(SpindlePlanner, SyncBitsMapToSyncPoints) {
 TEST(SpindlePlanner, PlcInfoAndPlcSpindlesOutputAndTimeouts) {
   auto m = spindle_machine();
   auto& sp1 = m.channels[0].spindles[0];
-  sp1.m3_synch = sync::MVS_SNS | sync::PLC_INFO;
-  sp1.m3_prozess_zeit_s = 2.5;
-  m.axes[4].achs_mode = 0x40000;  // S2: PLC spindle by axis list
+  sp1.m3_sync = sync::MVS_SNS | sync::PLC_INFO;
+  sp1.m3_ack_timeout_s = 2.5;
+  m.axes[4].axis_mode = 0x40000;  // S2: PLC spindle by axis list
   auto p = planner(m);
   auto a = ok(p, din(10, SpindleM::m3, 800));
   EXPECT_EQ(a[0].sync, SyncPoint::before_after);
@@ -207,7 +207,7 @@ TEST(SpindlePlanner, PlcInfoAndPlcSpindlesOutputAndTimeouts) {
   EXPECT_EQ(a[0].sync, SyncPoint::before);
   EXPECT_TRUE(a[0].output);
   EXPECT_EQ(a[0].wait, SpindleWait::none);  // the PLC acknowledgement only
-  m.axes[4].achs_mode = 0x1;
+  m.axes[4].axis_mode = 0x1;
   m.channels[0].spindles[1].plc_control = true;  // PLC spindle over the channel HLI
   auto q = planner(m);
   a = ok(q, s2(30, SpindleM::m5));
@@ -217,8 +217,8 @@ TEST(SpindlePlanner, PlcInfoAndPlcSpindlesOutputAndTimeouts) {
 
 TEST(SpindlePlanner, NoSynchMFunctionIsNotExecuted) {
   auto m = spindle_machine();
-  m.channels[0].spindles[0].m3_synch = sync::NO_SYNCH;
-  m.channels[0].spindles[0].m5_synch = sync::NO_SYNCH;
+  m.channels[0].spindles[0].m3_sync = sync::NO_SYNCH;
+  m.channels[0].spindles[0].m5_sync = sync::NO_SYNCH;
   auto p = planner(m);
   auto a = ok(p, din(10, SpindleM::m3));  // not executed: no speed error either
   EXPECT_EQ(a.size(), 0u);
@@ -233,7 +233,7 @@ TEST(SpindlePlanner, NoSynchMFunctionIsNotExecuted) {
 
 TEST(SpindlePlanner, NoSynchSpeedIsCommandedNotOutputNotWaitedFor) {
   auto m = spindle_machine();
-  m.channels[0].spindles[0].s_synch = sync::NO_SYNCH | sync::PLC_INFO;
+  m.channels[0].spindles[0].s_sync = sync::NO_SYNCH | sync::PLC_INFO;
   auto p = planner(m);
   ok(p, din(10, SpindleM::m3, 1000));
   auto a = ok(p, din(20, SpindleM::none, 2000));
@@ -248,11 +248,11 @@ TEST(SpindlePlanner, NoSynchSpeedIsCommandedNotOutputNotWaitedFor) {
 TEST(SpindlePlanner, PriorityM19OverM3OverS) {
   auto m = spindle_machine();
   auto& sp = m.channels[0].spindles[0];
-  sp.s_synch = sync::MVS_SLM;
-  sp.m3_synch = sync::MNS_SNS;
-  sp.m19_synch = sync::MVS_SLP;
-  sp.s_prozess_zeit_s = 1;
-  sp.m19_prozess_zeit_s = 4;
+  sp.s_sync = sync::MVS_SLM;
+  sp.m3_sync = sync::MNS_SNS;
+  sp.m19_sync = sync::MVS_SLP;
+  sp.s_ack_timeout_s = 1;
+  sp.m19_ack_timeout_s = 4;
   auto p = planner(m);
   auto a = ok(p, din(10, SpindleM::m3, 500));  // M3 S500: M3's type, S's ignored
   EXPECT_EQ(a[0].sync, SyncPoint::after);
@@ -268,11 +268,11 @@ TEST(SpindlePlanner, PriorityM19OverM3OverS) {
   EXPECT_EQ(a[0].ack_timeout_s, 1);
 }
 
-// FCT-S1 2.5.2 example 1: s_synch MVS_SVS, m3_synch MOS -> the path never waits.
+// FCT-S1 2.5.2 example 1: s_sync MVS_SVS, m3_sync MOS -> the path never waits.
 TEST(SpindlePlanner, SeedSyncExample1SpindleAsynchronous) {
   auto m = spindle_machine();
-  m.channels[0].spindles[0].s_synch = sync::MVS_SVS;
-  m.channels[0].spindles[0].m3_synch = sync::MOS;
+  m.channels[0].spindles[0].s_sync = sync::MVS_SVS;
+  m.channels[0].spindles[0].m3_sync = sync::MOS;
   auto p = planner(m);
   EXPECT_EQ(ok(p, kernel::testing::move(10, nc::Motion::rapid, 0, 0)).size(), 0u);  // N10 X0 Y0 G0
   nc::Block n20 = din(20, SpindleM::m3, 500);  // N20 X40 Y40 G1 F1500 M3 S500
@@ -294,8 +294,8 @@ TEST(SpindlePlanner, SeedSyncExample1SpindleAsynchronous) {
 // path waits before the block until the speed is reached.
 TEST(SpindlePlanner, SeedSyncExample2SpindleSynchronous) {
   auto m = spindle_machine();
-  m.channels[0].spindles[0].s_synch = sync::MVS_SVS;
-  m.channels[0].spindles[0].m3_synch = sync::MOS;
+  m.channels[0].spindles[0].s_sync = sync::MVS_SVS;
+  m.channels[0].spindles[0].m3_sync = sync::MOS;
   auto p = planner(m);
   // N10 M3 X0 Y0 G0: no speed yet, so M3 selects the direction at 0 rpm.
   auto a = ok(p, din(10, SpindleM::m3));
@@ -344,7 +344,7 @@ void run_gears(const config::Machine& m, const std::vector<GearRow>& rows) {
     if (r.shift_to) {
       EXPECT_EQ(a[0].op, SpindleOp::gear_change);  // before the speed action
       EXPECT_EQ(a[0].stage, *r.shift_to);
-      EXPECT_EQ(a[0].fn, 'M');
+      EXPECT_EQ(a[0].fn, plc::TechKind::m);
       EXPECT_EQ(a[0].fn_number, static_cast<int>(39 + *r.shift_to));
       EXPECT_EQ(a[0].sync, SyncPoint::before);
       EXPECT_EQ(a[0].wait, SpindleWait::gear_change);
@@ -430,7 +430,7 @@ TEST(SpindlePlanner, GearChangeWithHomingIsAnError) {
 }
 
 // FCT-S1 2.8.5: wz[5].log_ax_nr_spdl 6, vb_min 60 deg/s (10 rpm),
-// vb_max 3000 deg/s (500 rpm), a_max 3000 deg/s^2.
+// max_speed_mm_s 3000 deg/s (500 rpm), a_max 3000 deg/s^2.
 TEST(SpindlePlanner, ToolDynamicsFromDAndToolData) {
   auto m = spindle_machine();
   m.channel_data[0].tools.resize(8);
@@ -495,10 +495,10 @@ TEST(SpindlePlanner, OtherSpindleFunctionsInOrder) {
   EXPECT_EQ(a[3].rpm, -5000);
   EXPECT_EQ(a[3].spindle, 1);
   EXPECT_EQ(a[4].op, SpindleOp::user_function);
-  EXPECT_EQ(a[4].fn, 'M');
+  EXPECT_EQ(a[4].fn, plc::TechKind::m);
   EXPECT_EQ(a[4].fn_number, 8);
   EXPECT_TRUE(a[4].output);
-  EXPECT_EQ(a[5].fn, 'H');
+  EXPECT_EQ(a[5].fn, plc::TechKind::h);
   EXPECT_EQ(a[5].fn_number, 2);
   nc::Block g = s2(2, SpindleM::none);
   g.spindles[0].g137 = true;

@@ -64,8 +64,8 @@ TEST(SpindleDrive, FeedforwardLagUnderAccelerationIsATaOverKv) {
   auto ax = spindle_axis_config();
   ax.feedforward_ta_s = 0.01;
   for (auto& g : ax.gears) {
-    g.a_beschl = 3000;
-    g.vb_max = 1e6;
+    g.accel_mm_s2 = 3000;
+    g.max_speed_mm_s = 1e6;
   }
   DrivenSpindle d(ax);
   d.s.feedforward_on();
@@ -117,7 +117,7 @@ TEST(SpindleDrive, SpeedControlledActualFollowsWithTheTimeConstant) {
 // way, the NC still sees its own sense.
 TEST(SpindleDrive, ReverseFlipsCommandAndMeasuredValues) {
   auto ax = spindle_axis_config();
-  for (auto& g : ax.gears) g.reverse = true;
+  for (auto& g : ax.gears) g.reverse_sense = true;
   DrivenSpindle d(ax);
   ASSERT_TRUE(d.s.rotate(100).ok());
   d.run_until(reached, 20000);

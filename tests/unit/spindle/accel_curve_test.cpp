@@ -17,8 +17,8 @@ constexpr std::array<CurvePoint, 4> kTable{{{12000, 16000}, {24000, 8000}, {3600
 config::AccelCurve polynomial_curve(const Coefficients& c, double a_min) {
   config::AccelCurve k;
   k.type = 2;
-  k.n_grenz_deg_s = kNGrenz;
-  k.a_konst_deg_s2 = kAKonst;
+  k.limit_speed_deg_s = kNGrenz;
+  k.const_accel_deg_s2 = kAKonst;
   k.a_min_deg_s2 = a_min;
   k.b1 = c.b1; k.b2 = c.b2; k.b3 = c.b3;
   return k;
@@ -58,7 +58,7 @@ TEST(AccelCurveFit, HyperbolaReproducesItsPoints) {
   auto c = fit_hyperbola(kNGrenz, kAKonst, pts);
   ASSERT_TRUE(c.has_value());
   config::AccelCurve k;
-  k.type = 1; k.n_grenz_deg_s = kNGrenz; k.a_konst_deg_s2 = kAKonst;
+  k.type = 1; k.limit_speed_deg_s = kNGrenz; k.const_accel_deg_s2 = kAKonst;
   k.b1 = c->b1; k.b2 = c->b2; k.b3 = c->b3;
   EXPECT_NEAR(curve_accel_deg_s2(k, 12000), 16000, 1e-6);
   EXPECT_NEAR(curve_accel_deg_s2(k, 24000), 8000, 1e-6);

@@ -24,11 +24,11 @@ TEST(SpindleAxis, ConfigureRejectsBadCycle) {
 
 TEST(SpindleAxis, RampUsesABeschlUpAndABremsDown) {
   auto s = make_spindle(spindle_axis_config());
-  ASSERT_TRUE(s.rotate(1000).ok());  // 6000 deg/s at a_beschl 3000 -> 2 s
+  ASSERT_TRUE(s.rotate(1000).ok());  // 6000 deg/s at accel_mm_s2 3000 -> 2 s
   const int up = run_until(s, [](const SpindleStatus& st) { return st.set_rpm >= 1000; }, 10000);
   EXPECT_NEAR(up, 2000, 2);
   EXPECT_EQ(s.status().mode, SpindleMode::rotate);
-  ASSERT_TRUE(s.stop().ok());  // a_brems 4000 -> 1.5 s
+  ASSERT_TRUE(s.stop().ok());  // decel_mm_s2 4000 -> 1.5 s
   const int down = run_until(s, [](const SpindleStatus& st) { return st.set_rpm == 0; }, 10000);
   EXPECT_NEAR(down, 1500, 2);
   run_until(s, [](const SpindleStatus& st) { return st.standstill; }, 5000);
@@ -141,7 +141,7 @@ TEST(SpindleAxis, M19FromRotationKeepsTheDirection) {
 
 TEST(SpindleAxis, HomingG74SetsReferenceAndPositionsToPosRefpkt) {
   auto ax = spindle_axis_config();
-  for (auto& g : ax.gears) g.pos_refpkt = 45;
+  for (auto& g : ax.gears) g.reference_pos = 45;
   auto s = make_spindle(ax);
   // G74 does not block: the command returns at once and the spindle homes
   // in the following cycles while the channel goes on (seed examples 1-3).
@@ -216,7 +216,7 @@ TEST(SpindleAxis, SensorlessSpindleCannotPosition70252) {
 TEST(SpindleAxis, GearChangeApproachesChangePositionThenTakesNewData) {
   auto ax = spindle_axis_config();
   ax.gears[0].gear_change_pos_deg = 120;
-  ax.gears[1].a_beschl = 600;  // stage 2 accelerates slower
+  ax.gears[1].accel_mm_s2 = 600;  // stage 2 accelerates slower
   auto s = make_spindle(ax);
   s.home();
   run_until(s, [](const SpindleStatus& st) { return st.mode == SpindleMode::stop && st.standstill; }, 60000);
@@ -232,7 +232,7 @@ TEST(SpindleAxis, GearChangeApproachesChangePositionThenTakesNewData) {
     if (ticks > 2000) max_rpm_after_slowdown = std::max(max_rpm_after_slowdown, std::fabs(s.status().set_rpm));
   }
   ASSERT_TRUE(s.status().gear_change_ready);
-  EXPECT_LE(max_rpm_after_slowdown, 100 + 1e-9);  // vb_eilgang 600 deg/s
+  EXPECT_LE(max_rpm_after_slowdown, 100 + 1e-9);  // rapid_mm_s 600 deg/s
   EXPECT_NEAR(s.status().set_pos_deg, 120, 1e-9);
   EXPECT_EQ(s.status().gear_stage, 1u);
   ASSERT_TRUE(s.finish_gear_change().ok());
@@ -342,7 +342,7 @@ TEST(SpindleAxis, PlcSpindleWithoutAxisListRuns) {
   auto sp = test::channel_spindle();
   sp.plc_control = true;
   ASSERT_TRUE(s.configure(nullptr, sp, 0.001).has_value());
-  s.rotate(20);  // default gear data: vb_max 200 deg/s
+  s.rotate(20);  // default gear data: max_speed_mm_s 200 deg/s
   run_until(s, reached, 20000);
   EXPECT_NEAR(s.status().set_rpm, 20, 1e-9);
 }

@@ -34,21 +34,21 @@ Case random_case(std::mt19937& rng) {
   auto uni = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
   Case c;
   auto& g = c.ax.gears[0];
-  g.a_beschl = uni(1000, 6000);
-  g.a_brems = uni(1000, 6000);
+  g.accel_mm_s2 = uni(1000, 6000);
+  g.decel_mm_s2 = uni(1000, 6000);
   g.a_max = uni(2000, 8000);
-  g.vb_max = uni(600, 18000);
-  g.vb_eilgang = uni(300, 1200);
-  g.kv_1_s = uni(1, 50);
-  g.pos_refpkt = uni(0, 360);
-  if (rng() % 2) { g.modulou = -180; g.moduloo = 180; g.pos_refpkt -= 180; }
+  g.max_speed_mm_s = uni(600, 18000);
+  g.rapid_mm_s = uni(300, 1200);
+  g.position_gain_1_s = uni(1, 50);
+  g.reference_pos = uni(0, 360);
+  if (rng() % 2) { g.modulo_lower = -180; g.modulo_upper = 180; g.reference_pos -= 180; }
   switch (rng() % 4) {
     case 1:  // the seed's hyperbola, scaled in speed
     case 2: {  // the seed's polynomial (monotonic), scaled in speed
       const double k = uni(0.3, 1.5);
       g.curve.type = (rng() % 2) ? 1u : 2u;
-      g.curve.n_grenz_deg_s = 12000 * k;
-      g.curve.a_konst_deg_s2 = 16000;
+      g.curve.limit_speed_deg_s = 12000 * k;
+      g.curve.const_accel_deg_s2 = 16000;
       g.curve.a_min_deg_s2 = uni(500, 3000);
       if (g.curve.type == 1) { g.curve.b1 = 22857.142857; g.curve.b2 = 0.41666667; g.curve.b3 = 0.028571429; }
       else { g.curve.b1 = -0.88888888 / k; g.curve.b2 = 2.08333333E-5 / (k * k); g.curve.b3 = -1.92901234E-10 / (k * k * k); }
@@ -76,12 +76,12 @@ double accel_bound(const Case& c, double speed_deg_s) {
     if (c.tool.a_max_deg_s2 > 0) a = std::min(a, c.tool.a_max_deg_s2);
     return a;
   };
-  return std::max(lim(curve_accel_deg_s2(g.curve, speed_deg_s, g.a_beschl)),
-                  lim(curve_accel_deg_s2(g.curve, speed_deg_s, g.a_brems)));
+  return std::max(lim(curve_accel_deg_s2(g.curve, speed_deg_s, g.accel_mm_s2)),
+                  lim(curve_accel_deg_s2(g.curve, speed_deg_s, g.decel_mm_s2)));
 }
 
 double speed_bound(const Case& c) {
-  double v = c.ax.gears[0].vb_max;
+  double v = c.ax.gears[0].max_speed_mm_s;
   if (c.tool.vb_max_rpm > 0) v = std::min(v, rpm_to_deg_s(c.tool.vb_max_rpm));
   return v;
 }

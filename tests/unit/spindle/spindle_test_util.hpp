@@ -11,15 +11,15 @@ inline config::AxisConfig spindle_axis_config() {
   ax.kind = config::AxisKind::spindle;
   ax.log_axis_nr = 6;
   for (auto& g : ax.gears) {
-    g.a_beschl = 3000;       // deg/s^2
-    g.a_brems = 4000;
+    g.accel_mm_s2 = 3000;       // deg/s^2
+    g.decel_mm_s2 = 4000;
     g.a_max = 6000;
-    g.vb_max = 60000;        // 10000 rpm
-    g.vb_eilgang = 600;      // 100 rpm
-    g.kv_1_s = 10;
+    g.max_speed_mm_s = 60000;        // 10000 rpm
+    g.rapid_mm_s = 600;      // 100 rpm
+    g.position_gain_1_s = 10;
     g.control_limit_deg_s = 0;    // no control limit unless a test sets one
     g.zero_speed_deg_s = 0.1;
-    g.pos_refpkt = 0;
+    g.reference_pos = 0;
   }
   return ax;
 }

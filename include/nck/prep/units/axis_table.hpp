@@ -41,7 +41,7 @@ class AxisTable {
   AxisDynamicsArray feed_dyn_{}, rapid_dyn_{};
   AxisArray sw_neg_mm_{}, sw_pos_mm_{};
   AxisArray accel_cap_mm_s2_{};  // hard cap of every acceleration (a_max)
-  AxisArray home_pos_mm_{};      // where G74 homes the axis (pos_refpkt)
+  AxisArray home_pos_mm_{};      // where G74 homes the axis (reference_pos)
   std::uint32_t face_axes_ = 0;
 };
 

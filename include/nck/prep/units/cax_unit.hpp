@@ -27,7 +27,7 @@ class CaxUnit {
   // What a block may not do around C-axis mode.
   PlanResult check(const nc::Block& b, const PlanContext& ctx) const;
   // The block's #CAX / #FACE / #CYL.
-  PlanResult plan(const nc::Block& b, Command& c, PlanContext& ctx);
+  PlanResult plan(const nc::Block& b, PlannedCommand& c, PlanContext& ctx);
   // After #CAX (preparation held further blocks back until it ran): C
   // starts where the spindle stood.
   void take_c_axis_position(double c_deg, PlanContext& ctx);
@@ -41,16 +41,16 @@ class CaxUnit {
   // false without a transformation.
   bool trafo_plane(int& a, int& b) const;
   // Limits of motion c under #FACE / #CYL (dyn: the axes' dynamics of its mode).
-  void limit_transformed(Command& c, AxisDynamicsArray dyn, std::size_t n_axes);
+  void limit_transformed(PlannedCommand& c, AxisDynamicsArray dyn, std::size_t n_axes);
   // A face motion as the commands that run it (C turns at the face's centre).
-  void face_centre_commands(const Command& c, PlannedBlock& out, const PlanContext& ctx);
+  void face_centre_commands(const PlannedCommand& c, PlannedBlock& out, const PlanContext& ctx);
 
  private:
-  PlanResult plan_cax_on(const nc::Block& b, const nc::CAxis& a, Command& c, const PlanContext& ctx);
+  PlanResult plan_cax_on(const nc::Block& b, const nc::CAxis& a, PlannedCommand& c, const PlanContext& ctx);
   PlanResult plan_trafo(const nc::Block& b, PlanContext& ctx);
   const std::string& c_axis_name(const PlanContext& ctx) const;
   void set_trafo(const motion::CaxTrafo& t, PlanContext& ctx);
-  Command face_turn(const Command& like, const motion::AxisVector& centre_cart, double from_deg, double to_deg,
+  PlannedCommand face_turn(const PlannedCommand& like, const motion::AxisVector& centre_cart, double from_deg, double to_deg,
                     const PlanContext& ctx) const;
 
   bool on_ = false;                 // #CAX in force

@@ -20,11 +20,11 @@ class CornerUnit {
   // The axes' feed dynamics and kink budgets, for corner blending (setup).
   BlendAxes blend_axes(const AxisTable& axes) const;
   // Motion c of block b has been planned: its exact stop, blending and entry limits.
-  void note_transition(const nc::Block& b, Command& c, bool rapid, const PlanContext& ctx);
+  void note_transition(const nc::Block& b, PlannedCommand& c, bool rapid, const PlanContext& ctx);
 
  private:
-  motion::AxisVector machine_tangent(const Command& c, bool at_end, std::size_t n_axes) const;
-  double start_acceleration(const Command& c, const PlanContext& ctx) const;
+  motion::AxisVector machine_tangent(const PlannedCommand& c, bool at_end, std::size_t n_axes) const;
+  double start_acceleration(const PlannedCommand& c, const PlanContext& ctx) const;
 
   // The last planned motion, for the corner into the next one.
   struct LastMotion {

@@ -19,7 +19,7 @@ class CouplingUnit {
   CouplingUnit(const config::ChannelConfig& channel, const std::vector<std::int8_t>& spindles);
 
   // The block's coupling commands and its rules (a slave is moved by its master only).
-  PlanResult plan(const nc::Block& b, Command& c, PlanContext& ctx);
+  PlanResult plan(const nc::Block& b, PlannedCommand& c, PlanContext& ctx);
   // b with the spindle functions of enabled masters also programmed for
   // their slaves (in scratch when there are any).
   const nc::Block& with_slaves(const nc::Block& b, nc::Block& scratch, const config::ChannelConfig& channel) const;
@@ -29,7 +29,7 @@ class CouplingUnit {
   void follow(PlanContext& ctx) const;
 
  private:
-  PlanResult plan_hash(const nc::Block& b, Command& c, PlanContext& ctx);
+  PlanResult plan_hash(const nc::Block& b, PlannedCommand& c, PlanContext& ctx);
 
   struct AxisFollow {
     int group = 0;

@@ -12,7 +12,7 @@ class CssUnit {
  public:
   // main: the main spindle; vb_max_rpm: its top speed in the gear stage
   // planned for this block (0 = none).
-  PlanResult plan(const nc::Block& b, Command& c, const PlanContext& ctx, const MainSpindle& main,
+  PlanResult plan(const nc::Block& b, PlannedCommand& c, const PlanContext& ctx, const MainSpindle& main,
                   double vb_max_rpm);
 
  private:

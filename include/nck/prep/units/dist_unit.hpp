@@ -10,16 +10,16 @@ namespace nck::prep {
 
 class DistUnit {
  public:
-  PlanResult plan(const nc::Block& b, Command& c, const PlanContext& ctx);
+  PlanResult plan(const nc::Block& b, PlannedCommand& c, const PlanContext& ctx);
   // ON/FREEZE has been prepared in this run (the sensor is needed from now on).
   bool programmed() const { return programmed_; }
 
  private:
-  PlanResult plan_source(const nc::Block& b, const nc::DistCtrl& d, Command& c);
+  PlanResult plan_source(const nc::Block& b, const nc::DistCtrl& d, PlannedCommand& c);
 
   bool on_ = false;            // ON (or FREEZE) programmed and not OFF since
   bool programmed_ = false;    // ON (or FREEZE) prepared at least once
-  std::int8_t source_ = 0;     // 0 the sim.lis sensor, 1 a channel variable
+  kernel::DistChange::Source source_ = kernel::DistChange::Source::machine;
   bool var_known_ = false;     // SENSOR_VAR given
 };
 

@@ -13,6 +13,17 @@
 
 namespace nck::prep {
 
+// The path speed a block asks for.
+struct PathSpeed {
+  enum class Kind : std::uint8_t {
+    programmed,    // `value` mm/s
+    axes_max,      // as fast as the axes allow: a coupling sets the speed each cycle
+    share_of_max,  // G194: `value` (0..1] of the path's maximum speed
+  };
+  Kind kind = Kind::programmed;
+  double value = 0;
+};
+
 class FeedUnit {
  public:
   // spindles: the kernel spindle index of each of the channel's spindles.
@@ -23,13 +34,11 @@ class FeedUnit {
   // stays a tracking axis while G63/G331/G332 is modal, G4 included), and
   // the positioning of the spindle when G331 is selected. `main`: the main
   // spindle's planned state after this block's spindle functions.
-  PlanResult plan_block(const nc::Block& b, Command& c, const PlanContext& ctx, const PlannedSpindle& main);
+  PlanResult plan_block(const nc::Block& b, PlannedCommand& c, const PlanContext& ctx, const PlannedSpindle& main);
   // The commanded path speed of a feed block (G1/G2/G3/G33/G63/G331/G332)
-  // from `start` to `target`: +infinity when a coupling sets it each cycle
-  // (the coupling in c.feed_link), negative for G194: minus the share of
-  // the path's maximum speed.
-  std::expected<double, Diagnostic> plan_feed(const nc::Block& b, const motion::AxisVector& start,
-                                              const motion::AxisVector& target, double length_mm, Command& c,
+  // from `start` to `target` (a coupling goes into c.feed_link).
+  std::expected<PathSpeed, Diagnostic> plan_feed(const nc::Block& b, const motion::AxisVector& start,
+                                              const motion::AxisVector& target, double length_mm, PlannedCommand& c,
                                               const PlanContext& ctx, const PlannedSpindle& main);
 
  private:

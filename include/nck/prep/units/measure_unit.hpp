@@ -13,17 +13,15 @@ namespace nck::prep {
 
 class MeasureUnit {
  public:
-  MeasureUnit(const config::Machine& machine, const config::ChannelConfig& channel, std::size_t n_axes);
-
   // c is the G100 block's planned linear move: it stops where the probe switches.
-  void start_run(Command& c, const PlanContext& ctx);
+  void start_run(PlannedCommand& c, const PlanContext& ctx);
   // After a G100 run (preparation held further blocks back until it ended):
   // planning goes on from where the axes stopped. Returns the decoder's
   // V.A.MESS/MERF/MOFFS variables.
   std::vector<std::pair<std::string, double>> take_measurement(const kernel::MeasureResult& r, PlanContext& ctx);
   // G101 X<factor>..: (measured - target) * factor as an offset; G102 [X..]
   // removes it. Both act at the axis's next absolute position.
-  PlanResult apply_offset(const nc::Block& b, Command& c, PlanContext& ctx) const;
+  PlanResult apply_offset(const nc::Block& b, PlannedCommand& c, PlanContext& ctx) const;
 
  private:
   // The last G100 run, in program coordinates (G101 reads it).
@@ -32,8 +30,6 @@ class MeasureUnit {
   motion::AxisVector measured_pcs_{};
   motion::AxisVector run_target_pcs_{};  // of the last run that ended
   motion::AxisVector target_pcs_{};      // of the run planned last
-  std::int8_t probe_axis_ = -1;
-  double probe_pos_mm_ = 0;
 };
 
 }  // namespace nck::prep

@@ -38,6 +38,6 @@ std::expected<motion::Segment, Diagnostic> arc_segment(const nc::Block& b, const
 // together at rapid to their home position, group after group; the block's
 // other functions (in `first`) go with the first group. Homing clears
 // #PSET of the homed axes.
-std::expected<PlannedBlock, Diagnostic> plan_homing(const nc::Block& b, const Command& first, PlanContext& ctx);
+std::expected<PlannedBlock, Diagnostic> plan_homing(const nc::Block& b, const PlannedCommand& first, PlanContext& ctx);
 
 }  // namespace nck::prep

@@ -1,0 +1,103 @@
+#pragma once
+// What a command carries beside its action, when it carries it: each kind
+// belongs to one technology unit of the channel (docs/architecture.md), which
+// takes it when the command starts. Preparation puts a command's attachments
+// into the command queue right before it (queues.hpp), in the order they are
+// to be handled: warnings, offset events and the TRC state are reported in
+// that order after the block event; PLC outputs and spindle actions are
+// issued in theirs.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <variant>
+
+#include "nck/core/diagnostic.hpp"
+#include "nck/distctrl/controller.hpp"
+#include "nck/kernel/affine_map.hpp"
+#include "nck/kernel/ax_link.hpp"
+#include "nck/kernel/event.hpp"
+#include "nck/kernel/feed_link.hpp"
+#include "nck/kernel/spindle_action.hpp"
+#include "nck/motion/axis_vector.hpp"
+#include "nck/nc/modal.hpp"
+
+namespace nck::kernel {
+
+// A block's PLC outputs and spindle actions at most.
+inline constexpr std::size_t kMaxOutputs = 8;
+inline constexpr std::size_t kMaxSpindleActions = 16;
+
+// A channel function output to the PLC with the block (M, H, T); its
+// synchronisation bits decide when it is output and waited for.
+struct Output {
+  plc::TechKind fn = plc::TechKind::none;
+  std::int32_t number = 0;
+  std::uint32_t sync = 0;
+  double ack_timeout_s = 0;  // 0 = none
+};
+
+// The motion starts here, not where the motion before it ended (a changed
+// frame, a transformation switched, after G100 or homing).
+struct StartPoint {
+  motion::AxisVector pos{};
+};
+
+// The motion's segment is in program coordinates: this maps them to the
+// machine (a rotation acts).
+struct ProgramMap {
+  AffineMap map{};
+};
+
+// A warning raised with the block.
+struct Warning {
+  ErrorId id{};
+  std::uint32_t message_index = kNoMessage;
+};
+
+// An offset changed with the block (PlanStore::offsets index, for its event).
+struct OffsetEvent {
+  std::uint32_t index = 0;
+};
+
+// Tool radius compensation changed with the block (a `trc` event).
+struct TrcChange {
+  nc::RadiusComp mode = nc::RadiusComp::g40;
+  std::int32_t d = 0;        // the D in force
+  double radius_mm = 0;      // its tool radius
+};
+
+// G201 / G202: axes entering / leaving manual (handwheel) mode (bit j =
+// axis j); #GET MANUAL OFFSETS: preparation reads the offsets after it.
+struct ManualChange {
+  std::uint32_t on = 0, off = 0;
+  bool get_offsets = false;
+};
+
+// #CAX: spindle `spindle` (kernel index) becomes channel axis `axis`, and
+// the channel reports its position back; #CAX OFF: a spindle again.
+struct CaxChange {
+  bool on = true;
+  std::int8_t spindle = 0;
+  std::int8_t axis = 0;
+};
+
+// #DIST CTRL: the switch and its overrides, the tool axis that carries the
+// offset (the plane's third axis) and, with CHECK_SW_LIMIT_SWITCH, its
+// software limits.
+struct DistChange {
+  enum class Source : std::uint8_t {
+    machine,   // the machine's sensor (TickInput)
+    variable,  // the channel variable named `variable` (TickInput's variables)
+  };
+  distctrl::Switch sw{};
+  std::int8_t axis = 0;
+  std::optional<Source> source;  // none: keep the one in force
+  std::array<char, 32> variable{};
+  std::optional<std::array<double, 2>> sw_limits_mm;  // negative, positive
+};
+
+using Attachment = std::variant<Output, SpindleAction, FeedLink, CssLink, StartPoint, ProgramMap,
+                                Warning, OffsetEvent, TrcChange, ManualChange, CaxChange,
+                                LinkCommand, DistChange>;
+
+}  // namespace nck::kernel
