@@ -57,9 +57,17 @@ bool ChannelPrep::needs_feedback(const nc::Block& b) {
 }
 
 bool ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& feedback, bool channel_done) {
+  // A call that did nothing does nothing again until the kernel has taken a
+  // command or sent feedback, or the channel ended: most cycles of a dry run
+  // end here (the kernel takes one block while it runs for many cycles).
+  const Idle now{commands.free_slots(), channel_done};
+  if (idle_ && *idle_ == now && feedback.empty()) return false;
   const std::uint64_t before = decoded_ + window_.released();
   feed_blocks(commands, feedback, channel_done);
-  return decoded_ + window_.released() != before;
+  const bool progressed = decoded_ + window_.released() != before;
+  if (progressed) idle_.reset();
+  else idle_ = Idle{commands.free_slots(), channel_done};
+  return progressed;
 }
 
 void ChannelPrep::feed_blocks(kernel::CommandQueue& commands, kernel::FeedbackQueue& feedback,

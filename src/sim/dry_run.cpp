@@ -42,10 +42,11 @@ void DryRun::prepare() {
     return;
   }
   for (std::size_t ch = 0; ch < preps_.size(); ++ch) {
-    preps_[ch].feed(kernel_->commands(ch), kernel_->feedback(ch), kernel_->channel_done(ch));
     // Preparation runs ahead of the kernel: the sensor is on before the
-    // kernel takes the first #DIST CTRL ON.
-    if (preps_[ch].planner().dist_ctrl_programmed()) sim_->switch_sensor_on(ch);
+    // kernel takes the first #DIST CTRL ON (planned by a call that progressed).
+    if (preps_[ch].feed(kernel_->commands(ch), kernel_->feedback(ch), kernel_->channel_done(ch)) &&
+        preps_[ch].planner().dist_ctrl_programmed())
+      sim_->switch_sensor_on(ch);
   }
 }
 
@@ -70,9 +71,13 @@ bool DryRun::held_for_good() const noexcept {
   if (sim_->scenario_pending()) return false;
   bool any = false;
   for (std::size_t ch = 0; ch < preps_.size(); ++ch) {
-    if (!preps_[ch].has_program() || kernel_->channel_done(ch)) continue;
-    if (kernel_->program_state(ch) != kernel::ProgramState::hold || sim_->auto_cycle_start(ch))
+    if (!preps_[ch].has_program()) continue;
+    // Most cycles a channel runs: one question answers it.
+    if (kernel_->program_state(ch) != kernel::ProgramState::hold) {
+      if (kernel_->channel_done(ch)) continue;
       return false;
+    }
+    if (sim_->auto_cycle_start(ch)) return false;
     any = true;
   }
   return any;

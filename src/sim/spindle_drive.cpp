@@ -18,13 +18,21 @@ SpindleDriveConfig SpindleDriveConfig::from(const config::AxisConfig* axis, cons
   return c;
 }
 
+SpindleDrive::SpindleDrive(const SpindleDriveConfig& cfg) : cfg_(cfg) {
+  const double dt = cfg_.cycle_s;
+  const double t = cfg_.speed_time_constant_s;
+  speed_share_ = t > 0 ? 1.0 - std::exp(-dt / t) : 1.0;
+  for (std::size_t g = 0; g < kv_1_s_.size(); ++g) {
+    kv_1_s_[g] = cfg_.position_gain_1_s[g] > 0 ? cfg_.position_gain_1_s[g] : 10.0;
+    decay_[g] = std::exp(-kv_1_s_[g] * dt);
+  }
+}
+
 spindle::DriveFeedback SpindleDrive::step(const spindle::DriveCommand& cmd) noexcept {
   const double dt = cfg_.cycle_s;
   const double v_cmd = cmd.step_deg / dt;  // what the set point really moved this cycle
   if (cfg_.open_loop) {
-    const double t = cfg_.speed_time_constant_s;
-    const double k = t > 0 ? 1.0 - std::exp(-dt / t) : 1.0;
-    act_vel_deg_s_ += (v_cmd - act_vel_deg_s_) * k;
+    act_vel_deg_s_ += (v_cmd - act_vel_deg_s_) * speed_share_;
     lag_deg_ += (v_cmd - act_vel_deg_s_) * dt;
   } else {
     const double ta = cfg_.feedforward_ta_s;
@@ -32,10 +40,10 @@ spindle::DriveFeedback SpindleDrive::step(const spindle::DriveCommand& cmd) noex
     filtered_vel_deg_s_ += (v_cmd - filtered_vel_deg_s_) * kf;  // the drive answers with time constant Ta
     const double w = cmd.feedforward_weight;
     const std::uint32_t g = cmd.gear_stage >= 1 && cmd.gear_stage <= config::kMaxGearStages ? cmd.gear_stage - 1 : 0;
-    const double kv = cfg_.position_gain_1_s[g] > 0 ? cfg_.position_gain_1_s[g] : 10.0;
+    const double kv = kv_1_s_[g];
     // Exact solution of d(lag)/dt = v_cmd - w*v_filt - kv*lag over one cycle:
     // stable for any kv*dt.
-    const double e = std::exp(-kv * dt);
+    const double e = decay_[g];
     const double lag_new = lag_deg_ * e + (v_cmd - w * filtered_vel_deg_s_) * (1.0 - e) / kv;
     act_vel_deg_s_ = v_cmd - (lag_new - lag_deg_) / dt;
     lag_deg_ = lag_new;

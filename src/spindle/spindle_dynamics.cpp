@@ -9,11 +9,6 @@
 
 namespace nck::spindle {
 
-const GearConfig& SpindleAxis::gear() const noexcept {
-  const std::uint32_t i = gear_ >= 1 && gear_ <= config::kMaxGearStages ? gear_ - 1 : 0;
-  return cfg_.gears[i];
-}
-
 double SpindleAxis::accel_limit(double a_deg_s2) const noexcept {
   double a = a_deg_s2 * speed_.accel_weight;
   if (gear().accel_max_deg_s2 > 0) a = std::min(a, gear().accel_max_deg_s2);
@@ -67,6 +62,18 @@ double SpindleAxis::limit_rotation_speed(double speed_deg_s) const noexcept {
 }
 
 double SpindleAxis::rotation_speed_deg_s() const noexcept {
+  RotationMemo& m = rotation_memo_;
+  const bool same = m.valid && m.gear == gear_ && m.programmed_rpm == speed_.programmed_rpm &&
+                    m.override_pct == speed_.override_pct && m.ignore_override == speed_.ignore_override &&
+                    m.tool_min_rpm == tool_.active.vb_min_rpm && m.tool_max_rpm == tool_.active.vb_max_rpm;
+  if (!same) {
+    m = {speed_.programmed_rpm, speed_.override_pct, tool_.active.vb_min_rpm, tool_.active.vb_max_rpm,
+         speed_.ignore_override, gear_, compute_rotation_speed_deg_s(), true};
+  }
+  return m.speed_deg_s;
+}
+
+double SpindleAxis::compute_rotation_speed_deg_s() const noexcept {
   return limit_rotation_speed(rpm_to_deg_s(speed_.programmed_rpm) * override_factor());
 }
 

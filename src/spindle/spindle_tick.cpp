@@ -54,6 +54,10 @@ void SpindleAxis::ramp_to(double target, double dt) noexcept {
   // Reversing goes through standstill: brake to 0 first.
   const double goal = (v != 0 && sign_of(target) == -sign_of(v)) ? 0.0 : target;
   const double diff = goal - v;
+  if (diff == 0 && v != 0) {  // at speed: no acceleration to look up
+    advance(v * dt);
+    return;
+  }
   const bool faster = std::fabs(goal) > std::fabs(v);
   const double a = faster ? accel_up(v) : accel_down(v);
   const double dv = std::min(std::fabs(diff), a * dt);

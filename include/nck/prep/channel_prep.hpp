@@ -104,6 +104,13 @@ class ChannelPrep {
   bool done_ = false;
   bool awaiting_feedback_ = false;
   std::uint64_t decoded_ = 0;  // decoder calls and feedback taken (feed()'s progress)
+  // What the kernel's side looked like after a feed() that did nothing.
+  struct Idle {
+    std::size_t free_slots = 0;
+    bool channel_done = false;
+    bool operator==(const Idle&) const = default;
+  };
+  std::optional<Idle> idle_;
   std::uint32_t last_main_line_ = 0;  // of the main program's last block decoded
   PlanStore* store_ = nullptr;
   bool record_frames_ = false;  // and the last map put there:

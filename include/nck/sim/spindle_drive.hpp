@@ -29,8 +29,8 @@ struct SpindleDriveConfig {
 
 class SpindleDrive {
  public:
-  SpindleDrive() = default;
-  explicit SpindleDrive(const SpindleDriveConfig& cfg) : cfg_(cfg) {}
+  SpindleDrive() : SpindleDrive(SpindleDriveConfig{}) {}
+  explicit SpindleDrive(const SpindleDriveConfig& cfg);
 
   // One cycle: the drive follows the command; returns its measured values. // rt
   spindle::DriveFeedback step(const spindle::DriveCommand& cmd) noexcept;
@@ -39,6 +39,10 @@ class SpindleDrive {
 
  private:
   SpindleDriveConfig cfg_{};
+  // Per cycle: the speed lag's share (open loop), and per gear stage the
+  // position loop's gain and its decay over one cycle (computed once).
+  double speed_share_ = 1;
+  std::array<double, config::kMaxGearStages> kv_1_s_{}, decay_{};
   double lag_deg_ = 0;
   double filtered_vel_deg_s_ = 0;  // commanded speed through the time constant Ta
   double act_vel_deg_s_ = 0;

@@ -14,6 +14,22 @@ enum class Direction : std::int8_t { none = 0, positive = 1, negative = -1 };  /
 
 // pos wrapped into [lo, hi); returns lo when the range is empty or pos not finite. // rt
 double wrap_modulo(double pos_deg, double lo_deg, double hi_deg) noexcept;
+// The same, inline for the common case of a position less than one turn
+// outside the range (a turning spindle, every cycle): the result is
+// wrap_modulo's, bit for bit (fmod returns x itself inside (-range, range),
+// and x - range is exact for x in [range, 2 range)). // rt
+inline double wrap_modulo_near(double pos_deg, double lo_deg, double hi_deg) noexcept {
+  const double range = hi_deg - lo_deg, d = pos_deg - lo_deg;
+  if (range > 0 && range < 1e300) {
+    if (d >= 0 && d < range) return lo_deg + d;
+    if (d >= range && d < 2 * range) return lo_deg + (d - range);
+    if (d < 0 && d > -range) {
+      const double r = d + range;
+      return lo_deg + (r >= range ? 0.0 : r);
+    }
+  }
+  return wrap_modulo(pos_deg, lo_deg, hi_deg);
+}
 
 // False when a preferred direction is set and `dir` is the other one. // rt
 constexpr bool direction_allowed(Direction preferred, Direction dir) noexcept {

@@ -10,6 +10,7 @@
 // Speeds are rpm at the command edge (signed: M3 +, M4 -), deg/s inside;
 // positions are degrees in the gear stage's modulo range.
 #include <cstdint>
+#include <optional>
 #include <expected>
 
 #include "nck/config/machine.hpp"
@@ -61,7 +62,13 @@ class SpindleAxis {
   // nothing changed, the drive needs no new command. // rt
   bool tick(double dt_s, bool refresh_status = true) noexcept;
   // What the drive gets for the cycle just ticked (drive sense). // rt
-  DriveCommand drive_command() const noexcept;
+  // getriebe[i].reverse (P-AXIS-00159): the command goes out inverted, the
+  // actual values come back inverted (update_status), so the NC sees its
+  // own turning sense. Inline: every spindle, every cycle.
+  DriveCommand drive_command() const noexcept {
+    const double sense = drive_sense();
+    return DriveCommand{sense * set_.step_deg, sense * set_.pos_deg, ff_.on ? ff_.weight : 0.0, gear_};
+  }
   // The drive's measured actual values (drive sense); the status (actual
   // speed and position, speed reached, standstill, in position) follows
   // from them and the set point. Invalid feedback: the set point counts as
@@ -83,7 +90,10 @@ class SpindleAxis {
   void begin_homing(AfterHoming after, Direction dir) noexcept;
   Direction shorter_way(double target_deg) const noexcept;
   // dynamics.cpp
-  const GearConfig& gear() const noexcept;
+  const GearConfig& gear() const noexcept {  // asked for many times a cycle: inline
+    const std::uint32_t i = gear_ >= 1 && gear_ <= config::kMaxGearStages ? gear_ - 1 : 0;
+    return cfg_.gears[i];
+  }
   double accel_limit(double a_deg_s2) const noexcept;
   double accel_up(double speed_deg_s) const noexcept;
   double accel_down(double speed_deg_s) const noexcept;
@@ -92,7 +102,8 @@ class SpindleAxis {
   double override_factor() const noexcept;
   double limit_speed(double speed_deg_s) const noexcept;           // max_speed_mm_s caps
   double limit_rotation_speed(double speed_deg_s) const noexcept;  // + tool vb_min (M3/M4 only)
-  double rotation_speed_deg_s() const noexcept;  // programmed x override, limited, signed
+  double rotation_speed_deg_s() const noexcept;  // programmed x override, limited, signed (memo)
+  double compute_rotation_speed_deg_s() const noexcept;
   // tick.cpp
   void ramp_to(double target_deg_s, double dt) noexcept;
   void advance(double step_deg) noexcept;
@@ -107,8 +118,20 @@ class SpindleAxis {
   double positioning_speed_deg_s() const noexcept;
   void on_reference() noexcept;
   // spindle_status.cpp
-  double drive_sense() const noexcept;  // -1 with getriebe[i].reverse
+  double drive_sense() const noexcept { return gear().reverse_sense ? -1.0 : 1.0; }  // getriebe[i].reverse
+  // What the speed part of the status follows from (update_status judges
+  // it anew only when one of them changed).
+  struct StatusInputs {
+    SpindleMode mode = SpindleMode::stop;
+    std::uint32_t gear = 1;
+    ErrorId error{};
+    double set_vel_deg_s = 0, set_accel_deg_s2 = 0, act_vel_deg_s = 0;
+    double programmed_rpm = 0, override_pct = 0, rotation_deg_s = 0;
+    bool ignore_override = false, feedhold = false, homed = false, reference_lost = false;
+    bool operator==(const StatusInputs&) const = default;
+  };
   void update_status() noexcept;
+  void judge_speed(const StatusInputs& in) noexcept;
 
   SpindleConfig cfg_{};
   bool configured_ = false;
@@ -127,6 +150,17 @@ class SpindleAxis {
   DriveFeedback feedback_{};  // the drive's last measured values (drive sense)
 
   SpindleStatus status_{};
+  // rotation_speed_deg_s() for the inputs it saw last: asked for twice a
+  // cycle, while its inputs change rarely.
+  struct RotationMemo {
+    double programmed_rpm = 0, override_pct = 0, tool_min_rpm = 0, tool_max_rpm = 0;
+    bool ignore_override = false;
+    std::uint32_t gear = 0;
+    double speed_deg_s = 0;
+    bool valid = false;
+  };
+  mutable RotationMemo rotation_memo_{};
+  std::optional<StatusInputs> judged_;  // the inputs of the speed status now shown
 };
 
 }  // namespace nck::spindle

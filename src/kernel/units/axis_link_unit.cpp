@@ -69,7 +69,7 @@ void AxisLinkUnit::end(EndReason end, Cycle& cy) noexcept {
 }
 
 // slave = where it stood + (master - where the master stood) * ratio.
-void AxisLinkUnit::follow(motion::AxisVector& pos_mm) const noexcept {
+void AxisLinkUnit::follow_links(motion::AxisVector& pos_mm) const noexcept {
   for (const ActiveLink& l : links_)
     for (std::size_t k = 0; k < l.cmd.pairs.size(); ++k) {
       const AxLinkPair& p = l.cmd.pairs[k];

@@ -25,7 +25,9 @@ class AxisLinkUnit {
   // their distance from pos_mm). rt
   Fault start(const LinkCommand& c, const motion::AxisVector& pos_mm, Cycle& cy) noexcept;
   // Each cycle: path-axis slaves follow their master in pos_mm. rt
-  void follow(motion::AxisVector& pos_mm) const noexcept;
+  void follow(motion::AxisVector& pos_mm) const noexcept {
+    if (!links_.empty()) follow_links(pos_mm);  // inline: most programs link nothing
+  }
   // Program end dissolves the links unless P-CHAN-00105; abort and reset always. rt
   void end(EndReason end, Cycle& cy) noexcept;
   // The enabled coupling groups' plan-store payloads, in enabling order.
@@ -35,6 +37,7 @@ class AxisLinkUnit {
   }
 
  private:
+  void follow_links(motion::AxisVector& pos_mm) const noexcept;
   struct ActiveLink {
     LinkCommand cmd{};
     std::array<double, kMaxLinkPairs> base_slave_mm{}, base_master_mm{};  // path-axis pairs

@@ -30,8 +30,8 @@ Fault CaxUnit::start(const CaxChange& c, motion::AxisVector& pos_mm, Cycle& cy) 
   return cy.send(f);
 }
 
-void CaxUnit::follow(double dt_s, motion::AxisVector& pos_mm, ChannelContext& ctx) noexcept {
-  if (axis_ < 0 || static_cast<std::size_t>(spindle_) >= ctx.spindle_count) return;
+void CaxUnit::follow_c(double dt_s, motion::AxisVector& pos_mm, ChannelContext& ctx) noexcept {
+  if (static_cast<std::size_t>(spindle_) >= ctx.spindle_count) return;
   SpindleUnit& u = ctx.spindles[spindle_];
   double& c = pos_mm[static_cast<std::size_t>(axis_)];
   if (!on_) {

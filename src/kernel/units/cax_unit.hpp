@@ -20,11 +20,15 @@ class CaxUnit {
   // spindle stands (in pos_mm). rt
   Fault start(const CaxChange& c, motion::AxisVector& pos_mm, Cycle& cy) noexcept;
   // After the cycle's path step: the spindle follows C, or C shows the spindle. rt
-  void follow(double dt_s, motion::AxisVector& pos_mm, ChannelContext& ctx) noexcept;
+  // (Inline: most channels have no C axis.)
+  void follow(double dt_s, motion::AxisVector& pos_mm, ChannelContext& ctx) noexcept {
+    if (axis_ >= 0) follow_c(dt_s, pos_mm, ctx);
+  }
   // Program end: the spindle is a spindle again. rt
   void end(ChannelContext& ctx) noexcept;
 
  private:
+  void follow_c(double dt_s, motion::AxisVector& pos_mm, ChannelContext& ctx) noexcept;
   std::int8_t axis_ = -1;     // channel index of the C axis, -1 none
   std::int8_t spindle_ = -1;  // its spindle (kernel index)
   bool on_ = false;           // #CAX in force: the path drives the spindle

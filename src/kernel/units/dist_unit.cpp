@@ -16,11 +16,7 @@ Fault DistUnit::start(const DistChange& c, Cycle& cy) noexcept {
   return {e};
 }
 
-Fault DistUnit::run(const motion::AxisVector& pos_mm, bool channel_done, Cycle& cy) noexcept {
-  if (channel_done || !ctrl_.engaged() || axis_ < 0) {
-    note_state(cy);
-    return {};
-  }
+Fault DistUnit::step(const motion::AxisVector& pos_mm, Cycle& cy) noexcept {
   const double prog_mm = pos_mm[static_cast<std::size_t>(axis_)];
   distctrl::Sample smp{cy.in.dist_sensor_valid, cy.in.dist_sensor_mm};
   if (source_ == DistChange::Source::variable) {  // a variable not (yet) written counts as no value

@@ -21,7 +21,12 @@ class DistUnit {
   Fault start(const DistChange& c, Cycle& cy) noexcept;
   // Every cycle, after the path: the offset for the program set point
   // pos_mm (nothing once the channel is done). rt
-  Fault run(const motion::AxisVector& pos_mm, bool channel_done, Cycle& cy) noexcept;
+  Fault run(const motion::AxisVector& pos_mm, bool channel_done, Cycle& cy) noexcept {
+    // Inline: off (most programs, most cycles) only a state change is news.
+    if (!channel_done && ctrl_.engaged() && axis_ >= 0) return step(pos_mm, cy);
+    if (ctrl_.state() != reported_) note_state(cy);
+    return {};
+  }
   // At the program end block: switch off; true while the offset is still
   // being travelled out (the end block waits for it). rt
   bool wind_down() noexcept;
@@ -35,6 +40,7 @@ class DistUnit {
   double offset_mm() const noexcept { return ctrl_.offset_mm(); }
 
  private:
+  Fault step(const motion::AxisVector& pos_mm, Cycle& cy) noexcept;
   void note_state(Cycle& cy) noexcept;
 
   distctrl::Controller ctrl_;

@@ -14,7 +14,7 @@ void HandwheelUnit::start(const ManualChange* c) noexcept {
 }
 
 // The offset is travelled at a limited speed (docs/decisions.md).
-Fault HandwheelUnit::follow(Cycle& cy) noexcept {
+Fault HandwheelUnit::follow_offsets(Cycle& cy) noexcept {
   // Until the first G201 every handwheel offset is zero: nothing to follow.
   const double step = kHandwheelSpeed_mm_s * cy.dt_s;
   for (std::size_t j = 0; used_ && j < cy.n_axes; ++j) {

@@ -27,12 +27,15 @@ class HandwheelUnit {
   void blend(const Motion& m, double length_mm, double s_mm, std::size_t n_axes) noexcept;
   // Every cycle: follow the handwheel; at #GET MANUAL OFFSETS send the
   // offsets reached at the end of its cycle. rt
-  Fault follow(Cycle& cy) noexcept;
+  Fault follow(Cycle& cy) noexcept {
+    return used_ || fetch_pending_ ? follow_offsets(cy) : Fault{};  // inline: most programs never use it
+  }
   // The offset in the set point now (less than travelled while
   // #SUPPRESS OFFSETS or #MCS leaves it out).
   const motion::AxisVector& in_force_mm() const noexcept { return in_force_mm_; }
 
  private:
+  Fault follow_offsets(Cycle& cy) noexcept;
   bool fetch_pending_ = false;    // #GET MANUAL OFFSETS: send them at the end of this cycle
   std::uint32_t manual_mask_ = 0;  // axes in manual mode (G201)
   bool used_ = false;              // some axis was in manual mode in this run
