@@ -113,6 +113,16 @@ CLI::Validator start_mode_validator() {
       "MODE");
 }
 
+CLI::Validator stop_at_validator() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        if (parse_stop_at(text)) return {};
+        return fmt::format("'{}' is no stop mark: N<n>, line:<L>, block:<K> or event:<kind> (e.g. event:wait)",
+                           text);
+      },
+      "MARK");
+}
+
 }  // namespace
 
 int main_cli(int argc, char** argv) {
@@ -149,6 +159,10 @@ int main_cli(int argc, char** argv) {
                    "program-start mode for fct_condition[i] (P-CHAN-00508): ISG_STANDARD (default), "
                    "DRY_RUN, CONTOUR_VISU, SYNTAX_CHECK, PROD_TIME, ONLINE_PROD_TIME, ON_LINE, SCENE")
       ->check(start_mode_validator());
+  runc->add_option_function<std::string>(
+          "--stop-at", [&run](const std::string& text) { run.stop_at = parse_stop_at(text); },
+          "end the run where this block ends: N<n>, line:<L>, block:<K> or event:<kind> (end reason stop_at)")
+      ->check(stop_at_validator());
   runc->add_option("--cycles", run.cycles, "search DIR for L CYCLE files (after the machine's cycle_path[i]); repeat")
       ->allow_extra_args(false);
 

@@ -76,8 +76,13 @@ const char* kind_name(kernel::EventKind k) {
   return "unknown";
 }
 
-
 }  // namespace
+
+std::optional<kernel::EventKind> event_kind_from(std::string_view name) {
+  for (int k = 0; k <= static_cast<int>(kernel::EventKind::state); ++k)
+    if (name == kind_name(static_cast<kernel::EventKind>(k))) return static_cast<kernel::EventKind>(k);
+  return std::nullopt;
+}
 
 const char* wait_reason_name(kernel::WaitReason r) {
   using W = kernel::WaitReason;
@@ -117,6 +122,7 @@ const char* end_name(kernel::EndReason r) {
     case R::max_wall: return "max_wall";
     case R::interrupted: return "interrupted";
     case R::hold: return "hold";
+    case R::stop_at: return "stop_at";
   }
   return "error";
 }

@@ -97,6 +97,8 @@ std::optional<kernel::EndReason> run_loop(sim::DryRun& run, const RunOptions& op
   Progress progress(opt.progress, opt.programs);
   const auto wall_start = std::chrono::steady_clock::now();
   const WallClockLimit wall(opt.max_wall_s);  // raises stop_flag(), also inside a long decode
+  std::optional<StopAtWatch> stop_at;
+  if (opt.stop_at) stop_at.emplace(*opt.stop_at, run);
   for (;;) {
     const double t_s = run.time_s();
     run.prepare();
@@ -105,6 +107,7 @@ std::optional<kernel::EndReason> run_loop(sim::DryRun& run, const RunOptions& op
     report_dropped_events(*o, names, out, progress);
     out.trace.write(run.kernel().cycles() - 1, *o);
     out.report.sample(run.kernel().cycles() - 1, *o, names);
+    if (stop_at && stop_at->reached(*o)) return kernel::EndReason::stop_at;
     if (run.done()) return std::nullopt;
     if (stop_flag().load(std::memory_order_relaxed))
       return stop_signal() != 0 ? kernel::EndReason::interrupted : kernel::EndReason::max_wall;
@@ -122,6 +125,7 @@ kernel::StateReason state_reason_of(kernel::EndReason r) {
     case R::max_wall: return kernel::StateReason::max_wall;
     case R::interrupted: return kernel::StateReason::interrupted;
     case R::hold: return kernel::StateReason::hold;
+    case R::stop_at: return kernel::StateReason::stop_at;
     default: return kernel::StateReason::error;
   }
 }
@@ -166,6 +170,7 @@ bool any_channel_aborted(const sim::DryRun& run) {
 // SPEC 2.2: 0 program end, 1 NC error or a limit, 130/143 SIGINT/SIGTERM.
 int exit_code_of(const sim::DryRun& run, std::optional<kernel::EndReason> stopped) {
   if (stopped == kernel::EndReason::interrupted) return signal_exit_code();
+  if (stopped == kernel::EndReason::stop_at) return any_channel_aborted(run) ? 1 : 0;  // as asked for
   return stopped || any_channel_aborted(run) ? 1 : 0;
 }
 

@@ -1,7 +1,10 @@
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "stop_at.hpp"
 
 namespace nck::app {
 
@@ -20,6 +23,7 @@ struct RunOptions {
   bool progress = true;       // on a terminal only
   std::vector<std::string> cycles;  // --cycles DIR: searched after startup.lis cycle_path[i]
   std::string start_mode = "ISG_STANDARD";  // --start-mode: P-CHAN-00508 condition of this run
+  std::optional<StopAt> stop_at;            // --stop-at: where the run ends
 };
 
 // Exit codes (SPEC 2.2): 0 program end reached, 1 aborted by an NC error or a

@@ -19,6 +19,7 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
   Cycle cy{t_s, dt_s, in, sink, ctx, *feedback_, current_, number_, n_axes_,
            std::span<const std::int8_t>(spindles_.begin(), spindles_.size())};
   path_.begin_cycle();
+  hold_.begin_cycle();
   if (!done()) {
     if (in.reset) {
       end_program(EndReason::reset, cy);
@@ -44,7 +45,7 @@ void Channel::run_blocks(Cycle& cy) noexcept {
   for (;;) {
     if (!active_) {
       if (state_ == ProgramState::hold) {
-        if (!cy.in.cycle_start) break;
+        if (!hold_.released(cy.in)) break;
         set_state(ProgramState::running, StateReason::cycle_start, cy);
       }
       if (commands_->empty()) break;
@@ -147,6 +148,7 @@ void Channel::start(Cycle& cy) noexcept {
   const AttachmentSorter sort{parts, sync_, cy};
   for (std::size_t i = 0; i < current_.attachments; ++i) std::visit(sort, commands_->attachment(i));
   path_.start_block(current_, parts.start, parts.map);
+  hold_.start_block(current_, cy.in.stop_at);
   if (const Error* e = current_.as<Error>()) {
     raise(e->id, e->message_index, cy);
     return;
@@ -221,6 +223,7 @@ void Channel::run_motion(const Motion& m, Cycle& cy) noexcept {
     return;
   }
   spindle_path_.limit_path(path_.profile(), cy.machine);
+  hold_.follow(current_, cy.in, sync_.has_functions(), path_, cy.dt_s);
   const motion::ProfileSample st = path_.step(m, *commands_, cy);
   measuring_.stepped(m);
   place(m, st.s_mm);
@@ -254,6 +257,8 @@ void Channel::end_block(Cycle& cy) noexcept {
     stop_program(*hold, cy);
   } else if (end) {
     end_program(end->reason, cy);
+  } else if (const auto why = hold_.at_block_end(current_, cy.in, sync_.has_functions(), !path_.passing())) {
+    set_state(ProgramState::hold, *why, cy);  // single step, stop at: the next block waits for cycle start
   }
 }
 
@@ -288,6 +293,7 @@ std::pair<ProgramState, StateReason> state_after(EndReason r) noexcept {
     case EndReason::max_wall: return {ProgramState::ended, StateReason::max_wall};
     case EndReason::interrupted: return {ProgramState::ended, StateReason::interrupted};
     case EndReason::hold: return {ProgramState::ended, StateReason::hold};
+    case EndReason::stop_at: return {ProgramState::ended, StateReason::stop_at};
   }
   return {ProgramState::ended, StateReason::m30};
 }
@@ -300,6 +306,7 @@ void Channel::end_program(EndReason reason, Cycle& cy) noexcept {
   status_ = ok ? ChannelStatus::ended : ChannelStatus::aborted;
   active_ = false;
   path_.reset();
+  hold_.reset();
   sync_.clear();
   cax_.end(cy.machine);
   dist_.end(reason, cy);

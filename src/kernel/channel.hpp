@@ -34,6 +34,7 @@
 #include "units/dist_unit.hpp"
 #include "units/dwell_unit.hpp"
 #include "units/handwheel_unit.hpp"
+#include "units/hold_unit.hpp"
 #include "units/measuring_unit.hpp"
 #include "units/path_unit.hpp"
 #include "units/spindle_path_unit.hpp"
@@ -71,6 +72,8 @@ class Channel {
   // setup: channel axis `axis` is spindle `spindle` (kernel index) in
   // C-axis mode (#CAX); outside it the axis shows the spindle's position.
   void set_c_axis(std::int8_t axis, std::int8_t spindle) noexcept { cax_.setup(axis, spindle, n_axes_); }
+  // setup: P-CHAN-00015, where single step holds.
+  void set_single_step_mode(std::int8_t mode) noexcept { hold_.setup(mode); }
   // setup: P-CHAN-00105, enabled couplings survive M30 / M2.
   void set_preserve_links(bool on) noexcept { ax_links_.set_preserve(on); }
   // The enabled coupling groups' plan-store payloads, in enabling order.
@@ -132,6 +135,7 @@ class Channel {
   PathUnit path_;              // profile, set point, continuous path
   MeasuringUnit measuring_;    // G100
   DwellUnit dwell_;            // G4
+  HoldUnit hold_;              // single step, stop at
 };
 
 }  // namespace nck::kernel

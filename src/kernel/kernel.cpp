@@ -63,6 +63,7 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
     // The C axis (config/c_axis.cpp) is the spindle with the same axis list.
     const config::ChannelConfig& ch = machine_->channels[i];
     channels_.back()->set_preserve_links(ch.preserve_coupling_after_prog_end);
+    channels_.back()->set_single_step_mode(ch.single_step_mode);
     channels_.back()->set_dist_ctrl(distctrl::settings_from(ch.dist_ctrl), cycle_s_);
     if (ch.c_axis >= 0)
       for (std::size_t k = 0; k < ch.spindles.size(); ++k)

@@ -53,6 +53,8 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
     ci.optional_stop = c.optional_stop;
     ci.reset = c.reset;
     c.reset = false;  // a request: handed over once
+    ci.stop_at = stop_at_[ch];
+    ci.single_step = c.single_step;
     ci.cycle_start = c.cycle_start || auto_cycle_start_[ch];
     c.cycle_start = false;
     ci.probe_switched = probe_switched_[ch];
@@ -87,6 +89,7 @@ void MachineSim::apply(const sim::ScenarioAction& a, kernel::TickInput& in) noex
     case sim::ActionKind::optional_stop: ch.optional_stop = a.on; return;
     case sim::ActionKind::cycle_start: ch.cycle_start = true; return;
     case sim::ActionKind::auto_cycle_start: auto_cycle_start_[c] = a.on; return;
+    case sim::ActionKind::single_step: ch.single_step = a.on; return;
     case sim::ActionKind::silent: plc_.set_silent(a.on); return;
     case sim::ActionKind::handwheel:
       if (a.axis >= 0) in.channels[c].handwheel_mm[static_cast<std::size_t>(a.axis)] += a.value;

@@ -40,6 +40,7 @@ constexpr std::array kActions = {
     ActionSpelling{"variable", ActionKind::variable},
     ActionSpelling{"cycle_start", ActionKind::cycle_start},
     ActionSpelling{"auto_cycle_start", ActionKind::auto_cycle_start},
+    ActionSpelling{"single_step", ActionKind::single_step},
 };
 
 // Parses one line; reports its first problem and returns nothing then.
@@ -174,6 +175,7 @@ bool LineParser::parse_args(ScenarioAction& a) {
     case ActionKind::optional_stop:
     case ActionKind::silent:
     case ActionKind::auto_cycle_start:
+    case ActionKind::single_step:
       return take_switch(a.on);
     case ActionKind::reset:
     case ActionKind::cycle_start:

@@ -255,6 +255,9 @@ struct ChannelConfig {
   std::array<std::uint32_t, 10> trafo_ids{};    // P-CHAN-00262 trafo[i].id, 0 = empty slot
   bool move_tool_offsets_directly = false;      // P-CHAN-00100
   bool exact_stop_after_g00 = false;            // P-CHAN-00235
+  // P-CHAN-00015 (einzelschrittmodus): where single step holds: -1 after
+  // motion blocks, 0 also after blocks with functions, 1 after every block
+  std::int8_t single_step_mode = 0;
   std::uint32_t lookahead_blocks = 120;         // P-CHAN-00653 configuration.interpolator.number_blocks_lah
   std::array<std::uint32_t, 1000> m_synch{};    // P-CHAN-00041, per M number
   std::uint32_t decoder_function = 0;           // configuration.decoder.function bits

@@ -37,7 +37,8 @@ enum class EventKind : std::uint8_t {
 inline constexpr std::uint32_t kNoMessage = 0xFFFFFFFFu;
 
 // hold: the run ended while a channel held and nothing could release it (nck run)
-enum class EndReason : std::uint8_t { m30, m2, error, reset, max_time, max_wall, interrupted, hold };
+// stop_at: the run ended at its stop-at mark (nck run --stop-at)
+enum class EndReason : std::uint8_t { m30, m2, error, reset, max_time, max_wall, interrupted, hold, stop_at };
 
 
 enum class WaitReason : std::uint8_t {

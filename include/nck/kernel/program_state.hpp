@@ -9,7 +9,7 @@ namespace nck::kernel {
 enum class ProgramState : std::uint8_t {
   idle,       // no program started (or reset)
   running,    // the program runs (moving, dwelling or waiting for a synchronisation)
-  hold,       // a programmed stop (M0, or M1 with the optional-stop switch) waits for cycle start
+  hold,       // waits for cycle start: M0, M1 with the optional-stop switch, single step, a stop-at mark
   searching,  // block search: decoding without motion up to the restart mark
   returning,  // back to the contour after a block search
   error,      // aborted by an error; a reset leaves it
@@ -29,6 +29,8 @@ enum class StateReason : std::uint8_t {
   max_wall,
   interrupted,
   hold,  // the run ended in a hold nothing could release (nck run)
+  single_step,  // single step: the block ended
+  stop_at,      // the stop-at mark's block ended
 };
 
 constexpr std::string_view state_name(ProgramState s) noexcept {
@@ -58,6 +60,8 @@ constexpr std::string_view state_reason_name(StateReason r) noexcept {
     case StateReason::max_wall: return "max_wall";
     case StateReason::interrupted: return "interrupted";
     case StateReason::hold: return "hold";
+    case StateReason::single_step: return "single_step";
+    case StateReason::stop_at: return "stop_at";
   }
   return "start";
 }

@@ -36,14 +36,30 @@ struct ChannelVariable {
 };
 inline constexpr std::size_t kMaxChannelVariables = 16;
 
+// Where the operator wants the program to hold (stop at): at the end of
+// the block with this N, on this line of the main program, the K-th block
+// of the run (1-based), or the block that runs now (an event mark the
+// caller recognised). Where the path cannot stop at standstill at that
+// block's end within a_max, the first block end after it where it can.
+struct StopMark {
+  enum class Kind : std::uint8_t { none, n, line, block, now };
+  Kind kind = Kind::none;
+  std::int64_t value = 0;
+  bool operator==(const StopMark&) const = default;
+};
+
 struct ChannelInput {
   double feed_override_pct = 100;  // HLI feed override 0..100 (more is clamped)
   bool feedhold = false;
   bool reset = false;          // a request, acted on in this cycle
   bool optional_stop = false;  // M1 stops the program only while this is on
-  // Cycle start: releases a program hold (M0/M1) that is in force in this
-  // cycle, also one the channel reaches within it.
+  // Cycle start: releases a program hold (M0/M1, single step, stop at)
+  // that is in force in this cycle, or the first one the channel reaches
+  // within it — one hold per cycle: a press is one step.
   bool cycle_start = false;
+  // Single step (the HLI's switch): hold at block ends as P-CHAN-00015 says.
+  bool single_step = false;
+  StopMark stop_at{};
   // The measuring probe switched during the last cycle, with the axes'
   // machine positions latched at that instant.
   bool probe_switched = false;

@@ -67,6 +67,7 @@ struct ChannelControl {
   bool reset = false;          // a request, the CNC clears it when it has reset the channel
   bool optional_stop = false;  // M01 stops only while this is on
   bool cycle_start = false;    // a request: releases a program hold (M0 / M1), cleared when handed over
+  bool single_step = false;    // single step mode (held until switched off)
 };
 
 // A technology function output to the PLC and its handshake.

@@ -77,6 +77,8 @@ class DryRun {
   // snapshot() or anything else preparation owns. The destructor does it.
   void stop_preparation();
 
+  // Channel ch holds at this mark for the caller (nck run --stop-at).
+  void set_stop_at(std::size_t ch, const kernel::StopMark& mark) noexcept { sim_->set_stop_at(ch, mark); }
   // Every channel that has a program has ended.
   bool done() const noexcept;
   // Every channel still running holds (M0/M1) and nothing will release it:

@@ -54,6 +54,10 @@ class MachineSim {
   const plc::HliImage& hli() const noexcept { return hli_; }
   // Channel ch's holds are released at once (the scenario's auto_cycle_start, default on).
   bool auto_cycle_start(std::size_t ch) const noexcept { return ch < channels_ && auto_cycle_start_[ch]; }
+  // Where channel ch holds for the caller (nck run --stop-at); no mark: none.
+  void set_stop_at(std::size_t ch, const kernel::StopMark& mark) noexcept {
+    if (ch < stop_at_.size()) stop_at_[ch] = mark;
+  }
   // The scenario has actions still to come.
   bool scenario_pending() const noexcept { return !player_.finished(); }
 
@@ -71,6 +75,7 @@ class MachineSim {
   std::array<bool, config::kMaxChannels> sensor_on_{};  // sampled only once a program needs it
   std::array<bool, config::kMaxChannels> probe_switched_{};  // in the last cycle
   std::array<bool, config::kMaxChannels> auto_cycle_start_{};  // all on (constructor)
+  std::array<kernel::StopMark, config::kMaxChannels> stop_at_{};
   std::size_t channels_ = 0;
   std::size_t spindles_ = 0;
   double t_s_ = 0;  // start of the cycle being computed

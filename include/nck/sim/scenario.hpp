@@ -32,6 +32,7 @@ enum class ActionKind : std::uint8_t {
   variable,             // variable V.E.GAP 1.5       (a channel variable the PLC writes, e.g. a distance sensor)
   cycle_start,          // cycle_start                (releases a program hold: M0 / M1)
   auto_cycle_start,     // auto_cycle_start on|off    (the simulated operator releases every hold at once)
+  single_step,          // single_step on|off         (hold at block ends, P-CHAN-00015)
 };
 
 // The action's name as written in the file (the primary spelling).

@@ -44,6 +44,10 @@ class PathUnit {
   // mapped from program to machine coordinates when a rotation acts, and
   // from Cartesian to machine X/C under #FACE / #CYL. rt
   void place(const Motion& m, double s_mm, std::size_t n_axes) noexcept;
+  // An operator hold at the end of the motion that runs: true once the path
+  // can stop there within its deceleration (it then ends at standstill),
+  // false while it is too fast for that. rt
+  bool end_at_standstill(double dt_s) noexcept;
   // The path stands where it is (a G100 run ended at the probe). rt
   void halt() noexcept { velocity_ = 0; }
   // Program end: standstill, nothing carried on. rt

@@ -25,6 +25,8 @@ class SyncUnit {
   Fault issue_all(SyncPoint phase, Cycle& cy) noexcept;
   // Issues the spindle actions of `phase` held back behind a gear change. rt
   Fault issue_spindle_actions(SyncPoint phase, Cycle& cy) noexcept;
+  // The block outputs functions or commands spindles (single step holds after it).
+  bool has_functions() const noexcept { return !outputs_.empty() || !actions_.empty(); }
   // Spindle actions of the block not issued yet (behind a gear change). rt
   bool actions_left() const noexcept { return next_action_ < actions_.size(); }
   // Checks the waits of `phase`: announces new ones, ends satisfied ones,
