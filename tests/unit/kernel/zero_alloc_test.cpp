@@ -123,6 +123,7 @@ TEST(ZeroAllocation, SeedLinkProgramsRunThroughTickWithoutHeap) {
 TEST(ZeroAllocation, WholeExamplesRunThroughTickWithoutHeap) {
   const Example examples[] = {
       {"examples/mill", {"examples/mill/contour.nc"}},
+      {"examples/mill", {"examples/mill/contour.nc"}, "examples/mill/single_step.plc"},  // hold and release
       {"examples/mill", {"examples/mill/contour_blend.nc"}},
       {"examples/mill", {"examples/mill/offsets.nc"}},
       {"examples/mill", {"examples/mill/coordinates.nc"}},
