@@ -142,6 +142,18 @@
     for (const p of plots) if (p.u !== src && (p.u.scales.x.min !== min || p.u.scales.x.max !== max)) p.u.setScale("x", { min, max });
   }
 
+  // What the shades and vertical marks of a panel mean (only those it shows).
+  function marksLegend(marks, waits) {
+    const kinds = new Set(marks.map((m) => m.kind)), items = [];
+    if (waits.some((w) => w.reason !== "feedhold")) items.push('<span class="shade wait"></span>waiting');
+    if (waits.some((w) => w.reason === "feedhold")) items.push('<span class="shade hold"></span>feedhold');
+    if (kinds.has("speed_reached")) items.push('<span class="mark reached"></span>✓ speed reached');
+    if (kinds.has("gear")) items.push('<span class="mark gear"></span>gear change');
+    if (kinds.has("override")) items.push('<span class="mark override"></span>override changed');
+    if (kinds.has("s")) items.push('<span class="mark speed"></span>S speed command');
+    return items.join(" ");
+  }
+
   function timeplots() {
     const panels = new Map();
     D.series.forEach((s, i) => {
@@ -165,10 +177,13 @@
       const marks = p.meta.spindle != null ? D.marks.filter((m) => m.spindle === p.meta.spindle)
         : p.meta.kind === "velocity" ? D.marks.filter((m) => m.ch === p.meta.ch) : [];
       const waits = waitsFor(p.meta);
+      const legend = marksLegend(marks, waits);
+      if (legend) box.insertAdjacentHTML("beforeend", '<div class="marks-legend">' + legend + "</div>");
       const opts = {
         width, height: 230,
         cursor: { sync: { key: "nck", setSeries: false }, drag: { x: true, y: false } },
-        scales: { x: { time: false } },
+        // a series that never changes gets a range of its own (not ticks of 0 0 0)
+        scales: { x: { time: false }, y: { range: (u, lo, hi) => (hi - lo < 1e-9 ? [lo - 1, hi + 1] : uPlot.rangeNum(lo, hi, 0.1, true)) } },
         axes: [
           { label: "time (s)", grid: { stroke: "#eef0f4" }, ticks: { stroke: "#c9ced8" } },
           { label: unit, size: 70, grid: { stroke: "#eef0f4" }, ticks: { stroke: "#c9ced8" } },
@@ -205,11 +220,23 @@
     const blocks = D.summary.blocks.filter((b) => b.time_s > 0).slice(0, 40).map((b) => [b.ch, esc(base(D.files[b.file])) + ":" + b.line, '<span class="nc">' + esc(lineText(b.file, b.line)) + "</span>", b.count, b.time_s.toFixed(3), (100 * b.time_s / total).toFixed(1) + " %"]);
     $("cycletime").innerHTML =
       "<div><h3>Per tool</h3>" + table(["ch", "tool", "time (s)", "h:mm:ss", "share"], tools, [0, 0, 1, 1, 1]) + "</div>" +
-      "<div><h3>Longest blocks (" + Math.min(40, D.summary.blocks.length) + " of " + D.summary.blocks_total + ")</h3>" +
+      "<div><h3>Longest blocks (" + blocks.length + " of " + D.summary.blocks_total + ")</h3>" +
       table(["ch", "line", "NC text", "runs", "time (s)", "share"], blocks, [0, 0, 0, 1, 1, 1]) + "</div>";
   }
 
   // --- the filterable event table ----------------------------------------
+  // A field as a reader wants it: numbers to 4 decimals at most, a link's
+  // pairs as "slave <- master", other objects as "key value" lists.
+  function fieldText(v) {
+    if (typeof v === "number") return Number.isInteger(v) ? String(v) : String(+v.toFixed(4));
+    if (Array.isArray(v)) return v.map(fieldText).join("; ");
+    if (v && typeof v === "object") {
+      if ("slave" in v && "master" in v) return v.slave + " ← " + v.master + ("ratio" in v && v.ratio !== 1 ? " × " + fieldText(v.ratio) : "");
+      return Object.entries(v).filter(([, x]) => x != null).map(([k, x]) => k + " " + fieldText(x)).join(", ");
+    }
+    return String(v);
+  }
+
   function events() {
     const kinds = [...new Set(D.events.map((e) => e.ev))];
     for (const k of kinds) $("event-kind").insertAdjacentHTML("beforeend", "<option>" + esc(k) + "</option>");
@@ -221,8 +248,8 @@
       D.events.forEach((e, i) => {
         if ((kind && e.ev !== kind) || (q && !texts[i].includes(q))) return;
         if (++matches > 500) return;
-        const rest = Object.entries(e).filter(([k]) => k !== "t" && k !== "ch" && k !== "ev")
-          .map(([k, v]) => "<b>" + esc(k) + "</b> " + esc(typeof v === "object" ? JSON.stringify(v) : v)).join(" &nbsp; ");
+        const rest = Object.entries(e).filter(([k, v]) => k !== "t" && k !== "ch" && k !== "ev" && v != null)
+          .map(([k, v]) => "<b>" + esc(k) + "</b> " + esc(fieldText(v))).join(" &nbsp; ");
         rows.push([e.t.toFixed(4), e.ch || "", esc(e.ev), rest]);
       });
       $("events").innerHTML = table(["t (s)", "ch", "event", "fields"], rows, [1, 0, 0, 0]) +

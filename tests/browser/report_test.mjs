@@ -79,6 +79,28 @@ async function check(browser, c) {
     if (p.points < 2 || p.series.some((n) => n < 2)) fail(name, `plot "${p.title}" has no data (${p.points} points, ${p.series})`);
   }
   ok(name, `${info.plots.length} time plots with data: ${info.plots.map((p) => p.title).join("; ")}`);
+  // issue 31: what a new user tripped over
+  const looks = await page.evaluate(() => {
+    const r = window.nckReport;
+    const blocksHead = [...document.querySelectorAll("#cycletime h3")].map((h) => h.textContent).find((t) => t.startsWith("Longest"));
+    const blocksRows = [...document.querySelectorAll("#cycletime div:nth-child(2) tr")].filter((tr) => tr.querySelector("td")).length;
+    return {
+      eventsText: document.querySelector("#events").textContent,
+      blocksHead, blocksRows,
+      ticks: r.plots.map((p) => ({ title: p.title, values: (p.u.axes[1]._values || []).map(String) })),
+      legends: r.plots.map((p) => ({ title: p.title, marks: p.marks.length + p.waits.length,
+                                     legend: !!p.u.root.parentElement.querySelector(".marks-legend") })),
+    };
+  });
+  if (/\bnull\b|\{"/.test(looks.eventsText)) fail(name, "the event table shows null or raw JSON");
+  else ok(name, "event fields without null or raw JSON");
+  const shown = looks.blocksHead && +looks.blocksHead.match(/\((\d+) of/)[1];
+  if (looks.blocksHead && shown !== looks.blocksRows) fail(name, `"${looks.blocksHead}" over ${looks.blocksRows} rows`);
+  for (const t of looks.ticks)
+    if (new Set(t.values).size !== t.values.length) fail(name, `plot "${t.title}" repeats y tick labels: ${t.values.join(" ")}`);
+  for (const l of looks.legends)
+    if (l.marks && !l.legend) fail(name, `plot "${l.title}" shades or marks without a legend`);
+  ok(name, "block count, y ticks and legends");
   if (info.backplots.length !== c.backplots.length) fail(name, `${info.backplots.length} backplots, expected ${c.backplots.length}`);
   c.backplots.forEach((want, i) => {
     const got = info.backplots[i];
