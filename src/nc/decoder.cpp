@@ -394,6 +394,8 @@ std::optional<double> Decoder::get_variable(std::string_view name) const {
 
 void Decoder::set_kernel_state_reader(const KernelStateReader* reader) { impl_->vars.set_state_reader(reader); }
 
+void Decoder::set_skip_mask(std::uint32_t mask) noexcept { impl_->cfg.skip_mask = mask; }
+
 bool Decoder::set_variable(std::string_view name, double value) {
   ErrorSlot e;
   ExprCtx x{impl_->vars, e, 0};

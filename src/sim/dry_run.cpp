@@ -35,6 +35,7 @@ void DryRun::prepare() {
   if (threaded_) {
     // Started here, once this object has stopped moving.
     if (!prep_thread_) prep_thread_ = std::make_unique<PrepThread>(preps_, *kernel_);
+    for (std::size_t ch = 0; ch < preps_.size(); ++ch) prep_thread_->set_skip_mask(ch, sim_->hli().channel[ch].skip_mask);
     prep_thread_->wait_caught_up(kQueuedAhead);
     prep_thread_->rethrow_failure();
     for (std::size_t ch = 0; ch < preps_.size(); ++ch)
@@ -42,6 +43,7 @@ void DryRun::prepare() {
     return;
   }
   for (std::size_t ch = 0; ch < preps_.size(); ++ch) {
+    preps_[ch].set_skip_mask(sim_->hli().channel[ch].skip_mask);
     // Preparation runs ahead of the kernel: the sensor is on before the
     // kernel takes the first #DIST CTRL ON (planned by a call that progressed).
     if (preps_[ch].feed(kernel_->commands(ch), kernel_->feedback(ch), kernel_->channel_done(ch)) &&

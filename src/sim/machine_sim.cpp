@@ -28,7 +28,14 @@ MachineSim::MachineSim(const config::Machine& m)
   }
 }
 
-void MachineSim::load_scenario(const sim::Scenario& scenario) { player_ = ScenarioPlayer(scenario); }
+void MachineSim::load_scenario(const sim::Scenario& scenario) {
+  player_ = ScenarioPlayer(scenario);
+  // The PLC sets skip levels at time 0 before the program starts: decoding,
+  // which runs ahead of the first cycle, sees them from the first block.
+  for (const sim::ScenarioAction& a : scenario.actions)
+    if (a.kind == sim::ActionKind::skip_mask && a.t_s <= 0 && a.channel >= 1 && a.channel <= channels_)
+      hli_.channel[a.channel - 1u].skip_mask = static_cast<std::uint32_t>(a.value);
+}
 
 void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
   t_s_ = t_s;
@@ -90,6 +97,7 @@ void MachineSim::apply(const sim::ScenarioAction& a, kernel::TickInput& in) noex
     case sim::ActionKind::cycle_start: ch.cycle_start = true; return;
     case sim::ActionKind::auto_cycle_start: auto_cycle_start_[c] = a.on; return;
     case sim::ActionKind::single_step: ch.single_step = a.on; return;
+    case sim::ActionKind::skip_mask: ch.skip_mask = static_cast<std::uint32_t>(a.value); return;
     case sim::ActionKind::silent: plc_.set_silent(a.on); return;
     case sim::ActionKind::handwheel:
       if (a.axis >= 0) in.channels[c].handwheel_mm[static_cast<std::size_t>(a.axis)] += a.value;

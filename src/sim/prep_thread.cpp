@@ -44,6 +44,7 @@ void PrepThread::passes(std::stop_token stop) {
     bool progress = false;
     for (std::size_t ch = 0; ch < n; ++ch) {
       const bool done = done_[ch].load(std::memory_order_acquire);
+      preps_[ch].set_skip_mask(skip_masks_[ch].load(std::memory_order_acquire));
       progress = preps_[ch].feed(kernel_.commands(ch), kernel_.feedback(ch), done) || progress;
       if (preps_[ch].planner().dist_ctrl_programmed()) sensor_[ch].store(true, std::memory_order_release);
     }

@@ -41,6 +41,7 @@ constexpr std::array kActions = {
     ActionSpelling{"cycle_start", ActionKind::cycle_start},
     ActionSpelling{"auto_cycle_start", ActionKind::auto_cycle_start},
     ActionSpelling{"single_step", ActionKind::single_step},
+    ActionSpelling{"skip_mask", ActionKind::skip_mask},
 };
 
 // Parses one line; reports its first problem and returns nothing then.
@@ -74,6 +75,7 @@ class LineParser {
   bool take_spindle_cmd(ScenarioAction& a);
   bool take_handwheel(ScenarioAction& a);
   bool take_variable(ScenarioAction& a);
+  bool take_skip_mask(double& mask);
   bool take_keyword_value(std::string_view key, double& value, bool& seen);
 
   std::span<const Token> toks_;
@@ -188,6 +190,8 @@ bool LineParser::parse_args(ScenarioAction& a) {
       return take_handwheel(a);
     case ActionKind::variable:
       return take_variable(a);
+    case ActionKind::skip_mask:
+      return take_skip_mask(a.value);
   }
   return true;
 }
@@ -270,6 +274,22 @@ bool LineParser::take_percent(double& pct) {
                 fmt::format("'{}' is not an override; write a percentage from 0 to {}",
                             detail::printable(t.text), kMaxOverridePercent));
   pct = *v;
+  return true;
+}
+
+// skip_mask <mask>: levels /1../10 as bits 0..9, decimal or 0x hexadecimal.
+bool LineParser::take_skip_mask(double& mask) {
+  if (!need("the skip mask (e.g. 0x5 for /1 and /3)")) return false;
+  const Token& t = toks_[next_++];
+  std::uint32_t v = 0;
+  const bool hex = t.text.size() > 2 && t.text[0] == '0' && (t.text[1] == 'x' || t.text[1] == 'X');
+  const std::string_view digits = hex ? t.text.substr(2) : t.text;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v, hex ? 16 : 10);
+  if (ec != std::errc{} || end != digits.data() + digits.size() || digits.empty() || v > 0x3FF)
+    return fail(ErrorId::PlcScenarioBadNumber, t.column,
+                fmt::format("'{}' is not a skip mask; write 0 to 1023 (0x3FF): bit 0 = /1 ... bit 9 = /10",
+                            detail::printable(t.text)));
+  mask = v;
   return true;
 }
 

@@ -113,6 +113,9 @@ class Decoder {
   // is not a known kernel variable (or declared program variable).
   std::optional<double> get_variable(std::string_view name) const;
   bool set_variable(std::string_view name, double value);
+  // The active block-skip levels (the HLI's program_block_ignore, facts
+  // C4): they act on the blocks decoded from now on.
+  void set_skip_mask(std::uint32_t mask) noexcept;
   // Kernel state variables come from `reader` (not owned; nullptr: none,
   // as in `nck parse`, where they read 0).
   void set_kernel_state_reader(const KernelStateReader* reader);

@@ -61,6 +61,11 @@ class ChannelPrep {
   bool prepare(const nc::Block& b, kernel::CommandQueue& commands);
 
   bool has_program() const { return decoder_.has_value(); }
+  // The HLI's block-skip levels (/1 = 0x1 ... /10 = 0x200): blocks decoded
+  // from now on skip by them.
+  void set_skip_mask(std::uint32_t mask) noexcept {
+    if (decoder_) decoder_->set_skip_mask(mask);
+  }
   // Everything up to the program end (or the error that stopped decoding)
   // is in the command queue.
   bool done() const { return done_ && window_.empty() && backlog_.empty(); }

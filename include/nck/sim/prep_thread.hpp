@@ -44,6 +44,10 @@ class PrepThread {
   bool sensor_wanted(std::size_t ch) const noexcept {
     return ch < sensor_.size() && sensor_[ch].load(std::memory_order_acquire);
   }
+  // cycle side: the HLI's block-skip levels of channel ch (decoding reads them).
+  void set_skip_mask(std::size_t ch, std::uint32_t mask) noexcept {
+    if (ch < skip_masks_.size()) skip_masks_[ch].store(mask, std::memory_order_release);
+  }
   // Stops the thread; afterwards the preparations may be read from this thread.
   void stop();
   // cycle side: rethrows what ended preparation, if an exception did.
@@ -62,6 +66,7 @@ class PrepThread {
   std::array<std::atomic<bool>, config::kMaxChannels> done_{};    // channel ended (cycle side)
   std::array<std::atomic<bool>, config::kMaxChannels> sensor_{};  // #DIST CTRL programmed (preparation)
   std::array<std::atomic<Idle>, config::kMaxChannels> idle_{};   // why preparation waits (preparation)
+  std::array<std::atomic<std::uint32_t>, config::kMaxChannels> skip_masks_{};  // HLI skip levels (cycle side)
   std::exception_ptr failure_;  // written before failed_ is set
   std::atomic<bool> failed_{false};
   std::jthread thread_;  // last: started once everything above exists

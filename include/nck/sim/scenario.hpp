@@ -33,6 +33,7 @@ enum class ActionKind : std::uint8_t {
   cycle_start,          // cycle_start                (releases a program hold: M0 / M1)
   auto_cycle_start,     // auto_cycle_start on|off    (the simulated operator releases every hold at once)
   single_step,          // single_step on|off         (hold at block ends, P-CHAN-00015)
+  skip_mask,            // skip_mask 0x5              (active block-skip levels /1 /3: program_block_ignore)
 };
 
 // The action's name as written in the file (the primary spelling).

@@ -270,5 +270,24 @@ TEST(ScenarioParse, ChannelVariable) {
   EXPECT_EQ(bad("0 variable " + std::string(40, 'A') + " 1").id, ErrorId::PlcScenarioBadNumber);
 }
 
+// Issue 27: the operator's single step switch and the HLI skip levels.
+TEST(ScenarioParse, SingleStepAndSkipMask) {
+  auto a = one("0 single_step on");
+  EXPECT_EQ(a.kind, ActionKind::single_step);
+  EXPECT_TRUE(a.on);
+  a = one("1.5 skip_mask 0x5");
+  EXPECT_EQ(a.kind, ActionKind::skip_mask);
+  EXPECT_DOUBLE_EQ(a.value, 5);
+  EXPECT_DOUBLE_EQ(one("0 skip_mask 1023").value, 1023);
+  for (const char* text : {"0 skip_mask 1024", "0 skip_mask 0x400", "0 skip_mask -1", "0 skip_mask 0x", "0 skip_mask 1.5",
+                           "0 skip_mask five"}) {
+    const Diagnostic d = bad(text);
+    EXPECT_EQ(d.id, ErrorId::PlcScenarioBadNumber) << text;
+    EXPECT_EQ(d.loc.line, 1u) << text;
+  }
+  EXPECT_EQ(bad("0 skip_mask").id, ErrorId::PlcScenarioMissingArgument);
+  EXPECT_EQ(bad("0 single_step maybe").id, bad("0 feedhold maybe").id);
+}
+
 }  // namespace
 }  // namespace nck::sim
