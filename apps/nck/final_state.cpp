@@ -138,7 +138,9 @@ std::optional<std::string> write_final(const std::string& path, const config::Ma
   json errs = json::array();
   for (const FinalError& e : errors)
     errs.push_back(json{{"id", e.id}, {"ch", e.channel}, {"line", e.line}, {"file", to_utf8(e.file)}, {"msg", to_utf8(e.msg)}});
-  json doc{{"time", time_s},
+  // "format": 2 since nck 0.2 (docs/outputs.md); every earlier field stays as it was
+  json doc{{"format", 2},
+           {"time", time_s},
            {"end", end_reason},
            {"channels", channels},
            {"spindles", spindles},

@@ -26,6 +26,7 @@ TEST(CliPoints, DashWritesEventsTraceOrFinalToStdout) {
   const CliResult final_state = run_nck_raw(run + "--final - 2>/dev/null");
   ASSERT_EQ(final_state.exit_code, 0);
   EXPECT_EQ(nlohmann::json::parse(final_state.output)["end"], "program_end");
+  EXPECT_EQ(nlohmann::json::parse(final_state.output)["format"], 2);  // issue 31: the layout's version
   // the summary went to stderr, not into the data
   EXPECT_EQ(final_state.output.find("simulated"), std::string::npos);
 }
