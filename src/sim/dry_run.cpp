@@ -35,7 +35,8 @@ void DryRun::prepare() {
   if (threaded_) {
     // Started here, once this object has stopped moving.
     if (!prep_thread_) prep_thread_ = std::make_unique<PrepThread>(preps_, *kernel_);
-    for (std::size_t ch = 0; ch < preps_.size(); ++ch) prep_thread_->set_skip_mask(ch, sim_->hli().channel[ch].skip_mask);
+    for (std::size_t ch = 0; ch < preps_.size() && sim_->skip_levels_used(); ++ch)
+      prep_thread_->set_skip_mask(ch, sim_->hli().channel[ch].skip_mask);
     prep_thread_->wait_caught_up(kQueuedAhead);
     prep_thread_->rethrow_failure();
     for (std::size_t ch = 0; ch < preps_.size(); ++ch)
@@ -43,7 +44,7 @@ void DryRun::prepare() {
     return;
   }
   for (std::size_t ch = 0; ch < preps_.size(); ++ch) {
-    preps_[ch].set_skip_mask(sim_->hli().channel[ch].skip_mask);
+    if (sim_->skip_levels_used()) preps_[ch].set_skip_mask(sim_->hli().channel[ch].skip_mask);
     // Preparation runs ahead of the kernel: the sensor is on before the
     // kernel takes the first #DIST CTRL ON (planned by a call that progressed).
     if (preps_[ch].feed(kernel_->commands(ch), kernel_->feedback(ch), kernel_->channel_done(ch)) &&
@@ -70,7 +71,6 @@ bool DryRun::done() const noexcept {
 }
 
 bool DryRun::held_for_good() const noexcept {
-  if (sim_->scenario_pending()) return false;
   bool any = false;
   for (std::size_t ch = 0; ch < preps_.size(); ++ch) {
     if (!preps_[ch].has_program()) continue;
@@ -82,7 +82,7 @@ bool DryRun::held_for_good() const noexcept {
     if (sim_->auto_cycle_start(ch)) return false;
     any = true;
   }
-  return any;
+  return any && !sim_->scenario_pending();
 }
 
 ChannelSnapshot DryRun::snapshot(std::size_t ch) const {

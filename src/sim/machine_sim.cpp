@@ -32,9 +32,12 @@ void MachineSim::load_scenario(const sim::Scenario& scenario) {
   player_ = ScenarioPlayer(scenario);
   // The PLC sets skip levels at time 0 before the program starts: decoding,
   // which runs ahead of the first cycle, sees them from the first block.
-  for (const sim::ScenarioAction& a : scenario.actions)
-    if (a.kind == sim::ActionKind::skip_mask && a.t_s <= 0 && a.channel >= 1 && a.channel <= channels_)
+  for (const sim::ScenarioAction& a : scenario.actions) {
+    if (a.kind != sim::ActionKind::skip_mask) continue;
+    skip_levels_used_ = true;
+    if (a.t_s <= 0 && a.channel >= 1 && a.channel <= channels_)
       hli_.channel[a.channel - 1u].skip_mask = static_cast<std::uint32_t>(a.value);
+  }
 }
 
 void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {

@@ -58,6 +58,8 @@ class MachineSim {
   void set_stop_at(std::size_t ch, const kernel::StopMark& mark) noexcept {
     if (ch < stop_at_.size()) stop_at_[ch] = mark;
   }
+  // The scenario sets block-skip levels (until then decoding needs no mask).
+  bool skip_levels_used() const noexcept { return skip_levels_used_; }
   // The scenario has actions still to come.
   bool scenario_pending() const noexcept { return !player_.finished(); }
 
@@ -80,6 +82,7 @@ class MachineSim {
   std::size_t spindles_ = 0;
   double t_s_ = 0;  // start of the cycle being computed
   bool handwheel_turned_ = false;  // in the last read: clear its travel in the next
+  bool skip_levels_used_ = false;  // a skip_mask line was loaded
   PlcSim::AckList acks_;
 };
 

@@ -23,11 +23,6 @@ bool HoldUnit::wanted(const Command& c, const ChannelInput& in, bool has_functio
   return mode_ == 0 && (has_functions || c.is<Dwell>());
 }
 
-void HoldUnit::follow(const Command& c, const ChannelInput& in, bool has_functions, PathUnit& path,
-                      double dt_s) noexcept {
-  if (!committed_ && wanted(c, in, has_functions)) committed_ = path.end_at_standstill(dt_s);
-}
-
 std::optional<StateReason> HoldUnit::at_block_end(const Command& c, const ChannelInput& in, bool has_functions,
                                                   bool standing) noexcept {
   const bool committed = committed_;

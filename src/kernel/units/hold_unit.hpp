@@ -24,7 +24,11 @@ class HoldUnit {
   void start_block(const Command& c, const StopMark& mark) noexcept;
   // Every cycle of motion c, before its step: once a hold is wanted and the
   // path can stop at this block's end, it will. rt
-  void follow(const Command& c, const ChannelInput& in, bool has_functions, PathUnit& path, double dt_s) noexcept;
+  // (Inline: nothing to do in nearly every cycle.)
+  void follow(const Command& c, const ChannelInput& in, bool has_functions, PathUnit& path, double dt_s) noexcept {
+    if (committed_ || !(in.single_step || mark_pending_ || in.stop_at.kind == StopMark::Kind::now)) return;
+    if (wanted(c, in, has_functions)) committed_ = path.end_at_standstill(dt_s);
+  }
   // Block c ended (`standing`: the path stands): why the channel holds
   // now, if it does. rt
   std::optional<StateReason> at_block_end(const Command& c, const ChannelInput& in, bool has_functions,
