@@ -35,8 +35,8 @@ void DryRun::prepare() {
   if (threaded_) {
     // Started here, once this object has stopped moving.
     if (!prep_thread_) prep_thread_ = std::make_unique<PrepThread>(preps_, *kernel_);
-    for (std::size_t ch = 0; ch < preps_.size() && sim_->skip_levels_used(); ++ch)
-      prep_thread_->set_skip_mask(ch, sim_->hli().channel[ch].skip_mask);
+    if (sim_->skip_levels_used())
+      for (std::size_t ch = 0; ch < preps_.size(); ++ch) prep_thread_->set_skip_mask(ch, sim_->hli().channel[ch].skip_mask);
     prep_thread_->wait_caught_up(kQueuedAhead);
     prep_thread_->rethrow_failure();
     for (std::size_t ch = 0; ch < preps_.size(); ++ch)

@@ -4,15 +4,10 @@
 
 namespace nck::spindle {
 
-double wrap_modulo(double pos_deg, double lo_deg, double hi_deg) noexcept {
+double detail::wrap_modulo_by_fmod(double pos_deg, double lo_deg, double hi_deg) noexcept {
   const double range = hi_deg - lo_deg;
   if (!(range > 0) || !std::isfinite(pos_deg) || !std::isfinite(range)) return lo_deg;
-  // A turning spindle leaves the range by less than one turn per cycle:
-  // one subtraction or addition gives what fmod gives, bit for bit (x - range
-  // is exact for x in [range, 2 range), and fmod returns x itself inside
-  // (-range, range)), without its cost.
-  const double d = pos_deg - lo_deg;
-  double r = d >= 0 && d < range ? d : d >= range && d < 2 * range ? d - range : std::fmod(d, range);
+  double r = std::fmod(pos_deg - lo_deg, range);
   if (r < 0) r += range;
   if (r >= range) r = 0;  // fmod rounding at the upper edge
   return lo_deg + r;

@@ -62,15 +62,13 @@ double SpindleAxis::limit_rotation_speed(double speed_deg_s) const noexcept {
 }
 
 double SpindleAxis::rotation_speed_deg_s() const noexcept {
-  RotationMemo& m = rotation_memo_;
-  const bool same = m.valid && m.gear == gear_ && m.programmed_rpm == speed_.programmed_rpm &&
-                    m.override_pct == speed_.override_pct && m.ignore_override == speed_.ignore_override &&
-                    m.tool_min_rpm == tool_.active.vb_min_rpm && m.tool_max_rpm == tool_.active.vb_max_rpm;
-  if (!same) {
-    m = {speed_.programmed_rpm, speed_.override_pct, tool_.active.vb_min_rpm, tool_.active.vb_max_rpm,
-         speed_.ignore_override, gear_, compute_rotation_speed_deg_s(), true};
+  const RotationInputs in{speed_.programmed_rpm, speed_.override_pct, tool_.active.vb_min_rpm,
+                          tool_.active.vb_max_rpm, speed_.ignore_override, gear_};
+  if (!(rotation_seen_ && *rotation_seen_ == in)) {
+    rotation_deg_s_ = compute_rotation_speed_deg_s();
+    rotation_seen_ = in;
   }
-  return m.speed_deg_s;
+  return rotation_deg_s_;
 }
 
 double SpindleAxis::compute_rotation_speed_deg_s() const noexcept {

@@ -92,8 +92,6 @@ struct Command {
   bool is() const noexcept { return std::holds_alternative<T>(action); }
   template <class T>
   const T* as() const noexcept { return std::get_if<T>(&action); }
-  template <class T>
-  T* as() noexcept { return std::get_if<T>(&action); }
 };
 
 static_assert(sizeof(Command) <= 512, "a queued command stays small (docs/performance.md)");

@@ -63,10 +63,8 @@ class ChannelPrep {
   bool has_program() const { return decoder_.has_value(); }
   // The HLI's block-skip levels (/1 = 0x1 ... /10 = 0x200): blocks decoded
   // from now on skip by them.
-  void set_skip_mask(std::uint32_t mask) noexcept {  // inline: asked every cycle
-    if (mask == skip_mask_ || !decoder_) return;
-    skip_mask_ = mask;
-    decoder_->set_skip_mask(mask);
+  void set_skip_mask(std::uint32_t mask) noexcept {
+    if (decoder_) decoder_->set_skip_mask(mask);
   }
   // Everything up to the program end (or the error that stopped decoding)
   // is in the command queue.
@@ -118,7 +116,6 @@ class ChannelPrep {
     bool operator==(const Idle&) const = default;
   };
   std::optional<Idle> idle_;
-  std::uint32_t skip_mask_ = 0;  // the decoder's block-skip levels
   std::uint32_t last_main_line_ = 0;  // of the main program's last block decoded
   PlanStore* store_ = nullptr;
   bool record_frames_ = false;  // and the last map put there:

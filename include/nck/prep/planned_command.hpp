@@ -5,7 +5,7 @@
 // PlannedCommand and its attachments (command_packer.hpp).
 #include <array>
 #include <cstdint>
-#include <limits>
+#include <optional>
 
 #include "nck/core/diagnostic.hpp"
 #include "nck/core/fixed_vector.hpp"

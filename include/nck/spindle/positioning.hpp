@@ -12,13 +12,17 @@ namespace nck::spindle {
 
 enum class Direction : std::int8_t { none = 0, positive = 1, negative = -1 };  // M3 +, M4 -
 
-// pos wrapped into [lo, hi); returns lo when the range is empty or pos not finite. // rt
-double wrap_modulo(double pos_deg, double lo_deg, double hi_deg) noexcept;
-// The same, inline for the common case of a position less than one turn
-// outside the range (a turning spindle, every cycle): the result is
-// wrap_modulo's, bit for bit (fmod returns x itself inside (-range, range),
-// and x - range is exact for x in [range, 2 range)). // rt
-inline double wrap_modulo_near(double pos_deg, double lo_deg, double hi_deg) noexcept {
+namespace detail {
+// wrap_modulo by its definition, through fmod.
+double wrap_modulo_by_fmod(double pos_deg, double lo_deg, double hi_deg) noexcept;
+}  // namespace detail
+
+// pos wrapped into [lo, hi); returns lo when the range is empty or pos not
+// finite. A turning spindle leaves its range by less than a turn per cycle:
+// inline, one addition or subtraction gives fmod's result bit for bit (fmod
+// returns x itself inside (-range, range), and x - range is exact for x in
+// [range, 2 range)); anything else goes through fmod. // rt
+inline double wrap_modulo(double pos_deg, double lo_deg, double hi_deg) noexcept {
   const double range = hi_deg - lo_deg, d = pos_deg - lo_deg;
   if (range > 0 && range < 1e300) {
     if (d >= 0 && d < range) return lo_deg + d;
@@ -28,7 +32,7 @@ inline double wrap_modulo_near(double pos_deg, double lo_deg, double hi_deg) noe
       return lo_deg + (r >= range ? 0.0 : r);
     }
   }
-  return wrap_modulo(pos_deg, lo_deg, hi_deg);
+  return detail::wrap_modulo_by_fmod(pos_deg, lo_deg, hi_deg);
 }
 
 // False when a preferred direction is set and `dir` is the other one. // rt

@@ -152,14 +152,14 @@ class SpindleAxis {
   SpindleStatus status_{};
   // rotation_speed_deg_s() for the inputs it saw last: asked for twice a
   // cycle, while its inputs change rarely.
-  struct RotationMemo {
+  struct RotationInputs {
     double programmed_rpm = 0, override_pct = 0, tool_min_rpm = 0, tool_max_rpm = 0;
     bool ignore_override = false;
     std::uint32_t gear = 0;
-    double speed_deg_s = 0;
-    bool valid = false;
+    bool operator==(const RotationInputs&) const = default;
   };
-  mutable RotationMemo rotation_memo_{};
+  mutable std::optional<RotationInputs> rotation_seen_;
+  mutable double rotation_deg_s_ = 0;
   std::optional<StatusInputs> judged_;  // the inputs of the speed status now shown
 };
 

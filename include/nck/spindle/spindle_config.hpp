@@ -35,7 +35,7 @@ struct GearConfig {
   // Width of the modulo range; 360 when the parameters give none. // rt
   double range_deg() const noexcept;
   // pos_deg wrapped into [modulo_low_deg, modulo_high_deg). // rt
-  double wrap(double pos_deg) const noexcept { return wrap_modulo_near(pos_deg, modulo_low_deg, modulo_high_deg); }
+  double wrap(double pos_deg) const noexcept { return wrap_modulo(pos_deg, modulo_low_deg, modulo_high_deg); }
 };
 
 struct SpindleConfig {

@@ -15,14 +15,6 @@ void HoldUnit::start_block(const Command& c, const StopMark& mark) noexcept {
   }
 }
 
-// P-CHAN-00015: -1 motion blocks, 0 also blocks with functions or a dwell, 1 every block.
-bool HoldUnit::wanted(const Command& c, const ChannelInput& in, bool has_functions) const noexcept {
-  if (mark_pending_ || in.stop_at.kind == StopMark::Kind::now) return true;
-  if (!in.single_step) return false;
-  if (mode_ > 0 || c.is<Motion>()) return true;
-  return mode_ == 0 && (has_functions || c.is<Dwell>());
-}
-
 std::optional<StateReason> HoldUnit::at_block_end(const Command& c, const ChannelInput& in, bool has_functions,
                                                   bool standing) noexcept {
   const bool committed = committed_;
@@ -30,9 +22,9 @@ std::optional<StateReason> HoldUnit::at_block_end(const Command& c, const Channe
   if (!wanted(c, in, has_functions)) return std::nullopt;
   // A motion holds where it was planned to stand; anything else only where the path stands.
   if (c.is<Motion>() ? !committed : !standing) return std::nullopt;
-  at_mark_ = mark_pending_ || in.stop_at.kind == StopMark::Kind::now;
+  holding_at_mark_ = at_mark(in);
   mark_pending_ = false;
-  return at_mark_ ? StateReason::stop_at : StateReason::single_step;
+  return holding_at_mark_ ? StateReason::stop_at : StateReason::single_step;
 }
 
 }  // namespace nck::kernel

@@ -26,8 +26,7 @@ class HoldUnit {
   // path can stop at this block's end, it will. rt
   // (Inline: nothing to do in nearly every cycle.)
   void follow(const Command& c, const ChannelInput& in, bool has_functions, PathUnit& path, double dt_s) noexcept {
-    if (committed_ || !(in.single_step || mark_pending_ || in.stop_at.kind == StopMark::Kind::now)) return;
-    if (wanted(c, in, has_functions)) committed_ = path.end_at_standstill(dt_s);
+    if (!committed_ && wanted(c, in, has_functions)) committed_ = path.end_at_standstill(dt_s);
   }
   // Block c ended (`standing`: the path stands): why the channel holds
   // now, if it does. rt
@@ -39,22 +38,32 @@ class HoldUnit {
   // a stop-at mark only once the caller took the mark away (a live session
   // clears it with the start). rt
   bool released(const ChannelInput& in) noexcept {
-    if (!in.cycle_start || released_now_ || (at_mark_ && in.stop_at.kind != StopMark::Kind::none)) return false;
-    at_mark_ = false;
+    if (!in.cycle_start || released_now_ || (holding_at_mark_ && in.stop_at.kind != StopMark::Kind::none)) return false;
+    holding_at_mark_ = false;
     released_now_ = true;
     return true;
   }
   // Program end or reset: nothing pending.
-  void reset() noexcept { mark_pending_ = committed_ = at_mark_ = false; }
+  void reset() noexcept { mark_pending_ = committed_ = holding_at_mark_ = false; }
 
  private:
-  bool wanted(const Command& c, const ChannelInput& in, bool has_functions) const noexcept;
+  // The block that runs is the stop-at mark's (or one after it).
+  bool at_mark(const ChannelInput& in) const noexcept {
+    return mark_pending_ || in.stop_at.kind == StopMark::Kind::now;
+  }
+  // P-CHAN-00015: -1 motion blocks, 0 also blocks with functions or a dwell, 1 every block.
+  bool wanted(const Command& c, const ChannelInput& in, bool has_functions) const noexcept {
+    if (at_mark(in)) return true;
+    if (!in.single_step) return false;
+    if (mode_ > 0 || c.is<Motion>()) return true;
+    return mode_ == 0 && (has_functions || c.is<Dwell>());
+  }
 
   std::int8_t mode_ = 0;
   std::uint64_t blocks_ = 0;   // blocks started (block:K of a stop-at mark)
   bool mark_pending_ = false;  // the stop-at mark's block ran: hold at the first block end possible
   bool committed_ = false;     // the motion that runs ends at standstill for a hold
-  bool at_mark_ = false;       // the channel holds at its stop-at mark
+  bool holding_at_mark_ = false;  // the channel holds at its stop-at mark
   bool released_now_ = false;  // a hold was released in this cycle
 };
 

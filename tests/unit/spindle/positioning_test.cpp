@@ -75,9 +75,9 @@ TEST(Positioning, ZeroSpeed) {
   EXPECT_FALSE(zero_speed(std::nan(""), 0.1));
 }
 
-// The inline fast path gives wrap_modulo's result bit for bit (the traces
-// of every turning spindle depend on it), in and around the range.
-TEST(Positioning, WrapNearIsWrapModuloBitForBit) {
+// The inline fast path gives the fmod definition's result bit for bit (the
+// traces of every turning spindle depend on it), in and around the range.
+TEST(Positioning, WrapModuloIsItsFmodDefinitionBitForBit) {
   const double ranges[][2] = {{0, 360}, {-180, 180}, {10.5, 370.5}, {0, 0.7}, {-1e-3, 359.999}};
   std::uint64_t state = 12345;
   auto next = [&] {  // a small LCG: reproducible, no library randomness
@@ -88,15 +88,15 @@ TEST(Positioning, WrapNearIsWrapModuloBitForBit) {
     const double width = r[1] - r[0];
     for (int i = 0; i < 20000; ++i) {
       const double x = r[0] + (next() * 5.0 - 2.0) * width;  // from two turns below to three above
-      const double a = wrap_modulo(x, r[0], r[1]), b = wrap_modulo_near(x, r[0], r[1]);
+      const double a = detail::wrap_modulo_by_fmod(x, r[0], r[1]), b = wrap_modulo(x, r[0], r[1]);
       ASSERT_EQ(std::memcmp(&a, &b, sizeof a), 0) << x << " in [" << r[0] << ", " << r[1] << ")";
     }
     for (double edge : {r[0], r[1], r[0] - width, r[1] + width, std::nextafter(r[1], r[0]), -0.0}) {
-      const double a = wrap_modulo(edge, r[0], r[1]), b = wrap_modulo_near(edge, r[0], r[1]);
+      const double a = detail::wrap_modulo_by_fmod(edge, r[0], r[1]), b = wrap_modulo(edge, r[0], r[1]);
       EXPECT_EQ(std::memcmp(&a, &b, sizeof a), 0) << edge;
     }
   }
-  EXPECT_EQ(wrap_modulo_near(std::nan(""), 0, 360), 0);
+  EXPECT_EQ(wrap_modulo(std::nan(""), 0, 360), 0);
 }
 
 }  // namespace
