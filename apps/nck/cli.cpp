@@ -19,6 +19,7 @@
 #include "nck/core/edit_distance.hpp"
 #include "nck/core/diagnostic.hpp"
 #include "run_command.hpp"
+#include "start_at.hpp"
 #include "stop_request.hpp"
 
 namespace nck::app {
@@ -99,18 +100,27 @@ CLI::Validator number_at_least(double min, bool whole) {
       whole ? fmt::format("INTEGER >= {}", min) : fmt::format("NUMBER >= {}", min));
 }
 
-// --start-mode: a P-CHAN-00508 symbol; SV (block search) belongs to a
-// block search, which nck does not have.
+// --start-mode: a P-CHAN-00508 symbol (SV only with a block search).
 CLI::Validator start_mode_validator() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
         const std::string mode = config::canonical_start_mode(text);
         if (mode.empty()) return fmt::format("'{}' is no start mode of fct_condition (P-CHAN-00508)", text);
-        if (mode == "SV") return "SV / BLOCK_SEARCH applies only during a block search, which nck does not have";
         text = mode;
         return {};
       },
       "MODE");
+}
+
+// A block-search mark: parse(text) must accept it.
+template <class Parse>
+CLI::Validator mark_validator(Parse parse, const char* forms) {
+  return CLI::Validator(
+      [parse, forms](std::string& text) -> std::string {
+        if (parse(text)) return {};
+        return fmt::format("'{}' is no block-search mark: {}", text, forms);
+      },
+      "MARK");
 }
 
 CLI::Validator stop_at_validator() {
@@ -121,6 +131,32 @@ CLI::Validator stop_at_validator() {
                            text);
       },
       "MARK");
+}
+
+// --start-at N<n>[:pass][@prog], --start-at-block K, --start-at-offset
+// BYTES[:pass][@prog] (one of them) and --covered PCT.
+void add_block_search_options(CLI::App& runc, RunOptions& run) {
+  auto* n = runc.add_option_function<std::string>(
+                    "--start-at", [&run](const std::string& t) { run.start_at = parse_start_at(t); },
+                    "block search: run without motion up to block N<n>[:<pass>][@<program>], return to the "
+                    "contour and go on from there")
+                ->check(mark_validator(parse_start_at, "N<n>[:<pass>][@<program>], e.g. N100, N100:2@sub.nc"));
+  auto* k = runc.add_option_function<std::string>(
+                    "--start-at-block", [&run](const std::string& t) { run.start_at = parse_start_at_block(t); },
+                    "block search to the K-th NC row read (block counter: comment and empty rows, loop passes "
+                    "and subroutine rows count)")
+                ->check(mark_validator(parse_start_at_block, "a whole number >= 1"))
+                ->excludes(n);
+  runc.add_option_function<std::string>(
+          "--start-at-offset", [&run](const std::string& t) { run.start_at = parse_start_at_offset(t); },
+          "block search to the block at byte offset BYTES[:<pass>][@<program>] of the main program (or <program>)")
+      ->check(mark_validator(parse_start_at_offset, "BYTES[:<pass>][@<program>]"))
+      ->excludes(n)
+      ->excludes(k);
+  runc.add_option_function<double>(
+          "--covered", [&run](double pct) { run.covered_pct = pct; },
+          "with a block search: the share of the restart block's path already done, 0..100 %")
+      ->check(CLI::Range(0.0, 100.0));
 }
 
 }  // namespace
@@ -163,6 +199,7 @@ int main_cli(int argc, char** argv) {
           "--stop-at", [&run](const std::string& text) { run.stop_at = parse_stop_at(text); },
           "end the run where this block ends: N<n>, line:<L>, block:<K> or event:<kind> (end reason stop_at)")
       ->check(stop_at_validator());
+  add_block_search_options(*runc, run);
   runc->add_option("--cycles", run.cycles, "search DIR for L CYCLE files (after the machine's cycle_path[i]); repeat")
       ->allow_extra_args(false);
 

@@ -90,6 +90,13 @@ std::optional<sim::Scenario> load_scenario(const std::string& path, const config
   return sc;
 }
 
+// The block search asked for, with the covered share in per mille.
+std::optional<prep::SearchMark> search_of(const RunOptions& opt) {
+  std::optional<prep::SearchMark> m = opt.start_at;
+  if (m && opt.covered_pct) m->covered_permille = *opt.covered_pct * 10.0;
+  return m;
+}
+
 // Why the loop stopped before every channel ended, if it did.
 std::optional<kernel::EndReason> run_loop(sim::DryRun& run, const RunOptions& opt, const RunNames& names,
                                           RunOutputs& out) {
@@ -225,7 +232,19 @@ int run_simulation(const RunOptions& opt) {
   config::LoadResult loaded = config::load_machine(opt.machine);
   if (!print_load_diagnostics(loaded)) return 2;
   for (const std::string& dir : opt.cycles) loaded.machine->cycle_paths.emplace_back(dir);
-  for (config::ChannelConfig& c : loaded.machine->channels) c.start_mode = opt.start_mode;
+  if (opt.covered_pct && !opt.start_at) {
+    fmt::print(stderr, "nck: error {}: --covered belongs to a block search: give --start-at, --start-at-block or "
+               "--start-at-offset\n", number(ErrorId::AppBadUsage));
+    return 2;
+  }
+  if (config::canonical_start_mode(opt.start_mode) == "SV" && !opt.start_at) {
+    fmt::print(stderr, "nck: error {}: --start-mode SV belongs to a block search: give --start-at, "
+               "--start-at-block or --start-at-offset\n", number(ErrorId::AppBadUsage));
+    return 2;
+  }
+  // A searched program runs in the block-search start mode (P-CHAN-00508 SV) throughout.
+  const std::string start_mode = !opt.start_mode.empty() ? opt.start_mode : opt.start_at ? "SV" : "ISG_STANDARD";
+  for (config::ChannelConfig& c : loaded.machine->channels) c.start_mode = start_mode;
   const config::Machine& m = *loaded.machine;
   if (opt.programs.empty() || opt.programs.size() > m.channels.size()) {
     fmt::print(stderr, "nck: error 940001: {} program(s) given for {} channel(s); give one per channel\n",
@@ -233,7 +252,7 @@ int run_simulation(const RunOptions& opt) {
     return 2;
   }
   std::vector<std::filesystem::path> programs(opt.programs.begin(), opt.programs.end());
-  auto created = sim::DryRun::create(m, programs, {opt.clamp_index, !opt.report.empty(), opt.prep_thread, &stop_flag()});
+  auto created = sim::DryRun::create(m, programs, {opt.clamp_index, !opt.report.empty(), opt.prep_thread, &stop_flag(), search_of(opt)});
   if (!created) {
     fmt::print(stderr, "{}\n", format(created.error()));
     return 2;

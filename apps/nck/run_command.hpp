@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "nck/prep/block_search.hpp"
 #include "stop_at.hpp"
 
 namespace nck::app {
@@ -22,7 +23,11 @@ struct RunOptions {
   bool prep_thread = false;  // preparation in a thread of its own
   bool progress = true;       // on a terminal only
   std::vector<std::string> cycles;  // --cycles DIR: searched after startup.lis cycle_path[i]
-  std::string start_mode = "ISG_STANDARD";  // --start-mode: P-CHAN-00508 condition of this run
+  // --start-mode: P-CHAN-00508 condition of this run; empty: ISG_STANDARD,
+  // or SV with a block search
+  std::string start_mode;
+  std::optional<prep::SearchMark> start_at;  // --start-at / -block / -offset: block search in channel 1
+  std::optional<double> covered_pct;         // --covered: of the restart block's path, 0..100 %
   std::optional<StopAt> stop_at;            // --stop-at: where the run ends
 };
 

@@ -135,7 +135,7 @@ struct AttachmentSorter {
 // The queue's front command starts (it leaves the queue after this).
 void Channel::start(Cycle& cy) noexcept {
   current_ = commands_->front();
-  if (state_ == ProgramState::idle) set_state(ProgramState::running, StateReason::start, cy);
+  enter_restart_state(cy);
   active_ = true;
   phase_ = Phase::pre_wait;
   if (current_.emit_block_event) {
@@ -253,7 +253,9 @@ void Channel::end_block(Cycle& cy) noexcept {
   const End* end = current_.as<End>();
   if (end && dist_.wind_down()) return;
   active_ = false;
-  if (const Hold* hold = current_.as<Hold>()) {
+  if (current_.restart != Restart::none) {
+    leave_restart_state(cy);
+  } else if (const Hold* hold = current_.as<Hold>()) {
     stop_program(*hold, cy);
   } else if (end) {
     end_program(end->reason, cy);
@@ -268,6 +270,26 @@ void Channel::stop_program(const Hold& hold, Cycle& cy) noexcept {
   if (hold.optional_stop && !cy.in.optional_stop) return;
   cy.sink.emit(cy.event(EventKind::stop));
   set_state(ProgramState::hold, hold.optional_stop ? StateReason::m1 : StateReason::m0, cy);
+}
+
+// A command starts: the program state it begins (block search: searching,
+// then returning to the contour).
+void Channel::enter_restart_state(Cycle& cy) noexcept {
+  switch (current_.restart) {
+    case Restart::search_begins: set_state(ProgramState::searching, StateReason::block_search, cy); break;
+    case Restart::returns:
+    case Restart::returns_no_hold: set_state(ProgramState::returning, StateReason::block_search, cy); break;
+    case Restart::none:
+      if (state_ == ProgramState::idle) set_state(ProgramState::running, StateReason::start, cy);
+      break;
+  }
+}
+
+// After the return to the contour the channel holds for cycle start (HLI:
+// unless no_hold_at_restart); the restart's other commands hold nowhere.
+void Channel::leave_restart_state(Cycle& cy) noexcept {
+  if (current_.restart == Restart::returns) set_state(ProgramState::hold, StateReason::block_search, cy);
+  else if (current_.restart == Restart::returns_no_hold) set_state(ProgramState::running, StateReason::block_search, cy);
 }
 
 void Channel::set_state(ProgramState to, StateReason why, Cycle& cy) noexcept {

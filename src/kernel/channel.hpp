@@ -109,6 +109,9 @@ class Channel {
   void raise(ErrorId id, std::uint32_t message, Cycle& cy) noexcept;
   // Enters program state `to` (a `state` event when it changes).
   void set_state(ProgramState to, StateReason why, Cycle& cy) noexcept;
+  // Block search's restart commands: the states they enter and leave.
+  void enter_restart_state(Cycle& cy) noexcept;
+  void leave_restart_state(Cycle& cy) noexcept;
   // A programmed stop that applies holds the channel until cycle start.
   void stop_program(const Hold& hold, Cycle& cy) noexcept;
 

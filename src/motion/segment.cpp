@@ -108,6 +108,20 @@ void Segment::point_at(double s_mm, AxisVector& out) const noexcept {
   }
 }
 
+Segment Segment::remainder(double s_mm) const noexcept {
+  const double f = fraction(s_mm);
+  Segment r = *this;
+  point_at(s_mm, r.start_);
+  r.length_mm_ = length_mm_ * (1.0 - f);
+  if (kind_ == SegmentKind::arc) {
+    r.angle_start_rad_ = angle_start_rad_ + f * sweep_rad_;
+    r.sweep_rad_ = sweep_rad_ * (1.0 - f);
+    r.r_start_mm_ = r_start_mm_ + f * (r_end_mm_ - r_start_mm_);
+    r.plane_len_mm_ = plane_len_mm_ * (1.0 - f);
+  }
+  return r;
+}
+
 void Segment::tangent_at(double s_mm, AxisVector& out) const noexcept {
   if (!(length_mm_ > 0.0)) {
     std::fill_n(out.begin(), n_axes_, 0.0);

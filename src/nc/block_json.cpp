@@ -164,6 +164,8 @@ json to_json(const HashCommand& h) {
 json to_json(const Block& b, const Decoder& d) {
   json j{{"file", d.file_name(b.file_id)}, {"line", b.line}};
   j["n"] = b.n ? json(*b.n) : json(nullptr);
+  j["offset"] = b.offset;  // block search type 1 (nck run --start-at-offset)
+  j["row"] = b.row;        // block search type 3 (nck run --start-at-block)
   json axes = json::object();
   const auto& names = d.config().axis_names;
   for (std::size_t i = 0; i < b.axes.size(); ++i)

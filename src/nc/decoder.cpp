@@ -171,6 +171,7 @@ Decoder::Result Decoder::Impl::next_block() {
       }
       continue;
     }
+    ++rows_read;
     if (f.reader->block_too_long()) {
       report(ErrorId::NcBlockTooLong, cfg.max_block_chars,
              fmt::format("the block has more than {} characters; split it", cfg.max_block_chars));
@@ -324,6 +325,9 @@ Outcome Decoder::Impl::run_words(Cursor& c, std::optional<std::int64_t> n, Block
   if (!apply_words(words, bctx, modal, out)) return Outcome::error;
   out.file_id = f.file_id;
   out.line = f.reader->block_pos().line;
+  out.offset = f.reader->block_pos().offset;
+  out.offset_end = f.reader->next_pos().offset;
+  out.row = rows_read;
   out.modal = modal;
   out.depth = static_cast<std::uint8_t>(frames.size() - 1);
   if (out.program_end) {

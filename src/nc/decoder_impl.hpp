@@ -92,6 +92,7 @@ struct Decoder::Impl {
 
   bool fatal = false;        // decoding cannot go on
   bool ended = false;        // Status::end reached
+  std::uint64_t rows_read = 0;  // NC rows read so far (Block::row)
   bool end_pending = false;  // M30 block handed out, end comes next
   bool return_pending = false;  // M17 block handed out, return comes next
   bool comment_mode = false;    // inside #COMMENT BEGIN .. END

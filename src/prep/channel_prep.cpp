@@ -43,6 +43,14 @@ ChannelPrep::ChannelPrep(const config::Machine& m, std::size_t ch, const std::fi
   decoder_->set_kernel_state_reader(planner_.get());
   for (const auto& [name, value] : initial_variables(m, ch, options.clamp_index))
     (void)decoder_->set_variable(name, value);
+  if (options.search) {
+    // The axes stand where the planner starts; the channel learns at once that it searches.
+    search_.emplace(*options.search, planner_->planned_mcs());
+    PlannedBlock b;
+    (void)b.push_back(SearchRun::begins());
+    (void)window_.push(b);
+    flushing_ = true;
+  }
 }
 
 ChannelPrep::~ChannelPrep() = default;
@@ -95,9 +103,19 @@ void ChannelPrep::feed_blocks(kernel::CommandQueue& commands, kernel::FeedbackQu
     ++decoded_;
     if (r.status == nc::Decoder::Status::block) {
       if (r.block.depth == 0) last_main_line_ = r.block.line;
+      if (search_ && r.block.program_end) {
+        search_not_found(r.block, commands);
+        continue;
+      }
+      if (search_) search_->decoded(r.block, decoder_->file_name(r.block.file_id));
+      const bool searched = search_.has_value();
       (void)prepare(r.block, commands);
       done_ = r.block.program_end;
       awaiting_feedback_ = needs_feedback(r.block);
+      if (awaiting_feedback_ && searched && search_) {
+        take_search_feedback(r.block);
+        awaiting_feedback_ = false;
+      }
     } else if (r.status == nc::Decoder::Status::end) {
       // Where the program ends: its last block (file 0 is the main program).
       hand_over(error_command(make_diagnostic(ErrorId::KernelMissingProgramEnd, {"", last_main_line_, 0},
@@ -143,6 +161,10 @@ void ChannelPrep::plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& comm
   };
   for (TrcOut& o : outs) {
     PlannedBlock planned = plan_one(o);
+    if (search_) {
+      search_out(o, planned, commands);
+      continue;
+    }
     if (!planned.empty()) attach_warnings(planned[0]);
     if (!o.error) {
       if (o.inserted)
@@ -154,11 +176,68 @@ void ChannelPrep::plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& comm
         for (PlannedCommand& c : planned) c.frame_index = frame;
       }
     }
-    if (backlog_.empty() && (window_.has_room() || window_.release(commands, false)))
-      (void)window_.push(planned);
-    else
-      backlog_.push_back(planned);
+    queue(planned, commands);
   }
+}
+
+void ChannelPrep::queue(const PlannedBlock& planned, kernel::CommandQueue& commands) {
+  if (backlog_.empty() && (window_.has_room() || window_.release(commands, false)))
+    (void)window_.push(planned);
+  else
+    backlog_.push_back(planned);
+}
+
+// In search nothing is handed over but errors (the run would abort there
+// too); decoder warnings wait for the restart. From the mark block on the
+// real run begins.
+void ChannelPrep::search_out(const TrcOut& o, const PlannedBlock& planned, kernel::CommandQueue& commands) {
+  const bool failed = !planned.empty() && planned[0].kind == CommandKind::error;
+  if (!search_->restarts_at(o.block) && !failed) {
+    search_->searched(planned);
+    return;
+  }
+  const SourceLoc at{decoder_->file_name(o.block.file_id), o.block.line, 0};
+  auto restart = search_->restart(planned, *planner_, at);
+  search_.reset();
+  if (!restart) {
+    hand_over(error_command(restart.error(), o.block.file_id, *store_), commands);
+    return;
+  }
+  for (PlannedBlock& b : *restart) {
+    if (record_frames_) {
+      const std::uint32_t frame = frame_index_now();
+      for (PlannedCommand& c : b) c.frame_index = frame;
+    }
+    if (!b.empty()) attach_warnings(b[0]);
+    queue(b, commands);
+  }
+}
+
+// The program ended before the mark: the search failed (TF5200 20704).
+void ChannelPrep::search_not_found(const nc::Block& end, kernel::CommandQueue& commands) {
+  const SourceLoc at{decoder_->file_name(end.file_id), end.line, 0};
+  const std::vector<Diagnostic> found = search_->not_found(at);
+  search_.reset();
+  done_ = true;
+  for (const Diagnostic& d : found) {
+    if (d.severity == Severity::warning) pending_warnings_.push_back(d);
+    else hand_over(error_command(d, end.file_id, *store_), commands);
+  }
+}
+
+// Nothing runs in search: G100 ends at its programmed end unswitched, C
+// starts at 0, the manual offsets are what they were (none).
+void ChannelPrep::take_search_feedback(const nc::Block& b) {
+  kernel::Feedback f;
+  if (b.g_nonmodal.has(nc::GCode::g100)) {
+    f.kind = kernel::FeedbackKind::measured;
+    f.measure.mcs = planner_->planned_mcs();
+  } else if (b.hash && std::holds_alternative<nc::CAxis>(*b.hash)) {
+    f.kind = kernel::FeedbackKind::c_axis;
+  } else {
+    f.kind = kernel::FeedbackKind::manual_offsets;
+  }
+  take_feedback(f);
 }
 
 bool ChannelPrep::drain_backlog(kernel::CommandQueue& commands) {

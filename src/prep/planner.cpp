@@ -228,6 +228,21 @@ Planner::Planned Planner::plan_motion(const nc::Block& b, PlannedCommand c, Plan
   return c;
 }
 
+PlannedCommand Planner::return_motion(const motion::AxisVector& from_mcs, const motion::AxisVector& to_mcs) const {
+  PlannedCommand c;
+  c.kind = CommandKind::nop;
+  const auto seg = motion::make_line(from_mcs, to_mcs, n_axes_, cax_.length_axes());
+  if (!seg || !(seg->length() > 0)) return c;
+  const AxisDynamicsArray dyn = axes_.dynamics(true);
+  c.segment = *seg;
+  c.limits = motion::path_limits(c.segment, std::span<const motion::AxisDynamics>(dyn.data(), n_axes_));
+  if (!motion::valid(c.limits)) return c;
+  c.kind = CommandKind::motion;
+  c.v_cmd_mm_s = c.limits.v_max_mm_s;
+  c.exact_stop = true;
+  return c;
+}
+
 // A circle: start and end in program coordinates of this block's map; the
 // start is where the axes are, so a changed offset never makes the path jump.
 PlanResult Planner::plan_arc(const nc::Block& b, PlannedCommand& c, const motion::AxisVector& target,

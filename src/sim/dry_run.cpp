@@ -16,9 +16,13 @@ std::expected<DryRun, Diagnostic> DryRun::create(const config::Machine& m,
   run.store_ = std::make_unique<prep::PlanStore>();
   run.in_ = std::make_unique<kernel::TickInput>();
   run.threaded_ = options.prep_thread;
-  for (std::size_t ch = 0; ch < run.machine_->channels.size(); ++ch)
-    run.preps_.emplace_back(*run.machine_, ch, ch < programs.size() ? programs[ch] : std::filesystem::path(),
-                            *run.store_, prep::PrepOptions{options.clamp_index, options.record_frames, options.stop});
+  for (std::size_t ch = 0; ch < run.machine_->channels.size(); ++ch) {
+    const bool has_program = ch < programs.size();
+    prep::PrepOptions prep{options.clamp_index, options.record_frames, options.stop, std::nullopt};
+    if (ch == 0 && has_program) prep.search = options.search;
+    run.preps_.emplace_back(*run.machine_, ch, has_program ? programs[ch] : std::filesystem::path(), *run.store_,
+                            prep);
+  }
   return run;
 }
 

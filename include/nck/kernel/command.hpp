@@ -74,6 +74,14 @@ struct Nop {};
 
 using Action = std::variant<Nop, Motion, Dwell, Hold, End, Error>;
 
+// Block search (prep/block_search.hpp): the commands that frame a restart.
+enum class Restart : std::uint8_t {
+  none,
+  search_begins,    // a Nop: the channel searches (decodes without motion) up to the mark
+  returns,          // the return to the contour; the channel holds after it for cycle start
+  returns_no_hold,  // the same without the hold (HLI no_hold_at_restart)
+};
+
 struct Command {
   // the block it came from
   std::uint16_t file_id = 0;
@@ -82,6 +90,7 @@ struct Command {
   bool emit_block_event = true;  // false for follow-up commands of one block
   bool feed_motion = false;      // G1/G2/G3: MVS_SLM functions synchronise here
   bool expl_syn = false;         // #EXPL SYN: MVS_SLP functions synchronise here
+  Restart restart = Restart::none;
   // PlanStore::frames index of the block's program -> machine map, handed on
   // in the block event (none: not recorded)
   std::optional<std::uint32_t> frame_index;

@@ -31,6 +31,7 @@ enum class StateReason : std::uint8_t {
   hold,  // the run ended in a hold nothing could release (nck run)
   single_step,  // single step: the block ended
   stop_at,      // the stop-at mark's block ended
+  block_search,  // a block search began, returned to the contour, or ended its return
 };
 
 constexpr std::string_view state_name(ProgramState s) noexcept {
@@ -62,6 +63,7 @@ constexpr std::string_view state_reason_name(StateReason r) noexcept {
     case StateReason::hold: return "hold";
     case StateReason::single_step: return "single_step";
     case StateReason::stop_at: return "stop_at";
+    case StateReason::block_search: return "block_search";
   }
   return "start";
 }

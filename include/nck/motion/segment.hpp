@@ -80,6 +80,11 @@ class Segment {
   // are left untouched in out. rt
   void point_at(double s_mm, AxisVector& out) const noexcept;
 
+  // The part of the segment beyond path length s (block search: the rest
+  // of a block already partly covered): same path, same parametrisation,
+  // starting at point_at(s). setup
+  Segment remainder(double s_mm) const noexcept;
+
   // d(position)/ds at s: the per-axis share of the path velocity. A unit
   // vector over the counted axes; axis velocity = tangent[i] * v_path. rt
   void tangent_at(double s_mm, AxisVector& out) const noexcept;

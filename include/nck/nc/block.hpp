@@ -30,6 +30,11 @@ struct Block {
   // Where it came from.
   std::uint16_t file_id = 0;    // Decoder::file_name(file_id)
   std::uint32_t line = 0;       // 1-based line of the block's first character
+  // Block search (TF5200 types 1 and 3): the byte range of the block's text
+  // in its file, and the block counter — NC rows read since program start,
+  // comment and empty rows, loop passes and subroutine rows included.
+  std::uint64_t offset = 0, offset_end = 0;
+  std::uint64_t row = 0;
   std::optional<std::int64_t> n;  // N word
 
   // The modal state in force for this block (after applying its own words).

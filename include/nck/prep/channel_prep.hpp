@@ -20,6 +20,7 @@
 #include "nck/kernel/queues.hpp"
 #include "nck/nc/block.hpp"
 #include "nck/nc/decoder.hpp"
+#include "nck/prep/block_search.hpp"
 #include "nck/prep/lookahead_window.hpp"
 #include "nck/prep/plan_store.hpp"
 #include "nck/prep/prep_observer.hpp"
@@ -37,6 +38,9 @@ struct PrepOptions {
   // Set by the caller to stop decoding within one block read (SIGINT, SIGTERM,
   // --max-wall): feed() then returns and decodes nothing more. Not owned.
   const std::atomic<bool>* stop = nullptr;
+  // Block search: the program runs without motion up to this mark, then
+  // returns to the contour (block_search.hpp).
+  std::optional<SearchMark> search;
 };
 
 class ChannelPrep {
@@ -93,12 +97,20 @@ class ChannelPrep {
   // while it is full, the backlog (one block may become several).
   void plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& commands);
   bool drain_backlog(kernel::CommandQueue& commands);
+  // Into the window, or the backlog while the window is full.
+  void queue(const PlannedBlock& planned, kernel::CommandQueue& commands);
+  // Block search: a planned block is searched, or restarts the real run.
+  void search_out(const TrcOut& o, const PlannedBlock& planned, kernel::CommandQueue& commands);
+  void search_not_found(const nc::Block& end, kernel::CommandQueue& commands);
+  // What a block that needs feedback gets in search, where nothing runs.
+  void take_search_feedback(const nc::Block& b);
 
   std::optional<nc::Decoder> decoder_;
   std::unique_ptr<Planner> planner_;
   LookAheadWindow window_;
   RadiusComp trc_;
   std::vector<PlannedBlock> backlog_;  // planned, waiting for room in the window
+  std::optional<SearchRun> search_;    // while a block search runs
   // The window must empty into the queue (program end, an error, a block
   // whose feedback later blocks need) before anything else is decoded.
   bool flushing_ = false;

@@ -13,6 +13,7 @@
 #include "nck/frames/offset_chain.hpp"
 #include "nck/kernel/affine_map.hpp"
 #include "nck/kernel/attachment.hpp"
+#include "nck/kernel/command.hpp"
 #include "nck/kernel/ax_link.hpp"
 #include "nck/kernel/event.hpp"
 #include "nck/kernel/feed_link.hpp"
@@ -50,6 +51,7 @@ struct PlannedCommand {
   bool has_n = false;
   std::int64_t n = 0;
   bool emit_block_event = true;  // false for follow-up commands of one block
+  kernel::Restart restart = kernel::Restart::none;  // block search (block_search.hpp)
   // PlanStore::frames index of the block's program -> machine map, handed on
   // in the block event (none: not recorded)
   std::optional<std::uint32_t> frame_index;

@@ -76,6 +76,9 @@ class Planner final : public nc::KernelStateReader {
   // After #CAX (the caller held further blocks back until it ran): C starts
   // where the spindle stood.
   void take_c_axis_position(double c_deg);
+  // Block search: the return to the contour, a rapid straight line from
+  // where the axes stand to where the program restarts (exact stop at both ends).
+  PlannedCommand return_motion(const motion::AxisVector& from_mcs, const motion::AxisVector& to_mcs) const;
   // Machine set point m as the program sees it: Cartesian under #FACE /
   // #CYL, unchanged otherwise (for positions in program coordinates).
   motion::AxisVector cartesian(const motion::AxisVector& m) const { return cax_.cartesian(m, n_axes_); }

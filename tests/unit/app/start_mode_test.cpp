@@ -55,10 +55,17 @@ TEST(StartMode, BlockSearchFunctionsAreOffWithoutABlockSearch) {
   const ModeRun sv = run_with_condition("fct_sv", "SV");
   EXPECT_EQ(sv.r.exit_code, 1) << sv.r.output;
   EXPECT_TRUE(has_event(sv, "error", "id", 310015)) << sv.r.output;
-  // SV belongs to a block search, which no option starts.
+  // SV belongs to a block search: asked for without one, it is bad usage ...
   const ModeRun asked = run_with_condition("fct_sv_asked", "SV", "--start-mode BLOCK_SEARCH");
   EXPECT_EQ(asked.r.exit_code, 2) << asked.r.output;
   EXPECT_NE(asked.r.output.find("block search"), std::string::npos) << asked.r.output;
+}
+
+// ... and a run with a block search is in start mode SV from its start.
+TEST(StartMode, BlockSearchFunctionsActInABlockSearch) {
+  const ModeRun searched = run_with_condition("fct_sv_search", "SV", "--start-at-block 1");
+  EXPECT_EQ(searched.r.exit_code, 0) << searched.r.output;
+  EXPECT_TRUE(has_event(searched, "dist_ctrl", "state", "ACTIVE")) << searched.r.output;
 }
 
 TEST(StartMode, StandardConditionActsInAPlainRun) {
