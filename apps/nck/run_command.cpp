@@ -90,11 +90,25 @@ std::optional<sim::Scenario> load_scenario(const std::string& path, const config
   return sc;
 }
 
-// The block search asked for, with the covered share in per mille.
-std::optional<prep::SearchMark> search_of(const RunOptions& opt) {
-  std::optional<prep::SearchMark> m = opt.start_at;
-  if (m && opt.covered_pct) m->covered_permille = *opt.covered_pct * 10.0;
-  return m;
+// The run's block search: --start-at & co. (channel 1) or the scenario's
+// block_search line, never both. `refused`: bad usage, said on stderr.
+std::optional<sim::ScenarioSearch> block_search_of(const RunOptions& opt, const sim::Scenario& sc, bool& refused) {
+  const auto refuse = [&](std::string_view why) -> std::optional<sim::ScenarioSearch> {
+    fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppBadUsage), why);
+    refused = true;
+    return std::nullopt;
+  };
+  std::optional<sim::ScenarioSearch> s = sim::block_search_of(sc);
+  if (s && opt.start_at) return refuse("--start-at and the --plc scenario's block_search line both ask for a block search; give one");
+  if (opt.covered_pct && !opt.start_at)
+    return refuse("--covered belongs to a block search: give --start-at, --start-at-block or --start-at-offset");
+  if (opt.start_at) {
+    s = sim::ScenarioSearch{0, *opt.start_at};
+    if (opt.covered_pct) s->mark.covered_permille = *opt.covered_pct * 10.0;
+  }
+  if (config::canonical_start_mode(opt.start_mode) == "SV" && !s)
+    return refuse("--start-mode SV belongs to a block search: give --start-at, --start-at-block or --start-at-offset");
+  return s;
 }
 
 // Why the loop stopped before every channel ended, if it did.
@@ -232,18 +246,17 @@ int run_simulation(const RunOptions& opt) {
   config::LoadResult loaded = config::load_machine(opt.machine);
   if (!print_load_diagnostics(loaded)) return 2;
   for (const std::string& dir : opt.cycles) loaded.machine->cycle_paths.emplace_back(dir);
-  if (opt.covered_pct && !opt.start_at) {
-    fmt::print(stderr, "nck: error {}: --covered belongs to a block search: give --start-at, --start-at-block or "
-               "--start-at-offset\n", number(ErrorId::AppBadUsage));
-    return 2;
+  sim::Scenario scenario;
+  if (!opt.plc.empty()) {
+    auto loaded_scenario = load_scenario(opt.plc, *loaded.machine);
+    if (!loaded_scenario) return 2;
+    scenario = std::move(*loaded_scenario);
   }
-  if (config::canonical_start_mode(opt.start_mode) == "SV" && !opt.start_at) {
-    fmt::print(stderr, "nck: error {}: --start-mode SV belongs to a block search: give --start-at, "
-               "--start-at-block or --start-at-offset\n", number(ErrorId::AppBadUsage));
-    return 2;
-  }
+  bool refused = false;
+  const std::optional<sim::ScenarioSearch> search = block_search_of(opt, scenario, refused);
+  if (refused) return 2;
   // A searched program runs in the block-search start mode (P-CHAN-00508 SV) throughout.
-  const std::string start_mode = !opt.start_mode.empty() ? opt.start_mode : opt.start_at ? "SV" : "ISG_STANDARD";
+  const std::string start_mode = !opt.start_mode.empty() ? opt.start_mode : search ? "SV" : "ISG_STANDARD";
   for (config::ChannelConfig& c : loaded.machine->channels) c.start_mode = start_mode;
   const config::Machine& m = *loaded.machine;
   if (opt.programs.empty() || opt.programs.size() > m.channels.size()) {
@@ -252,19 +265,18 @@ int run_simulation(const RunOptions& opt) {
     return 2;
   }
   std::vector<std::filesystem::path> programs(opt.programs.begin(), opt.programs.end());
-  auto created = sim::DryRun::create(m, programs, {opt.clamp_index, !opt.report.empty(), opt.prep_thread, &stop_flag(), search_of(opt)});
+  sim::DryRunOptions options{opt.clamp_index, !opt.report.empty(), opt.prep_thread, &stop_flag()};
+  if (search) {
+    options.search = search->mark;
+    options.search_channel = search->channel;
+  }
+  auto created = sim::DryRun::create(m, programs, options);
   if (!created) {
     fmt::print(stderr, "{}\n", format(created.error()));
     return 2;
   }
   sim::DryRun& run = *created;
-  sim::Scenario scenario;
-  if (!opt.plc.empty()) {
-    auto loaded_scenario = load_scenario(opt.plc, m);
-    if (!loaded_scenario) return 2;
-    scenario = std::move(*loaded_scenario);
-    run.load_scenario(scenario);
-  }
+  if (!opt.plc.empty()) run.load_scenario(scenario);
   RunOutputs out;
   for (const Diagnostic& d : loaded.diagnostics.items())  // printed above; the summary counts them too
     if (d.severity == Severity::warning) out.summary.warning();

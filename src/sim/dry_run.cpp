@@ -19,7 +19,7 @@ std::expected<DryRun, Diagnostic> DryRun::create(const config::Machine& m,
   for (std::size_t ch = 0; ch < run.machine_->channels.size(); ++ch) {
     const bool has_program = ch < programs.size();
     prep::PrepOptions prep{options.clamp_index, options.record_frames, options.stop, std::nullopt};
-    if (ch == 0 && has_program) prep.search = options.search;
+    if (ch == options.search_channel && has_program) prep.search = options.search;
     run.preps_.emplace_back(*run.machine_, ch, has_program ? programs[ch] : std::filesystem::path(), *run.store_,
                             prep);
   }

@@ -42,6 +42,7 @@ constexpr std::array kActions = {
     ActionSpelling{"auto_cycle_start", ActionKind::auto_cycle_start},
     ActionSpelling{"single_step", ActionKind::single_step},
     ActionSpelling{"skip_mask", ActionKind::skip_mask},
+    ActionSpelling{"block_search", ActionKind::block_search},
 };
 
 // Parses one line; reports its first problem and returns nothing then.
@@ -76,6 +77,9 @@ class LineParser {
   bool take_handwheel(ScenarioAction& a);
   bool take_variable(ScenarioAction& a);
   bool take_skip_mask(double& mask);
+  bool take_block_search(ScenarioAction& a);
+  bool take_search_mark(ScenarioAction& a);
+  bool take_whole(std::string_view what, std::int64_t lowest, std::int64_t& value);
   bool take_keyword_value(std::string_view key, double& value, bool& seen);
 
   std::span<const Token> toks_;
@@ -192,6 +196,8 @@ bool LineParser::parse_args(ScenarioAction& a) {
       return take_variable(a);
     case ActionKind::skip_mask:
       return take_skip_mask(a.value);
+    case ActionKind::block_search:
+      return take_block_search(a);
   }
   return true;
 }
@@ -293,6 +299,83 @@ bool LineParser::take_skip_mask(double& mask) {
   return true;
 }
 
+bool LineParser::take_whole(std::string_view what, std::int64_t lowest, std::int64_t& value) {
+  if (!need(what)) return false;
+  const Token& t = toks_[next_++];
+  const auto v = detail::to_number(t.text);
+  if (!v || *v != std::floor(*v) || *v < static_cast<double>(lowest) || *v > 1e15)
+    return fail(ErrorId::PlcScenarioBlockSearch, t.column,
+                fmt::format("'{}' is not {}", detail::printable(t.text), what));
+  value = static_cast<std::int64_t>(*v);
+  return true;
+}
+
+// block_search N<n> | block <K> | offset <bytes> [pass <P>] [covered <per
+// mille>] [program <name>] [no_hold]: the run starts with a block search
+// (TF5200 types 4, 3, 1); only at time 0, where the program starts.
+bool LineParser::take_block_search(ScenarioAction& a) {
+  if (a.t_s != 0)
+    return fail(ErrorId::PlcScenarioBlockSearch, toks_[0].column,
+                "block_search starts the program with a block search: give it at time 0");
+  if (!take_search_mark(a)) return false;
+  while (!at_end()) {
+    const Token& k = toks_[next_++];
+    std::int64_t v = 0;
+    if (iequals(k.text, "pass")) {
+      if (!take_whole("a pass count >= 1", 1, v)) return false;
+      a.search_pass = static_cast<std::uint32_t>(std::min<std::int64_t>(v, UINT32_MAX));
+    } else if (iequals(k.text, "covered")) {
+      if (!take_whole("a covered share in per mille (0..1000)", 0, v)) return false;
+      if (v > 1000) return fail(ErrorId::PlcScenarioBlockSearch, k.column, "covered is per mille: 0..1000");
+      a.covered_permille = static_cast<double>(v);
+    } else if (iequals(k.text, "program")) {
+      if (!need("the program name")) return false;
+      const Token& p = toks_[next_++];
+      if (p.text.size() >= a.program.size())
+        return fail(ErrorId::PlcScenarioBlockSearch, p.column, "the program name is too long");
+      std::copy(p.text.begin(), p.text.end(), a.program.begin());
+    } else if (iequals(k.text, "no_hold")) {
+      a.on = true;
+    } else {
+      return fail(ErrorId::PlcScenarioBlockSearch, k.column,
+                  fmt::format("'{}' is no block_search option: pass, covered, program or no_hold",
+                              detail::printable(k.text)));
+    }
+  }
+  return true;
+}
+
+bool LineParser::take_search_mark(ScenarioAction& a) {
+  if (!need("the restart mark: N<n>, block <K> or offset <bytes>")) return false;
+  const Token& t = toks_[next_];
+  std::int64_t v = 0;
+  if (t.text.size() > 1 && (t.text[0] == 'N' || t.text[0] == 'n') && std::isdigit(static_cast<unsigned char>(t.text[1]))) {
+    a.search_kind = prep::SearchMark::Kind::block_number;
+    std::int64_t n = 0;
+    const auto [end, ec] = std::from_chars(t.text.data() + 1, t.text.data() + t.text.size(), n);
+    if (ec != std::errc{} || end != t.text.data() + t.text.size())
+      return fail(ErrorId::PlcScenarioBlockSearch, t.column,
+                  fmt::format("'{}' is not a block number; write e.g. N100", detail::printable(t.text)));
+    ++next_;
+    a.value = static_cast<double>(n);
+    return true;
+  }
+  ++next_;
+  if (iequals(t.text, "block")) {
+    a.search_kind = prep::SearchMark::Kind::block_counter;
+    if (!take_whole("a block counter >= 1", 1, v)) return false;
+  } else if (iequals(t.text, "offset")) {
+    a.search_kind = prep::SearchMark::Kind::file_offset;
+    if (!take_whole("a byte offset >= 0", 0, v)) return false;
+  } else {
+    return fail(ErrorId::PlcScenarioBlockSearch, t.column,
+                fmt::format("'{}' is no restart mark; write N<n>, block <K> or offset <bytes>",
+                            detail::printable(t.text)));
+  }
+  a.value = static_cast<double>(v);
+  return true;
+}
+
 // REV / POS with the value joined (REV500, REV=500) or as the next word (REV 500).
 bool LineParser::take_keyword_value(std::string_view key, double& value, bool& seen) {
   const Token& t = toks_[next_++];
@@ -362,6 +445,22 @@ std::string_view action_name(ActionKind k) noexcept {
   return "?";
 }
 
+std::optional<ScenarioSearch> block_search_of(const Scenario& sc) {
+  for (const ScenarioAction& a : sc.actions) {
+    if (a.kind != ActionKind::block_search) continue;
+    ScenarioSearch s;
+    s.channel = a.channel >= 1 ? a.channel - 1u : 0u;
+    s.mark.kind = a.search_kind;
+    s.mark.value = static_cast<std::int64_t>(a.value);
+    s.mark.pass = a.search_pass;
+    s.mark.covered_permille = a.covered_permille;
+    s.mark.program = std::string(a.program.data());
+    s.mark.no_hold_at_restart = a.on;
+    return s;
+  }
+  return std::nullopt;
+}
+
 Scenario parse_scenario(std::string_view text, std::string file, Diagnostics& diags) {
   Scenario sc;
   sc.file = std::move(file);
@@ -388,6 +487,11 @@ Scenario parse_scenario(std::string_view text, std::string file, Diagnostics& di
                 fmt::format("time {} s comes after {} s; the action is sorted in by its time",
                             a->t_s, last_t_s));
     last_t_s = std::max(last_t_s, a->t_s);
+    if (a->kind == ActionKind::block_search && block_search_of(sc)) {
+      diags.add(ErrorId::PlcScenarioBlockSearch, SourceLoc{sc.file, line_no, 1},
+                "a second block_search line; a run has one block search");
+      continue;
+    }
     sc.actions.push_back(*a);
   }
   std::stable_sort(sc.actions.begin(), sc.actions.end(),

@@ -37,9 +37,11 @@ struct DryRunOptions {
   bool record_frames = false;     // blocks carry their program -> machine map (--report)
   bool prep_thread = false;       // preparation in a thread of its own (--prep-thread)
   const std::atomic<bool>* stop = nullptr;  // stops decoding at once when set (prep::PrepOptions::stop)
-  // Block search in channel 1 (nck run --start-at): its program runs without
-  // motion up to the mark, then returns to the contour.
+  // Block search (nck run --start-at, a scenario's block_search line): the
+  // program of channel `search_channel` (0-based) runs without motion up to
+  // the mark, then returns to the contour.
   std::optional<prep::SearchMark> search;
+  std::size_t search_channel = 0;
 };
 
 // What a channel knows about its programmed state, for --final.

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "nck/core/diagnostic.hpp"
 #include "nck/plc/ext_command.hpp"
 #include "nck/plc/hli.hpp"
+#include "nck/prep/block_search.hpp"
 
 namespace nck::sim {
 
@@ -34,6 +36,7 @@ enum class ActionKind : std::uint8_t {
   auto_cycle_start,     // auto_cycle_start on|off    (the simulated operator releases every hold at once)
   single_step,          // single_step on|off         (hold at block ends, P-CHAN-00015)
   skip_mask,            // skip_mask 0x5              (active block-skip levels /1 /3: program_block_ignore)
+  block_search,         // block_search N100 pass 2 covered 400   (at time 0: the run starts with a block search)
 };
 
 // The action's name as written in the file (the primary spelling).
@@ -53,6 +56,11 @@ struct ScenarioAction {
   std::array<char, plc::kSpindleNameChars> axis_name{};  // handwheel: the path axis
   std::int8_t axis = -1;       // handwheel: channel axis index (resolve_spindles)
   std::array<char, 32> var_name{};  // variable: its name as the NC program writes it
+  // block_search: the mark (value: N, block counter or byte offset); `on`: no hold at restart
+  prep::SearchMark::Kind search_kind = prep::SearchMark::Kind::block_number;
+  std::uint32_t search_pass = 1;
+  double covered_permille = 0;
+  std::array<char, 64> program{};  // the file the mark lies in (empty: see SearchMark::program)
   bool has_spindle() const noexcept { return spindle_name[0] != '\0'; }
   std::string_view spindle_view() const noexcept { return std::string_view(spindle_name.data()); }
 };
@@ -68,6 +76,13 @@ inline constexpr double kMaxOverridePercent = 200.0;
 // setup: parses the text of a scenario file. Bad lines are skipped and
 // reported in diags (ID, file, line, column); never throws on any input.
 Scenario parse_scenario(std::string_view text, std::string file, Diagnostics& diags);
+
+// The scenario's block_search line as a block search of its channel (0-based), if it has one.
+struct ScenarioSearch {
+  std::size_t channel = 0;
+  prep::SearchMark mark;
+};
+std::optional<ScenarioSearch> block_search_of(const Scenario& sc);
 
 // setup: checks channels and spindle names against the machine and fills
 // spindle / hli_spindle (and cmd.spindle). "S" names the channel's main

@@ -182,6 +182,11 @@ TEST(BlockSearch, StateAtTheRestartIsTheFullRunsState) {
   const SearchedRun r = run_contour("stop_searched", "--start-at N150 --stop-at N150");
   ASSERT_EQ(r.result.exit_code, 0) << r.result.output;
   EXPECT_EQ(full.final["channels"], r.final["channels"]);
+  // with tool radius compensation active at the mark (its offset contour)
+  const SearchedRun trc_full = run_contour("trc_full", "--stop-at N140", "contour_trc.nc");
+  const SearchedRun trc = run_contour("trc_searched", "--start-at N140 --stop-at N140", "contour_trc.nc");
+  ASSERT_EQ(trc.result.exit_code, 0) << trc.result.output;
+  EXPECT_EQ(trc_full.final["channels"], trc.final["channels"]);
 }
 
 // Every form of the mark finds N100 of contour.nc; a pass count finds the

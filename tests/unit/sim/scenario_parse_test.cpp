@@ -253,6 +253,38 @@ TEST(ScenarioParse, ActionNames) {
   EXPECT_EQ(action_name(ActionKind::spindle_cmd), "spindle_cmd");
 }
 
+// Issue 27: block search from the scenario, at time 0 only, once.
+TEST(ScenarioParse, BlockSearch) {
+  auto a = one("0 block_search N100 pass 2 covered 400 program sub.nc no_hold");
+  EXPECT_EQ(a.kind, ActionKind::block_search);
+  EXPECT_EQ(a.search_kind, prep::SearchMark::Kind::block_number);
+  EXPECT_DOUBLE_EQ(a.value, 100);
+  EXPECT_EQ(a.search_pass, 2u);
+  EXPECT_DOUBLE_EQ(a.covered_permille, 400);
+  EXPECT_STREQ(a.program.data(), "sub.nc");
+  EXPECT_TRUE(a.on);
+  EXPECT_EQ(one("0 block_search block 17").search_kind, prep::SearchMark::Kind::block_counter);
+  EXPECT_EQ(one("0 block_search offset 0").search_kind, prep::SearchMark::Kind::file_offset);
+  const auto p = parse("0 ch=2 block_search N5 covered 1000");
+  const auto s = block_search_of(p.sc);
+  ASSERT_TRUE(s);
+  EXPECT_EQ(s->channel, 1u);
+  EXPECT_EQ(s->mark.value, 5);
+  EXPECT_DOUBLE_EQ(s->mark.covered_permille, 1000);
+  EXPECT_FALSE(s->mark.no_hold_at_restart);
+  for (const char* text : {"0.5 block_search N100", "0 block_search", "0 block_search X", "0 block_search N1x",
+                           "0 block_search block 0", "0 block_search offset -1", "0 block_search N1 covered 1001",
+                           "0 block_search N1 pass 0", "0 block_search N1 pass", "0 block_search N1 fast"}) {
+    const Diagnostic d = bad(text);
+    EXPECT_TRUE(d.id == ErrorId::PlcScenarioBlockSearch || d.id == ErrorId::PlcScenarioMissingArgument) << text;
+    EXPECT_EQ(d.loc.line, 1u) << text;
+  }
+  const auto twice = parse("0 block_search N1\n0 block_search N2\n");
+  ASSERT_EQ(twice.diags.items().size(), 1u);
+  EXPECT_EQ(twice.diags.items()[0].loc.line, 2u);
+  EXPECT_EQ(block_search_of(twice.sc)->mark.value, 1);
+}
+
 }  // namespace
 }  // namespace nck::sim
 
