@@ -174,8 +174,8 @@ int main_cli(int argc, char** argv) {
   RunOptions run;
   auto* runc = app.add_subcommand("run", "Run NC programs on a machine, cycle by cycle");
   runc->add_option("MACHINE", run.machine, "machine folder (with startup.lis)")->required();
-  runc->add_option("PROGRAM", run.programs, "NC program per channel (PROGRAM2 runs in channel 2...)")
-      ->required();
+  runc->add_option("PROGRAM", run.programs,
+                   "NC program per channel (PROGRAM2 runs in channel 2...); none: the --plc scenario's mdi lines");
   runc->add_option("--events", run.events, "write events as JSON lines to FILE (- for stdout)");
   runc->add_option("--trace", run.trace, "write set points as CSV to FILE (- for stdout)");
   runc->add_option("--trace-every", run.trace_every, "trace every Nth cycle")->check(number_at_least(1, true));

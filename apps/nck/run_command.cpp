@@ -45,6 +45,25 @@ void report_dropped_events(const kernel::TickOutput& o, const RunNames& names, R
   if (out.wants_events()) out.event(EventWriter::line(e, names), false);
 }
 
+// Operator actions the channel could not take (an MDI line while a program
+// runs): a warning with its ID, on stderr and as an event.
+void report_refusals(sim::DryRun& run, const kernel::TickOutput& o, const RunNames& names, RunOutputs& out,
+                     Progress& progress) {
+  for (const auto& [channel, d] : run.take_refusals()) {
+    progress.clear();
+    fmt::print(stderr, "{}\n", format(d));
+    out.summary.warning();
+    if (!out.wants_events()) continue;
+    kernel::Event e;
+    e.t_s = o.t_s;
+    e.channel = channel;
+    e.kind = kernel::EventKind::warning;
+    e.id = d.id;
+    e.message_index = kernel::kNoMessage;
+    out.event(EventWriter::line(e, names), false);
+  }
+}
+
 // A reset from the --plc scenario ends the program with exit 1: say so with an ID.
 void report_reset(const kernel::Event& e, RunOutputs& out, Progress& progress) {
   const std::string text = fmt::format("the PLC scenario reset channel {} at {} s, before its program end",
@@ -126,6 +145,7 @@ std::optional<kernel::EndReason> run_loop(sim::DryRun& run, const RunOptions& op
     run.cycle(*o);
     record_events(*o, names, out, progress);
     report_dropped_events(*o, names, out, progress);
+    report_refusals(run, *o, names, out, progress);
     out.trace.write(run.kernel().cycles() - 1, *o);
     out.report.sample(run.kernel().cycles() - 1, *o, names);
     if (stop_at && stop_at->reached(*o)) return kernel::EndReason::stop_at;
@@ -207,6 +227,7 @@ std::string end_of_run(const sim::DryRun& run, std::optional<kernel::EndReason> 
 int finish_outputs(const sim::DryRun& run, const RunOptions& opt, const config::Machine& m,
                    std::optional<kernel::EndReason> stopped, RunOutputs& out) {
   int code = exit_code_of(run, stopped);
+  if (code == 0 && !out.errors.empty()) code = 1;  // an MDI error ends no channel, but the run found one
   const double end_s = run.time_s();
   std::vector<std::string> failures;
   // Only now are all the files known that the programs called.
@@ -259,8 +280,10 @@ int run_simulation(const RunOptions& opt) {
   const std::string start_mode = !opt.start_mode.empty() ? opt.start_mode : search ? "SV" : "ISG_STANDARD";
   for (config::ChannelConfig& c : loaded.machine->channels) c.start_mode = start_mode;
   const config::Machine& m = *loaded.machine;
-  if (opt.programs.empty() || opt.programs.size() > m.channels.size()) {
-    fmt::print(stderr, "nck: error 940001: {} program(s) given for {} channel(s); give one per channel\n",
+  // Without a program the channels wait for the scenario's MDI lines.
+  if ((opt.programs.empty() && scenario.texts.empty()) || opt.programs.size() > m.channels.size()) {
+    fmt::print(stderr, "nck: error 940001: {} program(s) given for {} channel(s); give one per channel "
+               "(or none, with a --plc scenario that types mdi lines)\n",
                opt.programs.size(), m.channels.size());
     return 2;
   }

@@ -20,6 +20,7 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
            std::span<const std::int8_t>(spindles_.begin(), spindles_.size())};
   path_.begin_cycle();
   hold_.begin_cycle();
+  if (done()) take_mdi();
   if (!done()) {
     if (in.reset) {
       end_program(EndReason::reset, cy);
@@ -253,7 +254,9 @@ void Channel::end_block(Cycle& cy) noexcept {
   const End* end = current_.as<End>();
   if (end && dist_.wind_down()) return;
   active_ = false;
-  if (current_.restart != Restart::none) {
+  if (current_.mdi == Mdi::end) {
+    finish_mdi(cy);
+  } else if (current_.restart != Restart::none) {
     leave_restart_state(cy);
   } else if (const Hold* hold = current_.as<Hold>()) {
     stop_program(*hold, cy);
@@ -272,9 +275,41 @@ void Channel::stop_program(const Hold& hold, Cycle& cy) noexcept {
   set_state(ProgramState::hold, hold.optional_stop ? StateReason::m1 : StateReason::m0, cy);
 }
 
+// A channel that is done (program end, reset, MDI done or failed) takes
+// the operator's MDI text; what is left of a failed one is dropped. rt
+void Channel::take_mdi() noexcept {
+  while (dropping_mdi_ && !commands_->empty()) {
+    dropping_mdi_ = commands_->front().mdi != Mdi::end;
+    commands_->pop();
+  }
+  if (!dropping_mdi_ && !commands_->empty() && commands_->front().mdi != Mdi::none) status_ = ChannelStatus::waiting;
+}
+
+// MDI is done: the channel is idle again, ready for more.
+void Channel::finish_mdi(Cycle& cy) noexcept {
+  set_state(ProgramState::idle, StateReason::mdi, cy);
+  status_ = ChannelStatus::ended;
+}
+
+// An error in MDI ends its text, not the channel: the error is reported,
+// the rest of the text dropped, the channel idle and usable.
+void Channel::fail_mdi(Cycle& cy) noexcept {
+  active_ = false;
+  path_.reset();
+  hold_.reset();
+  sync_.clear();
+  dropping_mdi_ = true;
+  set_state(ProgramState::idle, StateReason::error, cy);
+  status_ = ChannelStatus::ended;
+}
+
 // A command starts: the program state it begins (block search: searching,
-// then returning to the contour).
+// then returning to the contour; MDI: running).
 void Channel::enter_restart_state(Cycle& cy) noexcept {
+  if (current_.mdi == Mdi::block && state_ != ProgramState::running) {
+    set_state(ProgramState::running, StateReason::mdi, cy);
+    return;
+  }
   switch (current_.restart) {
     case Restart::search_begins: set_state(ProgramState::searching, StateReason::block_search, cy); break;
     case Restart::returns:
@@ -323,6 +358,10 @@ std::pair<ProgramState, StateReason> state_after(EndReason r) noexcept {
 }  // namespace
 
 void Channel::end_program(EndReason reason, Cycle& cy) noexcept {
+  if (reason == EndReason::error && current_.mdi == Mdi::block && active_) {
+    fail_mdi(cy);
+    return;
+  }
   ax_links_.end(reason, cy);
   const bool ok = reason == EndReason::m30 || reason == EndReason::m2;
   status_ = ok ? ChannelStatus::ended : ChannelStatus::aborted;

@@ -109,6 +109,11 @@ class Channel {
   void raise(ErrorId id, std::uint32_t message, Cycle& cy) noexcept;
   // Enters program state `to` (a `state` event when it changes).
   void set_state(ProgramState to, StateReason why, Cycle& cy) noexcept;
+  // MDI: the operator's text wakes a channel that is done; its end or an
+  // error returns the channel to idle.
+  void take_mdi() noexcept;
+  void finish_mdi(Cycle& cy) noexcept;
+  void fail_mdi(Cycle& cy) noexcept;
   // Block search's restart commands: the states they enter and leave.
   void enter_restart_state(Cycle& cy) noexcept;
   void leave_restart_state(Cycle& cy) noexcept;
@@ -127,6 +132,7 @@ class Channel {
   bool active_ = false;  // `current_` is being executed
   Phase phase_ = Phase::pre_wait;
   Command current_{};
+  bool dropping_mdi_ = false;  // an MDI text failed: its commands left are dropped
 
   // its technology units (docs/architecture.md: when the channel calls them)
   SyncUnit sync_;              // outputs and waits before / after the body

@@ -359,6 +359,10 @@ Decoder::Decoder(const std::filesystem::path& program, DecoderConfig cfg)
     : impl_(std::make_unique<Impl>(std::move(cfg))) {
   impl_->open_main(program);
 }
+Decoder::Decoder(DecoderConfig cfg) : impl_(std::make_unique<Impl>(std::move(cfg))) { impl_->ended = true; }
+
+void Decoder::run_mdi(std::string text) { impl_->open_mdi(std::move(text)); }
+
 Decoder::~Decoder() = default;
 Decoder::Decoder(Decoder&&) noexcept = default;
 Decoder& Decoder::operator=(Decoder&&) noexcept = default;

@@ -92,6 +92,7 @@ struct Decoder::Impl {
 
   bool fatal = false;        // decoding cannot go on
   bool ended = false;        // Status::end reached
+  bool mdi = false;          // decoding MDI text: its end is no missing M30
   std::uint64_t rows_read = 0;  // NC rows read so far (Block::row)
   bool end_pending = false;  // M30 block handed out, end comes next
   bool return_pending = false;  // M17 block handed out, return comes next
@@ -143,6 +144,8 @@ struct Decoder::Impl {
   bool open_local_frame(const std::filesystem::path& path, std::shared_ptr<const std::string> mem,
                         std::shared_ptr<const detail::ProgramIndex> index, detail::SourcePos body, detail::Frame& f);
   bool open_main(const std::filesystem::path& p);
+  // MDI: the operator's text becomes the main level; the state goes on.
+  void open_mdi(std::string text);
   // Loads a streamed frame's file into `f.mem` once, so that its local
   // subroutines and cycles are read from memory on every call.
   void keep_text_for_local_calls(detail::Frame& f);

@@ -72,6 +72,26 @@ bool Decoder::Impl::open_main(const std::filesystem::path& p) {
   return true;
 }
 
+void Decoder::Impl::open_mdi(std::string text) {
+  Frame f;
+  f.path = kMdiFileName;
+  f.file_id = file_id(kMdiFileName);
+  f.mem = std::make_shared<const std::string>(std::move(text));
+  SourceReader scan;
+  scan.open_memory(f.mem);
+  f.index = std::make_shared<const ProgramIndex>(scan_sections(scan, cfg.max_block_chars));
+  f.reader = std::make_unique<SourceReader>();
+  f.reader->set_meter(&meter, true);  // like a main program: its first pass is free
+  f.reader->open_memory(f.mem);
+  f.start = f.reader->next_pos();
+  frames.clear();
+  frames.push_back(std::move(f));
+  mdi = true;
+  ended = fatal = end_pending = return_pending = goto_pending = modal_cycle_due = false;
+  comment_mode = var_mode = false;
+  err.clear();
+}
+
 Outcome Decoder::Impl::call(Cursor& c, bool local) {
   std::size_t at = c.pos;
   c.pos += local ? 2 : 1;
@@ -148,7 +168,7 @@ Outcome Decoder::Impl::end_of_section() {
   if (!frames.back().ctl.empty())
     return report(ErrorId::NcUnclosedControl, 0, unclosed_message("program"), true);
   if (var_mode) return report(ErrorId::NcVarDeclaration, 0, "#VAR is never closed with #ENDVAR", true);
-  err.warn(ErrorId::NcMissingProgramEnd, 0, "the main program ends without M30/M2");
+  if (!mdi) err.warn(ErrorId::NcMissingProgramEnd, 0, "the main program ends without M30/M2");
   return Outcome::end;
 }
 

@@ -31,19 +31,18 @@ ChannelPrep::ChannelPrep(const config::Machine& m, std::size_t ch, const std::fi
       trc_(m, ch),
       store_(&store),
       record_frames_(options.record_frames) {
-  if (program.empty()) {
-    done_ = true;
-    return;
-  }
   window_.set_blend_axes(planner_->blend_axes());
   nc::DecoderConfig cfg = decoder_config(m, ch);
   cfg.stop = options.stop;
-  decoder_.emplace(program, std::move(cfg));
+  has_program_ = !program.empty();
+  done_ = !has_program_;  // a channel without a program waits for MDI
+  if (has_program_) decoder_.emplace(program, std::move(cfg));
+  else decoder_.emplace(std::move(cfg));
   // The planner lives on the heap, so the pointer survives moves of this object.
   decoder_->set_kernel_state_reader(planner_.get());
   for (const auto& [name, value] : initial_variables(m, ch, options.clamp_index))
     (void)decoder_->set_variable(name, value);
-  if (options.search) {
+  if (options.search && has_program_) {
     // The axes stand where the planner starts; the channel learns at once that it searches.
     search_.emplace(*options.search, planner_->planned_mcs());
     PlannedBlock b;
@@ -69,7 +68,9 @@ bool ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& fe
   // command or sent feedback, or the channel ended: most cycles of a dry run
   // end here (the kernel takes one block while it runs for many cycles).
   const Idle now{commands.free_slots(), channel_done};
-  if (idle_ && *idle_ == now && feedback.empty()) return false;
+  const bool mdi_waits = done() && mdi_->pending.load(std::memory_order_acquire) > 0 && !in_mdi_;
+  if (idle_ && *idle_ == now && feedback.empty() && !mdi_waits) return false;
+  if (mdi_waits) start_mdi();
   const std::uint64_t before = decoded_ + window_.released();
   feed_blocks(commands, feedback, channel_done);
   const bool progressed = decoded_ + window_.released() != before;
@@ -110,12 +111,15 @@ void ChannelPrep::feed_blocks(kernel::CommandQueue& commands, kernel::FeedbackQu
       if (search_) search_->decoded(r.block, decoder_->file_name(r.block.file_id));
       const bool searched = search_.has_value();
       (void)prepare(r.block, commands);
-      done_ = r.block.program_end;
+      done_ = done_ || r.block.program_end;  // an MDI text may have ended in prepare()
+      if (in_mdi_ && r.block.program_end) finish_mdi(commands);  // M30 typed in MDI
       awaiting_feedback_ = needs_feedback(r.block);
       if (awaiting_feedback_ && searched && search_) {
         take_search_feedback(r.block);
         awaiting_feedback_ = false;
       }
+    } else if (r.status == nc::Decoder::Status::end && in_mdi_) {
+      finish_mdi(commands);
     } else if (r.status == nc::Decoder::Status::end) {
       // Where the program ends: its last block (file 0 is the main program).
       hand_over(error_command(make_diagnostic(ErrorId::KernelMissingProgramEnd, {"", last_main_line_, 0},
@@ -130,6 +134,7 @@ void ChannelPrep::feed_blocks(kernel::CommandQueue& commands, kernel::FeedbackQu
       // The error names the file its line is in (a subroutine's, not the main program's).
       hand_over(error_command(d, decoder_->file_id(d.loc.file).value_or(0), *store_), commands);
       done_ = true;
+      if (in_mdi_) finish_mdi(commands);  // an error ends the MDI text, never the channel
     }
   }
 }
@@ -176,7 +181,14 @@ void ChannelPrep::plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& comm
         for (PlannedCommand& c : planned) c.frame_index = frame;
       }
     }
+    if (in_mdi_) mark_mdi(planned);
     queue(planned, commands);
+    if (in_mdi_ && !planned.empty() && planned[0].kind == CommandKind::error) {
+      planner_->forget_failed_block();
+      done_ = true;
+      finish_mdi(commands);
+      return;
+    }
   }
 }
 
@@ -258,6 +270,7 @@ void ChannelPrep::hand_over(const PlannedCommand& c, kernel::CommandQueue& comma
   PlannedBlock b;
   (void)b.push_back(c);
   attach_warnings(b[0]);
+  if (in_mdi_) mark_mdi(b);
   flushing_ = true;
   if (!backlog_.empty()) {
     backlog_.push_back(b);
@@ -312,6 +325,51 @@ void ChannelPrep::attach_warnings(PlannedCommand& c) {
   if (pending_warnings_.empty()) return;
   add_warnings(c, pending_warnings_, *store_);
   pending_warnings_.clear();
+}
+
+void ChannelPrep::submit_mdi(std::string text) {
+  const std::lock_guard lock(mdi_->mutex);
+  mdi_->texts.push_back(std::move(text));
+  mdi_->pending.fetch_add(1, std::memory_order_release);
+  mdi_->used.store(true, std::memory_order_release);
+}
+
+void ChannelPrep::start_mdi() {
+  std::string text;
+  {
+    const std::lock_guard lock(mdi_->mutex);
+    if (mdi_->texts.empty()) return;
+    text = std::move(mdi_->texts.front());
+    mdi_->texts.pop_front();
+  }
+  decoder_->run_mdi(std::move(text));
+  in_mdi_ = true;
+  done_ = false;
+  idle_.reset();
+}
+
+// The text is prepared (or ended by an error): the command after its last
+// returns the channel to idle.
+void ChannelPrep::finish_mdi(kernel::CommandQueue& commands) {
+  PlannedCommand end;
+  end.kind = CommandKind::nop;
+  end.emit_block_event = false;
+  end.file_id = decoder_->file_id(nc::kMdiFileName).value_or(0);
+  end.mdi = kernel::Mdi::end;
+  PlannedBlock b;
+  (void)b.push_back(end);
+  attach_warnings(b[0]);
+  queue(b, commands);
+  flushing_ = true;  // the text's commands reach the channel now
+  (void)push_out(commands);
+  in_mdi_ = false;
+  done_ = true;
+  mdi_->pending.fetch_sub(1, std::memory_order_release);
+}
+
+void ChannelPrep::mark_mdi(PlannedBlock& b) const {
+  for (PlannedCommand& c : b)
+    if (c.mdi == kernel::Mdi::none) c.mdi = kernel::Mdi::block;
 }
 
 }  // namespace nck::prep

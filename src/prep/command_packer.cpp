@@ -64,6 +64,7 @@ bool CommandPacker::pack(const PlannedCommand& c, kernel::CommandQueue& q) {
   if (c.has_n) k.n = c.n;
   k.emit_block_event = c.emit_block_event;
   k.restart = c.restart;
+  k.mdi = c.mdi;
   k.feed_motion = c.feed_motion;
   k.expl_syn = c.expl_syn;
   k.frame_index = c.frame_index;

@@ -1,5 +1,7 @@
 #include "nck/sim/dry_run.hpp"
 
+#include <fmt/format.h>
+
 #include "nck/prep/planner.hpp"
 
 namespace nck::sim {
@@ -36,6 +38,7 @@ DryRun& DryRun::operator=(DryRun&&) noexcept = default;
 constexpr std::size_t kQueuedAhead = kernel::kMaxLookAheadDepth;
 
 void DryRun::prepare() {
+  if (!sim_->mdi_requests().empty()) submit_mdi();
   if (threaded_) {
     // Started here, once this object has stopped moving.
     if (!prep_thread_) prep_thread_ = std::make_unique<PrepThread>(preps_, *kernel_);
@@ -71,7 +74,33 @@ void DryRun::stop_preparation() {
 bool DryRun::done() const noexcept {
   for (std::size_t ch = 0; ch < preps_.size(); ++ch)
     if (preps_[ch].has_program() && !kernel_->channel_done(ch)) return false;
-  return true;
+  if (!sim_->runs_mdi()) return true;
+  for (std::size_t ch = 0; ch < preps_.size(); ++ch)
+    if (preps_[ch].mdi_used() && (preps_[ch].mdi_pending() || !kernel_->channel_done(ch))) return false;
+  return !sim_->scenario_pending() && sim_->mdi_requests().empty();
+}
+
+// MDI is for an idle channel: before its program, after its end or a reset,
+// or while it runs the MDI text before (the texts queue up).
+void DryRun::submit_mdi() {
+  for (const MachineSim::MdiRequest& r : sim_->mdi_requests()) {
+    const std::size_t ch = r.channel - 1u;
+    if (ch >= preps_.size()) continue;
+    const kernel::ProgramState st = kernel_->program_state(ch);
+    const bool idle = st == kernel::ProgramState::idle || st == kernel::ProgramState::ended;
+    const bool in_mdi = preps_[ch].mdi_pending() || (preps_[ch].mdi_used() && st == kernel::ProgramState::running &&
+                                                     !preps_[ch].has_program());
+    if (idle || in_mdi) {
+      preps_[ch].submit_mdi(sim_->mdi_text(r.text));
+      continue;
+    }
+    refusals_.push_back(Refusal{r.channel, make_diagnostic(
+        ErrorId::KernelMdiRefused, SourceLoc{sim_->scenario_file(), r.line, 0},
+        fmt::format("MDI '{}' refused: channel {} is {}", sim_->mdi_text(r.text), r.channel,
+                    kernel::state_name(st)))});
+  }
+  sim_->mdi_requests().clear();
+  if (prep_thread_) prep_thread_->wake();
 }
 
 bool DryRun::held_for_good() const noexcept {

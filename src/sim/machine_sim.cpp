@@ -30,6 +30,7 @@ MachineSim::MachineSim(const config::Machine& m)
 
 void MachineSim::load_scenario(const sim::Scenario& scenario) {
   player_ = ScenarioPlayer(scenario);
+  scenario_ = &scenario;
   // The PLC sets skip levels at time 0 before the program starts: decoding,
   // which runs ahead of the first cycle, sees them from the first block.
   for (const sim::ScenarioAction& a : scenario.actions) {
@@ -102,6 +103,10 @@ void MachineSim::apply(const sim::ScenarioAction& a, kernel::TickInput& in) noex
     case sim::ActionKind::single_step: ch.single_step = a.on; return;
     case sim::ActionKind::skip_mask: ch.skip_mask = static_cast<std::uint32_t>(a.value); return;
     case sim::ActionKind::silent: plc_.set_silent(a.on); return;
+    case sim::ActionKind::mdi:  // beyond 64 lines due in one cycle: dropped (docs/plc-scenario.md)
+      (void)mdi_requests_.push_back(MdiRequest{a.line, a.channel, static_cast<std::uint32_t>(a.value)});
+      return;
+    case sim::ActionKind::block_search: return;  // taken at setup (DryRunOptions::search)
     case sim::ActionKind::handwheel:
       if (a.axis >= 0) in.channels[c].handwheel_mm[static_cast<std::size_t>(a.axis)] += a.value;
       handwheel_turned_ = true;

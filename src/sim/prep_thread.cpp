@@ -70,9 +70,11 @@ void PrepThread::cycle_done() noexcept {
 
 // Could channel ch's preparation still add to what the next cycle sees?
 bool PrepThread::may_add(std::size_t ch, std::size_t ahead) const noexcept {
-  if (!preps_[ch].has_program()) return false;
+  if (!preps_[ch].has_program() && !preps_[ch].mdi_pending()) return false;
   switch (idle_[ch].load(std::memory_order_acquire)) {
-    case Idle::done: return false;  // the whole program is queued
+    case Idle::done:  // the whole program is queued
+      if (!preps_[ch].mdi_pending()) return false;
+      break;
     case Idle::awaiting_feedback:   // until the kernel hands feedback over
       if (kernel_.feedback(ch).free_slots() == kernel::FeedbackQueue::capacity()) return false;
       break;

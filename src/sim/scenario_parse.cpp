@@ -43,6 +43,7 @@ constexpr std::array kActions = {
     ActionSpelling{"single_step", ActionKind::single_step},
     ActionSpelling{"skip_mask", ActionKind::skip_mask},
     ActionSpelling{"block_search", ActionKind::block_search},
+    ActionSpelling{"mdi", ActionKind::mdi},
 };
 
 // Parses one line; reports its first problem and returns nothing then.
@@ -53,6 +54,8 @@ class LineParser {
       : toks_(toks), file_(file), line_(line), diags_(diags) {}
 
   std::optional<ScenarioAction> parse();
+  // mdi: the NC text, as written from its first word to its last.
+  const std::string& mdi_text() const { return mdi_text_; }
 
  private:
   bool fail(ErrorId id, std::uint32_t column, std::string msg) {
@@ -78,6 +81,7 @@ class LineParser {
   bool take_variable(ScenarioAction& a);
   bool take_skip_mask(double& mask);
   bool take_block_search(ScenarioAction& a);
+  bool take_mdi_text();
   bool take_search_mark(ScenarioAction& a);
   bool take_whole(std::string_view what, std::int64_t lowest, std::int64_t& value);
   bool take_keyword_value(std::string_view key, double& value, bool& seen);
@@ -87,6 +91,7 @@ class LineParser {
   std::uint32_t line_;
   Diagnostics& diags_;
   std::size_t next_ = 0;
+  std::string mdi_text_;
 };
 
 std::optional<ScenarioAction> LineParser::parse() {
@@ -198,6 +203,8 @@ bool LineParser::parse_args(ScenarioAction& a) {
       return take_skip_mask(a.value);
     case ActionKind::block_search:
       return take_block_search(a);
+    case ActionKind::mdi:
+      return take_mdi_text();
   }
   return true;
 }
@@ -296,6 +303,16 @@ bool LineParser::take_skip_mask(double& mask) {
                 fmt::format("'{}' is not a skip mask; write 0 to 1023 (0x3FF): bit 0 = /1 ... bit 9 = /10",
                             detail::printable(t.text)));
   mask = v;
+  return true;
+}
+
+// mdi <NC block>: the rest of the line (a '#' starts the scenario's comment).
+bool LineParser::take_mdi_text() {
+  if (!need("the NC block to run (e.g. G1 X10 F1000)")) return false;
+  const char* first = toks_[next_].text.data();
+  const Token& last = toks_.back();
+  mdi_text_.assign(first, static_cast<std::size_t>(last.text.data() + last.text.size() - first));
+  next_ = toks_.size();
   return true;
 }
 
@@ -480,8 +497,13 @@ Scenario parse_scenario(std::string_view text, std::string file, Diagnostics& di
                             kMaxScenarioActions));
       break;
     }
-    auto a = LineParser(toks, sc.file, line_no, diags).parse();
+    LineParser parser(toks, sc.file, line_no, diags);
+    auto a = parser.parse();
     if (!a) continue;
+    if (a->kind == ActionKind::mdi) {
+      a->value = static_cast<double>(sc.texts.size());
+      sc.texts.push_back(parser.mdi_text());
+    }
     if (a->t_s < last_t_s)
       diags.add(ErrorId::PlcScenarioTimeBackwards, SourceLoc{sc.file, line_no, 1},
                 fmt::format("time {} s comes after {} s; the action is sorted in by its time",

@@ -82,6 +82,10 @@ enum class Restart : std::uint8_t {
   returns_no_hold,  // the same without the hold (HLI no_hold_at_restart)
 };
 
+// MDI (prep/channel_prep.hpp): a command of the operator's text, or the
+// one after its last that returns the channel to idle.
+enum class Mdi : std::uint8_t { none, block, end };
+
 struct Command {
   // the block it came from
   std::uint16_t file_id = 0;
@@ -91,6 +95,7 @@ struct Command {
   bool feed_motion = false;      // G1/G2/G3: MVS_SLM functions synchronise here
   bool expl_syn = false;         // #EXPL SYN: MVS_SLP functions synchronise here
   Restart restart = Restart::none;
+  Mdi mdi = Mdi::none;
   // PlanStore::frames index of the block's program -> machine map, handed on
   // in the block event (none: not recorded)
   std::optional<std::uint32_t> frame_index;

@@ -32,6 +32,7 @@ enum class StateReason : std::uint8_t {
   single_step,  // single step: the block ended
   stop_at,      // the stop-at mark's block ended
   block_search,  // a block search began, returned to the contour, or ended its return
+  mdi,           // MDI text began or was done
 };
 
 constexpr std::string_view state_name(ProgramState s) noexcept {
@@ -64,6 +65,7 @@ constexpr std::string_view state_reason_name(StateReason r) noexcept {
     case StateReason::single_step: return "single_step";
     case StateReason::stop_at: return "stop_at";
     case StateReason::block_search: return "block_search";
+    case StateReason::mdi: return "mdi";
   }
   return "start";
 }

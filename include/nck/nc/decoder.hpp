@@ -75,6 +75,8 @@ class KernelStateReader {
   virtual std::optional<double> read(std::string_view key) const = 0;
 };
 
+inline constexpr const char* kMdiFileName = "MDI";
+
 class Decoder {
  public:
   // stopped: DecoderConfig::stop was set; decoding ends here, without a
@@ -88,6 +90,8 @@ class Decoder {
   // Opens the main program. Errors (missing file...) are reported through
   // diagnostics() and the first next() returns Status::error.
   Decoder(const std::filesystem::path& program, DecoderConfig cfg);
+  // A decoder without a program, for MDI only (run_mdi); next() is Status::end until then.
+  explicit Decoder(DecoderConfig cfg);
   ~Decoder();
   Decoder(Decoder&&) noexcept;
   Decoder& operator=(Decoder&&) noexcept;
@@ -116,6 +120,12 @@ class Decoder {
   // The active block-skip levels (the HLI's program_block_ignore, facts
   // C4): they act on the blocks decoded from now on.
   void set_skip_mask(std::uint32_t mask) noexcept;
+  // MDI: decoding goes on with `text`, blocks the operator typed, with the
+  // modal state, variables and offsets where decoding stopped (after the
+  // program end, an error, or the last MDI text). Its end is Status::end;
+  // an error ends it (the next MDI text starts afresh). Its blocks come
+  // from the file named kMdiFileName.
+  void run_mdi(std::string text);
   // Kernel state variables come from `reader` (not owned; nullptr: none,
   // as in `nck parse`, where they read 0).
   void set_kernel_state_reader(const KernelStateReader* reader);

@@ -9,6 +9,8 @@
 // the only producer of commands and the only consumer of feedback.
 #include <atomic>
 #include <cstdint>
+#include <deque>
+#include <mutex>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -64,7 +66,17 @@ class ChannelPrep {
   // no room for it.
   bool prepare(const nc::Block& b, kernel::CommandQueue& commands);
 
-  bool has_program() const { return decoder_.has_value(); }
+  bool has_program() const { return has_program_; }
+  // MDI (from any thread): blocks the operator typed, prepared once all
+  // before them is (after the program end, or at once in a channel without
+  // a program) with the modal state, offsets and tool where they are. Each
+  // text ends with a command that returns the channel to idle; an error
+  // ends its text, never the channel.
+  void submit_mdi(std::string text);
+  // MDI text submitted and not yet all handed over (any thread).
+  bool mdi_pending() const { return mdi_->pending.load(std::memory_order_acquire) > 0; }
+  // Some MDI text was submitted in this run.
+  bool mdi_used() const { return mdi_->used.load(std::memory_order_acquire); }
   // The HLI's block-skip levels (/1 = 0x1 ... /10 = 0x200): blocks decoded
   // from now on skip by them.
   void set_skip_mask(std::uint32_t mask) noexcept {
@@ -104,6 +116,11 @@ class ChannelPrep {
   void search_not_found(const nc::Block& end, kernel::CommandQueue& commands);
   // What a block that needs feedback gets in search, where nothing runs.
   void take_search_feedback(const nc::Block& b);
+  // MDI: starts the next text once everything before it is prepared; ends
+  // one (the command that returns the channel to idle).
+  void start_mdi();
+  void finish_mdi(kernel::CommandQueue& commands);
+  void mark_mdi(PlannedBlock& b) const;
 
   std::optional<nc::Decoder> decoder_;
   std::unique_ptr<Planner> planner_;
@@ -111,6 +128,16 @@ class ChannelPrep {
   RadiusComp trc_;
   std::vector<PlannedBlock> backlog_;  // planned, waiting for room in the window
   std::optional<SearchRun> search_;    // while a block search runs
+  bool has_program_ = false;
+  // MDI texts submitted (by any thread), and whether one is being prepared.
+  struct MdiInbox {
+    std::mutex mutex;
+    std::deque<std::string> texts;
+    std::atomic<std::size_t> pending{0};  // texts submitted, not yet all handed over
+    std::atomic<bool> used{false};
+  };
+  std::unique_ptr<MdiInbox> mdi_ = std::make_unique<MdiInbox>();
+  bool in_mdi_ = false;
   // The window must empty into the queue (program end, an error, a block
   // whose feedback later blocks need) before anything else is decoded.
   bool flushing_ = false;

@@ -52,6 +52,7 @@ struct PlannedCommand {
   std::int64_t n = 0;
   bool emit_block_event = true;  // false for follow-up commands of one block
   kernel::Restart restart = kernel::Restart::none;  // block search (block_search.hpp)
+  kernel::Mdi mdi = kernel::Mdi::none;              // MDI (channel_prep.hpp)
   // PlanStore::frames index of the block's program -> machine map, handed on
   // in the block event (none: not recorded)
   std::optional<std::uint32_t> frame_index;

@@ -84,8 +84,16 @@ class DryRun {
 
   // Channel ch holds at this mark for the caller (nck run --stop-at).
   void set_stop_at(std::size_t ch, const kernel::StopMark& mark) noexcept { sim_->set_stop_at(ch, mark); }
-  // Every channel that has a program has ended.
+  // Every channel that has a program has ended, and (when the scenario
+  // types MDI) no MDI text is still to come or to run.
   bool done() const noexcept;
+  // MDI lines the scenario typed while their channel could not take them
+  // (930710), since the last call; the caller reports them.
+  struct Refusal {
+    std::uint8_t channel = 1;
+    Diagnostic diagnostic;
+  };
+  std::vector<Refusal> take_refusals() { return std::exchange(refusals_, {}); }
   // Every channel still running holds (M0/M1) and nothing will release it:
   // no automatic cycle start, no scenario line still to come.
   bool held_for_good() const noexcept;
@@ -115,6 +123,9 @@ class DryRun {
   std::vector<prep::ChannelPrep> preps_;
   std::unique_ptr<kernel::TickInput> in_;
   bool threaded_ = false;
+  std::vector<Refusal> refusals_;
+  // setup side: hands the MDI lines that came due to preparation.
+  void submit_mdi();
   std::unique_ptr<PrepThread> prep_thread_;  // last: ends before what it uses
 };
 

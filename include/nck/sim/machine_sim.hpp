@@ -13,8 +13,10 @@
 // lock or throw.
 #include <array>
 #include <cstdint>
+#include <string>
 
 #include "nck/config/machine.hpp"
+#include "nck/core/fixed_vector.hpp"
 #include "nck/kernel/tick_io.hpp"
 #include "nck/plc/hli.hpp"
 #include "nck/sim/scenario.hpp"
@@ -62,6 +64,18 @@ class MachineSim {
   bool skip_levels_used() const noexcept { return skip_levels_used_; }
   // The scenario has actions still to come.
   bool scenario_pending() const noexcept { return !player_.finished(); }
+  // MDI lines of the scenario that came due, for preparation to take
+  // (DryRun::prepare clears them); texts by Scenario::texts index.
+  struct MdiRequest {
+    std::uint32_t line = 0;  // in the scenario file
+    std::uint8_t channel = 1;
+    std::uint32_t text = 0;
+  };
+  FixedVector<MdiRequest, 64>& mdi_requests() noexcept { return mdi_requests_; }
+  const std::string& mdi_text(std::uint32_t i) const { return scenario_->texts.at(i); }
+  const std::string& scenario_file() const { return scenario_->file; }
+  // The scenario types MDI text.
+  bool runs_mdi() const noexcept { return scenario_ && !scenario_->texts.empty(); }
 
  private:
   void apply(const sim::ScenarioAction& a, kernel::TickInput& in) noexcept;
@@ -72,6 +86,8 @@ class MachineSim {
   plc::HliImage hli_;
   plc::SpindleMap map_;
   ScenarioPlayer player_;
+  const sim::Scenario* scenario_ = nullptr;
+  FixedVector<MdiRequest, 64> mdi_requests_;
   std::array<Probe, config::kMaxChannels> probes_{};
   std::array<DistanceSensor, config::kMaxChannels> sensors_{};
   std::array<bool, config::kMaxChannels> sensor_on_{};  // sampled only once a program needs it

@@ -48,6 +48,12 @@ class PrepThread {
   void set_skip_mask(std::size_t ch, std::uint32_t mask) noexcept {
     if (ch < skip_masks_.size()) skip_masks_[ch].store(mask, std::memory_order_release);
   }
+  // New work that is not a cycle (MDI text): preparation looks again, and
+  // the next wait_caught_up() waits for it.
+  void wake() noexcept {
+    cycles_.fetch_add(1, std::memory_order_release);
+    cycles_.notify_all();
+  }
   // Stops the thread; afterwards the preparations may be read from this thread.
   void stop();
   // cycle side: rethrows what ended preparation, if an exception did.

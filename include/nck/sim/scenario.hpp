@@ -37,6 +37,7 @@ enum class ActionKind : std::uint8_t {
   single_step,          // single_step on|off         (hold at block ends, P-CHAN-00015)
   skip_mask,            // skip_mask 0x5              (active block-skip levels /1 /3: program_block_ignore)
   block_search,         // block_search N100 pass 2 covered 400   (at time 0: the run starts with a block search)
+  mdi,                  // mdi G1 X10 F1000           (one block typed by the operator: Scenario::texts[value])
 };
 
 // The action's name as written in the file (the primary spelling).
@@ -68,6 +69,7 @@ struct ScenarioAction {
 struct Scenario {
   std::string file;
   std::vector<ScenarioAction> actions;  // sorted by time, file order within equal times
+  std::vector<std::string> texts;       // MDI lines' text (ScenarioAction::value is the index)
 };
 
 inline constexpr std::size_t kMaxScenarioActions = 100000;

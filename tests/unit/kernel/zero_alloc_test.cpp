@@ -124,6 +124,7 @@ TEST(ZeroAllocation, WholeExamplesRunThroughTickWithoutHeap) {
   const Example examples[] = {
       {"examples/mill", {"examples/mill/contour.nc"}},
       {"examples/mill", {"examples/mill/contour.nc"}, "examples/mill/single_step.plc"},  // hold and release
+      {"examples/mill", {}, "examples/mill/mdi.plc"},                                    // MDI
       {"examples/mill", {"examples/mill/contour_blend.nc"}},
       {"examples/mill", {"examples/mill/offsets.nc"}},
       {"examples/mill", {"examples/mill/coordinates.nc"}},
@@ -167,13 +168,15 @@ TEST(ZeroAllocation, CycleThreadAllocatesNothingBesidePreparationThread) {
       {"examples/mill", {"examples/mill/measure.nc"}},
       {"examples/mill", {"examples/mill/caxis.nc"}},
       {"examples/mill", {"examples/mill/manual.nc"}, "examples/mill/manual.plc"},
+      {"examples/mill", {}, "examples/mill/mdi.plc"},
       {"examples/cutter", {"examples/cutter/contour.nc"}},
       {"examples/two-channel", {"examples/two-channel/channel1.nc", "examples/two-channel/channel2.nc"}},
   };
   for (const Example& ex : examples) {
     g_allocations = 0;
-    EXPECT_GT(run_counting(ex, true), 1000u) << ex.programs[0];
-    EXPECT_EQ(g_allocations.load(), 0u) << ex.programs[0];
+    const char* name = ex.programs.empty() ? ex.plc : ex.programs[0];
+    EXPECT_GT(run_counting(ex, true), 1000u) << name;
+    EXPECT_EQ(g_allocations.load(), 0u) << name;
   }
 }
 

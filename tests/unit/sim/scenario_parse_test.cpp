@@ -285,6 +285,18 @@ TEST(ScenarioParse, BlockSearch) {
   EXPECT_EQ(block_search_of(twice.sc)->mark.value, 1);
 }
 
+// Issue 27: MDI text, the rest of the line up to a scenario comment.
+TEST(ScenarioParse, MdiText) {
+  const auto p = parse("0 mdi G1 X10  Y5 F1000   # comment\n1 ch=1 mdi G0 Z5\n");
+  ASSERT_TRUE(p.diags.empty());
+  ASSERT_EQ(p.sc.actions.size(), 2u);
+  EXPECT_EQ(p.sc.actions[0].kind, ActionKind::mdi);
+  ASSERT_EQ(p.sc.texts.size(), 2u);
+  EXPECT_EQ(p.sc.texts[static_cast<std::size_t>(p.sc.actions[0].value)], "G1 X10  Y5 F1000");
+  EXPECT_EQ(p.sc.texts[static_cast<std::size_t>(p.sc.actions[1].value)], "G0 Z5");
+  EXPECT_EQ(bad("0 mdi").id, ErrorId::PlcScenarioMissingArgument);
+}
+
 }  // namespace
 }  // namespace nck::sim
 
