@@ -1,4 +1,4 @@
-// The small commands: check, parse, params, errors.
+// The small commands: parse, fit-curve, params, errors.
 #include "commands.hpp"
 
 #include <fmt/format.h>
@@ -17,18 +17,6 @@
 #include <vector>
 
 namespace nck::app {
-
-int check_machine(const std::string& folder) {
-  const config::LoadResult r = config::load_machine(folder);
-  std::size_t warnings = 0;
-  for (const Diagnostic& d : r.diagnostics.items()) {
-    fmt::print(stderr, "{}\n", format(d));
-    warnings += d.severity == Severity::warning;
-  }
-  const std::size_t errors = r.diagnostics.error_count();
-  fmt::print(stderr, "{}: {} error(s), {} warning(s)\n", folder, errors, warnings);
-  return r.ok() ? 0 : 1;
-}
 
 namespace {
 
@@ -199,9 +187,10 @@ std::string errors_markdown() {
   return out;
 }
 
-// By ID or by name ("940004", "OutputPath").
+// By ID, name or a word of its description ("940004", "OutputPath",
+// "software limit"): a user knows what went wrong before knowing its name.
 int print_errors(const std::string& lookup) {
-  return print_matching_rows(errors_markdown(), lookup, {0, 2}, "diagnostic ID or name");
+  return print_matching_rows(errors_markdown(), lookup, {0, 2, 3, 4}, "diagnostic ID, name or description");
 }
 
 }  // namespace nck::app

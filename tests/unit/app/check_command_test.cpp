@@ -1,0 +1,114 @@
+// `nck check MACHINE PROGRAM`: every mistake of a program in one call, with
+// the ID and line `nck run` gives each, as text and as JSON (--json).
+#include <gtest/gtest.h>
+
+#include <set>
+#include <sstream>
+#include <utility>
+
+#include "cli_helpers.hpp"
+
+namespace nck::app {
+namespace {
+
+using namespace testing;
+
+const std::string kMistakes = "/examples/mill/check_mistakes.nc";
+
+// The six mistakes of examples/mill/check_mistakes.nc: ID and line.
+const std::vector<std::pair<std::string, int>> kSix = {
+    {"930002", 6}, {"930004", 8}, {"920005", 9}, {"920022", 10}, {"930003", 11}, {"920044", 13}};
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);) out.push_back(l);
+  return out;
+}
+
+TEST(CheckCommand, ListsAllSixMistakesWithValues) {
+  const std::string prog = root() + kMistakes;
+  CliResult r = run_nck("check " + mill() + " " + prog);
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  for (const auto& [id, line] : kSix)
+    EXPECT_NE(r.output.find(prog + ":" + std::to_string(line) + ":"), std::string::npos) << id << "\n" << r.output;
+  for (const auto& [id, line] : kSix) EXPECT_NE(r.output.find("error " + id + ":"), std::string::npos) << id;
+  EXPECT_NE(r.output.find("start radius 5.0000 mm, end radius 15.0000 mm, difference 10.0000 mm"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("X 650.0000 is outside the software limits [-500.0000, 500.0000]: 150.0000 mm beyond"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("6 error(s), 0 warning(s)"), std::string::npos) << r.output;
+}
+
+// Each mistake alone (the other five lines made comments, so the lines stay
+// where they are): `nck run` stops with the same ID at the same line.
+TEST(CheckCommand, EachMistakeHasTheIdAndLineOfTheRun) {
+  const std::vector<std::string> text = lines_of(read_file(root() + kMistakes));
+  const auto dir = temp_dir("check_vs_run");
+  for (const auto& [id, line] : kSix) {
+    std::string alone;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      bool other = false;
+      for (const auto& [other_id, other_line] : kSix) other = other || (other_line != line && other_line == int(i) + 1);
+      alone += (other ? "; (another mistake)" : text[i]) + "\n";
+    }
+    const std::string prog = write(dir / ("alone_" + id + ".nc"), alone).string();
+    CliResult run = run_nck("run " + mill() + " " + prog + " --no-progress");
+    EXPECT_EQ(run.exit_code, 1) << run.output;
+    const std::string where = prog + ":" + std::to_string(line) + ": error " + id + ":";
+    EXPECT_NE(run.output.find(where), std::string::npos) << where << "\n" << run.output;
+    CliResult check = run_nck("check " + mill() + " " + prog);
+    EXPECT_EQ(check.exit_code, 1) << check.output;
+    EXPECT_NE(check.output.find(prog + ":" + std::to_string(line)), std::string::npos) << check.output;
+    EXPECT_NE(check.output.find("error " + id + ":"), std::string::npos) << check.output;
+    EXPECT_NE(check.output.find("1 error(s)"), std::string::npos) << check.output;
+  }
+}
+
+TEST(CheckCommand, JsonListsTheDiagnosticsForCi) {
+  const std::string prog = root() + kMistakes;
+  CliResult r = run_nck_raw("check --json " + mill() + " " + prog + " 2>/dev/null");
+  EXPECT_EQ(r.exit_code, 1);
+  const nlohmann::json list = nlohmann::json::parse(r.output, nullptr, false);
+  ASSERT_TRUE(list.is_array()) << r.output;
+  ASSERT_EQ(list.size(), kSix.size()) << r.output;
+  for (std::size_t i = 0; i < kSix.size(); ++i) {
+    const nlohmann::json& d = list[i];
+    EXPECT_EQ(std::to_string(d.at("id").get<int>()), kSix[i].first) << d;
+    EXPECT_EQ(d.at("line").get<int>(), kSix[i].second) << d;
+    EXPECT_EQ(d.at("severity"), "error") << d;
+    EXPECT_EQ(d.at("file"), prog) << d;
+    EXPECT_TRUE(d.at("column").is_number()) << d;
+    EXPECT_FALSE(d.at("message").get<std::string>().empty()) << d;
+  }
+}
+
+TEST(CheckCommand, ACleanProgramExitsZero) {
+  CliResult r = run_nck("check " + mill() + " " + mill() + "/contour.nc");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  CliResult json = run_nck_raw("check --json " + mill() + " " + mill() + "/contour.nc 2>/dev/null");
+  EXPECT_EQ(json.exit_code, 0);
+  EXPECT_EQ(nlohmann::json::parse(json.output, nullptr, false), nlohmann::json::array()) << json.output;
+}
+
+TEST(CheckCommand, BadUsageExitsTwo) {
+  CliResult missing = run_nck("check " + mill() + " /nonexistent/prog.nc");
+  EXPECT_EQ(missing.exit_code, 2) << missing.output;
+  EXPECT_NE(missing.output.find("940001"), std::string::npos) << missing.output;
+  const std::string p = mill() + "/contour.nc";
+  CliResult too_many = run_nck("check " + mill() + " " + p + " " + p + " " + p);
+  EXPECT_EQ(too_many.exit_code, 2) << too_many.output;
+  CliResult no_machine = run_nck("check");
+  EXPECT_EQ(no_machine.exit_code, 2) << no_machine.output;
+}
+
+// Without programs `nck check` checks the machine data alone, as before.
+TEST(CheckCommand, MachineAloneIsCheckedAsBefore) {
+  CliResult r = run_nck("check " + mill());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("0 error(s)"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace nck::app
