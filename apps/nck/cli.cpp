@@ -171,12 +171,12 @@ int main_cli(int argc, char** argv) {
   runc->add_option("MACHINE", run.machine, "machine folder (with startup.lis)")->required();
   runc->add_option("PROGRAM", run.programs, "NC program per channel (PROGRAM2 runs in channel 2...)")
       ->required();
-  runc->add_option("--events", run.events, "write events as JSON lines to FILE (- for stdout)");
-  runc->add_option("--trace", run.trace, "write set points as CSV to FILE (- for stdout)");
+  runc->add_option("--events", run.events, "write events as JSON lines to FILE (- for stdout)")->type_name("FILE");
+  runc->add_option("--trace", run.trace, "write set points as CSV to FILE (- for stdout)")->type_name("FILE");
   runc->add_option("--trace-every", run.trace_every, "trace every Nth cycle")->check(number_at_least(1, true));
-  runc->add_option("--final", run.final_state, "write the final state as JSON to FILE (- for stdout)");
+  runc->add_option("--final", run.final_state, "write the final state as JSON to FILE (- for stdout)")->type_name("FILE");
   runc->add_option("--plc", run.plc, "timed HLI actions (docs/plc-scenario.md)");
-  runc->add_option("--report", run.report, "write a self-contained HTML report with plots to FILE (- for stdout)");
+  runc->add_option("--report", run.report, "write a self-contained HTML report with plots to FILE (- for stdout)")->type_name("FILE");
   runc->add_option("--max-time", run.max_time_s, "simulated-time limit in seconds")
       ->check(number_at_least(0.001, false));
   runc->add_option("--max-wall", run.max_wall_s, "wall-clock limit in seconds")->check(number_at_least(0.001, false));
@@ -196,6 +196,9 @@ int main_cli(int argc, char** argv) {
       ->check(stop_at_validator());
   runc->add_option("--cycles", run.cycles, "search DIR for L CYCLE files (after the machine's cycle_path[i]); repeat")
       ->allow_extra_args(false);
+  runc->footer(
+      "FILE - writes that output to stdout (one output at a time); diagnostics and the progress line stay on "
+      "stderr.");
 
   ParseOptions parse;
   auto* parsec = app.add_subcommand("parse", "Decode an NC program and print diagnostics");
