@@ -19,6 +19,7 @@
 #include "nck/prep/lookahead_window.hpp"
 #include "nck/prep/planner.hpp"
 #include "nck/prep/radius_comp.hpp"
+#include "spindle_limit_check.hpp"
 
 namespace nck::prep {
 namespace {
@@ -48,6 +49,7 @@ class ChannelCheck {
         window_(std::min<std::size_t>(m.channels[ch].lookahead_blocks, kernel::kMaxLookAheadDepth),
                 m.cycle_time_us * 1e-6),
         trc_(m, ch),
+        spindle_limits_(m, ch, kernel_spindles(m, ch)),
         queue_(std::make_unique<kernel::CommandQueue>()),
         decoder_(program, lint_config(m, ch, o)) {
     window_.set_blend_axes(planner_.blend_axes());
@@ -73,6 +75,8 @@ class ChannelCheck {
   Planner planner_;
   LookAheadWindow window_;
   RadiusComp trc_;
+  SpindleLimitCheck spindle_limits_;
+  std::vector<Diagnostic> spindle_found_;
   std::unique_ptr<kernel::CommandQueue> queue_;  // what the window releases; emptied at once
   nc::Decoder decoder_;
   std::vector<TrcOut> outs_;
@@ -137,7 +141,10 @@ void ChannelCheck::prepare(const nc::Block& b) {
 
 void ChannelCheck::assume_feedback(const nc::Block& b) {
   if (b.g_nonmodal.has(nc::GCode::g100)) {
-    kernel::MeasureResult probe;  // not switched: the axes reached the planned end
+    // Switched at the planned end: what a program does with a measurement
+    // (G101, V.A.MESS) is checked, and the measured offset is 0.
+    kernel::MeasureResult probe;
+    probe.triggered = true;
     probe.mcs = planner_.planned_mcs();
     for (const auto& [name, value] : planner_.take_measurement(probe)) (void)decoder_.set_variable(name, value);
   } else if (b.hash && std::holds_alternative<nc::CAxis>(*b.hash)) {
@@ -152,8 +159,16 @@ void ChannelCheck::record(const PlannedCommand& c) {
   const std::string& file = decoder_.file_name(c.file_id);
   for (const kernel::Warning& w : c.warnings)
     add(Diagnostic{w.id, Severity::warning, {file, c.line, 0}, message(w.message_index)});
-  if (c.kind == CommandKind::error)
+  if (c.kind == CommandKind::error) {
     add(Diagnostic{c.error_id, Severity::error, {file, c.line, 0}, message(c.message_index)});
+    return;
+  }
+  spindle_found_.clear();
+  spindle_limits_.check(c, spindle_found_);
+  for (Diagnostic& d : spindle_found_) {
+    d.loc.file = file;
+    add(std::move(d));
+  }
 }
 
 void ChannelCheck::add(Diagnostic d) {

@@ -11,7 +11,9 @@
 //    planner's position stays where the last good block left it;
 //  - what execution would feed back (G100's measurement, #CAX's spindle
 //    position, #GET MANUAL OFFSETS) is taken as "nothing changed": the probe
-//    did not switch at the planned end, C at 0, no handwheel offsets.
+//    switched at the end of the G100 run, C at 0, no handwheel offsets.
+// The spindle speed limits, which the kernel's spindle applies, are followed
+// through the planned spindle actions (spindle_limit_check.hpp).
 // Only what ends decoding for good ends the check early: a main program that
 // cannot be read, an unclosed structure, a nesting or reading limit.
 // Setup side: allocates, never throws on bad input.

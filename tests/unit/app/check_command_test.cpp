@@ -2,6 +2,7 @@
 // the ID and line `nck run` gives each, as text and as JSON (--json).
 #include <gtest/gtest.h>
 
+#include <regex>
 #include <set>
 #include <sstream>
 #include <utility>
@@ -101,6 +102,40 @@ TEST(CheckCommand, BadUsageExitsTwo) {
   EXPECT_EQ(too_many.exit_code, 2) << too_many.output;
   CliResult no_machine = run_nck("check");
   EXPECT_EQ(no_machine.exit_code, 2) << no_machine.output;
+}
+
+// "line severity id" of every diagnostic line of a program file ("x.nc:12:5:
+// warning 20685: ..." -> "12 warning 20685"); the column is the decoder's
+// in the check and unknown in the run's events.
+std::set<std::string> program_diagnostics(const std::string& output) {
+  std::set<std::string> out;
+  static const std::regex line(R"(\.nc:(\d+)(:\d+)?: (error|warning) (\d+):)");
+  for (auto it = std::sregex_iterator(output.begin(), output.end(), line); it != std::sregex_iterator(); ++it)
+    out.insert((*it)[1].str() + " " + (*it)[3].str() + " " + (*it)[4].str());
+  return out;
+}
+
+// No false alarm: on every example of tests/golden (a clean program each),
+// the check finds exactly what the run reports.
+TEST(CheckCommand, ExamplesCheckAsTheyRun) {
+  std::istringstream list(read_file(root() + "/tests/golden/examples.txt"));
+  int compared = 0;
+  for (std::string row; std::getline(list, row);) {
+    std::vector<std::string> cell;
+    std::istringstream cells(row);
+    for (std::string c; std::getline(cells, c, '|');) cell.push_back(c);
+    if (row.empty() || row[0] == '#' || cell.size() < 3 || cell[2].find("common:") != std::string::npos) continue;
+    const std::string args = " " + cell[1] + " " + cell[2] + " ";
+    const std::string extra = cell.size() > 3 ? cell[3] : "";
+    // examples.txt's paths are relative to the repository.
+    const std::string in_root = "cd '" + root() + "' && " + NCK_BINARY + " ";
+    CliResult check = run_shell(in_root + "check" + args + " 2>&1");
+    CliResult run = run_shell(in_root + "run" + args + extra + " --no-progress 2>&1");
+    EXPECT_EQ(check.exit_code, run.exit_code) << row << "\n" << check.output << run.output;
+    EXPECT_EQ(program_diagnostics(check.output), program_diagnostics(run.output)) << row << "\n" << check.output;
+    ++compared;
+  }
+  EXPECT_GE(compared, 25);
 }
 
 // Without programs `nck check` checks the machine data alone, as before.

@@ -70,6 +70,18 @@ TEST(ProgramCheck, RadiusProgrammedArcGivesRAndHalfTheChord) {
       << arc->message;
 }
 
+// The kernel's spindle would cap the speed and warn (950007): the check
+// says so at the block, with the speed and the gear stage's maximum.
+TEST(ProgramCheck, ASpeedAboveTheGearStageIsAWarningWithValues) {
+  const ProgramCheckResult r = check_text("G0 X0 Y0 Z10\nS500 M3\nS99999\nM5\nS88888\nM30\n");
+  EXPECT_EQ(ids_at_lines(r), (std::vector<std::string>{"950007@3"}));
+  ASSERT_FALSE(r.diagnostics.empty());
+  EXPECT_EQ(r.diagnostics[0].severity, Severity::warning);
+  EXPECT_NE(r.diagnostics[0].message.find("S1 99999 rpm is above the maximum of"), std::string::npos)
+      << r.diagnostics[0].message;
+  EXPECT_NE(r.diagnostics[0].message.find("gear stage 1"), std::string::npos) << r.diagnostics[0].message;
+}
+
 // A rejected move leaves the position where it was: the next blocks are
 // planned from there, and no error follows from the one before.
 TEST(ProgramCheck, AFailedMoveDoesNotMoveThePosition) {
