@@ -42,6 +42,13 @@ void SpindleLimitCheck::check(const PlannedCommand& c, std::vector<Diagnostic>& 
       case SpindleOp::gear_change:
       case SpindleOp::load_gear_data: s->stage = a.stage; break;
       case SpindleOp::tool_dynamics: s->pending_tool_max_rpm = a.tool_vb_max_rpm; break;
+      case SpindleOp::get_dynamic_data:  // GET_DYNAMIC_DATA: the tool's limits at once
+        if (s->pending_tool_max_rpm) s->tool_max_rpm = *std::exchange(s->pending_tool_max_rpm, {});
+        break;
+      case SpindleOp::default_dynamic_data:  // DEFAULT_DYNAMIC_DATA: no tool limits
+        s->tool_max_rpm = 0;
+        s->pending_tool_max_rpm.reset();
+        break;
       case SpindleOp::rotate:
         // Tool limits take effect on the way from standstill into motion (FCT-S1 2.8.5).
         if (!s->rotating && s->pending_tool_max_rpm) s->tool_max_rpm = *std::exchange(s->pending_tool_max_rpm, {});

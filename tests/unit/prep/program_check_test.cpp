@@ -82,6 +82,18 @@ TEST(ProgramCheck, ASpeedAboveTheGearStageIsAWarningWithValues) {
   EXPECT_NE(r.diagnostics[0].message.find("gear stage 1"), std::string::npos) << r.diagnostics[0].message;
 }
 
+// examples/mill's tool 5 limits S1 to 500 rpm from its next start out of
+// standstill; DEFAULT_DYNAMIC_DATA lifts the limit again.
+TEST(ProgramCheck, TheActiveToolLimitsTheSpeed) {
+  const ProgramCheckResult r =
+      check_text("G0 X0 Y0 Z10\nD5\nS800 M3\nM5\nS[DEFAULT_DYNAMIC_DATA]\nS800 M3\nM5\nM30\n");
+  EXPECT_EQ(ids_at_lines(r), (std::vector<std::string>{"950007@3"}));
+  ASSERT_FALSE(r.diagnostics.empty());
+  EXPECT_NE(r.diagnostics[0].message.find("S1 800 rpm is above the maximum of 500 rpm (the active tool's"),
+            std::string::npos)
+      << r.diagnostics[0].message;
+}
+
 // A rejected move leaves the position where it was: the next blocks are
 // planned from there, and no error follows from the one before.
 TEST(ProgramCheck, AFailedMoveDoesNotMoveThePosition) {
