@@ -2,6 +2,8 @@
 // the ID and line `nck run` gives each, as text and as JSON (--json).
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <random>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -136,6 +138,42 @@ TEST(CheckCommand, ExamplesCheckAsTheyRun) {
     ++compared;
   }
   EXPECT_GE(compared, 25);
+}
+
+// Seeded programs of good blocks with one to three mistakes among them
+// (NCK_CHECK_PROGRAMS=N for more): whatever the run reports, error or
+// warning, the check reports too, with the same ID and line.
+TEST(CheckCommand, WhatARunReportsTheCheckReportsAtTheSameLine) {
+  const std::vector<std::string> good = {"G17 G90 G71", "G0 X0 Y0 Z10", "G1 X10 F600", "G2 X20 Y0 I5 J0",
+                                         "G1 Y10", "G3 X10 Y20 R10", "G41 D1", "G1 X30", "G1 Y30",
+                                         "G40 G1 X0 Y0", "P1 = 5", "G1 X[P1]", "M3 S1000", "G4 X0.1", "M5"};
+  const std::vector<std::string> bad = {"G1 X10", "G2 X40 Y0 I5 J0", "G444 X3", "G1 Y[P77]", "G0 X900",
+                                        "L nosub.nc", "G2 X20 Y0 R2", "M3 S99999", "G41 D99", "G0 Y-800",
+                                        "Z-9999", "G1 Q5"};
+  const char* env = std::getenv("NCK_CHECK_PROGRAMS");
+  const int count = env ? std::atoi(env) : 30;
+  const auto dir = temp_dir("check_property");
+  for (int seed = 0; seed < count; ++seed) {
+    std::mt19937 rng(static_cast<unsigned>(seed));
+    auto pick = [&](const std::vector<std::string>& from) { return from[rng() % from.size()]; };
+    std::vector<std::string> lines;
+    for (int i = 0, n = 3 + static_cast<int>(rng() % 10); i < n; ++i) lines.push_back(pick(good));
+    for (int i = 0, n = 1 + static_cast<int>(rng() % 3); i < n; ++i)
+      lines.insert(lines.begin() + static_cast<long>(rng() % (lines.size() + 1)), pick(bad));
+    if (rng() % 10 != 0) lines.push_back("M30");
+    std::string text;
+    for (const std::string& l : lines) text += l + "\n";
+    const std::string prog = write(dir / ("p" + std::to_string(seed) + ".nc"), text).string();
+    CliResult run = run_nck("run " + mill() + " " + prog + " --no-progress --max-time 200");
+    CliResult check = run_nck("check " + mill() + " " + prog);
+    ASSERT_LE(check.exit_code, 2) << text << check.output;
+    const std::set<std::string> in_run = program_diagnostics(run.output), in_check = program_diagnostics(check.output);
+    for (const std::string& d : in_run)
+      EXPECT_TRUE(in_check.count(d)) << "seed " << seed << ": the run's " << d << " is not in the check's list\n"
+                                     << text << check.output;
+    EXPECT_EQ(run.exit_code == 0, check.exit_code == 0) << "seed " << seed << "\n" << text << run.output
+                                                        << check.output;
+  }
 }
 
 // Without programs `nck check` checks the machine data alone, as before.
