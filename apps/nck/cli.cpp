@@ -165,6 +165,9 @@ int main_cli(int argc, char** argv) {
       ->check(number_at_least(0, true));
   check->add_option("--max-wall", checko.max_wall_s, "wall-clock limit in seconds")
       ->check(number_at_least(0.001, false));
+  check->footer(
+      "Diagnostics go to stderr (FILE:LINE: error|warning ID: text), or with --json to stdout. Exit 0: no "
+      "errors (warnings allowed), 1: errors found, 2: bad usage (docs/cli.md).");
 
   RunOptions run;
   auto* runc = app.add_subcommand("run", "Run NC programs on a machine, cycle by cycle");

@@ -33,6 +33,14 @@ std::string radius_arc_values(double r, double chord) {
                      0.5 * chord - std::fabs(r));
 }
 
+// Which axis, where, and by how much it would pass its software limit.
+std::string outside_limits(const std::string& axis, double pos, double lo, double hi) {
+  const bool below = pos < lo;
+  return fmt::format("{} {:.4f} is outside the software limits [{:.4f}, {:.4f}]: {:.4f} mm {} the {} limit", axis,
+                     pos, lo, hi, below ? lo - pos : pos - hi, below ? "below" : "beyond",
+                     below ? "negative" : "positive");
+}
+
 }  // namespace
 
 frames::SuppressMask suppress_mask(const nc::Block& b) {
@@ -74,12 +82,8 @@ std::expected<motion::AxisVector, Diagnostic> machine_target(const nc::Block& b,
   for (std::size_t j = 0; j < ctx.n_axes; ++j) {
     const double lo = ctx.axes.sw_limit_neg_mm(j), hi = ctx.axes.sw_limit_pos_mm(j);
     if (target[j] < lo - 1e-9 || target[j] > hi + 1e-9)
-      return block_error(ErrorId::KernelSoftwareLimit, b,
-                         fmt::format("{} {:.4f} is outside the software limits [{:.4f}, {:.4f}]: {:.4f} mm {} "
-                                     "the {} limit",  // the location is the event's
-                                     ctx.channel.axes[j].name, target[j], lo, hi,
-                                     target[j] < lo ? lo - target[j] : target[j] - hi,
-                                     target[j] < lo ? "below" : "beyond", target[j] < lo ? "negative" : "positive"));
+      return block_error(ErrorId::KernelSoftwareLimit, b,  // the location is the event's
+                         outside_limits(ctx.channel.axes[j].name, target[j], lo, hi));
   }
   return target;
 }
