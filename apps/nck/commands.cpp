@@ -59,12 +59,11 @@ int parse_program(const ParseOptions& opt) {
       fmt::print(stderr, "{}\n", format(dec.diagnostics()[shown]));
   };
   for (;;) {
-    const std::size_t before = dec.diagnostics().size();
     nc::Decoder::Result res = dec.next();
     show_new();
-    // In lint mode a bad block is dropped and decoding goes on; an error
-    // without a new diagnostic means the decoder cannot go on.
-    if (res.status == nc::Decoder::Status::error && dec.diagnostics().size() > before) continue;
+    // In lint mode a bad block is dropped and decoding goes on (an error met
+    // again in a loop brings no new diagnostic, yet decoding goes on).
+    if (res.status == nc::Decoder::Status::error && dec.can_continue()) continue;
     if (res.status != nc::Decoder::Status::block) break;
     ++blocks;
     // A closed pipe (nck parse --json | head) ends the listing; main_cli reports it.
