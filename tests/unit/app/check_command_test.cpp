@@ -176,6 +176,36 @@ TEST(CheckCommand, WhatARunReportsTheCheckReportsAtTheSameLine) {
   }
 }
 
+// Two channels: each program is checked in its channel; the JSON says which.
+TEST(CheckCommand, EachChannelsProgramInItsChannel) {
+  const std::string two = root() + "/examples/two-channel";
+  const auto dir = temp_dir("check_two_channels");
+  const std::string bad = write(dir / "bad.nc", "G0 X0\nG1 X5\nM30\n").string();
+  CliResult r = run_nck_raw("check --json " + two + " " + two + "/channel1.nc " + bad + " 2>/dev/null");
+  EXPECT_EQ(r.exit_code, 1);
+  const nlohmann::json list = nlohmann::json::parse(r.output, nullptr, false);
+  ASSERT_TRUE(list.is_array() && list.size() == 1) << r.output;
+  EXPECT_EQ(list[0].at("channel"), 2);
+  EXPECT_EQ(list[0].at("id"), 930002);
+  EXPECT_EQ(list[0].at("line"), 2);
+}
+
+// Machine data with errors: they are the check's errors (exit 1), in the
+// JSON with channel 0, and the programs are not checked.
+TEST(CheckCommand, MachineErrorsComeFirstAndStopTheCheck) {
+  const auto [dir, line] = patched_example("mill", "check_prog_err", "x.lis", "kenngr.ref_ohne_nocken 1");
+  CliResult r = run_nck_raw("check --json " + dir.string() + " " + root() + kMistakes + " 2>/dev/null");
+  EXPECT_EQ(r.exit_code, 1);
+  const nlohmann::json list = nlohmann::json::parse(r.output, nullptr, false);
+  ASSERT_TRUE(list.is_array() && !list.empty()) << r.output;
+  bool found = false;
+  for (const nlohmann::json& d : list) {
+    EXPECT_EQ(d.at("channel"), 0) << d;
+    found = found || (d.at("id") == 910018 && d.at("line") == line);
+  }
+  EXPECT_TRUE(found) << list;
+}
+
 // Without programs `nck check` checks the machine data alone, as before.
 TEST(CheckCommand, MachineAloneIsCheckedAsBefore) {
   CliResult r = run_nck("check " + mill());
