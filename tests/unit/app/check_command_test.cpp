@@ -206,6 +206,14 @@ TEST(CheckCommand, MachineErrorsComeFirstAndStopTheCheck) {
   EXPECT_TRUE(found) << list;
 }
 
+// A program that keeps the check busy ends at --max-wall (940006, exit 1).
+TEST(CheckCommand, MaxWallEndsALongCheck) {
+  const auto p = write(temp_dir("check_max_wall") / "p.nc", "P1 = 0\n$WHILE P1 < 1\nG1 X1 F100\nG1 X2\n$ENDWHILE\nM30\n");
+  CliResult r = run_nck("check --max-wall 0.2 " + mill() + " " + p.string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("error 940006"), std::string::npos) << r.output;
+}
+
 // Without programs `nck check` checks the machine data alone, as before.
 TEST(CheckCommand, MachineAloneIsCheckedAsBefore) {
   CliResult r = run_nck("check " + mill());
