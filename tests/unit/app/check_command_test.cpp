@@ -85,6 +85,10 @@ TEST(CheckCommand, JsonListsTheDiagnosticsForCi) {
     EXPECT_TRUE(d.at("column").is_number()) << d;
     EXPECT_FALSE(d.at("message").get<std::string>().empty()) << d;
   }
+  // docs/cli.md describes every field the binary writes.
+  const std::string doc = read_file(root() + "/docs/cli.md");
+  for (const auto& [key, value] : list[0].items())
+    EXPECT_NE(doc.find("| `" + key + "` |"), std::string::npos) << key << " is not in docs/cli.md";
 }
 
 TEST(CheckCommand, ACleanProgramExitsZero) {
