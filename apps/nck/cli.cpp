@@ -14,6 +14,7 @@
 #include <cstring>
 #include <limits>
 
+#include "check_command.hpp"
 #include "commands.hpp"
 #include "nck/config/machine.hpp"
 #include "nck/core/edit_distance.hpp"
@@ -46,12 +47,45 @@ std::string nearest(const std::string& word, const std::vector<std::string>& kno
   return best;
 }
 
+std::vector<const CLI::App*> subcommands(const CLI::App& app) {
+  return app.get_subcommands([](const CLI::App*) { return true; });
+}
+
+// A command's long options ("--report", ...).
+std::vector<std::string> long_options(const CLI::App& command) {
+  std::vector<std::string> out;
+  for (const CLI::Option* o : command.get_options())
+    for (const std::string& n : o->get_lnames()) out.push_back("--" + n);
+  return out;
+}
+
+bool contains(const std::vector<std::string>& words, const std::string& w) {
+  return std::find(words.begin(), words.end(), w) != words.end();
+}
+
+// A hint for one word of the command line given to `sub` (nullptr: before
+// any command), else "". A long option written with one dash ("-report")
+// is taken as the long option it means, of this command or of another one.
+std::string option_hint(const CLI::App& app, const CLI::App* sub, const std::string& given) {
+  std::string arg = given.substr(0, given.find('='));
+  const bool one_dash = arg.size() > 2 && arg[0] == '-' && arg[1] != '-';
+  if (one_dash) arg = "-" + arg;
+  if (arg.rfind("--", 0) != 0) return {};
+  const std::vector<std::string> own = sub ? long_options(*sub) : std::vector<std::string>{};
+  if (contains(own, arg)) return one_dash ? fmt::format(" (did you mean '{}'?)", arg) : std::string();
+  if (const std::string guess = nearest(arg, own); !guess.empty()) return fmt::format(" (did you mean '{}'?)", guess);
+  for (const CLI::App* c : subcommands(app))
+    if (c != sub && contains(long_options(*c), arg))
+      return fmt::format(" (did you mean '{}'? It is an option of 'nck {}')", arg, c->get_name());
+  return {};
+}
+
 // A hint for a mistyped subcommand or option (" (did you mean ...?)"), else "".
 std::string did_you_mean(const CLI::App& app, int argc, char** argv) {
   if (argc < 2) return {};
   std::vector<std::string> commands;
   const CLI::App* sub = nullptr;
-  for (const CLI::App* c : app.get_subcommands([](const CLI::App*) { return true; })) {
+  for (const CLI::App* c : subcommands(app)) {
     commands.push_back(c->get_name());
     if (c->get_name() == argv[1]) sub = c;
   }
@@ -61,21 +95,8 @@ std::string did_you_mean(const CLI::App& app, int argc, char** argv) {
     return guess.empty() ? fmt::format(": '{}' is not one of {}", first, fmt::join(commands, ", "))
                          : fmt::format(": '{}' is not one (did you mean '{}'?)", first, guess);
   }
-  if (!sub) return {};
-  std::vector<std::string> options;
-  for (const CLI::Option* o : sub->get_options())
-    for (const std::string& n : o->get_lnames()) options.push_back("--" + n);
-  for (int i = 2; i < argc; ++i) {
-    std::string arg = argv[i];
-    if (arg.size() > 2 && arg[0] == '-' && arg[1] != '-') arg = "-" + arg;  // "-report": a dash short
-    if (arg.rfind("--", 0) != 0) continue;
-    arg = arg.substr(0, arg.find('='));
-    if (arg != argv[i] && std::find(options.begin(), options.end(), arg) != options.end())
-      return fmt::format(" (did you mean '{}'?)", arg);
-    if (std::find(options.begin(), options.end(), arg) != options.end()) continue;
-    const std::string guess = nearest(arg, options);
-    if (!guess.empty()) return fmt::format(" (did you mean '{}'?)", guess);
-  }
+  for (int i = sub ? 2 : 1; i < argc; ++i)
+    if (std::string hint = option_hint(app, sub, argv[i]); !hint.empty()) return hint;
   return {};
 }
 
@@ -167,21 +188,34 @@ int main_cli(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "nck 0.1.0");
 
-  std::string machine;
-  auto* check = app.add_subcommand("check", "Load a machine folder and report plausibility errors");
-  check->add_option("MACHINE", machine, "machine folder (with startup.lis)")->required();
+  CheckOptions checko;
+  auto* check = app.add_subcommand(
+      "check", "Check a machine folder and, without running them, its NC programs: every error and warning");
+  check->add_option("MACHINE", checko.machine, "machine folder (with startup.lis)")->required();
+  check->add_option("PROGRAM", checko.programs, "NC program per channel (PROGRAM2 is channel 2's...)");
+  check->add_flag("--json", checko.json, "print the diagnostics as a JSON array on stdout (for CI)");
+  check->add_option("--cycles", checko.cycles,
+                    "search DIR for L CYCLE files (after the machine's cycle_path[i]); repeat")
+      ->allow_extra_args(false);
+  check->add_option("--clamp-index", checko.clamp_index, "clamp-offset group pzv_grp[N] at program start")
+      ->check(number_at_least(0, true));
+  check->add_option("--max-wall", checko.max_wall_s, "wall-clock limit in seconds")
+      ->check(number_at_least(0.001, false));
+  check->footer(
+      "Diagnostics go to stderr (FILE:LINE: error|warning ID: text), or with --json to stdout. Exit 0: no "
+      "errors (warnings allowed), 1: errors found, 2: bad usage (docs/cli.md).");
 
   RunOptions run;
   auto* runc = app.add_subcommand("run", "Run NC programs on a machine, cycle by cycle");
   runc->add_option("MACHINE", run.machine, "machine folder (with startup.lis)")->required();
   runc->add_option("PROGRAM", run.programs,
                    "NC program per channel (PROGRAM2 runs in channel 2...); none: the --plc scenario's mdi lines");
-  runc->add_option("--events", run.events, "write events as JSON lines to FILE (- for stdout)");
-  runc->add_option("--trace", run.trace, "write set points as CSV to FILE (- for stdout)");
+  runc->add_option("--events", run.events, "write events as JSON lines to FILE (- for stdout)")->type_name("FILE");
+  runc->add_option("--trace", run.trace, "write set points as CSV to FILE (- for stdout)")->type_name("FILE");
   runc->add_option("--trace-every", run.trace_every, "trace every Nth cycle")->check(number_at_least(1, true));
-  runc->add_option("--final", run.final_state, "write the final state as JSON to FILE (- for stdout)");
+  runc->add_option("--final", run.final_state, "write the final state as JSON to FILE (- for stdout)")->type_name("FILE");
   runc->add_option("--plc", run.plc, "timed HLI actions (docs/plc-scenario.md)");
-  runc->add_option("--report", run.report, "write a self-contained HTML report with plots to FILE (- for stdout)");
+  runc->add_option("--report", run.report, "write a self-contained HTML report with plots to FILE (- for stdout)")->type_name("FILE");
   runc->add_option("--max-time", run.max_time_s, "simulated-time limit in seconds")
       ->check(number_at_least(0.001, false));
   runc->add_option("--max-wall", run.max_wall_s, "wall-clock limit in seconds")->check(number_at_least(0.001, false));
@@ -202,6 +236,9 @@ int main_cli(int argc, char** argv) {
   add_block_search_options(*runc, run);
   runc->add_option("--cycles", run.cycles, "search DIR for L CYCLE files (after the machine's cycle_path[i]); repeat")
       ->allow_extra_args(false);
+  runc->footer(
+      "FILE - writes that output to stdout (one output at a time); diagnostics and the progress line stay on "
+      "stderr.");
 
   ParseOptions parse;
   auto* parsec = app.add_subcommand("parse", "Decode an NC program and print diagnostics");
@@ -239,7 +276,9 @@ int main_cli(int argc, char** argv) {
   auto* params = app.add_subcommand("params", "Print every accepted list key as a markdown table");
   params->add_option("KEY", lookup, "only the keys containing KEY (or with this P-... ID)");
   auto* errors = app.add_subcommand("errors", "Print every diagnostic ID as a markdown table");
-  errors->add_option("ID", lookup, "only this ID (or the names containing it)");
+  errors->add_option("WORD", lookup,
+                     "only the IDs whose number, name, cause or remedy contains WORD (case-insensitive; "
+                     "quote several words: \"software limit\")");
 
   try {
     app.parse(argc, argv);
@@ -255,7 +294,7 @@ int main_cli(int argc, char** argv) {
   }
   int code = 2;
   try {
-    if (*check) code = check_machine(machine);
+    if (*check) code = check_command(checko);
     if (*runc) code = run_simulation(run);
     if (*parsec) code = parse_program(parse);
     if (*fitc) code = fit_curve(fit);

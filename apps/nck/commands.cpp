@@ -1,4 +1,4 @@
-// The small commands: check, parse, params, errors.
+// The small commands: parse, fit-curve, params, errors.
 #include "commands.hpp"
 
 #include <fmt/format.h>
@@ -17,18 +17,6 @@
 #include <vector>
 
 namespace nck::app {
-
-int check_machine(const std::string& folder) {
-  const config::LoadResult r = config::load_machine(folder);
-  std::size_t warnings = 0;
-  for (const Diagnostic& d : r.diagnostics.items()) {
-    fmt::print(stderr, "{}\n", format(d));
-    warnings += d.severity == Severity::warning;
-  }
-  const std::size_t errors = r.diagnostics.error_count();
-  fmt::print(stderr, "{}: {} error(s), {} warning(s)\n", folder, errors, warnings);
-  return r.ok() ? 0 : 1;
-}
 
 namespace {
 
@@ -71,12 +59,11 @@ int parse_program(const ParseOptions& opt) {
       fmt::print(stderr, "{}\n", format(dec.diagnostics()[shown]));
   };
   for (;;) {
-    const std::size_t before = dec.diagnostics().size();
     nc::Decoder::Result res = dec.next();
     show_new();
-    // In lint mode a bad block is dropped and decoding goes on; an error
-    // without a new diagnostic means the decoder cannot go on.
-    if (res.status == nc::Decoder::Status::error && dec.diagnostics().size() > before) continue;
+    // In lint mode a bad block is dropped and decoding goes on (an error met
+    // again in a loop brings no new diagnostic, yet decoding goes on).
+    if (res.status == nc::Decoder::Status::error && dec.can_continue()) continue;
     if (res.status != nc::Decoder::Status::block) break;
     ++blocks;
     // A closed pipe (nck parse --json | head) ends the listing; main_cli reports it.
@@ -199,9 +186,10 @@ std::string errors_markdown() {
   return out;
 }
 
-// By ID or by name ("940004", "OutputPath").
+// By ID, name or a word of its description ("940004", "OutputPath",
+// "software limit"): a user knows what went wrong before knowing its name.
 int print_errors(const std::string& lookup) {
-  return print_matching_rows(errors_markdown(), lookup, {0, 2}, "diagnostic ID or name");
+  return print_matching_rows(errors_markdown(), lookup, {0, 2, 3, 4}, "diagnostic ID, name or description");
 }
 
 }  // namespace nck::app

@@ -4,9 +4,6 @@
 
 namespace nck::app {
 
-// nck check MACHINE: 0 without errors, 1 with errors.
-int check_machine(const std::string& folder);
-
 struct ParseOptions {
   std::string program;
   bool json = false;

@@ -288,7 +288,11 @@ int run_simulation(const RunOptions& opt) {
     return 2;
   }
   std::vector<std::filesystem::path> programs(opt.programs.begin(), opt.programs.end());
-  sim::DryRunOptions options{opt.clamp_index, !opt.report.empty(), opt.prep_thread, &stop_flag()};
+  sim::DryRunOptions options;
+  options.clamp_index = opt.clamp_index;
+  options.record_frames = !opt.report.empty();
+  options.prep_thread = opt.prep_thread;
+  options.stop = &stop_flag();
   if (search) {
     options.search = search->mark;
     options.search_channel = search->channel;

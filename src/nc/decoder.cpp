@@ -380,6 +380,8 @@ Decoder::Result Decoder::next() {
 
 const std::vector<Diagnostic>& Decoder::diagnostics() const { return impl_->diags; }
 
+bool Decoder::can_continue() const { return !impl_->fatal && !impl_->ended; }
+
 const std::string& Decoder::file_name(std::uint16_t id) const {
   static const std::string kNone;
   return id < impl_->files.size() ? impl_->files[id] : kNone;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "nck/plc/hli.hpp"
+#include "nck/prep/assumed_feedback.hpp"
 #include "nck/prep/decoder_setup.hpp"
 #include "nck/prep/error_command.hpp"
 #include "nck/prep/planner.hpp"
@@ -89,7 +90,7 @@ void ChannelPrep::feed_blocks(kernel::CommandQueue& commands, kernel::FeedbackQu
   if (awaiting_feedback_) {
     if (feedback.empty() && !channel_done) return;
     if (!feedback.empty()) {
-      take_feedback(feedback.front());
+      take_feedback(feedback.front(), *planner_, *decoder_);
       feedback.pop();
     }
     ++decoded_;
@@ -104,18 +105,18 @@ void ChannelPrep::feed_blocks(kernel::CommandQueue& commands, kernel::FeedbackQu
     ++decoded_;
     if (r.status == nc::Decoder::Status::block) {
       if (r.block.depth == 0) last_main_line_ = r.block.line;
-      if (search_ && r.block.program_end) {
+      if (search_) search_->decoded(r.block, decoder_->file_name(r.block.file_id));
+      if (search_ && r.block.program_end && !search_->restarts_at(r.block)) {
         search_not_found(r.block, commands);
         continue;
       }
-      if (search_) search_->decoded(r.block, decoder_->file_name(r.block.file_id));
       const bool searched = search_.has_value();
       (void)prepare(r.block, commands);
       done_ = done_ || r.block.program_end;  // an MDI text may have ended in prepare()
       if (in_mdi_ && r.block.program_end) finish_mdi(commands);  // M30 typed in MDI
       awaiting_feedback_ = needs_feedback(r.block);
       if (awaiting_feedback_ && searched && search_) {
-        take_search_feedback(r.block);
+        take_feedback(assumed_feedback(r.block, *planner_), *planner_, *decoder_);
         awaiting_feedback_ = false;
       }
     } else if (r.status == nc::Decoder::Status::end && in_mdi_) {
@@ -184,7 +185,6 @@ void ChannelPrep::plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& comm
     if (in_mdi_) mark_mdi(planned);
     queue(planned, commands);
     if (in_mdi_ && !planned.empty() && planned[0].kind == CommandKind::error) {
-      planner_->forget_failed_block();
       done_ = true;
       finish_mdi(commands);
       return;
@@ -237,20 +237,6 @@ void ChannelPrep::search_not_found(const nc::Block& end, kernel::CommandQueue& c
   }
 }
 
-// Nothing runs in search: G100 ends at its programmed end unswitched, C
-// starts at 0, the manual offsets are what they were (none).
-void ChannelPrep::take_search_feedback(const nc::Block& b) {
-  kernel::Feedback f;
-  if (b.g_nonmodal.has(nc::GCode::g100)) {
-    f.kind = kernel::FeedbackKind::measured;
-    f.measure.mcs = planner_->planned_mcs();
-  } else if (b.hash && std::holds_alternative<nc::CAxis>(*b.hash)) {
-    f.kind = kernel::FeedbackKind::c_axis;
-  } else {
-    f.kind = kernel::FeedbackKind::manual_offsets;
-  }
-  take_feedback(f);
-}
 
 bool ChannelPrep::drain_backlog(kernel::CommandQueue& commands) {
   std::size_t i = 0;
@@ -291,18 +277,6 @@ bool ChannelPrep::push_out(kernel::CommandQueue& commands) {
   return true;
 }
 
-void ChannelPrep::take_feedback(const kernel::Feedback& f) {
-  if (f.kind == kernel::FeedbackKind::measured) {
-    for (const auto& [name, value] : planner_->take_measurement(f.measure)) (void)decoder_->set_variable(name, value);
-    return;
-  }
-  if (f.kind == kernel::FeedbackKind::c_axis) {
-    planner_->take_c_axis_position(f.c_axis_deg);
-    return;
-  }
-  for (std::size_t j = 0; j < planner_->axis_count(); ++j)
-    (void)decoder_->set_variable("V.A.MANUAL_OFFSETS." + planner_->frames().axis_name(j), f.manual_offsets_mm[j]);
-}
 
 // The planner's program -> machine map after the block just planned, put
 // into the store only when it differs from the last one.

@@ -58,8 +58,13 @@ Planner::Commands Planner::plan(const nc::Block& b) {
   };
   Commands out;
   const bool homing = b.has_axis_words() && b.g_nonmodal.has(nc::GCode::g74);
+  // A block that fails moves nothing: the position stays where the last
+  // good block left it (a run stops at the error; `nck check` goes on from
+  // there without a wrong start for the next block).
+  const PlannedPosition before = planned_;
   Planned c = plan_one(b, ctx);
   if (!c) {
+    planned_ = before;
     out = fail(c.error());
   } else if (homing && c->kind == CommandKind::nop) {
     auto groups = plan_homing(b, *c, ctx);

@@ -157,7 +157,10 @@ std::expected<motion::trc::Element, Diagnostic> RadiusComp::element_of(const nc:
   const double h2 = *b.r * *b.r - half * half;
   if (half < kTiny || h2 < -1e-9)
     return half < kTiny ? block_error(ErrorId::KernelArcFullCircleWithR, b, "a full circle cannot be programmed with R")
-                        : block_error(ErrorId::KernelArcRadiusTooSmall, b, "circle: R is smaller than half the chord");
+                        : block_error(ErrorId::KernelArcRadiusTooSmall, b,
+                                      fmt::format("circle: R is smaller than half the chord (R {:.4f} mm, half "
+                                                  "the chord {:.4f} mm, difference {:.4f} mm)",
+                                                  std::fabs(*b.r), half, half - std::fabs(*b.r)));
   const double side = (e.ccw ? 1.0 : -1.0) * (*b.r > 0 ? 1.0 : -1.0);
   e.center = e.start + 0.5 * chord + (side * std::sqrt(std::max(h2, 0.0)) / (2 * half)) * trc::left_of(chord);
   return e;

@@ -103,6 +103,11 @@ class Decoder {
 
   // All diagnostics so far (warnings and the error that stopped decoding).
   const std::vector<Diagnostic>& diagnostics() const;
+  // Whether next() may still hand out blocks: false once the program ended
+  // or an error stopped decoding for good. With continue_after_error a bad
+  // block returns Status::error and this stays true (an error met again is
+  // not reported again, so a caller cannot tell by the diagnostics).
+  bool can_continue() const;
   const std::string& file_name(std::uint16_t file_id) const;
   // Every file the decoder opened so far (ids 0 .. file_count() - 1; 0 is the main program).
   std::size_t file_count() const;

@@ -100,7 +100,6 @@ class ChannelPrep {
 
  private:
   void feed_blocks(kernel::CommandQueue& commands, kernel::FeedbackQueue& feedback, bool channel_done);
-  void take_feedback(const kernel::Feedback& f);
   void hand_over(const PlannedCommand& c, kernel::CommandQueue& commands);
   bool push_out(kernel::CommandQueue& commands);
   void collect_warnings();
@@ -114,8 +113,6 @@ class ChannelPrep {
   // Block search: a planned block is searched, or restarts the real run.
   void search_out(const TrcOut& o, const PlannedBlock& planned, kernel::CommandQueue& commands);
   void search_not_found(const nc::Block& end, kernel::CommandQueue& commands);
-  // What a block that needs feedback gets in search, where nothing runs.
-  void take_search_feedback(const nc::Block& b);
   // MDI: starts the next text once everything before it is prepared; ends
   // one (the command that returns the channel to idle).
   void start_mdi();

@@ -76,9 +76,6 @@ class Planner final : public nc::KernelStateReader {
   // After #CAX (the caller held further blocks back until it ran): C starts
   // where the spindle stood.
   void take_c_axis_position(double c_deg);
-  // A block failed and the run goes on (MDI): the programmed position is
-  // where the axes are planned to stand, not where the failed block aimed.
-  void forget_failed_block() { planned_.reread(frames_); }
   // Block search: the return to the contour, a rapid straight line from
   // where the axes stand to where the program restarts (exact stop at both ends).
   PlannedCommand return_motion(const motion::AxisVector& from_mcs, const motion::AxisVector& to_mcs) const;

@@ -2,6 +2,7 @@
 #include "nck/prep/units/path_geometry.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 #include <vector>
 
@@ -16,6 +17,28 @@ ErrorId arc_error_id(motion::ArcError e) {
     case motion::ArcError::full_circle_with_radius: return ErrorId::KernelArcFullCircleWithR;
     default: return ErrorId::KernelArcEndNotOnCircle;
   }
+}
+
+// The numbers behind an impossible circle, so that the programmer sees how
+// far off it is: both radii of a centre-programmed circle and their
+// difference, or R against half the chord.
+std::string centre_arc_values(double sa, double sb, double ea, double eb) {
+  const double r_start = std::hypot(sa, sb), r_end = std::hypot(ea, eb);
+  return fmt::format(" (start radius {:.4f} mm, end radius {:.4f} mm, difference {:.4f} mm)", r_start, r_end,
+                     std::fabs(r_end - r_start));
+}
+
+std::string radius_arc_values(double r, double chord) {
+  return fmt::format(" (R {:.4f} mm, half the chord {:.4f} mm, difference {:.4f} mm)", std::fabs(r), 0.5 * chord,
+                     0.5 * chord - std::fabs(r));
+}
+
+// Which axis, where, and by how much it would pass its software limit.
+std::string outside_limits(const std::string& axis, double pos, double lo, double hi) {
+  const bool below = pos < lo;
+  return fmt::format("{} {:.4f} is outside the software limits [{:.4f}, {:.4f}]: {:.4f} mm {} the {} limit", axis,
+                     pos, lo, hi, below ? lo - pos : pos - hi, below ? "below" : "beyond",
+                     below ? "negative" : "positive");
 }
 
 }  // namespace
@@ -59,9 +82,8 @@ std::expected<motion::AxisVector, Diagnostic> machine_target(const nc::Block& b,
   for (std::size_t j = 0; j < ctx.n_axes; ++j) {
     const double lo = ctx.axes.sw_limit_neg_mm(j), hi = ctx.axes.sw_limit_pos_mm(j);
     if (target[j] < lo - 1e-9 || target[j] > hi + 1e-9)
-      return block_error(ErrorId::KernelSoftwareLimit, b,
-                         fmt::format("{} {:.4f} is outside the software limits [{:.4f}, {:.4f}]",  // the location is the event's
-                                     ctx.channel.axes[j].name, target[j], lo, hi));
+      return block_error(ErrorId::KernelSoftwareLimit, b,  // the location is the event's
+                         outside_limits(ctx.channel.axes[j].name, target[j], lo, hi));
   }
   return target;
 }
@@ -90,18 +112,24 @@ std::expected<motion::Segment, Diagnostic> arc_segment(const nc::Block& b, const
   const auto& ci = b.ijk[ii];
   const auto& cj = b.ijk[jj];
   std::expected<motion::Segment, motion::ArcError> seg;
+  std::string values;  // for the message, should the circle be impossible
   if (ci || cj) {
     // G161: the centre is absolute (in the program's origin), G162: relative to the start.
     const bool abs = b.modal.circle_center_absolute;
     const double ca = (abs ? origin[ua] : start[ua]) + ci.value_or(0);
     const double cb = (abs ? origin[ub] : start[ub]) + cj.value_or(0);
     seg = motion::make_arc_center(start, target, n_axes, ua, ub, ca, cb, ccw);
+    if (!seg && seg.error() == motion::ArcError::end_point_not_on_circle)
+      values = centre_arc_values(start[ua] - ca, start[ub] - cb, target[ua] - ca, target[ub] - cb);
   } else if (b.r) {
     seg = motion::make_arc_radius(start, target, n_axes, ua, ub, *b.r, ccw);
+    if (!seg && seg.error() == motion::ArcError::radius_too_small)
+      values = radius_arc_values(*b.r, std::hypot(target[ua] - start[ua], target[ub] - start[ub]));
   } else {
     return block_error(ErrorId::KernelArcNoCenter, b, "program I/J/K or R with G2/G3");
   }
-  if (!seg) return block_error(arc_error_id(seg.error()), b, fmt::format("circle: {}", motion::describe(seg.error())));
+  if (!seg)
+    return block_error(arc_error_id(seg.error()), b, fmt::format("circle: {}{}", motion::describe(seg.error()), values));
   return *seg;
 }
 

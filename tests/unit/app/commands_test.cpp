@@ -36,6 +36,17 @@ TEST(ParseCommand, GarbageExitsNonZeroWithADiagnostic) {
   EXPECT_NE(r.output.find("error"), std::string::npos);
 }
 
+// An error met again in a loop is listed once, and the errors after the
+// loop are still found (lint mode goes on without a new diagnostic).
+TEST(ParseCommand, GoesOnAfterAnErrorRepeatedInALoop) {
+  const auto p = write(temp_dir("lint_loop") / "p.nc", "G0 X0\n$FOR P1 = 1, 3, 1\nG444\n$ENDFOR\nG555\nM30\n");
+  CliResult r = run_nck("parse " + p.string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("p.nc:3:1: error 920005"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("p.nc:5:1: error 920005"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("2 error(s)"), std::string::npos) << r.output;
+}
+
 TEST(ParseCommand, JsonPrintsOneObjectPerBlock) {
   CliResult r = run_nck("parse --json --machine " + root() + "/examples/lathe " + root() + "/examples/lathe/turn.nc");
   EXPECT_EQ(r.exit_code, 0) << r.output;
