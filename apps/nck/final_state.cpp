@@ -123,9 +123,19 @@ std::optional<std::string> write_final(const std::string& path, const config::Ma
              {"distance_to_go", plc::encode_position(st.distance_to_go_deg, fmt_pos).raw},
              {"command_error", st.job_error}};
   }
+  // Each channel's state as the PLC reads it (nck 0.2, docs/outputs.md).
+  json hli_channels = json::array();
+  for (std::size_t c = 0; c < k.channel_count(); ++c) {
+    const plc::ChannelState& cs = h.channel_state[c];
+    hli_channels.push_back(
+        json{{"program_state", kernel::state_name(static_cast<kernel::ProgramState>(cs.program_state))},
+             {"block_search_state_r", static_cast<int>(cs.block_search)},
+             {"block_search_active_r", cs.block_search_active()}});
+  }
   json hli{{"position_format", fmt_pos == plc::PositionFormat::scaled_32bit ? "32-bit, 0.0001 deg"
                                                                              : "64-bit, 1e-7 deg"},
-           {"spindles", hli_spindles}};
+           {"spindles", hli_spindles},
+           {"channels", hli_channels}};
   // enabled coupling groups (synchronous operation): channel, group, pairs
   json links = json::array();
   for (std::size_t c = 0; c < k.channel_count(); ++c)

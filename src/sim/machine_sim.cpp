@@ -83,9 +83,24 @@ void MachineSim::write(const kernel::TickOutput& out) noexcept {
   for (const kernel::TechRequest& r : out.tech_outputs) (void)plc_.submit(r.handle, r.output, t_s_);
   for (std::size_t i = 0; i < spindles_; ++i) hli_.spindle_status[i] = out.hli_spindles[i];
   for (std::size_t ch = 0; ch < channels_; ++ch) {
+    write_channel_state(out.channels[ch].program_state, hli_.channel_state[ch]);
     probe_switched_[ch] = probes_[ch].watch(out.channels[ch].axis_mcs);
     sensors_[ch].watch(out.channels[ch].axis_mcs);
   }
+}
+
+// The HLI's channel state: the program state, and where a block search is
+// (a hold right after the return to the contour waits to continue it).
+void MachineSim::write_channel_state(kernel::ProgramState st, plc::ChannelState& hli) noexcept {
+  using BS = plc::BlockSearchState;
+  const bool waits_after_return = st == kernel::ProgramState::hold &&
+                                  (hli.block_search == BS::returning_to_contour ||
+                                   hli.block_search == BS::wait_for_continue_contour);
+  hli.program_state = static_cast<std::uint8_t>(st);
+  hli.block_search = st == kernel::ProgramState::searching   ? BS::active
+                     : st == kernel::ProgramState::returning ? BS::returning_to_contour
+                     : waits_after_return                    ? BS::wait_for_continue_contour
+                                                             : BS::inactive;
 }
 
 // One scenario action: the PLC writes its HLI controls, falls silent,

@@ -73,6 +73,23 @@ struct ChannelControl {
   std::uint32_t skip_mask = 0;
 };
 
+// CNC -> PLC, one per channel: the program state (kernel::ProgramState,
+// docs/operating.md) and the block search state (TF5200 HLI bahn_state).
+enum class BlockSearchState : std::int16_t {
+  inactive = 0,                  // HLI_BS_INACTIVE
+  active = 2,                    // HLI_BS_ACTIVE: decoding without motion, functions to the PLC
+  returning_to_contour = 5,      // HLI_BS_RETURNING_TO_CONTOUR
+  wait_for_continue_contour = 6, // HLI_BS_WAIT_FOR_CONTINUE_CONTOUR: holds for cycle start
+};
+
+struct ChannelState {
+  std::uint8_t program_state = 0;  // kernel::ProgramState as a number
+  BlockSearchState block_search = BlockSearchState::inactive;  // block_search_state_r
+  bool block_search_active() const noexcept {  // block_search_active_r
+    return block_search == BlockSearchState::active;
+  }
+};
+
 // A technology function output to the PLC and its handshake.
 // The kind of a technology function: one enum from the planned block to the
 // PLC and the events (none: an event that carries no function).
@@ -131,6 +148,7 @@ struct HliImage {
   std::array<SpindleStatus, kMaxHliSpindles> spindle_status{};
   std::array<SpindleControl, kMaxHliSpindles> spindle_control{};
   std::array<ChannelControl, kMaxHliChannels> channel{};
+  std::array<ChannelState, kMaxHliChannels> channel_state{};
   bool ads_32_bit_comp_mode = true;  // P-STUP-00175, decides the position format
 };
 

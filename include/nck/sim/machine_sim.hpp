@@ -80,6 +80,7 @@ class MachineSim {
  private:
   void apply(const sim::ScenarioAction& a, kernel::TickInput& in) noexcept;
   void apply_to_spindle(const sim::ScenarioAction& a) noexcept;
+  static void write_channel_state(kernel::ProgramState st, plc::ChannelState& hli) noexcept;
 
   PlcSim plc_;
   SpindleDrives drives_;
