@@ -62,10 +62,16 @@ class MachineSim {
   bool skip_levels_used() const noexcept { return skip_levels_used_; }
   // The scenario has actions still to come.
   bool scenario_pending() const noexcept { return !player_.finished(); }
+  // Channel ch is in manual mode (the scenario's mode line).
+  bool manual_mode(std::size_t ch) const noexcept { return ch < channels_ && hli_.channel[ch].manual_mode; }
+  // The scenario has jog lines still to come: a run goes on after its
+  // program end until they have acted (jogging an ended channel).
+  bool jog_pending() const noexcept { return jog_lines_left_ > 0; }
 
  private:
   void apply(const sim::ScenarioAction& a, kernel::TickInput& in) noexcept;
   void apply_to_spindle(const sim::ScenarioAction& a) noexcept;
+  void apply_jog(const sim::ScenarioAction& a, kernel::ChannelInput& in) noexcept;
 
   PlcSim plc_;
   SpindleDrives drives_;
@@ -83,6 +89,8 @@ class MachineSim {
   double t_s_ = 0;  // start of the cycle being computed
   bool handwheel_turned_ = false;  // in the last read: clear its travel in the next
   bool skip_levels_used_ = false;  // a skip_mask line was loaded
+  std::size_t jog_lines_left_ = 0;  // jog / jog_increment lines not yet acted on
+  bool jogs_given_ = false;  // in the last read: clear the requests in the next
   PlcSim::AckList acks_;
 };
 

@@ -34,6 +34,9 @@ enum class ActionKind : std::uint8_t {
   auto_cycle_start,     // auto_cycle_start on|off    (the simulated operator releases every hold at once)
   single_step,          // single_step on|off         (hold at block ends, P-CHAN-00015)
   skip_mask,            // skip_mask 0x5              (active block-skip levels /1 /3: program_block_ignore)
+  jog,                  // jog X + [600] / jog X stop (continuous jog, speed mm/min)
+  jog_increment,        // jog_increment X - 0.1      (one step in mm)
+  mode,                 // mode manual|automatic      (the channel's mode selection)
 };
 
 // The action's name as written in the file (the primary spelling).
@@ -50,8 +53,9 @@ struct ScenarioAction {
   double value = 0;            // percent for the overrides
   bool on = false;             // switches
   plc::ExtSpindleCommand cmd;       // spindle_cmd only
-  std::array<char, plc::kSpindleNameChars> axis_name{};  // handwheel: the path axis
-  std::int8_t axis = -1;       // handwheel: channel axis index (resolve_spindles)
+  std::array<char, plc::kSpindleNameChars> axis_name{};  // handwheel, jog: the path axis
+  std::int8_t axis = -1;       // handwheel, jog: channel axis index (resolve_spindles)
+  std::int8_t direction = 0;   // jog: +1 / -1, 0 = stop; value = speed mm/s (0: the axis's), jog_increment: step mm
   std::array<char, 32> var_name{};  // variable: its name as the NC program writes it
   bool has_spindle() const noexcept { return spindle_name[0] != '\0'; }
   std::string_view spindle_view() const noexcept { return std::string_view(spindle_name.data()); }
