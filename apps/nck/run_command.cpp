@@ -196,7 +196,8 @@ void end_unfinished_channels(const sim::DryRun& run, kernel::EndReason reason, c
   else if (reason == kernel::EndReason::hold)
     fmt::print(stderr,
                "nck: error {}: the program holds (M0/M1) and nothing releases it: the --plc scenario "
-               "switched auto_cycle_start off and has no cycle_start line left\n",
+               "switched auto_cycle_start off and has no cycle_start line left, or left the channel in "
+               "mode manual\n",
                number(ErrorId::AppHeldForGood));
   else if (reason == kernel::EndReason::interrupted)
     fmt::print(stderr, "nck: interrupted at {} s (simulated); the output files are complete\n", run.time_s());

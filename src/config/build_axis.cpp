@@ -116,6 +116,10 @@ void read_head(const ParamList& l, AxisConfig& a) {
   a.fast_from_cam = l.flag("kenngr.fast_from_cam", a.fast_from_cam);
   a.measure_speed = l.num("kenngr.vb_messen", a.measure_speed);
   a.feedhold_deceleration_mode = l.text("kenngr.feedhold_deceleration_mode", a.feedhold_deceleration_mode);
+  a.jog_speed_mm_s = l.num("handbetrieb.tipp.geschw[0]", a.jog_speed_mm_s);
+  a.jog_increment_speed_mm_s = l.num("handbetrieb.jog.geschw[0]", a.jog_increment_speed_mm_s);
+  a.manual_max_speed_mm_s = l.num("handbetrieb.hb.vb_max", a.manual_max_speed_mm_s);
+  a.manual_a_max_mm_s2 = l.num("handbetrieb.hb.a_max", a.manual_a_max_mm_s2);
   a.modulo_compensation = l.flag("lr_param.mod_komp", a.modulo_compensation);
   a.distance_control_on = l.flag("lr_param.distance_control_on", a.distance_control_on);
 }

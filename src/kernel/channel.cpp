@@ -20,6 +20,9 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
            std::span<const std::int8_t>(spindles_.begin(), spindles_.size())};
   path_.begin_cycle();
   hold_.begin_cycle();
+  jog_.begin_cycle();
+  if (in.reset) jog_.release_all();
+  if (!in.jogs.empty()) take_jogs(cy);
   if (done()) take_mdi();
   if (!done()) {
     if (in.reset) {
@@ -34,9 +37,10 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
       }
     }
   }
+  if (jog_.moving()) move_jogged(cy);
   ax_links_.follow(path_.position());
   cax_.follow(dt_s, path_.position(), ctx);
-  (void)fail(handwheel_.follow(cy), cy);
+  (void)fail(handwheel_.follow(cy, in.manual_mode ? manual_axes(in) : 0u), cy);
   (void)fail(dist_.run(path_.position(), done(), cy), cy);
   write_output(out);
 }
@@ -46,10 +50,11 @@ void Channel::run_blocks(Cycle& cy) noexcept {
   for (;;) {
     if (!active_) {
       if (state_ == ProgramState::hold) {
-        if (!hold_.released(cy.in)) break;
+        if (manual_blocks_program(cy.in) || !hold_.released(cy.in)) break;
         set_state(ProgramState::running, StateReason::cycle_start, cy);
       }
       if (commands_->empty()) break;
+      if (state_ == ProgramState::idle && manual_blocks_program(cy.in)) break;
       start(cy);
       commands_->pop();
       if (done()) break;
@@ -76,6 +81,47 @@ motion::AxisVector Channel::machine_position() const noexcept {
   for (std::size_t j = 0; j < n_axes_; ++j) m[j] += manual[j];
   dist_.add_offset(m, n_axes_);
   return m;
+}
+
+// Manual mode: the cycle's jog requests, each taken or refused (930720).
+void Channel::take_jogs(Cycle& cy) noexcept {
+  for (const JogRequest& r : cy.in.jogs) {
+    if (jog_allowed(r)) {
+      jog_.take(r, cy);
+      continue;
+    }
+    Event e = cy.event(EventKind::warning);
+    e.id = ErrorId::KernelJogRefused;
+    e.message_index = kNoMessage;  // the ID's table text
+    cy.sink.emit(e);
+  }
+}
+
+// A jog moves an axis while the program does not (idle, hold, ended), or
+// an axis in G201 manual mode at any time; a stop is always taken.
+bool Channel::jog_allowed(const JogRequest& r) const noexcept {
+  if (r.kind == JogRequest::Kind::stop) return true;
+  if (state_ == ProgramState::idle || state_ == ProgramState::hold || state_ == ProgramState::ended) return true;
+  return r.axis >= 0 && handwheel_.in_manual_mode(static_cast<std::size_t>(r.axis));
+}
+
+std::uint32_t Channel::manual_axes(const ChannelInput& in) const noexcept {
+  if (!in.manual_mode) return 0;
+  if (state_ != ProgramState::idle && state_ != ProgramState::hold && state_ != ProgramState::ended) return 0;
+  return n_axes_ >= 32 ? ~0u : (1u << n_axes_) - 1u;
+}
+
+// The jogged axes travel on; their travel joins the manual offsets, so the
+// machine set point (path + manual offset) moves and the program keeps it.
+void Channel::move_jogged(Cycle& cy) noexcept {
+  AxisArray position_mm{};
+  AxisArray travel_mm{};
+  const motion::AxisVector& pos = path_.position();
+  const motion::AxisVector& manual = handwheel_.in_force_mm();
+  for (std::size_t j = 0; j < n_axes_; ++j) position_mm[j] = pos[j] + manual[j];
+  jog_.step(position_mm, travel_mm, cy);
+  for (std::size_t j = 0; j < n_axes_; ++j)
+    if (travel_mm[j] != 0) handwheel_.add_mm(j, travel_mm[j]);
 }
 
 namespace {

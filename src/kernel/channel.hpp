@@ -35,6 +35,7 @@
 #include "units/dwell_unit.hpp"
 #include "units/handwheel_unit.hpp"
 #include "units/hold_unit.hpp"
+#include "units/jog_unit.hpp"
 #include "units/measuring_unit.hpp"
 #include "units/path_unit.hpp"
 #include "units/spindle_path_unit.hpp"
@@ -74,6 +75,10 @@ class Channel {
   void set_c_axis(std::int8_t axis, std::int8_t spindle) noexcept { cax_.setup(axis, spindle, n_axes_); }
   // setup: P-CHAN-00015, where single step holds.
   void set_single_step_mode(std::int8_t mode) noexcept { hold_.setup(mode); }
+  // setup: channel axis j's manual-mode settings (jog speeds, a_max, software limits).
+  void set_jog_axis(std::size_t j, const JogAxisSettings& s) noexcept { jog_.setup(j, s); }
+  // An axis is being jogged (manual mode).
+  bool jogging() const noexcept { return jog_.moving(); }
   // setup: P-CHAN-00105, enabled couplings survive M30 / M2.
   void set_preserve_links(bool on) noexcept { ax_links_.set_preserve(on); }
   // The enabled coupling groups' plan-store payloads, in enabling order.
@@ -100,6 +105,14 @@ class Channel {
   bool waits_done(SyncPoint phase, Cycle& cy) noexcept;
   void end_block(Cycle& cy) noexcept;
   void write_output(ChannelOutput& out) const noexcept;
+  // manual mode (jog, handwheel without G201)
+  void take_jogs(Cycle& cy) noexcept;
+  bool jog_allowed(const JogRequest& r) const noexcept;
+  void move_jogged(Cycle& cy) noexcept;
+  // The program may not start or go on: the operator works in manual mode.
+  bool manual_blocks_program(const ChannelInput& in) const noexcept { return in.manual_mode || jog_.moving(); }
+  // Axes the handwheel moves without G201: all, in manual mode while the program does not move.
+  std::uint32_t manual_axes(const ChannelInput& in) const noexcept;
   // the program
   void end_program(EndReason reason, Cycle& cy) noexcept;
   void end_spindles(EndReason reason, Cycle& cy) noexcept;
@@ -145,6 +158,7 @@ class Channel {
   MeasuringUnit measuring_;    // G100
   DwellUnit dwell_;            // G4
   HoldUnit hold_;              // single step, stop at
+  JogUnit jog_;                // manual mode: jog
 };
 
 }  // namespace nck::kernel

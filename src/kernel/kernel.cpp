@@ -1,5 +1,7 @@
 #include "nck/kernel/kernel.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "channel.hpp"
@@ -7,6 +9,29 @@
 #include "spindle_unit.hpp"
 
 namespace nck::kernel {
+
+namespace {
+
+// A path axis's manual-mode settings: the jog speeds and acceleration its
+// list gives (capped by the axis's own a_max and top speed), its software
+// limits (none for a modulo axis, which turns endlessly).
+JogAxisSettings jog_settings(const config::Machine& m, const config::ChannelAxis& axis) {
+  JogAxisSettings s;
+  if (axis.axis_index < 0 || static_cast<std::size_t>(axis.axis_index) >= m.axes.size()) return s;
+  const config::AxisConfig& ax = m.axes[static_cast<std::size_t>(axis.axis_index)];
+  const config::GearStage& g = ax.gear(ax.initial_gear_stage);
+  s.speed_mm_s = ax.jog_speed_mm_s;
+  s.increment_speed_mm_s = ax.jog_increment_speed_mm_s;
+  s.max_speed_mm_s = std::min(ax.manual_max_speed_mm_s, g.max_speed_mm_s);
+  s.a_max_mm_s2 = std::min(ax.manual_a_max_mm_s2, g.a_max);
+  if (!ax.is_modulo()) {
+    s.sw_limit_neg_mm = ax.sw_limit_neg;
+    s.sw_limit_pos_mm = ax.sw_limit_pos;
+  }
+  return s;
+}
+
+}  // namespace
 
 Kernel::Kernel() = default;
 Kernel::~Kernel() = default;
@@ -65,6 +90,8 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
     channels_.back()->set_preserve_links(ch.preserve_coupling_after_prog_end);
     channels_.back()->set_single_step_mode(ch.single_step_mode);
     channels_.back()->set_dist_ctrl(distctrl::settings_from(ch.dist_ctrl), cycle_s_);
+    for (std::size_t j = 0; j < ch.axes.size() && j < kMaxAxes; ++j)
+      channels_.back()->set_jog_axis(j, jog_settings(*machine_, ch.axes[j]));
     if (ch.c_axis >= 0)
       for (std::size_t k = 0; k < ch.spindles.size(); ++k)
         if (ch.spindles[k].axis_index == ch.axes[static_cast<std::size_t>(ch.c_axis)].axis_index)
@@ -123,6 +150,10 @@ bool Kernel::channel_done(std::size_t ch) const noexcept {
 
 ProgramState Kernel::program_state(std::size_t ch) const noexcept {
   return ch < channels_.size() ? channels_[ch]->program_state() : ProgramState::idle;
+}
+
+bool Kernel::channel_jogging(std::size_t ch) const noexcept {
+  return ch < channels_.size() && channels_[ch]->jogging();
 }
 
 bool Kernel::all_channels_done() const noexcept {

@@ -74,6 +74,10 @@ void DryRun::stop_preparation() {
 bool DryRun::done() const noexcept {
   for (std::size_t ch = 0; ch < preps_.size(); ++ch)
     if (preps_[ch].has_program() && !kernel_->channel_done(ch)) return false;
+  // An ended channel may still be jogged: the run goes on until that is over.
+  for (std::size_t ch = 0; ch < preps_.size(); ++ch)
+    if (kernel_->channel_jogging(ch)) return false;
+  if (sim_->jog_pending()) return false;
   if (!sim_->runs_mdi()) return true;
   for (std::size_t ch = 0; ch < preps_.size(); ++ch)
     if (preps_[ch].mdi_used() && (preps_[ch].mdi_pending() || !kernel_->channel_done(ch))) return false;
@@ -108,11 +112,14 @@ bool DryRun::held_for_good() const noexcept {
   for (std::size_t ch = 0; ch < preps_.size(); ++ch) {
     if (!preps_[ch].has_program()) continue;
     // Most cycles a channel runs: one question answers it.
-    if (kernel_->program_state(ch) != kernel::ProgramState::hold) {
+    const kernel::ProgramState state = kernel_->program_state(ch);
+    if (state != kernel::ProgramState::hold) {
       if (kernel_->channel_done(ch)) continue;
-      return false;
+      // Manual mode keeps a program from starting as a hold does.
+      if (state != kernel::ProgramState::idle || !sim_->manual_mode(ch)) return false;
     }
-    if (sim_->auto_cycle_start(ch)) return false;
+    if (sim_->auto_cycle_start(ch) && !sim_->manual_mode(ch)) return false;
+    if (kernel_->channel_jogging(ch)) return false;
     any = true;
   }
   return any && !sim_->scenario_pending();

@@ -33,7 +33,9 @@ void MachineSim::load_scenario(const sim::Scenario& scenario) {
   scenario_ = &scenario;
   // The PLC sets skip levels at time 0 before the program starts: decoding,
   // which runs ahead of the first cycle, sees them from the first block.
+  jog_lines_left_ = 0;
   for (const sim::ScenarioAction& a : scenario.actions) {
+    if (a.kind == sim::ActionKind::jog || a.kind == sim::ActionKind::jog_increment) ++jog_lines_left_;
     if (a.kind != sim::ActionKind::skip_mask) continue;
     skip_levels_used_ = true;
     if (a.t_s <= 0 && a.channel >= 1 && a.channel <= channels_)
@@ -48,6 +50,10 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
   if (handwheel_turned_) {  // last cycle's travel is handed over once
     for (std::size_t ch = 0; ch < channels_; ++ch) in.channels[ch].handwheel_mm.fill(0.0);
     handwheel_turned_ = false;
+  }
+  if (jogs_given_) {  // a jog request is handed over once
+    for (std::size_t ch = 0; ch < channels_; ++ch) in.channels[ch].jogs.clear();
+    jogs_given_ = false;
   }
   for (const sim::ScenarioAction& a : player_.due(t_s)) apply(a, in);
 
@@ -66,6 +72,7 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
     c.reset = false;  // a request: handed over once
     ci.stop_at = stop_at_[ch];
     ci.single_step = c.single_step;
+    ci.manual_mode = c.manual_mode;
     ci.cycle_start = c.cycle_start || auto_cycle_start_[ch];
     c.cycle_start = false;
     ci.probe_switched = probe_switched_[ch];
@@ -126,6 +133,9 @@ void MachineSim::apply(const sim::ScenarioAction& a, kernel::TickInput& in) noex
       if (a.axis >= 0) in.channels[c].handwheel_mm[static_cast<std::size_t>(a.axis)] += a.value;
       handwheel_turned_ = true;
       return;
+    case sim::ActionKind::jog:
+    case sim::ActionKind::jog_increment: apply_jog(a, in.channels[c]); return;
+    case sim::ActionKind::mode: ch.manual_mode = a.on; return;
     case sim::ActionKind::variable: {
       auto& vars = in.channels[c].variables;
       for (kernel::ChannelVariable& v : vars)
@@ -152,6 +162,24 @@ void MachineSim::apply(const sim::ScenarioAction& a, kernel::TickInput& in) noex
       return;
     default: apply_to_spindle(a); return;
   }
+}
+
+// A jog line: the operator presses (or releases) a jog key.
+void MachineSim::apply_jog(const sim::ScenarioAction& a, kernel::ChannelInput& in) noexcept {
+  using Kind = kernel::JogRequest::Kind;
+  kernel::JogRequest r;
+  r.axis = a.axis;
+  r.direction = a.direction < 0 ? std::int8_t{-1} : std::int8_t{1};
+  if (a.kind == sim::ActionKind::jog_increment) {
+    r.kind = Kind::increment;
+    r.step_mm = a.value;
+  } else {
+    r.kind = a.direction == 0 ? Kind::stop : Kind::continuous;
+    r.speed_mm_s = a.value;
+  }
+  (void)in.jogs.push_back(r);  // more than kMaxJogRequestsPerTick at one time: the rest is lost
+  jogs_given_ = true;
+  if (jog_lines_left_ > 0) --jog_lines_left_;
 }
 
 void MachineSim::apply_to_spindle(const sim::ScenarioAction& a) noexcept {

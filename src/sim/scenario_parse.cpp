@@ -44,6 +44,9 @@ constexpr std::array kActions = {
     ActionSpelling{"skip_mask", ActionKind::skip_mask},
     ActionSpelling{"block_search", ActionKind::block_search},
     ActionSpelling{"mdi", ActionKind::mdi},
+    ActionSpelling{"jog", ActionKind::jog},
+    ActionSpelling{"jog_increment", ActionKind::jog_increment},
+    ActionSpelling{"mode", ActionKind::mode},
 };
 
 // Parses one line; reports its first problem and returns nothing then.
@@ -78,6 +81,11 @@ class LineParser {
   bool take_percent(double& pct);
   bool take_spindle_cmd(ScenarioAction& a);
   bool take_handwheel(ScenarioAction& a);
+  bool take_axis(ScenarioAction& a);
+  bool take_jog(ScenarioAction& a);
+  bool take_jog_increment(ScenarioAction& a);
+  bool take_jog_direction(ScenarioAction& a, bool stop_allowed);
+  bool take_mode(ScenarioAction& a);
   bool take_variable(ScenarioAction& a);
   bool take_skip_mask(double& mask);
   bool take_block_search(ScenarioAction& a);
@@ -205,12 +213,18 @@ bool LineParser::parse_args(ScenarioAction& a) {
       return take_block_search(a);
     case ActionKind::mdi:
       return take_mdi_text();
+    case ActionKind::jog:
+      return take_jog(a);
+    case ActionKind::jog_increment:
+      return take_jog_increment(a);
+    case ActionKind::mode:
+      return take_mode(a);
   }
   return true;
 }
 
-// handwheel <axis> <mm>: the axis name as the channel knows it, the distance signed.
-bool LineParser::take_handwheel(ScenarioAction& a) {
+// A path axis name as the channel knows it (checked against the machine later).
+bool LineParser::take_axis(ScenarioAction& a) {
   if (!need("the axis name (e.g. X)")) return false;
   const Token& axis = toks_[next_++];
   if (axis.text.empty() || axis.text.size() >= a.axis_name.size() ||
@@ -219,6 +233,12 @@ bool LineParser::take_handwheel(ScenarioAction& a) {
                 fmt::format("'{}' is not an axis name; write e.g. X", detail::printable(axis.text)));
   std::copy(axis.text.begin(), axis.text.end(), a.axis_name.begin());
   a.axis_name[axis.text.size()] = '\0';
+  return true;
+}
+
+// handwheel <axis> <mm>: the axis name as the channel knows it, the distance signed.
+bool LineParser::take_handwheel(ScenarioAction& a) {
+  if (!take_axis(a)) return false;
   if (!need("the handwheel distance in mm")) return false;
   const Token& t = toks_[next_++];
   auto v = detail::to_number(t.text);
@@ -226,6 +246,59 @@ bool LineParser::take_handwheel(ScenarioAction& a) {
     return fail(ErrorId::PlcScenarioBadNumber, t.column,
                 fmt::format("'{}' is not a distance; write mm, e.g. 0.5", detail::printable(t.text)));
   a.value = *v;
+  return true;
+}
+
+// + or - (or stop, where allowed): the jog's direction.
+bool LineParser::take_jog_direction(ScenarioAction& a, bool stop_allowed) {
+  if (!need(stop_allowed ? "+, - or stop" : "+ or -")) return false;
+  const Token& t = toks_[next_++];
+  if (t.text == "+") a.direction = 1;
+  else if (t.text == "-") a.direction = -1;
+  else if (stop_allowed && iequals(t.text, "stop")) a.direction = 0;
+  else
+    return fail(ErrorId::PlcScenarioBadJog, t.column,
+                fmt::format("'{}' is not a jog direction; write {}", detail::printable(t.text),
+                            stop_allowed ? "+, - or stop" : "+ or -"));
+  return true;
+}
+
+// jog <axis> +|- [speed mm/min] | jog <axis> stop: a continuous jog starts
+// (until its stop line) or is released. The speed is kept in mm/s.
+bool LineParser::take_jog(ScenarioAction& a) {
+  if (!take_axis(a) || !take_jog_direction(a, true)) return false;
+  if (at_end() || a.direction == 0) return true;
+  const Token& t = toks_[next_++];
+  auto v = detail::to_number(t.text);
+  if (!v || *v <= 0)
+    return fail(ErrorId::PlcScenarioBadJog, t.column,
+                fmt::format("'{}' is not a jog speed; write mm/min > 0, e.g. 600", detail::printable(t.text)));
+  a.value = *v / 60.0;
+  return true;
+}
+
+// jog_increment <axis> +|- <step mm>: one step per line.
+bool LineParser::take_jog_increment(ScenarioAction& a) {
+  if (!take_axis(a) || !take_jog_direction(a, false)) return false;
+  if (!need("the step in mm (e.g. 0.1)")) return false;
+  const Token& t = toks_[next_++];
+  auto v = detail::to_number(t.text);
+  if (!v || *v <= 0)
+    return fail(ErrorId::PlcScenarioBadJog, t.column,
+                fmt::format("'{}' is not a jog step; write mm > 0, e.g. 0.1", detail::printable(t.text)));
+  a.value = *v;
+  return true;
+}
+
+// mode manual|automatic: on = manual.
+bool LineParser::take_mode(ScenarioAction& a) {
+  if (!need("manual or automatic")) return false;
+  const Token& t = toks_[next_++];
+  if (iequals(t.text, "manual")) a.on = true;
+  else if (iequals(t.text, "automatic")) a.on = false;
+  else
+    return fail(ErrorId::PlcScenarioBadMode, t.column,
+                fmt::format("'{}' is not a mode; write manual or automatic", detail::printable(t.text)));
   return true;
 }
 

@@ -42,7 +42,7 @@ bool resolve_one(ScenarioAction& a, const config::Machine& m, const plc::Spindle
     return false;
   }
   const auto& ch = m.channels[a.channel - 1];
-  if (a.kind == ActionKind::handwheel) {
+  if (a.kind == ActionKind::handwheel || a.kind == ActionKind::jog || a.kind == ActionKind::jog_increment) {
     const std::string_view name(a.axis_name.data());
     for (std::size_t j = 0; j < ch.axes.size(); ++j)
       if (detail::iequals(ch.axes[j].name, name)) a.axis = static_cast<std::int8_t>(j);

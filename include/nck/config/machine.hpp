@@ -149,6 +149,11 @@ struct AxisConfig {
   bool diameter_prog_rel = false;                 // P-AXIS-00059 (durchm_prog_rel)
   bool fast_from_cam = true;                    // P-AXIS-00064
   std::string feedhold_deceleration_mode = "DEFAULT_DECELERATION";  // P-AXIS-00556
+  // Manual mode (handbetrieb.*; docs/decisions.md "Manual mode: jog"):
+  double jog_speed_mm_s = 16.666;            // P-AXIS-00077 (tipp.geschw[0]): continuous jog
+  double jog_increment_speed_mm_s = 16.666;  // P-AXIS-00076 (jog.geschw[0]): incremental jog
+  double manual_max_speed_mm_s = 166.666;    // P-AXIS-00213 (hb.vb_max): caps every jog
+  double manual_a_max_mm_s2 = 1000;          // P-AXIS-00009 (hb.a_max): jog ramps, capped by P-AXIS-00008
   std::string secondary_encoder;                // P-AXIS-00824
   bool is_speed_controlled() const { return is_open_loop(drive_mode); }
 

@@ -78,6 +78,8 @@ class Kernel {
   bool all_channels_done() const noexcept;
   bool channel_done(std::size_t ch) const noexcept;
   ProgramState program_state(std::size_t ch) const noexcept;
+  // An axis of channel ch is being jogged (manual mode).
+  bool channel_jogging(std::size_t ch) const noexcept;
   std::uint64_t cycles() const noexcept { return cycles_; }
   // Simulated time at the start of the next cycle.
   double time_s() const noexcept { return static_cast<double>(cycles_ * cycle_us_) / 1e6; }

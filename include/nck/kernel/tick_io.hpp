@@ -48,6 +48,19 @@ struct StopMark {
   bool operator==(const StopMark&) const = default;
 };
 
+// The operator's jog request for one path axis (manual mode, docs/operating.md).
+// A request acts in the cycle it is given; a continuous jog goes on until
+// a stop request (or the software limit).
+struct JogRequest {
+  enum class Kind : std::uint8_t { none, continuous, increment, stop };
+  Kind kind = Kind::none;
+  std::int8_t axis = -1;      // channel axis index
+  std::int8_t direction = 1;  // +1 / -1
+  double speed_mm_s = 0;      // 0: the axis's configured jog speed (P-AXIS-00077 / 00076)
+  double step_mm = 0;         // increment: the distance of one press, > 0
+};
+inline constexpr std::size_t kMaxJogRequestsPerTick = 8;
+
 struct ChannelInput {
   double feed_override_pct = 100;  // HLI feed override 0..100 (more is clamped)
   bool feedhold = false;
@@ -64,8 +77,14 @@ struct ChannelInput {
   // machine positions latched at that instant.
   bool probe_switched = false;
   AxisArray probe_latched_mcs{};
-  // Handwheel travel during the last cycle per path axis, mm (G201 manual mode).
+  // Handwheel travel during the last cycle per path axis, mm (G201 manual
+  // mode, or any axis while manual_mode is on and the program does not move).
   AxisArray handwheel_mm{};
+  // The channel's manual mode (the HLI's mode selection): the handwheel
+  // moves the axes without G201, and a cycle start does not release a hold.
+  bool manual_mode = false;
+  // Jog requests arrived since the last cycle (acted on in this one).
+  FixedVector<JogRequest, kMaxJogRequestsPerTick> jogs;
   // The distance sensor of 3D distance control: its raw value this cycle,
   // or none (a dropout).
   bool dist_sensor_valid = false;

@@ -68,6 +68,7 @@ struct ChannelControl {
   bool optional_stop = false;  // M01 stops only while this is on
   bool cycle_start = false;    // a request: releases a program hold (M0 / M1), cleared when handed over
   bool single_step = false;    // single step mode (held until switched off)
+  bool manual_mode = false;    // mode selection: manual (jog, handwheel without G201) or automatic
   // decoder_mc_control.program_block_ignore: the active block-skip levels,
   // /1 = 0x1 ... /10 = 0x200 (facts C4); blocks decoded from then on skip
   std::uint32_t skip_mask = 0;

@@ -76,11 +76,17 @@ class MachineSim {
   const std::string& scenario_file() const { return scenario_->file; }
   // The scenario types MDI text.
   bool runs_mdi() const noexcept { return scenario_ && !scenario_->texts.empty(); }
+  // Channel ch is in manual mode (the scenario's mode line).
+  bool manual_mode(std::size_t ch) const noexcept { return ch < channels_ && hli_.channel[ch].manual_mode; }
+  // The scenario has jog lines still to come: a run goes on after its
+  // program end until they have acted (jogging an ended channel).
+  bool jog_pending() const noexcept { return jog_lines_left_ > 0; }
 
  private:
   void apply(const sim::ScenarioAction& a, kernel::TickInput& in) noexcept;
   void apply_to_spindle(const sim::ScenarioAction& a) noexcept;
   static void write_channel_state(kernel::ProgramState st, plc::ChannelState& hli) noexcept;
+  void apply_jog(const sim::ScenarioAction& a, kernel::ChannelInput& in) noexcept;
 
   PlcSim plc_;
   SpindleDrives drives_;
@@ -100,6 +106,8 @@ class MachineSim {
   double t_s_ = 0;  // start of the cycle being computed
   bool handwheel_turned_ = false;  // in the last read: clear its travel in the next
   bool skip_levels_used_ = false;  // a skip_mask line was loaded
+  std::size_t jog_lines_left_ = 0;  // jog / jog_increment lines not yet acted on
+  bool jogs_given_ = false;  // in the last read: clear the requests in the next
   PlcSim::AckList acks_;
 };
 

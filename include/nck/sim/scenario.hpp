@@ -38,6 +38,9 @@ enum class ActionKind : std::uint8_t {
   skip_mask,            // skip_mask 0x5              (active block-skip levels /1 /3: program_block_ignore)
   block_search,         // block_search N100 pass 2 covered 400   (at time 0: the run starts with a block search)
   mdi,                  // mdi G1 X10 F1000           (one block typed by the operator: Scenario::texts[value])
+  jog,                  // jog X + [600] / jog X stop (continuous jog, speed mm/min)
+  jog_increment,        // jog_increment X - 0.1      (one step in mm)
+  mode,                 // mode manual|automatic      (the channel's mode selection)
 };
 
 // The action's name as written in the file (the primary spelling).
@@ -54,8 +57,9 @@ struct ScenarioAction {
   double value = 0;            // percent for the overrides
   bool on = false;             // switches
   plc::ExtSpindleCommand cmd;       // spindle_cmd only
-  std::array<char, plc::kSpindleNameChars> axis_name{};  // handwheel: the path axis
-  std::int8_t axis = -1;       // handwheel: channel axis index (resolve_spindles)
+  std::array<char, plc::kSpindleNameChars> axis_name{};  // handwheel, jog: the path axis
+  std::int8_t axis = -1;       // handwheel, jog: channel axis index (resolve_spindles)
+  std::int8_t direction = 0;   // jog: +1 / -1, 0 = stop; value = speed mm/s (0: the axis's), jog_increment: step mm
   std::array<char, 32> var_name{};  // variable: its name as the NC program writes it
   // block_search: the mark (value: N, block counter or byte offset); `on`: no hold at restart
   prep::SearchMark::Kind search_kind = prep::SearchMark::Kind::block_number;

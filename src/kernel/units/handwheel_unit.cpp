@@ -14,11 +14,11 @@ void HandwheelUnit::start(const ManualChange* c) noexcept {
 }
 
 // The offset is travelled at a limited speed (docs/decisions.md).
-Fault HandwheelUnit::follow_offsets(Cycle& cy) noexcept {
+Fault HandwheelUnit::follow_offsets(Cycle& cy, std::uint32_t manual_axes) noexcept {
   // Until the first G201 every handwheel offset is zero: nothing to follow.
   const double step = kHandwheelSpeed_mm_s * cy.dt_s;
   for (std::size_t j = 0; used_ && j < cy.n_axes; ++j) {
-    if ((manual_mask_ >> j) & 1u) target_mm_[j] += cy.in.handwheel_mm[j];
+    if (((manual_mask_ | manual_axes) >> j) & 1u) target_mm_[j] += cy.in.handwheel_mm[j];
     const double d = target_mm_[j] - offset_mm_[j];
     offset_mm_[j] += std::clamp(d, -step, step);
     in_force_mm_[j] = offset_mm_[j] * share_[j];

@@ -27,15 +27,28 @@ class HandwheelUnit {
   void blend(const Motion& m, double length_mm, double s_mm, std::size_t n_axes) noexcept;
   // Every cycle: follow the handwheel; at #GET MANUAL OFFSETS send the
   // offsets reached at the end of its cycle. rt
-  Fault follow(Cycle& cy) noexcept {
-    return used_ || fetch_pending_ ? follow_offsets(cy) : Fault{};  // inline: most programs never use it
+  // manual_axes: axes the handwheel moves besides those in G201 (manual
+  // mode while the program does not move).
+  Fault follow(Cycle& cy, std::uint32_t manual_axes = 0) noexcept {
+    if (manual_axes != 0) used_ = true;
+    return used_ || fetch_pending_ ? follow_offsets(cy, manual_axes) : Fault{};  // inline: most programs never use it
   }
+  // A jog moved axis j by d_mm: it joins the axis's manual offset at once
+  // (the jog has ramped it within a_max). rt
+  void add_mm(std::size_t j, double d_mm) noexcept {
+    offset_mm_[j] += d_mm;
+    target_mm_[j] += d_mm;
+    in_force_mm_[j] = offset_mm_[j] * share_[j];
+    used_ = true;
+  }
+  // Axis j is in manual mode (G201).
+  bool in_manual_mode(std::size_t j) const noexcept { return j < 32 && ((manual_mask_ >> j) & 1u) != 0; }
   // The offset in the set point now (less than travelled while
   // #SUPPRESS OFFSETS or #MCS leaves it out).
   const motion::AxisVector& in_force_mm() const noexcept { return in_force_mm_; }
 
  private:
-  Fault follow_offsets(Cycle& cy) noexcept;
+  Fault follow_offsets(Cycle& cy, std::uint32_t manual_axes) noexcept;
   bool fetch_pending_ = false;    // #GET MANUAL OFFSETS: send them at the end of this cycle
   std::uint32_t manual_mask_ = 0;  // axes in manual mode (G201)
   bool used_ = false;              // some axis was in manual mode in this run

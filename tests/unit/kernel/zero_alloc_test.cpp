@@ -132,6 +132,7 @@ TEST(ZeroAllocation, WholeExamplesRunThroughTickWithoutHeap) {
       {"examples/mill", {"examples/mill/spindle.nc"}, "examples/mill/spindle.plc"},
       {"examples/mill", {"examples/mill/measure.nc"}},
       {"examples/mill", {"examples/mill/manual.nc"}, "examples/mill/manual.plc"},
+      {"examples/mill", {"examples/mill/jog.nc"}, "examples/mill/jog.plc"},  // jog, handwheel in manual mode, soft limit
       {"examples/mill", {"examples/mill/caxis.nc"}},
       {"examples/mill", {"examples/mill/cylinder.nc"}},
       {"examples/mill", {"examples/mill/jumps.nc"}},

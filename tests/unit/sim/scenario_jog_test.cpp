@@ -1,0 +1,86 @@
+// Manual mode lines of the --plc scenario (issue 27): jog, jog_increment,
+// mode; bad lines get their ID, file and line.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "nck/sim/scenario.hpp"
+
+namespace nck::sim {
+namespace {
+
+struct Parsed {
+  Scenario sc;
+  Diagnostics diags;
+};
+
+Parsed parse(std::string_view text) {
+  Parsed p;
+  p.sc = parse_scenario(text, "jog.plc", p.diags);
+  return p;
+}
+
+ScenarioAction one(std::string_view line) {
+  auto p = parse(line);
+  EXPECT_TRUE(p.diags.empty()) << line << ": " << (p.diags.empty() ? "" : format(p.diags.items()[0]));
+  EXPECT_EQ(p.sc.actions.size(), 1u) << line;
+  return p.sc.actions.empty() ? ScenarioAction{} : p.sc.actions[0];
+}
+
+Diagnostic bad(std::string_view text) {
+  auto p = parse(text);
+  EXPECT_EQ(p.diags.items().size(), 1u) << text;
+  EXPECT_TRUE(p.sc.actions.empty()) << text;
+  return p.diags.items().empty() ? Diagnostic{} : p.diags.items()[0];
+}
+
+TEST(ScenarioJog, ContinuousJogStartAndStop) {
+  auto a = one("1.5 jog X + 600");
+  EXPECT_EQ(a.kind, ActionKind::jog);
+  EXPECT_EQ(std::string(a.axis_name.data()), "X");
+  EXPECT_EQ(a.direction, 1);
+  EXPECT_DOUBLE_EQ(a.value, 10.0);  // 600 mm/min in mm/s
+  a = one("2 JOG y -");
+  EXPECT_EQ(a.direction, -1);
+  EXPECT_DOUBLE_EQ(a.value, 0.0);  // the axis's P-AXIS-00077
+  a = one("3 jog X stop   # released");
+  EXPECT_EQ(a.direction, 0);
+  EXPECT_EQ(action_name(ActionKind::jog), "jog");
+}
+
+TEST(ScenarioJog, IncrementAndMode) {
+  auto a = one("0 ch=1 jog_increment Z - 0.25");
+  EXPECT_EQ(a.kind, ActionKind::jog_increment);
+  EXPECT_EQ(a.direction, -1);
+  EXPECT_DOUBLE_EQ(a.value, 0.25);
+  a = one("0 mode manual");
+  EXPECT_EQ(a.kind, ActionKind::mode);
+  EXPECT_TRUE(a.on);
+  EXPECT_FALSE(one("4 mode Automatic").on);
+}
+
+TEST(ScenarioJog, BadLinesHaveIdFileAndLine) {
+  for (const char* text : {"0 jog X up", "0 jog X + 0", "0 jog X + -5", "0 jog X + fast", "0 jog_increment X stop 1",
+                           "0 jog_increment X + 0", "0 jog_increment X + -1", "0 jog_increment X * 1"}) {
+    const Diagnostic d = bad(text);
+    EXPECT_EQ(d.id, ErrorId::PlcScenarioBadJog) << text;
+    EXPECT_EQ(d.loc.file, "jog.plc") << text;
+    EXPECT_EQ(d.loc.line, 1u) << text;
+  }
+  EXPECT_EQ(bad("0 jog").id, ErrorId::PlcScenarioMissingArgument);
+  EXPECT_EQ(bad("0 jog X").id, ErrorId::PlcScenarioMissingArgument);
+  EXPECT_EQ(bad("0 jog_increment X +").id, ErrorId::PlcScenarioMissingArgument);
+  EXPECT_EQ(bad("0 jog X stop 600").id, ErrorId::PlcScenarioExtraArgument);
+  EXPECT_EQ(bad("0 jog X + 600 more").id, ErrorId::PlcScenarioExtraArgument);
+  EXPECT_EQ(bad("0 jog 5 +").id, ErrorId::PlcScenarioBadNumber);  // not an axis name
+  EXPECT_EQ(bad("0 mode auto").id, ErrorId::PlcScenarioBadMode);
+  EXPECT_EQ(bad("0 mode").id, ErrorId::PlcScenarioMissingArgument);
+  // the line number of a bad line among good ones
+  auto p = parse("0 mode manual\n\n1 jog X sideways\n2 jog X stop\n");
+  ASSERT_EQ(p.diags.items().size(), 1u);
+  EXPECT_EQ(p.diags.items()[0].loc.line, 3u);
+  EXPECT_EQ(p.sc.actions.size(), 2u);
+}
+
+}  // namespace
+}  // namespace nck::sim
