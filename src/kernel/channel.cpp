@@ -24,6 +24,7 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
   if (in.reset) jog_.release_all();
   if (!in.jogs.empty()) take_jogs(cy);
   if (done()) take_mdi();
+  if (!done()) follow_stop(cy);
   if (!done()) {
     if (in.reset) {
       end_program(EndReason::reset, cy);
@@ -331,6 +332,19 @@ void Channel::take_mdi() noexcept {
   if (!dropping_mdi_ && !commands_->empty() && commands_->front().mdi != Mdi::none) status_ = ChannelStatus::waiting;
 }
 
+// NC stop: the path stops as with feedhold and the channel holds, mid-block
+// too, until cycle start. rt
+void Channel::follow_stop(Cycle& cy) noexcept {
+  if (cy.in.stop && !stopped_ && state_ == ProgramState::running) {
+    stopped_ = true;
+    set_state(ProgramState::hold, StateReason::stop, cy);
+  } else if (stopped_ && hold_.released(cy.in)) {
+    stopped_ = false;
+    set_state(ProgramState::running, StateReason::cycle_start, cy);
+  }
+  cy.stopped = stopped_;
+}
+
 // MDI is done: the channel is idle again, ready for more.
 void Channel::finish_mdi(Cycle& cy) noexcept {
   set_state(ProgramState::idle, StateReason::mdi, cy);
@@ -409,6 +423,7 @@ void Channel::end_program(EndReason reason, Cycle& cy) noexcept {
     return;
   }
   ax_links_.end(reason, cy);
+  stopped_ = false;
   const bool ok = reason == EndReason::m30 || reason == EndReason::m2;
   status_ = ok ? ChannelStatus::ended : ChannelStatus::aborted;
   active_ = false;

@@ -125,6 +125,7 @@ class Channel {
   // MDI: the operator's text wakes a channel that is done; its end or an
   // error returns the channel to idle.
   void take_mdi() noexcept;
+  void follow_stop(Cycle& cy) noexcept;
   void finish_mdi(Cycle& cy) noexcept;
   void fail_mdi(Cycle& cy) noexcept;
   // Block search's restart commands: the states they enter and leave.
@@ -146,6 +147,7 @@ class Channel {
   Phase phase_ = Phase::pre_wait;
   Command current_{};
   bool dropping_mdi_ = false;  // an MDI text failed: its commands left are dropped
+  bool stopped_ = false;       // NC stop: held until cycle start
 
   // its technology units (docs/architecture.md: when the channel calls them)
   SyncUnit sync_;              // outputs and waits before / after the body

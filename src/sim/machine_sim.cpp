@@ -56,6 +56,7 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
     jogs_given_ = false;
   }
   for (const sim::ScenarioAction& a : player_.due(t_s)) apply(a, in);
+  player_.for_each_triggered_due(t_s, [&](const sim::ScenarioAction& a) { apply(a, in); });
 
   plc_.tick(t_s);
   plc_.drain_acks(acks_);
@@ -75,6 +76,8 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
     ci.manual_mode = c.manual_mode;
     ci.cycle_start = c.cycle_start || auto_cycle_start_[ch];
     c.cycle_start = false;
+    ci.stop = c.stop;
+    c.stop = false;
     ci.probe_switched = probe_switched_[ch];
     if (probe_switched_[ch]) ci.probe_latched_mcs = probes_[ch].latched();
     if (sensor_on_[ch]) sensors_[ch].sample(t_s, ci.dist_sensor_valid, ci.dist_sensor_mm);
@@ -89,6 +92,9 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
 void MachineSim::write(const kernel::TickOutput& out) noexcept {
   for (const kernel::TechRequest& r : out.tech_outputs) (void)plc_.submit(r.handle, r.output, t_s_);
   for (std::size_t i = 0; i < spindles_; ++i) hli_.spindle_status[i] = out.hli_spindles[i];
+  if (player_.has_triggers())  // lines waiting for a program state ('@hold cycle_start')
+    for (const kernel::Event& e : out.events)
+      if (e.kind == kernel::EventKind::state) player_.entered(e.channel, e.state_to, out.t_s);
   for (std::size_t ch = 0; ch < channels_; ++ch) {
     write_channel_state(out.channels[ch].program_state, hli_.channel_state[ch]);
     probe_switched_[ch] = probes_[ch].watch(out.channels[ch].axis_mcs);
@@ -121,6 +127,7 @@ void MachineSim::apply(const sim::ScenarioAction& a, kernel::TickInput& in) noex
     case sim::ActionKind::reset: ch.reset = true; return;
     case sim::ActionKind::optional_stop: ch.optional_stop = a.on; return;
     case sim::ActionKind::cycle_start: ch.cycle_start = true; return;
+    case sim::ActionKind::stop: ch.stop = true; return;
     case sim::ActionKind::auto_cycle_start: auto_cycle_start_[c] = a.on; return;
     case sim::ActionKind::single_step: ch.single_step = a.on; return;
     case sim::ActionKind::skip_mask: ch.skip_mask = static_cast<std::uint32_t>(a.value); return;
@@ -179,7 +186,7 @@ void MachineSim::apply_jog(const sim::ScenarioAction& a, kernel::ChannelInput& i
   }
   (void)in.jogs.push_back(r);  // more than kMaxJogRequestsPerTick at one time: the rest is lost
   jogs_given_ = true;
-  if (jog_lines_left_ > 0) --jog_lines_left_;
+  if (!a.trigger && jog_lines_left_ > 0) --jog_lines_left_;  // counts the timed lines only
 }
 
 void MachineSim::apply_to_spindle(const sim::ScenarioAction& a) noexcept {

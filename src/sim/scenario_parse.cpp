@@ -44,6 +44,7 @@ constexpr std::array kActions = {
     ActionSpelling{"skip_mask", ActionKind::skip_mask},
     ActionSpelling{"block_search", ActionKind::block_search},
     ActionSpelling{"mdi", ActionKind::mdi},
+    ActionSpelling{"stop", ActionKind::stop},
     ActionSpelling{"jog", ActionKind::jog},
     ActionSpelling{"jog_increment", ActionKind::jog_increment},
     ActionSpelling{"mode", ActionKind::mode},
@@ -115,8 +116,29 @@ std::optional<ScenarioAction> LineParser::parse() {
   return a;
 }
 
+// '@STATE[+DELAY]': the first time the channel enters that program state.
+std::optional<kernel::ProgramState> trigger_state(std::string_view name) {
+  using S = kernel::ProgramState;
+  for (S s : {S::idle, S::running, S::hold, S::searching, S::returning, S::error, S::ended})
+    if (iequals(name, kernel::state_name(s))) return s;
+  return std::nullopt;
+}
+
 bool LineParser::parse_time(ScenarioAction& a) {
   const Token& t = toks_[next_++];
+  if (!t.text.empty() && t.text[0] == '@') {
+    const std::string_view rest = t.text.substr(1);
+    const std::size_t plus = rest.find('+');
+    a.trigger = trigger_state(rest.substr(0, plus));
+    const auto delay = plus == std::string_view::npos ? std::optional<double>(0.0) : detail::to_number(rest.substr(plus + 1));
+    if (!a.trigger || !delay || *delay < 0)
+      return fail(ErrorId::PlcScenarioBadTime, t.column,
+                  fmt::format("'{}' is no trigger; write @STATE or @STATE+SECONDS with a program state "
+                              "(idle, running, hold, searching, returning, error, ended), e.g. '@hold cycle_start'",
+                              detail::printable(t.text)));
+    a.t_s = *delay;
+    return true;
+  }
   auto v = detail::to_number(t.text);
   if (!v || *v < 0)
     return fail(ErrorId::PlcScenarioBadTime, t.column,
@@ -197,6 +219,7 @@ bool LineParser::parse_args(ScenarioAction& a) {
     case ActionKind::single_step:
       return take_switch(a.on);
     case ActionKind::reset:
+    case ActionKind::stop:
     case ActionKind::cycle_start:
       return true;
     case ActionKind::spindle_reset:
@@ -404,7 +427,7 @@ bool LineParser::take_whole(std::string_view what, std::int64_t lowest, std::int
 // mille>] [program <name>] [no_hold]: the run starts with a block search
 // (TF5200 types 4, 3, 1); only at time 0, where the program starts.
 bool LineParser::take_block_search(ScenarioAction& a) {
-  if (a.t_s != 0)
+  if (a.t_s != 0 || a.trigger)
     return fail(ErrorId::PlcScenarioBlockSearch, toks_[0].column,
                 "block_search starts the program with a block search: give it at time 0");
   if (!take_search_mark(a)) return false;
@@ -564,7 +587,7 @@ Scenario parse_scenario(std::string_view text, std::string file, Diagnostics& di
     ++line_no;
     detail::tokenize(line, toks);
     if (toks.empty()) continue;
-    if (sc.actions.size() >= kMaxScenarioActions) {
+    if (sc.actions.size() + sc.triggered.size() >= kMaxScenarioActions) {
       diags.add(ErrorId::PlcScenarioTooLarge, SourceLoc{sc.file, line_no, 1},
                 fmt::format("more than {} actions; the rest of the file is ignored",
                             kMaxScenarioActions));
@@ -576,6 +599,10 @@ Scenario parse_scenario(std::string_view text, std::string file, Diagnostics& di
     if (a->kind == ActionKind::mdi) {
       a->value = static_cast<double>(sc.texts.size());
       sc.texts.push_back(parser.mdi_text());
+    }
+    if (a->trigger) {  // waits for its program state: no place in the timeline
+      sc.triggered.push_back(*a);
+      continue;
     }
     if (a->t_s < last_t_s)
       diags.add(ErrorId::PlcScenarioTimeBackwards, SourceLoc{sc.file, line_no, 1},

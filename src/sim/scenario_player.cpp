@@ -2,16 +2,19 @@
 #include "nck/sim/scenario_player.hpp"
 
 namespace nck::sim {
-namespace {
-
-constexpr double kTimeEps_s = 1e-9;  // same rounding guard as the PLC's delays
-
-}  // namespace
 
 std::span<const sim::ScenarioAction> ScenarioPlayer::due(double now_s) noexcept {
   const std::size_t first = next_;
   while (next_ < actions_.size() && actions_[next_].t_s <= now_s + kTimeEps_s) ++next_;
   return actions_.subspan(first, next_ - first);
+}
+
+void ScenarioPlayer::entered(std::uint8_t ch, kernel::ProgramState st, double t_s) noexcept {
+  for (std::size_t i = 0; i < triggered_.size(); ++i)
+    if (due_s_[i] == kNotArmed && triggered_[i].channel == ch && triggered_[i].trigger == st) {
+      due_s_[i] = t_s + triggered_[i].t_s;
+      ++armed_;
+    }
 }
 
 }  // namespace nck::sim

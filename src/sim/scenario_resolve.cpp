@@ -71,7 +71,9 @@ bool resolve_one(ScenarioAction& a, const config::Machine& m, const plc::Spindle
 
 void resolve_spindles(Scenario& sc, const config::Machine& m, const plc::SpindleMap& map,
                       Diagnostics& diags) {
-  std::erase_if(sc.actions, [&](ScenarioAction& a) { return !resolve_one(a, m, map, sc.file, diags); });
+  const auto unresolved = [&](ScenarioAction& a) { return !resolve_one(a, m, map, sc.file, diags); };
+  std::erase_if(sc.actions, unresolved);
+  std::erase_if(sc.triggered, unresolved);
 }
 
 }  // namespace nck::sim

@@ -33,6 +33,7 @@ enum class StateReason : std::uint8_t {
   stop_at,      // the stop-at mark's block ended
   block_search,  // a block search began, returned to the contour, or ended its return
   mdi,           // MDI text began or was done
+  stop,          // NC stop: the operator stopped the program
 };
 
 constexpr std::string_view state_name(ProgramState s) noexcept {
@@ -66,6 +67,7 @@ constexpr std::string_view state_reason_name(StateReason r) noexcept {
     case StateReason::stop_at: return "stop_at";
     case StateReason::block_search: return "block_search";
     case StateReason::mdi: return "mdi";
+    case StateReason::stop: return "stop";
   }
   return "start";
 }

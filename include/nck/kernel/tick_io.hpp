@@ -70,6 +70,9 @@ struct ChannelInput {
   // that is in force in this cycle, or the first one the channel reaches
   // within it — one hold per cycle: a press is one step.
   bool cycle_start = false;
+  // NC stop (a request, the operator's stop key): the path stops within its
+  // deceleration wherever it is, and the channel holds until cycle start.
+  bool stop = false;
   // Single step (the HLI's switch): hold at block ends as P-CHAN-00015 says.
   bool single_step = false;
   StopMark stop_at{};

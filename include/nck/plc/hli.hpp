@@ -67,6 +67,7 @@ struct ChannelControl {
   bool reset = false;          // a request, the CNC clears it when it has reset the channel
   bool optional_stop = false;  // M01 stops only while this is on
   bool cycle_start = false;    // a request: releases a program hold (M0 / M1), cleared when handed over
+  bool stop = false;           // a request (NC stop): the channel holds where it is, cleared when handed over
   bool single_step = false;    // single step mode (held until switched off)
   bool manual_mode = false;    // mode selection: manual (jog, handwheel without G201) or automatic
   // decoder_mc_control.program_block_ignore: the active block-skip levels,

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "nck/config/machine.hpp"
+#include "nck/kernel/program_state.hpp"
 #include "nck/core/diagnostic.hpp"
 #include "nck/plc/ext_command.hpp"
 #include "nck/plc/hli.hpp"
@@ -37,6 +38,7 @@ enum class ActionKind : std::uint8_t {
   single_step,          // single_step on|off         (hold at block ends, P-CHAN-00015)
   skip_mask,            // skip_mask 0x5              (active block-skip levels /1 /3: program_block_ignore)
   block_search,         // block_search N100 pass 2 covered 400   (at time 0: the run starts with a block search)
+  stop,                 // stop                       (NC stop: hold where the path is until cycle_start)
   mdi,                  // mdi G1 X10 F1000           (one block typed by the operator: Scenario::texts[value])
   jog,                  // jog X + [600] / jog X stop (continuous jog, speed mm/min)
   jog_increment,        // jog_increment X - 0.1      (one step in mm)
@@ -47,7 +49,10 @@ enum class ActionKind : std::uint8_t {
 std::string_view action_name(ActionKind k) noexcept;
 
 struct ScenarioAction {
-  double t_s = 0;
+  double t_s = 0;              // when; for a triggered line, the delay after its trigger
+  // '@hold' (or '@hold+0.5'): the line acts when its channel first enters
+  // this program state (in Scenario::triggered, not in actions).
+  std::optional<kernel::ProgramState> trigger;
   std::uint32_t line = 0;      // 1-based line in the scenario file
   std::uint8_t channel = 1;    // 1-based
   ActionKind kind = ActionKind::reset;
@@ -74,6 +79,7 @@ struct Scenario {
   std::string file;
   std::vector<ScenarioAction> actions;  // sorted by time, file order within equal times
   std::vector<std::string> texts;       // MDI lines' text (ScenarioAction::value is the index)
+  std::vector<ScenarioAction> triggered;  // lines that wait for a program state ('@hold'), in file order
 };
 
 inline constexpr std::size_t kMaxScenarioActions = 100000;

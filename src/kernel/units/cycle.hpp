@@ -65,6 +65,7 @@ struct Cycle {
   std::uint8_t channel = 1;                // 1-based
   std::size_t n_axes = 0;
   std::span<const std::int8_t> spindles;  // kernel index per channel spindle
+  bool stopped = false;                    // NC stop in force: the path is held as by feedhold
 
   Event event(EventKind k) const noexcept { return block_event(block, channel, k, t_s); }
   // Hands a record to preparation. The queue holds more records than can be

@@ -79,7 +79,7 @@ class PathUnit {
 
 // Every cycle of a motion: defined here so that it inlines into the channel.
 inline motion::ProfileSample PathUnit::step(const Motion& m, const CommandQueue& queued, Cycle& cy) noexcept {
-  const double ovr = cy.in.feedhold ? 0.0 : std::clamp(cy.in.feed_override_pct, 0.0, 100.0) / 100.0;
+  const double ovr = cy.in.feedhold || cy.stopped ? 0.0 : std::clamp(cy.in.feed_override_pct, 0.0, 100.0) / 100.0;
   if (reserve_) keep_braking_reserve(m, queued, cy.dt_s);
   const motion::ProfileSample st = profile_.step(cy.dt_s, ovr);
   if (reserve_ && st.braking) note_starved(cy);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "nck/sim/scenario.hpp"
+#include "nck/sim/scenario_player.hpp"
 
 namespace nck::sim {
 namespace {
@@ -295,6 +296,46 @@ TEST(ScenarioParse, MdiText) {
   EXPECT_EQ(p.sc.texts[static_cast<std::size_t>(p.sc.actions[0].value)], "G1 X10  Y5 F1000");
   EXPECT_EQ(p.sc.texts[static_cast<std::size_t>(p.sc.actions[1].value)], "G0 Z5");
   EXPECT_EQ(bad("0 mdi").id, ErrorId::PlcScenarioMissingArgument);
+}
+
+// Issue 27: lines that act when their channel first enters a program state.
+TEST(ScenarioParse, TriggeredLines) {
+  const auto p = parse("@hold cycle_start\n@ended+0.25 ch=1 feed_override 50\n1 reset\n");
+  ASSERT_TRUE(p.diags.empty());
+  ASSERT_EQ(p.sc.actions.size(), 1u);  // the timed one
+  ASSERT_EQ(p.sc.triggered.size(), 2u);
+  EXPECT_EQ(p.sc.triggered[0].trigger, kernel::ProgramState::hold);
+  EXPECT_DOUBLE_EQ(p.sc.triggered[0].t_s, 0);
+  EXPECT_EQ(p.sc.triggered[1].trigger, kernel::ProgramState::ended);
+  EXPECT_DOUBLE_EQ(p.sc.triggered[1].t_s, 0.25);
+  for (const char* text : {"@ cycle_start", "@holding cycle_start", "@hold+ cycle_start", "@hold+-1 cycle_start",
+                           "@hold+x cycle_start"})
+    EXPECT_EQ(bad(text).id, ErrorId::PlcScenarioBadTime) << text;
+  EXPECT_EQ(bad("@idle block_search N1").id, ErrorId::PlcScenarioBlockSearch);
+}
+
+// A triggered line acts its delay after the state is first entered, once.
+TEST(ScenarioPlayer, TriggeredLineActsOnceAfterItsState) {
+  const auto p = parse("@hold+0.5 cycle_start\n");
+  ScenarioPlayer player(p.sc);
+  std::size_t given = 0;
+  const auto count = [&](const ScenarioAction&) { ++given; };
+  player.for_each_triggered_due(10.0, count);
+  EXPECT_EQ(given, 0u);  // not armed
+  EXPECT_TRUE(player.finished());
+  player.entered(2, kernel::ProgramState::hold, 1.0);  // another channel
+  player.entered(1, kernel::ProgramState::running, 1.0);
+  EXPECT_TRUE(player.finished());
+  player.entered(1, kernel::ProgramState::hold, 1.0);
+  EXPECT_FALSE(player.finished());
+  player.for_each_triggered_due(1.4, count);
+  EXPECT_EQ(given, 0u);
+  player.for_each_triggered_due(1.5, count);
+  EXPECT_EQ(given, 1u);
+  player.entered(1, kernel::ProgramState::hold, 2.0);  // once only
+  player.for_each_triggered_due(9.0, count);
+  EXPECT_EQ(given, 1u);
+  EXPECT_TRUE(player.finished());
 }
 
 }  // namespace
