@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "nck/core/axis_name.hpp"
+#include "nck/plc/hli.hpp"
 
 namespace nck::prep {
 
@@ -52,6 +53,14 @@ std::vector<std::pair<std::string, double>> initial_variables(const config::Mach
     for (std::size_t j = 0; j < c.axes.size() && j < groups[i].size(); ++j)
       if (groups[i][j] != 0) vars.emplace_back(fmt::format("V.G.NP[{}].V.{}", i, c.axes[j].name), groups[i][j]);
   return vars;
+}
+
+std::vector<std::int8_t> kernel_spindles(const config::Machine& m, std::size_t ch) {
+  const plc::SpindleMap map = plc::build_spindle_map(m);
+  std::vector<std::int8_t> out;
+  for (std::size_t i = 0; i < m.channels[ch].spindles.size(); ++i)
+    out.push_back(map.at(ch + 1, static_cast<std::int32_t>(i)));
+  return out;
 }
 
 }  // namespace nck::prep

@@ -27,16 +27,6 @@
 namespace nck::prep {
 namespace {
 
-// The kernel spindle index of each of channel ch's spindles (the kernel
-// numbers spindles in the HLI map's order), as the run gives the planner.
-std::vector<std::int8_t> kernel_spindles(const config::Machine& m, std::size_t ch) {
-  const plc::SpindleMap map = plc::build_spindle_map(m);
-  std::vector<std::int8_t> out;
-  for (std::size_t i = 0; i < m.channels[ch].spindles.size(); ++i)
-    out.push_back(map.at(ch + 1, static_cast<std::int32_t>(i)));
-  return out;
-}
-
 nc::DecoderConfig lint_config(const config::Machine& m, std::size_t ch, const ProgramCheckOptions& o) {
   nc::DecoderConfig cfg = decoder_config(m, ch);
   cfg.continue_after_error = true;  // a bad block is dropped, the next one decoded

@@ -16,4 +16,8 @@ nc::DecoderConfig decoder_config(const config::Machine& m, std::size_t ch);
 // (V.G.AKT_PLATZ). setup
 std::vector<std::pair<std::string, double>> initial_variables(const config::Machine& m, std::size_t ch,
                                                               std::uint32_t clamp_index);
+
+// The kernel spindle index of each of channel ch's spindles (the kernel
+// numbers spindles in the HLI map's order), as the planner takes them. setup
+std::vector<std::int8_t> kernel_spindles(const config::Machine& m, std::size_t ch);
 }  // namespace nck::prep

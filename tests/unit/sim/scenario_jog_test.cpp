@@ -5,34 +5,12 @@
 #include <gtest/gtest.h>
 
 #include "nck/sim/scenario.hpp"
+#include "scenario_parse_helpers.hpp"
 
 namespace nck::sim {
 namespace {
 
-struct Parsed {
-  Scenario sc;
-  Diagnostics diags;
-};
-
-Parsed parse(std::string_view text) {
-  Parsed p;
-  p.sc = parse_scenario(text, "jog.plc", p.diags);
-  return p;
-}
-
-ScenarioAction one(std::string_view line) {
-  auto p = parse(line);
-  EXPECT_TRUE(p.diags.empty()) << line << ": " << (p.diags.empty() ? "" : format(p.diags.items()[0]));
-  EXPECT_EQ(p.sc.actions.size(), 1u) << line;
-  return p.sc.actions.empty() ? ScenarioAction{} : p.sc.actions[0];
-}
-
-Diagnostic bad(std::string_view text) {
-  auto p = parse(text);
-  EXPECT_EQ(p.diags.items().size(), 1u) << text;
-  EXPECT_TRUE(p.sc.actions.empty()) << text;
-  return p.diags.items().empty() ? Diagnostic{} : p.diags.items()[0];
-}
+using namespace testing;
 
 TEST(ScenarioJog, ContinuousJogStartAndStop) {
   auto a = one("1.5 jog X + 600");
@@ -64,7 +42,7 @@ TEST(ScenarioJog, BadLinesHaveIdFileAndLine) {
                            "0 jog_increment X + 0", "0 jog_increment X + -1", "0 jog_increment X * 1"}) {
     const Diagnostic d = bad(text);
     EXPECT_EQ(d.id, ErrorId::PlcScenarioBadJog) << text;
-    EXPECT_EQ(d.loc.file, "jog.plc") << text;
+    EXPECT_EQ(d.loc.file, "s.plc") << text;
     EXPECT_EQ(d.loc.line, 1u) << text;
   }
   EXPECT_EQ(bad("0 jog").id, ErrorId::PlcScenarioMissingArgument);

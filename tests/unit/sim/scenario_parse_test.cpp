@@ -4,36 +4,12 @@
 
 #include "nck/sim/scenario.hpp"
 #include "nck/sim/scenario_player.hpp"
+#include "scenario_parse_helpers.hpp"
 
 namespace nck::sim {
 namespace {
 
-struct Parsed {
-  Scenario sc;
-  Diagnostics diags;
-};
-
-Parsed parse(std::string_view text) {
-  Parsed p;
-  p.sc = parse_scenario(text, "s.plc", p.diags);
-  return p;
-}
-
-// The one action a single-line scenario gives, with no diagnostics.
-ScenarioAction one(std::string_view line) {
-  auto p = parse(line);
-  EXPECT_TRUE(p.diags.empty()) << line << ": " << (p.diags.empty() ? "" : format(p.diags.items()[0]));
-  EXPECT_EQ(p.sc.actions.size(), 1u) << line;
-  return p.sc.actions.empty() ? ScenarioAction{} : p.sc.actions[0];
-}
-
-// The single diagnostic a single-line scenario gives.
-Diagnostic bad(std::string_view text) {
-  auto p = parse(text);
-  EXPECT_EQ(p.diags.items().size(), 1u) << text;
-  EXPECT_TRUE(p.sc.actions.empty()) << text;
-  return p.diags.items().empty() ? Diagnostic{} : p.diags.items()[0];
-}
+using namespace testing;
 
 TEST(ScenarioParse, SpecExamples) {
   auto a = one("0.5 override S1 50");
