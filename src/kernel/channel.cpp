@@ -23,6 +23,12 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
   jog_.begin_cycle();
   if (in.reset) jog_.release_all();
   if (!in.jogs.empty()) take_jogs(cy);
+  if (in.cycle_start && state_ == ProgramState::error && !in.reset) {
+    Event e = cy.event(EventKind::warning);  // an operator action the state does not allow
+    e.id = ErrorId::KernelCycleStartInError;
+    e.message_index = kNoMessage;  // the ID's own text
+    cy.sink.emit(e);
+  }
   if (done()) take_mdi();
   if (!done()) follow_stop(cy);
   if (!done()) {

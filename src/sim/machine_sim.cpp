@@ -74,7 +74,9 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
     ci.stop_at = stop_at_[ch];
     ci.single_step = c.single_step;
     ci.manual_mode = c.manual_mode;
-    ci.cycle_start = c.cycle_start || auto_cycle_start_[ch];
+    // The simulated operator presses cycle start for holds, never in error.
+    const bool in_error = hli_.channel_state[ch].program_state == static_cast<std::uint8_t>(kernel::ProgramState::error);
+    ci.cycle_start = c.cycle_start || (auto_cycle_start_[ch] && !in_error);
     c.cycle_start = false;
     ci.stop = c.stop;
     c.stop = false;
