@@ -250,6 +250,18 @@ void ReportWriter::drop_shortest_blocks() {
     it = it->second.time_s <= threshold && !in_use(&it->second) ? blocks_.erase(it) : std::next(it);
 }
 
+void ReportWriter::set_causes(const nlohmann::ordered_json& causes) {
+  if (!enabled_ || !causes.contains("channels")) return;
+  nlohmann::ordered_json page = causes;
+  for (auto& ch : page["channels"])
+    for (auto& b : ch["blocks"]) {
+      const std::uint16_t fid = file_index(b["file"].get<std::string>());
+      b["fid"] = fid;
+      cause_lines_.emplace_back(fid, b["line"].get<std::uint32_t>());
+    }
+  causes_json_ = dump_json(page);
+}
+
 void ReportWriter::add_mark(Mark m) {
   if (marks_.size() < kMaxListed) marks_.push_back(std::move(m));
 }

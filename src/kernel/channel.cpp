@@ -21,6 +21,7 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
   path_.begin_cycle();
   hold_.begin_cycle();
   if (done()) take_mdi();
+  cause_ = done() ? CycleCause::none : CycleCause::transition;
   if (!done()) {
     if (in.reset) {
       end_program(EndReason::reset, cy);
@@ -46,10 +47,16 @@ void Channel::run_blocks(Cycle& cy) noexcept {
   for (;;) {
     if (!active_) {
       if (state_ == ProgramState::hold) {
-        if (!hold_.released(cy.in)) break;
+        if (!hold_.released(cy.in)) {
+          cause_ = CycleCause::hold;
+          break;
+        }
         set_state(ProgramState::running, StateReason::cycle_start, cy);
       }
-      if (commands_->empty()) break;
+      if (commands_->empty()) {
+        cause_ = CycleCause::starved;  // preparation has not queued the next block
+        break;
+      }
       start(cy);
       commands_->pop();
       if (done()) break;
@@ -68,6 +75,10 @@ void Channel::write_output(ChannelOutput& out) const noexcept {
   out.path_velocity_mm_s = path_.velocity_mm_s();
   out.status = status_;
   out.program_state = state_;
+  out.cause = cause_;
+  const Motion* m = active_ ? current_.as<Motion>() : nullptr;
+  out.feed_mm_s = m ? m->v_cmd_mm_s : 0.0;
+  out.wait_reason = wait_reason_;
 }
 
 motion::AxisVector Channel::machine_position() const noexcept {
@@ -209,6 +220,8 @@ void Channel::execute(Cycle& cy) noexcept {
     run_motion(*m, cy);
   } else if (const Dwell* d = current_.as<Dwell>()) {
     bool over = false;
+    cause_ = CycleCause::wait;
+    wait_reason_ = WaitReason::dwell;
     if (!fail(dwell_.step(*d, cy, over), cy) && over) phase_ = Phase::post_wait;
   } else {
     phase_ = Phase::post_wait;
@@ -226,6 +239,8 @@ void Channel::run_motion(const Motion& m, Cycle& cy) noexcept {
   spindle_path_.limit_path(path_.profile(), cy.machine);
   hold_.follow(current_, cy.in, sync_.has_functions(), path_, cy.dt_s);
   const motion::ProfileSample st = path_.step(m, *commands_, cy);
+  cause_ = path_.cause();
+  if (cause_ == CycleCause::wait) wait_reason_ = WaitReason::coupling;
   measuring_.stepped(m);
   place(m, st.s_mm);
   spindle_path_.follow_path(st.s_mm, st.v_mm_s, cy.machine);
@@ -244,7 +259,10 @@ void Channel::place(const Motion& m, double s_mm) noexcept {
 
 bool Channel::waits_done(SyncPoint phase, Cycle& cy) noexcept {
   if (fail(sync_.update_waits(phase, cy), cy)) return false;
-  return !sync_.waiting(phase);
+  if (!sync_.waiting(phase)) return true;
+  cause_ = CycleCause::wait;
+  wait_reason_ = sync_.reason(phase);
+  return false;
 }
 
 // After the post waits: the block is done.

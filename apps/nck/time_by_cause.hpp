@@ -1,0 +1,86 @@
+#pragma once
+// Time by cause (issue 31): every cycle of every busy channel goes to
+// exactly one class — at feed, an axis's velocity (which axis), accelerating
+// or braking (which axis binds), a corner or transition, the override,
+// rapid, a wait (with its reason), a hold, starved preparation. The kernel
+// names the class per cycle (ChannelOutput::cause, a few comparisons in the
+// path unit); this ledger, outside the cycle, names the binding axis from
+// the set points and sums cycles per block (NC line), tool, file and cause.
+// Sums are whole cycles, so the classes add up to the channel's time exactly.
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "nck/config/machine.hpp"
+#include "nck/kernel/tick_io.hpp"
+
+namespace nck::app {
+
+struct RunNames;
+
+class TimeByCause {
+ public:
+  // The most time-losing blocks --final lists per channel.
+  static constexpr std::size_t kMaxBlocks = 2000;
+
+  // setup: the channels' axes (names and dynamics) and the cycle time.
+  void start(const config::Machine& m, double cycle_s);
+  // Once per cycle, after the kernel's tick. rt-ish: no allocation but
+  // when a line runs for the first time.
+  void take(const kernel::TickOutput& out, const RunNames& names);
+  // --final's "time_by_cause".
+  nlohmann::ordered_json json() const;
+  // The three causes with the most time, one line each, for stderr.
+  std::vector<std::string> top_lines(std::size_t count = 3) const;
+
+  // A class: the kernel's cause and its detail (axis index, wait reason,
+  // hold kind; -1: none).
+  struct Class {
+    kernel::CycleCause cause = kernel::CycleCause::none;
+    std::int16_t detail = -1;
+    bool operator==(const Class&) const = default;
+  };
+  // Cycles per class, a handful per block.
+  using Tally = std::vector<std::pair<Class, std::uint64_t>>;
+
+ private:
+  struct Block {
+    std::uint16_t file = 0;
+    std::uint32_t line = 0;
+    bool has_n = false;
+    std::int64_t n = 0;
+    std::uint64_t runs = 0;
+    double length_mm = 0, ideal_s = 0;  // travelled, and its length / feed
+    Tally tally;
+  };
+  struct Channel {
+    std::vector<std::string> axis_names;
+    std::vector<double> v_max, a_acc, a_dec;  // feed dynamics per axis
+    std::vector<double> last_mcs;
+    Block* block = nullptr;
+    std::string tool = "-";
+    std::uint16_t file = 0;
+    std::unordered_map<std::uint64_t, Block> blocks;  // by file << 32 | line
+    std::unordered_map<std::string, Tally> tools;
+    std::unordered_map<std::uint16_t, Tally> files;
+    std::vector<std::string> file_names;
+    Tally total;
+    std::uint64_t cycles = 0;
+  };
+  void take_event(const kernel::Event& e, const RunNames& names);
+  Class classify(Channel& ch, const kernel::ChannelOutput& o) const;
+  std::string class_name(const Channel& ch, Class c) const;
+  nlohmann::ordered_json tally_json(const Channel& ch, const Tally& t) const;
+  nlohmann::ordered_json channel_json(const Channel& ch) const;
+
+  std::vector<Channel> channels_;
+  double cycle_s_ = 0.001;
+};
+
+// "feed", "axis_velocity", ... as --final names the kernel's causes.
+const char* cause_name(kernel::CycleCause c);
+
+}  // namespace nck::app
