@@ -56,9 +56,27 @@ TEST(TimeByCause, FeedLimitedLine) {
   expect_dominant(run_program("feed", "G90 G0 X0 Y0 Z0\nG1 X200 F1200\nM30\n"), 2, "feed");
 }
 
+// The mill with X slowed to 6 m/min (the ramps at 2.5 m/s^2 then take 2 % of the block).
+std::string slow_x_mill() {
+  namespace fs = std::filesystem;
+  const auto dir = temp_dir("cause_slow_x");
+  fs::copy(mill(), dir / "m", fs::copy_options::recursive);
+  std::ifstream in(dir / "m" / "x.lis");
+  std::string text, line;
+  while (std::getline(in, line)) {
+    if (line.starts_with("getriebe[0].dynamik.vb_max")) line = "getriebe[0].dynamik.vb_max 100000";
+    if (line.starts_with("getriebe[0].vb_eilgang")) line = "getriebe[0].vb_eilgang 100000";
+    text += line + "\n";
+  }
+  in.close();
+  write(dir / "m" / "x.lis", text);
+  return (dir / "m").string();
+}
+
 TEST(TimeByCause, AxisVelocityLimitedLineNamesTheAxis) {
-  // 60 m/min asked, X can do 30 m/min: X binds (it moves ten times as far as Y)
-  expect_dominant(run_program("axis_v", "G90 G0 X0 Y0 Z0\nG1 X-900 Y-90 F60000\nM30\n"), 2, "axis_velocity X");
+  // 60 m/min asked, X can do 6 m/min, Y 30: X binds
+  expect_dominant(run_program("axis_v", "G90 G0 X0 Y0 Z0\nG1 X400 Y40 F60000\nM30\n", "", slow_x_mill()), 2,
+                  "axis_velocity X");
 }
 
 TEST(TimeByCause, ShortBlocksAreAccelerationLimitedNamingTheAxis) {
@@ -93,16 +111,16 @@ TEST(TimeByCause, SpindleSpeedWait) {
 }
 
 TEST(TimeByCause, Feedhold) {
-  expect_dominant(run_program("feedhold", "G90 G0 X0 Y0 Z0\nG1 X100 F600\nM30\n",
-                              "0.5 feedhold on\n5.5 feedhold off\n"),
+  expect_dominant(run_program("feedhold", "G90 G0 X0 Y0 Z0\nG1 X10 F600\nM30\n",
+                              "0.2 feedhold on\n30 feedhold off\n"),
                   2, "hold feedhold");
 }
 
 TEST(TimeByCause, Corner) {
-  // a zigzag of short blocks that turn by a few degrees: at high feed the
-  // path never reaches F between the corners
-  std::string p = "G90 G0 X0 Y0 Z0\nG1 F30000\n";
-  for (int i = 1; i <= 40; ++i) p += "X" + std::to_string(i * 2) + " Y" + (i % 2 ? "0.2" : "0") + "\n";
+  // a zigzag of 1 mm blocks that turn by half a degree: the corners allow
+  // about 48 mm/s, and between them the path never reaches F (100 mm/s)
+  std::string p = "G90 G0 X0 Y0 Z0\nG1 F6000\n";
+  for (int i = 1; i <= 40; ++i) p += "X" + std::to_string(i) + " Y" + (i % 2 ? "0.005" : "0") + "\n";
   p += "M30\n";
   expect_dominant(run_program("corner", p), 20, "corner");
 }
