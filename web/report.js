@@ -266,10 +266,10 @@
         cell(c.time_s.toFixed(3), c.time_s), cell((100 * c.share).toFixed(1) + " %", c.share)]), [0, 1, 1]);
       sortableTable(div.querySelector(".blocks"), ["line", "NC text", "runs", "time (s)", "length ÷ feed (s)", "lost (s)", "main cause"],
         ch.blocks.slice(0, 2000).map((b) => [
-          cell(esc(base(b.file)) + ":" + b.line, b.file + ":" + String(b.line).padStart(9, "0")),
+          cell(esc(base(D.files[b.fid])) + ":" + b.line, b.fid + ":" + String(b.line).padStart(9, "0")),
           cell('<span class="nc">' + esc(lineText(b.fid, b.line) || "line " + b.line + ", text not embedded") + "</span>"),
           cell(b.runs, b.runs), cell(b.time_s.toFixed(3), b.time_s), cell(b.ideal_s.toFixed(3), b.ideal_s),
-          cell(b.lost_s.toFixed(3), b.lost_s), cell(esc(b.causes.length ? b.causes[0].name : ""))]), [0, 0, 1, 1, 1, 1, 0]);
+          cell(b.lost_s.toFixed(3), b.lost_s), cell(esc(b.cause))]), [0, 0, 1, 1, 1, 1, 0]);
     }
   }
 

@@ -249,8 +249,9 @@ int finish_outputs(const sim::DryRun& run, const RunOptions& opt, const config::
   for (const std::string& f : failures) fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppOutputFile), f);
   for (const std::string& f : over.messages)
     fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppOutputPathConflict), f);
-  fmt::print(stderr, "{}\n", out.summary.text(end_of_run(run, stopped, out.summary), end_s));
+  // the top causes first: the summary stays the last line (scripts read it)
   for (const std::string& line : out.causes.top_lines()) fmt::print(stderr, "{}\n", line);
+  fmt::print(stderr, "{}\n", out.summary.text(end_of_run(run, stopped, out.summary), end_s));
   if ((!failures.empty() || over.any()) && code != 130 && code != 143) code = 2;
   return code;
 }

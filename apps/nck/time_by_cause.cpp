@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <fmt/format.h>
 #include <tuple>
 
@@ -60,6 +61,7 @@ const char* cause_name(CycleCause c) {
 
 void TimeByCause::start(const config::Machine& m, double cycle_s) {
   cycle_s_ = cycle_s;
+  cycle_us_ = std::llround(cycle_s * 1e6);
   channels_.resize(m.channels.size());
   for (std::size_t c = 0; c < m.channels.size(); ++c) {
     Channel& ch = channels_[c];
@@ -95,9 +97,23 @@ void TimeByCause::take_event(const kernel::Event& e, const RunNames& names) {
   }
   ++b.runs;
   ch.block = &b;
+  if (added && ch.blocks.size() > kMaxLines) drop_least_lost(ch);
   ch.file = e.file_id;
   if (ch.file_names.size() <= e.file_id) ch.file_names.resize(e.file_id + 1u);
   if (ch.file_names[e.file_id].empty()) ch.file_names[e.file_id] = names.file(e.channel - 1u, e.file_id);
+}
+
+double TimeByCause::lost_s(const Block& b) const { return seconds(cycles_of(b.tally)) - b.ideal_s; }
+
+void TimeByCause::drop_least_lost(Channel& ch) {
+  std::vector<double> lost;
+  lost.reserve(ch.blocks.size());
+  for (const auto& [key, b] : ch.blocks) lost.push_back(lost_s(b));
+  const auto keep = static_cast<std::ptrdiff_t>(kMaxLines / 2);
+  std::nth_element(lost.begin(), lost.begin() + keep, lost.end(), std::greater<>());
+  const double threshold = lost[static_cast<std::size_t>(keep)];
+  for (auto it = ch.blocks.begin(); it != ch.blocks.end();)
+    it = lost_s(it->second) <= threshold && &it->second != ch.block ? ch.blocks.erase(it) : std::next(it);
 }
 
 // The kernel's cause, with the axis that binds read from the set points:
@@ -170,7 +186,7 @@ ordered_json TimeByCause::tally_json(const Channel& ch, const Tally& t) const {
     else if (k.cause == CycleCause::hold) r["reason"] = k.detail == kFeedhold ? "feedhold" : "program";
     else if (k.detail >= 0 && d < ch.axis_names.size()) r["axis"] = ch.axis_names[d];
     r["name"] = class_name(ch, k);
-    r["time_s"] = static_cast<double>(n) * cycle_s_;
+    r["time_s"] = seconds(n);
     r["share"] = static_cast<double>(n) / total;
     rows.push_back(std::move(r));
   }
@@ -180,18 +196,18 @@ ordered_json TimeByCause::tally_json(const Channel& ch, const Tally& t) const {
 ordered_json TimeByCause::channel_json(const Channel& ch) const {
   ordered_json tools = ordered_json::array();
   for (const auto& [tool, t] : ch.tools)
-    tools.push_back({{"tool", tool}, {"time_s", cycles_of(t) * cycle_s_}, {"causes", tally_json(ch, t)}});
+    tools.push_back({{"tool", tool}, {"time_s", seconds(cycles_of(t))}, {"causes", tally_json(ch, t)}});
   ordered_json files = ordered_json::array();
   for (const auto& [id, t] : ch.files) {
     const std::string name = id < ch.file_names.size() ? ch.file_names[id] : std::string();
     files.push_back({{"file", name}, {"main", id == 0},
-                     {"time_s", cycles_of(t) * cycle_s_}, {"causes", tally_json(ch, t)}});
+                     {"time_s", seconds(cycles_of(t))}, {"causes", tally_json(ch, t)}});
   }
   // The blocks where the most time is lost against length / feed.
   std::vector<const Block*> blocks;
   blocks.reserve(ch.blocks.size());
   for (const auto& [key, b] : ch.blocks) blocks.push_back(&b);
-  const auto lost = [&](const Block* b) { return cycles_of(b->tally) * cycle_s_ - b->ideal_s; };
+  const auto lost = [&](const Block* b) { return lost_s(*b); };
   const std::size_t keep = std::min(blocks.size(), kMaxBlocks);
   std::partial_sort(blocks.begin(), blocks.begin() + static_cast<std::ptrdiff_t>(keep), blocks.end(),
                     [&](const Block* a, const Block* b) {
@@ -206,13 +222,13 @@ ordered_json TimeByCause::channel_json(const Channel& ch) const {
                     {"line", b.line},
                     {"n", b.has_n ? ordered_json(b.n) : ordered_json(nullptr)},
                     {"runs", b.runs},
-                    {"time_s", cycles_of(b.tally) * cycle_s_},
+                    {"time_s", seconds(cycles_of(b.tally))},
                     {"length_mm", b.length_mm},
                     {"ideal_s", b.ideal_s},
                     {"lost_s", lost(&b)},
                     {"causes", tally_json(ch, b.tally)}});
   }
-  return {{"time_s", ch.cycles * cycle_s_},
+  return {{"time_s", seconds(ch.cycles)},
           {"causes", tally_json(ch, ch.total)},
           {"tools", tools},
           {"subroutines", files},
@@ -246,7 +262,7 @@ std::vector<std::string> TimeByCause::top_lines(std::size_t count) const {
     const double share = 100.0 * static_cast<double>(rows[i].cycles) / static_cast<double>(std::max<std::uint64_t>(ch.cycles, 1));
     lines.push_back(fmt::format("nck: time by cause {}: {}{} {:.3f} s ({:.1f} %)", i + 1,
                                 several ? fmt::format("channel {} ", rows[i].ch + 1) : std::string(),
-                                class_name(ch, rows[i].k), static_cast<double>(rows[i].cycles) * cycle_s_, share));
+                                class_name(ch, rows[i].k), seconds(rows[i].cycles), share));
   }
   return lines;
 }

@@ -25,6 +25,10 @@ class TimeByCause {
  public:
   // The most time-losing blocks --final lists per channel.
   static constexpr std::size_t kMaxBlocks = 2000;
+  // Lines kept per channel: beyond, the half that lost the least time is
+  // dropped (memory stays bounded for any program; a dropped line that
+  // runs again starts anew). The sums per cause, tool and file stay exact.
+  static constexpr std::size_t kMaxLines = 20000;
 
   // setup: the channels' axes (names and dynamics) and the cycle time.
   void start(const config::Machine& m, double cycle_s);
@@ -71,13 +75,19 @@ class TimeByCause {
     std::uint64_t cycles = 0;
   };
   void take_event(const kernel::Event& e, const RunNames& names);
+  double lost_s(const Block& b) const;
+  void drop_least_lost(Channel& ch);
   Class classify(Channel& ch, const kernel::ChannelOutput& o) const;
   std::string class_name(const Channel& ch, Class c) const;
   nlohmann::ordered_json tally_json(const Channel& ch, const Tally& t) const;
   nlohmann::ordered_json channel_json(const Channel& ch) const;
 
+  // n cycles in seconds, from the whole-µs cycle time (0.018, not 0.018000000000000002)
+  double seconds(std::uint64_t n) const { return static_cast<double>(n) * static_cast<double>(cycle_us_) / 1e6; }
+
   std::vector<Channel> channels_;
   double cycle_s_ = 0.001;
+  std::int64_t cycle_us_ = 1000;
 };
 
 // "feed", "axis_velocity", ... as --final names the kernel's causes.
