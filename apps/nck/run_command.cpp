@@ -237,6 +237,7 @@ int finish_outputs(const sim::DryRun& run, const RunOptions& opt, const config::
   else if (auto e = out.events.commit()) failures.push_back(*e);
   if (over.trace) out.trace.discard();
   else if (auto e = out.trace.commit()) failures.push_back(*e);
+  out.causes.finish();
   const bool want_causes = !opt.final_state.empty() || !opt.report.empty();
   const nlohmann::ordered_json causes = want_causes ? out.causes.json() : nlohmann::ordered_json::object();
   out.report.set_causes(causes);

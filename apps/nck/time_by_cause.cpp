@@ -18,13 +18,17 @@ using kernel::CycleCause;
 // Hold kinds in Class::detail.
 constexpr std::int16_t kProgramHold = 0, kFeedhold = 1;
 
+// Runs of cycles share their class: the hit moves to the front, so the
+// next cycle's usually is the first compared.
 void add(TimeByCause::Tally& t, TimeByCause::Class c, std::uint64_t cycles = 1) {
-  for (auto& [k, n] : t)
-    if (k == c) {
-      n += cycles;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t[i].first == c) {
+      t[i].second += cycles;
+      if (i > 0) std::swap(t[i], t[0]);
       return;
     }
   t.emplace_back(c, cycles);
+  std::swap(t.back(), t.front());
 }
 
 std::uint64_t cycles_of(const TimeByCause::Tally& t) {
@@ -75,6 +79,7 @@ void TimeByCause::start(const config::Machine& m, double cycle_s) {
       ch.a_dec.push_back(d.a_dec_mm_s2);
     }
     ch.last_mcs.assign(n, 0.0);
+    ch.c_axis = m.channels[c].c_axis;
   }
 }
 
@@ -82,10 +87,13 @@ void TimeByCause::take_event(const kernel::Event& e, const RunNames& names) {
   if (e.channel == 0 || e.channel > channels_.size()) return;
   Channel& ch = channels_[e.channel - 1u];
   if (e.kind == kernel::EventKind::plc_out && e.fn == plc::TechKind::t) {
+    flush(ch);
     ch.tool = fmt::format("T{}", e.fn_number);
+    ch.tool_tally = &ch.tools[ch.tool];
     return;
   }
   if (e.kind != kernel::EventKind::block) return;
+  flush(ch);
   const std::uint64_t key = static_cast<std::uint64_t>(e.file_id) << 32 | e.line;
   auto [it, added] = ch.blocks.try_emplace(key);
   Block& b = it->second;
@@ -99,8 +107,24 @@ void TimeByCause::take_event(const kernel::Event& e, const RunNames& names) {
   ch.block = &b;
   if (added && ch.blocks.size() > kMaxLines) drop_least_lost(ch);
   ch.file = e.file_id;
+  ch.file_tally = &ch.files[ch.file];
   if (ch.file_names.size() <= e.file_id) ch.file_names.resize(e.file_id + 1u);
   if (ch.file_names[e.file_id].empty()) ch.file_names[e.file_id] = names.file(e.channel - 1u, e.file_id);
+}
+
+void TimeByCause::flush(Channel& ch) {
+  if (ch.run_cycles == 0) return;
+  if (!ch.tool_tally) ch.tool_tally = &ch.tools[ch.tool];
+  if (!ch.file_tally) ch.file_tally = &ch.files[ch.file];
+  add(ch.total, ch.run, ch.run_cycles);
+  add(*ch.tool_tally, ch.run, ch.run_cycles);
+  add(*ch.file_tally, ch.run, ch.run_cycles);
+  if (ch.block) add(ch.block->tally, ch.run, ch.run_cycles);
+  ch.run_cycles = 0;
+}
+
+void TimeByCause::finish() {
+  for (Channel& ch : channels_) flush(ch);
 }
 
 double TimeByCause::lost_s(const Block& b) const { return seconds(cycles_of(b.tally)) - b.ideal_s; }
@@ -132,13 +156,17 @@ TimeByCause::Class TimeByCause::classify(Channel& ch, const kernel::ChannelOutpu
     default: break;
   }
   if (o.cause == CycleCause::braking) c.cause = CycleCause::accelerating;  // one class, the axis decides
-  if (limit) {
+  if (!limit) return c;
+  // The C axis only where no other axis moved (it turns with the spindle outside #CAX).
+  for (const bool with_c : {false, true}) {
     double best = 0;
     for (std::size_t j = 0; j < ch.last_mcs.size(); ++j) {
+      if (!with_c && static_cast<int>(j) == ch.c_axis) continue;
       const double l = (*limit)[j];
       const double share = std::abs(o.axis_mcs[j] - ch.last_mcs[j]) / (l > 0 ? l : 1.0);
       if (share > best) best = share, c.detail = static_cast<std::int16_t>(j);
     }
+    if (c.detail >= 0) break;
   }
   return c;
 }
@@ -151,15 +179,14 @@ void TimeByCause::take(const kernel::TickOutput& out, const RunNames& names) {
     if (o.cause != CycleCause::none) {
       const Class k = classify(ch, o);
       ++ch.cycles;
-      add(ch.total, k);
+      if (ch.run_cycles && !(k == ch.run)) flush(ch);
+      ch.run = k;
+      ++ch.run_cycles;
       if (ch.block) {
-        add(ch.block->tally, k);
         const double moved_mm = o.path_velocity_mm_s * cycle_s_;
         ch.block->length_mm += moved_mm;
         if (o.feed_mm_s > 0) ch.block->ideal_s += moved_mm / o.feed_mm_s;
       }
-      add(ch.tools[ch.tool], k);
-      add(ch.files[ch.file], k);
     }
     for (std::size_t j = 0; j < ch.last_mcs.size(); ++j) ch.last_mcs[j] = o.axis_mcs[j];
   }

@@ -35,6 +35,8 @@ class TimeByCause {
   // Once per cycle, after the kernel's tick. rt-ish: no allocation but
   // when a line runs for the first time.
   void take(const kernel::TickOutput& out, const RunNames& names);
+  // After the last cycle, before json() and top_lines().
+  void finish();
   // --final's "time_by_cause".
   nlohmann::ordered_json json() const;
   // The three causes with the most time, one line each, for stderr.
@@ -64,17 +66,25 @@ class TimeByCause {
     std::vector<std::string> axis_names;
     std::vector<double> v_max, a_acc, a_dec;  // feed dynamics per axis
     std::vector<double> last_mcs;
+    int c_axis = -1;  // the spindle's C axis: it shows the turning spindle outside #CAX
     Block* block = nullptr;
     std::string tool = "-";
     std::uint16_t file = 0;
     std::unordered_map<std::uint64_t, Block> blocks;  // by file << 32 | line
     std::unordered_map<std::string, Tally> tools;
     std::unordered_map<std::uint16_t, Tally> files;
+    Tally* tool_tally = nullptr;  // tools[tool], files[file]: where cycles count now
+    Tally* file_tally = nullptr;
     std::vector<std::string> file_names;
     Tally total;
     std::uint64_t cycles = 0;
+    // Cycles of one class in a row, not yet added to the tallies (a run
+    // ends when the class, block, tool or file changes).
+    Class run{};
+    std::uint64_t run_cycles = 0;
   };
   void take_event(const kernel::Event& e, const RunNames& names);
+  static void flush(Channel& ch);
   double lost_s(const Block& b) const;
   void drop_least_lost(Channel& ch);
   Class classify(Channel& ch, const kernel::ChannelOutput& o) const;

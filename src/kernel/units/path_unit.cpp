@@ -107,7 +107,7 @@ CycleCause PathUnit::classify(const Motion& m, const motion::ProfileSample& st, 
   if (!rising) ramp_ = CycleCause::none;
   if (cy.in.feedhold) return CycleCause::feedhold;
   if (reserve_ && st.braking) return CycleCause::starved;
-  if (!cy.block.feed_motion) return CycleCause::rapid;
+  if (!cy.block.feed_motion && !m.measure) return CycleCause::rapid;  // G0 (a G100 run moves at F)
   const double limit = profile_.velocity_limit();
   const double cmd = limit >= 0 ? std::min(m.v_cmd_mm_s, limit) : m.v_cmd_mm_s;
   const double v_max = profile_.limits().v_max_mm_s;

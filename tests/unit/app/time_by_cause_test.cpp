@@ -12,20 +12,20 @@ namespace {
 
 using nlohmann::json;
 
-struct Run {
+struct CauseRun {
   int exit_code = -1;
   json final;
   std::string output;
 };
 
-Run run_program(const std::string& name, const std::string& program, const std::string& plc = {},
+CauseRun run_program(const std::string& name, const std::string& program, const std::string& plc = {},
                 const std::string& machine = mill()) {
   const auto dir = temp_dir("cause_" + name);
   const auto prog = write(dir / "prog.nc", program);
   std::string args = "run " + machine + " " + prog.string() + " --final " + (dir / "final.json").string();
   if (!plc.empty()) args += " --plc " + write(dir / "s.plc", plc).string();
   const CliResult r = run_nck(args);
-  Run out{r.exit_code, json::object(), r.output};
+  CauseRun out{r.exit_code, json::object(), r.output};
   std::ifstream f(dir / "final.json");
   if (f) out.final = json::parse(f, nullptr, false);
   return out;
@@ -45,7 +45,7 @@ std::pair<std::string, double> dominant(const json& block) {
   return {c["name"].get<std::string>(), c["share"].get<double>()};
 }
 
-void expect_dominant(const Run& r, std::uint32_t line, const std::string& name) {
+void expect_dominant(const CauseRun& r, std::uint32_t line, const std::string& name) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto [got, share] = dominant(block_of(r.final, line));
   EXPECT_EQ(got, name) << "line " << line << "\n" << block_of(r.final, line).dump(1);
@@ -194,6 +194,27 @@ TEST(TimeByCause, ContourNamesAtLeastFourCauses) {
   const std::string html((std::istreambuf_iterator<char>(h)), std::istreambuf_iterator<char>());
   EXPECT_NE(html.find("Time by cause"), std::string::npos);
   EXPECT_NE(html.find("\"causes\":{\"cycle_s\""), std::string::npos);
+}
+
+// docs/outputs.md names every field of time_by_cause the binary writes.
+void collect_keys(const json& j, std::set<std::string>& keys) {
+  if (j.is_object())
+    for (const auto& [k, v] : j.items()) {
+      keys.insert(k);
+      collect_keys(v, keys);
+    }
+  if (j.is_array())
+    for (const json& v : j) collect_keys(v, keys);
+}
+
+TEST(TimeByCause, OutputsDocDescribesEveryField) {
+  const CauseRun r = run_program("doc", "G90 G0 X0 Y0 Z0\nT1 D1\nM3 S1000\nG1 X20 F1200\nG4 X0.1\nM30\n");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::set<std::string> keys;
+  collect_keys(r.final["time_by_cause"], keys);
+  const std::string doc = read_file(root() + "/docs/outputs.md");
+  for (const std::string& k : keys)
+    EXPECT_NE(doc.find("\"" + k + "\""), std::string::npos) << k << " is not in docs/outputs.md";
 }
 
 }  // namespace
