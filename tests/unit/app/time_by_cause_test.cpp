@@ -101,7 +101,7 @@ TEST(TimeByCause, Dwell) {
 }
 
 TEST(TimeByCause, PlcAcknowledgeWait) {
-  // M10 (clamp): PLC_INFO MVS_SNS, acknowledged after 10 ms; M6 takes 1.5 s
+  // M6 (tool change, MVS_SVS): the PLC acknowledges it after 1.5 s (sim.lis)
   expect_dominant(run_program("plc_ack", "G90 G0 X0 Y0 Z0\nM6\nM30\n"), 2, "wait plc_ack");
 }
 
