@@ -258,18 +258,26 @@
       div.innerHTML = "<h3>Channel " + ch.ch + ": " + ch.time_s.toFixed(3) + " s</h3>" +
         '<div class="cause-bar">' + ch.causes.map((c) => '<span style="width:' + (100 * c.share).toFixed(3) + "%;background:" +
           colour[c.name] + '" title="' + esc(c.name + " " + c.time_s.toFixed(3) + " s") + '"></span>').join("") + "</div>" +
-        '<div class="cause-table"></div><h3>The blocks where the most time is lost against length ÷ feed (' +
+        '<div class="tables"><div class="cause-table"></div><div><h3>Per tool</h3><div class="cause-tools"></div></div>' +
+        '<div><h3>Per subroutine / cycle file</h3><div class="cause-files"></div></div></div>' +
+        '<h3>The blocks where the most time is lost against length ÷ feed (' +
         Math.min(ch.blocks.length, 2000) + ")</h3>" + '<div class="blocks"></div>';
       parent.appendChild(div);
       sortableTable(div.querySelector(".cause-table"), ["cause", "time (s)", "share"], ch.causes.map((c) => [
         cell('<span class="cause-key" style="background:' + colour[c.name] + '"></span>' + esc(c.name), c.name),
         cell(c.time_s.toFixed(3), c.time_s), cell((100 * c.share).toFixed(1) + " %", c.share)]), [0, 1, 1]);
+      // per tool and per file: the time and its largest cause
+      const top = (list) => list.length ? list[0].name + " " + (100 * list[0].share).toFixed(1) + " %" : "";
+      sortableTable(div.querySelector(".cause-tools"), ["tool", "time (s)", "largest cause"], ch.tools.map((t) => [
+        cell(esc(t.tool === "-" ? "(none)" : t.tool)), cell(t.time_s.toFixed(3), t.time_s), cell(esc(top(t.causes)))]), [0, 1, 0]);
+      sortableTable(div.querySelector(".cause-files"), ["file", "time (s)", "largest cause"], ch.subroutines.map((f) => [
+        cell(esc(base(f.file)) + (f.main ? " (main)" : "")), cell(f.time_s.toFixed(3), f.time_s), cell(esc(top(f.causes)))]), [0, 1, 0]);
       sortableTable(div.querySelector(".blocks"), ["line", "NC text", "runs", "time (s)", "length ÷ feed (s)", "lost (s)", "main cause"],
         ch.blocks.slice(0, 2000).map((b) => [
           cell(esc(base(D.files[b.fid])) + ":" + b.line, b.fid + ":" + String(b.line).padStart(9, "0")),
           cell('<span class="nc">' + esc(lineText(b.fid, b.line) || "line " + b.line + ", text not embedded") + "</span>"),
           cell(b.runs, b.runs), cell(b.time_s.toFixed(3), b.time_s), cell(b.ideal_s.toFixed(3), b.ideal_s),
-          cell(b.lost_s.toFixed(3), b.lost_s), cell(esc(b.cause))]), [0, 0, 1, 1, 1, 1, 0]);
+          cell((Math.abs(b.lost_s) < 5e-4 ? 0 : b.lost_s).toFixed(3), b.lost_s), cell(esc(b.cause))]), [0, 0, 1, 1, 1, 1, 0]);
     }
   }
 
