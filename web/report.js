@@ -11,7 +11,7 @@
   const REASONS = {
     plc_ack: "the PLC's acknowledgement", speed_reached: "speed reached", in_position: "in position",
     standstill: "standstill", homing: "homing", gear_change: "gear change", expl_syn: "explicit synchronisation",
-    dwell: "dwell", feedhold: "feed hold",
+    dwell: "dwell", feedhold: "feed hold", coupling: "a spindle coupling",
   };
 
   function hms(s) {
@@ -224,6 +224,63 @@
       table(["ch", "line", "NC text", "runs", "time (s)", "share"], blocks, [0, 0, 0, 1, 1, 1]) + "</div>";
   }
 
+  // --- time by cause: a stacked bar, the causes, the blocks losing most ---
+  // A table whose column heads sort it (numbers descending first).
+  function sortableTable(el, headers, rows, numeric) {
+    let col = -1, desc = true;
+    const render = () => {
+      const sorted = col < 0 ? rows : rows.slice().sort((a, b) => {
+        const x = a[col].sort, y = b[col].sort;
+        return (x < y ? -1 : x > y ? 1 : 0) * (desc ? -1 : 1);
+      });
+      el.innerHTML = table(headers, sorted.map((r) => r.map((c) => c.html)), numeric);
+      el.querySelectorAll("th").forEach((th, i) => {
+        th.classList.add("sortable");
+        th.addEventListener("click", () => { desc = col === i ? !desc : true; col = i; render(); });
+      });
+    };
+    render();
+  }
+  const cell = (html, sort) => ({ html: String(html), sort: sort === undefined ? String(html) : sort });
+
+  function causes() {
+    const C = D.causes;
+    if (!C || !C.channels) { $("causes-section").hidden = true; return; }
+    const parent = $("causes");
+    const colour = {};
+    C.channels.forEach((ch) => ch.causes.forEach((c) => {
+      if (!(c.name in colour)) colour[c.name] = COLOURS[Object.keys(colour).length % COLOURS.length];
+    }));
+    for (const ch of C.channels) {
+      if (!ch.time_s) continue;
+      const div = document.createElement("div");
+      div.className = "cause-channel";
+      div.innerHTML = "<h3>Channel " + ch.ch + ": " + ch.time_s.toFixed(3) + " s</h3>" +
+        '<div class="cause-bar">' + ch.causes.map((c) => '<span style="width:' + (100 * c.share).toFixed(3) + "%;background:" +
+          colour[c.name] + '" title="' + esc(c.name + " " + c.time_s.toFixed(3) + " s") + '"></span>').join("") + "</div>" +
+        '<div class="tables"><div class="cause-table"></div><div><h3>Per tool</h3><div class="cause-tools"></div></div>' +
+        '<div><h3>Per subroutine / cycle file</h3><div class="cause-files"></div></div></div>' +
+        '<h3>The blocks where the most time is lost against length ÷ feed (' +
+        Math.min(ch.blocks.length, 2000) + ")</h3>" + '<div class="blocks"></div>';
+      parent.appendChild(div);
+      sortableTable(div.querySelector(".cause-table"), ["cause", "time (s)", "share"], ch.causes.map((c) => [
+        cell('<span class="cause-key" style="background:' + colour[c.name] + '"></span>' + esc(c.name), c.name),
+        cell(c.time_s.toFixed(3), c.time_s), cell((100 * c.share).toFixed(1) + " %", c.share)]), [0, 1, 1]);
+      // per tool and per file: the time and its largest cause
+      const top = (list) => list.length ? list[0].name + " " + (100 * list[0].share).toFixed(1) + " %" : "";
+      sortableTable(div.querySelector(".cause-tools"), ["tool", "time (s)", "largest cause"], ch.tools.map((t) => [
+        cell(esc(t.tool === "-" ? "(none)" : t.tool)), cell(t.time_s.toFixed(3), t.time_s), cell(esc(top(t.causes)))]), [0, 1, 0]);
+      sortableTable(div.querySelector(".cause-files"), ["file", "time (s)", "largest cause"], ch.subroutines.map((f) => [
+        cell(esc(base(f.file)) + (f.main ? " (main)" : "")), cell(f.time_s.toFixed(3), f.time_s), cell(esc(top(f.causes)))]), [0, 1, 0]);
+      sortableTable(div.querySelector(".blocks"), ["line", "NC text", "runs", "time (s)", "length ÷ feed (s)", "lost (s)", "main cause"],
+        ch.blocks.slice(0, 2000).map((b) => [
+          cell(esc(base(D.files[b.fid])) + ":" + b.line, b.fid + ":" + String(b.line).padStart(9, "0")),
+          cell('<span class="nc">' + esc(lineText(b.fid, b.line) || "line " + b.line + ", text not embedded") + "</span>"),
+          cell(b.runs, b.runs), cell(b.time_s.toFixed(3), b.time_s), cell(b.ideal_s.toFixed(3), b.ideal_s),
+          cell((Math.abs(b.lost_s) < 5e-4 ? 0 : b.lost_s).toFixed(3), b.lost_s), cell(esc(b.cause))]), [0, 0, 1, 1, 1, 1, 0]);
+    }
+  }
+
   // --- the filterable event table ----------------------------------------
   // A field as a reader wants it: numbers to 4 decimals at most, a link's
   // pairs as "slave <- master", other objects as "key value" lists.
@@ -277,6 +334,7 @@
   const bps = backplots();
   timeplots();
   cycletime();
+  causes();
   events();
   // For the browser test and for scripting: what was drawn.
   window.nckReport = { data: D, plots, backplots: bps, waitText, loadMs: performance.now() - t0, ready: true };

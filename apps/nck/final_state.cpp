@@ -56,7 +56,8 @@ json tool_json(const config::Machine& m, std::size_t channel, std::int64_t d) {
 
 std::optional<std::string> write_final(const std::string& path, const config::Machine& m,
                                        const sim::DryRun& run, double time_s, const std::string& end_reason,
-                                       const std::vector<FinalError>& errors) {
+                                       const std::vector<FinalError>& errors,
+                                       const nlohmann::ordered_json& time_by_cause) {
   const kernel::Kernel& k = run.kernel();
   OutputFile f;
   if (auto err = f.open(path)) return err;
@@ -157,6 +158,8 @@ std::optional<std::string> write_final(const std::string& path, const config::Ma
            {"links", links},
            {"hli", hli},
            {"errors", errs}};
+  // nck 0.3: where the time went (docs/outputs.md), kept in its own order
+  doc["time_by_cause"] = json::parse(time_by_cause.dump(-1, ' ', false, json::error_handler_t::replace));
   f.write(dump_json(doc, 2));
   f.write("\n");
   return f.commit();

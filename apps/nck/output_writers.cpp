@@ -96,6 +96,7 @@ const char* wait_reason_name(kernel::WaitReason r) {
     case W::expl_syn: return "expl_syn";
     case W::dwell: return "dwell";
     case W::feedhold: return "feedhold";
+    case W::coupling: return "coupling";
   }
   return "plc_ack";
 }

@@ -85,6 +85,7 @@ struct FinalError {
 // The error text when it cannot be written.
 std::optional<std::string> write_final(const std::string& path, const config::Machine& m,
                                        const sim::DryRun& run, double time_s, const std::string& end_reason,
-                                       const std::vector<FinalError>& errors);
+                                       const std::vector<FinalError>& errors,
+                                       const nlohmann::ordered_json& time_by_cause);
 
 }  // namespace nck::app

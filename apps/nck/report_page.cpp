@@ -200,6 +200,8 @@ std::string ReportWriter::data_json(double end_s, int exit_code) const {
   s += ",\"events\":" + array_of(events_, [](std::string& o, const std::string& l) { o += l; });
   s += fmt::format(",\"events_dropped\":{}", events_dropped_);
   s += ",\"summary\":" + summary_json(lines_used);
+  s += ",\"causes\":" + causes_json_;
+  lines_used.insert(lines_used.end(), cause_lines_.begin(), cause_lines_.end());
   // the NC text of every line a hover or table shows
   for (const std::string& d : diagnostics_) {
     const json j = json::parse(d, nullptr, false);

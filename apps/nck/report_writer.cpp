@@ -250,6 +250,22 @@ void ReportWriter::drop_shortest_blocks() {
     it = it->second.time_s <= threshold && !in_use(&it->second) ? blocks_.erase(it) : std::next(it);
 }
 
+void ReportWriter::set_causes(const nlohmann::ordered_json& causes) {
+  if (!enabled_ || !causes.contains("channels")) return;
+  nlohmann::ordered_json page = causes;
+  // The page keeps per block what its table shows (up to 2,000 rows stay small).
+  for (auto& ch : page["channels"])
+    for (auto& b : ch["blocks"]) {
+      const std::uint16_t fid = file_index(b["file"].get<std::string>());
+      cause_lines_.emplace_back(fid, b["line"].get<std::uint32_t>());
+      const std::string main = b["causes"].empty() ? std::string() : b["causes"][0]["name"].get<std::string>();
+      b = nlohmann::ordered_json{{"fid", fid},         {"line", b["line"]},       {"runs", b["runs"]},
+                                 {"time_s", b["time_s"]}, {"ideal_s", b["ideal_s"]}, {"lost_s", b["lost_s"]},
+                                 {"cause", main}};
+    }
+  causes_json_ = dump_json(page);
+}
+
 void ReportWriter::add_mark(Mark m) {
   if (marks_.size() < kMaxListed) marks_.push_back(std::move(m));
 }

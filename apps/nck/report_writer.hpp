@@ -13,6 +13,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "nck/config/machine.hpp"
 #include "nck/kernel/kernel.hpp"
 #include "nck/kernel/tick_io.hpp"
@@ -43,6 +45,9 @@ class ReportWriter {
   // The error text when it cannot be written.
   std::optional<std::string> write(const std::string& path, double end_s, int exit_code) const;
   bool enabled() const { return enabled_; }
+  // Time by cause (time_by_cause.hpp's JSON), shown as a stacked bar and
+  // tables; each block row gets the page's file index ("fid") of its line.
+  void set_causes(const nlohmann::ordered_json& causes);
 
   static constexpr std::size_t kMaxTableEvents = 20000;  // non-block events in the table
   static constexpr std::size_t kMaxTableBlocks = 2000;   // block events in the table
@@ -146,6 +151,8 @@ class ReportWriter {
   std::string end_reason_;
   bool c_axis_used_ = false;  // a spindle was in C-axis mode (#CAX)
   std::vector<LinkPeriod> links_;
+  std::string causes_json_ = "null";
+  std::vector<std::pair<std::uint16_t, std::uint32_t>> cause_lines_;  // the lines its block rows show
 };
 
 }  // namespace nck::app

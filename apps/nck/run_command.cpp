@@ -143,6 +143,7 @@ std::optional<kernel::EndReason> run_loop(sim::DryRun& run, const RunOptions& op
     const double t_s = run.time_s();
     run.prepare();
     run.cycle(*o);
+    out.causes.take(*o, names);
     record_events(*o, names, out, progress);
     report_dropped_events(*o, names, out, progress);
     report_refusals(run, *o, names, out, progress);
@@ -237,14 +238,21 @@ int finish_outputs(const sim::DryRun& run, const RunOptions& opt, const config::
   else if (auto e = out.events.commit()) failures.push_back(*e);
   if (over.trace) out.trace.discard();
   else if (auto e = out.trace.commit()) failures.push_back(*e);
+  out.causes.finish();
+  const bool want_causes = !opt.final_state.empty() || !opt.report.empty();
+  const nlohmann::ordered_json causes = want_causes ? out.causes.json() : nlohmann::ordered_json::object();
+  out.report.set_causes(causes);
   if (!over.report)
     if (auto e = out.report.write(opt.report, end_s, code)) failures.push_back(*e);
   if (!opt.final_state.empty() && !over.final_state)
-    if (auto e = write_final(opt.final_state, m, run, end_s, end_of_run(run, stopped, out.summary), out.errors))
+    if (auto e = write_final(opt.final_state, m, run, end_s, end_of_run(run, stopped, out.summary), out.errors,
+                                 causes))
       failures.push_back(*e);
   for (const std::string& f : failures) fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppOutputFile), f);
   for (const std::string& f : over.messages)
     fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppOutputPathConflict), f);
+  // the top causes first: the summary stays the last line (scripts read it)
+  for (const std::string& line : out.causes.top_lines()) fmt::print(stderr, "{}\n", line);
   fmt::print(stderr, "{}\n", out.summary.text(end_of_run(run, stopped, out.summary), end_s));
   if ((!failures.empty() || over.any()) && code != 130 && code != 143) code = 2;
   return code;
@@ -316,6 +324,7 @@ int run_simulation(const RunOptions& opt) {
     return 2;
   }
   out.report.start(m, opt, run);
+  out.causes.start(m, run.kernel().cycle_time_s());
   RunNames names;
   names.run = &run;
 

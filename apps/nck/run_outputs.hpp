@@ -8,6 +8,7 @@
 #include "report_writer.hpp"
 #include "run_summary.hpp"
 #include "run_command.hpp"
+#include "time_by_cause.hpp"
 
 namespace nck::app {
 
@@ -17,6 +18,7 @@ struct RunOutputs {
   ReportWriter report;
   std::vector<FinalError> errors;
   RunSummary summary;
+  TimeByCause causes;  // every cycle's class, summed (--final, the report, stderr)
 
   // Events are rendered only when a file wants them.
   bool wants_events() const { return events.is_open() || report.enabled(); }

@@ -30,6 +30,7 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
     cy.sink.emit(e);
   }
   if (done()) take_mdi();
+  cause_ = done() ? CycleCause::none : CycleCause::transition;
   if (!done()) follow_stop(cy);
   if (!done()) {
     if (in.reset) {
@@ -57,11 +58,20 @@ void Channel::run_blocks(Cycle& cy) noexcept {
   for (;;) {
     if (!active_) {
       if (state_ == ProgramState::hold) {
-        if (manual_blocks_program(cy.in) || !hold_.released(cy.in)) break;
+        if (manual_blocks_program(cy.in) || !hold_.released(cy.in)) {
+          cause_ = CycleCause::hold;
+          break;
+        }
         set_state(ProgramState::running, StateReason::cycle_start, cy);
       }
-      if (commands_->empty()) break;
-      if (state_ == ProgramState::idle && manual_blocks_program(cy.in)) break;
+      if (commands_->empty()) {
+        cause_ = CycleCause::starved;  // preparation has not queued the next block
+        break;
+      }
+      if (state_ == ProgramState::idle && manual_blocks_program(cy.in)) {
+        cause_ = CycleCause::hold;  // manual mode keeps the program from starting
+        break;
+      }
       start(cy);
       commands_->pop();
       if (done()) break;
@@ -80,6 +90,10 @@ void Channel::write_output(ChannelOutput& out) const noexcept {
   out.path_velocity_mm_s = path_.velocity_mm_s();
   out.status = status_;
   out.program_state = state_;
+  out.cause = cause_;
+  const Motion* m = active_ ? current_.as<Motion>() : nullptr;
+  out.feed_mm_s = m ? m->v_cmd_mm_s : 0.0;
+  out.wait_reason = wait_reason_;
 }
 
 motion::AxisVector Channel::machine_position() const noexcept {
@@ -262,6 +276,8 @@ void Channel::execute(Cycle& cy) noexcept {
     run_motion(*m, cy);
   } else if (const Dwell* d = current_.as<Dwell>()) {
     bool over = false;
+    cause_ = CycleCause::wait;
+    wait_reason_ = WaitReason::dwell;
     if (!fail(dwell_.step(*d, cy, over), cy) && over) phase_ = Phase::post_wait;
   } else {
     phase_ = Phase::post_wait;
@@ -279,6 +295,8 @@ void Channel::run_motion(const Motion& m, Cycle& cy) noexcept {
   spindle_path_.limit_path(path_.profile(), cy.machine);
   hold_.follow(current_, cy.in, sync_.has_functions(), path_, cy.dt_s);
   const motion::ProfileSample st = path_.step(m, *commands_, cy);
+  cause_ = path_.cause();
+  if (cause_ == CycleCause::wait) wait_reason_ = WaitReason::coupling;
   measuring_.stepped(m);
   place(m, st.s_mm);
   spindle_path_.follow_path(st.s_mm, st.v_mm_s, cy.machine);
@@ -297,7 +315,10 @@ void Channel::place(const Motion& m, double s_mm) noexcept {
 
 bool Channel::waits_done(SyncPoint phase, Cycle& cy) noexcept {
   if (fail(sync_.update_waits(phase, cy), cy)) return false;
-  return !sync_.waiting(phase);
+  if (!sync_.waiting(phase)) return true;
+  cause_ = CycleCause::wait;
+  wait_reason_ = sync_.reason(phase);
+  return false;
 }
 
 // After the post waits: the block is done.

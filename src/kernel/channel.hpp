@@ -148,6 +148,9 @@ class Channel {
   Command current_{};
   bool dropping_mdi_ = false;  // an MDI text failed: its commands left are dropped
   bool stopped_ = false;       // NC stop: held until cycle start
+  // What this cycle went to (time by cause), set where the cycle stops.
+  CycleCause cause_ = CycleCause::none;
+  WaitReason wait_reason_ = WaitReason::plc_ack;
 
   // its technology units (docs/architecture.md: when the channel calls them)
   SyncUnit sync_;              // outputs and waits before / after the body

@@ -101,6 +101,19 @@ async function check(browser, c) {
   for (const l of looks.legends)
     if (l.marks && !l.legend) fail(name, `plot "${l.title}" shades or marks without a legend`);
   ok(name, "block count, y ticks and legends");
+  // issue 31 item 1: time by cause, a stacked bar and two tables per channel
+  const causes = await page.evaluate(() => [...document.querySelectorAll("#causes .cause-channel")].map((d) => ({
+    bar: [...d.querySelectorAll(".cause-bar span")].reduce((s, x) => s + parseFloat(x.style.width), 0),
+    causes: [...d.querySelectorAll(".cause-table tr")].filter((tr) => tr.querySelector("td")).length,
+    lines: [...d.querySelectorAll(".blocks tr")].filter((tr) => tr.querySelector("td")).map((tr) => tr.children[1].textContent),
+  })));
+  if (!causes.length) fail(name, "no time-by-cause section");
+  for (const [i, ch] of causes.entries()) {
+    if (Math.abs(ch.bar - 100) > 0.5) fail(name, `cause bar ${i + 1} spans ${ch.bar} %`);
+    if (ch.causes < (c.minCauses || 1)) fail(name, `cause table ${i + 1} has ${ch.causes} rows, expected ${c.minCauses || 1}`);
+    if (!ch.lines.length || ch.lines.some((t) => !t.trim())) fail(name, `block table ${i + 1}: a row without its NC line`);
+  }
+  ok(name, `time by cause: ${causes.map((ch) => ch.causes + " causes, " + ch.lines.length + " blocks").join("; ")}`);
   if (info.backplots.length !== c.backplots.length) fail(name, `${info.backplots.length} backplots, expected ${c.backplots.length}`);
   c.backplots.forEach((want, i) => {
     const got = info.backplots[i];

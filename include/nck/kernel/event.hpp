@@ -42,7 +42,8 @@ enum class EndReason : std::uint8_t { m30, m2, error, reset, max_time, max_wall,
 
 
 enum class WaitReason : std::uint8_t {
-  plc_ack, speed_reached, in_position, standstill, homing, gear_change, expl_syn, dwell, feedhold
+  plc_ack, speed_reached, in_position, standstill, homing, gear_change, expl_syn, dwell, feedhold,
+  coupling  // a spindle coupling holds the path (G95/G33/G63 with the spindle at rest); time by cause only
 };
 
 struct Event {

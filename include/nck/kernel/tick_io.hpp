@@ -113,6 +113,26 @@ struct TickInput {
 
 enum class ChannelStatus : std::uint8_t { idle, running, waiting, ended, aborted };
 
+// What the channel's cycle went to (time by cause, docs/outputs.md): every
+// cycle of a busy channel is exactly one of these, written by the channel
+// where the cycle stopped; none while the channel is done (no program).
+// The application sums them; which axis binds it reads from the set points.
+enum class CycleCause : std::uint8_t {
+  none,          // the channel is done: no program runs
+  transition,    // blocks changed without moving (zero-length blocks, program end)
+  feed,          // at the programmed feed
+  axis_velocity, // an axis's velocity limit caps the path below the feed
+  accelerating,  // speeding up towards the feed (from standstill)
+  braking,       // braking towards a stop at the block end
+  corner,        // slowed for a corner or transition (end speed > 0), or back up from it
+  override_,     // slowed by the feed override
+  rapid,         // G0 (any phase of it)
+  wait,          // waits: wait_reason says for what (dwell: WaitReason::dwell)
+  hold,          // program hold: M0/M1, single step, stop at, NC stop, block search
+  feedhold,      // the HLI feedhold stops the path
+  starved,       // preparation late: the queue is empty or the braking reserve slows the path
+};
+
 struct ChannelOutput {
   AxisArray axis_mcs{};  // set points, mm / deg
   double path_velocity_mm_s = 0;
@@ -123,6 +143,9 @@ struct ChannelOutput {
   std::int8_t dist_axis = -1;   // the tool axis carrying the offset, -1 none yet
   ChannelStatus status = ChannelStatus::idle;
   ProgramState program_state = ProgramState::idle;
+  CycleCause cause = CycleCause::none;        // what this cycle went to
+  double feed_mm_s = 0;  // the motion's programmed path velocity (G0: its rapid limit); 0 without motion
+  WaitReason wait_reason = WaitReason::plc_ack;  // cause == wait: for what
 };
 
 struct SpindleOutput {

@@ -60,6 +60,9 @@ class PathProfile {
   double end_velocity() const noexcept { return v_end_mm_s_; }
   // Ignore the feed override (G33: the path follows the spindle). rt
   void set_override_ignored(bool ignored) noexcept { override_ignored_ = ignored; }
+  bool override_ignored() const noexcept { return override_ignored_; }
+  // The coupling's limit set for this cycle (< 0: none).
+  double velocity_limit() const noexcept { return v_limit_mm_s_; }
 
   double s() const noexcept { return s_mm_; }
   double v() const noexcept { return v_mm_s_; }

@@ -96,4 +96,37 @@ void PathUnit::note_starved(Cycle& cy) noexcept {
   cy.sink.emit(e);
 }
 
+// Time by cause: a few comparisons of what the profile did with what it
+// was asked for. A speed-up keeps the cause it began with (from standstill:
+// accelerating; out of a corner's reduced speed: corner) until it ends.
+CycleCause PathUnit::classify(const Motion& m, const motion::ProfileSample& st, double v_prev, double ovr,
+                              const Cycle& cy) noexcept {
+  const CycleCause last = cause_;
+  const double v = st.v_mm_s;
+  const bool rising = v > v_prev;
+  if (!rising) ramp_ = CycleCause::none;
+  if (cy.stopped) return CycleCause::hold;  // NC stop: the channel holds
+  if (cy.in.feedhold) return CycleCause::feedhold;
+  if (reserve_ && st.braking) return CycleCause::starved;
+  if (!cy.block.feed_motion && !m.measure) return CycleCause::rapid;  // G0 (a G100 run moves at F)
+  const double limit = profile_.velocity_limit();
+  const double cmd = limit >= 0 ? std::min(m.v_cmd_mm_s, limit) : m.v_cmd_mm_s;
+  const double v_max = profile_.limits().v_max_mm_s;
+  const double tol = 1e-9 * std::max(1.0, cmd);
+  if (profile_.override_ignored()) ovr = 1.0;
+  if (st.braking) return profile_.end_velocity() > 0 ? CycleCause::corner : CycleCause::braking;
+  if (v >= std::min(cmd, v_max) - tol && v > 0) return v_max < cmd - tol ? CycleCause::axis_velocity : CycleCause::feed;
+  if (v >= std::min(cmd * ovr, v_max) - tol && v > 0) return CycleCause::override_;
+  if (rising) {
+    if (ramp_ == CycleCause::none) ramp_ = last == CycleCause::corner && v_prev > 0 ? CycleCause::corner
+                                                                                 : CycleCause::accelerating;
+    return ramp_;
+  }
+  // Holding the end speed over the last cycles before passing on.
+  const double v_end = profile_.end_velocity();
+  if (v_end > 0 && v <= v_end + tol) return CycleCause::corner;
+  if (v == 0 && limit == 0) return CycleCause::wait;  // the coupling holds the path (spindle at rest)
+  return ovr < 1 ? CycleCause::override_ : CycleCause::braking;
+}
+
 }  // namespace nck::kernel

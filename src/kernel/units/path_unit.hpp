@@ -59,12 +59,17 @@ class PathUnit {
   double s_mm() const noexcept { return profile_.s(); }
   // The segment of the motion that runs (or ran last).
   const motion::Segment& segment() const noexcept { return segment_; }
+  // What the last step went to (time by cause; tick_io.hpp CycleCause).
+  CycleCause cause() const noexcept { return cause_; }
   // The spindle-path couplings limit the profile each cycle.
   motion::PathProfile& profile() noexcept { return profile_; }
 
  private:
   void keep_braking_reserve(const Motion& m, const CommandQueue& queued, double dt_s) noexcept;
   void note_starved(Cycle& cy) noexcept;
+  // What limited step st (v_prev: the speed before it). rt
+  CycleCause classify(const Motion& m, const motion::ProfileSample& st, double v_prev, double ovr,
+                      const Cycle& cy) noexcept;
 
   motion::PathProfile profile_{};
   motion::Segment segment_{};
@@ -75,16 +80,20 @@ class PathUnit {
   bool reserve_ = false;  // the motion's end speed is lowered: its successors are not all queued yet
   bool starved_ = false;  // the braking reserve slowed the path (a KernelPrepStarved episode)
   bool moved_this_cycle_ = false, moved_last_cycle_ = false;  // the path advanced in this / the last cycle
+  CycleCause cause_ = CycleCause::transition;
+  CycleCause ramp_ = CycleCause::none;  // a speed-up under way: from standstill or out of a corner
 };
 
 // Every cycle of a motion: defined here so that it inlines into the channel.
 inline motion::ProfileSample PathUnit::step(const Motion& m, const CommandQueue& queued, Cycle& cy) noexcept {
   const double ovr = cy.in.feedhold || cy.stopped ? 0.0 : std::clamp(cy.in.feed_override_pct, 0.0, 100.0) / 100.0;
   if (reserve_) keep_braking_reserve(m, queued, cy.dt_s);
+  const double v_prev = profile_.v();
   const motion::ProfileSample st = profile_.step(cy.dt_s, ovr);
   if (reserve_ && st.braking) note_starved(cy);
   moved_this_cycle_ = st.v_mm_s > 0;
   velocity_ = st.v_mm_s;
+  cause_ = classify(m, st, v_prev, ovr, cy);
   return st;
 }
 

@@ -255,6 +255,12 @@ bool SyncUnit::waiting(SyncPoint phase) const noexcept {
   return false;
 }
 
+WaitReason SyncUnit::reason(SyncPoint phase) const noexcept {
+  for (const Wait& w : waits_)
+    if (w.when == phase) return w.reason;
+  return WaitReason::plc_ack;
+}
+
 // One wait of the phase checked: announced when new, ended when satisfied
 // (stays = false), or a timeout or spindle error.
 Fault SyncUnit::check(Wait& w, bool& stays, Cycle& cy) noexcept {

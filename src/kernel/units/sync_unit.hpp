@@ -34,6 +34,8 @@ class SyncUnit {
   Fault update_waits(SyncPoint phase, Cycle& cy) noexcept;
   // Some wait of `phase` is left. rt
   bool waiting(SyncPoint phase) const noexcept;
+  // What the first wait of `phase` waits for (time by cause). rt
+  WaitReason reason(SyncPoint phase) const noexcept;
   // The PLC acknowledged output h. rt
   void on_ack(plc::OutputHandle h) noexcept;
   // Program end: nothing to wait for. rt

@@ -1,0 +1,106 @@
+#pragma once
+// Time by cause (issue 31): every cycle of every busy channel goes to
+// exactly one class — at feed, an axis's velocity (which axis), accelerating
+// or braking (which axis binds), a corner or transition, the override,
+// rapid, a wait (with its reason), a hold, starved preparation. The kernel
+// names the class per cycle (ChannelOutput::cause, a few comparisons in the
+// path unit); this ledger, outside the cycle, names the binding axis from
+// the set points and sums cycles per block (NC line), tool, file and cause.
+// Sums are whole cycles, so the classes add up to the channel's time exactly.
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "nck/config/machine.hpp"
+#include "nck/kernel/tick_io.hpp"
+
+namespace nck::app {
+
+struct RunNames;
+
+class TimeByCause {
+ public:
+  // The most time-losing blocks --final lists per channel.
+  static constexpr std::size_t kMaxBlocks = 2000;
+  // Lines kept per channel: beyond, the half that lost the least time is
+  // dropped (memory stays bounded for any program; a dropped line that
+  // runs again starts anew). The sums per cause, tool and file stay exact.
+  static constexpr std::size_t kMaxLines = 20000;
+
+  // setup: the channels' axes (names and dynamics) and the cycle time.
+  void start(const config::Machine& m, double cycle_s);
+  // Once per cycle, after the kernel's tick. rt-ish: no allocation but
+  // when a line runs for the first time.
+  void take(const kernel::TickOutput& out, const RunNames& names);
+  // After the last cycle, before json() and top_lines().
+  void finish();
+  // --final's "time_by_cause".
+  nlohmann::ordered_json json() const;
+  // The three causes with the most time, one line each, for stderr.
+  std::vector<std::string> top_lines(std::size_t count = 3) const;
+
+  // A class: the kernel's cause and its detail (axis index, wait reason,
+  // hold kind; -1: none).
+  struct Class {
+    kernel::CycleCause cause = kernel::CycleCause::none;
+    std::int16_t detail = -1;
+    bool operator==(const Class&) const = default;
+  };
+  // Cycles per class, a handful per block.
+  using Tally = std::vector<std::pair<Class, std::uint64_t>>;
+
+ private:
+  struct Block {
+    std::uint16_t file = 0;
+    std::uint32_t line = 0;
+    bool has_n = false;
+    std::int64_t n = 0;
+    std::uint64_t runs = 0;
+    double length_mm = 0, ideal_s = 0;  // travelled, and its length / feed
+    Tally tally;
+  };
+  struct Channel {
+    std::vector<std::string> axis_names;
+    std::vector<double> v_max, a_acc, a_dec;  // feed dynamics per axis
+    std::vector<double> last_mcs;
+    int c_axis = -1;  // the spindle's C axis: it shows the turning spindle outside #CAX
+    Block* block = nullptr;
+    std::string tool = "-";
+    std::uint16_t file = 0;
+    std::unordered_map<std::uint64_t, Block> blocks;  // by file << 32 | line
+    std::unordered_map<std::string, Tally> tools;
+    std::unordered_map<std::uint16_t, Tally> files;
+    Tally* tool_tally = nullptr;  // tools[tool], files[file]: where cycles count now
+    Tally* file_tally = nullptr;
+    std::vector<std::string> file_names;
+    Tally total;
+    std::uint64_t cycles = 0;
+    // Cycles of one class in a row, not yet added to the tallies (a run
+    // ends when the class, block, tool or file changes).
+    Class run{};
+    std::uint64_t run_cycles = 0;
+  };
+  void take_event(const kernel::Event& e, const RunNames& names);
+  static void flush(Channel& ch);
+  double lost_s(const Block& b) const;
+  void drop_least_lost(Channel& ch);
+  Class classify(Channel& ch, const kernel::ChannelOutput& o) const;
+  std::string class_name(const Channel& ch, Class c) const;
+  nlohmann::ordered_json tally_json(const Channel& ch, const Tally& t) const;
+  nlohmann::ordered_json channel_json(const Channel& ch) const;
+
+  // n cycles in seconds, from the whole-µs cycle time (0.018, not 0.018000000000000002)
+  double seconds(std::uint64_t n) const { return static_cast<double>(n) * static_cast<double>(cycle_us_) / 1e6; }
+
+  std::vector<Channel> channels_;
+  double cycle_s_ = 0.001;
+  std::int64_t cycle_us_ = 1000;
+};
+
+// "feed", "axis_velocity", ... as --final names the kernel's causes.
+const char* cause_name(kernel::CycleCause c);
+
+}  // namespace nck::app
