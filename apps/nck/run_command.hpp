@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "nck/prep/block_search.hpp"
+#include "nck/prep/search_mark.hpp"
 #include "stop_at.hpp"
 
 namespace nck::app {

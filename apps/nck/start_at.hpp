@@ -6,7 +6,7 @@
 #include <optional>
 #include <string_view>
 
-#include "nck/prep/block_search.hpp"
+#include "nck/prep/search_mark.hpp"
 
 namespace nck::app {
 

@@ -19,28 +19,9 @@
 #include "nck/core/diagnostic.hpp"
 #include "nck/prep/lookahead_window.hpp"
 #include "nck/prep/planned_command.hpp"
+#include "nck/prep/search_mark.hpp"
 
 namespace nck::prep {
-
-struct SearchMark {
-  enum class Kind : std::uint8_t {
-    file_offset = 1,    // the block whose text holds this byte offset of its file
-    block_counter = 3,  // the first block at or after this NC row (Block::row)
-    block_number = 4,   // the block with this N
-  };
-  Kind kind = Kind::block_number;
-  std::int64_t value = 0;
-  std::uint32_t pass = 1;  // types 1 and 4: the pass-th time the mark is met (loops)
-  // Types 1 and 4: the file the mark lies in, by name ("sub.nc") or path;
-  // empty: the main program for type 1, any file for type 4.
-  std::string program;
-  // How much of the restart block's path is already done, per mille
-  // (0..1000): the real motion starts there.
-  double covered_permille = 0;
-  // HLI no_hold_at_restart: false (the default) holds after the return to
-  // the contour until cycle start.
-  bool no_hold_at_restart = false;
-};
 
 // Technology functions met in search, the last of each kind: a spindle's
 // last rotation, stop or position (with its last speed), its other

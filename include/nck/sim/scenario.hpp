@@ -15,7 +15,7 @@
 #include "nck/core/diagnostic.hpp"
 #include "nck/plc/ext_command.hpp"
 #include "nck/plc/hli.hpp"
-#include "nck/prep/block_search.hpp"
+#include "nck/prep/search_mark.hpp"
 
 namespace nck::sim {
 
