@@ -91,21 +91,7 @@ void ChannelPrep::feed_blocks(kernel::CommandQueue& commands, kernel::FeedbackQu
     if (r.status == nc::Decoder::Status::stopped) return;
     ++decoded_;
     if (r.status == nc::Decoder::Status::block) {
-      if (r.block.depth == 0) last_main_line_ = r.block.line;
-      if (search_) search_->decoded(r.block, decoder_->file_name(r.block.file_id));
-      if (search_ && r.block.program_end && !search_->restarts_at(r.block)) {
-        search_not_found(r.block, commands);
-        continue;
-      }
-      const bool searched = search_.has_value();
-      (void)prepare(r.block, commands);
-      done_ = done_ || r.block.program_end;  // an MDI text may have ended in prepare()
-      if (in_mdi_ && r.block.program_end) finish_mdi(commands);  // M30 typed in MDI
-      awaiting_feedback_ = needs_feedback(r.block);
-      if (awaiting_feedback_ && searched && search_) {
-        take_feedback(assumed_feedback(r.block, *planner_), *planner_, *decoder_);
-        awaiting_feedback_ = false;
-      }
+      take_block(r.block, commands);
     } else if (r.status == nc::Decoder::Status::end && in_mdi_) {
       finish_mdi(commands);
     } else if (r.status == nc::Decoder::Status::end) {
@@ -124,6 +110,25 @@ void ChannelPrep::feed_blocks(kernel::CommandQueue& commands, kernel::FeedbackQu
       done_ = true;
       if (in_mdi_) finish_mdi(commands);  // an error ends the MDI text, never the channel
     }
+  }
+}
+
+// A decoded block: planned (or searched), and whether later blocks wait for
+// feedback from its execution.
+void ChannelPrep::take_block(const nc::Block& b, kernel::CommandQueue& commands) {
+  if (b.depth == 0) last_main_line_ = b.line;
+  if (search_) search_->decoded(b, decoder_->file_name(b.file_id));
+  if (search_ && b.program_end && !search_->restarts_at(b)) {
+    search_not_found(b, commands);
+    return;
+  }
+  (void)prepare(b, commands);
+  done_ = done_ || b.program_end;  // an MDI text may have ended in prepare()
+  if (in_mdi_ && b.program_end) finish_mdi(commands);  // M30 typed in MDI
+  awaiting_feedback_ = needs_feedback(b);
+  if (awaiting_feedback_ && search_) {  // still searching: nothing executes
+    take_feedback(assumed_feedback(b, *planner_), *planner_, *decoder_);
+    awaiting_feedback_ = false;
   }
 }
 

@@ -100,6 +100,7 @@ class ChannelPrep {
 
  private:
   void feed_blocks(kernel::CommandQueue& commands, kernel::FeedbackQueue& feedback, bool channel_done);
+  void take_block(const nc::Block& b, kernel::CommandQueue& commands);
   void hand_over(const PlannedCommand& c, kernel::CommandQueue& commands);
   bool push_out(kernel::CommandQueue& commands);
   void collect_warnings();
