@@ -1,17 +1,11 @@
 #include "start_at.hpp"
 
-#include <charconv>
+#include "stop_at.hpp"
+
 #include <string>
 
 namespace nck::app {
 namespace {
-
-std::optional<std::int64_t> whole(std::string_view s, std::int64_t lowest) {
-  std::int64_t v = 0;
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (s.empty() || ec != std::errc{} || end != s.data() + s.size() || v < lowest) return std::nullopt;
-  return v;
-}
 
 // <value>[:<pass>][@<program>]
 std::optional<prep::SearchMark> with_pass_and_program(prep::SearchMark::Kind kind, std::string_view text) {
@@ -23,12 +17,12 @@ std::optional<prep::SearchMark> with_pass_and_program(prep::SearchMark::Kind kin
     text = text.substr(0, at);
   }
   if (const std::size_t colon = text.find(':'); colon != std::string_view::npos) {
-    const auto pass = whole(text.substr(colon + 1), 1);
+    const auto pass = whole_number(text.substr(colon + 1), 1);
     if (!pass || *pass > UINT32_MAX) return std::nullopt;
     m.pass = static_cast<std::uint32_t>(*pass);
     text = text.substr(0, colon);
   }
-  const auto value = whole(text, 0);
+  const auto value = whole_number(text, 0);
   if (!value) return std::nullopt;
   m.value = *value;
   return m;
@@ -46,7 +40,7 @@ std::optional<prep::SearchMark> parse_start_at_offset(std::string_view text) {
 }
 
 std::optional<prep::SearchMark> parse_start_at_block(std::string_view text) {
-  const auto k = whole(text, 1);
+  const auto k = whole_number(text, 1);
   if (!k) return std::nullopt;
   prep::SearchMark m;
   m.kind = prep::SearchMark::Kind::block_counter;

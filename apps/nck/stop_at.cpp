@@ -5,14 +5,14 @@
 #include "output_writers.hpp"
 
 namespace nck::app {
-namespace {
-
 std::optional<std::int64_t> whole_number(std::string_view s, std::int64_t lowest) {
   std::int64_t v = 0;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
   if (ec != std::errc{} || end != s.data() + s.size() || v < lowest) return std::nullopt;
   return v;
 }
+
+namespace {
 
 std::optional<StopAt> numbered(kernel::StopMark::Kind kind, std::string_view digits, std::int64_t lowest) {
   const auto v = whole_number(digits, lowest);

@@ -19,6 +19,9 @@ struct StopAt {
   std::optional<kernel::EventKind> event;  // event:<kind>: the caller marks the block that runs
 };
 
+// A mark's whole number: all of s, >= lowest (also --start-at's marks).
+std::optional<std::int64_t> whole_number(std::string_view s, std::int64_t lowest);
+
 // The --stop-at text, or nullopt when it is none of the forms above.
 std::optional<StopAt> parse_stop_at(std::string_view text);
 
