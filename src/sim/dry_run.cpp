@@ -92,8 +92,9 @@ void DryRun::submit_mdi() {
     if (ch >= preps_.size()) continue;
     const kernel::ProgramState st = kernel_->program_state(ch);
     const bool idle = st == kernel::ProgramState::idle || st == kernel::ProgramState::ended;
-    const bool in_mdi = preps_[ch].mdi_pending() || (preps_[ch].mdi_used() && st == kernel::ProgramState::running &&
-                                                     !preps_[ch].has_program());
+    // MDI was only ever taken once the program was over: running now is MDI.
+    const bool in_mdi =
+        preps_[ch].mdi_pending() || (preps_[ch].mdi_used() && st == kernel::ProgramState::running);
     if (idle || in_mdi) {
       preps_[ch].submit_mdi(sim_->mdi_text(r.text));
       continue;
