@@ -40,14 +40,10 @@ constexpr std::size_t kQueuedAhead = kernel::kMaxLookAheadDepth;
 void DryRun::prepare() {
   if (!sim_->mdi_requests().empty()) submit_mdi();
   if (threaded_) {
-    // Started here, once this object has stopped moving.
-    if (!prep_thread_) prep_thread_ = std::make_unique<PrepThread>(preps_, *kernel_);
-    if (sim_->skip_levels_used())
-      for (std::size_t ch = 0; ch < preps_.size(); ++ch) prep_thread_->set_skip_mask(ch, sim_->hli().channel[ch].skip_mask);
+    feed_preparation_thread();
     prep_thread_->wait_caught_up(kQueuedAhead);
     prep_thread_->rethrow_failure();
-    for (std::size_t ch = 0; ch < preps_.size(); ++ch)
-      if (prep_thread_->sensor_wanted(ch)) sim_->switch_sensor_on(ch);
+    switch_sensors_on();
     return;
   }
   for (std::size_t ch = 0; ch < preps_.size(); ++ch) {
@@ -58,6 +54,27 @@ void DryRun::prepare() {
         preps_[ch].planner().dist_ctrl_programmed())
       sim_->switch_sensor_on(ch);
   }
+}
+
+void DryRun::prepare_live() {
+  if (!sim_->mdi_requests().empty()) submit_mdi();
+  feed_preparation_thread();
+  prep_thread_->rethrow_failure();
+  switch_sensors_on();
+}
+
+// What the cycle side hands the preparation thread before a cycle.
+void DryRun::feed_preparation_thread() {
+  // Started here, once this object has stopped moving.
+  if (!prep_thread_) prep_thread_ = std::make_unique<PrepThread>(preps_, *kernel_);
+  if (sim_->skip_levels_used())
+    for (std::size_t ch = 0; ch < preps_.size(); ++ch) prep_thread_->set_skip_mask(ch, sim_->hli().channel[ch].skip_mask);
+}
+
+// The distance sensors of the channels whose preparation has met #DIST CTRL ON.
+void DryRun::switch_sensors_on() {
+  for (std::size_t ch = 0; ch < preps_.size(); ++ch)
+    if (prep_thread_->sensor_wanted(ch)) sim_->switch_sensor_on(ch);
 }
 
 void DryRun::cycle(kernel::TickOutput& out) noexcept {
@@ -84,28 +101,42 @@ bool DryRun::done() const noexcept {
   return !sim_->scenario_pending() && sim_->mdi_requests().empty();
 }
 
-// MDI is for an idle channel: before its program, after its end or a reset,
-// or while it runs the MDI text before (the texts queue up).
 void DryRun::submit_mdi() {
   for (const MachineSim::MdiRequest& r : sim_->mdi_requests()) {
+    if (r.channel < 1 || r.channel > preps_.size()) continue;
     const std::size_t ch = r.channel - 1u;
-    if (ch >= preps_.size()) continue;
-    const kernel::ProgramState st = kernel_->program_state(ch);
-    const bool idle = st == kernel::ProgramState::idle || st == kernel::ProgramState::ended;
-    // MDI was only ever taken once the program was over: running now is MDI.
-    const bool in_mdi =
-        preps_[ch].mdi_pending() || (preps_[ch].mdi_used() && st == kernel::ProgramState::running);
-    if (idle || in_mdi) {
-      preps_[ch].submit_mdi(sim_->mdi_text(r.text));
-      continue;
-    }
-    refusals_.push_back(Refusal{r.channel, make_diagnostic(
-        ErrorId::KernelMdiRefused, SourceLoc{sim_->scenario_file(), r.line, 0},
-        fmt::format("MDI '{}' refused: channel {} is {}", sim_->mdi_text(r.text), r.channel,
-                    kernel::state_name(st)))});
+    auto refused = mdi(ch, sim_->mdi_text(r.text), kernel_->program_state(ch), SourceLoc{sim_->scenario_file(), r.line, 0});
+    if (refused) refusals_.push_back(Refusal{r.channel, std::move(*refused)});
   }
   sim_->mdi_requests().clear();
+}
+
+// MDI is for an idle channel: before its program, after its end or a reset,
+// or while it runs the MDI text before (the texts queue up).
+std::optional<Diagnostic> DryRun::mdi(std::size_t ch, const std::string& text, kernel::ProgramState st,
+                                      const SourceLoc& loc) {
+  const bool idle = st == kernel::ProgramState::idle || st == kernel::ProgramState::ended;
+  // MDI was only ever taken once the program was over: running now is MDI.
+  const bool in_mdi = preps_[ch].mdi_pending() || (preps_[ch].mdi_used() && st == kernel::ProgramState::running);
+  if (!idle && !in_mdi)
+    return make_diagnostic(ErrorId::KernelMdiRefused, loc,
+                           fmt::format("MDI '{}' refused: channel {} is {}", text, ch + 1, kernel::state_name(st)));
+  preps_[ch].submit_mdi(text);
   if (prep_thread_) prep_thread_->wake();
+  return std::nullopt;
+}
+
+std::optional<Diagnostic> DryRun::operate(const OperatorAction& op) {
+  const SourceLoc loc{"operator", 1, 0};
+  if (op.action.kind == ActionKind::mdi) {
+    if (op.action.channel < 1 || op.action.channel > preps_.size())
+      return make_diagnostic(ErrorId::PlcOperatorActionBad, loc, fmt::format("no channel {}", op.action.channel));
+    const std::size_t ch = op.action.channel - 1u;
+    return mdi(ch, op.mdi_text, kernel_->program_state(ch), loc);
+  }
+  if (sim_->operate(op.action)) return std::nullopt;
+  return make_diagnostic(ErrorId::PlcOperatorActionsFull, loc,
+                         fmt::format("'{}' dropped: 32 actions already wait for the next cycle", action_name(op.action.kind)));
 }
 
 bool DryRun::held_for_good() const noexcept {

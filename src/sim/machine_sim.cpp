@@ -55,8 +55,14 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
     for (std::size_t ch = 0; ch < channels_; ++ch) in.channels[ch].jogs.clear();
     jogs_given_ = false;
   }
-  for (const sim::ScenarioAction& a : player_.due(t_s)) apply(a, in);
+  for (const sim::ScenarioAction& a : player_.due(t_s)) {
+    const bool jog = a.kind == sim::ActionKind::jog || a.kind == sim::ActionKind::jog_increment;
+    if (jog && jog_lines_left_ > 0) --jog_lines_left_;  // counts the timed lines only
+    apply(a, in);
+  }
   player_.for_each_triggered_due(t_s, [&](const sim::ScenarioAction& a) { apply(a, in); });
+  for (const sim::ScenarioAction& a : operator_actions_) apply(a, in);
+  operator_actions_.clear();
 
   plc_.tick(t_s);
   plc_.drain_acks(acks_);
@@ -188,7 +194,6 @@ void MachineSim::apply_jog(const sim::ScenarioAction& a, kernel::ChannelInput& i
   }
   (void)in.jogs.push_back(r);  // more than kMaxJogRequestsPerTick at one time: the rest is lost
   jogs_given_ = true;
-  if (!a.trigger && jog_lines_left_ > 0) --jog_lines_left_;  // counts the timed lines only
 }
 
 void MachineSim::apply_to_spindle(const sim::ScenarioAction& a) noexcept {

@@ -28,6 +28,7 @@
 #include "nck/prep/channel_prep.hpp"
 #include "nck/prep/plan_store.hpp"
 #include "nck/sim/machine_sim.hpp"
+#include "nck/sim/operator_action.hpp"
 #include "nck/sim/prep_thread.hpp"
 
 namespace nck::sim {
@@ -72,6 +73,10 @@ class DryRun {
   void prepare();
   // rt: one cycle of the simulated machine and the kernel.
   void cycle(kernel::TickOutput& out) noexcept;
+  // A live kernel's preparation (nck serve): as prepare(), but never waits
+  // for the preparation thread (the kernel's braking reserve covers a late
+  // one). Needs DryRunOptions::prep_thread.
+  void prepare_live();
   // Both, as a dry run does them every cycle.
   void step(kernel::TickOutput& out) {
     prepare();
@@ -94,6 +99,17 @@ class DryRun {
     Diagnostic diagnostic;
   };
   std::vector<Refusal> take_refusals() { return std::exchange(refusals_, {}); }
+  // An operator's action (the Python session; from the thread that runs
+  // the cycles): MDI text goes to its channel's preparation when the
+  // channel may take it, the rest to the simulated machine's next cycle.
+  // The refusal, if any (930710 MDI while a program runs, 960042 too many
+  // at once).
+  std::optional<Diagnostic> operate(const OperatorAction& op);
+  // MDI text for channel ch (0-based) whose program state is `st`, or why
+  // it is refused. Reads nothing the cycles write: a live kernel's server
+  // thread calls it with the state the kernel last published.
+  std::optional<Diagnostic> mdi(std::size_t ch, const std::string& text, kernel::ProgramState st,
+                                const SourceLoc& loc);
   // Every channel still running holds (M0/M1) and nothing will release it:
   // no automatic cycle start, no scenario line still to come.
   bool held_for_good() const noexcept;
@@ -103,6 +119,7 @@ class DryRun {
   const prep::ChannelPrep& prep(std::size_t ch) const { return preps_.at(ch); }
   const kernel::Kernel& kernel() const { return *kernel_; }
   const MachineSim& machine() const { return *sim_; }
+  MachineSim& machine() { return *sim_; }
   ChannelSnapshot snapshot(std::size_t ch) const;
   // Texts and offset values that events refer to by message_index.
   const std::string& message(std::uint32_t index) const;
@@ -126,6 +143,8 @@ class DryRun {
   std::vector<Refusal> refusals_;
   // setup side: hands the MDI lines that came due to preparation.
   void submit_mdi();
+  void feed_preparation_thread();
+  void switch_sensors_on();
   std::unique_ptr<PrepThread> prep_thread_;  // last: ends before what it uses
 };
 

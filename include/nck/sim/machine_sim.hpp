@@ -78,6 +78,12 @@ class MachineSim {
   bool runs_mdi() const noexcept { return scenario_ && !scenario_->texts.empty(); }
   // Channel ch is in manual mode (the scenario's mode line).
   bool manual_mode(std::size_t ch) const noexcept { return ch < channels_ && hli_.channel[ch].manual_mode; }
+  // An operator's action (nck serve, the Python session), applied in the
+  // next read() after the scenario's: false when 32 already wait. MDI text
+  // goes to preparation instead (DryRun::operate). rt
+  bool operate(const sim::ScenarioAction& a) noexcept {
+    return a.kind != sim::ActionKind::mdi && operator_actions_.push_back(a);
+  }
   // The scenario has jog lines still to come: a run goes on after its
   // program end until they have acted (jogging an ended channel).
   bool jog_pending() const noexcept { return jog_lines_left_ > 0; }
@@ -95,6 +101,7 @@ class MachineSim {
   ScenarioPlayer player_;
   const sim::Scenario* scenario_ = nullptr;
   FixedVector<MdiRequest, 64> mdi_requests_;
+  FixedVector<sim::ScenarioAction, 32> operator_actions_;
   std::array<Probe, config::kMaxChannels> probes_{};
   std::array<DistanceSensor, config::kMaxChannels> sensors_{};
   std::array<bool, config::kMaxChannels> sensor_on_{};  // sampled only once a program needs it

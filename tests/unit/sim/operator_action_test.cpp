@@ -1,0 +1,120 @@
+// Operator actions on a running kernel (nck serve, the Python session): one
+// scenario line without its time, parsed and checked as a scenario file's,
+// applied by the simulated machine in the next cycle (MDI: by preparation).
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "nck/config/load.hpp"
+#include "nck/sim/dry_run.hpp"
+#include "nck/sim/operator_action.hpp"
+#include "scenario_fixture.hpp"
+
+namespace nck::sim {
+namespace {
+
+std::optional<OperatorAction> parse(std::string_view line, Diagnostics& d) {
+  static const config::Machine m = testing::machine();
+  return parse_operator_action(line, m, d, "api");
+}
+
+TEST(OperatorAction, ReadsAScenarioLineWithoutItsTime) {
+  Diagnostics d;
+  auto op = parse("feed_override 80", d);
+  ASSERT_TRUE(op) << d.items().at(0).message;
+  EXPECT_EQ(op->action.kind, ActionKind::feed_override);
+  EXPECT_DOUBLE_EQ(op->action.value, 80);
+  op = parse("ch=2 override S3 50", d);
+  ASSERT_TRUE(op);
+  EXPECT_EQ(op->action.channel, 2);
+  EXPECT_EQ(op->action.hli_spindle, 2);  // resolved against the machine
+  op = parse("mdi G0 X10 F1000", d);
+  ASSERT_TRUE(op);
+  EXPECT_EQ(op->action.kind, ActionKind::mdi);
+  EXPECT_EQ(op->mdi_text, "G0 X10 F1000");
+  EXPECT_TRUE(d.items().empty());
+}
+
+TEST(OperatorAction, RefusesWhatIsNoLiveActionWithItsId) {
+  const auto refused = [](std::string_view line) {
+    Diagnostics d;
+    EXPECT_FALSE(parse(line, d)) << line;
+    EXPECT_EQ(d.items().size(), 1u) << line;
+    EXPECT_EQ(d.items().at(0).loc.file, "api");
+    return d.items().at(0).id;
+  };
+  EXPECT_EQ(refused("block_search N100"), ErrorId::PlcOperatorActionNotLive);
+  EXPECT_EQ(refused("5 cycle_start"), ErrorId::PlcOperatorActionBad);  // a time is not part of it
+  EXPECT_EQ(refused("@hold cycle_start"), ErrorId::PlcOperatorActionBad);
+  EXPECT_EQ(refused("ch=3 feedhold on"), ErrorId::PlcOperatorActionBad);  // no channel 3
+  EXPECT_EQ(refused("override S9 50"), ErrorId::PlcOperatorActionBad);
+  EXPECT_EQ(refused("feed_override 80\n1 reset"), ErrorId::PlcOperatorActionBad);
+  EXPECT_EQ(refused(""), ErrorId::PlcOperatorActionBad);
+  EXPECT_EQ(refused("launch rockets"), ErrorId::PlcOperatorActionBad);
+}
+
+// A dry run of examples/mill/contour.nc operated by hand.
+struct LiveMill {
+  std::unique_ptr<config::Machine> machine;
+  std::optional<DryRun> run;
+  kernel::TickOutput out;
+
+  explicit LiveMill(bool with_program) {
+    const std::string root = NCK_SOURCE_DIR;
+    config::LoadResult loaded = config::load_machine(root + "/examples/mill");
+    machine = std::make_unique<config::Machine>(*loaded.machine);
+    std::vector<std::filesystem::path> programs;
+    if (with_program) programs.emplace_back(root + "/examples/mill/contour.nc");
+    run.emplace(*DryRun::create(*machine, programs));
+  }
+  std::optional<Diagnostic> operate(std::string_view line) {
+    Diagnostics d;
+    auto op = parse_operator_action(line, *machine, d);
+    EXPECT_TRUE(op) << line;
+    return run->operate(*op);
+  }
+  void cycles(int n) {
+    for (int i = 0; i < n; ++i) run->step(out);
+  }
+};
+
+TEST(OperatorAction, FeedholdStopsTheRunningPathAndReleases) {
+  LiveMill mill(true);
+  mill.cycles(3000);
+  ASSERT_GT(mill.out.channels[0].path_velocity_mm_s, 1.0);
+  EXPECT_FALSE(mill.operate("feedhold on"));
+  mill.cycles(1500);
+  EXPECT_EQ(mill.out.channels[0].path_velocity_mm_s, 0.0);
+  EXPECT_FALSE(mill.operate("feedhold off"));
+  mill.cycles(1500);
+  EXPECT_GT(mill.out.channels[0].path_velocity_mm_s, 1.0);
+}
+
+TEST(OperatorAction, MdiMovesAnIdleChannelAndIsRefusedWhileAProgramRuns) {
+  LiveMill idle(false);
+  idle.cycles(2);
+  EXPECT_FALSE(idle.operate("mdi G0 X10"));
+  idle.cycles(5000);
+  EXPECT_NEAR(idle.out.channels[0].axis_mcs[0], 10.0, 1e-9);
+
+  LiveMill busy(true);
+  busy.cycles(100);
+  const auto refused = busy.operate("mdi G0 X10");
+  ASSERT_TRUE(refused);
+  EXPECT_EQ(refused->id, ErrorId::KernelMdiRefused);
+}
+
+TEST(OperatorAction, AtMost32ActionsWaitForOneCycle) {
+  LiveMill mill(true);
+  for (int i = 0; i < 32; ++i) EXPECT_FALSE(mill.operate("feed_override 50"));
+  const auto full = mill.operate("feed_override 60");
+  ASSERT_TRUE(full);
+  EXPECT_EQ(full->id, ErrorId::PlcOperatorActionsFull);
+  mill.cycles(1);  // the cycle takes them all: room again
+  EXPECT_FALSE(mill.operate("feed_override 60"));
+}
+
+}  // namespace
+}  // namespace nck::sim
