@@ -20,6 +20,7 @@
 #include "nck/core/edit_distance.hpp"
 #include "nck/core/diagnostic.hpp"
 #include "run_command.hpp"
+#include "serve/serve_command.hpp"
 #include "start_at.hpp"
 #include "stop_request.hpp"
 
@@ -272,6 +273,27 @@ int main_cli(int argc, char** argv) {
   auto* mill = initc->add_flag("--mill", mill_flag, "a 3-axis milling machine with two spindles (the default)");
   initc->add_flag("--lathe", init.lathe, "a 2-axis lathe with a 3-stage main spindle")->excludes(mill);
 
+  ServeOptions serve;
+  auto* servec = app.add_subcommand("serve", "Run the kernel live behind a browser HMI and a JSON API (docs/api.md)");
+  servec->add_option("MACHINE", serve.machine, "machine folder (with startup.lis)")->required();
+  servec->add_option("PROGRAM", serve.programs, "programs to load (channel 1, 2, ...); cycle start starts them");
+  servec->add_option("--bind", serve.bind, "address to listen on (default 127.0.0.1; others need --token-file)");
+  servec->add_option("--port", serve.port, "TCP port (0: a free one; the printed URL names it)");
+  servec->add_option("--token-file", serve.token_file, "read the access token (>= 32 characters) from FILE");
+  servec->add_option("--programs", serve.folders, "folder whose programs may be loaded; repeat")->allow_extra_args(false);
+  servec->add_option("--uploads", serve.uploads, "folder for uploaded programs (default: a new temporary folder)");
+  servec->add_option("--speed", serve.speed, "simulated seconds per wall second (1: real time), or max");
+  servec->add_flag("!--no-realtime", serve.realtime, "do not ask for real-time scheduling and locked memory");
+  servec->add_flag("--paused", serve.paused, "start with the kernel's cycles paused (step them from the API)");
+  servec->add_option("--max-clients", serve.max_clients, "connections served at once (default 8)")
+      ->check(number_at_least(1, true));
+  servec->add_option("--rate", serve.rate, "requests per second per connection (default 50)")
+      ->check(number_at_least(1, false));
+  servec->add_option("--max-program", serve.max_program_bytes, "largest program file in bytes (default 4 MiB)")
+      ->check(number_at_least(1, true));
+  servec->add_option("--max-wall", serve.max_wall_s, "stop serving after this many seconds")
+      ->check(number_at_least(0.001, false));
+
   std::string lookup;
   auto* params = app.add_subcommand("params", "Print every accepted list key as a markdown table");
   params->add_option("KEY", lookup, "only the keys containing KEY (or with this P-... ID)");
@@ -296,6 +318,7 @@ int main_cli(int argc, char** argv) {
   try {
     if (*check) code = check_command(checko);
     if (*runc) code = run_simulation(run);
+    if (*servec) code = serve_command(serve);
     if (*parsec) code = parse_program(parse);
     if (*fitc) code = fit_curve(fit);
     if (*params) code = print_parameters(lookup);

@@ -153,7 +153,7 @@ Outcome Decoder::Impl::start_cycle(const CycleTarget& t, std::size_t at) {
       return report(ErrorId::NcFileUnreadable, at, fmt::format("cannot reopen '{}'", t.path.string()));
   } else {
     if (!open_frame(t.path, true, f))
-      return report(ErrorId::NcFileUnreadable, at, fmt::format("cannot read the cycle '{}'", t.path.string()));
+      return report(open_error(ErrorId::NcFileUnreadable), at, fmt::format("cannot read the cycle '{}'", t.path.string()));
     if (const Section* m = f.index->main()) f.reader->seek(m->body);
   }
   f.file_id = t.file_id;

@@ -91,6 +91,7 @@ struct Decoder::Impl {
   detail::Words words;
 
   bool fatal = false;        // decoding cannot go on
+  bool refused_file = false; // the last open_frame failed: outside cfg.allowed_roots
   bool ended = false;        // Status::end reached
   bool mdi = false;          // decoding MDI text: its end is no missing M30
   std::uint64_t rows_read = 0;  // NC rows read so far (Block::row)
@@ -138,6 +139,8 @@ struct Decoder::Impl {
   // subprograms.cpp
   // `main`: the main program, whose first pass is free of the reading budget.
   bool open_frame(const std::filesystem::path& p, bool cached, detail::Frame& f, bool main = false);
+  // The ID for a file open_frame could not open: refused, or `otherwise`.
+  ErrorId open_error(ErrorId otherwise) const { return refused_file ? ErrorId::NcFileNotAllowed : otherwise; }
   // A frame reading a section of an open file again (a local subroutine or
   // cycle: path, cached text, index of the caller's file) from `body`; false
   // when the file cannot be read again.

@@ -2,6 +2,8 @@
 // local subroutines (%L name, called with LL name) and global subroutine
 // files (L file.nc, relative to the calling file's folder); M17/M29 and the
 // next % header return, nesting is bounded.
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "decoder_impl.hpp"
@@ -12,8 +14,29 @@ using namespace detail;
 
 // Opens `p` for a frame: from the cache when enabled, else streamed from
 // disk with a separate pass for the section index.
+namespace {
+
+// p, symbolic links resolved, lies inside one of the folders (or none is given).
+bool inside_roots(const std::filesystem::path& p, const std::vector<std::filesystem::path>& roots) {
+  if (roots.empty()) return true;
+  std::error_code ec;
+  const std::filesystem::path real = std::filesystem::weakly_canonical(p, ec);
+  if (ec) return false;
+  for (const std::filesystem::path& root : roots) {
+    const std::filesystem::path r = std::filesystem::weakly_canonical(root, ec);
+    if (ec) continue;
+    const auto [end, _] = std::mismatch(r.begin(), r.end(), real.begin(), real.end());
+    if (end == r.end()) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 bool Decoder::Impl::open_frame(const std::filesystem::path& p, bool cached, Frame& f, bool main) {
   Decoder::Impl& d = *this;
+  refused_file = !inside_roots(p, cfg.allowed_roots);
+  if (refused_file) return false;
   f.path = p;
   f.reader = std::make_unique<SourceReader>();
   f.reader->set_meter(&meter, main);
@@ -61,7 +84,7 @@ bool Decoder::Impl::open_main(const std::filesystem::path& p) {
   Frame f;
   f.file_id = file_id(p.string());
   if (!open_frame(p, false, f, true)) {
-    diags.push_back(make_diagnostic(ErrorId::NcFileUnreadable, SourceLoc{p.string(), 0, 0},
+    diags.push_back(make_diagnostic(open_error(ErrorId::NcFileUnreadable), SourceLoc{p.string(), 0, 0},
                                     fmt::format("cannot read the NC program '{}'", p.string())));
     fatal = true;
     return false;
@@ -133,7 +156,7 @@ Outcome Decoder::Impl::call(Cursor& c, bool local) {
     std::filesystem::path p(name);
     if (p.is_relative()) p = caller.path.parent_path() / p;
     if (!open_frame(p, true, f))
-      return report(ErrorId::NcSubroutineNotFound, at,
+      return report(open_error(ErrorId::NcSubroutineNotFound), at,
                     fmt::format("subroutine file '{}' not found (looked for {})", name, p.string()));
     f.file_id = file_id(p.string());
     if (const Section* m = f.index->main()) f.reader->seek(m->body);

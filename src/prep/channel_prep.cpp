@@ -22,6 +22,7 @@ ChannelPrep::ChannelPrep(const config::Machine& m, std::size_t ch, const std::fi
   window_.set_blend_axes(planner_->blend_axes());
   nc::DecoderConfig cfg = decoder_config(m, ch);
   cfg.stop = options.stop;
+  cfg.allowed_roots = options.allowed_roots;
   has_program_ = !program.empty();
   done_ = !has_program_;  // a channel without a program waits for MDI
   if (has_program_) decoder_.emplace(program, std::move(cfg));

@@ -20,7 +20,8 @@ std::expected<DryRun, Diagnostic> DryRun::create(const config::Machine& m,
   run.threaded_ = options.prep_thread;
   for (std::size_t ch = 0; ch < run.machine_->channels.size(); ++ch) {
     const bool has_program = ch < programs.size();
-    prep::PrepOptions prep{options.clamp_index, options.record_frames, options.stop, std::nullopt};
+    prep::PrepOptions prep{options.clamp_index, options.record_frames, options.stop, std::nullopt,
+                           options.allowed_roots};
     if (ch == options.search_channel && has_program) prep.search = options.search;
     run.preps_.emplace_back(*run.machine_, ch, has_program ? programs[ch] : std::filesystem::path(), *run.store_,
                             prep);
@@ -56,7 +57,12 @@ void DryRun::prepare() {
   }
 }
 
+void DryRun::start_preparation_thread() {
+  if (!prep_thread_) prep_thread_ = std::make_unique<PrepThread>(preps_, *kernel_);
+}
+
 void DryRun::prepare_live() {
+  if (!prep_thread_) return;
   if (!sim_->mdi_requests().empty()) submit_mdi();
   feed_preparation_thread();
   prep_thread_->rethrow_failure();
@@ -65,8 +71,7 @@ void DryRun::prepare_live() {
 
 // What the cycle side hands the preparation thread before a cycle.
 void DryRun::feed_preparation_thread() {
-  // Started here, once this object has stopped moving.
-  if (!prep_thread_) prep_thread_ = std::make_unique<PrepThread>(preps_, *kernel_);
+  start_preparation_thread();  // here, once this object has stopped moving
   if (sim_->skip_levels_used())
     for (std::size_t ch = 0; ch < preps_.size(); ++ch) prep_thread_->set_skip_mask(ch, sim_->hli().channel[ch].skip_mask);
 }

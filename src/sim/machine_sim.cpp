@@ -138,7 +138,10 @@ void MachineSim::apply(const sim::ScenarioAction& a, kernel::TickInput& in) noex
     case sim::ActionKind::stop: ch.stop = true; return;
     case sim::ActionKind::auto_cycle_start: auto_cycle_start_[c] = a.on; return;
     case sim::ActionKind::single_step: ch.single_step = a.on; return;
-    case sim::ActionKind::skip_mask: ch.skip_mask = static_cast<std::uint32_t>(a.value); return;
+    case sim::ActionKind::skip_mask:  // from now on preparation reads the levels
+      ch.skip_mask = static_cast<std::uint32_t>(a.value);
+      skip_levels_used_ = true;
+      return;
     case sim::ActionKind::silent: plc_.set_silent(a.on); return;
     case sim::ActionKind::mdi:  // beyond 64 lines due in one cycle: dropped (docs/plc-scenario.md)
       (void)mdi_requests_.push_back(MdiRequest{a.line, a.channel, static_cast<std::uint32_t>(a.value)});

@@ -60,6 +60,10 @@ struct DecoderConfig {
   // Cycle search path after the program's folder: the machine's
   // cycle_path[i] folders (startup.lis), then --cycles DIR.
   std::vector<std::filesystem::path> cycle_dirs;
+  // nck serve: every file the decoder opens (program, L subroutine, cycle)
+  // must lie inside one of these folders, symbolic links resolved; empty:
+  // any file. A file outside is refused with NcFileNotAllowed.
+  std::vector<std::filesystem::path> allowed_roots;
 };
 
 

@@ -43,6 +43,8 @@ struct PrepOptions {
   // Block search: the program runs without motion up to this mark, then
   // returns to the contour (block_search.hpp).
   std::optional<SearchMark> search;
+  // nck serve: the folders every file the program opens must lie in (nc::DecoderConfig::allowed_roots).
+  std::vector<std::filesystem::path> allowed_roots;
 };
 
 class ChannelPrep {

@@ -43,6 +43,8 @@ struct DryRunOptions {
   // the mark, then returns to the contour.
   std::optional<prep::SearchMark> search;
   std::size_t search_channel = 0;
+  // nck serve: the folders every file a program opens must lie in (empty: any).
+  std::vector<std::filesystem::path> allowed_roots;
 };
 
 // What a channel knows about its programmed state, for --final.
@@ -75,8 +77,10 @@ class DryRun {
   void cycle(kernel::TickOutput& out) noexcept;
   // A live kernel's preparation (nck serve): as prepare(), but never waits
   // for the preparation thread (the kernel's braking reserve covers a late
-  // one). Needs DryRunOptions::prep_thread.
+  // one). Does nothing until start_preparation_thread() (setup side, once
+  // this object stays where it is) has started it.
   void prepare_live();
+  void start_preparation_thread();
   // Both, as a dry run does them every cycle.
   void step(kernel::TickOutput& out) {
     prepare();

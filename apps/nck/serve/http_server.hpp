@@ -1,0 +1,68 @@
+#pragma once
+// nck serve's HTTP side (Boost.Beast over Asio, one thread): it accepts at
+// most `max_clients` connections, checks Host and Origin on every request,
+// the token on everything under /api/, a request budget per connection and
+// the body size, and hands what passes to an ApiHandler. GET /api/v1/stream
+// turns a connection into a server-sent-events stream that gets, every
+// `stream_period`, the frames the handler collects. Nothing a client sends
+// reaches the kernel but through the handler.
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace nck::app::serve {
+
+struct HttpLimits {
+  std::size_t max_clients = 8;
+  double requests_per_s = 50;            // per connection; beyond: 429
+  std::size_t max_command_bytes = 64 * 1024;
+  std::size_t max_upload_bytes = 4 * 1024 * 1024;  // POST /api/v1/upload
+  std::size_t max_stream_backlog = 64;   // frames a slow stream client may owe before it is dropped
+  std::chrono::milliseconds stream_period{25};  // 40 snapshots per second
+};
+
+struct HttpRequest {
+  std::string_view method;  // "GET", "POST"
+  std::string_view target;  // path and query
+  std::string_view body;
+};
+
+struct HttpReply {
+  unsigned status = 200;
+  std::string content_type = "application/json";
+  std::string body;
+  std::vector<std::pair<std::string, std::string>> headers;  // extra ones (Set-Cookie, Location)
+};
+
+class ApiHandler {
+ public:
+  virtual ~ApiHandler() = default;
+  // A request that passed the checks (under /api/: with a valid token).
+  virtual HttpReply handle(const HttpRequest& r) = 0;
+  // Every stream period: the frames ("event: ...\ndata: ...\n\n") for every stream client.
+  virtual void collect(std::vector<std::string>& frames) = 0;
+  // The frames a new stream client gets first (the whole state).
+  virtual std::string stream_start() = 0;
+};
+
+class HttpServer {
+ public:
+  // Binds at once (throws std::system_error when it cannot); port 0 takes a free one.
+  HttpServer(ApiHandler& handler, const std::string& bind_address, std::uint16_t port, std::string token,
+             HttpLimits limits);
+  ~HttpServer();
+  std::uint16_t port() const;
+  // Serves until `stop` is set (looked at every stream period).
+  void run(const std::atomic<bool>& stop);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace nck::app::serve

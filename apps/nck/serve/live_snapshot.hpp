@@ -1,0 +1,48 @@
+#pragma once
+// What the live kernel publishes after every cycle (nck serve): plain data,
+// copied into a triple buffer by the kernel thread and read by the server
+// thread, which turns it into the stream's JSON (docs/api.md).
+#include <array>
+#include <cstdint>
+
+#include "nck/config/machine.hpp"
+#include "nck/kernel/event.hpp"
+#include "nck/kernel/tick_io.hpp"
+
+namespace nck::app::serve {
+
+struct LiveChannel {
+  AxisArray axis_mcs{};
+  double path_velocity_mm_s = 0;
+  double feed_mm_s = 0;  // the motion's programmed velocity
+  kernel::ProgramState program_state = kernel::ProgramState::idle;
+  kernel::CycleCause cause = kernel::CycleCause::none;
+  kernel::WaitReason wait_reason = kernel::WaitReason::plc_ack;
+  kernel::Event at{};  // the block the channel stands at (file_id, line, n)
+  plc::ChannelControl hli{};  // the operator's controls as the HLI holds them
+};
+
+// Cycle lateness: how long after its deadline each cycle started.
+struct Lateness {
+  std::uint64_t wakeups = 0;      // deadlines waited for (one per cycle at speed 1)
+  std::uint64_t late_cycles = 0;  // woke more than one cycle time after the deadline
+  double worst_us = 0;
+  double p50_us = 0, p99_us = 0;  // over the whole session
+};
+
+struct LiveSnapshot {
+  std::uint64_t generation = 0;  // which loaded run (LiveKernel::load)
+  std::uint64_t cycle = 0;       // the run's cycles
+  double t_s = 0;                // the run's simulated time
+  bool paused = false;
+  double speed = 1;              // simulated seconds per wall second (0: as fast as possible)
+  std::size_t channel_count = 0;
+  std::size_t spindle_count = 0;
+  std::array<LiveChannel, config::kMaxChannels> channels{};
+  std::array<kernel::SpindleOutput, kernel::kMaxMachineSpindles> spindles{};
+  std::array<plc::SpindleStatus, kernel::kMaxMachineSpindles> hli_spindles{};
+  Lateness lateness;
+  std::uint64_t events_lost = 0;  // the event ring was full (a server that fell behind)
+};
+
+}  // namespace nck::app::serve

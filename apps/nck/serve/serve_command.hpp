@@ -1,0 +1,30 @@
+#pragma once
+// `nck serve MACHINE [PROGRAM...]`: the kernel live behind the browser HMI
+// and the API (docs/api.md).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace nck::app {
+
+struct ServeOptions {
+  std::string machine;
+  std::vector<std::string> programs;  // loaded at start (channel 1, 2, ...), started by cycle start
+  std::string bind = "127.0.0.1";
+  std::uint16_t port = 8765;           // 0: a free one
+  std::string token_file;              // needed to bind beyond loopback
+  std::vector<std::string> folders;    // --programs DIR: what may be loaded
+  std::string uploads;                 // folder for uploaded programs (default: a new temporary one)
+  std::string speed = "1";             // simulated seconds per wall second, or "max"
+  bool realtime = true;                // ask for SCHED_FIFO and locked memory
+  bool paused = false;
+  std::size_t max_clients = 8;
+  double rate = 50;                    // requests per second per client
+  std::size_t max_program_bytes = 4 * 1024 * 1024;
+  double max_wall_s = 0;               // stop after this many seconds (tests, benchmarks)
+};
+
+// 0 after a stop signal or --max-wall, 2 when it cannot start.
+int serve_command(const ServeOptions& opt);
+
+}  // namespace nck::app

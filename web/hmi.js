@@ -1,0 +1,1 @@
+// nck serve's HMI (placeholder)
