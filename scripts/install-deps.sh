@@ -6,6 +6,7 @@ pkgs=(build-essential g++ cmake ninja-build pkg-config
       libfmt-dev libcli11-dev nlohmann-json3-dev
       libgtest-dev libgmock-dev googletest libbenchmark-dev
       clang-14 libclang-rt-14-dev   # clang 14 + libFuzzer: the fuzz preset
+      libboost1.74-dev              # Boost.Beast + Asio: nck serve
       nodejs chromium)              # the report's uPlot (inlined at build time) and its browser test
 missing=()
 for p in "${pkgs[@]}"; do
