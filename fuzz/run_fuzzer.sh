@@ -2,7 +2,7 @@
 # Runs one libFuzzer target for SECONDS over its seed corpus and prints
 # libFuzzer's final statistics. The seeds come from examples/ and tests/
 # (tests/data/isg-samples holds the ISG sample corpus).
-# usage: fuzz/run_fuzzer.sh FUZZER decoder|list|scenario SECONDS [CORPUS_DIR]
+# usage: fuzz/run_fuzzer.sh FUZZER decoder|list|scenario|api SECONDS [CORPUS_DIR]
 set -euo pipefail
 fuzzer=$1 kind=$2 seconds=$3
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -18,6 +18,9 @@ case "$kind" in
   scenario)
     find "$root/examples" "$root/tests" -type f -name '*.plc' -exec cp -t "$seeds" --backup=numbered {} +
     dict="$root/fuzz/plc.dict" ;;
+  api)
+    cp -t "$seeds" "$root/fuzz/api_seeds"/*
+    dict="$root/fuzz/api.dict" ;;
   *) echo "fuzz: unknown target kind $kind" >&2; exit 2 ;;
 esac
 mkdir -p "$corpus"

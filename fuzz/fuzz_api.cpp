@@ -1,0 +1,30 @@
+// libFuzzer target: any bytes as the body of nck serve's POST /api/v1/command,
+// the whole path up to the kernel: the message checked against its schema,
+// then (an operator command) its scenario line read and resolved against the
+// milling example's machine, as the server does.
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "nck/config/load.hpp"
+#include "nck/sim/operator_action.hpp"
+#include "serve/api_message.hpp"
+
+namespace {
+
+const nck::config::Machine* machine() {
+  static const nck::config::LoadResult loaded = nck::config::load_machine(NCK_SOURCE_DIR "/examples/mill");
+  return loaded.machine ? &*loaded.machine : nullptr;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const nck::config::Machine* m = machine();
+  if (!m) return 0;
+  nck::Diagnostics diags;
+  const auto c = nck::app::serve::parse_api_command(std::string_view(reinterpret_cast<const char*>(data), size),
+                                                    m->channels.size(), diags);
+  if (c && c->kind == nck::app::serve::ApiCommand::Kind::action) (void)nck::sim::parse_operator_action(c->line, *m, diags);
+  return 0;
+}

@@ -1,0 +1,211 @@
+// nck serve's API and its defences, through the real server on 127.0.0.1
+// (docs/api.md). Usage: node tests/serve/api_test.mjs --nck BIN --source DIR --out DIR
+// Starts its own servers on free ports (--port 0) and stops them.
+import { spawn } from "node:child_process";
+import fs from "node:fs";
+import http from "node:http";
+import path from "node:path";
+
+const args = Object.fromEntries(process.argv.slice(2).reduce((acc, a, i, all) => {
+  if (a.startsWith("--")) acc.push([a.slice(2), all[i + 1] ?? "1"]);
+  return acc;
+}, []));
+const nck = path.resolve(args.nck), src = path.resolve(args.source || "."), out = path.resolve(args.out || "serve-test-out");
+fs.rmSync(out, { recursive: true, force: true });
+fs.mkdirSync(out, { recursive: true });
+let failures = 0;
+const check = (name, cond, detail = "") => {
+  if (cond) console.log(`ok   ${name}`);
+  else { failures++; console.error(`FAIL ${name} ${detail}`); }
+};
+const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
+
+// A server; resolves with {port, token, proc} once it printed its URL.
+function startServer(extra) {
+  return new Promise((resolve, reject) => {
+    const proc = spawn(nck, ["serve", "examples/mill", "--port", "0", "--no-realtime", ...extra], { cwd: src });
+    let text = "";
+    proc.stderr.on("data", (d) => process.stderr.write(d));
+    proc.stdout.on("data", (d) => {
+      text += d;
+      const m = text.match(/http:\/\/127\.0\.0\.1:(\d+)\/\?token=([0-9a-f]+)/);
+      if (m) resolve({ port: Number(m[1]), token: m[2], proc });
+    });
+    proc.on("exit", (code) => reject(new Error(`nck serve exited ${code} before its URL`)));
+  });
+}
+
+let agent = new http.Agent({ keepAlive: true, maxSockets: 1 });
+// The keep-alive connection counts as a client: closed between the phases.
+const freshAgent = () => { agent.destroy(); agent = new http.Agent({ keepAlive: true, maxSockets: 1 }); };
+// One request; resolves with {status, headers, body} (body "" on a reset connection).
+function request(s, method, target, { body, headers = {}, token = true, host, useAgent = false } = {}) {
+  return new Promise((resolve) => {
+    const h = host === "" ? { ...headers } : { Host: host ?? `127.0.0.1:${s.port}`, ...headers };
+    if (token) h.Authorization = `Bearer ${s.token}`;
+    if (body !== undefined) h["Content-Length"] = Buffer.byteLength(body);
+    const req = http.request({ host: "127.0.0.1", port: s.port, method, path: target, headers: h,
+                               setHost: false, agent: useAgent ? agent : false }, (res) => {
+      let data = "";
+      res.on("data", (c) => (data += c));
+      res.on("end", () => resolve({ status: res.statusCode, headers: res.headers, body: data }));
+      res.on("error", () => resolve({ status: res.statusCode, headers: res.headers, body: data }));
+    });
+    req.on("error", (e) => resolve({ status: 0, headers: {}, body: String(e) }));
+    if (body !== undefined) req.write(body);
+    req.end();
+  });
+}
+const command = (s, obj, opts = {}) => request(s, "POST", "/api/v1/command", { body: JSON.stringify(obj), ...opts });
+const state = async (s) => JSON.parse((await request(s, "GET", "/api/v1/state")).body);
+const errorId = (r) => { try { return JSON.parse(r.body).error.id; } catch { return null; } };
+
+// Reads a stream for `ms`; resolves with its text.
+function readStream(s, ms) {
+  return new Promise((resolve) => {
+    let text = "";
+    const req = http.get({ host: "127.0.0.1", port: s.port, path: "/api/v1/stream", agent: false,
+                           headers: { Host: `127.0.0.1:${s.port}`, Authorization: `Bearer ${s.token}` } }, (res) => {
+      res.on("data", (c) => (text += c));
+      setTimeout(() => { req.destroy(); resolve({ status: res.statusCode, text }); }, ms);
+    });
+    req.on("error", () => resolve({ status: 0, text }));
+  });
+}
+
+async function authentication(s) {
+  const endpoints = [["GET", "/api/v1/state"], ["GET", "/api/v1/machine"], ["GET", "/api/v1/errors"],
+                     ["GET", "/api/v1/programs"], ["GET", "/api/v1/program?channel=1"], ["GET", "/api/v1/stream"],
+                     ["POST", "/api/v1/command"], ["POST", "/api/v1/upload?name=x.nc"], ["GET", "/api/v1/nothing"]];
+  for (const [m, t] of endpoints) {
+    const r = await request(s, m, t, { token: false, body: m === "POST" ? "{}" : undefined });
+    check(`no token: ${m} ${t} -> 401`, r.status === 401 && errorId(r) === 940304, `${r.status} ${r.body}`);
+    const w = await request(s, m, t, { token: false, headers: { Authorization: "Bearer " + "0".repeat(32) },
+                                      body: m === "POST" ? "{}" : undefined });
+    check(`wrong token: ${m} ${t} -> 401`, w.status === 401, `${w.status}`);
+  }
+  const page = await request(s, "GET", "/", { token: false });
+  check("the page shell needs no token", page.status === 200 && page.body.includes("<html"));
+  const login = await request(s, "GET", `/?token=${s.token}`, { token: false });
+  const cookie = String(login.headers["set-cookie"] ?? "");
+  check("the URL token becomes an HttpOnly SameSite=Strict cookie", login.status === 303 &&
+        cookie.includes(`nck_token=${s.token}`) && cookie.includes("HttpOnly") && cookie.includes("SameSite=Strict"), cookie);
+  check("no referrer leaves the page", login.headers["referrer-policy"] === "no-referrer");
+  const viaCookie = await request(s, "GET", "/api/v1/state", { token: false, headers: { Cookie: `nck_token=${s.token}` } });
+  check("the cookie opens the API", viaCookie.status === 200);
+  const badUrl = await request(s, "GET", "/?token=deadbeef", { token: false });
+  check("a wrong URL token -> 401", badUrl.status === 401);
+}
+
+async function origins(s) {
+  for (const host of ["evil.example:" + s.port, `127.0.0.1:${s.port + 1}`, ""]) {
+    const r = await request(s, "GET", "/api/v1/state", { host });
+    check(`Host '${host}' -> 403`, r.status === 403 && errorId(r) === 940305, `${r.status}`);
+  }
+  const page = await request(s, "GET", "/", { token: false, host: "rebind.example:" + s.port });
+  check("DNS rebinding: the page too -> 403", page.status === 403);
+  const local = await request(s, "GET", "/api/v1/state", { host: `localhost:${s.port}` });
+  check("Host localhost:PORT is served", local.status === 200);
+  const other = await command(s, { command: "feed_override", percent: 50 }, { headers: { Origin: "http://evil.example" } });
+  check("a foreign Origin -> 403", other.status === 403 && errorId(other) === 940305);
+  const own = await command(s, { command: "feed_override", percent: 100 }, { headers: { Origin: `http://127.0.0.1:${s.port}` } });
+  check("the own Origin is served", own.status === 200, own.body);
+}
+
+async function files(s) {
+  for (const program of ["../examples/mill/contour.nc", "/etc/passwd", "link-out.nc", "missing.nc"]) {
+    const r = await command(s, { command: "load", program });
+    check(`load '${program}' refused with 940309`, r.status === 400 && errorId(r) === 940309, r.body);
+  }
+  // An L call out of the allowed folders: refused when the decoder gets there.
+  const up = await request(s, "POST", "/api/v1/upload?name=calls-out.nc", { body: `N10 G0 X1\nN20 L ${path.join(out, "outside", "sub.nc")}\nN30 M30\n` });
+  check("upload a program", up.status === 200, up.body);
+  const load = await command(s, { command: "load", program: "calls-out.nc" });
+  check("load the uploaded program", load.status === 200, load.body);
+  const stream = readStream(s, 2500);
+  await sleep(300);
+  await command(s, { command: "cycle_start" });
+  const seen = await stream;
+  check("an L call outside the folders ends the run with 920120", seen.text.includes('"id":920120'),
+        seen.text.slice(-400));
+  const big = await request(s, "POST", "/api/v1/upload?name=big.nc", { body: "X".repeat(10 * 1024 * 1024) });
+  check("a 10 MB body -> 413 (or the connection closed on it)", big.status === 413 || big.status === 0, `${big.status}`);
+  const bigCommand = await request(s, "POST", "/api/v1/command", { body: " ".repeat(100 * 1024) });
+  check("a 100 KiB command -> 413", bigCommand.status === 413 || bigCommand.status === 0, `${bigCommand.status}`);
+  const alive = await request(s, "GET", "/api/v1/state");
+  check("the server lives on", alive.status === 200);
+}
+
+async function malformed(s) {
+  const bad = ["{", "[]", "null", '{"command":"launch"}', '{"command":"reset","x":1}', '{"command":"feed_override","percent":"fast"}',
+               '{"command":"feed_override","percent":1e99}', '{"command":"jog","axis":"X;rm","direction":"+"}', "\u0000\u00ff",
+               '{"command":"mdi","text":"G0 X1\\nM30"}'];
+  const before = await state(s), t0 = Date.now();
+  let n400 = 0, other = [];
+  for (let i = 0; i < 1000; ++i) {
+    const r = await request(s, "POST", "/api/v1/command", { body: bad[i % bad.length], useAgent: true });
+    if (r.status === 400 && errorId(r) >= 940300) n400++;
+    else other.push(r.status);
+  }
+  const after = await state(s), t1 = Date.now();
+  check("1,000 malformed messages -> 1,000 400s with an ID", n400 === 1000, `${n400} ${other.slice(0, 5)}`);
+  const cycles = after.cycle - before.cycle, expected = (t1 - t0) / 1000 / 0.001;
+  // the two state reads bracket the interval: allow their own latency
+  check("no cycle skipped meanwhile (cycles = elapsed / 1 ms within 1 %)", Math.abs(cycles - expected) <= 0.01 * expected + 20,
+        `${cycles} cycles in ${t1 - t0} ms`);
+}
+
+async function rate(s) {
+  let ok = 0, limited = 0;
+  const t0 = Date.now();
+  for (let i = 0; i < 200; ++i) {
+    const r = await command(s, { command: "feed_override", percent: 100 }, { useAgent: true });
+    if (r.status === 200) ok++;
+    else if (r.status === 429 && errorId(r) === 940307) limited++;
+  }
+  const seconds = (Date.now() - t0) / 1000;
+  check("200 commands in about a second: 50/s served, the rest 429", limited > 0 && ok <= 50 + 50 * seconds + 1 && ok + limited === 200,
+        `${ok} ok, ${limited} limited in ${seconds} s`);
+}
+
+async function clients(s) {
+  for (let i = 0; i < 20; ++i) await readStream(s, 30);  // each one leaves mid-stream
+  await sleep(200);
+  const streams = await Promise.all(Array.from({ length: 8 }, () => readStream(s, 1200)));
+  check("8 streams after 20 that left: all served", streams.every((x) => x.status === 200), streams.map((x) => x.status).join());
+  const rates = streams.map((x) => (x.text.match(/event: state/g) || []).length / 1.2);
+  check("each stream gets >= 30 states per second", rates.every((r) => r >= 30), rates.map((r) => r.toFixed(1)).join());
+  const held = Array.from({ length: 8 }, () => readStream(s, 800));
+  await sleep(200);
+  const ninth = await request(s, "GET", "/api/v1/state");
+  check("a ninth client -> 503 with 940308", ninth.status === 503 && errorId(ninth) === 940308, `${ninth.status}`);
+  await Promise.all(held);
+}
+
+async function main() {
+  fs.mkdirSync(path.join(out, "programs"), { recursive: true });
+  fs.mkdirSync(path.join(out, "outside"), { recursive: true });
+  fs.writeFileSync(path.join(out, "outside", "sub.nc"), "G0 X2\nM17\n");
+  fs.symlinkSync(path.join(out, "outside", "sub.nc"), path.join(out, "programs", "link-out.nc"));
+  const s = await startServer(["--programs", path.join(out, "programs"), "--uploads", path.join(out, "uploads")]);
+  try {
+    await authentication(s);
+    await origins(s);
+    await files(s);
+    await rate(s);
+    freshAgent();
+    await clients(s);
+  } finally {
+    s.proc.kill("SIGTERM");
+  }
+  const fast = await startServer(["--rate", "100000"]);
+  try {
+    await malformed(fast);
+  } finally {
+    fast.proc.kill("SIGTERM");
+  }
+  agent.destroy();
+  console.log(failures ? `${failures} check(s) failed` : "all checks passed");
+  process.exit(failures ? 1 : 0);
+}
+main().catch((e) => { console.error(e); process.exit(1); });
