@@ -25,6 +25,10 @@ motion::AxisVector to_pcs(const kernel::AffineMap& f, const motion::AxisVector& 
   return pcs;
 }
 
+bool busy(kernel::ProgramState st) {
+  return st != kernel::ProgramState::idle && st != kernel::ProgramState::ended && st != kernel::ProgramState::error;
+}
+
 json channel_json(const LiveChannel& c, const config::ChannelConfig& cfg, const sim::DryRun& run, std::size_t ch,
                   const kernel::AffineMap& frame) {
   json mcs = json::object(), pcs = json::object();
@@ -43,7 +47,8 @@ json channel_json(const LiveChannel& c, const config::ChannelConfig& cfg, const 
             {"pcs", std::move(pcs)},
             {"path_velocity_mm_s", c.path_velocity_mm_s},
             {"feed_mm_s", c.feed_mm_s},
-            {"cause", cause_name(c.cause)},
+            // an idle channel's cycles go to nothing (time by cause would call them starved)
+            {"cause", busy(c.program_state) ? json(cause_name(c.cause)) : json()},
             {"block", std::move(block)},
             {"feed_override_pct", c.hli.feed_override_percent},
             {"feedhold", c.hli.feedhold},
