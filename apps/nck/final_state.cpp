@@ -14,6 +14,16 @@ namespace {
 
 using nlohmann::json;
 
+// The D in force and the radius tool radius compensation takes from it.
+json tool_json(const config::Machine& m, std::size_t channel, std::int64_t d) {
+  double radius_mm = 0;
+  if (channel < m.channel_data.size() && d > 0 && static_cast<std::size_t>(d) < m.channel_data[channel].tools.size())
+    radius_mm = m.channel_data[channel].tools[static_cast<std::size_t>(d)].radius_mm;
+  return json{{"d", d}, {"radius_mm", radius_mm}};
+}
+
+}  // namespace
+
 std::string motion_name(nc::Motion m) {
   switch (m) {
     case nc::Motion::rapid: return "G0";
@@ -28,7 +38,7 @@ std::string motion_name(nc::Motion m) {
   return "G0";
 }
 
-json modal_json(const nc::ModalState& m) {
+nlohmann::json modal_json(const nc::ModalState& m) {
   return json{{"motion", motion_name(m.motion)},
               {"plane", fmt::format("G{}", static_cast<int>(m.plane))},
               {"distance", m.absolute ? "G90" : "G91"},
@@ -43,16 +53,6 @@ json modal_json(const nc::ModalState& m) {
                                                    : fmt::format("G159={}", m.zero_offset)},
               {"F", m.feed_mm_min}};
 }
-
-// The D in force and the radius tool radius compensation takes from it.
-json tool_json(const config::Machine& m, std::size_t channel, std::int64_t d) {
-  double radius_mm = 0;
-  if (channel < m.channel_data.size() && d > 0 && static_cast<std::size_t>(d) < m.channel_data[channel].tools.size())
-    radius_mm = m.channel_data[channel].tools[static_cast<std::size_t>(d)].radius_mm;
-  return json{{"d", d}, {"radius_mm", radius_mm}};
-}
-
-}  // namespace
 
 std::optional<std::string> write_final(const std::string& path, const config::Machine& m,
                                        const sim::DryRun& run, double time_s, const std::string& end_reason,

@@ -83,6 +83,9 @@ struct FinalError {
 };
 
 // The error text when it cannot be written.
+// The modal state as --final writes it ("motion": "G1", "plane": "G17" ...).
+nlohmann::json modal_json(const nc::ModalState& m);
+
 std::optional<std::string> write_final(const std::string& path, const config::Machine& m,
                                        const sim::DryRun& run, double time_s, const std::string& end_reason,
                                        const std::vector<FinalError>& errors,

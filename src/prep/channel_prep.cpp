@@ -18,7 +18,8 @@ ChannelPrep::ChannelPrep(const config::Machine& m, std::size_t ch, const std::fi
               m.cycle_time_us * 1e-6),
       trc_(m, ch),
       store_(&store),
-      record_frames_(options.record_frames) {
+      record_frames_(options.record_frames),
+      record_modal_(options.record_modal) {
   window_.set_blend_axes(planner_->blend_axes());
   nc::DecoderConfig cfg = decoder_config(m, ch);
   cfg.stop = options.stop;
@@ -277,8 +278,11 @@ std::uint32_t ChannelPrep::frame_index_now() {
   const kernel::AffineMap m = planner_->frames().affine(frames::SuppressMask::none());
   if (frame_index_ != kernel::kNoMessage) {
     const kernel::AffineMap& last = store_->frames[frame_index_];
-    if (last.rot == m.rot && last.shift == m.shift && last.main == m.main) return frame_index_;
+    const bool same_modal = !record_modal_ || store_->frame_modals[frame_index_] == planner_->modal();
+    if (last.rot == m.rot && last.shift == m.shift && last.main == m.main && same_modal) return frame_index_;
   }
+  // one writer: the modal state is in place before the map's index is published
+  if (record_modal_) (void)store_->frame_modals.push_back(planner_->modal());
   return frame_index_ = store_->add_frame(m);
 }
 

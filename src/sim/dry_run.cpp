@@ -21,7 +21,7 @@ std::expected<DryRun, Diagnostic> DryRun::create(const config::Machine& m,
   for (std::size_t ch = 0; ch < run.machine_->channels.size(); ++ch) {
     const bool has_program = ch < programs.size();
     prep::PrepOptions prep{options.clamp_index, options.record_frames, options.stop, std::nullopt,
-                           options.allowed_roots};
+                           options.allowed_roots, options.record_modal};
     if (ch == options.search_channel && has_program) prep.search = options.search;
     run.preps_.emplace_back(*run.machine_, ch, has_program ? programs[ch] : std::filesystem::path(), *run.store_,
                             prep);
@@ -197,6 +197,10 @@ const prep::OffsetPayload& DryRun::offset(std::uint32_t index) const {
 const prep::LinkPayload& DryRun::link(std::uint32_t index) const {
   static const prep::LinkPayload none;
   return index < store_->links.size() ? store_->links[index] : none;
+}
+
+const nc::ModalState* DryRun::modal(std::uint32_t index) const {
+  return index < store_->frame_modals.size() ? &store_->frame_modals[index] : nullptr;
 }
 
 const kernel::AffineMap* DryRun::frame(std::uint32_t index) const {

@@ -185,6 +185,7 @@ std::expected<std::unique_ptr<sim::DryRun>, Diagnostic> ServeApi::make_run(
     const std::optional<prep::SearchMark>& search, std::size_t search_channel) const {
   sim::DryRunOptions o;
   o.record_frames = true;  // positions in program coordinates
+  o.record_modal = true;
   o.prep_thread = true;
   o.allowed_roots = folders_.roots();
   o.search = search;
@@ -241,7 +242,11 @@ void ServeApi::drain_events(std::vector<std::string>& frames) {
     if (le.generation > generation_) advance();  // every event of the old run came before
     const kernel::Event& e = le.event;
     if (e.kind == kernel::EventKind::block && e.message_index != kernel::kNoMessage && e.channel >= 1)
-      if (const kernel::AffineMap* f = serving_->frame(e.message_index)) frames_[e.channel - 1u] = *f;
+      if (const kernel::AffineMap* f = serving_->frame(e.message_index)) {
+        BlockContext& b = frames_[e.channel - 1u];
+        b.frame = *f;
+        if (const nc::ModalState* m = serving_->modal(e.message_index)) b.modal = *m;
+      }
     batch += batch.empty() ? "[" : ",";
     batch += EventWriter::line(e, RunNames{serving_});
   }

@@ -30,11 +30,11 @@ bool busy(kernel::ProgramState st) {
 }
 
 json channel_json(const LiveChannel& c, const config::ChannelConfig& cfg, const sim::DryRun& run, std::size_t ch,
-                  const kernel::AffineMap& frame) {
+                  const BlockContext& context) {
   json mcs = json::object(), pcs = json::object();
   motion::AxisVector set{};
   for (std::size_t j = 0; j < cfg.axes.size() && j < set.size(); ++j) set[j] = c.axis_mcs[j];
-  const motion::AxisVector program = to_pcs(frame, set, cfg.axes.size());
+  const motion::AxisVector program = to_pcs(context.frame, set, cfg.axes.size());
   for (std::size_t j = 0; j < cfg.axes.size() && j < set.size(); ++j) {
     mcs[cfg.axes[j].name] = set[j];
     pcs[cfg.axes[j].name] = program[j];
@@ -57,6 +57,7 @@ json channel_json(const LiveChannel& c, const config::ChannelConfig& cfg, const 
             {"manual_mode", c.hli.manual_mode},
             {"skip_mask", c.hli.skip_mask}};
   j["wait"] = c.cause == kernel::CycleCause::wait ? json(wait_reason_name(c.wait_reason)) : json();
+  j["modal"] = context.modal ? json(modal_json(*context.modal)) : json();
   return j;
 }
 

@@ -39,6 +39,8 @@ struct ModalState {
   bool contour = false;                 // G261 (true) / G260 (false, initial): corner blending
   double contour_dev_mm = 0.01;         // #CONTOUR MODE [DEV PATH_DEV=..] (docs/decisions.md)
   bool trc_arc_corners = false;         // G26 (true) / G25 (false, initial): TRC outside corners
+
+  bool operator==(const ModalState&) const = default;
 };
 
 }  // namespace nck::nc

@@ -45,6 +45,8 @@ struct PrepOptions {
   std::optional<SearchMark> search;
   // nck serve: the folders every file the program opens must lie in (nc::DecoderConfig::allowed_roots).
   std::vector<std::filesystem::path> allowed_roots;
+  // With record_frames: each map comes with the modal state (PlanStore::frame_modals).
+  bool record_modal = false;
 };
 
 class ChannelPrep {
@@ -158,6 +160,7 @@ class ChannelPrep {
   std::uint32_t last_main_line_ = 0;  // of the main program's last block decoded
   PlanStore* store_ = nullptr;
   bool record_frames_ = false;  // and the last map put there:
+  bool record_modal_ = false;   // with the modal state
   std::uint32_t frame_index_ = kernel::kNoMessage;
   PrepObserver* observer_ = nullptr;
   std::uint32_t frame_index_now();

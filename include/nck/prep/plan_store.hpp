@@ -10,6 +10,7 @@
 #include "nck/core/append_log.hpp"
 #include "nck/core/diagnostic.hpp"
 #include "nck/kernel/affine_map.hpp"
+#include "nck/nc/modal.hpp"
 #include "nck/prep/planned_command.hpp"
 
 namespace nck::prep {
@@ -32,6 +33,9 @@ struct PlanStore {
   // Program -> machine maps of executed blocks (block events' message_index),
   // recorded only for a report (PrepOptions::record_frames).
   AppendLog<kernel::AffineMap> frames;
+  // With PrepOptions::record_modal: the modal state after the block, at the
+  // same index as its map (a live kernel's HMI shows it).
+  AppendLog<nc::ModalState> frame_modals;
 
   std::uint32_t add_message(std::string m) { return static_cast<std::uint32_t>(messages.push_back(std::move(m))); }
   std::uint32_t add_offset(OffsetPayload p) { return static_cast<std::uint32_t>(offsets.push_back(std::move(p))); }

@@ -45,6 +45,7 @@ struct DryRunOptions {
   std::size_t search_channel = 0;
   // nck serve: the folders every file a program opens must lie in (empty: any).
   std::vector<std::filesystem::path> allowed_roots;
+  bool record_modal = false;  // with record_frames: the modal state of each block (nck serve)
 };
 
 // What a channel knows about its programmed state, for --final.
@@ -131,6 +132,8 @@ class DryRun {
   const prep::LinkPayload& link(std::uint32_t index) const;
   // A block event's program -> machine map (record_frames; nullptr: none).
   const kernel::AffineMap* frame(std::uint32_t index) const;
+  // The modal state recorded with that map (record_modal; nullptr: none).
+  const nc::ModalState* modal(std::uint32_t index) const;
   // setup: watches channel ch's decoded blocks (the report's programmed contour).
   void observe(std::size_t ch, prep::PrepObserver* o) { preps_.at(ch).set_observer(o); }
 
