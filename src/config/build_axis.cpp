@@ -51,11 +51,36 @@ void read_gear(const ParamList& l, std::size_t g, GearStage& s, Diagnostics& d) 
   s.encoder_ratio_denom = encoder_part(l, k("wegaufn"), ErrorId::ConfigWegaufnZero, d);
   s.reverse_sense = l.flag(k("reverse"), s.reverse_sense);
   s.slope_type = l.u32(k("slope_type"), s.slope_type);
+  s.tr_acc_down_s = l.num(k("slope_profil.tr_beschl_ab"), s.tr_acc_down_s);
+  s.tr_acc_up_s = l.num(k("slope_profil.tr_beschl_zu"), s.tr_acc_up_s);
+  s.tr_dec_down_s = l.num(k("slope_profil.tr_brems_ab"), s.tr_dec_down_s);
+  s.tr_dec_up_s = l.num(k("slope_profil.tr_brems_zu"), s.tr_dec_up_s);
+  s.tr_geom_s = l.num(k("dynamik.tr_geom"), s.tr_geom_s);
+  s.tr_rapid_s = l.num(k("slope_profil.tr_grenz"), s.tr_rapid_s);
+  s.tr_min_s = l.num(k("dynamik.tr_min"), s.tr_min_s);
   s.multi_gain_z = l.u32(k("multi_gain_z"), s.multi_gain_z);
   s.multi_gain_n = l.u32(k("multi_gain_n"), s.multi_gain_n);
   s.modulo_error_incr = static_cast<std::int32_t>(l.num(k("modulo_fehler"), 0));
   s.modulo_revolutions = static_cast<std::int32_t>(l.num(k("modulo_umdreh"), 0));
   read_curve(l, g, s.curve);
+}
+
+// The ramp times of the jerk-limited slopes may not undercut the drive's
+// tr_min (P-AXIS-00201): a shorter ramp would ask for more jerk than it
+// allows. The error points at the ramp time, or at tr_min when only that
+// is given (a default ramp time below a raised tr_min).
+void check_ramp_times(const ParamList& l, std::size_t g, const GearStage& s, Diagnostics& d) {
+  auto k = [g](std::string_view r) { return gkey(g, r); };
+  const std::string min_key = k("dynamik.tr_min");
+  for (auto [key, v] : {std::pair{k("slope_profil.tr_beschl_ab"), s.tr_acc_down_s},
+                        {k("slope_profil.tr_beschl_zu"), s.tr_acc_up_s}, {k("slope_profil.tr_brems_ab"), s.tr_dec_down_s},
+                        {k("slope_profil.tr_brems_zu"), s.tr_dec_up_s}, {k("slope_profil.tr_grenz"), s.tr_rapid_s}}) {
+    if (v >= s.tr_min_s) continue;
+    const ParamValue* at = l.find(key) ? l.find(key) : l.find(min_key);
+    if (!at) continue;
+    d.add(ErrorId::ConfigRampBelowMin, at->loc,
+          fmt::format("{} = {:.0f} µs is below {} = {:.0f} µs", key, v * 1e6, min_key, s.tr_min_s * 1e6));
+  }
 }
 
 // Parameter relations of one gear stage (ranges that name another parameter).
@@ -73,6 +98,7 @@ void check_gear(const ParamList& l, const AxisConfig& a, std::size_t g, Diagnost
                         {k("slope_profil.a_grenz"), s.rapid_accel_mm_s2}, {k("beschl_kennlinie.a_max"), s.curve.a_max_deg_s2}})
     cross_check(l, key, amax, v <= s.a_max,
                 fmt::format("{} must not exceed {}", show(key, v), show(amax, s.a_max)), d);
+  check_ramp_times(l, g, s, d);
   cross_check(l, k("dynamik.a_emergency"), amax, s.a_emergency <= 2 * s.a_max,
               fmt::format("{} must not exceed 2 x {}", k("dynamik.a_emergency"), amax), d);
   if (a.is_modulo())

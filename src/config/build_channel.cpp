@@ -255,6 +255,7 @@ void read_switches(const ParamList& l, ChannelConfig& c) {
   for (std::size_t i = 0; i < c.trafo_ids.size(); ++i) c.trafo_ids[i] = l.u32(fmt::format("trafo[{}].id", i), 0);
   c.move_tool_offsets_directly = l.flag("move_tool_offsets_directly", false);
   c.exact_stop_after_g00 = l.flag("exact_stop_after_g00", false);
+  c.slope_profile = slope_from_number(l.u32("prog_start.slope.profile", 0)).value_or(SlopeProfile::step);
   c.single_step_mode = static_cast<std::int8_t>(l.num("einzelschrittmodus", 0));
   c.lookahead_blocks = l.u32("configuration.interpolator.number_blocks_lah", c.lookahead_blocks);
   for (auto n : l.indices("m_synch[")) c.m_synch[n] = l.u32(fmt::format("m_synch[{}]", n), 0);

@@ -14,6 +14,7 @@ constexpr double kMinShare = 1e-12;
 
 void limit_by_share(PathLimits& out, const AxisDynamics& ax, double share) noexcept {
   if (!(share > kMinShare)) return;
+  out.tr = longest(out.tr, ax.tr);
   out.v_max_mm_s = std::min(out.v_max_mm_s, ax.v_max_mm_s / share);
   out.a_acc_mm_s2 = std::min(out.a_acc_mm_s2, ax.a_acc_mm_s2 / share);
   out.a_dec_mm_s2 = std::min(out.a_dec_mm_s2, ax.a_dec_mm_s2 / share);
@@ -29,7 +30,8 @@ PathLimits standstill_limits(const Segment& seg, std::span<const AxisDynamics> a
   return out;
 }
 
-void add_arc_plane(PathLimits& out, const Segment& seg, std::span<const AxisDynamics> axes) noexcept {
+void add_arc_plane(PathLimits& out, const Segment& seg, std::span<const AxisDynamics> axes,
+                   SlopeProfile slope) noexcept {
   const std::size_t a = seg.plane_a(), b = seg.plane_b();
   if (a >= axes.size() || b >= axes.size()) return;
   const AxisDynamics& da = axes[a];
@@ -45,22 +47,48 @@ void add_arc_plane(PathLimits& out, const Segment& seg, std::span<const AxisDyna
   const double split = std::numbers::sqrt2;
   const double r = std::min(seg.radius_start(), seg.radius_end());
   const double v_centripetal = std::sqrt(std::max(any_plane, 0.0) * r / split);
-  out.v_max_mm_s = std::min(out.v_max_mm_s, std::min(v_plane, v_centripetal) / plane_share);
-  out.a_acc_mm_s2 = std::min(out.a_acc_mm_s2, acc_plane / split / plane_share);
-  out.a_dec_mm_s2 = std::min(out.a_dec_mm_s2, dec_plane / split / plane_share);
+  double v_arc = std::min(v_plane, v_centripetal);
+  double acc_t = acc_plane / split, dec_t = dec_plane / split;
+  out.tr = longest(out.tr, longest(da.tr, db.tr));
+  if (jerk_limited(slope)) {
+    // The contour's jerk per plane axis: v^3/r^2 (the turning centripetal
+    // acceleration) and 3 v a_t / r (speeding up while turning), each
+    // given half of what the path's own jerk leaves of a/tr.
+    const RampTimes& t = out.tr;
+    const double tr = std::max({t.acc_up_s, t.acc_down_s, t.dec_up_s, t.dec_down_s, da.tr_geom_s, db.tr_geom_s});
+    const double j_geom = tr > 0 ? (1.0 - 1.0 / split) / 2.0 * any_plane / tr : kInf;
+    v_arc = std::min(v_arc, std::cbrt(j_geom * r * r));
+    const double a_t = v_arc > 0 ? j_geom * r / (3.0 * v_arc) : kInf;
+    acc_t = std::min(acc_t, a_t);
+    dec_t = std::min(dec_t, a_t);
+  }
+  out.v_max_mm_s = std::min(out.v_max_mm_s, v_arc / plane_share);
+  out.a_acc_mm_s2 = std::min(out.a_acc_mm_s2, acc_t / plane_share);
+  out.a_dec_mm_s2 = std::min(out.a_dec_mm_s2, dec_t / plane_share);
 }
 
 }  // namespace
+
+JerkLimits jerk_limits(const PathLimits& l) noexcept {
+  return JerkLimits{l.a_acc_mm_s2, l.a_dec_mm_s2, l.tr.acc_up_s, l.tr.acc_down_s,
+                    l.tr.dec_up_s,   l.tr.dec_down_s, l.slope == SlopeProfile::sin2};
+}
+
+RampTimes longest(const RampTimes& a, const RampTimes& b) noexcept {
+  return RampTimes{std::max(a.acc_up_s, b.acc_up_s), std::max(a.acc_down_s, b.acc_down_s),
+                   std::max(a.dec_up_s, b.dec_up_s), std::max(a.dec_down_s, b.dec_down_s)};
+}
 
 bool valid(const PathLimits& l) noexcept {
   auto ok = [](double x) { return std::isfinite(x) && x > 0.0; };
   return ok(l.v_max_mm_s) && ok(l.a_acc_mm_s2) && ok(l.a_dec_mm_s2);
 }
 
-PathLimits path_limits(const Segment& seg, std::span<const AxisDynamics> axes) noexcept {
+PathLimits path_limits(const Segment& seg, std::span<const AxisDynamics> axes, SlopeProfile slope) noexcept {
   const double len = seg.length();
   if (!(len > 0.0)) return standstill_limits(seg, axes);
   PathLimits out{kInf, kInf, kInf};
+  out.slope = slope;
   const bool arc = seg.kind() == SegmentKind::arc;
   const std::size_t n = std::min(seg.axis_count(), axes.size());
   const AxisVector& p0 = seg.start_point();
@@ -69,7 +97,7 @@ PathLimits path_limits(const Segment& seg, std::span<const AxisDynamics> axes) n
     if (arc && (i == seg.plane_a() || i == seg.plane_b())) continue;
     limit_by_share(out, axes[i], std::abs(p1[i] - p0[i]) / len);
   }
-  if (arc) add_arc_plane(out, seg, axes);
+  if (arc) add_arc_plane(out, seg, axes, slope);
   return out;
 }
 

@@ -63,6 +63,8 @@ void PathProfile::reset() noexcept {
   v_mm_s_ = 0.0;
   carry_mm_ = 0.0;
   finished_ = true;
+  jerk_ = false;
+  a_mm_s2_ = carry_s_ = 0.0;
 }
 
 bool PathProfile::start(double length_mm, double v_cmd_mm_s, const PathLimits& limits,
@@ -100,8 +102,14 @@ bool PathProfile::start(double length_mm, double v_cmd_mm_s, const PathLimits& l
   v_cmd_mm_s_ = std::min(v_cmd_mm_s, limits.v_max_mm_s);
   beyond_dt_s_ = 0.0;  // recomputed at the first step
   if (positive_finite(v_end_mm_s)) v_end_mm_s_ = std::min(v_end_mm_s, v_cmd_mm_s_);
-  s_mm_ = std::min(carry, length_mm);
   finished_ = false;
+  jerk_ = jerk_limited(limits.slope) && valid(jerk_limits(limits));
+  if (jerk_) {
+    start_jerk(carry, passing);
+    return true;
+  }
+  a_mm_s2_ = carry_s_ = 0.0;
+  s_mm_ = std::min(carry, length_mm);
   return true;
 }
 
@@ -110,6 +118,12 @@ void PathProfile::set_end_velocity(double v_end_mm_s) noexcept {
   if (v == v_end_mm_s_) return;
   v_end_mm_s_ = v;
   beyond_dt_s_ = 0.0;  // the braking curve's end point moves
+}
+
+bool PathProfile::stop_fits(double dt_s) const noexcept {
+  const double left_mm = remaining();
+  if (jerk_) return change_distance(v_mm_s_, a_mm_s2_, 0.0, jerk_limits(limits_)) <= left_mm + kSnapMm;
+  return v_mm_s_ <= discrete_brake_velocity(left_mm, limits_.a_dec_mm_s2, dt_s);
 }
 
 void PathProfile::limit_first_step(double a_mm_s2) noexcept {
@@ -143,8 +157,10 @@ ProfileSample PathProfile::step(double dt_s, double override_factor) noexcept {
     // Stepping past the end means the path stopped there.
     v_mm_s_ = 0.0;
     carry_mm_ = 0.0;
+    a_mm_s2_ = carry_s_ = 0.0;
     return ProfileSample{s_mm_, 0.0, 0.0, true};
   }
+  if (jerk_) return step_jerk(dt_s, override_factor);
   if (!positive_finite(dt_s)) return ProfileSample{s_mm_, v_mm_s_, 0.0, false};
   const double v_prev = v_mm_s_;
   const double left_mm = length_mm_ - s_mm_;

@@ -55,6 +55,7 @@ struct Words {
   At<double> dwell_direct;       // G4 <value>
   At<double> time_s;             // #TIME <value>
   At<double> contour_dev;        // #CONTOUR MODE [DEV PATH_DEV=<value>]
+  At<SlopeProfile> slope;        // #SLOPE [TYPE=..], #SLOPE DEFAULT, #SET SLOPE PROFIL[n]
   // DIN attributes of the main spindle.
   At<double> s_pos, s_pos_shift, s_offset;
   std::uint32_t din_spindle_pos = 0;

@@ -19,6 +19,7 @@ Decoder::Impl::Impl(DecoderConfig c)
       bctx{cfg, x, main_target, {}, {}, 0, false},
       cache(cfg.use_cached_files, cfg.max_cache_number, cfg.max_cache_size_kb),
       meter(cfg.max_lines_read, cfg.stop) {
+  modal.slope = cfg.slope_default;
   for (const auto& a : cfg.axis_names) bctx.axis_upper.push_back(to_upper(a));
   for (const auto& a : cfg.axis_aliases) bctx.alias_upper.push_back(to_upper(a));
 }

@@ -288,6 +288,8 @@ struct HashEntry {
 
 constexpr HashEntry kHashCommands[] = {
     {{"SET", "AX", "LINK"}, parse_set_ax_link},
+    {{"SET", "SLOPE", "PROFIL"}, parse_set_slope_profil},
+    {{"SLOPE"}, parse_slope},
     {{"AX", "LINK"}, parse_ax_link},
     {{"ENABLE", "AX", "LINK"}, parse_enable_ax_link},
     {{"DISABLE", "AX", "LINK"}, parse_disable_ax_link},
@@ -318,7 +320,7 @@ constexpr HashEntry kHashCommands[] = {
 // `c` after the '#'; returns "#RT CYCLE", "#MC_MOVEPATH" ... or "".
 std::string unsupported_hash(Cursor c) {
   static constexpr std::array<std::string_view, 2> kPhrases[] = {
-      {"RT", "CYCLE"}, {"WAIT", "SYN"}, {"SIGNAL", "SYN"}, {"HSC", ""}, {"SLOPE", ""},
+      {"RT", "CYCLE"}, {"WAIT", "SYN"}, {"SIGNAL", "SYN"}, {"HSC", ""},
         {"TRAFO", ""},   {"CHANNEL", "INIT"}, {"FILE", "NAME"}, {"RETAIN", "CYCLE"}};
   c.skip_spaces();
   if ((upper(c.peek()) == 'M' && upper(c.peek(1)) == 'C' && c.peek(2) == '_'))

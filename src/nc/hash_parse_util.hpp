@@ -75,6 +75,9 @@ bool parse_suppress_offsets(HashCtx& h); // #SUPPRESS OFFSETS
 bool parse_tlc(HashCtx& h);              // #TLC
 // contour_mode_syntax.cpp: #CONTOUR MODE [DEV PATH_DEV=..] (corner blending)
 bool parse_contour_mode(HashCtx& h);
+// slope_syntax.cpp: #SLOPE [TYPE=..] / #SLOPE DEFAULT, #SET SLOPE PROFIL[n]
+bool parse_slope(HashCtx& h);
+bool parse_set_slope_profil(HashCtx& h);
 // dist_ctrl_syntax.cpp: #DIST CTRL
 bool parse_dist_ctrl(Cursor& c, BlockCtx& b, std::size_t pos, HashCommand& out);
 

@@ -193,6 +193,7 @@ bool apply_words(Words& w, BlockCtx& b, ModalState& modal, Block& out) {
   }
   if (w.time_s.v) out.dwell_s = w.time_s.v;
   if (w.contour_dev.v) modal.contour_dev_mm = *w.contour_dev.v;
+  if (w.slope.v) modal.slope = *w.slope.v;
   PSet* pset = w.hash ? std::get_if<PSet>(&*w.hash) : nullptr;
   PReset* preset = w.hash ? std::get_if<PReset>(&*w.hash) : nullptr;
   if (w.axis_count) {

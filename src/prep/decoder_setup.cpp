@@ -32,6 +32,7 @@ nc::DecoderConfig decoder_config(const config::Machine& m, std::size_t ch) {
   if (d.main_spindle.empty() || c.main_spindle_ax_nr == 0)
     d.main_spindle = c.spindles.empty() ? std::string() : c.spindles.front().name;
   d.main_spindle_name = c.main_spindle_name.empty() ? "S" : c.main_spindle_name;
+  d.slope_default = c.slope_profile;
   // The one place machine data switches decoder functions on or off.
   // P-CHAN-00507/00508: only the functions of the run's start mode.
   const std::uint32_t fct = c.decoder_functions();

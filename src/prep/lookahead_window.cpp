@@ -97,6 +97,10 @@ void LookAheadWindow::raise_chain(std::uint64_t next) {
 // than planned; the margins keep its braking within a_dec nonetheless.
 double LookAheadWindow::entry_limit(const PlannedCommand& c) const {
   const double length = c.segment.length(), a = c.limits.a_dec_mm_s2;
+  // A jerk-limited profile passes a transition at its planned speed with
+  // acceleration 0 and carries the exact time: no margins.
+  if (jerk_limited(c.limits.slope) && motion::valid(motion::jerk_limits(c.limits)))
+    return motion::jerk_entry_velocity(length, c.v_end_mm_s, motion::jerk_limits(c.limits));
   const double v = motion::entry_velocity_limit(length, c.v_end_mm_s, a, cycle_s_);
   const double shorter = std::max(length - v * cycle_s_, 0.0);
   return std::max(motion::entry_velocity_limit(shorter, c.v_end_mm_s, a, cycle_s_) - a * cycle_s_, 0.0);
@@ -119,6 +123,23 @@ motion::PathLimits LookAheadWindow::fillet_limits(const motion::Segment& fillet,
   l.v_max_mm_s = std::min({da.v_max_mm_s, db.v_max_mm_s,
                            std::sqrt(std::sqrt(1 - kTangentialShare * kTangentialShare) * a * r)});
   l.a_acc_mm_s2 = l.a_dec_mm_s2 = kTangentialShare * a;
+  return l;
+}
+
+// Under a jerk-limited slope a fillet also keeps the contour's jerk within
+// what path_limits allows an arc (motion/limits.hpp): the lower speed and
+// tangential acceleration of the two, the ramp times of the blocks.
+motion::PathLimits LookAheadWindow::jerk_fillet_limits(const motion::Segment& fillet,
+                                                       std::span<const motion::AxisDynamics> dyn,
+                                                       const motion::PathLimits& before) {
+  motion::PathLimits l = fillet_limits(fillet, dyn);
+  if (!jerk_limited(before.slope)) return l;
+  const motion::PathLimits arc = motion::path_limits(fillet, dyn, before.slope);
+  l.v_max_mm_s = std::min(l.v_max_mm_s, arc.v_max_mm_s);
+  l.a_acc_mm_s2 = std::min(l.a_acc_mm_s2, arc.a_acc_mm_s2);
+  l.a_dec_mm_s2 = std::min(l.a_dec_mm_s2, arc.a_dec_mm_s2);
+  l.slope = before.slope;
+  l.tr = motion::longest(before.tr, arc.tr);
   return l;
 }
 
@@ -180,7 +201,7 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   f.n = p.command.n;
   f.emit_block_event = false;  // a follow-up of the block before
   f.segment = cb->fillet;
-  f.limits = fillet_limits(cb->fillet, dyn);
+  f.limits = jerk_fillet_limits(cb->fillet, dyn, p.command.limits);
   f.v_cmd_mm_s = std::min(p.command.v_cmd_mm_s, next.v_cmd_mm_s);
   f.css = p.command.css;
   f.feed_motion = true;

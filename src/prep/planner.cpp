@@ -221,7 +221,7 @@ Planner::Planned Planner::plan_motion(const nc::Block& b, PlannedCommand c, Plan
   }
   c.kind = CommandKind::motion;
   manual_.moved(b, mask, ctx);
-  c.limits = motion::path_limits(c.segment, std::span<const motion::AxisDynamics>(dyn.data(), n_axes_));
+  c.limits = motion::path_limits(c.segment, std::span<const motion::AxisDynamics>(dyn.data(), n_axes_), b.modal.slope);
   cax_.limit_transformed(c, dyn, n_axes_);
   if (!motion::valid(c.limits)) return block_error(ErrorId::KernelBadDynamics, b, "the axes of this block cannot move");
   switch (speed.kind) {
@@ -271,7 +271,8 @@ PlanResult Planner::plan_arc(const nc::Block& b, PlannedCommand& c, const motion
     if (k >= 0) {
       const auto& d = dyn[static_cast<std::size_t>(k)];
       lo = {std::min(lo.v_max_mm_s, d.v_max_mm_s), std::min(lo.a_acc_mm_s2, d.a_acc_mm_s2),
-            std::min(lo.a_dec_mm_s2, d.a_dec_mm_s2)};
+            std::min(lo.a_dec_mm_s2, d.a_dec_mm_s2), motion::longest(lo.tr, d.tr),
+            std::max(lo.tr_geom_s, d.tr_geom_s)};
     }
   for (int k : map.main)
     if (k >= 0) dyn[static_cast<std::size_t>(k)] = lo;

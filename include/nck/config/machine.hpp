@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "nck/core/axes.hpp"
+#include "nck/core/slope.hpp"
 
 namespace nck::config {
 
@@ -78,6 +79,14 @@ struct GearStage {
   bool reverse_sense = false;         // P-AXIS-00159 (reverse)
   double a_emergency = 0;             // P-AXIS-00003, 0 = use a_max
   std::uint32_t slope_type = 0;       // P-AXIS-00270: 0 step, 1 trapezoid, 2 sine-square
+  // Ramp times of the jerk-limited slopes (TRAPEZ, SIN2), s; list µs.
+  double tr_acc_down_s = 0.05;  // P-AXIS-00195 slope_profil.tr_beschl_ab: acceleration back to 0
+  double tr_acc_up_s = 0.05;    // P-AXIS-00196 slope_profil.tr_beschl_zu: acceleration built up
+  double tr_dec_down_s = 0.05;  // P-AXIS-00197 slope_profil.tr_brems_ab: deceleration back to 0
+  double tr_dec_up_s = 0.05;    // P-AXIS-00198 slope_profil.tr_brems_zu: deceleration built up
+  double tr_geom_s = 0.01;      // P-AXIS-00199 dynamik.tr_geom: jerk from the contour's curvature
+  double tr_rapid_s = 0.01;     // P-AXIS-00200 slope_profil.tr_grenz: every ramp of G0
+  double tr_min_s = 0.01;       // P-AXIS-00201 dynamik.tr_min: lower bound of the others
   std::uint32_t multi_gain_z = 2000, multi_gain_n = 1;  // P-AXIS-00129/00128
   std::int32_t modulo_error_incr = 0;     // P-AXIS-00124 (modulo_fehler, increments)
   std::int32_t modulo_revolutions = 0;     // P-AXIS-00125 (modulo_umdreh)
@@ -260,6 +269,7 @@ struct ChannelConfig {
   std::array<std::uint32_t, 10> trafo_ids{};    // P-CHAN-00262 trafo[i].id, 0 = empty slot
   bool move_tool_offsets_directly = false;      // P-CHAN-00100
   bool exact_stop_after_g00 = false;            // P-CHAN-00235
+  SlopeProfile slope_profile = SlopeProfile::step;  // P-CHAN-00071 prog_start.slope.profile
   // P-CHAN-00015 (einzelschrittmodus): where single step holds: -1 after
   // motion blocks, 0 also after blocks with functions, 1 after every block
   std::int8_t single_step_mode = 0;

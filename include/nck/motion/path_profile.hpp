@@ -3,7 +3,13 @@
 // once per cycle. It speeds up with a_acc, cruises at min(v_cmd * override,
 // v_max) and brakes with a_dec so that it stops exactly at the end.
 //
-// Discrete-time model: each step sets the velocity v_k for the whole cycle and
+// Under a jerk-limited slope (limits.slope TRAPEZ, SIN2, HSC) the segment
+// follows a JerkPlan instead: continuous-time phases sampled at the cycle
+// times, replanned from the exact state when the target speed or the end
+// speed changes, and the time run past a segment's end carried into the
+// next one (path_profile_jerk.cpp).
+//
+// STEP's discrete-time model: each step sets the velocity v_k for the whole cycle and
 // moves s by v_k * dt, so the finite differences of the set points ARE the
 // profile's velocity and acceleration. The braking speed is computed from the
 // remaining distance with the discrete sum (not v = sqrt(2ad)), so the last
@@ -11,6 +17,7 @@
 #include <cstddef>
 #include <limits>
 
+#include "nck/motion/jerk_profile.hpp"
 #include "nck/motion/limits.hpp"
 
 namespace nck::motion {
@@ -64,6 +71,13 @@ class PathProfile {
   // The coupling's limit set for this cycle (< 0: none).
   double velocity_limit() const noexcept { return v_limit_mm_s_; }
 
+  // Whether the path can still stop at the segment's end from where it is
+  // (an operator hold at the block end). rt
+  bool stop_fits(double dt_s) const noexcept;
+  // The path acceleration of the last step (jerk-limited: the profile's). rt
+  double a() const noexcept { return a_mm_s2_; }
+  bool jerk_limited_now() const noexcept { return jerk_; }
+
   double s() const noexcept { return s_mm_; }
   double v() const noexcept { return v_mm_s_; }
   double length() const noexcept { return length_mm_; }
@@ -73,6 +87,11 @@ class PathProfile {
 
  private:
   double target_velocity(double override_factor) const noexcept;
+  // The jerk-limited twins of start() and step() (path_profile_jerk.cpp).
+  void start_jerk(double carry_mm, bool passing) noexcept;
+  void replan_jerk(double target_mm_s) noexcept;
+  ProfileSample step_jerk(double dt_s, double override_factor) noexcept;
+  ProfileSample finish_jerk(double t_end_s, double t1_s) noexcept;
   ProfileSample finish(double v_step_mm_s, double v_prev_mm_s, double dt_s, double past_end_mm) noexcept;
 
   double length_mm_ = 0.0;
@@ -89,6 +108,15 @@ class PathProfile {
   double v_limit_mm_s_ = -1.0;  // < 0: none
   double beyond_mm_ = 0.0, beyond_dt_s_ = 0.0;  // pass_brake_distance for that cycle time
   bool override_ignored_ = false;
+  // Jerk-limited slopes: the plan (relative to s = plan_s0_mm_ at its start),
+  // the time in it, the acceleration now, and what it was planned for.
+  bool jerk_ = false;
+  JerkPlan plan_{};
+  BlockPlanKind plan_kind_ = BlockPlanKind::fits;
+  double plan_s0_mm_ = 0.0, t_s_ = 0.0, a_mm_s2_ = 0.0;
+  double plan_target_mm_s_ = -1.0, plan_end_mm_s_ = -1.0;
+  double carry_s_ = 0.0;  // time run past the previous segment's end
+  double last_override_ = 1.0;
 };
 
 // Largest velocity v for this cycle such that moving v*dt now and then

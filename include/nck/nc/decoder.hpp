@@ -29,6 +29,7 @@ struct DecoderConfig {
   std::vector<std::string> spindle_names;  // channel spindles ("S1", "S2"...)
   std::string main_spindle_name = "S";     // the name DIN words address
   std::string main_spindle = "S1";         // which configured spindle is the main one
+  SlopeProfile slope_default = SlopeProfile::step;  // P-CHAN-00071: at program start and #SLOPE DEFAULT
   std::uint32_t skip_mask = 0;             // active block-skip levels (/1 = bit 0 ... /10 = bit 9; "/" = bit 0)
   bool use_cached_files = false;           // FCT_USE_CACHED_FILES
   std::uint32_t max_cache_number = 0;

@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include "nck/core/plane.hpp"
+#include "nck/core/slope.hpp"
 
 namespace nck::nc {
 
@@ -39,6 +40,7 @@ struct ModalState {
   bool contour = false;                 // G261 (true) / G260 (false, initial): corner blending
   double contour_dev_mm = 0.01;         // #CONTOUR MODE [DEV PATH_DEV=..] (docs/decisions.md)
   bool trc_arc_corners = false;         // G26 (true) / G25 (false, initial): TRC outside corners
+  SlopeProfile slope = SlopeProfile::step;  // #SLOPE; initial: P-CHAN-00071 (DecoderConfig::slope_default)
 
   bool operator==(const ModalState&) const = default;
 };

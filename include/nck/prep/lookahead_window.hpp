@@ -93,6 +93,9 @@ class LookAheadWindow {
   bool blend(std::uint64_t prev, PlannedCommand& next);
   static motion::PathLimits fillet_limits(const motion::Segment& fillet,
                                          std::span<const motion::AxisDynamics> dyn);
+  static motion::PathLimits jerk_fillet_limits(const motion::Segment& fillet,
+                                               std::span<const motion::AxisDynamics> dyn,
+                                               const motion::PathLimits& before);
   bool lowering_is_safe(std::uint64_t seq, PlannedCommand changed) const;
   double cruise(const PlannedCommand& c) const;
   double tangent_cap(const PlannedCommand& from, const PlannedCommand& to) const;

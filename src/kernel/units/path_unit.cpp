@@ -62,8 +62,7 @@ void PathUnit::place(const Motion& m, double s_mm, std::size_t n_axes) noexcept 
 }
 
 bool PathUnit::end_at_standstill(double dt_s) noexcept {
-  const double v_stop = motion::discrete_brake_velocity(profile_.remaining(), profile_.limits().a_dec_mm_s2, dt_s);
-  if (profile_.v() > v_stop) return false;
+  if (!profile_.stop_fits(dt_s)) return false;
   reserve_ = false;  // the end speed is 0 now; no reserve raises it again
   profile_.set_end_velocity(0.0);
   return true;

@@ -7,13 +7,16 @@ namespace nck::prep {
 namespace {
 
 // Feed moves: accel_mm_s2 up, decel_mm_s2 down; rapid: rapid_accel_mm_s2; all capped by a_max.
+// Ramp times: feed moves the four of a_beschl/a_brems, rapid tr_grenz for all.
 motion::AxisDynamics feed_dynamics(const config::GearStage& g) {
-  return {g.max_speed_mm_s, std::min(g.accel_mm_s2, g.a_max), std::min(g.decel_mm_s2, g.a_max)};
+  return {g.max_speed_mm_s, std::min(g.accel_mm_s2, g.a_max), std::min(g.decel_mm_s2, g.a_max),
+          motion::RampTimes{g.tr_acc_up_s, g.tr_acc_down_s, g.tr_dec_up_s, g.tr_dec_down_s}, g.tr_geom_s};
 }
 
 motion::AxisDynamics rapid_dynamics(const config::GearStage& g) {
   const double a_rapid = std::min(g.rapid_accel_mm_s2, g.a_max);
-  return {std::min(g.rapid_mm_s, g.max_speed_mm_s), a_rapid, a_rapid};
+  const double tr = g.tr_rapid_s;
+  return {std::min(g.rapid_mm_s, g.max_speed_mm_s), a_rapid, a_rapid, motion::RampTimes{tr, tr, tr, tr}, g.tr_geom_s};
 }
 
 }  // namespace

@@ -1,0 +1,90 @@
+// PathProfile under a jerk-limited slope (TRAPEZ, SIN2; HSC as TRAPEZ): the
+// segment follows a JerkPlan, sampled at the cycle times. Replanning starts
+// from the exact state (position, velocity, acceleration) at the last
+// sample, so the acceleration never jumps; the time a cycle runs past the
+// segment's end is carried into the next segment's plan, whose start state
+// is the crossing state, so passing at speed is exact too.
+#include <algorithm>
+#include <cmath>
+
+#include "nck/motion/path_profile.hpp"
+
+namespace nck::motion {
+namespace {
+
+constexpr double kSnapMm = 1e-9;  // as in path_profile.cpp
+constexpr int kCrossingBisections = 60;
+
+}  // namespace
+
+void PathProfile::start_jerk(double carry_mm, bool passing) noexcept {
+  // The time already run into this segment: the jerk-limited segment before
+  // hands it on exactly; after a STEP segment its distance at its speed.
+  double carry_s = carry_s_;
+  if (!(carry_s > 0.0)) carry_s = carry_mm > 0.0 && v_mm_s_ > 0.0 ? carry_mm / v_mm_s_ : 0.0;
+  carry_s_ = 0.0;
+  if (!passing) a_mm_s2_ = 0.0;
+  s_mm_ = 0.0;
+  replan_jerk(target_velocity(last_override_));
+  t_s_ = std::max(carry_s, 0.0);
+  const Kinematics k = plan_.at(t_s_);
+  s_mm_ = std::min(plan_s0_mm_ + k.s_mm, length_mm_);
+  if (t_s_ > 0.0) {
+    v_mm_s_ = k.v_mm_s;
+    a_mm_s2_ = k.a_mm_s2;
+  }
+}
+
+// A new plan from the state now over what is left of the segment.
+void PathProfile::replan_jerk(double target_mm_s) noexcept {
+  const JerkLimits l = jerk_limits(limits_);
+  const Kinematics now{0.0, v_mm_s_, a_mm_s2_};
+  plan_s0_mm_ = s_mm_;
+  t_s_ = 0.0;
+  plan_target_mm_s_ = target_mm_s;
+  plan_end_mm_s_ = v_end_mm_s_;
+  // Past the end only with a successor to go on braking in.
+  plan_kind_ = plan_block(plan_, now, length_mm_ - s_mm_, target_mm_s, v_end_mm_s_, l, v_end_mm_s_ > 0.0);
+}
+
+ProfileSample PathProfile::step_jerk(double dt_s, double override_factor) noexcept {
+  if (!(std::isfinite(dt_s) && dt_s > 0.0)) return ProfileSample{s_mm_, v_mm_s_, 0.0, false};
+  last_override_ = override_factor;
+  const double target = target_velocity(override_factor);
+  if (target != plan_target_mm_s_ || v_end_mm_s_ != plan_end_mm_s_) replan_jerk(target);
+  const double t1 = t_s_ + dt_s;
+  const Kinematics k = plan_.at(t1);
+  const double s1 = plan_s0_mm_ + k.s_mm;
+  const bool to_end = plan_kind_ != BlockPlanKind::overrun;
+  if (s1 >= length_mm_ - kSnapMm || (to_end && t1 >= plan_.duration())) {
+    if (to_end) return finish_jerk(std::min(plan_.duration(), t1), t1);
+    // Overrun: when within the cycle the path crossed the end.
+    double lo = t_s_, hi = t1;
+    for (int i = 0; i < kCrossingBisections; ++i) {
+      const double mid = (lo + hi) / 2.0;
+      (plan_s0_mm_ + plan_.at(mid).s_mm < length_mm_ ? lo : hi) = mid;
+    }
+    return finish_jerk(hi, t1);
+  }
+  const bool braking = k.a_mm_s2 < 0.0 && t1 >= plan_.braking_from_s();
+  t_s_ = t1;
+  s_mm_ = s1;
+  v_mm_s_ = k.v_mm_s;
+  a_mm_s2_ = k.a_mm_s2;
+  return ProfileSample{s_mm_, v_mm_s_, a_mm_s2_, false, braking};
+}
+
+// The segment ends at plan time t_end_s within the cycle that ends at t1_s.
+ProfileSample PathProfile::finish_jerk(double t_end_s, double t1_s) noexcept {
+  const Kinematics k = plan_.at(t_end_s);
+  s_mm_ = length_mm_;
+  finished_ = true;
+  const bool flying = v_end_mm_s_ > 0.0 && k.v_mm_s > 0.0;
+  v_mm_s_ = flying ? k.v_mm_s : 0.0;
+  a_mm_s2_ = flying ? k.a_mm_s2 : 0.0;
+  carry_s_ = flying ? std::max(t1_s - t_end_s, 0.0) : 0.0;
+  carry_mm_ = carry_s_ * v_mm_s_;  // for a STEP segment after it
+  return ProfileSample{s_mm_, k.v_mm_s, k.a_mm_s2, true, false};
+}
+
+}  // namespace nck::motion
