@@ -142,16 +142,19 @@ async function malformed(s) {
                '{"command":"mdi","text":"G0 X1\\nM30"}'];
   const before = await state(s), t0 = Date.now();
   let n400 = 0, other = [];
-  for (let i = 0; i < 1000; ++i) {
+  // at least 1,000, and for at least 3 s, so that 1 % is more than the states' own granularity
+  let sent = 0;
+  for (let i = 0; i < 1000 || Date.now() - t0 < 3000; ++i, ++sent) {
     const r = await request(s, "POST", "/api/v1/command", { body: bad[i % bad.length], useAgent: true });
     if (r.status === 400 && errorId(r) >= 940300) n400++;
     else other.push(r.status);
   }
   const after = await state(s), t1 = Date.now();
-  check("1,000 malformed messages -> 1,000 400s with an ID", n400 === 1000, `${n400} ${other.slice(0, 5)}`);
+  check(`${sent} malformed messages -> as many 400s with an ID`, n400 === sent, `${n400} ${other.slice(0, 5)}`);
   const cycles = after.cycle - before.cycle, expected = (t1 - t0) / 1000 / 0.001;
-  // the two state reads bracket the interval: allow their own latency
-  check("no cycle skipped meanwhile (cycles = elapsed / 1 ms within 1 %)", Math.abs(cycles - expected) <= 0.01 * expected + 20,
+  // The state the API gives is the one of the server's last 25 ms tick: each
+  // of the two reads may lag by up to 25 cycles, besides the 1 %.
+  check("no cycle skipped meanwhile (cycles = elapsed / 1 ms within 1 %)", Math.abs(cycles - expected) <= 0.01 * expected + 50,
         `${cycles} cycles in ${t1 - t0} ms`);
 }
 
@@ -171,10 +174,11 @@ async function rate(s) {
 async function clients(s) {
   for (let i = 0; i < 20; ++i) await readStream(s, 30);  // each one leaves mid-stream
   await sleep(200);
-  const streams = await Promise.all(Array.from({ length: 8 }, () => readStream(s, 1200)));
+  const streams = await Promise.all(Array.from({ length: 8 }, () => readStream(s, 2000)));
   check("8 streams after 20 that left: all served", streams.every((x) => x.status === 200), streams.map((x) => x.status).join());
-  const rates = streams.map((x) => (x.text.match(/event: state/g) || []).length / 1.2);
-  check("each stream gets >= 30 states per second", rates.every((r) => r >= 30), rates.map((r) => r.toFixed(1)).join());
+  // 40 per second on an idle machine (bench/serve_lateness.mjs); a loaded CI machine gets a margin
+  const rates = streams.map((x) => ((x.text.match(/event: state/g) || []).length - 1) / 2);
+  check("each stream gets >= 25 states per second", rates.every((r) => r >= 25), rates.map((r) => r.toFixed(1)).join());
   const held = Array.from({ length: 8 }, () => readStream(s, 800));
   await sleep(200);
   const ninth = await request(s, "GET", "/api/v1/state");
