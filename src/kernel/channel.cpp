@@ -1,5 +1,6 @@
 #include "channel.hpp"
 
+#include <algorithm>
 #include <utility>
 #include <variant>
 
@@ -93,6 +94,7 @@ void Channel::write_output(ChannelOutput& out) const noexcept {
   out.cause = cause_;
   const Motion* m = active_ ? current_.as<Motion>() : nullptr;
   out.feed_mm_s = m ? m->v_cmd_mm_s : 0.0;
+  out.distance_to_go_mm = m ? std::max(0.0, path_.segment().length() - path_.s_mm()) : 0.0;
   out.wait_reason = wait_reason_;
 }
 

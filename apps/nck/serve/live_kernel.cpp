@@ -133,6 +133,7 @@ void LiveKernel::publish(const sim::DryRun& run, const kernel::TickOutput& out) 
     c.axis_mcs = o.axis_mcs;
     c.path_velocity_mm_s = o.path_velocity_mm_s;
     c.feed_mm_s = o.feed_mm_s;
+    c.distance_to_go_mm = o.distance_to_go_mm;
     c.program_state = k.program_state(ch);
     c.cause = o.cause;
     c.wait_reason = o.wait_reason;

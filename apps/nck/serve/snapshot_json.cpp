@@ -47,6 +47,7 @@ json channel_json(const LiveChannel& c, const config::ChannelConfig& cfg, const 
             {"pcs", std::move(pcs)},
             {"path_velocity_mm_s", c.path_velocity_mm_s},
             {"feed_mm_s", c.feed_mm_s},
+            {"distance_to_go_mm", c.distance_to_go_mm},
             // an idle channel's cycles go to nothing (time by cause would call them starved)
             {"cause", busy(c.program_state) ? json(cause_name(c.cause)) : json()},
             {"block", std::move(block)},

@@ -92,6 +92,19 @@ TEST(OperatorAction, FeedholdStopsTheRunningPathAndReleases) {
   EXPECT_GT(mill.out.channels[0].path_velocity_mm_s, 1.0);
 }
 
+// The live state's distance to go: the rest of the running motion, shrinking
+// by the path's travel each cycle.
+TEST(OperatorAction, DistanceToGoShrinksByTheTravel) {
+  LiveMill mill(true);
+  mill.cycles(3000);
+  const double before_mm = mill.out.channels[0].distance_to_go_mm;
+  mill.cycles(1);
+  const kernel::ChannelOutput& now = mill.out.channels[0];
+  ASSERT_GT(now.path_velocity_mm_s, 1.0);
+  ASSERT_GT(now.distance_to_go_mm, 0.0);
+  EXPECT_NEAR(before_mm - now.distance_to_go_mm, now.path_velocity_mm_s * 0.001, 1e-3 * now.path_velocity_mm_s * 0.001 + 1e-9);
+}
+
 TEST(OperatorAction, MdiMovesAnIdleChannelAndIsRefusedWhileAProgramRuns) {
   LiveMill idle(false);
   idle.cycles(2);
