@@ -6,21 +6,12 @@
 #include <cstdint>
 #include <string_view>
 
-#include "nck/config/load.hpp"
+#include "mill_machine.hpp"
 #include "nck/sim/operator_action.hpp"
 #include "serve/api_message.hpp"
 
-namespace {
-
-const nck::config::Machine* machine() {
-  static const nck::config::LoadResult loaded = nck::config::load_machine(NCK_SOURCE_DIR "/examples/mill");
-  return loaded.machine ? &*loaded.machine : nullptr;
-}
-
-}  // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const nck::config::Machine* m = machine();
+  const nck::config::Machine* m = nck::fuzz::mill_machine();
   if (!m) return 0;
   nck::Diagnostics diags;
   const auto c = nck::app::serve::parse_api_command(std::string_view(reinterpret_cast<const char*>(data), size),

@@ -5,24 +5,15 @@
 #include <cstdint>
 #include <string_view>
 
-#include "nck/config/load.hpp"
+#include "mill_machine.hpp"
 #include "nck/plc/hli.hpp"
 #include "nck/sim/scenario.hpp"
-
-namespace {
-
-const nck::config::Machine* machine() {
-  static const nck::config::LoadResult loaded = nck::config::load_machine(NCK_SOURCE_DIR "/examples/mill");
-  return loaded.machine ? &*loaded.machine : nullptr;
-}
-
-}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   nck::Diagnostics diags;
   nck::sim::Scenario sc =
       nck::sim::parse_scenario(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz.plc", diags);
-  if (const nck::config::Machine* m = machine())
+  if (const nck::config::Machine* m = nck::fuzz::mill_machine())
     nck::sim::resolve_spindles(sc, *m, nck::plc::build_spindle_map(*m), diags);
   return 0;
 }
