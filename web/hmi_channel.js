@@ -107,7 +107,7 @@
       // the backplot's hover reads d.lines["file:line"]: the loaded program's text
       const lines = new Proxy({}, { get: (_, key) => this.program.text(Number(String(key).split(":")[1])) });
       const data = { channels: [this.plotCh], files: [""], lines };
-      const width = Math.max(320, Math.min(640, this.plotCol.clientWidth - 16));
+      const width = Math.max(320, Math.min(640, this.plotCol.clientWidth - 24));  // the box's padding and border
       this.plot = new window.NckBackplot(this.plotCol, this.plotCh, data, { width, height: Math.round(width * 0.8), minSpan: 20 });
     }
 

@@ -193,6 +193,16 @@ async function checkSpeedToEnd(h) {
   if (fast && end) ok(`speed 5x: the program ends (line ${end.line})`);
 }
 
+// An incremental jog from the jog keys: X+ by 1 mm from where MDI left X.
+async function checkJog(h) {
+  const from = (await h.now()).x;
+  const m = await h.mark();
+  await h.ch.locator('select[aria-label="jog increment"]').selectOption("1");
+  await h.ch.locator('button.jog[data-axis="X"][data-direction="+"]').click();
+  const done = await h.until(m, (s) => Math.abs(s.x - (from + 1)) < 1e-6 && s.v === 0, 5000, "jog X+ 1 mm");
+  if (done) ok(`jog X+ by 1 mm: X ${from} → ${done.x}`);
+}
+
 async function checkRate(h) {
   const a = await h.page.evaluate(() => ({ n: window.nckHmi.stats.snapshots, t: performance.now() }));
   await h.page.waitForTimeout(2000);
@@ -209,6 +219,33 @@ async function checkBackplot(h) {
   });
   expect(plot.n > 20 && plot.tool && plot.rapid > 0 && plot.rapid < plot.n,
     `live backplot: ${plot.n} points (${plot.rapid} of them G0), tool marker ${plot.tool}`);
+}
+
+// A machine of two channels: one column each, with its own axes.
+async function checkTwoChannels(browser) {
+  const server = startServer(path.resolve(args.nck), src, ["examples/two-channel"], 30);
+  try {
+    const url = await server.url;
+    const page = await browser.newPage({ viewport: { width: 1560, height: 1000 } });
+    await page.goto(url);
+    await page.waitForFunction(() => window.nckHmi && window.nckHmi.ready, null, { timeout: 10000 });
+    const columns = await page.evaluate(() => [...document.querySelectorAll("section.channel")].map((c) =>
+      [...c.querySelectorAll(".dro tr[data-axis]")].map((r) => r.dataset.axis).join("")));
+    const machine = await page.evaluate(() => window.nckHmi.machine.channels.map((c) => c.axes.join("")));
+    expect(columns.length === 2 && columns.join() === machine.join(), `two channels side by side: axes ${columns.join(" | ")}`,
+      `columns ${JSON.stringify(columns)} for the channels ${JSON.stringify(machine)}`);
+    await page.close();
+  } finally {
+    await server.stop();
+  }
+}
+
+// The page down to its content (the README's picture: the whole path of the run after the search).
+async function screenshot(page) {
+  const height = await page.evaluate(() => Math.ceil(document.querySelector("main").getBoundingClientRect().bottom) + 8);
+  const clip = { x: 0, y: 0, width: page.viewportSize().width, height: Math.min(height, page.viewportSize().height) };
+  await page.screenshot({ path: path.join(out, "hmi.png"), clip });
+  if (args.screenshot) await page.screenshot({ path: path.resolve(args.screenshot), clip });
 }
 
 async function run(browser, url, port) {
@@ -238,11 +275,10 @@ async function run(browser, url, port) {
   await checkBackplot(h);
   await checkSingleStep(h);
   await checkBlockSearch(h);
-  await page.waitForTimeout(1500);
-  await page.screenshot({ path: path.join(out, "hmi.png") });
-  if (args.screenshot) await page.screenshot({ path: path.resolve(args.screenshot) });
   await checkSpeedToEnd(h);
+  await screenshot(page);
   await checkMdi(h);
+  await checkJog(h);
   await checkMdiError(h);
   expect(!problems.length, "no console errors or warnings", "console: " + problems.join(" | "));
   expect(!foreign.length, "no request beyond the server", "requests beyond the server: " + foreign.join(", "));
@@ -254,6 +290,7 @@ const browser = await chromium.launch({ executablePath: chromiumPath, headless: 
 try {
   const url = await server.url;
   await run(browser, url, new URL(url).port);
+  await checkTwoChannels(browser);
 } catch (e) {
   fail(e.stack || String(e));
 } finally {
