@@ -5,6 +5,9 @@
 // Machine (MCS) or program coordinates (PCS: each point through the inverse
 // of its block's program -> machine map); under G41/G42 the programmed
 // contour is drawn thin beside the tool-centre path.
+// Live use (nck serve's HMI): `append` grows the path point by point (with
+// its program coordinates, ch.px/py/pz, where no frames are known) and
+// `setTool` marks where the tool stands now; `opts.width/height` size it.
 (function () {
   "use strict";
   const VIEWS = {
@@ -42,7 +45,7 @@
   }
 
   class Backplot {
-    constructor(parent, ch, data) {
+    constructor(parent, ch, data, opts = {}) {
       this.ch = ch;
       this.data = data;
       this.n = ch.x.length;
@@ -90,8 +93,9 @@
       parent.appendChild(el);
       this.el = el;
       this.multi = data.channels.length > 1;
-      const width = this.multi ? Math.floor((parent.clientWidth - 60) / 2) : Math.min(parent.clientWidth - 16, 900);
-      this.resize(Math.max(360, width), 460);
+      this.minSpan = opts.minSpan;
+      const width = opts.width || (this.multi ? Math.floor((parent.clientWidth - 60) / 2) : Math.min(parent.clientWidth - 16, 900));
+      this.resize(Math.max(opts.width ? 200 : 360, width), opts.height || 460);
       this.bindMouse();
       this.fit();
       this.draw();
@@ -114,6 +118,7 @@
     point(i, frame) {
       const ch = this.ch, p = [ch.x[i], ch.y[i], ch.z[i]];
       if (!this.pcs()) return p;
+      if (ch.px) return [ch.px[i], ch.py[i], ch.pz[i]];
       const f = this.toPcs[frame == null ? this.frameOf(i) : frame];
       return f ? f(p) : p;
     }
@@ -163,7 +168,8 @@
         if (s) this.jumps.set(i, s);
       }
       if (!this.n) { lo = [0, 0]; hi = [1, 1]; }
-      const span = [Math.max(hi[0] - lo[0], 1e-3), Math.max(hi[1] - lo[1], 1e-3)];
+      const least = this.minSpan || 1e-3;
+      const span = [Math.max(hi[0] - lo[0], least), Math.max(hi[1] - lo[1], least)];
       const m = 40;
       this.scale = Math.min((this.w - 2 * m) / span[0], (this.h - 2 * m) / span[1]);
       this.cx = (lo[0] + hi[0]) / 2; this.cy = (lo[1] + hi[1]) / 2;
@@ -251,10 +257,64 @@
         const [x, y] = this.toScreen(this.uv[2 * k], this.uv[2 * k + 1]);
         ctx.beginPath(); ctx.arc(x, y, 4, 0, 2 * Math.PI); ctx.stroke();
       }
+      if (this.tool) this.drawTool(ctx);
       if (this.hover != null) {
         const [hx, hy] = this.toScreen(this.uv[2 * this.hover], this.uv[2 * this.hover + 1]);
         ctx.strokeStyle = "#111"; ctx.lineWidth = 2; ctx.beginPath(); ctx.arc(hx, hy, 5, 0, 2 * Math.PI); ctx.stroke();
       }
+    }
+
+    // The tool where it stands now: a ring with a cross, over the path.
+    drawTool(ctx) {
+      const [x, y] = this.toScreen(...this.projectPoint(this.pcs() && this.tool.pcs ? this.tool.pcs : this.tool.mcs));
+      ctx.strokeStyle = "#111"; ctx.fillStyle = "rgba(255, 200, 0, 0.55)"; ctx.lineWidth = 1.5;
+      ctx.beginPath(); ctx.arc(x, y, 7, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+      ctx.beginPath(); ctx.moveTo(x - 11, y); ctx.lineTo(x + 11, y); ctx.moveTo(x, y - 11); ctx.lineTo(x, y + 11); ctx.stroke();
+    }
+
+    // Where the tool stands (machine and program coordinates, [x, y, z]).
+    setTool(mcs, pcs) {
+      this.tool = { mcs, pcs };
+      this.redrawSoon();
+    }
+
+    // One more point of a live path: machine and program coordinates, G0 or
+    // not, the block's file index and line. The view follows the path until
+    // the operator zooms or pans it.
+    append(mcs, pcs, rapid, file, line) {
+      const ch = this.ch;
+      ch.x.push(mcs[0]); ch.y.push(mcs[1]); ch.z.push(mcs[2]);
+      ch.px.push(pcs[0]); ch.py.push(pcs[1]); ch.pz.push(pcs[2]);
+      ch.rapid.push(rapid ? 1 : 0); ch.file.push(file); ch.line.push(line);
+      this.n = ch.x.length;
+      if (this.uv.length < 2 * this.n) {
+        const grown = new Float64Array(Math.max(1024, 4 * this.n));
+        grown.set(this.uv);
+        this.uv = grown;
+      }
+      const q = this.project(this.n - 1);
+      this.uv[2 * this.n - 2] = q[0]; this.uv[2 * this.n - 1] = q[1];
+      const [sx, sy] = this.toScreen(q[0], q[1]);
+      if (!this.moved && (sx < 20 || sy < 20 || sx > this.w - 20 || sy > this.h - 20)) {
+        this.fit();
+        this.scale /= 1.3;  // room to grow: not a refit for every point of a path that widens
+      }
+      this.redrawSoon();
+    }
+
+    // Forget the path (a new run).
+    clear() {
+      for (const k of ["x", "y", "z", "px", "py", "pz", "rapid", "file", "line"]) this.ch[k] = [];
+      this.n = 0; this.moved = false; this.hover = null;
+      this.fit();
+      this.redrawSoon();
+    }
+
+    // At most one redraw per frame however many points arrive.
+    redrawSoon() {
+      if (this.pending) return;
+      this.pending = true;
+      requestAnimationFrame(() => { this.pending = false; this.draw(); });
     }
 
     nearest(px, py) {
@@ -286,6 +346,7 @@
         const [u, v] = this.toModel(e.clientX - r.left, e.clientY - r.top);
         const f = Math.exp(-e.deltaY * 0.0015);
         this.scale *= f;
+        this.moved = true;
         this.cx = u - (u - this.cx) / f; this.cy = v - (v - this.cy) / f;
         this.draw();
       }, { passive: false });
@@ -295,6 +356,7 @@
         if (drag) {
           this.cx = drag.cx - (e.clientX - drag.x) / this.scale;
           this.cy = drag.cy + (e.clientY - drag.y) / this.scale;
+          this.moved = true;
           this.draw();
           return;
         }
@@ -304,7 +366,7 @@
         this.info.textContent = i >= 0 ? this.describe(i) : "";
         this.draw();
       });
-      c.addEventListener("dblclick", () => { this.fit(); this.draw(); });
+      c.addEventListener("dblclick", () => { this.moved = false; this.fit(); this.draw(); });
     }
   }
 

@@ -1,1 +1,108 @@
-// nck serve's HMI (placeholder)
+// nck serve's HMI: reads the machine, builds one column per channel
+// (hmi_channel.js), and feeds them the stream's snapshots; the run's speed,
+// pause and lateness in the top bar, errors and warnings with their remedy
+// below. window.nckHmi tells scripts and the browser test what it shows.
+(function () {
+  "use strict";
+  const t0 = performance.now();
+  const { el, button, check, fixed } = window.NckUi;
+  const api = window.NckApi;
+  const $ = (id) => document.getElementById(id);
+  const MAX_ERRORS = 100;
+
+  const hmi = { ready: false, panels: [], errors: [], state: null, stats: null, catalog: new Map() };
+  window.nckHmi = hmi;
+
+  // One entry of the errors list: what happened, where, and what to do.
+  function addError(kind, id, message, where, remedy) {
+    const known = hmi.catalog.get(id);
+    const fix = remedy || (known && known.remedy) || "";
+    hmi.errors.push({ kind, id, message, where, remedy: fix });
+    const item = el("li", { class: kind },
+      el("span", { class: "kind" }, kind + (id ? " " + id : "")), " ", el("span", { class: "msg" }, message),
+      where ? el("span", { class: "where" }, " — " + where) : null,
+      fix ? el("div", { class: "remedy" }, "Remedy: " + fix) : null);
+    const list = $("errors");
+    list.prepend(item);
+    while (list.children.length > MAX_ERRORS) list.lastChild.remove();
+    $("errors-section").hidden = false;
+  }
+
+  // A refused request (status 4xx with {"error": ...}) or a failed fetch.
+  function reportRefusal(e, what) {
+    addError("refused", e.id, e.message, what, e.remedy);
+  }
+
+  function onEvents(events) {
+    for (const e of events) {
+      if (e.ev !== "error" && e.ev !== "warning") continue;
+      const where = [e.ch ? "channel " + e.ch : "", e.file ? String(e.file).split("/").pop() + ":" + e.line : "",
+        e.n != null ? "N" + e.n : "", e.t != null ? "t " + fixed(e.t, 3) + " s" : ""].filter(Boolean).join(" ");
+      addError(e.ev, e.id, e.msg || e.message || "", where);
+    }
+  }
+
+  // The run's bar: time, speed, pause, lateness of the kernel's cycles, stream rate.
+  function runBar() {
+    const speed = el("select", { id: "speed", "aria-label": "run speed", onchange: () => send("speed", { speed: Number(speed.value) }) },
+      ...[["0.1", "0.1×"], ["0.5", "0.5×"], ["1", "real time"], ["2", "2×"], ["5", "5×"], ["10", "10×"], ["0", "as fast as possible"]]
+        .map(([v, t]) => el("option", { value: v }, t)));
+    const pause = check("pause", "stop the kernel's clock (the machine freezes)", (on) => send("pause", { on }));
+    const step = button("Step cycle", "one kernel cycle while paused", () => send("step_cycle"));
+    hmi.bar = { speed, pause };
+    $("run").append(el("label", {}, "speed ", speed), pause.el, step,
+      el("span", { id: "clock" }), el("span", { id: "lateness", title: "how late the kernel's cycles woke up" }),
+      el("span", { id: "rate" }), el("span", { id: "link" }));
+  }
+
+  const send = (command, fields) => api.command(command, 1, fields).catch((e) => reportRefusal(e, command));
+
+  function updateBar(s) {
+    if (document.activeElement !== hmi.bar.speed) hmi.bar.speed.value = String(s.speed);
+    hmi.bar.pause.set(s.paused);
+    $("clock").textContent = `t ${fixed(s.t_s, 3)} s · cycle ${s.cycle} · run ${s.run}` + (s.events_lost ? ` · ${s.events_lost} events lost` : "");
+    const l = s.lateness;
+    $("lateness").textContent = `lateness p50 ${fixed(l.p50_us, 0)} µs · p99 ${fixed(l.p99_us, 0)} µs · worst ${fixed(l.worst_us, 0)} µs · ${l.late_cycles} late of ${l.wakeups}`;
+    $("lateness").className = l.late_cycles ? "warn" : "";
+  }
+
+  function onState(s) {
+    hmi.state = s;
+    updateBar(s);
+    for (const p of hmi.panels) p.update(s);
+    if (!hmi.ready) {
+      hmi.ready = true;
+      hmi.loadMs = performance.now() - t0;
+    }
+  }
+
+  async function refreshPrograms() {
+    const list = (await api.get("/api/v1/programs")).programs;
+    for (const p of hmi.panels) p.programs(list);
+  }
+
+  async function start() {
+    runBar();
+    const [machine, catalog] = await Promise.all([api.get("/api/v1/machine"), api.get("/api/v1/errors")]);
+    for (const e of catalog) hmi.catalog.set(e.id, e);
+    hmi.machine = machine;
+    const parent = $("channels");
+    parent.style.setProperty("--channels", machine.channels.length);
+    machine.channels.forEach((ch, i) => {
+      const p = new window.NckChannelPanel(parent, i + 1, ch, reportRefusal);
+      p.onUploaded = refreshPrograms;
+      hmi.panels.push(p);
+    });
+    await refreshPrograms();
+    const s = api.stream({
+      state: onState,
+      events: onEvents,
+      connection: (up) => { $("link").textContent = up ? "● live" : "● reconnecting…"; $("link").className = up ? "up" : "down"; },
+    });
+    hmi.stats = s.stats;
+    setInterval(() => { $("rate").textContent = `stream ${s.stats.rate.toFixed(0)} snapshots/s`; }, 1000);
+  }
+
+  $("clear-errors").addEventListener("click", () => { $("errors").replaceChildren(); hmi.errors.length = 0; $("errors-section").hidden = true; });
+  start().catch((e) => reportRefusal(e, "starting the HMI"));
+})();

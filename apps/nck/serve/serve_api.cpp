@@ -33,8 +33,17 @@ HttpReply refused(unsigned status, ErrorId id, std::string message) {
 // The page and the files it loads: no token needed, nothing but code in them.
 std::optional<HttpReply> page_file(std::string_view path) {
   static constexpr std::pair<std::string_view, std::string_view> kFiles[] = {
-      {"/", "hmi.html"},          {"/hmi.js", "hmi.js"},   {"/hmi.css", "hmi.css"},
-      {"/backplot.js", "backplot.js"}, {"/uPlot.iife.min.js", "uPlot.iife.min.js"}, {"/uPlot.min.css", "uPlot.min.css"}};
+      {"/", "hmi.html"},
+      {"/hmi.js", "hmi.js"},
+      {"/hmi.css", "hmi.css"},
+      {"/hmi_ui.js", "hmi_ui.js"},
+      {"/hmi_api.js", "hmi_api.js"},
+      {"/hmi_program.js", "hmi_program.js"},
+      {"/hmi_controls.js", "hmi_controls.js"},
+      {"/hmi_channel.js", "hmi_channel.js"},
+      {"/backplot.js", "backplot.js"},
+      {"/uPlot.iife.min.js", "uPlot.iife.min.js"},
+      {"/uPlot.min.css", "uPlot.min.css"}};
   for (const auto& [url, name] : kFiles) {
     if (path != url) continue;
     const std::string_view type = name.ends_with(".js")    ? "text/javascript; charset=utf-8"

@@ -1,0 +1,302 @@
+// Browser test of nck serve's HMI: starts `nck serve examples/mill
+// examples/mill/contour.nc` in real time, opens the page in Debian's
+// chromium (playwright-core), operates it as a user does (buttons, slider,
+// MDI box, a click on a program line) and checks what the machine does.
+// Usage:
+//   node tests/browser/hmi_test.mjs --nck BIN --source DIR --out DIR [--screenshot FILE]
+// --screenshot: also save the README's picture there (docs/img/hmi.png).
+import { chromium } from "playwright-core";
+import fs from "node:fs";
+import path from "node:path";
+import { startServer } from "./hmi_server.mjs";
+
+const args = Object.fromEntries(process.argv.slice(2).reduce((acc, a, i, all) => {
+  if (a.startsWith("--")) acc.push([a.slice(2), all[i + 1] && !all[i + 1].startsWith("--") ? all[i + 1] : "1"]);
+  return acc;
+}, []));
+const src = path.resolve(args.source || "."), out = path.resolve(args.out || "hmi-test-out");
+const chromiumPath = process.env.NCK_CHROMIUM || "/usr/bin/chromium";
+fs.mkdirSync(out, { recursive: true });
+let failures = 0;
+const fail = (msg) => { failures++; console.error("FAIL " + msg); };
+const ok = (msg) => console.log("ok   " + msg);
+const expect = (cond, good, bad) => (cond ? ok(good) : fail(bad || good));
+
+// Every snapshot channel 1 received, recorded in the page (a poll could miss
+// a state that lasts one snapshot, such as "searching").
+function installRecorder() {
+  window.__seen = [];
+  const p = window.nckHmi.panels[0];
+  const update = p.update.bind(p);
+  p.update = (s) => {
+    const c = s.channels[0];
+    window.__seen.push({ at: performance.now(), state: c.state, line: c.block.line, v: c.path_velocity_mm_s, feed: c.feed_mm_s,
+      cause: c.cause, x: c.mcs.X, y: c.mcs.Y, z: c.mcs.Z, ovr: c.feed_override_pct, feedhold: c.feedhold, step: c.single_step, run: s.run, speed: s.speed });
+    update(s);
+  };
+}
+
+class Hmi {
+  constructor(page) {
+    this.page = page;
+    this.ch = page.locator('section.channel[data-channel="1"]');
+  }
+  button(name) { return this.ch.getByRole("button", { name, exact: true }); }
+  now() { return this.page.evaluate(() => window.__seen[window.__seen.length - 1]); }
+  mark() { return this.page.evaluate(() => window.__seen.length); }
+  since(mark) { return this.page.evaluate((m) => window.__seen.slice(m), mark); }
+  // Waits until a snapshot after `mark` satisfies pred(s) (polled from here:
+  // the page's CSP rightly refuses code built from strings).
+  async until(mark, pred, timeoutMs, what) {
+    const end = Date.now() + timeoutMs;
+    for (;;) {
+      const hit = (await this.since(mark)).find(pred);
+      if (hit) return hit;
+      if (Date.now() > end) break;
+      await this.page.waitForTimeout(20);
+    }
+    fail(`${what}: no snapshot with ${pred} within ${timeoutMs} ms (last: ${JSON.stringify(await this.now())})`);
+    return null;
+  }
+  dro(axis) { return this.ch.locator(`.dro tr[data-axis="${axis}"] td`).first().textContent(); }
+  currentLine() { return this.ch.locator(".program-lines li.current").getAttribute("data-line", { timeout: 2000 }).catch(() => null); }
+  async reset() {
+    const m = await this.mark();
+    await this.button("Reset").click();
+    await this.until(m, (s) => s.state === "idle" || s.state === "ended", 5000, "reset");
+  }
+}
+
+async function checkStart(h) {
+  const m = await h.mark();
+  const before = { x: await h.dro("X"), z: await h.dro("Z") };
+  await h.button("Cycle start").click();
+  await h.until(m, (s) => s.state === "running", 3000, "cycle start");
+  const lines = new Set();
+  for (let i = 0; i < 20 && lines.size < 3; i++) {
+    lines.add(await h.currentLine());
+    await h.page.waitForTimeout(150);
+  }
+  // the feed move N80 (line 21) is the first long one: wait for it
+  await h.until(m, (s) => s.line === 21 && s.cause === 'feed', 8000, "reaching N80");
+  lines.add(await h.currentLine());
+  const after = { x: await h.dro("X"), z: await h.dro("Z") };
+  expect(after.x !== before.x && after.z !== before.z, `cycle start: the DRO moves (X ${before.x} → ${after.x}, Z ${before.z} → ${after.z})`);
+  const seen = [...lines].filter(Boolean).map(Number);
+  expect(seen.length >= 2 && seen[seen.length - 1] > seen[0], `the current line advances: ${seen.join(" → ")}`);
+}
+
+async function checkOverride(h) {
+  const slider = h.ch.locator('input[aria-label="feed override"]');
+  let m = await h.mark();
+  await slider.fill("50");
+  const slow = await h.until(m, (s) => s.ovr === 50 && (s.cause === "feed" || s.cause === "override") && s.v < 0.52 * s.feed && s.v > 0.45 * s.feed, 3000, "override 50 %");
+  if (slow) ok(`feed override 50 %: path velocity ${slow.v.toFixed(2)} mm/s of ${slow.feed} mm/s programmed`);
+  m = await h.mark();
+  await slider.fill("100");
+  const back = await h.until(m, (s) => s.ovr === 100 && s.cause === 'feed' && s.v > 0.98 * s.feed, 3000, "override 100 %");
+  if (back) ok(`feed override 100 %: path velocity ${back.v.toFixed(2)} mm/s`);
+}
+
+async function checkFeedhold(h) {
+  const m = await h.mark();
+  const t = Date.now();
+  await h.button("Feedhold").click();
+  const stopped = await h.until(m, (s) => s.feedhold && s.v === 0, 2000, "feedhold");
+  const brakingMs = Date.now() - t;
+  if (stopped) {
+    // 20 mm/s braked at the path's acceleration takes well under 0.5 s; the snapshots add 25 ms
+    expect(brakingMs < 1000, `feedhold: path velocity 0 after ${brakingMs} ms (state ${stopped.state})`,
+      `feedhold: the path took ${brakingMs} ms to stop`);
+    await h.page.waitForTimeout(300);
+    const still = await h.now();
+    expect(still.v === 0 && still.x === stopped.x, "the axes stand still while held");
+  }
+  const m2 = await h.mark();
+  await h.button("Feedhold").click();
+  await h.until(m2, (s) => !s.feedhold && s.v > 0, 3000, "feedhold released");
+}
+
+// After a reset of the ended program: the channel idle. (A reset while the
+// program runs leaves MDI blocks accepted but never run: a server bug.)
+async function checkMdi(h) {
+  await h.reset();
+  const m = await h.mark();
+  await h.ch.locator(".mdi input").fill("G0 X10");
+  await h.ch.locator(".mdi input").press("Enter");
+  const done = await h.until(m, (s) => Math.abs(s.x - 10) < 1e-6 && s.state === "idle", 10000, "MDI G0 X10");
+  if (done) expect((await h.dro("X")) === "10.000", `MDI G0 X10: X at ${done.x}, the DRO shows ${await h.dro("X")}`);
+}
+
+async function checkMdiError(h) {
+  await h.ch.locator(".mdi input").fill("G0 X10 Q");
+  await h.ch.locator(".mdi input").press("Enter");
+  const item = h.page.locator("#errors li").first();
+  const text = await item.textContent({ timeout: 5000 }).catch(() => "");
+  expect(/Remedy: \S/.test(text), `a bad MDI block lists an error with its remedy: "${text.slice(0, 160)}"`,
+    `a bad MDI block lists no error with a remedy (got "${text}")`);
+}
+
+// Single step is switched on once the program runs: a new run starts with
+// the switch off whatever the page set before (a server issue).
+async function checkSingleStep(h) {
+  await h.reset();
+  let m = await h.mark();
+  await h.button("Cycle start").click();
+  await h.until(m, (s) => s.state === "running", 3000, "cycle start");
+  m = await h.mark();
+  await h.ch.getByLabel("single step").check();
+  await h.until(m, (s) => s.step, 2000, "single step on");
+  const holds = [];
+  for (let i = 0; i < 3; i++) {
+    const hold = await h.until(m, (s) => s.state === "hold" && s.v === 0, 6000, `single step hold ${i + 1}`);
+    if (!hold) break;
+    holds.push(hold.line);
+    await h.page.waitForTimeout(200);
+    const still = await h.now();
+    if (still.state !== "hold") fail(`single step: the hold at line ${hold.line} did not last (${still.state})`);
+    m = await h.mark();
+    await h.button("Cycle start").click();
+    await h.until(m, (s) => s.state === "running", 3000, "cycle start after a single step");
+    m = await h.mark();  // the next hold comes after this run
+  }
+  expect(holds.length === 3 && holds[1] > holds[0] && holds[2] > holds[1], `single step holds at block ends: lines ${holds.join(", ")}`);
+  await h.ch.getByLabel("single step").uncheck();
+  await h.reset();
+}
+
+async function checkBlockSearch(h) {
+  const line = await h.ch.locator(".program-lines li", { hasText: /^\d+N120 / }).getAttribute("data-line");
+  const m = await h.mark();
+  await h.ch.locator(`.program-lines li[data-line="${line}"]`).click();
+  await h.page.waitForFunction(() => /N120/.test(document.querySelector(".channel .notice").textContent), null, { timeout: 3000 })
+    .catch(() => fail("clicking N120 stages no block search"));
+  await h.button("Cycle start").click();
+  const held = await h.until(m, (s) => s.state === "hold", 10000, "block search hold");
+  const states = [...new Set((await h.since(m)).map((s) => s.state))];
+  expect(held && (states.includes("searching") || states.includes("returning")),
+    `block search to N120 (line ${line}): states ${states.join(" → ")}`);
+  if (held) expect(Math.abs(held.x + 32) < 1e-3 && Math.abs(held.y - 25) < 1e-3,
+    `held at the restart point X${held.x.toFixed(3)} Y${held.y.toFixed(3)} (N110's end)`);
+  const m2 = await h.mark();
+  await h.button("Cycle start").click();
+  const on = await h.until(m2, (s) => s.state === "running" && s.line > Number(line), 5000, "continuing after the search");
+  if (on) ok(`cycle start continues the program past N120 (line ${on.line})`);
+}
+
+// The run's speed from the top bar: the program's rest at 5x real time, to its end.
+async function checkSpeedToEnd(h) {
+  const m = await h.mark();
+  await h.page.locator("#speed").selectOption("5");
+  const fast = await h.until(m, (s) => s.speed === 5, 2000, "speed 5x");
+  const end = await h.until(m, (s) => s.state === "ended", 20000, "the program's end at 5x");
+  if (fast && end) ok(`speed 5x: the program ends (line ${end.line})`);
+}
+
+// An incremental jog from the jog keys: X+ by 1 mm from where MDI left X.
+async function checkJog(h) {
+  const from = (await h.now()).x;
+  const m = await h.mark();
+  await h.ch.locator('select[aria-label="jog increment"]').selectOption("1");
+  await h.ch.locator('button.jog[data-axis="X"][data-direction="+"]').click();
+  const done = await h.until(m, (s) => Math.abs(s.x - (from + 1)) < 1e-6 && s.v === 0, 5000, "jog X+ 1 mm");
+  if (done) ok(`jog X+ by 1 mm: X ${from} → ${done.x}`);
+}
+
+async function checkRate(h) {
+  const a = await h.page.evaluate(() => ({ n: window.nckHmi.stats.snapshots, t: performance.now() }));
+  await h.page.waitForTimeout(2000);
+  const b = await h.page.evaluate(() => ({ n: window.nckHmi.stats.snapshots, t: performance.now() }));
+  const rate = ((b.n - a.n) * 1000) / (b.t - a.t);
+  console.log(`stream rate at the client: ${rate.toFixed(1)} snapshots/s`);
+  expect(rate >= 30, `stream rate ${rate.toFixed(1)} snapshots/s >= 30`);
+}
+
+async function checkBackplot(h) {
+  const plot = await h.page.evaluate(() => {
+    const b = window.nckHmi.panels[0].plot;
+    return { n: b.n, tool: !!b.tool, rapid: b.ch.rapid.filter(Boolean).length };
+  });
+  expect(plot.n > 20 && plot.tool && plot.rapid > 0 && plot.rapid < plot.n,
+    `live backplot: ${plot.n} points (${plot.rapid} of them G0), tool marker ${plot.tool}`);
+}
+
+// A machine of two channels: one column each, with its own axes.
+async function checkTwoChannels(browser) {
+  const server = startServer(path.resolve(args.nck), src, ["examples/two-channel"], 30);
+  try {
+    const url = await server.url;
+    const page = await browser.newPage({ viewport: { width: 1560, height: 1000 } });
+    await page.goto(url);
+    await page.waitForFunction(() => window.nckHmi && window.nckHmi.ready, null, { timeout: 10000 });
+    const columns = await page.evaluate(() => [...document.querySelectorAll("section.channel")].map((c) =>
+      [...c.querySelectorAll(".dro tr[data-axis]")].map((r) => r.dataset.axis).join("")));
+    const machine = await page.evaluate(() => window.nckHmi.machine.channels.map((c) => c.axes.join("")));
+    expect(columns.length === 2 && columns.join() === machine.join(), `two channels side by side: axes ${columns.join(" | ")}`,
+      `columns ${JSON.stringify(columns)} for the channels ${JSON.stringify(machine)}`);
+    await page.close();
+  } finally {
+    await server.stop();
+  }
+}
+
+// The page down to its content (the README's picture: the whole path of the run after the search).
+async function screenshot(page) {
+  const height = await page.evaluate(() => Math.ceil(document.querySelector("main").getBoundingClientRect().bottom) + 8);
+  const clip = { x: 0, y: 0, width: page.viewportSize().width, height: Math.min(height, page.viewportSize().height) };
+  await page.screenshot({ path: path.join(out, "hmi.png"), clip });
+  if (args.screenshot) await page.screenshot({ path: path.resolve(args.screenshot), clip });
+}
+
+async function run(browser, url, port) {
+  const context = await browser.newContext({ viewport: { width: 1560, height: 1000 }, deviceScaleFactor: 1 });
+  const page = await context.newPage();
+  const problems = [], foreign = [];
+  page.on("console", (m) => { if (m.type() === "error" || m.type() === "warning") problems.push(m.type() + ": " + m.text()); });
+  page.on("pageerror", (e) => problems.push("page error: " + e.message));
+  await page.route("**/*", (route) => {
+    const u = new URL(route.request().url());
+    if (u.hostname === "127.0.0.1" && u.port === String(port)) return route.continue();
+    foreign.push(u.href);
+    return route.abort();
+  });
+  const t = Date.now();
+  await page.goto(url, { waitUntil: "load" });
+  await page.waitForFunction(() => window.nckHmi && window.nckHmi.ready && window.nckHmi.panels[0].program.lines.length, null, { timeout: 10000 });
+  const loadMs = Date.now() - t;
+  console.log(`page load: ${loadMs} ms to the first snapshot and the program text (in-page ${(await page.evaluate(() => window.nckHmi.loadMs)).toFixed(0)} ms)`);
+  expect(loadMs < 3000, `page load ${loadMs} ms < 3000 ms`);
+  await page.evaluate(installRecorder);
+  const h = new Hmi(page);
+  await checkRate(h);
+  await checkStart(h);
+  await checkOverride(h);
+  await checkFeedhold(h);
+  await checkBackplot(h);
+  await checkSingleStep(h);
+  await checkBlockSearch(h);
+  await checkSpeedToEnd(h);
+  await screenshot(page);
+  await checkMdi(h);
+  await checkJog(h);
+  await checkMdiError(h);
+  expect(!problems.length, "no console errors or warnings", "console: " + problems.join(" | "));
+  expect(!foreign.length, "no request beyond the server", "requests beyond the server: " + foreign.join(", "));
+  await context.close();
+}
+
+const server = startServer(path.resolve(args.nck), src, ["examples/mill", "examples/mill/contour.nc", "--speed", "1"]);
+const browser = await chromium.launch({ executablePath: chromiumPath, headless: true, args: ["--no-sandbox"] });
+try {
+  const url = await server.url;
+  await run(browser, url, new URL(url).port);
+  await checkTwoChannels(browser);
+} catch (e) {
+  fail(e.stack || String(e));
+} finally {
+  await browser.close();
+  const code = await server.stop();
+  if (code !== 0 && code !== 143 && code !== "SIGTERM") fail(`nck serve ended with ${code}: ${server.stderr()}`);
+}
+console.log(failures ? `${failures} failure(s)` : "all HMI checks passed");
+process.exit(failures ? 1 : 0);

@@ -1,0 +1,163 @@
+// One channel's column of the HMI: its state, DRO, program (with block
+// search), live backplot and controls (hmi_controls.js).
+(function () {
+  "use strict";
+  const { el, button, fixed } = window.NckUi;
+  const api = window.NckApi;
+  const C = window.NckControls;
+
+  const WAITS = {
+    plc_ack: "the PLC's acknowledgement", speed_reached: "spindle speed reached", in_position: "in position",
+    standstill: "standstill", homing: "homing", gear_change: "gear change", expl_syn: "explicit synchronisation",
+    dwell: "dwell", feedhold: "feed hold", coupling: "a spindle coupling",
+  };
+
+  class ChannelPanel {
+    // machine: this channel's {axes, spindles}; n: its number (1..);
+    // report(error, what): shows a refused command in the errors list.
+    constructor(parent, n, machine, report) {
+      this.n = n;
+      this.axes = machine.axes;
+      this.report = report;
+      this.run = null;
+      this.programName = undefined;
+      this.send = (command, fields) => api.command(command, n, fields).then(() => true,
+        (e) => { report(e, `channel ${n}: ${command}`); return false; });
+      this.controls = [C.cyclePanel(this.send), C.overridePanel(this.send), C.skipPanel(this.send),
+        C.spindlePanel(this.send, machine.spindles), C.jogPanel(this.send, machine.axes), C.mdiPanel(this.send)];
+      this.program = new window.NckProgramView((nr, line) => this.search(nr, line));
+      this.el = el("section", { class: "channel", "data-channel": n },
+        this.header(), el("div", { class: "channel-body" },
+          el("div", { class: "col controls" }, this.dro(), ...this.controls.map((c) => c.el)),
+          el("div", { class: "col program-col" }, this.picker(), this.program.el, this.notice = el("div", { class: "notice" })),
+          this.plotCol = el("div", { class: "col plot-col" })));
+      parent.append(this.el);
+      this.makeBackplot();
+    }
+
+    header() {
+      this.stateEl = el("span", { class: "state" }, "—");
+      this.whyEl = el("span", { class: "why" });
+      this.blockEl = el("span", { class: "block" });
+      return el("header", { class: "channel-head" }, el("h2", {}, "Channel " + this.n), this.stateEl, this.whyEl, this.blockEl);
+    }
+
+    // The DRO: machine and program coordinates per axis, path velocity and feed.
+    dro() {
+      this.droCells = {};
+      const rows = this.axes.map((a) => {
+        const mcs = el("td", { class: "num" }), pcs = el("td", { class: "num" });
+        this.droCells[a] = { mcs, pcs };
+        return el("tr", { "data-axis": a }, el("th", {}, a), pcs, mcs);
+      });
+      this.velEl = el("td", { class: "num", colspan: 2 });
+      this.feedEl = el("td", { class: "num", colspan: 2 });
+      return el("table", { class: "dro panel" },
+        el("tr", {}, el("th", {}), el("th", { class: "num" }, "PCS mm"), el("th", { class: "num" }, "MCS mm")), ...rows,
+        el("tr", { class: "small" }, el("th", {}, "path v"), this.velEl),
+        el("tr", { class: "small" }, el("th", {}, "feed"), this.feedEl));
+    }
+
+    // Program picker: a program of /api/v1/programs, loaded into this channel; or an upload.
+    picker() {
+      this.select = el("select", { "aria-label": "program of channel " + this.n });
+      const file = el("input", { type: "file", accept: ".nc,.txt", hidden: true, onchange: () => this.uploadFile(file) });
+      return el("div", { class: "picker" }, this.select,
+        button("Load", "load the chosen program into this channel", () => this.load(this.select.value)),
+        button("Upload…", "upload an NC program from this computer", () => file.click()), file);
+    }
+
+    programs(list) {
+      const keep = this.select.value;
+      this.select.replaceChildren(...list.filter((p) => /\.(nc|ecy|txt)$/i.test(p)).map((p) => el("option", { value: p }, p)));
+      if (keep) this.select.value = keep;
+    }
+
+    async uploadFile(input) {
+      const f = input.files[0];
+      if (!f) return;
+      try {
+        const r = await api.upload(f.name, await f.text());
+        this.say(`uploaded as ${r.program}`);
+        this.onUploaded && this.onUploaded(r.program);
+      } catch (e) { this.report(e, `upload ${f.name}`); }
+      input.value = "";
+    }
+
+    async load(program, startAt) {
+      if (!program) return false;
+      try {
+        await api.command("load", this.n, startAt ? { program, start_at: startAt } : { program });
+        return true;
+      } catch (e) { this.report(e, `channel ${this.n}: load ${program}`); return false; }
+    }
+
+    // A click on a line: load the program with that block as the search mark.
+    async search(nr, line) {
+      const program = this.programName;
+      if (await this.load(program, "N" + nr))
+        this.say(`block search to N${nr} (line ${line}) staged: Cycle start searches, returns to the contour and holds; Cycle start again continues.`);
+    }
+
+    say(text) { this.notice.textContent = text; }
+
+    makeBackplot() {
+      const has = ["X", "Y", "Z"].map((a) => this.axes.includes(a));
+      this.plotCh = { n: this.n, plane: "XY", axes: ["X", "Y", "Z"], has, x: [], y: [], z: [], px: [], py: [], pz: [], rapid: [], file: [], line: [] };
+      // the backplot's hover reads d.lines["file:line"]: the loaded program's text
+      const lines = new Proxy({}, { get: (_, key) => this.program.text(Number(String(key).split(":")[1])) });
+      const data = { channels: [this.plotCh], files: [""], lines };
+      const width = Math.max(320, Math.min(640, this.plotCol.clientWidth - 24));  // the box's padding and border
+      this.plot = new window.NckBackplot(this.plotCol, this.plotCh, data, { width, height: Math.round(width * 0.8), minSpan: 20 });
+    }
+
+    xyz(pos) { return ["X", "Y", "Z"].map((a) => (pos && a in pos ? pos[a] : 0)); }
+
+    // A point on the path where the tool moved (not every snapshot of a standstill).
+    track(c) {
+      const mcs = this.xyz(c.mcs), pcs = this.xyz(c.pcs), ch = this.plotCh, k = ch.x.length - 1;
+      this.plot.setTool(mcs, pcs);
+      const rapid = c.cause === "rapid";
+      if (k >= 0 && Math.abs(ch.x[k] - mcs[0]) + Math.abs(ch.y[k] - mcs[1]) + Math.abs(ch.z[k] - mcs[2]) < 1e-3) return;
+      this.plot.append(mcs, pcs, rapid, 0, c.block.file === this.program.path ? c.block.line : 0);
+    }
+
+    // A snapshot (/api/v1/state) and this channel's part of it.
+    update(state) {
+      const c = state.channels[this.n - 1];
+      if (!c) return;
+      this.state = c;
+      this.stateEl.textContent = c.state;
+      this.stateEl.dataset.state = c.state;
+      this.whyEl.textContent = c.wait ? "waits for " + (WAITS[c.wait] || c.wait) : c.cause && c.state !== "idle" ? c.cause : "";
+      const b = c.block;
+      this.blockEl.textContent = b.line ? `${String(b.file).split("/").pop()}:${b.line}${b.n != null ? " N" + b.n : ""}` : "";
+      for (const a of this.axes) {
+        this.droCells[a].mcs.textContent = fixed(c.mcs[a], 3);
+        this.droCells[a].pcs.textContent = fixed(c.pcs[a], 3);
+      }
+      this.velEl.textContent = fixed(c.path_velocity_mm_s * 60, 0) + " mm/min";
+      this.feedEl.textContent = fixed(c.feed_mm_s * 60, 0) + " mm/min";
+      for (const p of this.controls) p.update(c, state);
+      this.followProgram(state);
+      if (this.run !== state.run) { this.run = state.run; this.plot.clear(); }
+      this.track(c);
+      this.program.highlight(b.file, b.line);
+    }
+
+    // The program text follows the loaded program (fetched when it changes).
+    async followProgram(state) {
+      const name = (state.programs || [])[this.n - 1];
+      if (name === this.programName) return;
+      this.programName = name;
+      if (name) this.select.value = name;
+      try {
+        const p = await api.get("/api/v1/program?channel=" + this.n);
+        this.program.show(p);
+        this.plot.data.files[0] = p.path;
+      } catch (e) { this.report(e, `channel ${this.n}: program text`); }
+    }
+  }
+
+  window.NckChannelPanel = ChannelPanel;
+})();
