@@ -352,8 +352,10 @@ void Channel::stop_program(const Hold& hold, Cycle& cy) noexcept {
 }
 
 // A channel that is done (program end, reset, MDI done or failed) takes
-// the operator's MDI text; what is left of a failed one is dropped. rt
+// the operator's MDI text; what is left of a failed one is dropped, and of
+// a program a reset or an error ended. rt
 void Channel::take_mdi() noexcept {
+  while (!commands_->empty() && commands_->front().mdi == Mdi::none) commands_->pop();
   while (dropping_mdi_ && !commands_->empty()) {
     dropping_mdi_ = commands_->front().mdi != Mdi::end;
     commands_->pop();
@@ -457,6 +459,12 @@ void Channel::end_program(EndReason reason, Cycle& cy) noexcept {
   status_ = ok ? ChannelStatus::ended : ChannelStatus::aborted;
   active_ = false;
   path_.reset();
+  if (!ok) {  // preparation may be ahead: it learns where the path stands (MDI plans from there)
+    Feedback f;
+    f.kind = FeedbackKind::stopped;
+    f.path_mcs_mm = path_.position();
+    (void)cy.send(f);  // full: a record still waits, and preparation drops the program anyway
+  }
   hold_.reset();
   sync_.clear();
   cax_.end(cy.machine);

@@ -21,6 +21,10 @@ void take_feedback(const kernel::Feedback& f, Planner& planner, nc::Decoder& dec
     for (const auto& [name, value] : planner.take_measurement(f.measure)) (void)decoder.set_variable(name, value);
     return;
   }
+  if (f.kind == kernel::FeedbackKind::stopped) {
+    planner.take_stopped_position(f.path_mcs_mm);
+    return;
+  }
   if (f.kind == kernel::FeedbackKind::c_axis) {
     planner.take_c_axis_position(f.c_axis_deg);
     return;

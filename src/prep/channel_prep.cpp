@@ -58,6 +58,7 @@ bool ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& fe
   // command or sent feedback, or the channel ended: most cycles of a dry run
   // end here (the kernel takes one block while it runs for many cycles).
   const Idle now{commands.free_slots(), channel_done};
+  if (channel_done && !in_mdi_) take_stop(feedback);
   const bool mdi_waits = done() && mdi_->pending.load(std::memory_order_acquire) > 0 && !in_mdi_;
   if (idle_ && *idle_ == now && feedback.empty() && !mdi_waits) return false;
   if (mdi_waits) start_mdi();
@@ -67,6 +68,23 @@ bool ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& fe
   if (progressed) idle_.reset();
   else idle_ = Idle{commands.free_slots(), channel_done};
   return progressed;
+}
+
+// The kernel ended the program before its end (a reset, an error it met):
+// what preparation has of it is dropped, and planning (MDI) goes on from
+// where the path stands. Nothing to do when no such record came.
+void ChannelPrep::take_stop(kernel::FeedbackQueue& feedback) {
+  bool stopped = false;
+  for (std::size_t i = 0; i < feedback.size(); ++i) stopped = stopped || feedback.at(i).kind == kernel::FeedbackKind::stopped;
+  if (!stopped) return;
+  for (; !feedback.empty(); feedback.pop())  // records before the stop belong to the dropped program
+    if (feedback.front().kind == kernel::FeedbackKind::stopped) take_feedback(feedback.front(), *planner_, *decoder_);
+  window_.drop_all();
+  backlog_.clear();
+  search_.reset();
+  flushing_ = awaiting_feedback_ = false;
+  done_ = true;
+  idle_.reset();
 }
 
 void ChannelPrep::feed_blocks(kernel::CommandQueue& commands, kernel::FeedbackQueue& feedback,

@@ -284,6 +284,11 @@ std::vector<std::pair<std::string, double>> Planner::take_measurement(const kern
   return measure_.take_measurement(r, ctx);
 }
 
+void Planner::take_stopped_position(const motion::AxisVector& path_mcs) {
+  planned_.mcs = path_mcs;
+  planned_.reread(frames_);
+}
+
 void Planner::take_c_axis_position(double c_deg) {
   PlanContext ctx = context();
   cax_.take_c_axis_position(c_deg, ctx);

@@ -26,6 +26,10 @@ std::expected<DryRun, Diagnostic> DryRun::create(const config::Machine& m,
     run.preps_.emplace_back(*run.machine_, ch, has_program ? programs[ch] : std::filesystem::path(), *run.store_,
                             prep);
   }
+  for (std::size_t ch = 0; ch < run.preps_.size() && ch < config::kMaxChannels; ++ch) {
+    run.sim_->start_with_skip_mask(ch, options.skip_masks[ch]);
+    if (options.skip_masks[ch] != 0) run.preps_[ch].set_skip_mask(options.skip_masks[ch]);
+  }
   return run;
 }
 
@@ -58,7 +62,10 @@ void DryRun::prepare() {
 }
 
 void DryRun::start_preparation_thread() {
-  if (!prep_thread_) prep_thread_ = std::make_unique<PrepThread>(preps_, *kernel_);
+  if (prep_thread_) return;
+  std::array<std::uint32_t, config::kMaxChannels> masks{};
+  for (std::size_t ch = 0; ch < preps_.size() && ch < masks.size(); ++ch) masks[ch] = sim_->hli().channel[ch].skip_mask;
+  prep_thread_ = std::make_unique<PrepThread>(preps_, *kernel_, masks);
 }
 
 void DryRun::prepare_live() {

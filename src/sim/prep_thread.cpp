@@ -6,8 +6,12 @@
 
 namespace nck::sim {
 
-PrepThread::PrepThread(std::vector<prep::ChannelPrep>& preps, kernel::Kernel& kernel)
-    : preps_(preps), kernel_(kernel), thread_([this](std::stop_token st) { run(st); }) {}
+PrepThread::PrepThread(std::vector<prep::ChannelPrep>& preps, kernel::Kernel& kernel,
+                       const std::array<std::uint32_t, config::kMaxChannels>& skip_masks)
+    : preps_(preps), kernel_(kernel) {
+  for (std::size_t ch = 0; ch < skip_masks.size(); ++ch) skip_masks_[ch].store(skip_masks[ch], std::memory_order_relaxed);
+  thread_ = std::jthread([this](std::stop_token st) { run(st); });  // sees everything above
+}
 
 PrepThread::~PrepThread() { stop(); }
 

@@ -142,6 +142,9 @@ void LiveKernel::publish(const sim::DryRun& run, const kernel::TickOutput& out) 
   }
   s.spindles = out.spindles;
   s.hli_spindles = out.hli_spindles;
+  for (std::size_t i = 0; i < s.spindle_count && i < s.spindle_override_pct.size(); ++i) {
+    s.spindle_override_pct[i] = run.machine().hli().spindle_control[i].effective_override_percent();
+  }
   s.lateness = clock_.lateness();
   s.events_lost = events_lost_;
   snapshots_.publish();

@@ -42,6 +42,7 @@ struct LiveSnapshot {
   std::array<LiveChannel, config::kMaxChannels> channels{};
   std::array<kernel::SpindleOutput, kernel::kMaxMachineSpindles> spindles{};
   std::array<plc::SpindleStatus, kernel::kMaxMachineSpindles> hli_spindles{};
+  std::array<double, kernel::kMaxMachineSpindles> spindle_override_pct{};  // the operator's (HLI)
   Lateness lateness;
   std::uint64_t events_lost = 0;  // the event ring was full (a server that fell behind)
 };

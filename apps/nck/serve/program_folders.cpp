@@ -34,6 +34,14 @@ bool plain_name(std::string_view name) {
          });
 }
 
+// What a machine folder holds besides programs: lists, scenarios, notes.
+bool looks_like_program(const fs::path& p) {
+  static constexpr std::string_view kOther[] = {".lis", ".plc", ".md", ".json", ".jsonl", ".csv", ".html",
+                                                ".png", ".sha256", ".part"};
+  const std::string ext = p.extension().string();
+  return p.filename().string().front() != '.' && std::find(std::begin(kOther), std::end(kOther), ext) == std::end(kOther);
+}
+
 }  // namespace
 
 ProgramFolders::ProgramFolders(std::vector<fs::path> roots, fs::path uploads, std::uintmax_t max_bytes)
@@ -72,7 +80,7 @@ std::vector<std::string> ProgramFolders::list() const {
     std::error_code ec;
     for (fs::recursive_directory_iterator it(root, ec), end; !ec && it != end && names.size() < 1000; it.increment(ec)) {
       if (it.depth() > 3) it.disable_recursion_pending();
-      if (!it->is_regular_file(ec) || it->path().extension() == ".lis") continue;
+      if (!it->is_regular_file(ec) || !looks_like_program(it->path())) continue;
       std::string rel = it->path().lexically_relative(root).generic_string();
       if (std::find(names.begin(), names.end(), rel) == names.end() && resolve(rel)) names.push_back(std::move(rel));
     }

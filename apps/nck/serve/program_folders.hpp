@@ -25,7 +25,7 @@ class ProgramFolders {
   // The program `name` names (relative to a folder, or absolute inside one).
   std::expected<std::filesystem::path, Diagnostic> resolve(std::string_view name) const;
   // Programs one may load: names relative to their folder (first folder
-  // wins), at most 1,000, .lis files left out.
+  // wins), at most 1,000; lists, scenarios and notes (.lis .plc .md ...) left out.
   std::vector<std::string> list() const;
   // Stores an uploaded program under `name` (letters, digits, . _ -) in the
   // uploads folder; its name for resolve().

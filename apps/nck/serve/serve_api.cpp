@@ -199,14 +199,24 @@ std::expected<std::unique_ptr<sim::DryRun>, Diagnostic> ServeApi::make_run(
   o.allowed_roots = folders_.roots();
   o.search = search;
   o.search_channel = search_channel;
+  for (std::size_t ch = 0; ch < o.skip_masks.size(); ++ch) o.skip_masks[ch] = last_.channels[ch].hli.skip_mask;
   auto run = sim::DryRun::create(machine_, programs_, o);
   if (!run) return std::unexpected(run.error());
   auto live = std::make_unique<sim::DryRun>(std::move(*run));
-  // The operator presses cycle start for every hold (M0, single step, search).
-  for (std::size_t ch = 0; ch < machine_.channels.size(); ++ch) {
-    Diagnostics ignored;
-    if (auto op = sim::parse_operator_action(fmt::format("ch={} auto_cycle_start off", ch + 1), machine_, ignored))
-      (void)live->machine().operate(op->action);
+  // The operator presses cycle start for every hold (M0, single step,
+  // search); the switches and the override stay as the operator left them
+  // (the skip levels already rule the decoding: DryRunOptions::skip_masks).
+  for (std::size_t ch = 0; ch < machine_.channels.size() && ch < config::kMaxChannels; ++ch) {
+    const plc::ChannelControl& c = last_.channels[ch].hli;
+    const auto on_off = [](bool on) { return on ? "on" : "off"; };
+    for (const std::string& line :
+         {std::string("auto_cycle_start off"), fmt::format("feed_override {}", c.feed_override_percent),
+          fmt::format("single_step {}", on_off(c.single_step)), fmt::format("optional_stop {}", on_off(c.optional_stop)),
+          fmt::format("mode {}", c.manual_mode ? "manual" : "automatic")}) {
+      Diagnostics ignored;
+      if (auto op = sim::parse_operator_action(fmt::format("ch={} {}", ch + 1, line), machine_, ignored))
+        (void)live->machine().operate(op->action);
+    }
   }
   live->start_preparation_thread();
   return live;

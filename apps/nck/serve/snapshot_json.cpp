@@ -70,6 +70,7 @@ json spindle_json(const LiveSnapshot& s, std::size_t i, const sim::DryRun& run) 
           {"act_rpm", o.act_rpm},
           {"pos_deg", o.set_pos_deg},
           {"gear", h.gear_stage},
+          {"override_pct", s.spindle_override_pct[i]},
           {"speed_reached", h.speed_reached},
           {"stopped", h.stopped}};
 }

@@ -75,6 +75,7 @@ enum class FeedbackKind : std::uint8_t {
   measured,        // a G100 run ended: `measure`
   manual_offsets,  // #GET MANUAL OFFSETS ran: `manual_offsets_mm`
   c_axis,          // #CAX ran: the spindle's position is C's start, `c_axis_deg`
+  stopped,         // a reset or an error ended the program: the path stands at `path_mcs_mm`
 };
 
 struct Feedback {
@@ -82,6 +83,7 @@ struct Feedback {
   MeasureResult measure{};
   motion::AxisVector manual_offsets_mm{};
   double c_axis_deg = 0;
+  motion::AxisVector path_mcs_mm{};
 };
 
 // Preparation holds further blocks back after each block that needs

@@ -120,6 +120,7 @@ class ChannelPrep {
   void search_not_found(const nc::Block& end, kernel::CommandQueue& commands);
   // MDI: starts the next text once everything before it is prepared; ends
   // one (the command that returns the channel to idle).
+  void take_stop(kernel::FeedbackQueue& feedback);
   void start_mdi();
   void finish_mdi(kernel::CommandQueue& commands);
   void mark_mdi(PlannedBlock& b) const;

@@ -75,6 +75,8 @@ class LookAheadWindow {
   // flushing) to q while it has room. True when nothing that should leave
   // is left behind.
   bool release(kernel::CommandQueue& q, bool flush);
+  // The program was ended by the kernel: nothing in the window leaves.
+  void drop_all() { head_ = tail_; }
   // Commands handed to the queue so far.
   std::uint64_t released() const { return head_; }
 

@@ -76,6 +76,9 @@ class Planner final : public nc::KernelStateReader {
   // After #CAX (the caller held further blocks back until it ran): C starts
   // where the spindle stood.
   void take_c_axis_position(double c_deg);
+  // A reset or an error ended the program where the path stands: planning
+  // (MDI after it) goes on from there.
+  void take_stopped_position(const motion::AxisVector& path_mcs);
   // Block search: the return to the contour, a rapid straight line from
   // where the axes stand to where the program restarts (exact stop at both ends).
   PlannedCommand return_motion(const motion::AxisVector& from_mcs, const motion::AxisVector& to_mcs) const;

@@ -46,6 +46,8 @@ struct DryRunOptions {
   // nck serve: the folders every file a program opens must lie in (empty: any).
   std::vector<std::filesystem::path> allowed_roots;
   bool record_modal = false;  // with record_frames: the modal state of each block (nck serve)
+  // Block-skip levels per channel at program start (the HLI's; nck serve keeps the operator's).
+  std::array<std::uint32_t, config::kMaxChannels> skip_masks{};
 };
 
 // What a channel knows about its programmed state, for --final.

@@ -60,6 +60,13 @@ class MachineSim {
   void set_stop_at(std::size_t ch, const kernel::StopMark& mark) noexcept {
     if (ch < stop_at_.size()) stop_at_[ch] = mark;
   }
+  // setup: channel ch's block-skip levels at program start (a live run
+  // keeps the operator's), as a scenario's skip_mask line at time 0 does.
+  void start_with_skip_mask(std::size_t ch, std::uint32_t mask) noexcept {
+    if (ch >= channels_ || mask == 0) return;
+    hli_.channel[ch].skip_mask = mask;
+    skip_levels_used_ = true;
+  }
   // The scenario sets block-skip levels (until then decoding needs no mask).
   bool skip_levels_used() const noexcept { return skip_levels_used_; }
   // The scenario has actions still to come.

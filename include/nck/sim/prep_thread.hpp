@@ -27,8 +27,9 @@ namespace nck::sim {
 
 class PrepThread {
  public:
-  // setup: starts the thread; preps and kernel must outlive it.
-  PrepThread(std::vector<prep::ChannelPrep>& preps, kernel::Kernel& kernel);
+  // setup: starts the thread with these block-skip levels; preps and kernel must outlive it.
+  PrepThread(std::vector<prep::ChannelPrep>& preps, kernel::Kernel& kernel,
+             const std::array<std::uint32_t, config::kMaxChannels>& skip_masks = {});
   ~PrepThread();  // stops and joins
   PrepThread(const PrepThread&) = delete;
   PrepThread& operator=(const PrepThread&) = delete;
@@ -75,7 +76,7 @@ class PrepThread {
   std::array<std::atomic<std::uint32_t>, config::kMaxChannels> skip_masks_{};  // HLI skip levels (cycle side)
   std::exception_ptr failure_;  // written before failed_ is set
   std::atomic<bool> failed_{false};
-  std::jthread thread_;  // last: started once everything above exists
+  std::jthread thread_;  // started by the constructor once everything above is set
 };
 
 }  // namespace nck::sim

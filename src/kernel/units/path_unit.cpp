@@ -72,6 +72,14 @@ void PathUnit::reset() noexcept {
   velocity_ = 0;
   passing_ = reserve_ = starved_ = false;
   profile_.reset();
+  // The next motion starts where the path stands, not at the end of a block
+  // a reset left (a rotated block's segment is in program coordinates: kept).
+  if (map_) return;
+  motion::SegmentTail here = segment_.tail();
+  here.kind = motion::SegmentKind::line;
+  here.end = pos_;
+  here.length_mm = 0;
+  segment_ = motion::Segment::joined(pos_, here);
 }
 
 // While the commands queued after a motion do not reach a stop or a braking

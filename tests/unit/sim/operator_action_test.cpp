@@ -1,7 +1,9 @@
 // Operator actions on a running kernel (nck serve, the Python session): one
 // scenario line without its time, parsed and checked as a scenario file's,
 // applied by the simulated machine in the next cycle (MDI: by preparation).
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <string>
 
@@ -61,13 +63,15 @@ struct LiveMill {
   std::optional<DryRun> run;
   kernel::TickOutput out;
 
-  explicit LiveMill(bool with_program) {
+  explicit LiveMill(bool with_program, bool threaded = false) {
     const std::string root = NCK_SOURCE_DIR;
     config::LoadResult loaded = config::load_machine(root + "/examples/mill");
     machine = std::make_unique<config::Machine>(*loaded.machine);
     std::vector<std::filesystem::path> programs;
     if (with_program) programs.emplace_back(root + "/examples/mill/contour.nc");
-    run.emplace(*DryRun::create(*machine, programs));
+    DryRunOptions options;
+    options.prep_thread = threaded;
+    run.emplace(*DryRun::create(*machine, programs, options));
   }
   std::optional<Diagnostic> operate(std::string_view line) {
     Diagnostics d;
@@ -117,6 +121,58 @@ TEST(OperatorAction, MdiMovesAnIdleChannelAndIsRefusedWhileAProgramRuns) {
   const auto refused = busy.operate("mdi G0 X10");
   ASSERT_TRUE(refused);
   EXPECT_EQ(refused->id, ErrorId::KernelMdiRefused);
+}
+
+// A program reset in the middle: the channel is idle, and MDI runs from
+// where the axes stand (single and threaded preparation).
+TEST(OperatorAction, MdiRunsAfterAResetInTheMiddleOfAProgram) {
+  for (const bool threaded : {false, true}) {
+    LiveMill mill(true, threaded);
+    mill.cycles(3000);
+    EXPECT_FALSE(mill.operate("reset"));
+    mill.cycles(200);
+    ASSERT_EQ(mill.run->kernel().program_state(0), kernel::ProgramState::idle) << threaded;
+    const AxisArray stopped = mill.out.channels[0].axis_mcs;
+    EXPECT_FALSE(mill.operate("mdi G0 X10"));
+    double largest_step_mm = 0;
+    for (int i = 0; i < 5000; ++i) {
+      const AxisArray before = mill.out.channels[0].axis_mcs;
+      mill.cycles(1);
+      for (std::size_t j = 0; j < 3; ++j)
+        largest_step_mm = std::max(largest_step_mm, std::abs(mill.out.channels[0].axis_mcs[j] - before[j]));
+    }
+    EXPECT_NEAR(mill.out.channels[0].axis_mcs[0], 10.0, 1e-9) << threaded;
+    // from where the path stood: Y and Z stay, and no axis jumps (at most a rapid's travel per cycle)
+    EXPECT_NEAR(mill.out.channels[0].axis_mcs[1], stopped[1], 1e-9) << threaded;
+    EXPECT_NEAR(mill.out.channels[0].axis_mcs[2], stopped[2], 1e-9) << threaded;
+    EXPECT_LE(largest_step_mm, 0.5 + 1e-9) << threaded;  // the mill's rapids: 30 m/min = 0.5 mm per cycle
+  }
+}
+
+// A live run starts with the operator's block-skip levels: preparation,
+// which decodes before the first cycle, skips from the first block on.
+TEST(OperatorAction, ARunStartsWithTheSkipLevelsItIsGiven) {
+  const std::filesystem::path program = std::filesystem::temp_directory_path() / "nck_skip_start.nc";
+  std::ofstream(program) << "N10 G0 X5\n/N20 G0 X50\nN30 M30\n";
+  const std::string root = NCK_SOURCE_DIR;
+  config::LoadResult loaded = config::load_machine(root + "/examples/mill");
+  for (const bool threaded : {false, true}) {
+    DryRunOptions options;
+    options.prep_thread = threaded;
+    options.skip_masks[0] = 0x1;
+    auto run = DryRun::create(*loaded.machine, {program}, options);
+    ASSERT_TRUE(run);
+    if (threaded) run->start_preparation_thread();
+    kernel::TickOutput out;
+    double largest_x = 0;
+    for (int i = 0; i < 3000 && !run->done(); ++i) {
+      run->step(out);
+      largest_x = std::max(largest_x, out.channels[0].axis_mcs[0]);
+    }
+    EXPECT_NEAR(largest_x, 5.0, 1e-9) << threaded;  // /N20 skipped
+    EXPECT_EQ(run->machine().hli().channel[0].skip_mask, 0x1u);
+  }
+  std::filesystem::remove(program);
 }
 
 TEST(OperatorAction, AtMost32ActionsWaitForOneCycle) {
