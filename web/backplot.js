@@ -258,9 +258,15 @@
         ctx.beginPath(); ctx.arc(x, y, 4, 0, 2 * Math.PI); ctx.stroke();
       }
       if (this.tool) this.drawTool(ctx);
+      this.drawGhost(ctx);
       if (this.hover != null) {
-        const [hx, hy] = this.toScreen(this.uv[2 * this.hover], this.uv[2 * this.hover + 1]);
+        const [hx, hy] = this.toScreen(...this.hoverUV);
         ctx.strokeStyle = "#111"; ctx.lineWidth = 2; ctx.beginPath(); ctx.arc(hx, hy, 5, 0, 2 * Math.PI); ctx.stroke();
+      }
+      if (this.marker) {  // the time cursor's tool position
+        const [mx, my] = this.toScreen(...this.projectPoint(this.marker));
+        ctx.fillStyle = "#111"; ctx.strokeStyle = "#fff"; ctx.lineWidth = 2;
+        ctx.beginPath(); ctx.arc(mx, my, 6, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
       }
     }
 
@@ -317,13 +323,39 @@
       requestAnimationFrame(() => { this.pending = false; this.draw(); });
     }
 
-    nearest(px, py) {
-      let best = -1, bestD = 12 * 12;
-      for (let i = 0; i < this.n; i++) {
-        const [x, y] = this.toScreen(this.uv[2 * i], this.uv[2 * i + 1]);
-        const d = (x - px) * (x - px) + (y - py) * (y - py);
-        if (d < bestD) { bestD = d; best = i; }
+    // nck diff --run --report: the other run's path (machine coordinates), grey and dashed.
+    drawGhost(ctx) {
+      const g = this.data.ghost;
+      if (!g || this.ch.n !== 1 || this.pcs()) return;
+      const p = g.path;
+      ctx.strokeStyle = "rgba(90,90,90,0.7)"; ctx.lineWidth = 1.2; ctx.setLineDash([3, 3]);
+      ctx.beginPath();
+      for (let k = 0; k < p.x.length; k++) {
+        const [x, y] = this.toScreen(...this.projectPoint([p.x[k], p.y[k], p.z[k]]));
+        if (k === 0) ctx.moveTo(x, y); else ctx.lineTo(x, y);
       }
+      ctx.stroke(); ctx.setLineDash([]);
+    }
+
+    // The time cursor: the tool at point p (machine coordinates), or none.
+    setMarker(p) { this.marker = p; this.draw(); }
+
+    // The path point nearest to the mouse, anywhere along a segment: the
+    // segment's end point (the block that moved there) and where on it.
+    nearest(px, py) {
+      let best = -1, bestD = 12 * 12, at = null;
+      const [mu, mv] = this.toModel(px, py);
+      for (let i = 0; i < this.n; i++) {
+        const u1 = this.uv[2 * i], v1 = this.uv[2 * i + 1];
+        const u0 = i > 0 ? this.uv[2 * i - 2] : u1, v0 = i > 0 ? this.uv[2 * i - 1] : v1;
+        const du = u1 - u0, dv = v1 - v0, dd = du * du + dv * dv;
+        const f = dd > 0 ? Math.max(0, Math.min(1, ((mu - u0) * du + (mv - v0) * dv) / dd)) : 1;
+        const qu = u0 + f * du, qv = v0 + f * dv;
+        const d = ((qu - mu) * (qu - mu) + (qv - mv) * (qv - mv)) * this.scale * this.scale;
+        if (d < bestD) { bestD = d; best = i; at = { uv: [qu, qv], f }; }
+      }
+      this.hoverUV = at ? at.uv : null;
+      this.hoverF = at ? at.f : 1;
       return best;
     }
 
@@ -350,10 +382,11 @@
         this.cx = u - (u - this.cx) / f; this.cy = v - (v - this.cy) / f;
         this.draw();
       }, { passive: false });
-      c.addEventListener("mousedown", (e) => { drag = { x: e.clientX, y: e.clientY, cx: this.cx, cy: this.cy }; });
+      c.addEventListener("mousedown", (e) => { drag = { x: e.clientX, y: e.clientY, cx: this.cx, cy: this.cy }; this.dragged = false; });
       window.addEventListener("mouseup", () => { drag = null; });
       c.addEventListener("mousemove", (e) => {
         if (drag) {
+          this.dragged = this.dragged || Math.abs(e.clientX - drag.x) + Math.abs(e.clientY - drag.y) > 3;
           this.cx = drag.cx - (e.clientX - drag.x) / this.scale;
           this.cy = drag.cy + (e.clientY - drag.y) / this.scale;
           this.moved = true;
@@ -367,8 +400,19 @@
         this.draw();
       });
       c.addEventListener("dblclick", () => { this.moved = false; this.fit(); this.draw(); });
+      // a click on the path moves the time cursor there (player.js listens)
+      c.addEventListener("click", (e) => {
+        const r = c.getBoundingClientRect();
+        const i = this.nearest(e.clientX - r.left, e.clientY - r.top);
+        if (i < 0 || !this.ch.t || this.dragged) return;
+        const t0 = i > 0 ? this.ch.t[i - 1] : this.ch.t[i];
+        const t = t0 + this.hoverF * (this.ch.t[i] - t0);
+        this.el.dispatchEvent(new CustomEvent("nck-seek", { bubbles: true, detail: { ch: this.ch.n, t } }));
+      });
+      c.addEventListener("dblclick", () => { this.fit(); this.draw(); });
     }
   }
 
+  Backplot.inverse = inverse;  // player.js: the DRO's PCS
   window.NckBackplot = Backplot;
 })();

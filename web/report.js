@@ -329,13 +329,35 @@
     return list;
   }
 
+  // nck diff --run --report: run B's cycle time and causes beside this run's.
+  function ghost() {
+    const g = D.ghost;
+    if (!g) return;
+    $("ghost-section").hidden = false;
+    let h = "<p>" + esc(g.label) + " — drawn grey and dashed on channel 1's backplot. Cycle time: this run " +
+      D.meta.end_s.toFixed(3) + " s, B " + g.time_s.toFixed(3) + " s (B − A " + (g.time_s - D.meta.end_s).toFixed(3) + " s).</p>";
+    (D.causes ? D.causes.channels : []).forEach((ch, c) => {
+      const a = {}, b = {};
+      for (const r of ch.causes) a[r.name] = r.time_s;
+      for (const r of g.causes[c] || []) b[r.name] = r.time_s;
+      const names = [...new Set(Object.keys(a).concat(Object.keys(b)))];
+      names.sort((x, y) => Math.abs((b[y] || 0) - (a[y] || 0)) - Math.abs((b[x] || 0) - (a[x] || 0)));
+      const fmt = (v) => (v == null ? "-" : v.toFixed(3));
+      h += "<h3>channel " + ch.ch + "</h3>" + table(["cause", "A (s)", "B (s)", "B − A (s)"],
+        names.map((n) => [esc(n), fmt(a[n]), fmt(b[n]), ((b[n] || 0) - (a[n] || 0)).toFixed(3)]), [0, 1, 1, 1]);
+    });
+    $("ghost").innerHTML = h;
+  }
+
   summary();
   diagnostics();
   const bps = backplots();
+  const player = new NckPlayer($("player"), D, bps, NckBackplot.inverse);
+  ghost();
   timeplots();
   cycletime();
   causes();
   events();
   // For the browser test and for scripting: what was drawn.
-  window.nckReport = { data: D, plots, backplots: bps, waitText, loadMs: performance.now() - t0, ready: true };
+  window.nckReport = { data: D, plots, backplots: bps, player, waitText, loadMs: performance.now() - t0, ready: true };
 })();

@@ -16,6 +16,7 @@
 
 #include "check_command.hpp"
 #include "commands.hpp"
+#include "diff_command.hpp"
 #include "nck/config/machine.hpp"
 #include "nck/core/edit_distance.hpp"
 #include "nck/core/diagnostic.hpp"
@@ -241,6 +242,24 @@ int main_cli(int argc, char** argv) {
       "FILE - writes that output to stdout (one output at a time); diagnostics and the progress line stay on "
       "stderr.");
 
+  DiffOptions diffo;
+  auto* diffc = app.add_subcommand(
+      "diff", "Compare two runs: cycle time and time by cause per cause, tool, subroutine and block");
+  diffc->add_option("INPUT", diffo.inputs,
+                    "A.json B.json (two nck run --final files), or with --run MACHINE_A PROGRAM_A MACHINE_B PROGRAM_B")
+      ->required();
+  diffc->add_flag("--run", diffo.run, "run both machine/program pairs first; also compare their paths");
+  diffc->add_flag("--json", diffo.json, "print the comparison as JSON on stdout");
+  diffc->add_option("--report", diffo.report, "with --run: run A's HTML report, run B drawn as a ghost beside it")
+      ->type_name("FILE");
+  diffc->add_option("--plc-a", diffo.plc_a, "with --run: run A's --plc scenario")->type_name("FILE");
+  diffc->add_option("--plc-b", diffo.plc_b, "with --run: run B's --plc scenario")->type_name("FILE");
+  diffc->add_option("--rows", diffo.rows, "rows per table on stdout")->check(number_at_least(1, true));
+  diffc->add_option("--max-time", diffo.max_time_s, "with --run: simulated-time limit of each run in seconds")
+      ->check(number_at_least(0.001, false));
+  diffc->footer("B is compared against A (B - A). Exit 0: compared, 1: a run ended with an error or a limit, 2: bad "
+                "usage or an input that is no final state (docs/cli.md).");
+
   ParseOptions parse;
   auto* parsec = app.add_subcommand("parse", "Decode an NC program and print diagnostics");
   parsec->add_option("PROGRAM", parse.program, "NC program")->required();
@@ -319,6 +338,7 @@ int main_cli(int argc, char** argv) {
     if (*check) code = check_command(checko);
     if (*runc) code = run_simulation(run);
     if (*servec) code = serve_command(serve);
+    if (*diffc) code = diff_command(diffo);
     if (*parsec) code = parse_program(parse);
     if (*fitc) code = fit_curve(fit);
     if (*params) code = print_parameters(lookup);

@@ -20,7 +20,8 @@ using LineRef = std::pair<std::uint16_t, std::uint32_t>;
 std::string quoted(const std::string& s) { return dump_json(json(to_utf8(s))); }
 
 constexpr std::size_t kMaxSummaryBlocks = 300;    // the longest blocks in the table
-constexpr std::size_t kMaxLineTextBytes = 4 << 20;  // NC line texts carried for hovers
+constexpr std::size_t kMaxLineTextBytes = 2 << 20;  // NC line texts carried (hovers, the program panel)
+constexpr std::uint32_t kContextLines = 2;           // lines around each line shown, for the program panel
 
 template <class T, class F>
 std::string array_of(const std::vector<T>& v, F&& item) {
@@ -92,6 +93,9 @@ std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const 
     s += ",\"line\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.line); });
     s += ",\"file\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.file); });
     s += ",\"rapid\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += p.rapid ? '1' : '0'; });
+    s += ",\"t\":" + array_of(pts, [](std::string& o, const PathPoint& p) { append_number(o, p.t_s, 4); });
+    s += ",\"cause_t\":" + array_of(ch.cause_t, [](std::string& o, double t) { append_number(o, t, 4); });
+    s += ",\"cause\":" + array_of(ch.cause_name, [](std::string& o, const std::string& n) { o += quoted(n); });
     s += ",\"frames\":" + frames_json(ch);
     if (ch.frames.size() > 1)  // which map each point is in; all the first one otherwise
       s += ",\"frame\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.frame); });
@@ -201,6 +205,7 @@ std::string ReportWriter::data_json(double end_s, int exit_code) const {
   s += fmt::format(",\"events_dropped\":{}", events_dropped_);
   s += ",\"summary\":" + summary_json(lines_used);
   s += ",\"causes\":" + causes_json_;
+  s += ",\"ghost\":" + ghost_json_;
   lines_used.insert(lines_used.end(), cause_lines_.begin(), cause_lines_.end());
   // the NC text of every line a hover or table shows
   for (const std::string& d : diagnostics_) {
@@ -214,11 +219,25 @@ std::string ReportWriter::data_json(double end_s, int exit_code) const {
   s += ",\"lines\":{";
   std::size_t bytes = 0;
   bool first = true;
-  for (const auto& [file, line] : lines_used) {
+  const auto put = [&](std::uint16_t file, std::uint32_t line) {
     const std::string& text = line_text(file, line);
-    if (text.empty() || (bytes += text.size()) > kMaxLineTextBytes) continue;
+    if (text.empty() || bytes + text.size() > kMaxLineTextBytes) return;
+    bytes += text.size();
     s += fmt::format("{}\"{}:{}\":{}", first ? "" : ",", file, line, quoted(text));
     first = false;
+  };
+  for (const auto& [file, line] : lines_used) put(file, line);
+  // then the lines around them, while the budget lasts (the panel shows
+  // "line N, text not embedded" for the rest)
+  std::vector<LineRef> around;
+  for (const auto& [file, line] : lines_used)
+    for (std::uint32_t k = line > kContextLines ? line - kContextLines : 1; k <= line + kContextLines; ++k)
+      if (!std::binary_search(lines_used.begin(), lines_used.end(), LineRef{file, k})) around.emplace_back(file, k);
+  std::sort(around.begin(), around.end());
+  around.erase(std::unique(around.begin(), around.end()), around.end());
+  for (const auto& [file, line] : around) {
+    if (bytes >= kMaxLineTextBytes) break;
+    put(file, line);
   }
   return s + "}}";
 }
@@ -266,6 +285,7 @@ std::optional<std::string> ReportWriter::write(const std::string& path, double e
                 {"/*NCK_DATA*/", script_safe(data_json(end_s, exit_code))},
                 {"/*UPLOT_JS*/", std::string(embedded_file("uPlot.iife.min.js"))},
                 {"/*BACKPLOT_JS*/", std::string(embedded_file("backplot.js"))},
+                {"/*PLAYER_JS*/", std::string(embedded_file("player.js"))},
                 {"/*REPORT_JS*/", std::string(embedded_file("report.js"))}}));
   return f.commit();
 }

@@ -152,10 +152,10 @@ std::vector<PathPoint> thin(const std::vector<PathPoint>& in, double tol, Breaks
 }  // namespace
 
 void PathRecorder::add(const std::array<double, 3>& pos, std::uint32_t line, std::uint16_t file, bool rapid,
-                       std::uint32_t frame) {
+                       std::uint32_t frame, double t_s) {
   if (points_.empty()) {
     min_ = max_ = tip_ = pos;
-    points_.push_back({to_float(pos), line, file, rapid, frame});
+    points_.push_back({to_float(pos), line, file, rapid, frame, t_s});
     anchor_ = pos;
     has_dir_ = false;
     return;
@@ -175,7 +175,7 @@ void PathRecorder::add(const std::array<double, 3>& pos, std::uint32_t line, std
                          ap[0] * dir_[1] - ap[1] * dir_[0]};
     for (double v : c) cross2 += v * v;
     if (cross2 <= kRecordTolMm * kRecordTolMm) {
-      tip = {to_float(pos), line, file, rapid, frame};
+      tip = {to_float(pos), line, file, rapid, frame, t_s};
       tip_ = pos;
       return;
     }
@@ -187,7 +187,7 @@ void PathRecorder::add(const std::array<double, 3>& pos, std::uint32_t line, std
   }
   len = std::sqrt(len);
   if (same_block && len < kMinStepMm) {  // creeping: the tip moves, no new vertex
-    tip = {to_float(pos), line, file, rapid, frame};
+    tip = {to_float(pos), line, file, rapid, frame, t_s};
     tip_ = pos;
     return;
   }
@@ -196,7 +196,7 @@ void PathRecorder::add(const std::array<double, 3>& pos, std::uint32_t line, std
   has_dir_ = len >= kMinStepMm;  // a new block's first step may be tiny: no direction yet
   if (has_dir_)
     for (int i = 0; i < 3; ++i) dir_[i] = step[i] / len;
-  points_.push_back({to_float(pos), line, file, rapid, frame});
+  points_.push_back({to_float(pos), line, file, rapid, frame, t_s});
   tip_ = pos;
   if (points_.size() > kMaxVertices) thin_in_place();
 }

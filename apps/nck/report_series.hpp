@@ -48,6 +48,7 @@ struct PathPoint {
   std::uint16_t file = 0;  // index into the report's file list
   bool rapid = false;      // G0: drawn dashed
   std::uint32_t frame = 0;  // the report's index of the block's program -> machine map
+  double t_s = 0;           // when the tool reached it (the report's time cursor)
 };
 
 class PathRecorder {
@@ -55,7 +56,7 @@ class PathRecorder {
   // A new set point: kept as a vertex where the path bends by more than
   // kRecordTolMm, and at every change of block, of G0 / feed or of the map.
   void add(const std::array<double, 3>& pos, std::uint32_t line, std::uint16_t file, bool rapid,
-           std::uint32_t frame = 0);
+           std::uint32_t frame = 0, double t_s = 0);
   // The vertices, thinned again with the tolerance `tol_mm` (for drawing).
   std::vector<PathPoint> simplified(double tol_mm) const;
   // Extents of every set point seen (not only of the vertices).

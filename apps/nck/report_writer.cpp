@@ -6,11 +6,13 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "backplot_axes.hpp"
 #include "machine_names.hpp"
 #include "nck/core/utf8.hpp"
 #include "nck/sim/dry_run.hpp"
 #include "nck/spindle/spindle_status.hpp"
 #include "output_writers.hpp"
+#include "time_by_cause.hpp"
 
 namespace nck::app {
 namespace {
@@ -18,11 +20,6 @@ namespace {
 using json = nlohmann::ordered_json;
 
 std::string quoted(const std::string& s) { return dump_json(json(to_utf8(s))); }
-
-bool is_rotary_name(const std::string& name) {
-  const char c = name.empty() ? 'X' : name[0];
-  return c == 'A' || c == 'B' || c == 'C';
-}
 
 std::string function_text(const kernel::Event& e) {
   using F = plc::TechKind;
@@ -81,17 +78,7 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
   for (std::size_t c = 0; c < m.channels.size(); ++c) {
     Channel ch;
     const auto& axes = m.channels[c].axes;
-    // The backplot's three axes: X, Y, Z by name; a channel without them
-    // (the twin-spindle machine's X, Y1, Z1) takes its first linear axes.
-    for (std::size_t j = 0; j < axes.size(); ++j) {
-      static constexpr const char* kMain[] = {"X", "Y", "Z"};
-      for (int a = 0; a < 3; ++a)
-        if (axes[j].name == kMain[a] && ch.axis[a] < 0) ch.axis[a] = static_cast<int>(j);
-    }
-    for (int a = 0; a < 3; ++a)
-      for (std::size_t j = 0; j < axes.size() && ch.axis[a] < 0; ++j)
-        if (!is_rotary_name(axes[j].name) && std::find(ch.axis.begin(), ch.axis.end(), static_cast<int>(j)) == ch.axis.end())
-          ch.axis[a] = static_cast<int>(j);
+    ch.axis = backplot_axes(m.channels[c]);
     for (int a = 0; a < 3; ++a)
       if (ch.axis[a] >= 0) ch.axis_name[a] = columns[col + static_cast<std::size_t>(ch.axis[a])];
     const std::string ch_name = fmt::format("channel {}", c + 1);
@@ -250,6 +237,22 @@ void ReportWriter::drop_shortest_blocks() {
     it = it->second.time_s <= threshold && !in_use(&it->second) ? blocks_.erase(it) : std::next(it);
 }
 
+// The channel's cause timeline for the time cursor: one entry where the
+// class changes (kMaxListed per channel; beyond, the cursor shows none).
+void ReportWriter::note_cause(Channel& ch, const kernel::ChannelOutput& o, double t_s) {
+  std::string name = cause_name(o.cause);
+  if (o.cause == kernel::CycleCause::wait) name += std::string(" ") + wait_reason_name(o.wait_reason);
+  if (o.cause == kernel::CycleCause::feedhold) name += " feedhold";
+  if (name == ch.cause_now || ch.cause_t.size() >= kMaxListed) return;
+  ch.cause_now = name;
+  ch.cause_t.push_back(t_s);
+  ch.cause_name.push_back(name);
+}
+
+void ReportWriter::set_ghost(const nlohmann::ordered_json& ghost) {
+  if (enabled_) ghost_json_ = dump_json(ghost);
+}
+
 void ReportWriter::set_causes(const nlohmann::ordered_json& causes) {
   if (!enabled_ || !causes.contains("channels")) return;
   nlohmann::ordered_json page = causes;
@@ -295,7 +298,8 @@ void ReportWriter::sample(std::uint64_t cycle, const kernel::TickOutput& out, co
     std::array<double, 3> p{};
     for (int a = 0; a < 3; ++a)
       if (ch.axis[a] >= 0) p[a] = o.axis_mcs[static_cast<std::size_t>(ch.axis[a])];
-    ch.path.add(p, ch.line, ch.file, ch.motion == 0, ch.frame);
+    ch.path.add(p, ch.line, ch.file, ch.motion == 0, ch.frame, out.t_s);
+    note_cause(ch, o, out.t_s);
     row_[k++] = o.path_velocity_mm_s * 60.0;
     for (std::size_t j = 0; j < ch.axis_count; ++j) row_[k++] = o.axis_mcs[j];
   }

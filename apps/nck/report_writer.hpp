@@ -48,6 +48,9 @@ class ReportWriter {
   // Time by cause (time_by_cause.hpp's JSON), shown as a stacked bar and
   // tables; each block row gets the page's file index ("fid") of its line.
   void set_causes(const nlohmann::ordered_json& causes);
+  // nck diff --run --report: the other run (its path and times) drawn
+  // beside this one (diff_command.cpp).
+  void set_ghost(const nlohmann::ordered_json& ghost);
 
   static constexpr std::size_t kMaxTableEvents = 20000;  // non-block events in the table
   static constexpr std::size_t kMaxTableBlocks = 2000;   // block events in the table
@@ -100,7 +103,12 @@ class ReportWriter {
     std::unique_ptr<ProgrammedContour> contour;  // G41/G42 stretches as programmed
     double feed_override_pct = 100;
     std::optional<std::size_t> hold;  // the feedhold in progress (waits_ index)
+    // the cause timeline (note_cause): when each class began, and its name
+    std::vector<double> cause_t;
+    std::vector<std::string> cause_name;
+    std::string cause_now;
   };
+  void note_cause(Channel& ch, const kernel::ChannelOutput& o, double t_s);
   void add_mark(Mark m);
   std::uint16_t file_index(const std::string& name);
   const std::string& line_text(std::uint16_t file, std::uint32_t line) const;
@@ -152,6 +160,7 @@ class ReportWriter {
   bool c_axis_used_ = false;  // a spindle was in C-axis mode (#CAX)
   std::vector<LinkPeriod> links_;
   std::string causes_json_ = "null";
+  std::string ghost_json_ = "null";
   std::vector<std::pair<std::uint16_t, std::uint32_t>> cause_lines_;  // the lines its block rows show
 };
 

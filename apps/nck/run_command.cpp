@@ -18,6 +18,7 @@
 #include "nck/sim/scenario.hpp"
 #include "nck/sim/dry_run.hpp"
 #include "output_writers.hpp"
+#include "path_track.hpp"
 #include "progress.hpp"
 #include "run_outputs.hpp"
 #include "stop_request.hpp"
@@ -144,6 +145,7 @@ std::optional<kernel::EndReason> run_loop(sim::DryRun& run, const RunOptions& op
     run.prepare();
     run.cycle(*o);
     out.causes.take(*o, names);
+    if (opt.track) opt.track->take(*o);
     record_events(*o, names, out, progress);
     report_dropped_events(*o, names, out, progress);
     report_refusals(run, *o, names, out, progress);
@@ -325,6 +327,8 @@ int run_simulation(const RunOptions& opt) {
   }
   out.report.start(m, opt, run);
   out.causes.start(m, run.kernel().cycle_time_s());
+  if (opt.track) opt.track->start(m);
+  if (opt.ghost) out.report.set_ghost(*opt.ghost);
   RunNames names;
   names.run = &run;
 

@@ -4,10 +4,14 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "nck/prep/search_mark.hpp"
 #include "stop_at.hpp"
 
 namespace nck::app {
+
+class PathTrack;
 
 struct RunOptions {
   std::string machine;
@@ -29,6 +33,10 @@ struct RunOptions {
   std::optional<prep::SearchMark> start_at;  // --start-at / -block / -offset: block search in channel 1
   std::optional<double> covered_pct;         // --covered: of the restart block's path, 0..100 %
   std::optional<StopAt> stop_at;            // --stop-at: where the run ends
+  // nck diff --run: records channel 1's path; and with report, the other
+  // run shown as a ghost (diff_command.cpp's ghost_of). Not options of nck run.
+  PathTrack* track = nullptr;
+  const nlohmann::ordered_json* ghost = nullptr;
 };
 
 // Exit codes (SPEC 2.2): 0 program end reached, 1 aborted by an NC error or a

@@ -50,7 +50,7 @@ export function expectations(longProgram, blocks, longCaps, out) {
   const sin60 = 30 * Math.sin(Math.PI / 3);  // bolt circle: holes at 60 deg steps, radius 30
   return [
     {
-      name: "contour", image: "report-contour.png", machine: "examples/mill", programs: ["examples/mill/contour.nc"],
+      name: "contour", image: "report-contour.png", machine: "examples/mill", programs: ["examples/mill/contour.nc"], play: true,
       minPlots: 2, minCauses: 4,
       // pocket +-40 x +-25; helix r 15; holes r 30 (Y +-25.98); Z from -3 (holes, helix) to 2 + 20 (G91 retract)
       backplots: [{ view: "XY", min: [-40, -sin60, -3], max: [40, sin60, 22], tol: 0.02 }],

@@ -37,6 +37,58 @@ function runNck(name, machine, programs, plc) {
   return { report, runMs: Date.now() - t };
 }
 
+// The time cursor: play moves the tool marker and the highlighted line;
+// clicking a program line and a point of the path moves the cursor there.
+async function checkPlayer(page, name) {
+  const state = () => page.evaluate(() => {
+    const p = window.nckReport.player, now = document.querySelector("#program .now");
+    return { t: p.t, marker: window.nckReport.backplots[0].marker, line: now ? +now.dataset.line : 0,
+             cause: document.querySelector("#dro .cause-now")?.textContent, dro: document.querySelectorAll("#dro .dro-axes tr").length };
+  });
+  const before = await state();
+  await page.selectOption("#speed", "10");
+  await page.click("#play");
+  await page.waitForTimeout(600);
+  await page.click("#play");  // pause
+  const played = await state();
+  if (!(played.t > before.t + 1)) fail(name, `play did not move the cursor: ${before.t} -> ${played.t}`);
+  else if (JSON.stringify(played.marker) === JSON.stringify(before.marker)) fail(name, "the tool marker did not move");
+  else if (!played.line || played.dro < 3 || !played.cause || played.cause === "-") fail(name, `after play: ${JSON.stringify(played)}`);
+  else ok(name, `played to ${played.t.toFixed(3)} s: line ${played.line}, cause ${played.cause}, tool at ${played.marker.map((v) => v.toFixed(3))}`);
+  // click another program line: the cursor goes to where that line's motion begins
+  const target = await page.evaluate((cur) => {
+    const rows = [...document.querySelectorAll("#program div[data-line]")].filter((r) => !r.classList.contains("now"));
+    const ch = window.nckReport.data.channels[0];
+    const r = rows.find((r) => ch.line.includes(+r.dataset.line) && +r.dataset.line !== cur);
+    return r ? +r.dataset.line : 0;
+  }, played.line);
+  if (!target) fail(name, "no other program line with a motion to click");
+  else {
+    await page.click(`#program div[data-line="${target}"]`);
+    const clicked = await state();
+    if (clicked.line !== target) fail(name, `clicked line ${target}, the panel shows ${clicked.line}`);
+    else ok(name, `a click on line ${target} moved the cursor to ${clicked.t.toFixed(3)} s`);
+  }
+  // click the middle of a path segment (not a stored point): the cursor goes there
+  const seg = await page.evaluate(() => {
+    const b = window.nckReport.backplots[0], ch = b.ch;
+    b.canvas.scrollIntoView({ block: "center" });
+    let best = 1, len = 0;
+    for (let i = 1; i < b.n; i++) {
+      const d = Math.hypot(b.uv[2 * i] - b.uv[2 * i - 2], b.uv[2 * i + 1] - b.uv[2 * i - 1]);
+      if (d > len && !ch.rapid[i]) { len = d; best = i; }
+    }
+    const [x, y] = b.toScreen((b.uv[2 * best] + b.uv[2 * best - 2]) / 2, (b.uv[2 * best + 1] + b.uv[2 * best - 1]) / 2);
+    const r = b.canvas.getBoundingClientRect();
+    return { x: r.left + x, y: r.top + y, t0: ch.t[best - 1], t1: ch.t[best], line: ch.line[best] };
+  });
+  await page.mouse.click(seg.x, seg.y);
+  const onPath = await state();
+  if (!(onPath.t > seg.t0 && onPath.t < seg.t1)) fail(name, `a click mid-segment (${seg.t0}..${seg.t1} s) set the cursor to ${onPath.t}`);
+  else if (onPath.line !== seg.line) fail(name, `a click on line ${seg.line}'s segment highlights line ${onPath.line}`);
+  else ok(name, `a click mid-segment moved the cursor to ${onPath.t.toFixed(3)} s (line ${seg.line})`);
+}
+
 async function check(browser, c) {
   const { report, runMs } = runNck(c.name, c.machine, c.programs, c.plc);
   const sizeBytes = fs.statSync(report).size;
@@ -235,6 +287,7 @@ async function check(browser, c) {
     if (off.length) fail(name, `backplot ${i + 1} in program coordinates spans ${JSON.stringify(got)}, expected ${JSON.stringify(want)}`);
     else ok(name, `backplot ${i + 1} in program coordinates: ${JSON.stringify(got)}`);
   }
+  if (c.play) await checkPlayer(page, name);
   if (c.caps) {
     if (sizeBytes > c.caps.bytes) fail(name, `report is ${sizeBytes} bytes, cap ${c.caps.bytes}`);
     if (loadMs > c.caps.loadMs) fail(name, `report loads in ${loadMs} ms, cap ${c.caps.loadMs}`);
