@@ -17,7 +17,7 @@ TEST(CliTypos, MistypedWordsNameTheNearestOne) {
       {"run " + root() + "/examples/mill " + root() + "/examples/mill/contour.nc --trce t.csv",
        "--trce (did you mean '--trace'?)"},
       {"run a b --max-tme=3", "(did you mean '--max-time'?)"},
-      {"zzzzzz", "'zzzzzz' is not one of check, run, parse"},
+      {"zzzzzz", "'zzzzzz' is not one of check, run, diff, parse, fit-curve, init, serve, params, errors"},
       {"run " + root() + "/examples/mill " + root() + "/examples/mill/contour.nc -report r.html",
        "(did you mean '--report'?)"},
   };
