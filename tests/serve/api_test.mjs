@@ -74,7 +74,7 @@ function readStream(s, ms) {
 }
 
 async function authentication(s) {
-  const endpoints = [["GET", "/api/v1/state"], ["GET", "/api/v1/machine"], ["GET", "/api/v1/errors"],
+  const endpoints = [["GET", "/api/v1/state"], ["GET", "/api/v1/machine"], ["GET", "/api/v1/errors"], ["GET", "/api/v1/parameters"],
                      ["GET", "/api/v1/programs"], ["GET", "/api/v1/program?channel=1"], ["GET", "/api/v1/stream"],
                      ["POST", "/api/v1/command"], ["POST", "/api/v1/upload?name=x.nc"], ["GET", "/api/v1/nothing"]];
   for (const [m, t] of endpoints) {
@@ -93,6 +93,10 @@ async function authentication(s) {
   check("no referrer leaves the page", login.headers["referrer-policy"] === "no-referrer");
   const viaCookie = await request(s, "GET", "/api/v1/state", { token: false, headers: { Cookie: `nck_token=${s.token}` } });
   check("the cookie opens the API", viaCookie.status === 200);
+  const params = JSON.parse((await request(s, "GET", "/api/v1/parameters")).body);
+  check("the parameters name P-AXIS-00212", params.some((p) => p.id === "P-AXIS-00212" && p.key.includes("vb_max")));
+  const errors = JSON.parse((await request(s, "GET", "/api/v1/errors")).body);
+  check("the errors carry their remedy", errors.some((e) => e.id === 940304 && e.remedy.length > 0));
   const badUrl = await request(s, "GET", "/?token=deadbeef", { token: false });
   check("a wrong URL token -> 401", badUrl.status === 401);
 }

@@ -1,11 +1,13 @@
 #include "serve/serve_api.hpp"
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 
 #include <fmt/format.h>
 
 #include "embedded_files.hpp"
+#include "nck/config/parameter_registry.hpp"
 #include "nck/core/utf8.hpp"
 #include "nck/sim/operator_action.hpp"
 #include "output_writers.hpp"
@@ -73,6 +75,19 @@ json machine_json(const config::Machine& m) {
   return {{"api", 1}, {"cycle_time_s", m.cycle_time_us * 1e-6}, {"channels", std::move(channels)}};
 }
 
+// Every list key nck accepts (as `nck params`): what the lists may say.
+json parameters_json() {
+  json all = json::array();
+  for (const config::ParamInfo& p : config::all_parameters()) {
+    json j = {{"key", std::string(p.key)}, {"id", std::string(p.id)}, {"meaning", std::string(p.meaning)},
+              {"unit", std::string(p.list_unit)}};
+    if (std::isfinite(p.min)) j["min"] = p.min;
+    if (std::isfinite(p.max)) j["max"] = p.max;
+    all.push_back(std::move(j));
+  }
+  return all;
+}
+
 json errors_json() {
   json all = json::array();
   for (const ErrorInfo& e : all_errors())
@@ -94,6 +109,7 @@ HttpReply ServeApi::handle(const HttpRequest& r) {
     if (path == "/api/v1/state") return HttpReply{200, "application/json", state_frame(), {}};
     if (path == "/api/v1/machine") return ok_json(machine_json(machine_));
     if (path == "/api/v1/errors") return ok_json(errors_json());
+    if (path == "/api/v1/parameters") return ok_json(parameters_json());
     if (path == "/api/v1/programs") return ok_json(json{{"programs", folders_.list()}});
     if (path == "/api/v1/program") return program_text(r.target);
   }
