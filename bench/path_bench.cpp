@@ -54,12 +54,22 @@ Workload write_common_program(int n, const std::string& prelude) {
   return w;
 }
 
-void run_common(benchmark::State& state, const std::string& prelude) {
-  const auto loaded = nck::config::load_machine(std::string(NCK_SOURCE_DIR) + "/examples/mill");
-  const nck::config::Machine& m = *loaded.machine;
+// The mill, with every feed and G0 ramp time of its path axes set to tr_s
+// when tr_s > 0 (the jerk-limited slopes' rows).
+nck::config::Machine mill(double tr_s) {
+  auto loaded = nck::config::load_machine(std::string(NCK_SOURCE_DIR) + "/examples/mill");
+  nck::config::Machine m = *loaded.machine;
+  if (tr_s > 0)
+    for (auto& ax : m.axes)
+      for (auto& g : ax.gears) g.tr_acc_up_s = g.tr_acc_down_s = g.tr_dec_up_s = g.tr_dec_down_s = g.tr_rapid_s = tr_s;
+  return m;
+}
+
+void run_common(benchmark::State& state, const std::string& prelude, double tr_s = 0) {
+  const nck::config::Machine m = mill(tr_s);
   const Workload w = write_common_program(static_cast<int>(state.range(0)), prelude);
   auto out = std::make_unique<nck::kernel::TickOutput>();
-  double simulated_s = 0, last_s = 0, travelled_mm = 0;
+  double simulated_s = 0, last_s = 0, travelled_mm = 0, ramp_pct = 0;
   // X, Y, Z: the mill's axis lists in channel order.
   std::array<nck::config::GearStage, 3> limits{};
   for (std::size_t k = 0; k < 3; ++k) {
@@ -81,7 +91,8 @@ void run_common(benchmark::State& state, const std::string& prelude) {
     // programmed length blending cuts, and the limit check of the property
     // test on every cycle: no axis beyond max_speed_mm_s or a_max.
     std::array<double, 3> last{}, v_last{};
-    std::size_t cycles = 0;
+    std::size_t cycles = 0, ramp_cycles = 0;
+    double v_path_last = 0;
     travelled_mm = 0;
     worst = {};
     while (!run->done()) {
@@ -94,9 +105,15 @@ void run_common(benchmark::State& state, const std::string& prelude) {
         if (cycles > 1) worst.a_share = std::max(worst.a_share, std::fabs(v - v_last[k]) / dt_s / limits[k].a_max);
         v_last[k] = v;
       }
+      // A ramp: the path speed changes (more than 1 mm/s^2, far below any
+      // acceleration of the mill, so rounding never counts).
+      const double v_path = out->channels[0].path_velocity_mm_s;
+      if (std::fabs(v_path - v_path_last) > 1.0 * dt_s) ++ramp_cycles;
+      v_path_last = v_path;
       ++cycles;
       last = {p[0], p[1], p[2]};
     }
+    ramp_pct = 100.0 * static_cast<double>(ramp_cycles) / static_cast<double>(std::max<std::size_t>(cycles, 1));
     last_s = run->time_s();
     simulated_s += last_s;
     blends = run->prep(0).blend_stats();
@@ -107,6 +124,7 @@ void run_common(benchmark::State& state, const std::string& prelude) {
   state.counters["blend_short_mm"] = blends.shortfall_mm;
   state.counters["max_dev_mm"] = blends.max_deviation_mm;
   state.counters["sim_s"] = last_s;
+  state.counters["ramp_pct"] = ramp_pct;  // share of the cycles in which the path speed changes
   state.counters["max_v_of_vb_max"] = worst.v_share;
   state.counters["max_a_of_a_max"] = worst.a_share;
   // Beyond a limit by more than rounding (1e-6 relative): the run is wrong.
@@ -124,6 +142,16 @@ void BM_CommonProgramBlend(benchmark::State& state) {
   run_common(state, "#CONTOUR MODE [DEV PATH_DEV=0.025]\nG261\n");
 }
 BENCHMARK(BM_CommonProgramBlend)->Arg(2000)->Arg(200000)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// STEP with corner blending at 0.01 mm (issue 30's "before" row).
+void BM_CommonProgramBlend001(benchmark::State& state) {
+  run_common(state, "#CONTOUR MODE [DEV PATH_DEV=0.01]\nG261\n");
+}
+BENCHMARK(BM_CommonProgramBlend001)->Arg(20000)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// The jerk-limited TRAPEZ slope with every ramp time 20 ms (issue 30).
+void BM_CommonProgramTrapez(benchmark::State& state) { run_common(state, "#SLOPE [TYPE=TRAPEZ]\n", 0.020); }
+BENCHMARK(BM_CommonProgramTrapez)->Arg(2000)->Arg(200000)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 // Exact stop at every block (G360): the behaviour before the look-ahead.
 void BM_CommonProgramExactStop(benchmark::State& state) { run_common(state, "G360\n"); }

@@ -24,6 +24,7 @@
 #include "serve/serve_command.hpp"
 #include "start_at.hpp"
 #include "stop_request.hpp"
+#include "trace_columns.hpp"
 
 namespace nck::app {
 namespace {
@@ -215,6 +216,14 @@ int main_cli(int argc, char** argv) {
   runc->add_option("--events", run.events, "write events as JSON lines to FILE (- for stdout)")->type_name("FILE");
   runc->add_option("--trace", run.trace, "write set points as CSV to FILE (- for stdout)")->type_name("FILE");
   runc->add_option("--trace-every", run.trace_every, "trace every Nth cycle")->check(number_at_least(1, true));
+  runc->add_option("--trace-columns", run.trace_columns, "extra trace columns: path.a,path.j (path acceleration, jerk)")
+      ->type_name("LIST")
+      ->check(CLI::Validator(
+          [](const std::string& v) {
+            auto c = parse_trace_columns(v);
+            return c ? std::string() : c.error();
+          },
+          "LIST"));
   runc->add_option("--final", run.final_state, "write the final state as JSON to FILE (- for stdout)")->type_name("FILE");
   runc->add_option("--plc", run.plc, "timed HLI actions (docs/plc-scenario.md)");
   runc->add_option("--report", run.report, "write a self-contained HTML report with plots to FILE (- for stdout)")->type_name("FILE");

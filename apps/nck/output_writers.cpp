@@ -262,7 +262,7 @@ bool has_dist_ctrl(const config::ChannelConfig& ch) {
 }
 }  // namespace
 
-std::vector<std::string> TraceWriter::column_names(const config::Machine& m) {
+std::vector<std::string> TraceWriter::column_names(const config::Machine& m, TraceColumns extra) {
   std::vector<std::string> cols{"t"};
   for (const std::string& a : path_axis_columns(m)) cols.push_back(a);
   bool first = true;  // dist.offset, then 2.dist.offset ... for later channels
@@ -280,13 +280,20 @@ std::vector<std::string> TraceWriter::column_names(const config::Machine& m) {
     cols.push_back(s.name + ".act_rpm");
     if (s.speed_controlled) cols.push_back(s.name + ".drive");  // drive output value (antr.v_reso_*)
   }
+  for (std::size_t c = 0; c < m.channels.size(); ++c) {
+    const std::string prefix = c == 0 ? std::string() : fmt::format("{}.", c + 1);
+    if (extra.path_a) cols.push_back(prefix + "path.a");
+    if (extra.path_j) cols.push_back(prefix + "path.j");
+  }
   return cols;
 }
 
 std::optional<std::string> TraceWriter::open(const std::string& path, bool live, const config::Machine& m,
-                                             std::uint64_t every) {
+                                             std::uint64_t every, TraceColumns extra) {
   if (auto err = file_.open(path, live)) return err;
   every_ = every == 0 ? 1 : every;
+  extra_ = extra;
+  path_.assign(m.channels.size(), PathDerivatives(m.cycle_time_us * 1e-6));
   axes_per_channel_.clear();
   dist_ctrl_.clear();
   for (const auto& ch : m.channels) {
@@ -297,13 +304,16 @@ std::optional<std::string> TraceWriter::open(const std::string& path, bool live,
   for (const SpindleName& s : machine_spindles(m)) speed_controlled_.push_back(s.speed_controlled);
   spindle_count_ = speed_controlled_.size();
   std::string header;
-  for (const std::string& c : column_names(m)) header += (header.empty() ? "" : ",") + c;
+  for (const std::string& c : column_names(m, extra)) header += (header.empty() ? "" : ",") + c;
   file_.write(to_utf8(header) + "\n");
   return std::nullopt;
 }
 
 void TraceWriter::write(std::uint64_t cycle, const kernel::TickOutput& out) {
-  if (!file_.is_open() || cycle % every_ != 0) return;
+  if (!file_.is_open()) return;
+  if (extra_.any())
+    for (std::size_t c = 0; c < path_.size(); ++c) path_[c].update(out.channels[c].path_velocity_mm_s);
+  if (cycle % every_ != 0) return;
   row_.clear();
   fmt::format_to(std::back_inserter(row_), "{:.6f}", out.t_s);
   for (std::size_t c = 0; c < axes_per_channel_.size(); ++c)
@@ -317,6 +327,10 @@ void TraceWriter::write(std::uint64_t cycle, const kernel::TickOutput& out) {
     const kernel::SpindleOutput& o = out.spindles[s];
     fmt::format_to(std::back_inserter(row_), ",{:.3f},{:.4f},{:.3f}", o.set_rpm, o.set_pos_deg, o.act_rpm);
     if (speed_controlled_[s]) fmt::format_to(std::back_inserter(row_), ",{:.0f}", o.drive_output);
+  }
+  for (const PathDerivatives& p : path_) {
+    if (extra_.path_a) fmt::format_to(std::back_inserter(row_), ",{:.3f}", p.a_mm_s2());
+    if (extra_.path_j) fmt::format_to(std::back_inserter(row_), ",{:.1f}", p.j_mm_s3());
   }
   row_ += '\n';
   file_.write(row_);

@@ -14,6 +14,7 @@
 #include "nck/nc/decoder.hpp"
 #include "nck/sim/dry_run.hpp"
 #include "output_file.hpp"
+#include "trace_columns.hpp"
 
 namespace nck::app {
 
@@ -54,16 +55,17 @@ class EventWriter {
   OutputFile file_;
 };
 
-// One column per path axis of every channel (MCS set point) and per spindle.
+// One column per path axis of every channel (MCS set point) and per spindle;
+// then the --trace-columns extras per channel (path.a, path.j; 2.path.a ...).
 class TraceWriter {
  public:
   std::optional<std::string> open(const std::string& path, bool live, const config::Machine& m,
-                                  std::uint64_t every);
+                                  std::uint64_t every, TraceColumns extra = {});
   bool is_open() const { return file_.is_open(); }
   void write(std::uint64_t cycle, const kernel::TickOutput& out);
   std::optional<std::string> commit() { return file_.commit(); }
   void discard() { file_.discard(); }
-  static std::vector<std::string> column_names(const config::Machine& m);
+  static std::vector<std::string> column_names(const config::Machine& m, TraceColumns extra = {});
 
  private:
   OutputFile file_;
@@ -72,6 +74,8 @@ class TraceWriter {
   std::size_t spindle_count_ = 0;
   std::vector<bool> speed_controlled_;
   std::vector<bool> dist_ctrl_;  // per channel: FCT_3D_DIST_CTRL configured
+  TraceColumns extra_{};
+  std::vector<PathDerivatives> path_;  // per channel, every cycle (also between traced ones)
   std::string row_;
 };
 

@@ -320,7 +320,10 @@ int run_simulation(const RunOptions& opt) {
     if (d.severity == Severity::warning) out.summary.warning();
   std::optional<std::string> open_error;
   if (!opt.events.empty()) open_error = out.events.open(opt.events, opt.realtime);
-  if (!open_error && !opt.trace.empty()) open_error = out.trace.open(opt.trace, opt.realtime, m, opt.trace_every);
+  if (!open_error && !opt.trace.empty())
+    open_error = out.trace.open(opt.trace, opt.realtime, m, opt.trace_every,
+                                opt.trace_columns.empty() ? TraceColumns{}
+                                                          : parse_trace_columns(opt.trace_columns).value_or(TraceColumns{}));
   if (open_error) {
     fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppOutputFile), *open_error);
     return 2;

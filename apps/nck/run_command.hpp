@@ -20,6 +20,7 @@ struct RunOptions {
   std::string plc;     // --plc scenario file
   std::string report;  // --report FILE.html
   std::uint64_t trace_every = 1;
+  std::string trace_columns;  // --trace-columns path.a,path.j (trace_columns.hpp)
   double max_time_s = 86400;  // simulated seconds
   double max_wall_s = 0;      // wall-clock seconds (0 = no limit)
   std::uint32_t clamp_index = 0;  // clamp-offset group (pzv_grp) at program start

@@ -1,4 +1,6 @@
 // Axis list -> AxisConfig, with the checks that need only this one list.
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "build.hpp"
@@ -58,6 +60,8 @@ void read_gear(const ParamList& l, std::size_t g, GearStage& s, Diagnostics& d) 
   s.tr_geom_s = l.num(k("dynamik.tr_geom"), s.tr_geom_s);
   s.tr_rapid_s = l.num(k("slope_profil.tr_grenz"), s.tr_rapid_s);
   s.tr_min_s = l.num(k("dynamik.tr_min"), s.tr_min_s);
+  s.a_w_max_mm_s2 = l.num(k("dynamik.a_w_max"), s.a_w_max_mm_s2);
+  s.tr_w_min_s = l.num(k("dynamik.tr_w_min"), s.tr_w_min_s);
   s.multi_gain_z = l.u32(k("multi_gain_z"), s.multi_gain_z);
   s.multi_gain_n = l.u32(k("multi_gain_n"), s.multi_gain_n);
   s.modulo_error_incr = static_cast<std::int32_t>(l.num(k("modulo_fehler"), 0));
@@ -83,6 +87,28 @@ void check_ramp_times(const ParamList& l, std::size_t g, const GearStage& s, Dia
   }
 }
 
+// The weighting limits, where given: a_w_max between the larger feed
+// acceleration and a_max, tr_w_min between tr_min and the shortest feed
+// ramp time (P-AXIS-00292/00293's ranges).
+void check_weight_limits(const ParamList& l, std::size_t g, const GearStage& s, Diagnostics& d) {
+  auto k = [g](std::string_view r) { return gkey(g, r); };
+  // 0 (the TF5200 default) stands for no limit of its own.
+  if (const ParamValue* at = l.find(k("dynamik.a_w_max")); at && s.a_w_max_mm_s2 > 0) {
+    const double lo = std::max(s.accel_mm_s2, s.decel_mm_s2);
+    if (s.a_w_max_mm_s2 < lo || s.a_w_max_mm_s2 > s.a_max)
+      d.add(ErrorId::ConfigWeightLimit, at->loc,
+            fmt::format("{} = {} is outside max(a_beschl, a_brems) = {} ... a_max = {}", k("dynamik.a_w_max"),
+                        s.a_w_max_mm_s2, lo, s.a_max));
+  }
+  if (const ParamValue* at = l.find(k("dynamik.tr_w_min")); at && s.tr_w_min_s > 0) {
+    const double hi = std::min({s.tr_acc_up_s, s.tr_acc_down_s, s.tr_dec_up_s, s.tr_dec_down_s});
+    if (s.tr_w_min_s < s.tr_min_s || s.tr_w_min_s > hi)
+      d.add(ErrorId::ConfigWeightLimit, at->loc,
+            fmt::format("{} = {:.0f} µs is outside tr_min = {:.0f} µs ... the shortest feed ramp time {:.0f} µs",
+                        k("dynamik.tr_w_min"), s.tr_w_min_s * 1e6, s.tr_min_s * 1e6, hi * 1e6));
+  }
+}
+
 // Parameter relations of one gear stage (ranges that name another parameter).
 void check_gear(const ParamList& l, const AxisConfig& a, std::size_t g, Diagnostics& d) {
   const GearStage& s = a.gears[g];
@@ -99,6 +125,7 @@ void check_gear(const ParamList& l, const AxisConfig& a, std::size_t g, Diagnost
     cross_check(l, key, amax, v <= s.a_max,
                 fmt::format("{} must not exceed {}", show(key, v), show(amax, s.a_max)), d);
   check_ramp_times(l, g, s, d);
+  check_weight_limits(l, g, s, d);
   cross_check(l, k("dynamik.a_emergency"), amax, s.a_emergency <= 2 * s.a_max,
               fmt::format("{} must not exceed 2 x {}", k("dynamik.a_emergency"), amax), d);
   if (a.is_modulo())

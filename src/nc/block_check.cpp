@@ -227,7 +227,7 @@ bool check_exact_stop(const Words& w, BlockCtx& b) {
 }
 
 bool check_words(const Words& w, BlockCtx& b, const ModalState& modal) {
-  if (!check_groups(w, b) || !check_exact_stop(w, b)) return false;
+  if (!check_groups(w, b) || !check_exact_stop(w, b) || !check_weightings(w, b)) return false;
   ModalState after = preview_modal(w, modal);
   return check_dwell(w, b, modal) && check_spindle_m(w, b, after) && check_values(w, b, modal, after);
 }

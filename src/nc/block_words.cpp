@@ -16,6 +16,8 @@ void Words::clear() {
   f = s = t = d = r = {};
   ijk = {};
   dwell_direct = time_s = contour_dev = {};
+  slope = {};
+  slope_default = false;
   s_pos = s_pos_shift = s_offset = {};
   din_spindle_pos = 0;
   brackets.clear();
@@ -72,6 +74,16 @@ bool isg_g_function(int code) {
   return (code >= 80 && code <= 89) || (code >= 800 && code <= 839);
 }
 
+// The G functions written G<n>=<value>: G159 (zero offset) and the group
+// weightings G131/G133/G134/G233 (percent).
+std::optional<GCode> valued_g(std::string_view name_upper) {
+  static constexpr std::pair<std::string_view, GCode> kValued[] = {
+      {"G159", GCode::g159}, {"G131", GCode::g131}, {"G133", GCode::g133}, {"G134", GCode::g134}, {"G233", GCode::g233}};
+  for (const auto& [n, g] : kValued)
+    if (n == name_upper) return g;
+  return std::nullopt;
+}
+
 bool integer_code(double v, int& code) {
   double r = std::round(v);
   if (std::fabs(v - r) > 1e-9 || r < 0 || r > 1e6) return false;
@@ -126,9 +138,10 @@ bool parse_letter_word(Cursor& c, BlockCtx& b, Words& w) {
       ++w.word_count;
       return true;
     }
-    if (name == "G159") {
+    if (const std::optional<GCode> g = valued_g(name)) {
       if (!word_value(c, b, v, 'G')) return false;
-      w.g.push_back(GWord{GCode::g159, static_cast<std::uint32_t>(pos), v});
+      if (!w.g.push_back(GWord{*g, static_cast<std::uint32_t>(pos), v}))
+        return b.x.err.fail(ErrorId::NcModalConflict, pos, "too many G codes in one block");
       ++w.word_count;
       return true;
     }
@@ -171,6 +184,9 @@ bool parse_letter_word(Cursor& c, BlockCtx& b, Words& w) {
       if (!g)
         return b.x.err.fail(ErrorId::NcUnknownGCode, pos,
                             fmt::format("G{} is unknown to nck; see docs/nc-language.md", code));
+      if (group_weight(*g))
+        return b.x.err.fail(ErrorId::NcDynWeighting, pos,
+                            fmt::format("G{0} takes its weighting as G{0}=<percent>", code));
       if (!w.g.push_back(GWord{*g, static_cast<std::uint32_t>(pos), 0}))
         return b.x.err.fail(ErrorId::NcModalConflict, pos, "too many G codes in one block");
       ++w.word_count;

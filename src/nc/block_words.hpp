@@ -23,7 +23,7 @@ namespace nck::nc::detail {
 struct GWord {
   GCode code = GCode::g0;
   std::uint32_t pos = 0;
-  double value = 0;  // G159=<value>
+  double value = 0;  // G159=<value>, G131=/G133=/G134=/G233=<percent>
 };
 struct MWord {
   int code = 0;
@@ -56,6 +56,7 @@ struct Words {
   At<double> time_s;             // #TIME <value>
   At<double> contour_dev;        // #CONTOUR MODE [DEV PATH_DEV=<value>]
   At<SlopeProfile> slope;        // #SLOPE [TYPE=..], #SLOPE DEFAULT, #SET SLOPE PROFIL[n]
+  bool slope_default = false;    // #SLOPE DEFAULT
   // DIN attributes of the main spindle.
   At<double> s_pos, s_pos_shift, s_offset;
   std::uint32_t din_spindle_pos = 0;
@@ -117,6 +118,8 @@ bool parse_spindle_word(Cursor& c, BlockCtx& b, Words& w);
 // '#' commands; `exclusive` tells whether the rest of the block must be empty.
 bool parse_hash(Cursor& c, BlockCtx& b, Words& w, bool& exclusive);
 bool check_words(const Words& w, BlockCtx& b, const ModalState& modal);
+// weighting_check.cpp: G130...G134, G233 (called by check_words).
+bool check_weightings(const Words& w, BlockCtx& b);
 // Applies to modal/variables and fills out. Returns false only on a write
 // error (e.g. an undeclared variable).
 bool apply_words(Words& w, BlockCtx& b, ModalState& modal, Block& out);

@@ -184,7 +184,9 @@ void Decoder::Impl::restore_after_cycle(const ModalState& caller) {
 
 void Decoder::Impl::note_modal_cycle(const Block& b) {
   if (!modal_cycle.active || frames.size() != modal_cycle.depth || b.program_end || return_pending) return;
-  if (modal_cycle.every_block || b.has_axis_words()) modal_cycle_due = true;
+  // G130/G132 axis words are weightings, not a position.
+  const bool weighting = b.g_nonmodal.has(GCode::g130) || b.g_nonmodal.has(GCode::g132);
+  if (modal_cycle.every_block || (b.has_axis_words() && !weighting)) modal_cycle_due = true;
 }
 
 bool Decoder::Impl::disable_modal_cycle(Cursor c) {

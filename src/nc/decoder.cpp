@@ -324,6 +324,7 @@ Outcome Decoder::Impl::run_words(Cursor& c, std::optional<std::int64_t> n, Block
     return report(ErrorId::NcReturnOutsideSubroutine, ret->pos,
                   "M17/M29 ends a subroutine; end the main program with M30");
   if (!apply_words(words, bctx, modal, out)) return Outcome::error;
+  slope_default_pending = slope_default_pending || words.slope_default;
   out.file_id = f.file_id;
   out.line = f.reader->block_pos().line;
   out.offset = f.reader->block_pos().offset;
@@ -345,6 +346,10 @@ Outcome Decoder::Impl::run_words(Cursor& c, std::optional<std::int64_t> n, Block
                  !words.g.empty() || !out.m.empty() || !out.h.empty() || out.t || out.d ||
                  out.dwell_s || out.dwell_revs || !out.spindles.empty() || out.hash ||
                  !out.kernel_writes.empty() || out.program_end || out.stop || out.optional_stop;
+  if (content) {
+    out.slope_default = slope_default_pending;
+    slope_default_pending = false;
+  }
   if (ret) {
     if (!content) return do_return();
     return_pending = true;

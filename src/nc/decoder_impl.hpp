@@ -97,6 +97,9 @@ struct Decoder::Impl {
   std::uint64_t rows_read = 0;  // NC rows read so far (Block::row)
   bool end_pending = false;  // M30 block handed out, end comes next
   bool return_pending = false;  // M17 block handed out, return comes next
+  // #SLOPE DEFAULT makes no block of its own: the next block handed out
+  // carries it (Block::slope_default), so the weightings restore in order.
+  bool slope_default_pending = false;
   bool comment_mode = false;    // inside #COMMENT BEGIN .. END
   bool var_mode = false;        // inside #VAR .. #ENDVAR
   detail::SourcePos comment_start;

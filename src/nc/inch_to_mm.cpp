@@ -10,7 +10,8 @@ constexpr double kInchMm = 25.4;
 
 // Non-modal functions whose axis words are not lengths: G4 dwell time, G74
 // homing order, G101 factor, G102 selection, G200 dummy values.
-constexpr GCodeSet kAxisWordsNotLengths{GCode::g4, GCode::g74, GCode::g101, GCode::g102, GCode::g200};
+constexpr GCodeSet kAxisWordsNotLengths{GCode::g4,   GCode::g74,  GCode::g101, GCode::g102,
+                                        GCode::g130, GCode::g132, GCode::g200};
 
 void scale(At<double>& a) {
   if (a.v) *a.v *= kInchMm;

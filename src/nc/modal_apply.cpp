@@ -154,6 +154,7 @@ bool apply_words(Words& w, BlockCtx& b, ModalState& modal, Block& out) {
     out.g_nonmodal.add(g.code);  // ignores the modal ones
     if (g_group(g.code) == GGroup::manual) out.manual_g = g.code;
     if (g_group(g.code) == GGroup::zero) out.zero_offset_programmed = true;
+    if (const auto gw = group_weight(g.code)) out.group_weight_pct[static_cast<std::size_t>(*gw)] = g.value;
   }
   if (modal.inch) {  // from here on every length is in mm
     words_to_mm(w, modal);

@@ -41,7 +41,10 @@ bool parse_type(HashCtx& h, std::size_t key_pos) {
 bool parse_slope(HashCtx& h) {
   Cursor& c = h.c;
   h.yields_command = false;
-  if (keywords(c, {"DEFAULT"})) return set_slope(h, h.b.cfg.slope_default, h.pos);
+  if (keywords(c, {"DEFAULT"})) {
+    h.w.slope_default = true;  // the weightings G130...G134, G233 go back to 100 % (prep)
+    return set_slope(h, h.b.cfg.slope_default, h.pos);
+  }
   c.skip_spaces();
   if (!c.match('[')) return syntax_error(h, c.pos, "'[' or DEFAULT expected after #SLOPE");
   bool typed = false;

@@ -38,7 +38,8 @@ bool is_executed_command(const nc::HashCommand& h) {
 // The non-modal G functions this version executes.
 constexpr nc::GCodeSet kExecutedNonModal{nc::GCode::g4,   nc::GCode::g60,  nc::GCode::g61,  nc::GCode::g74,  nc::GCode::g92,  nc::GCode::g100,
                                          nc::GCode::g101, nc::GCode::g102, nc::GCode::g112, nc::GCode::g130,
-                                         nc::GCode::g135, nc::GCode::g136, nc::GCode::g137, nc::GCode::g167,
+                                         nc::GCode::g131, nc::GCode::g132, nc::GCode::g133, nc::GCode::g134,
+                                         nc::GCode::g233, nc::GCode::g135, nc::GCode::g136, nc::GCode::g137, nc::GCode::g167,
                                          nc::GCode::g196};
 
 // Names what the block asks for that this version does not execute yet, or "".

@@ -167,12 +167,36 @@ double LookAheadWindow::cruise(const PlannedCommand& c) const { return std::min(
 // The velocity limit at a transition the blend made tangent: what is left
 // of a kink (an arc's end radius rounding) by the planner's corner rule,
 // and neither side's cruise velocity exceeded.
-double LookAheadWindow::tangent_cap(const PlannedCommand& from, const PlannedCommand& to) const {
+double LookAheadWindow::tangent_cap(const PlannedCommand& from, const PlannedCommand& to, const BlendAxes& ax) const {
   motion::AxisVector t_in{}, t_out{};
   from.segment.tangent_at(from.segment.length(), t_in);
   to.segment.tangent_at(0.0, t_out);
-  return motion::transition_velocity(t_in, t_out, std::span<const double>(axes_.corner_dv_mm_s.data(), axes_.n_axes),
+  return motion::transition_velocity(t_in, t_out, std::span<const double>(ax.corner_dv_mm_s.data(), ax.n_axes),
                                      from.limits.a_dec_mm_s2 * cycle_s_, cruise(from), cruise(to));
+}
+
+// The weightings a fillet between two blocks must hold: the lower
+// accelerations and longer ramps of both, the kink budget the higher
+// acceleration leaves.
+WeightScale LookAheadWindow::both(const WeightScale& a, const WeightScale& b) {
+  return {std::min(a.acc_min, b.acc_min), std::max(a.acc_max, b.acc_max), std::max(a.ramp_max, b.ramp_max),
+          std::max(a.geom, b.geom)};
+}
+
+const BlendAxes& LookAheadWindow::weighted_axes(const WeightScale& w) {
+  weighted_ = axes_;
+  for (std::size_t j = 0; j < weighted_.n_axes; ++j) {
+    motion::AxisDynamics& d = weighted_.feed_dyn[j];
+    const double a_along = std::max(d.a_acc_mm_s2, d.a_dec_mm_s2);
+    const double less = std::min(w.acc_min, 1.0), ramp = std::max(w.ramp_max, 1.0);
+    d.a_acc_mm_s2 *= less;
+    d.a_dec_mm_s2 *= less;
+    d.tr = {d.tr.acc_up_s * ramp, d.tr.acc_down_s * ramp, d.tr.dec_up_s * ramp, d.tr.dec_down_s * ramp};
+    d.tr_geom_s *= std::max(w.geom, 1.0);
+    if (w.acc_max > 1.0)
+      weighted_.corner_dv_mm_s[j] = std::max(weighted_.corner_dv_mm_s[j] - (w.acc_max - 1.0) * a_along * cycle_s_, 0.0);
+  }
+  return weighted_;
 }
 
 // Puts a fillet between the open motion `prev` and `next` (about to be
@@ -192,8 +216,11 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   const auto cb = motion::blend_corner(p.command.segment, next.segment, p.command.blend_dev_mm,
                                        0.45 * p.programmed_mm, 0.45 * next.segment.length());
   if (!cb) return false;
-  const std::span<const motion::AxisDynamics> dyn(axes_.feed_dyn.data(), axes_.n_axes);
+  const WeightScale w = both(p.command.weights, next.weights);
+  const BlendAxes& ax = w.unit() ? axes_ : weighted_axes(w);
+  const std::span<const motion::AxisDynamics> dyn(ax.feed_dyn.data(), ax.n_axes);
   PlannedCommand f;
+  f.weights = w;
   f.kind = CommandKind::motion;
   f.file_id = p.command.file_id;
   f.line = p.command.line;
@@ -222,8 +249,8 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   // fillet is entered that much below its limit.
   const double step_mm_s = before.limits.a_dec_mm_s2 * cycle_s_;
   const double fillet_entry = cruise(f) > 2 * step_mm_s ? cruise(f) : cruise(f) - step_mm_s;
-  f.v_entry_max_mm_s = std::max(std::min(tangent_cap(before, f), fillet_entry), 0.0);
-  after.v_entry_max_mm_s = tangent_cap(f, after);
+  f.v_entry_max_mm_s = std::max(std::min(tangent_cap(before, f, ax), fillet_entry), 0.0);
+  after.v_entry_max_mm_s = tangent_cap(f, after, ax);
   // The window's promise: a command that has left can still brake in what
   // follows. Shortening prev may lower the velocities before it (the fillet
   // is slower than a stop is far): fine inside the window, where the chain

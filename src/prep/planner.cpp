@@ -31,6 +31,7 @@ Planner::Planner(const config::Machine& machine, std::size_t channel_index, Plan
       cax_(machine, channel_, n_axes_, spindles),
       axes_(machine, channel_, n_axes_, cax_.c_axis(), cax_.c_axis_list()),
       corner_(axes_, machine.cycle_time_us),
+      weights_(n_axes_),
       spindles_(machine, channel_index, std::vector<int>(spindles.begin(), spindles.end())),
       feed_(channel_, spindles),
       diameter_(machine, channel_, n_axes_),
@@ -96,6 +97,7 @@ Planner::Planned Planner::plan_one(const nc::Block& b, PlanContext& ctx) {
 // The block's functions, unit after unit.
 PlanResult Planner::plan_technologies(const nc::Block& b, PlannedCommand& c, PlanContext& ctx) {
   if (auto r = diameter_.check(b, c, ctx); !r) return r;
+  if (auto r = apply_weights(b); !r) return r;
   if (auto r = apply_frames(b, c); !r) return r;
   modal_.zero_offset = frames_.zero_index();  // what is in force, for --final
   if (auto r = measure_.apply_offset(b, c, ctx); !r) return r;
@@ -115,6 +117,19 @@ PlanResult Planner::plan_technologies(const nc::Block& b, PlannedCommand& c, Pla
   if (auto r = css_.plan(b, c, ctx, ms, ms.vb_max_rpm(*machine_, channel_, main.gear_stage)); !r) return r;
   c.expl_syn = b.hash && std::holds_alternative<nc::ExplSyn>(*b.hash);
   manual_.plan(b, c, n_axes_);
+  return {};
+}
+
+// G130...G134, G233 and #SLOPE DEFAULT: the weightings in force, and the
+// corner rule's kink budgets with the weighted accelerations.
+PlanResult Planner::apply_weights(const nc::Block& b) {
+  constexpr nc::GCodeSet kWeighting{nc::GCode::g130, nc::GCode::g131, nc::GCode::g132,
+                                    nc::GCode::g133, nc::GCode::g134, nc::GCode::g233};
+  if (!b.slope_default && !b.g_nonmodal.has_any(kWeighting)) return {};
+  if (auto r = weights_.apply(b, axes_, channel_); !r) return r;
+  AxisDynamicsArray feed = axes_.dynamics(false);
+  weights_.weigh(feed, false);
+  corner_.set_feed_dynamics(axes_, feed);
   return {};
 }
 
@@ -199,6 +214,10 @@ Planner::Planned Planner::plan_motion(const nc::Block& b, PlannedCommand c, Plan
   const bool rapid = b.modal.motion == nc::Motion::rapid;
   const bool arc = b.modal.motion == nc::Motion::cw || b.modal.motion == nc::Motion::ccw;
   AxisDynamicsArray dyn = axes_.dynamics(rapid);
+  if (weights_.active()) {
+    weights_.weigh(dyn, rapid);
+    if (!rapid) c.weights = weights_.scale();
+  }
   if (arc) {
     if (auto r = plan_arc(b, c, *target, mask, dyn, ctx); !r) return std::unexpected(r.error());
   } else {

@@ -21,7 +21,8 @@ constexpr double kTiny = 1e-9;
 
 bool is_arc(const nc::Block& b) { return b.modal.motion == nc::Motion::cw || b.modal.motion == nc::Motion::ccw; }
 
-constexpr nc::GCodeSet kNotWithTrc{nc::GCode::g74, nc::GCode::g92, nc::GCode::g101, nc::GCode::g102};
+constexpr nc::GCodeSet kNotWithTrc{nc::GCode::g74,  nc::GCode::g92,  nc::GCode::g101,
+                                   nc::GCode::g102, nc::GCode::g130, nc::GCode::g132};
 
 }  // namespace
 

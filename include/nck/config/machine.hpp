@@ -87,6 +87,12 @@ struct GearStage {
   double tr_geom_s = 0.01;      // P-AXIS-00199 dynamik.tr_geom: jerk from the contour's curvature
   double tr_rapid_s = 0.01;     // P-AXIS-00200 slope_profil.tr_grenz: every ramp of G0
   double tr_min_s = 0.01;       // P-AXIS-00201 dynamik.tr_min: lower bound of the others
+  // Limits of the program's weightings: G130/G131 up to a_w_max (0: a_max),
+  // G132/G133 not below tr_w_min (and never below tr_min).
+  double a_w_max_mm_s2 = 0;     // P-AXIS-00292 dynamik.a_w_max
+  double tr_w_min_s = 0;        // P-AXIS-00293 dynamik.tr_w_min
+  double weighted_a_max() const { return a_w_max_mm_s2 > 0 ? a_w_max_mm_s2 : a_max; }
+  double weighted_tr_min_s() const { return tr_w_min_s > tr_min_s ? tr_w_min_s : tr_min_s; }
   std::uint32_t multi_gain_z = 2000, multi_gain_n = 1;  // P-AXIS-00129/00128
   std::int32_t modulo_error_incr = 0;     // P-AXIS-00124 (modulo_fehler, increments)
   std::int32_t modulo_revolutions = 0;     // P-AXIS-00125 (modulo_umdreh)

@@ -26,6 +26,18 @@ struct VariableWrite {
   double value = 0;
 };
 
+// Index into Block::group_weight_pct.
+enum class GroupWeight : std::uint8_t { g131, g133, g134, g233 };
+constexpr std::optional<GroupWeight> group_weight(GCode g) noexcept {
+  switch (g) {
+    case GCode::g131: return GroupWeight::g131;
+    case GCode::g133: return GroupWeight::g133;
+    case GCode::g134: return GroupWeight::g134;
+    case GCode::g233: return GroupWeight::g233;
+    default: return std::nullopt;
+  }
+}
+
 struct Block {
   // Where it came from.
   std::uint16_t file_id = 0;    // Decoder::file_name(file_id)
@@ -47,9 +59,9 @@ struct Block {
   std::optional<double> r;                             // circle radius (R)
   std::optional<double> f;                             // F as programmed (also kept in modal)
   // Non-modal / special G codes programmed here (GCodeSet::kCodes). With 74
-  // 92 100 101 102 200 (and manual_g below) the axis words above carry that
-  // function's values (order, offset, target, factor or dummy), not a motion
-  // target.
+  // 92 100 101 102 130 132 200 (and manual_g below) the axis words above
+  // carry that function's values (order, offset, target, weighting in %,
+  // factor or dummy), not a motion target.
   GCodeSet g_nonmodal;
   // M functions in program order, except the main spindle's DIN functions
   // (M3 M4 M5 M19 M40..M45, in spindles[]) and M17/M29 (handled here).
@@ -59,6 +71,7 @@ struct Block {
   std::optional<std::int64_t> d; // D word
   std::optional<double> dwell_s; // G4 X.. / G4 .. / #TIME ..  (seconds)
   std::optional<double> dwell_revs;  // G4 S.. (main-spindle revolutions)
+  double group_weight(GroupWeight w) const { return group_weight_pct[static_cast<std::size_t>(w)]; }
 
   // Spindle words: DIN words of the main spindle (M3 S1000, M19 S.POS=..) are
   // mapped onto the main spindle's entry, spindle syntax S1[..] gives one
@@ -80,6 +93,11 @@ struct Block {
   // even when modal.zero_offset did not change (a CS's OFF may have put
   // another offset back in force meanwhile).
   bool zero_offset_programmed = false;
+  // The percentages of G131=, G133=, G134=, G233= (each valid where
+  // g_nonmodal has its G code); G130/G132 take theirs from the axis words.
+  std::array<double, 4> group_weight_pct{};
+  // #SLOPE DEFAULT programmed here: the weightings go back to 100 % too.
+  bool slope_default = false;
 
   bool program_end = false;  // M2 / M30 reached (main program level)
   bool stop = false;           // M0

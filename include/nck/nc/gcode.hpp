@@ -33,6 +33,9 @@ enum class GCode : std::uint16_t {
   // non-modal: dwell, homing, G92 offset, measuring, spindle functions ...
   g4 = 4, g60 = 60, g61 = 61, g74 = 74, g92 = 92, g100 = 100, g101 = 101, g102 = 102, g106 = 106, g112 = 112,
   g130 = 130, g135 = 135, g136 = 136, g137 = 137, g167 = 167, g196 = 196, g200 = 200,
+  // dynamic weightings of the path axes (modal state kept by preparation):
+  // G131=/G133=/G134=/G233= carry their percentage, G130/G132 their axis words
+  g131 = 131, g132 = 132, g133 = 133, g134 = 134, g233 = 233,
 };
 
 // The G number, for messages and the JSON output.
@@ -46,8 +49,9 @@ class GCodeSet {
   using Bits = std::uint32_t;
   // Every G code the set can hold, ascending; bit i stands for kCodes[i].
   static constexpr std::array kCodes{GCode::g4,   GCode::g60,  GCode::g61,  GCode::g74,  GCode::g92,  GCode::g100, GCode::g101,
-                                     GCode::g102, GCode::g106, GCode::g112, GCode::g130, GCode::g135,
-                                     GCode::g136, GCode::g137, GCode::g167, GCode::g196, GCode::g200};
+                                     GCode::g102, GCode::g106, GCode::g112, GCode::g130, GCode::g131,
+                                     GCode::g132, GCode::g133, GCode::g134, GCode::g135, GCode::g136,
+                                     GCode::g137, GCode::g167, GCode::g196, GCode::g200, GCode::g233};
 
   constexpr GCodeSet() = default;
   constexpr GCodeSet(std::initializer_list<GCode> codes) noexcept {

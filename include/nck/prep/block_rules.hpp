@@ -18,8 +18,9 @@ PlanResult check_plc_spindles(const nc::Block& b, const config::ChannelConfig& c
 PlanResult add_outputs(const nc::Block& b, PlannedCommand& c, const config::ChannelConfig& channel);
 
 // With these the axis words are the function's values (homing order, G92
-// offset, G101 factor, G102 selection), not a motion target.
-inline constexpr nc::GCodeSet kAxisWordsAreValues{nc::GCode::g74, nc::GCode::g92, nc::GCode::g101,
-                                                  nc::GCode::g102};
+// offset, G101 factor, G102 selection, G130/G132 weighting in %), not a
+// motion target.
+inline constexpr nc::GCodeSet kAxisWordsAreValues{nc::GCode::g74,  nc::GCode::g92,  nc::GCode::g101,
+                                                  nc::GCode::g102, nc::GCode::g130, nc::GCode::g132};
 
 }  // namespace nck::prep

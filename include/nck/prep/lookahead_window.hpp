@@ -100,7 +100,9 @@ class LookAheadWindow {
                                                const motion::PathLimits& before);
   bool lowering_is_safe(std::uint64_t seq, PlannedCommand changed) const;
   double cruise(const PlannedCommand& c) const;
-  double tangent_cap(const PlannedCommand& from, const PlannedCommand& to) const;
+  double tangent_cap(const PlannedCommand& from, const PlannedCommand& to, const BlendAxes& ax) const;
+  static WeightScale both(const WeightScale& a, const WeightScale& b);
+  const BlendAxes& weighted_axes(const WeightScale& w);
 
   std::vector<Entry> ring_;
   std::uint64_t head_ = 0, tail_ = 0;  // sequence numbers: [head_, tail_) are in the window
@@ -109,6 +111,7 @@ class LookAheadWindow {
   std::uint64_t open_motion_ = 0;  // sequence number + 1 of a motion whose end may still blend
   bool late_wait_pending_ = false;  // an MVS_SLM function waits at the next feed motion
   BlendAxes axes_{};
+  BlendAxes weighted_{};  // axes_ under a corner's weightings (scratch)
   BlendStats stats_{};
   CommandPacker packer_;  // packs what leaves for the queue
 };

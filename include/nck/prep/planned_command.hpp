@@ -20,6 +20,7 @@
 #include "nck/kernel/spindle_action.hpp"
 #include "nck/motion/cax_transform.hpp"
 #include "nck/motion/limits.hpp"
+#include "nck/prep/weight_scale.hpp"
 #include "nck/motion/segment.hpp"
 #include "nck/nc/modal.hpp"
 
@@ -62,6 +63,7 @@ struct PlannedCommand {
   bool mapped = false;
   kernel::AffineMap map{};
   motion::PathLimits limits{};
+  WeightScale weights{};  // the weightings behind `limits` (blend fillets weigh alike)
   double v_cmd_mm_s = 0;
   // Continuous path. The planner gives the highest velocity at which the
   // path may pass from the motion before into this one (corner and feed

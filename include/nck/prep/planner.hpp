@@ -26,6 +26,7 @@
 #include "nck/prep/units/coupling_unit.hpp"
 #include "nck/prep/units/css_unit.hpp"
 #include "nck/prep/units/diameter_unit.hpp"
+#include "nck/prep/units/dyn_weights.hpp"
 #include "nck/prep/units/dist_unit.hpp"
 #include "nck/prep/units/feed_unit.hpp"
 #include "nck/prep/units/manual_unit.hpp"
@@ -92,6 +93,7 @@ class Planner final : public nc::KernelStateReader {
   Planned plan_one(const nc::Block& b, PlanContext& ctx);
   PlanResult plan_technologies(const nc::Block& b, PlannedCommand& c, PlanContext& ctx);
   PlanResult apply_frames(const nc::Block& b, PlannedCommand& c);
+  PlanResult apply_weights(const nc::Block& b);
   Planned plan_execution(const nc::Block& b, PlannedCommand c, PlanContext& ctx);
   Planned plan_motion(const nc::Block& b, PlannedCommand c, PlanContext& ctx);
   PlanResult plan_arc(const nc::Block& b, PlannedCommand& c, const motion::AxisVector& target, frames::SuppressMask mask,
@@ -111,6 +113,7 @@ class Planner final : public nc::KernelStateReader {
   CaxUnit cax_;
   AxisTable axes_;
   CornerUnit corner_;
+  DynWeights weights_;
   SpindlePlanner spindles_;
   FeedUnit feed_;
   CssUnit css_;

@@ -19,6 +19,10 @@ motion::AxisDynamics rapid_dynamics(const config::GearStage& g) {
   return {std::min(g.rapid_mm_s, g.max_speed_mm_s), a_rapid, a_rapid, motion::RampTimes{tr, tr, tr, tr}, g.tr_geom_s};
 }
 
+WeightLimits weight_limits_of(const config::GearStage& g) {
+  return {g.weighted_a_max(), g.weighted_tr_min_s(), g.tr_min_s};
+}
+
 }  // namespace
 
 AxisTable::AxisTable(const config::Machine& machine, const config::ChannelConfig& channel, std::size_t n_axes,
@@ -32,6 +36,7 @@ AxisTable::AxisTable(const config::Machine& machine, const config::ChannelConfig
     feed_dyn_[j] = feed_dynamics(g);
     rapid_dyn_[j] = rapid_dynamics(g);
     accel_cap_mm_s2_[j] = g.a_max;
+    weight_limits_[j] = weight_limits_of(g);
     sw_neg_mm_[j] = ax.sw_limit_neg;
     sw_pos_mm_[j] = ax.sw_limit_pos;
     home_pos_mm_[j] = g.reference_pos;
@@ -44,6 +49,7 @@ void AxisTable::make_c_axis(std::size_t j, const config::AxisConfig& list) {
   const config::GearStage& g = list.gear(list.cax_gear_stage);
   feed_dyn_[j] = feed_dynamics(g);
   rapid_dyn_[j] = rapid_dynamics(g);
+  weight_limits_[j] = weight_limits_of(g);
   sw_neg_mm_[j] = -std::numeric_limits<double>::infinity();
   sw_pos_mm_[j] = std::numeric_limits<double>::infinity();
 }

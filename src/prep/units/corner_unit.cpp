@@ -12,16 +12,25 @@ namespace nck::prep {
 // setup: each axis's velocity budget for a kink. Along the path an axis
 // already accelerates with up to max(a_acc, a_dec) of the block's mode; a
 // kink may add only what is left of a_max, spent within one cycle.
+namespace {
+
+std::array<double, kMaxAxes> kink_budgets(const AxisTable& axes, const AxisDynamicsArray& dyn, double dt_s) {
+  std::array<double, kMaxAxes> dv{};
+  for (std::size_t j = 0; j < axes.count(); ++j)
+    dv[j] = std::max(axes.accel_cap_mm_s2(j) - std::max(dyn[j].a_acc_mm_s2, dyn[j].a_dec_mm_s2), 0.0) * dt_s;
+  return dv;
+}
+
+}  // namespace
+
 CornerUnit::CornerUnit(const AxisTable& axes, std::uint32_t cycle_time_us) {
-  const double dt_s = cycle_s_ = cycle_time_us * 1e-6;
-  for (std::size_t j = 0; j < axes.count(); ++j) {
-    const double a_max = axes.accel_cap_mm_s2(j);
-    auto budget = [&](const motion::AxisDynamics& d) {
-      return std::max(a_max - std::max(d.a_acc_mm_s2, d.a_dec_mm_s2), 0.0) * dt_s;
-    };
-    dv_feed_mm_s_[j] = budget(axes.dynamics(false)[j]);
-    dv_rapid_mm_s_[j] = budget(axes.dynamics(true)[j]);
-  }
+  cycle_s_ = cycle_time_us * 1e-6;
+  dv_feed_mm_s_ = kink_budgets(axes, axes.dynamics(false), cycle_s_);
+  dv_rapid_mm_s_ = kink_budgets(axes, axes.dynamics(true), cycle_s_);
+}
+
+void CornerUnit::set_feed_dynamics(const AxisTable& axes, const AxisDynamicsArray& feed) {
+  dv_feed_mm_s_ = kink_budgets(axes, feed, cycle_s_);
 }
 
 BlendAxes CornerUnit::blend_axes(const AxisTable& axes) const {

@@ -15,6 +15,14 @@ namespace nck::prep {
 
 using AxisDynamicsArray = std::array<motion::AxisDynamics, kMaxAxes>;
 
+// What the program's weightings may make of an axis's dynamics (P-AXIS-00292,
+// 00293, 00201; config::GearStage::weighted_a_max / weighted_tr_min_s).
+struct WeightLimits {
+  double a_w_max_mm_s2 = 0;  // G130/G131: highest weighted a_beschl/a_brems
+  double tr_w_min_s = 0;     // G132/G133: shortest weighted feed ramp time
+  double tr_min_s = 0;       // G134, G233: shortest weighted tr_geom / tr_grenz
+};
+
 class AxisTable {
  public:
   // c_axis: the channel axis that is a spindle's C axis (-1: none), with
@@ -31,6 +39,7 @@ class AxisTable {
   double sw_limit_pos_mm(std::size_t j) const { return sw_pos_mm_[j]; }
   double accel_cap_mm_s2(std::size_t j) const { return accel_cap_mm_s2_[j]; }
   double home_pos_mm(std::size_t j) const { return home_pos_mm_[j]; }
+  const WeightLimits& weight_limits(std::size_t j) const { return weight_limits_[j]; }
   // Bit j: axis j is a face-turning axis (kenngr.achs_mode 0x40).
   std::uint32_t face_axes() const { return face_axes_; }
 
@@ -42,6 +51,7 @@ class AxisTable {
   AxisArray sw_neg_mm_{}, sw_pos_mm_{};
   AxisArray accel_cap_mm_s2_{};  // hard cap of every acceleration (a_max)
   AxisArray home_pos_mm_{};      // where G74 homes the axis (reference_pos)
+  std::array<WeightLimits, kMaxAxes> weight_limits_{};
   std::uint32_t face_axes_ = 0;
 };
 

@@ -19,6 +19,9 @@ class CornerUnit {
 
   // The axes' feed dynamics and kink budgets, for corner blending (setup).
   BlendAxes blend_axes(const AxisTable& axes) const;
+  // The feed dynamics changed (G130/G131): the kink budgets of feed moves
+  // follow the weighted accelerations (what is left of a_max).
+  void set_feed_dynamics(const AxisTable& axes, const AxisDynamicsArray& feed);
   // Motion c of block b has been planned: its exact stop, blending and entry limits.
   void note_transition(const nc::Block& b, PlannedCommand& c, bool rapid, const PlanContext& ctx);
 
