@@ -73,6 +73,8 @@ class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connect
   ~Connection() { --server_.clients; }
 
   void start() { read_header(); }
+  // One answer, then the connection goes (the client bound holds).
+  void refuse(const HttpReply& r) { reply(r, false); }
   // A stream frame (shared by every stream client); drops a client that lags.
   void send(const std::shared_ptr<const std::string>& frame) {
     if (outbox_.size() >= server_.limits.max_stream_backlog) return close();
@@ -169,14 +171,7 @@ void HttpServer::Impl::accept() {
     if (!ec) {
       auto c = std::make_shared<Connection>(*this, std::move(socket));
       if (clients > limits.max_clients) {
-        // One answer, then the connection goes: the bound holds.
-        const std::string body = error_body(ErrorId::ApiTooManyClients, "too many clients are connected");
-        const std::string res = fmt::format(
-            "HTTP/1.1 503 Service Unavailable\r\nContent-Type: application/json\r\nContent-Length: {}\r\n"
-            "Connection: close\r\n\r\n{}", body.size(), body);
-        auto text = std::make_shared<const std::string>(res);
-        c->send(text);
-        c->close();
+        c->refuse(refusal(503, ErrorId::ApiTooManyClients, "too many clients are connected"));
       } else {
         c->start();
       }
