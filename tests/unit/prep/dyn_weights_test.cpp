@@ -10,6 +10,7 @@
 
 #include "example_blocks.hpp"
 #include "nck/prep/planner.hpp"
+#include "planner_rig.hpp"
 
 namespace nck::prep {
 namespace {
@@ -17,22 +18,9 @@ namespace {
 using testing::decode_blocks;
 using testing::example_machine;
 
-struct Rig {
-  Rig() : machine(example_machine("mill")), planner(machine, 0, store, PlannerOptions{}, spindles()) {}
-  std::vector<std::int8_t> spindles() const {
-    std::vector<std::int8_t> v;
-    for (std::size_t i = 0; i < machine.channels[0].spindles.size(); ++i) v.push_back(static_cast<std::int8_t>(i));
-    return v;
-  }
-  std::vector<PlannedCommand> plan(const std::string& text) {
-    std::vector<PlannedCommand> out;
-    for (const nc::Block& b : decode_blocks(machine, text))
-      for (const PlannedCommand& c : planner.plan(b)) out.push_back(c);
-    return out;
-  }
-  const config::Machine& machine;
-  PlanStore store;
-  Planner planner;
+// examples/mill's planner.
+struct Rig : testing::PlannerRig {
+  Rig() : PlannerRig("mill") {}
 };
 
 // The command planned for program line `line`.

@@ -15,38 +15,16 @@
 
 #include "nck/prep/planner.hpp"
 #include "example_blocks.hpp"
+#include "planner_rig.hpp"
 
 namespace nck::prep {
 namespace {
 
 using testing::decode_blocks;
 using testing::example_machine;
+using testing::PlannerRig;
 constexpr double kPi = std::numbers::pi;
 
-// A planner for channel 1 of an example machine; plan() decodes a program
-// text and plans every block in order, returning all commands.
-struct PlannerRig {
-  explicit PlannerRig(const std::string& example, std::uint32_t clamp_index = 0)
-      : machine(example_machine(example)),
-        planner(machine, 0, store, PlannerOptions{clamp_index}, spindle_indices(machine)) {}
-
-  static std::vector<std::int8_t> spindle_indices(const config::Machine& m) {
-    std::vector<std::int8_t> v;
-    for (std::size_t i = 0; i < m.channels[0].spindles.size(); ++i) v.push_back(static_cast<std::int8_t>(i));
-    return v;
-  }
-
-  std::vector<PlannedCommand> plan(const std::string& text) {
-    std::vector<PlannedCommand> out;
-    for (const nc::Block& b : decode_blocks(machine, text))
-      for (const PlannedCommand& c : planner.plan(b)) out.push_back(c);
-    return out;
-  }
-
-  const config::Machine& machine;
-  PlanStore store;
-  Planner planner;
-};
 
 // Machine-coordinate end point of a motion command, first three axes.
 void expect_end(const PlannedCommand& c, double x, double y, double z) {
