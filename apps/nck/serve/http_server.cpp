@@ -9,6 +9,7 @@
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "nck/core/diagnostic.hpp"
 #include "serve/access.hpp"
@@ -25,21 +26,18 @@ constexpr std::size_t kMaxHeaderBytes = 8 * 1024;
 constexpr auto kIdleTimeout = std::chrono::seconds(60);
 constexpr auto kWriteTimeout = std::chrono::seconds(10);
 
-// A JSON error body with its ID (docs/api.md: every refusal has one).
-std::string error_body(ErrorId id, std::string_view message) {
-  std::string text;
-  for (char c : message) {  // the messages are ours: quotes and backslashes are all there is to escape
-    if (c == '"' || c == '\\') text += '\\';
-    if (static_cast<unsigned char>(c) >= 0x20) text += c;
-  }
-  return fmt::format(R"({{"error":{{"id":{},"message":"{}"}}}})", number(id), text);
-}
-
-HttpReply refusal(unsigned status, ErrorId id, std::string_view message) {
-  return HttpReply{status, "application/json", error_body(id, message), {}};
-}
-
 }  // namespace
+
+HttpReply error_reply(unsigned status, const Diagnostic& d) {
+  nlohmann::ordered_json j = {{"error", {{"id", number(d.id)}, {"message", d.message}}}};
+  if (const ErrorInfo* info = find_error(d.id)) j["error"]["remedy"] = std::string(info->remedy);
+  // replace, not throw: a message may quote bytes a client sent
+  return HttpReply{status, "application/json", j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace), {}};
+}
+
+HttpReply error_reply(unsigned status, ErrorId id, std::string message) {
+  return error_reply(status, make_diagnostic(id, SourceLoc{"api", 1, 0}, std::move(message)));
+}
 
 struct HttpServer::Impl {
   class Connection;
@@ -104,7 +102,7 @@ class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connect
   }
   void on_request(beast::error_code ec) {
     if (ec == http::error::body_limit)
-      return reply(refusal(413, ErrorId::ApiTooLarge, "the body is larger than this request accepts"), false);
+      return reply(error_reply(413, ErrorId::ApiTooLarge, "the body is larger than this request accepts"), false);
     if (ec) return close();
     const http::request<http::string_body>& req = parser_->get();
     if (auto refused = server_.check(req, budget_)) return reply(*refused, req.keep_alive());
@@ -171,7 +169,7 @@ void HttpServer::Impl::accept() {
     if (!ec) {
       auto c = std::make_shared<Connection>(*this, std::move(socket));
       if (clients > limits.max_clients) {
-        c->refuse(refusal(503, ErrorId::ApiTooManyClients, "too many clients are connected"));
+        c->refuse(error_reply(503, ErrorId::ApiTooManyClients, "too many clients are connected"));
       } else {
         c->start();
       }
@@ -194,20 +192,20 @@ std::optional<HttpReply> HttpServer::Impl::check(const http::request<http::strin
                                                   RequestBudget& budget) const {
   const auto host_it = req.find(http::field::host);
   const std::string_view host = host_it == req.end() ? std::string_view{} : std::string_view(host_it->value().data(), host_it->value().size());
-  if (!names->host_ok(host)) return refusal(403, ErrorId::ApiForbiddenOrigin, "the Host header is not this server's");
+  if (!names->host_ok(host)) return error_reply(403, ErrorId::ApiForbiddenOrigin, "the Host header is not this server's");
   if (const auto o = req.find(http::field::origin); o != req.end()) {
     const std::string_view origin(o->value().data(), o->value().size());
     if (origin != fmt::format("http://{}", host))
-      return refusal(403, ErrorId::ApiForbiddenOrigin, "the Origin header is not this server's");
+      return error_reply(403, ErrorId::ApiForbiddenOrigin, "the Origin header is not this server's");
   }
   if (!budget.take(std::chrono::steady_clock::now()))
-    return refusal(429, ErrorId::ApiRateLimited, fmt::format("more than {} requests per second", limits.requests_per_s));
+    return error_reply(429, ErrorId::ApiRateLimited, fmt::format("more than {} requests per second", limits.requests_per_s));
   const std::string_view target(req.target().data(), req.target().size());
   if (target.starts_with("/api/") && !authorized(req))
-    return refusal(401, ErrorId::ApiUnauthorized, "no valid token: open the URL nck serve printed");
+    return error_reply(401, ErrorId::ApiUnauthorized, "no valid token: open the URL nck serve printed");
   // The page's URL token becomes a cookie the scripts cannot read, and leaves the address bar.
   if (const std::string_view t = query_value(target, "token"); !t.empty()) {
-    if (!same_token(t, token)) return refusal(401, ErrorId::ApiUnauthorized, "the token in the URL is not this server's");
+    if (!same_token(t, token)) return error_reply(401, ErrorId::ApiUnauthorized, "the token in the URL is not this server's");
     return HttpReply{303, "text/plain", "", {{"Location", "/"},
                                              {"Set-Cookie", fmt::format("nck_token={}; HttpOnly; SameSite=Strict; Path=/", token)}}};
   }

@@ -15,6 +15,8 @@
 #include <utility>
 #include <vector>
 
+#include "nck/core/diagnostic.hpp"
+
 namespace nck::app::serve {
 
 struct HttpLimits {
@@ -38,6 +40,10 @@ struct HttpReply {
   std::string body;
   std::vector<std::pair<std::string, std::string>> headers;  // extra ones (Set-Cookie, Location)
 };
+
+// A refusal: {"error": {"id", "message", "remedy"}} with its status (docs/api.md).
+HttpReply error_reply(unsigned status, const Diagnostic& d);
+HttpReply error_reply(unsigned status, ErrorId id, std::string message);
 
 class ApiHandler {
  public:

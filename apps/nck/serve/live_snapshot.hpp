@@ -11,6 +11,12 @@
 
 namespace nck::app::serve {
 
+// A channel that runs no program (idle, ended, failed): a program may be
+// loaded or started, and its cycles go to no cause.
+inline bool channel_free(kernel::ProgramState st) {
+  return st == kernel::ProgramState::idle || st == kernel::ProgramState::ended || st == kernel::ProgramState::error;
+}
+
 struct LiveChannel {
   AxisArray axis_mcs{};
   double path_velocity_mm_s = 0;

@@ -22,16 +22,6 @@ using json = nlohmann::ordered_json;
 
 HttpReply ok_json(const json& j) { return HttpReply{200, "application/json", dump_json(j), {}}; }
 
-HttpReply refused(unsigned status, const Diagnostic& d) {
-  json j = {{"error", {{"id", number(d.id)}, {"message", to_utf8(d.message)}}}};
-  if (const ErrorInfo* info = find_error(d.id)) j["error"]["remedy"] = std::string(info->remedy);
-  return HttpReply{status, "application/json", dump_json(j), {}};
-}
-
-HttpReply refused(unsigned status, ErrorId id, std::string message) {
-  return refused(status, make_diagnostic(id, SourceLoc{"api", 1, 0}, std::move(message)));
-}
-
 // The page and the files it loads: no token needed, nothing but code in them.
 std::optional<HttpReply> page_file(std::string_view path) {
   static constexpr std::pair<std::string_view, std::string_view> kFiles[] = {
@@ -58,10 +48,6 @@ std::optional<HttpReply> page_file(std::string_view path) {
     return r;
   }
   return std::nullopt;
-}
-
-bool channel_free(kernel::ProgramState st) {
-  return st == kernel::ProgramState::idle || st == kernel::ProgramState::ended || st == kernel::ProgramState::error;
 }
 
 json machine_json(const config::Machine& m) {
@@ -117,13 +103,13 @@ HttpReply ServeApi::handle(const HttpRequest& r) {
     if (path == "/api/v1/command") return command(r.body);
     if (path == "/api/v1/upload") return upload(r.target, r.body);
   }
-  return refused(404, ErrorId::ApiNotFound, fmt::format("no {} {} (docs/api.md)", r.method, path.substr(0, 80)));
+  return error_reply(404, ErrorId::ApiNotFound, fmt::format("no {} {} (docs/api.md)", r.method, path.substr(0, 80)));
 }
 
 HttpReply ServeApi::command(std::string_view body) {
   Diagnostics diags;
   const auto c = parse_api_command(body, machine_.channels.size(), diags);
-  if (!c) return refused(diags.items().front().id == ErrorId::ApiTooLarge ? 413 : 400, diags.items().front());
+  if (!c) return error_reply(diags.items().front().id == ErrorId::ApiTooLarge ? 413 : 400, diags.items().front());
   return act(*c);
 }
 
@@ -135,56 +121,56 @@ HttpReply ServeApi::act(const ApiCommand& c) {
     case K::step_cycle: kernel_.step_one_cycle(); break;
     case K::speed: kernel_.set_speed(c.speed); break;
     case K::load: {
-      if (auto d = load(ch, c.program)) return refused(d->id == ErrorId::ApiChannelBusy ? 409 : 400, *d);
+      if (auto d = load(ch, c.program)) return error_reply(d->id == ErrorId::ApiChannelBusy ? 409 : 400, *d);
       if (c.start_at.empty()) break;
       const auto mark = parse_start_at(c.start_at);
-      if (!mark) return refused(400, ErrorId::ApiBadValue, "'start_at' is no block-search mark: N<n>[:<pass>][@<program>]");
+      if (!mark) return error_reply(400, ErrorId::ApiBadValue, "'start_at' is no block-search mark: N<n>[:<pass>][@<program>]");
       auto run = make_run(*mark, ch);
-      if (!run) return refused(400, run.error());
+      if (!run) return error_reply(400, run.error());
       staged_ = std::move(*run);
       break;
     }
-    case K::mdi:
-      if (auto d = serving_->mdi(ch, c.text, last_.channels[ch].program_state, SourceLoc{"api", 1, 0}))
-        return refused(409, *d);
-      break;
-    case K::action: {
-      if (c.line.ends_with(" cycle_start")) return start_or_release(c);
-      Diagnostics diags;
-      const auto op = sim::parse_operator_action(c.line, machine_, diags, "api");
-      if (!op) return refused(400, diags.items().front());
-      if (op->action.kind == sim::ActionKind::mdi) {
-        ApiCommand mdi;
-        mdi.kind = K::mdi;
-        mdi.channel = c.channel;
-        mdi.text = op->mdi_text;
-        return act(mdi);
-      }
-      if (!kernel_.operate(op->action)) return refused(429, ErrorId::PlcOperatorActionsFull, "the kernel has 64 actions waiting");
-      break;
-    }
+    case K::mdi: return mdi(ch, c.text);
+    case K::action: return operate(c.line);
   }
+  return ok_json(json{{"ok", true}});
+}
+
+HttpReply ServeApi::mdi(std::size_t ch, const std::string& text) {
+  if (auto d = serving_->mdi(ch, text, last_.channels[ch].program_state, SourceLoc{"api", 1, 0})) return error_reply(409, *d);
+  return ok_json(json{{"ok", true}});
+}
+
+// A scenario line without its time, as the operator commands become.
+HttpReply ServeApi::operate(const std::string& line) {
+  Diagnostics diags;
+  const auto op = sim::parse_operator_action(line, machine_, diags, "api");
+  if (!op) return error_reply(400, diags.items().front());
+  const std::size_t ch = op->action.channel - 1u;
+  if (op->action.kind == sim::ActionKind::mdi) return mdi(ch, op->mdi_text);
+  if (op->action.kind == sim::ActionKind::cycle_start) return start_or_release(ch, op->action);
+  return pass_on(op->action);
+}
+
+HttpReply ServeApi::pass_on(const sim::ScenarioAction& a) {
+  if (!kernel_.operate(a)) return error_reply(429, ErrorId::PlcOperatorActionsFull, "the kernel has 64 actions waiting");
   return ok_json(json{{"ok", true}});
 }
 
 // Cycle start: a loaded (or ended) program starts; otherwise the channel's
 // hold is released as the PLC's cycle start does.
-HttpReply ServeApi::start_or_release(const ApiCommand& c) {
-  const std::size_t ch = c.channel - 1u;
+HttpReply ServeApi::start_or_release(std::size_t ch, const sim::ScenarioAction& cycle_start) {
   const bool free = channel_free(last_.channels[ch].program_state);
   if (free && !staged_ && !programs_[ch].empty()) {
     auto run = make_run(std::nullopt, 0);
-    if (!run) return refused(400, run.error());
+    if (!run) return error_reply(400, run.error());
     staged_ = std::move(*run);
   }
   if (free && staged_) {
-    if (!kernel_.load(std::move(staged_))) return refused(409, ErrorId::ApiBusy, "the run loaded before is not taken yet");
+    if (!kernel_.load(std::move(staged_))) return error_reply(409, ErrorId::ApiBusy, "the run loaded before is not taken yet");
     return ok_json(json{{"ok", true}, {"started", true}});
   }
-  Diagnostics diags;
-  const auto op = sim::parse_operator_action(c.line, machine_, diags, "api");
-  if (!op || !kernel_.operate(op->action)) return refused(429, ErrorId::PlcOperatorActionsFull, "the kernel has 64 actions waiting");
-  return ok_json(json{{"ok", true}});
+  return pass_on(cycle_start);
 }
 
 std::optional<Diagnostic> ServeApi::load(std::size_t ch, const std::string& program) {
@@ -241,7 +227,7 @@ std::expected<std::unique_ptr<sim::DryRun>, Diagnostic> ServeApi::make_run(
 HttpReply ServeApi::program_text(std::string_view target) const {
   const std::string_view ch_text = query_value(target, "channel");
   std::size_t ch = ch_text.empty() ? 1 : static_cast<std::size_t>(std::atoi(std::string(ch_text).c_str()));
-  if (ch < 1 || ch > programs_.size()) return refused(400, ErrorId::ApiBadValue, "'channel' is no channel of the machine");
+  if (ch < 1 || ch > programs_.size()) return error_reply(400, ErrorId::ApiBadValue, "'channel' is no channel of the machine");
   const std::filesystem::path& p = programs_[ch - 1];
   json lines = json::array();
   if (!p.empty()) {
@@ -255,7 +241,7 @@ HttpReply ServeApi::program_text(std::string_view target) const {
 
 HttpReply ServeApi::upload(std::string_view target, std::string_view body) {
   const auto name = folders_.save_upload(query_value(target, "name"), body);
-  if (!name) return refused(name.error().id == ErrorId::ApiTooLarge ? 413 : 400, name.error());
+  if (!name) return error_reply(name.error().id == ErrorId::ApiTooLarge ? 413 : 400, name.error());
   return ok_json(json{{"ok", true}, {"program", *name}});
 }
 

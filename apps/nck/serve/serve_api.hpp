@@ -37,7 +37,10 @@ class ServeApi : public ApiHandler {
  private:
   HttpReply command(std::string_view body);
   HttpReply act(const ApiCommand& c);
-  HttpReply start_or_release(const ApiCommand& c);
+  HttpReply mdi(std::size_t ch, const std::string& text);
+  HttpReply operate(const std::string& line);
+  HttpReply pass_on(const sim::ScenarioAction& a);
+  HttpReply start_or_release(std::size_t ch, const sim::ScenarioAction& cycle_start);
   HttpReply program_text(std::string_view target) const;
   HttpReply upload(std::string_view target, std::string_view body);
   std::string state_frame();

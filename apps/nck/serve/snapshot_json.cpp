@@ -25,10 +25,6 @@ motion::AxisVector to_pcs(const kernel::AffineMap& f, const motion::AxisVector& 
   return pcs;
 }
 
-bool busy(kernel::ProgramState st) {
-  return st != kernel::ProgramState::idle && st != kernel::ProgramState::ended && st != kernel::ProgramState::error;
-}
-
 json channel_json(const LiveChannel& c, const config::ChannelConfig& cfg, const sim::DryRun& run, std::size_t ch,
                   const BlockContext& context) {
   json mcs = json::object(), pcs = json::object();
@@ -49,7 +45,7 @@ json channel_json(const LiveChannel& c, const config::ChannelConfig& cfg, const 
             {"feed_mm_s", c.feed_mm_s},
             {"distance_to_go_mm", c.distance_to_go_mm},
             // an idle channel's cycles go to nothing (time by cause would call them starved)
-            {"cause", busy(c.program_state) ? json(cause_name(c.cause)) : json()},
+            {"cause", channel_free(c.program_state) ? json() : json(cause_name(c.cause))},
             {"block", std::move(block)},
             {"feed_override_pct", c.hli.feed_override_percent},
             {"feedhold", c.hli.feedhold},
