@@ -29,6 +29,9 @@ struct RunOptions {
   std::optional<prep::SearchMark> start_at;  // --start-at / -block / -offset: block search in channel 1
   std::optional<double> covered_pct;         // --covered: of the restart block's path, 0..100 %
   std::optional<StopAt> stop_at;            // --stop-at: where the run ends
+  // A channel may start without a program: an operator types MDI (the
+  // Python session); `nck run` wants a program or scenario MDI lines.
+  bool operator_present = false;
 };
 
 // Exit codes (SPEC 2.2): 0 program end reached, 1 aborted by an NC error or a
