@@ -30,7 +30,8 @@ class Session:
     given here starts running at the first step.
 
     An NC error ends the program (see ``errors()``, ``events()``), not the
-    session: MDI, jogging and reset still work.
+    session: MDI, jogging and reset still work. Use a session from one
+    thread at a time.
 
     Example::
 

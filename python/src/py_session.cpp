@@ -156,6 +156,7 @@ pyb::object Session::state() const {
   doc.erase("errors");
   doc.erase("time_by_cause");
   doc.erase("format");
+  doc["t"] = run.time_s();
   doc["cycle"] = run.kernel().cycles();
   const kernel::TickOutput& o = sim_->last_cycle();
   for (std::size_t c = 0; c < run.kernel().channel_count() && c < doc["channels"].size(); ++c) {
@@ -181,6 +182,9 @@ void bind_session(pyb::module_& m) {
   pyb::class_<Until>(m, "_Until")
       .def(pyb::init([](std::optional<std::int64_t> n, std::optional<std::uint32_t> line,
                         std::optional<std::string> event, std::optional<double> time_s) {
+             if (event && !app::event_kind_from(*event))
+               raise("ArgumentError", ErrorId::AppBadArgument,
+                     fmt::format("'{}' is no event kind (docs/outputs.md: block, wait, error, end, state ...)", *event));
              return Until{n, line, event, time_s};
            }),
            pyb::arg("n"), pyb::arg("line"), pyb::arg("event"), pyb::arg("time_s"));

@@ -123,3 +123,12 @@ def test_events_false_keeps_none_and_changes_nothing_else(mill):
     with_events, without = mill.run(prog), mill.run(prog, events=False)
     assert with_events.events and without.events == []
     assert without.final == with_events.final and without.summary() == with_events.summary()
+
+
+def test_start_at_runs_a_block_search(mill):
+    prog = EXAMPLES / "mill" / "contour.nc"
+    full, searched = mill.run(prog), mill.run(prog, start_at="N170")
+    assert searched.exit == 0 and searched.time_s < full.time_s
+    assert searched.final["channels"][0]["axes"] == full.final["channels"][0]["axes"]
+    with pytest.raises(nck.ArgumentError):
+        mill.run(prog, start_at="N")

@@ -119,3 +119,10 @@ def test_state_has_spindles_hli_and_time(mill):
     assert st["cycle"] == 50
     assert "S1" in st["spindles"] and "hli" in st
     assert {"mcs", "pcs"} <= set(st["channels"][0]["axes"]["X"])
+
+
+def test_run_until_refuses_an_unknown_event_kind(mill):
+    s = mill.session()
+    with pytest.raises(nck.ArgumentError):
+        s.run_until(event="nonsense")
+    assert s.state()["t"] == 0 and s.cycles == 0
