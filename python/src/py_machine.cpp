@@ -8,6 +8,7 @@
 
 #include "nck/config/load.hpp"
 #include "py_common.hpp"
+#include "py_interrupt.hpp"
 #include "py_run.hpp"
 #include "nck/simulation.hpp"
 #include "nck/start_at.hpp"
@@ -100,10 +101,12 @@ RunResult run(const Machine& m, const RunArgs& args) {
   s.outputs().keep_events = args.keep_events;
   if (args.trace_every > 0) s.outputs().trace_columns.start(s.machine(), args.trace_every, max_bytes);
   for (std::size_t i = 0; i < m.warnings.size(); ++i) s.outputs().summary.warning();
+  const CtrlC ctrl_c(*s.own_stop_flag());  // ends the run as a wall-clock limit would
   {
     pyb::gil_scoped_release no_gil;  // other Python threads run meanwhile
     s.finish(s.run_to_end());
   }
+  ctrl_c.raise_if_pressed();
   return take_result(s, m.warnings);
 }
 

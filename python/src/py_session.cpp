@@ -7,6 +7,7 @@
 
 #include "nck/sim/operator_action.hpp"
 #include "py_common.hpp"
+#include "py_interrupt.hpp"
 #include "py_machine.hpp"
 #include "nck/simulation.hpp"
 
@@ -63,8 +64,15 @@ class Session {
   void step(std::int64_t cycles) {
     if (cycles < 0)
       raise("ArgumentError", ErrorId::AppBadArgument, fmt::format("step({}): a cycle count is 0 or more", cycles));
-    pyb::gil_scoped_release no_gil;
-    for (std::int64_t i = 0; i < cycles; ++i) sim_->cycle();
+    // Ctrl-C stops between two cycles: the session stays whole (not the
+    // simulation's stop flag, which would also stop decoding for good).
+    std::atomic<bool> pressed{false};
+    const CtrlC ctrl_c(pressed);
+    {
+      pyb::gil_scoped_release no_gil;
+      for (std::int64_t i = 0; i < cycles && !pressed.load(std::memory_order_relaxed); ++i) sim_->cycle();
+    }
+    ctrl_c.raise_if_pressed();
   }
 
   // true once the condition came; false when nothing changes any more
@@ -72,9 +80,20 @@ class Session {
   bool run_until(const Until& u, std::int64_t max_cycles) {
     if (max_cycles < 0)
       raise("ArgumentError", ErrorId::AppBadArgument, fmt::format("max_cycles {} is negative", max_cycles));
-    pyb::gil_scoped_release no_gil;
+    std::atomic<bool> pressed{false};
+    const CtrlC ctrl_c(pressed);
+    bool reached = false;
+    {
+      pyb::gil_scoped_release no_gil;
+      reached = cycles_until(u, max_cycles, pressed);
+    }
+    ctrl_c.raise_if_pressed();
+    return reached;
+  }
+
+  bool cycles_until(const Until& u, std::int64_t max_cycles, const std::atomic<bool>& pressed) {
     auto& events = sim_->outputs().event_list;
-    for (std::int64_t i = 0; i < max_cycles; ++i) {
+    for (std::int64_t i = 0; i < max_cycles && !pressed.load(std::memory_order_relaxed); ++i) {
       const std::size_t seen = events.size();
       sim_->cycle();
       for (std::size_t k = seen; k < events.size(); ++k)

@@ -126,3 +126,38 @@ def test_run_until_refuses_an_unknown_event_kind(mill):
     with pytest.raises(nck.ArgumentError):
         s.run_until(event="nonsense")
     assert s.state()["t"] == 0 and s.cycles == 0
+
+
+ENDLESS = "N10 G90\n$WHILE 1 == 1\n  G1 X10 F6000\n  G1 X0\n$ENDWHILE\nM30\n"
+
+
+def interrupt_after(seconds):
+    import os
+    import signal
+    import threading
+    timer = threading.Timer(seconds, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    return timer
+
+
+def test_ctrl_c_stops_a_long_step_and_the_session_goes_on(mill, program):
+    import time
+    s = mill.session(program(ENDLESS))
+    interrupt_after(0.3)
+    start = time.perf_counter()
+    with pytest.raises(KeyboardInterrupt):
+        s.step(10**9)
+    assert time.perf_counter() - start < 10
+    cycles = s.cycles
+    s.step(10)
+    assert s.cycles == cycles + 10 and s.state()["channels"][0]["program_state"] == "running"
+
+
+def test_ctrl_c_stops_a_long_run(mill, program):
+    import time
+    interrupt_after(0.3)
+    start = time.perf_counter()
+    with pytest.raises(KeyboardInterrupt):
+        mill.run(program(ENDLESS), events=False)
+    assert time.perf_counter() - start < 10
+    assert mill.run(EXAMPLES / "mill" / "contour.nc").exit == 0  # the next run is not stopped
