@@ -292,7 +292,6 @@ TraceLayout::TraceLayout(const config::Machine& m) {
     dist_ctrl_.push_back(has_dist_ctrl(ch));
   }
   for (const SpindleName& s : machine_spindles(m)) speed_controlled_.push_back(s.speed_controlled);
-  columns_ = TraceWriter::column_names(m).size();
 }
 
 std::optional<std::string> TraceWriter::open(const std::string& path, bool live, const config::Machine& m,

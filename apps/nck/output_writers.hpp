@@ -64,7 +64,6 @@ class TraceLayout {
   enum class Format : std::uint8_t { mm, rpm, deg, whole };  // 6, 3, 4, 0 decimals
   TraceLayout() = default;
   explicit TraceLayout(const config::Machine& m);
-  std::size_t columns() const { return columns_; }
   // rt: f(value, format) once per column, "t" first.
   template <class F>
   void visit(const kernel::TickOutput& out, F&& f) const {
@@ -91,7 +90,6 @@ class TraceLayout {
   std::vector<std::size_t> axes_per_channel_;
   std::vector<bool> dist_ctrl_;  // per channel: FCT_3D_DIST_CTRL configured
   std::vector<bool> speed_controlled_;
-  std::size_t columns_ = 0;
 };
 
 // One column per path axis of every channel (MCS set point) and per spindle.

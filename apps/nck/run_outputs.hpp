@@ -25,7 +25,7 @@ struct RunOutputs {
   std::vector<nlohmann::ordered_json> event_list;
   TraceColumns trace_columns;                  // the Python module's trace
   std::vector<FinalError> errors;
-  std::vector<FinalError> warnings;  // every warning said on stderr, also those of the machine data
+  std::vector<FinalError> warnings;  // every warning of the run said on stderr (the module's Run.warnings)
   RunSummary summary;
   TimeByCause causes;  // every cycle's class, summed (--final, the report, stderr)
   Console console;     // stderr
