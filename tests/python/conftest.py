@@ -11,10 +11,7 @@ EXAMPLES = ROOT / "examples"
 
 @pytest.fixture(scope="session")
 def nck_binary():
-    path = os.environ.get("NCK_BINARY", str(ROOT / "build" / "default" / "apps" / "nck"))
-    if not os.path.exists(path):
-        path = str(ROOT / "build" / "default" / "nck")
-    return path
+    return os.environ.get("NCK_BINARY", str(ROOT / "build" / "default" / "nck"))
 
 
 @pytest.fixture(scope="session")
