@@ -4,7 +4,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 cmake --preset default >/dev/null
-cmake --build --preset default --target nck
+cmake --build --preset default --target nck _nck
 out=out/mill
 mkdir -p "$out"
 set +e
@@ -17,4 +17,6 @@ echo "nck run exited with $rc. Outputs:"
 echo "  events:      $out/events.jsonl"
 echo "  trace:       $out/trace.csv"
 echo "  final state: $out/final.json"
+echo "The Python module (docs/python.md):"
+echo "  PYTHONPATH=build/default/python /usr/bin/python3 -c \"import nck; print(nck.Machine('examples/mill').run('examples/mill/contour.nc').time_s)\""
 exit $rc

@@ -7,7 +7,10 @@ pkgs=(build-essential g++ cmake ninja-build pkg-config
       libgtest-dev libgmock-dev googletest libbenchmark-dev
       clang-14 libclang-rt-14-dev   # clang 14 + libFuzzer: the fuzz preset
       libboost1.74-dev              # Boost.Beast + Asio: nck serve
-      nodejs chromium)              # the report's uPlot (inlined at build time) and its browser test
+      nodejs chromium               # the report's uPlot (inlined at build time) and its browser test
+      pybind11-dev python3-dev python3-numpy   # the Python module (python/, docs/python.md)
+      python3-pytest python3-distributed       # its tests; nck.batch on Dask
+      python3-matplotlib)                      # examples/python/accel_sweep.py plots (CSV without it)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

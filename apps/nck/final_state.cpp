@@ -58,9 +58,17 @@ std::optional<std::string> write_final(const std::string& path, const config::Ma
                                        const sim::DryRun& run, double time_s, const std::string& end_reason,
                                        const std::vector<FinalError>& errors,
                                        const nlohmann::ordered_json& time_by_cause) {
-  const kernel::Kernel& k = run.kernel();
   OutputFile f;
   if (auto err = f.open(path)) return err;
+  f.write(dump_json(final_json(m, run, time_s, end_reason, errors, time_by_cause), 2));
+  f.write("\n");
+  return f.commit();
+}
+
+nlohmann::json final_json(const config::Machine& m, const sim::DryRun& run, double time_s,
+                          const std::string& end_reason, const std::vector<FinalError>& errors,
+                          const nlohmann::ordered_json& time_by_cause) {
+  const kernel::Kernel& k = run.kernel();
   json channels = json::array();
   for (std::size_t c = 0; c < m.channels.size() && c < k.channel_count(); ++c) {
     const sim::ChannelSnapshot s = run.snapshot(c);
@@ -160,9 +168,7 @@ std::optional<std::string> write_final(const std::string& path, const config::Ma
            {"errors", errs}};
   // nck 0.3: where the time went (docs/outputs.md), kept in its own order
   doc["time_by_cause"] = json::parse(time_by_cause.dump(-1, ' ', false, json::error_handler_t::replace));
-  f.write(dump_json(doc, 2));
-  f.write("\n");
-  return f.commit();
+  return doc;
 }
 
 }  // namespace nck::app

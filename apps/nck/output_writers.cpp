@@ -124,6 +124,7 @@ const char* end_name(kernel::EndReason r) {
     case R::interrupted: return "interrupted";
     case R::hold: return "hold";
     case R::stop_at: return "stop_at";
+    case R::max_trace: return "max_trace";
   }
   return "error";
 }
@@ -157,7 +158,9 @@ void EventWriter::write_line(const std::string& line) {
   file_.write("\n");
 }
 
-std::string EventWriter::line(const kernel::Event& e, const RunNames& names) {
+std::string EventWriter::line(const kernel::Event& e, const RunNames& names) { return dump_json(object(e, names)); }
+
+nlohmann::ordered_json EventWriter::object(const kernel::Event& e, const RunNames& names) {
   json j = base_event(e);
   const std::size_t ch = e.channel > 0 ? e.channel - 1u : 0u;
   using K = kernel::EventKind;
@@ -253,7 +256,7 @@ std::string EventWriter::line(const kernel::Event& e, const RunNames& names) {
     default:
       break;
   }
-  return dump_json(j);
+  return j;
 }
 
 namespace {
@@ -288,21 +291,21 @@ std::vector<std::string> TraceWriter::column_names(const config::Machine& m, Tra
   return cols;
 }
 
-std::optional<std::string> TraceWriter::open(const std::string& path, bool live, const config::Machine& m,
-                                             std::uint64_t every, TraceColumns extra) {
-  if (auto err = file_.open(path, live)) return err;
-  every_ = every == 0 ? 1 : every;
-  extra_ = extra;
-  path_.assign(m.channels.size(), PathDerivatives(m.cycle_time_us * 1e-6));
-  axes_per_channel_.clear();
-  dist_ctrl_.clear();
+TraceLayout::TraceLayout(const config::Machine& m) {
   for (const auto& ch : m.channels) {
     axes_per_channel_.push_back(ch.axes.size());
     dist_ctrl_.push_back(has_dist_ctrl(ch));
   }
-  speed_controlled_.clear();
   for (const SpindleName& s : machine_spindles(m)) speed_controlled_.push_back(s.speed_controlled);
-  spindle_count_ = speed_controlled_.size();
+}
+
+std::optional<std::string> TraceWriter::open(const std::string& path, bool live, const config::Machine& m,
+                                             std::uint64_t every, TraceColumns extra) {
+  if (auto err = file_.open(path, live)) return err;
+  every_ = every == 0 ? 1 : every;
+  layout_ = TraceLayout(m);
+  extra_ = extra;
+  path_.assign(extra.any() ? m.channels.size() : 0, PathDerivatives(m.cycle_time_us * 1e-6));
   std::string header;
   for (const std::string& c : column_names(m, extra)) header += (header.empty() ? "" : ",") + c;
   file_.write(to_utf8(header) + "\n");
@@ -311,26 +314,23 @@ std::optional<std::string> TraceWriter::open(const std::string& path, bool live,
 
 void TraceWriter::write(std::uint64_t cycle, const kernel::TickOutput& out) {
   if (!file_.is_open()) return;
-  if (extra_.any())
-    for (std::size_t c = 0; c < path_.size(); ++c) path_[c].update(out.channels[c].path_velocity_mm_s);
+  for (std::size_t c = 0; c < path_.size(); ++c) path_[c].update(out.channels[c].path_velocity_mm_s);
   if (cycle % every_ != 0) return;
   row_.clear();
-  fmt::format_to(std::back_inserter(row_), "{:.6f}", out.t_s);
-  for (std::size_t c = 0; c < axes_per_channel_.size(); ++c)
-    for (std::size_t j = 0; j < axes_per_channel_[c]; ++j)
-      fmt::format_to(std::back_inserter(row_), ",{:.6f}", out.channels[c].axis_mcs[j]);
-  for (std::size_t c = 0; c < dist_ctrl_.size(); ++c)
-    if (dist_ctrl_[c])
-      fmt::format_to(std::back_inserter(row_), ",{:.6f},{:.6f},{}", out.channels[c].dist_offset_mm,
-                     out.channels[c].dist_sensor_mm, static_cast<int>(out.channels[c].dist_state));
-  for (std::size_t s = 0; s < spindle_count_; ++s) {
-    const kernel::SpindleOutput& o = out.spindles[s];
-    fmt::format_to(std::back_inserter(row_), ",{:.3f},{:.4f},{:.3f}", o.set_rpm, o.set_pos_deg, o.act_rpm);
-    if (speed_controlled_[s]) fmt::format_to(std::back_inserter(row_), ",{:.0f}", o.drive_output);
-  }
-  for (const PathDerivatives& p : path_) {
-    if (extra_.path_a) fmt::format_to(std::back_inserter(row_), ",{:.3f}", p.a_mm_s2());
-    if (extra_.path_j) fmt::format_to(std::back_inserter(row_), ",{:.1f}", p.j_mm_s3());
+  bool first = true;
+  layout_.visit(out, [&](double v, TraceLayout::Format f) {
+    if (!first) row_ += ',';
+    first = false;
+    switch (f) {
+      case TraceLayout::Format::mm: fmt::format_to(std::back_inserter(row_), "{:.6f}", v); break;
+      case TraceLayout::Format::rpm: fmt::format_to(std::back_inserter(row_), "{:.3f}", v); break;
+      case TraceLayout::Format::deg: fmt::format_to(std::back_inserter(row_), "{:.4f}", v); break;
+      case TraceLayout::Format::whole: fmt::format_to(std::back_inserter(row_), "{:.0f}", v); break;
+    }
+  });
+  for (const PathDerivatives& d : path_) {
+    if (extra_.path_a) fmt::format_to(std::back_inserter(row_), ",{:.3f}", d.a_mm_s2());
+    if (extra_.path_j) fmt::format_to(std::back_inserter(row_), ",{:.1f}", d.j_mm_s3());
   }
   row_ += '\n';
   file_.write(row_);

@@ -47,12 +47,50 @@ class EventWriter {
   bool is_open() const { return file_.is_open(); }
   // An event as one JSON line (without the newline).
   static std::string line(const kernel::Event& e, const RunNames& names);
+  // The same event as a JSON object (the Python module's events).
+  static nlohmann::ordered_json object(const kernel::Event& e, const RunNames& names);
   void write_line(const std::string& line);
   std::optional<std::string> commit() { return file_.commit(); }
   void discard() { file_.discard(); }
 
  private:
   OutputFile file_;
+};
+
+// A trace row's values in the order of TraceWriter::column_names, each with
+// the format the CSV gives it: the one walk over a cycle's output that the
+// CSV file and the Python module's numpy columns share.
+class TraceLayout {
+ public:
+  enum class Format : std::uint8_t { mm, rpm, deg, whole };  // 6, 3, 4, 0 decimals
+  TraceLayout() = default;
+  explicit TraceLayout(const config::Machine& m);
+  // rt: f(value, format) once per column, "t" first.
+  template <class F>
+  void visit(const kernel::TickOutput& out, F&& f) const {
+    using enum Format;
+    f(out.t_s, mm);
+    for (std::size_t c = 0; c < axes_per_channel_.size(); ++c)
+      for (std::size_t j = 0; j < axes_per_channel_[c]; ++j) f(out.channels[c].axis_mcs[j], mm);
+    for (std::size_t c = 0; c < dist_ctrl_.size(); ++c) {
+      if (!dist_ctrl_[c]) continue;
+      f(out.channels[c].dist_offset_mm, mm);
+      f(out.channels[c].dist_sensor_mm, mm);
+      f(static_cast<double>(out.channels[c].dist_state), whole);
+    }
+    for (std::size_t s = 0; s < speed_controlled_.size(); ++s) {
+      const kernel::SpindleOutput& o = out.spindles[s];
+      f(o.set_rpm, rpm);
+      f(o.set_pos_deg, deg);
+      f(o.act_rpm, rpm);
+      if (speed_controlled_[s]) f(o.drive_output, whole);
+    }
+  }
+
+ private:
+  std::vector<std::size_t> axes_per_channel_;
+  std::vector<bool> dist_ctrl_;  // per channel: FCT_3D_DIST_CTRL configured
+  std::vector<bool> speed_controlled_;
 };
 
 // One column per path axis of every channel (MCS set point) and per spindle;
@@ -70,10 +108,7 @@ class TraceWriter {
  private:
   OutputFile file_;
   std::uint64_t every_ = 1;
-  std::vector<std::size_t> axes_per_channel_;
-  std::size_t spindle_count_ = 0;
-  std::vector<bool> speed_controlled_;
-  std::vector<bool> dist_ctrl_;  // per channel: FCT_3D_DIST_CTRL configured
+  TraceLayout layout_;
   TraceColumns extra_{};
   std::vector<PathDerivatives> path_;  // per channel, every cycle (also between traced ones)
   std::string row_;
@@ -94,5 +129,9 @@ std::optional<std::string> write_final(const std::string& path, const config::Ma
                                        const sim::DryRun& run, double time_s, const std::string& end_reason,
                                        const std::vector<FinalError>& errors,
                                        const nlohmann::ordered_json& time_by_cause);
+// The document write_final writes (the Python module's Run.final).
+nlohmann::json final_json(const config::Machine& m, const sim::DryRun& run, double time_s,
+                          const std::string& end_reason, const std::vector<FinalError>& errors,
+                          const nlohmann::ordered_json& time_by_cause);
 
 }  // namespace nck::app

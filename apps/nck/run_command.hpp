@@ -38,6 +38,9 @@ struct RunOptions {
   // run shown as a ghost (diff_command.cpp's ghost_of). Not options of nck run.
   PathTrack* track = nullptr;
   const nlohmann::ordered_json* ghost = nullptr;
+  // A channel may start without a program: an operator types MDI (the
+  // Python session); `nck run` wants a program or scenario MDI lines.
+  bool operator_present = false;
 };
 
 // Exit codes (SPEC 2.2): 0 program end reached, 1 aborted by an NC error or a

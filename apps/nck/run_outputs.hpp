@@ -4,27 +4,41 @@
 #include <string>
 #include <vector>
 
+#include "console.hpp"
 #include "output_writers.hpp"
 #include "report_writer.hpp"
 #include "run_summary.hpp"
 #include "run_command.hpp"
 #include "time_by_cause.hpp"
+#include "trace_memory.hpp"
 
 namespace nck::app {
 
+// Where a run's results go: the files of `nck run`, or memory (the Python
+// module: events as JSON objects, the trace as columns, stderr kept).
 struct RunOutputs {
+  explicit RunOutputs(bool keep_console = false) : console(keep_console) {}
   EventWriter events;
   TraceWriter trace;
   ReportWriter report;
+  bool keep_events = false;                    // the Python module: into event_list
+  std::vector<nlohmann::ordered_json> event_list;
+  TraceMemory trace_memory;                   // the Python module's trace
   std::vector<FinalError> errors;
+  std::vector<FinalError> warnings;  // every warning of the run said on stderr (the module's Run.warnings)
   RunSummary summary;
   TimeByCause causes;  // every cycle's class, summed (--final, the report, stderr)
+  Console console;     // stderr
 
-  // Events are rendered only when a file wants them.
-  bool wants_events() const { return events.is_open() || report.enabled(); }
-  void event(const std::string& line, bool is_error) {
-    events.write_line(line);
-    report.event(line, is_error);
+  // Events are rendered only when an output wants them.
+  bool wants_events() const { return keep_events || events.is_open() || report.enabled(); }
+  void event(nlohmann::ordered_json&& e, bool is_error) {
+    if (events.is_open() || report.enabled()) {
+      const std::string line = dump_json(e);
+      events.write_line(line);
+      report.event(line, is_error);
+    }
+    if (keep_events) event_list.push_back(std::move(e));
   }
 };
 

@@ -38,18 +38,19 @@ int signal_exit_code() {
   return 0;
 }
 
-WallClockLimit::WallClockLimit(double limit_s) {
+WallClockLimit::WallClockLimit(double limit_s, std::atomic<bool>* flag) {
+  if (!flag) flag = &g_stop;
   if (!(limit_s > 0)) return;
   constexpr double kMaxLimitS = 1e9;  // about 30 years: far below the clock's range
   if (limit_s > kMaxLimitS) limit_s = kMaxLimitS;
   const auto deadline = std::chrono::steady_clock::now() +
                         std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                             std::chrono::duration<double>(limit_s));
-  watcher_ = std::thread([this, deadline] {
+  watcher_ = std::thread([this, deadline, flag] {
     std::unique_lock lock(mutex_);
     if (wake_.wait_until(lock, deadline, [this] { return done_; })) return;
     reached_.store(true);
-    g_stop.store(true, std::memory_order_relaxed);
+    flag->store(true, std::memory_order_relaxed);
   });
 }
 

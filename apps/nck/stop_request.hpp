@@ -28,7 +28,8 @@ int signal_exit_code();
 // it did. Elapsed time, not a cycle count: slow cycles cannot overrun it.
 class WallClockLimit {
  public:
-  explicit WallClockLimit(double limit_s);
+  // flag: the stop flag to raise (nullptr: the process's, stop_flag()).
+  explicit WallClockLimit(double limit_s, std::atomic<bool>* flag = nullptr);
   ~WallClockLimit();
   WallClockLimit(const WallClockLimit&) = delete;
   WallClockLimit& operator=(const WallClockLimit&) = delete;

@@ -442,6 +442,7 @@ std::pair<ProgramState, StateReason> state_after(EndReason r) noexcept {
     case EndReason::interrupted: return {ProgramState::ended, StateReason::interrupted};
     case EndReason::hold: return {ProgramState::ended, StateReason::hold};
     case EndReason::stop_at: return {ProgramState::ended, StateReason::stop_at};
+    case EndReason::max_trace: return {ProgramState::ended, StateReason::max_trace};
   }
   return {ProgramState::ended, StateReason::m30};
 }

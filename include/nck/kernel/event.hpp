@@ -38,7 +38,8 @@ inline constexpr std::uint32_t kNoMessage = 0xFFFFFFFFu;
 
 // hold: the run ended while a channel held and nothing could release it (nck run)
 // stop_at: the run ended at its stop-at mark (nck run --stop-at)
-enum class EndReason : std::uint8_t { m30, m2, error, reset, max_time, max_wall, interrupted, hold, stop_at };
+enum class EndReason : std::uint8_t { m30, m2, error, reset, max_time, max_wall, interrupted, hold, stop_at,
+                                      max_trace };  // max_trace: the Python trace's memory limit
 
 
 enum class WaitReason : std::uint8_t {

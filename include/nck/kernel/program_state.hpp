@@ -34,6 +34,7 @@ enum class StateReason : std::uint8_t {
   block_search,  // a block search began, returned to the contour, or ended its return
   mdi,           // MDI text began or was done
   stop,          // NC stop: the operator stopped the program
+  max_trace,     // the Python module's trace reached its memory limit (max_trace_mb)
 };
 
 constexpr std::string_view state_name(ProgramState s) noexcept {
@@ -68,6 +69,7 @@ constexpr std::string_view state_reason_name(StateReason r) noexcept {
     case StateReason::block_search: return "block_search";
     case StateReason::mdi: return "mdi";
     case StateReason::stop: return "stop";
+    case StateReason::max_trace: return "max_trace";
   }
   return "start";
 }

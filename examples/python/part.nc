@@ -1,0 +1,17 @@
+; A small milling part for the Python examples: face, then a slot.
+%part
+N10 G17 G90 G71
+N20 G0 X-10 Y0 Z5
+N30 M3 S3000
+N40 G0 Z0.5
+N50 G1 Z-1 F400
+N60 G1 X60 F1500
+N70 G1 Y20
+N80 G1 X-10
+N90 G0 Z5
+N100 G0 X20 Y10
+N110 G1 Z-4 F300
+N120 G1 X40 F800
+N130 G0 Z5
+N140 M5
+N150 M30

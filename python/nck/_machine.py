@@ -1,0 +1,150 @@
+"""nck.Machine and nck.Run: load a machine folder, run NC programs on it."""
+import os
+
+from . import _nck
+from ._errors import ArgumentError
+
+
+def _programs(program):
+    """One path, or a list of paths (program i runs in channel i+1)."""
+    if program is None:
+        return []
+    if isinstance(program, (str, os.PathLike)):
+        return [os.fspath(program)]
+    return [os.fspath(p) for p in program]
+
+
+def _whole(value, name, lowest=0):
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, int) or value < lowest:
+        raise ArgumentError(f"{name} must be a whole number >= {lowest}, not {value!r}", 940201)
+    return value
+
+
+class Run:
+    """A finished run of ``Machine.run`` (what ``nck run`` writes, in memory).
+
+    Attributes:
+        exit: the exit code ``nck run`` would give (0 program end, 1 NC error
+            or a limit, see docs/cli.md).
+        time_s: simulated time at the end, s.
+        end: why the run ended ("program_end", "error", "max_time", "stop_at",
+            "max_trace" ...), the --final document's "end".
+        errors: the errors, dicts with id, ch, line, file, msg.
+        warnings: the warnings (also those of the machine data), same dicts.
+        events: list of dicts, one per event, the --events JSONL schema
+            (docs/outputs.md).
+        final: dict, the --final JSON document.
+        trace: dict of numpy float64 arrays, one per --trace CSV column
+            ("t", "X", "S1.rpm" ...), full precision; None unless the run was
+            asked for ``trace_every=N``.
+        messages: what ``nck run`` would have printed on stderr.
+    """
+
+    def __init__(self, result):
+        self._r = result
+
+    exit = property(lambda self: self._r.exit)
+    time_s = property(lambda self: self._r.time_s)
+    end = property(lambda self: self._r.end)
+    errors = property(lambda self: self._r.errors)
+    warnings = property(lambda self: self._r.warnings)
+    events = property(lambda self: self._r.events)
+    final = property(lambda self: self._r.final)
+    trace = property(lambda self: self._r.trace)
+    messages = property(lambda self: list(self._r.messages))
+
+    def summary(self):
+        """The one-line summary ``nck run`` ends with: end reason, cycle
+        time, blocks, errors, warnings, waits."""
+        return self._r.summary
+
+    def __repr__(self):
+        return f"<nck.Run exit={self.exit} end={self.end} time_s={self.time_s:.3f} errors={len(self.errors)}>"
+
+
+class Machine:
+    """A machine folder (startup.lis and the lists it names), loaded and checked.
+
+    ``Machine(path)`` raises ``nck.ConfigError`` (with ``.id``, ``.file``,
+    ``.line``, ``.message`` and ``.diagnostics``, all of them) when the data
+    is bad. The machine is immutable: every run and session works on a copy.
+
+    Example::
+
+        m = nck.Machine("examples/mill")
+        r = m.run("examples/mill/contour.nc")
+        print(r.exit, r.time_s)
+    """
+
+    def __init__(self, path):
+        """Loads and checks the machine folder `path` (ConfigError when it
+        cannot be used; warnings are in ``.warnings``)."""
+        self._m = _nck._Machine(os.fspath(path))
+
+    @property
+    def path(self):
+        """The folder it was loaded from."""
+        return self._m.path
+
+    @property
+    def channels(self):
+        """Per channel, its path axes' names: [["X", "Y", "Z"]]."""
+        return self._m.channels
+
+    @property
+    def warnings(self):
+        """The warnings loading found (dicts with id, ch, line, file, msg)."""
+        return self._m.warnings
+
+    def run(self, program, plc=None, start_at=None, stop_at=None, trace_every=None, max_time=86400.0,
+            max_wall=None, max_trace_mb=512, events=True):
+        """Runs a program to its end, as ``nck run MACHINE PROGRAM`` does,
+        in this process, and returns a ``Run``.
+
+        Args:
+            program: the NC program's path, or a list of them (one per channel).
+            plc: a --plc scenario file (docs/plc-scenario.md).
+            start_at: a block search: "N100[:pass][@program]", "block:K" or
+                "offset:BYTES" (docs/operating.md).
+            stop_at: where the run ends: "N100", "line:12", "block:7",
+                "event:wait" (docs/cli.md --stop-at).
+            trace_every: keep every N-th cycle's trace row as numpy columns
+                (``Run.trace``). Memory: rows x columns x 8 bytes, e.g. a
+                100 s run at 1 ms with 6 columns and N=1 is 4.8 MB (growth
+                may hold up to twice that for a moment).
+            max_time: simulated-time limit, s (the run then ends "max_time").
+            max_wall: wall-clock limit, s (None: none).
+            max_trace_mb: the trace's memory limit; reaching it ends the run
+                ("max_trace", error 940200) rather than exhaust memory.
+            events: False keeps no events (``Run.events`` is []): less
+                memory and time for a long program whose events you do
+                not read.
+
+        Raises:
+            ProgramError: the program does not exist, or the run cannot start.
+            ArgumentError: an argument nck cannot use.
+
+        An NC error while running does not raise: ``Run.exit`` is 1 and
+        ``Run.errors`` lists it.
+        """
+        every = _whole(trace_every, "trace_every", 1) or 0
+        result = self._m.run(_programs(program), os.fspath(plc) if plc else "", start_at, stop_at, every,
+                             float(max_time), float(max_wall or 0), float(max_trace_mb), bool(events))
+        return Run(result)
+
+    def session(self, program=None, plc=None):
+        """Opens a live ``Session`` on this machine: nothing runs until you
+        step it; see ``nck.Session``.
+
+        Args:
+            program: the program (or a list, one per channel); None: the
+                channels wait for MDI and jogging.
+            plc: a --plc scenario that runs alongside.
+        """
+        from ._session import Session
+        return Session(self, program, plc)
+
+    def __repr__(self):
+        return f"<nck.Machine {self.path!r} channels={self.channels}>"

@@ -1,0 +1,177 @@
+"""nck.Session: a machine running cycle by cycle, operated from Python."""
+import os
+
+from . import _nck
+from ._errors import ArgumentError
+from ._machine import _programs, _whole
+
+
+def _on_off(on):
+    return "on" if on else "off"
+
+
+def _number(value, name):
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise ArgumentError(f"{name} must be a number, not {value!r}", 940201)
+    return f"{value:g}"
+
+
+class Session:
+    """A live session: the machine runs only when stepped, and in between
+    the operator acts as on the machine's panel.
+
+    Every operation is one line of the --plc scenario grammar without its
+    time (docs/plc-scenario.md), the very layer ``nck serve`` uses;
+    ``action(line)`` takes any such line. ``ch`` selects the channel (1..).
+
+    Unlike ``nck run``, the simulated operator does not press cycle start by
+    itself ("auto_cycle_start off"): after M0/M1, single step, ``stop()`` or
+    a stop-at mark the channel holds until ``cycle_start()``. A program
+    given here starts running at the first step.
+
+    An NC error ends the program (see ``errors()``, ``events()``), not the
+    session: MDI, jogging and reset still work. Use a session from one
+    thread at a time.
+
+    Example::
+
+        s = nck.Machine("examples/mill").session("examples/mill/contour.nc")
+        s.run_until(line=5)
+        s.override(feed=50)
+        s.step(1000)
+        print(s.state()["channels"][0]["axes"]["X"]["mcs"])
+    """
+
+    def __init__(self, machine, program=None, plc=None):
+        self._machine = machine
+        self._s = _nck._Session(machine._m, _programs(program), os.fspath(plc) if plc else "")
+
+    # -- running -----------------------------------------------------------
+    def step(self, cycles=1):
+        """Runs `cycles` kernel cycles (0 or more)."""
+        self._s.step(_whole(cycles, "cycles"))
+
+    def run_until(self, block=None, line=None, event=None, time_s=None, max_cycles=10_000_000):
+        """Runs cycles until a condition comes; True then. False when
+        nothing would change any more without the operator (every channel
+        idle, ended, in error or holding for cycle start, none jogging, the
+        --plc scenario done) or `max_cycles` passed first.
+
+        Args:
+            block: a block numbered N<block> starts (int, or "N100").
+            line: a block of this main-program line starts.
+            event: the first event of this "ev" kind ("wait", "error", "stop"
+                ...), docs/outputs.md.
+            time_s: simulated time reaches this many seconds.
+        """
+        if isinstance(block, str):
+            if not block[:1] in ("N", "n") or not block[1:].isdigit():
+                raise ArgumentError(f"block {block!r} is not N<number>", 940201)
+            block = int(block[1:])
+        if block is None and line is None and event is None and time_s is None:
+            raise ArgumentError("run_until needs block, line, event or time_s", 940201)
+        until = _nck._Until(_whole(block, "block"), _whole(line, "line"), event,
+                            None if time_s is None else float(time_s))
+        return self._s.run_until(until, _whole(max_cycles, "max_cycles"))
+
+    # -- the operator ------------------------------------------------------
+    def action(self, line):
+        """Any operator line of the scenario grammar, e.g. "ch=2 feedhold on"
+        (docs/plc-scenario.md); ActionError when malformed or refused."""
+        self._s.action(line)
+
+    def _line(self, ch, text):
+        self._s.action(f"ch={_whole(ch, 'ch', 1)} {text}")
+
+    def cycle_start(self, ch=1):
+        """Cycle start: releases a hold (M0/M1, single step, stop), or starts
+        the program again after a reset."""
+        self._line(ch, "cycle_start")
+
+    def hold(self, on=True, ch=1):
+        """Feedhold on (the path brakes and waits) or off."""
+        self._line(ch, f"feedhold {_on_off(on)}")
+
+    def stop(self, ch=1):
+        """NC stop: the path brakes and the channel holds until cycle_start()."""
+        self._line(ch, "stop")
+
+    def reset(self, ch=1):
+        """Channel reset: the program ends (reason reset)."""
+        self._line(ch, "reset")
+
+    def single_step(self, on=True, ch=1):
+        """Single-step mode: the channel holds at every block end."""
+        self._line(ch, f"single_step {_on_off(on)}")
+
+    def optional_stop(self, on=True, ch=1):
+        """The optional-stop switch: M1 holds while on."""
+        self._line(ch, f"optional_stop {_on_off(on)}")
+
+    def skip(self, mask, ch=1):
+        """Active block-skip levels as a bit mask (bit 0: /1 ...)."""
+        self._line(ch, f"skip_mask {_whole(mask, 'mask'):#x}")
+
+    def override(self, feed=None, rapid=None, spindle=None, ch=1):
+        """Overrides in %: feed (the channel's), spindle (a value for S1, or
+        a dict {"S2": 80}); rapid raises ArgumentError (no rapid override
+        in nck yet)."""
+        if feed is not None:
+            self._line(ch, f"feed_override {_number(feed, 'feed')}")
+        if rapid is not None:
+            # The scenario grammar (and so the HLI simulation) has no rapid
+            # override: refused rather than imitated here.
+            raise ArgumentError("nck has no rapid override yet (docs/plc-scenario.md); G0 runs at 100 %", 940201)
+        if spindle is not None:
+            spindles = spindle if isinstance(spindle, dict) else {"S1": spindle}
+            for name, value in spindles.items():
+                self._s.action(f"override {name} {_number(value, 'spindle')}")
+
+    def mdi(self, text, ch=1):
+        """Runs one NC block typed by the operator (the channel must not be
+        running a program). One cycle runs to decode it; an error in the
+        text raises ProgramError, and the session stays usable."""
+        self._s.mdi(text, _whole(ch, "ch", 1))
+
+    def jog(self, axis, direction, speed=None, ch=1):
+        """Jogs an axis (mode manual): direction "+", "-" or "stop"; speed
+        in mm/min (the axis's jog speed when None)."""
+        words = f"jog {axis} {direction}" + ("" if speed is None else f" {_number(speed, 'speed')}")
+        self._line(ch, words)
+
+    def jog_increment(self, axis, step, ch=1):
+        """Moves an axis by `step` mm (signed), mode manual."""
+        sign = "-" if step < 0 else "+"
+        self._line(ch, f"jog_increment {axis} {sign} {_number(abs(step), 'step')}")
+
+    def mode(self, name, ch=1):
+        """"manual" (jogging) or "automatic"."""
+        self._line(ch, f"mode {name}")
+
+    # -- reading -----------------------------------------------------------
+    def state(self):
+        """The state now: per channel axes (mcs, pcs), modal state, offsets,
+        program_state, block (line, n, file), path_velocity_mm_s, wait;
+        spindles; the HLI; time "t"... the --final schema plus these."""
+        return self._s.state()
+
+    def events(self):
+        """The events (dicts of the JSONL schema) since the last call."""
+        return self._s.events()
+
+    def errors(self):
+        """Every NC error of the session so far (dicts: id, ch, line, file, msg)."""
+        return self._s.errors()
+
+    @property
+    def time_s(self):
+        """Simulated time, s."""
+        return self._s.time_s
+
+    @property
+    def cycles(self):
+        """Kernel cycles run."""
+        return self._s.cycles
+
+    def __repr__(self):
+        return f"<nck.Session t={self.time_s:.3f} s cycles={self.cycles}>"
