@@ -35,10 +35,17 @@
     };
   }
 
-  // Feed override 0..200 %: throttled, the server allows 50 requests/s.
+  // Feed and rapid override 0..200 %: throttled, the server allows 50 requests/s.
   function overridePanel(send) {
     const feed = slider("feed override", 0, 200, 1, " %", throttle((percent) => send("feed_override", { percent }), 100));
-    return { el: el("div", { class: "panel override" }, feed.el), update: (c) => feed.set(c.feed_override_pct) };
+    const rapid = slider("rapid override", 0, 200, 1, " %", throttle((percent) => send("rapid_override", { percent }), 100));
+    return {
+      el: el("div", { class: "panel override" }, feed.el, rapid.el),
+      update: (c) => {
+        feed.set(c.feed_override_pct);
+        rapid.set(c.rapid_override_pct);
+      },
+    };
   }
 
   // Skip levels /1../10 as the bits 0..9 of the channel's skip mask.

@@ -113,15 +113,14 @@ class Session:
         self._line(ch, f"skip_mask {_whole(mask, 'mask'):#x}")
 
     def override(self, feed=None, rapid=None, spindle=None, ch=1):
-        """Overrides in %: feed (the channel's), spindle (a value for S1, or
-        a dict {"S2": 80}); rapid raises ArgumentError (no rapid override
-        in nck yet)."""
+        """Overrides in %: feed (the channel's), rapid (the channel's G0
+        override; it acts as the machine's g00_override_mode, P-CHAN-00181,
+        says — with NOT_USED, the default, G0 takes the feed override),
+        spindle (a value for S1, or a dict {"S2": 80})."""
         if feed is not None:
             self._line(ch, f"feed_override {_number(feed, 'feed')}")
         if rapid is not None:
-            # The scenario grammar (and so the HLI simulation) has no rapid
-            # override: refused rather than imitated here.
-            raise ArgumentError("nck has no rapid override yet (docs/plc-scenario.md); G0 runs at 100 %", 940201)
+            self._line(ch, f"rapid_override {_number(rapid, 'rapid')}")
         if spindle is not None:
             spindles = spindle if isinstance(spindle, dict) else {"S1": spindle}
             for name, value in spindles.items():

@@ -257,6 +257,7 @@ void read_switches(const ParamList& l, ChannelConfig& c) {
   c.exact_stop_after_g00 = l.flag("exact_stop_after_g00", false);
   c.slope_profile = slope_from_number(l.u32("prog_start.slope.profile", 0)).value_or(SlopeProfile::step);
   c.single_step_mode = static_cast<std::int8_t>(l.num("einzelschrittmodus", 0));
+  c.rapid_override_mode = rapid_override_mode_from(l.text("g00_override_mode", "0")).value_or(RapidOverrideMode::not_used);
   c.lookahead_blocks = l.u32("configuration.interpolator.number_blocks_lah", c.lookahead_blocks);
   for (auto n : l.indices("m_synch[")) c.m_synch[n] = l.u32(fmt::format("m_synch[{}]", n), 0);
   c.decoder_function = l.u32("configuration.decoder.function", 0);

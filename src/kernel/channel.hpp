@@ -75,6 +75,11 @@ class Channel {
   void set_c_axis(std::int8_t axis, std::int8_t spindle) noexcept { cax_.setup(axis, spindle, n_axes_); }
   // setup: P-CHAN-00015, where single step holds.
   void set_single_step_mode(std::int8_t mode) noexcept { hold_.setup(mode); }
+  // setup: P-CHAN-00181, which override scales G0 blocks (and jog).
+  void set_rapid_override_mode(RapidOverrideMode mode) noexcept {
+    path_.set_rapid_override_mode(mode);
+    jog_.set_rapid_override_mode(mode);
+  }
   // setup: channel axis j's manual-mode settings (jog speeds, a_max, software limits).
   void set_jog_axis(std::size_t j, const JogAxisSettings& s) noexcept { jog_.setup(j, s); }
   // An axis is being jogged (manual mode).

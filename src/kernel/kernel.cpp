@@ -89,6 +89,7 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
     const config::ChannelConfig& ch = machine_->channels[i];
     channels_.back()->set_preserve_links(ch.preserve_coupling_after_prog_end);
     channels_.back()->set_single_step_mode(ch.single_step_mode);
+    channels_.back()->set_rapid_override_mode(ch.rapid_override_mode);
     channels_.back()->set_dist_ctrl(distctrl::settings_from(ch.dist_ctrl), cycle_s_);
     for (std::size_t j = 0; j < ch.axes.size() && j < kMaxAxes; ++j)
       channels_.back()->set_jog_axis(j, jog_settings(*machine_, ch.axes[j]));

@@ -73,6 +73,7 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
     plc::ChannelControl& c = hli_.channel[ch];
     kernel::ChannelInput& ci = in.channels[ch];
     ci.feed_override_pct = c.feed_override_percent;
+    ci.rapid_override_pct = c.rapid_override_percent;
     ci.feedhold = c.feedhold;
     ci.optional_stop = c.optional_stop;
     ci.reset = c.reset;
@@ -131,6 +132,7 @@ void MachineSim::apply(const sim::ScenarioAction& a, kernel::TickInput& in) noex
   plc::ChannelControl& ch = hli_.channel[c];
   switch (a.kind) {
     case sim::ActionKind::feed_override: ch.feed_override_percent = a.value; return;
+    case sim::ActionKind::rapid_override: ch.rapid_override_percent = a.value; return;
     case sim::ActionKind::feedhold: ch.feedhold = a.on; return;
     case sim::ActionKind::reset: ch.reset = true; return;
     case sim::ActionKind::optional_stop: ch.optional_stop = a.on; return;

@@ -28,6 +28,7 @@ constexpr std::array kActions = {
     ActionSpelling{"spindle_override", ActionKind::spindle_override},
     ActionSpelling{"override_valid", ActionKind::override_valid},
     ActionSpelling{"feed_override", ActionKind::feed_override},
+    ActionSpelling{"rapid_override", ActionKind::rapid_override},
     ActionSpelling{"feedhold", ActionKind::feedhold},
     ActionSpelling{"spindle_feedhold", ActionKind::spindle_feedhold},
     ActionSpelling{"spindle_stop_at_end", ActionKind::spindle_stop_at_end},
@@ -205,6 +206,7 @@ bool LineParser::parse_args(ScenarioAction& a) {
     case ActionKind::spindle_override:
       return take_spindle(a) && take_percent(a.value);
     case ActionKind::feed_override:
+    case ActionKind::rapid_override:
       return take_percent(a.value);
     case ActionKind::override_valid:
     case ActionKind::spindle_feedhold:

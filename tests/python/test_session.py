@@ -161,3 +161,14 @@ def test_ctrl_c_stops_a_long_run(mill, program):
         mill.run(program(ENDLESS), events=False)
     assert time.perf_counter() - start < 10
     assert mill.run(EXAMPLES / "mill" / "contour.nc").exit == 0  # the next run is not stopped
+
+
+def test_rapid_override_slows_g0_only(mill, program):
+    # examples/mill: g00_override_mode MINIMUM_OF_G0_G1 (P-CHAN-00181)
+    def velocity(text, rapid):
+        s = mill.session(program(text))
+        s.override(rapid=rapid)
+        s.step(1000)
+        return s.state()["channels"][0]["path_velocity_mm_s"]
+    assert velocity("G0 X500\nM30\n", 50) == pytest.approx(velocity("G0 X500\nM30\n", 100) / 2, rel=1e-3)
+    assert velocity("G1 X500 F3000\nM30\n", 50) == pytest.approx(50, rel=1e-3)

@@ -115,9 +115,9 @@ std::string operator_line(const std::string& cmd, Reader& r) {
     r.only({"mask"});
     return fmt::format("skip_mask {}", static_cast<std::uint32_t>(r.number("mask", 0, 1023)));
   }
-  if (cmd == "feed_override") {
+  if (cmd == "feed_override" || cmd == "rapid_override") {
     r.only({"percent"});
-    return "feed_override " + percent(r.number("percent", 0, 200));
+    return cmd + " " + percent(r.number("percent", 0, 200));
   }
   if (cmd == "spindle_override") {
     r.only({"spindle", "percent"});

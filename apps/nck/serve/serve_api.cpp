@@ -213,6 +213,7 @@ std::expected<std::unique_ptr<sim::DryRun>, Diagnostic> ServeApi::make_run(
     const auto on_off = [](bool on) { return on ? "on" : "off"; };
     for (const std::string& line :
          {std::string("auto_cycle_start off"), fmt::format("feed_override {}", c.feed_override_percent),
+          fmt::format("rapid_override {}", c.rapid_override_percent),
           fmt::format("single_step {}", on_off(c.single_step)), fmt::format("optional_stop {}", on_off(c.optional_stop)),
           fmt::format("mode {}", c.manual_mode ? "manual" : "automatic")}) {
       Diagnostics ignored;

@@ -48,6 +48,7 @@ json channel_json(const LiveChannel& c, const config::ChannelConfig& cfg, const 
             {"cause", channel_free(c.program_state) ? json() : json(cause_name(c.cause))},
             {"block", std::move(block)},
             {"feed_override_pct", c.hli.feed_override_percent},
+            {"rapid_override_pct", c.hli.rapid_override_percent},
             {"feedhold", c.hli.feedhold},
             {"single_step", c.hli.single_step},
             {"optional_stop", c.hli.optional_stop},

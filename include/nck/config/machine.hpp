@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "nck/core/axes.hpp"
+#include "nck/core/rapid_override.hpp"
 #include "nck/core/slope.hpp"
 
 namespace nck::config {
@@ -276,6 +277,7 @@ struct ChannelConfig {
   bool move_tool_offsets_directly = false;      // P-CHAN-00100
   bool exact_stop_after_g00 = false;            // P-CHAN-00235
   SlopeProfile slope_profile = SlopeProfile::step;  // P-CHAN-00071 prog_start.slope.profile
+  RapidOverrideMode rapid_override_mode = RapidOverrideMode::not_used;  // P-CHAN-00181 g00_override_mode
   // P-CHAN-00015 (einzelschrittmodus): where single step holds: -1 after
   // motion blocks, 0 also after blocks with functions, 1 after every block
   std::int8_t single_step_mode = 0;

@@ -63,6 +63,7 @@ inline constexpr std::size_t kMaxJogRequestsPerTick = 8;
 
 struct ChannelInput {
   double feed_override_pct = 100;  // HLI feed override 0..100 (more is clamped)
+  double rapid_override_pct = 100;  // HLI rapid override 0..100, for G0 as P-CHAN-00181 says
   bool feedhold = false;
   bool reset = false;          // a request, acted on in this cycle
   bool optional_stop = false;  // M1 stops the program only while this is on

@@ -63,6 +63,7 @@ struct SpindleControl {
 // PLC -> CNC, one per channel.
 struct ChannelControl {
   double feed_override_percent = 100;
+  double rapid_override_percent = 100;  // G0 blocks, as P-CHAN-00181 says
   bool feedhold = false;
   bool reset = false;          // a request, the CNC clears it when it has reset the channel
   bool optional_stop = false;  // M01 stops only while this is on

@@ -23,6 +23,7 @@ enum class ActionKind : std::uint8_t {
   spindle_override,     // override S1 50 / spindle_override S1 50
   override_valid,       // override_valid S1 on|off
   feed_override,        // feed_override 80
+  rapid_override,       // rapid_override 50          (G0 blocks, as P-CHAN-00181 says)
   feedhold,             // feedhold on|off            (channel)
   spindle_feedhold,     // spindle_feedhold S1 on|off (one spindle)
   spindle_stop_at_end,  // spindle_stop_at_end on|off [S1]  (no spindle: all of the channel)

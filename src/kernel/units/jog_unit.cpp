@@ -65,9 +65,13 @@ double JogUnit::axis_step(std::size_t j, double position_mm, Cycle& cy) noexcept
   const bool to_step_end = g.kind == JogRequest::Kind::increment && g.left_mm <= room_mm;
   const double goal_mm = to_step_end ? std::max(0.0, g.left_mm) : room_mm;
   // Towards the wanted speed within a_max, never faster than the axis can
-  // still stop within the goal.
-  double v_mm_s = g.wanted_mm_s >= g.v_mm_s ? std::min(g.v_mm_s + dv_mm_s, g.wanted_mm_s)
-                                            : std::max(g.v_mm_s - dv_mm_s, g.wanted_mm_s);
+  // still stop within the goal. Under ACTIVE_EXTENDED (P-CHAN-00181) the
+  // rapid override scales a continuous jog; a jog at 0 % holds, not ends.
+  const bool overridden = rapid_mode_ == RapidOverrideMode::active_extended && g.kind == JogRequest::Kind::continuous;
+  const double wanted_mm_s =
+      overridden ? g.wanted_mm_s * std::clamp(cy.in.rapid_override_pct, 0.0, 100.0) / 100.0 : g.wanted_mm_s;
+  double v_mm_s = wanted_mm_s >= g.v_mm_s ? std::min(g.v_mm_s + dv_mm_s, wanted_mm_s)
+                                          : std::max(g.v_mm_s - dv_mm_s, wanted_mm_s);
   v_mm_s = std::min(v_mm_s, motion::discrete_brake_velocity(goal_mm, s.a_max_mm_s2, cy.dt_s));
   const double travel_mm = std::min(v_mm_s * cy.dt_s, goal_mm);  // the last cycle lands exactly
   g.v_mm_s = cy.dt_s > 0 ? travel_mm / cy.dt_s : 0.0;

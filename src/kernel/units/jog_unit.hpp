@@ -13,6 +13,7 @@
 #include <cstdint>
 
 #include "nck/core/axes.hpp"
+#include "nck/core/rapid_override.hpp"
 #include "nck/kernel/tick_io.hpp"
 #include "cycle.hpp"
 
@@ -34,6 +35,8 @@ class JogUnit {
   void setup(std::size_t j, const JogAxisSettings& s) noexcept {
     if (j < kMaxAxes) settings_[j] = s;
   }
+  // setup: P-CHAN-00181; ACTIVE_EXTENDED puts continuous jogs under the rapid override.
+  void set_rapid_override_mode(RapidOverrideMode m) noexcept { rapid_mode_ = m; }
   // A cycle starts (before take()). rt
   void begin_cycle() noexcept {
     stopped_last_cycle_ = stopping_now_;
@@ -61,6 +64,7 @@ class JogUnit {
   void end(std::size_t j, bool at_limit, Cycle& cy) noexcept;
 
   std::array<JogAxisSettings, kMaxAxes> settings_{};
+  RapidOverrideMode rapid_mode_ = RapidOverrideMode::not_used;
   std::array<AxisJog, kMaxAxes> jogs_{};
   std::uint32_t active_ = 0;  // bit j: axis j is jogged
   std::uint32_t stopping_now_ = 0;        // bit j: axis j's jog ended in this cycle

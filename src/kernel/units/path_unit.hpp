@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "nck/core/rapid_override.hpp"
 #include "nck/kernel/attachment.hpp"
 #include "nck/kernel/command.hpp"
 #include "nck/kernel/queues.hpp"
@@ -18,6 +19,8 @@ namespace nck::kernel {
 
 class PathUnit {
  public:
+  // setup: which override scales G0 blocks (P-CHAN-00181).
+  void set_rapid_override_mode(RapidOverrideMode m) noexcept { rapid_mode_ = m; }
   // Cycle start: whether the path moved in the cycle before. rt
   void begin_cycle() noexcept {
     moved_last_cycle_ = moved_this_cycle_;
@@ -71,6 +74,10 @@ class PathUnit {
   CycleCause classify(const Motion& m, const motion::ProfileSample& st, double v_prev, double ovr,
                       const Cycle& cy) noexcept;
 
+  // The override factor (0..1) of motion m in this cycle. rt
+  double override_factor(const Motion& m, const Cycle& cy) const noexcept;
+
+  RapidOverrideMode rapid_mode_ = RapidOverrideMode::not_used;
   motion::PathProfile profile_{};
   motion::Segment segment_{};
   std::optional<AffineMap> map_;  // the segment is in program coordinates
@@ -84,9 +91,16 @@ class PathUnit {
   CycleCause ramp_ = CycleCause::none;  // a speed-up under way: from standstill or out of a corner
 };
 
+inline double PathUnit::override_factor(const Motion& m, const Cycle& cy) const noexcept {
+  if (cy.in.feedhold || cy.stopped) return 0.0;
+  const bool rapid = !cy.block.feed_motion && !m.measure;  // G0 (a G100 run moves at F)
+  if (!rapid) return std::clamp(cy.in.feed_override_pct, 0.0, 100.0) / 100.0;
+  return rapid_override_factor(rapid_mode_, cy.in.feed_override_pct, cy.in.rapid_override_pct);
+}
+
 // Every cycle of a motion: defined here so that it inlines into the channel.
 inline motion::ProfileSample PathUnit::step(const Motion& m, const CommandQueue& queued, Cycle& cy) noexcept {
-  const double ovr = cy.in.feedhold || cy.stopped ? 0.0 : std::clamp(cy.in.feed_override_pct, 0.0, 100.0) / 100.0;
+  const double ovr = override_factor(m, cy);
   if (reserve_) keep_braking_reserve(m, queued, cy.dt_s);
   const double v_prev = profile_.v();
   const motion::ProfileSample st = profile_.step(cy.dt_s, ovr);

@@ -34,6 +34,7 @@ TEST(ServeApiMessage, OperatorCommandsBecomeScenarioLines) {
   EXPECT_EQ(line_of(R"({"command":"cycle_start"})"), "ch=1 cycle_start");
   EXPECT_EQ(line_of(R"({"command":"feedhold","on":true,"channel":2})"), "ch=2 feedhold on");
   EXPECT_EQ(line_of(R"({"command":"feed_override","percent":80})"), "ch=1 feed_override 80");
+  EXPECT_EQ(line_of(R"({"command":"rapid_override","percent":25})"), "ch=1 rapid_override 25");
   EXPECT_EQ(line_of(R"({"command":"spindle_override","spindle":"S1","percent":50.5})"), "ch=1 spindle_override S1 50.5");
   EXPECT_EQ(line_of(R"({"command":"skip_mask","mask":5})"), "ch=1 skip_mask 5");
   EXPECT_EQ(line_of(R"({"command":"jog","axis":"X","direction":"+","speed_mm_min":600})"), "ch=1 jog X + 600");
@@ -74,6 +75,7 @@ TEST(ServeApiMessage, EveryBadMessageHasItsId) {
   EXPECT_EQ(refused(R"({"command":"feedhold","on":"yes"})"), ErrorId::ApiBadValue);   // wrong type
   EXPECT_EQ(refused(R"({"command":"feed_override","percent":250})"), ErrorId::ApiBadValue);  // range
   EXPECT_EQ(refused(R"({"command":"feed_override","percent":-1})"), ErrorId::ApiBadValue);
+  EXPECT_EQ(refused(R"({"command":"rapid_override","percent":201})"), ErrorId::ApiBadValue);
   EXPECT_EQ(refused(R"({"command":"reset","channel":3})"), ErrorId::ApiBadValue);     // the machine has 2
   EXPECT_EQ(refused(R"({"command":"reset","channel":1.5})"), ErrorId::ApiBadValue);
   EXPECT_EQ(refused(R"({"command":"reset","channel":"1"})"), ErrorId::ApiBadValue);

@@ -96,6 +96,26 @@ TEST(Jog, ContinuousRampsWithinManualAMaxAndStopsWhenReleased) {
   EXPECT_NEAR(r.k.channel_state(0).manual_offsets[0], r.x_, 1e-12);
 }
 
+// P-CHAN-00181 ACTIVE_EXTENDED: the rapid override scales a continuous
+// jog (50 % of 50 mm/s); other modes leave the jog at its speed.
+TEST(Jog, RapidOverrideScalesAContinuousJogUnderActiveExtendedOnly) {
+  for (const auto [mode, speed_mm_s] : {std::pair{RapidOverrideMode::active_extended, 25.0},
+                                        std::pair{RapidOverrideMode::active, 50.0},
+                                        std::pair{RapidOverrideMode::not_used, 50.0}}) {
+    config::Machine m = jog_machine();
+    m.channels[0].rapid_override_mode = mode;
+    Rig r(m);
+    r.in->channels[0].rapid_override_pct = 50;
+    r.tick(jog(JogRequest::Kind::continuous, +1, 50.0));
+    for (int i = 0; i < 1000; ++i) r.tick();
+    EXPECT_NEAR(r.v_, speed_mm_s, 1e-9) << static_cast<int>(mode);
+    r.in->channels[0].rapid_override_pct = 0;  // held, not ended
+    for (int i = 0; i < 200; ++i) r.tick();
+    EXPECT_TRUE(r.k.channel_jogging(0));
+    EXPECT_NEAR(r.v_, mode == RapidOverrideMode::active_extended ? 0.0 : 50.0, 1e-9);
+  }
+}
+
 TEST(Jog, StopsAtTheSoftLimitWithoutPassingIt) {
   Rig r(jog_machine(10.0));
   r.tick(jog(JogRequest::Kind::continuous, +1, 200.0));

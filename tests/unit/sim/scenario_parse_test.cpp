@@ -25,6 +25,10 @@ TEST(ScenarioParse, SpecExamples) {
   EXPECT_DOUBLE_EQ(a.value, 80);
   EXPECT_FALSE(a.has_spindle());
 
+  a = one("1.1 rapid_override 25");
+  EXPECT_EQ(a.kind, ActionKind::rapid_override);
+  EXPECT_DOUBLE_EQ(a.value, 25);
+
   a = one("1.2 feedhold on");
   EXPECT_EQ(a.kind, ActionKind::feedhold);
   EXPECT_TRUE(a.on);
