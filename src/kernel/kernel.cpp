@@ -115,8 +115,6 @@ std::vector<std::uint32_t> Kernel::active_links(std::size_t ch) const {
   return out;
 }
 
-CommandQueue& Kernel::commands(std::size_t ch) { return *command_queues_.at(ch); }
-FeedbackQueue& Kernel::feedback(std::size_t ch) { return *feedback_queues_.at(ch); }
 
 ChannelState Kernel::channel_state(std::size_t ch) const {
   const Channel& c = *channels_.at(ch);

@@ -55,8 +55,8 @@ bool ChannelPrep::needs_feedback(const nc::Block& b) {
 
 bool ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& feedback, bool channel_done) {
   // A call that did nothing does nothing again until the kernel has taken a
-  // command or sent feedback, or the channel ended: most cycles of a dry run
-  // end here (the kernel takes one block while it runs for many cycles).
+  // command or sent feedback, or the channel ended.
+  if (idle(commands, feedback, channel_done)) return false;
   const Idle now{commands.free_slots(), channel_done};
   if (channel_done && !in_mdi_) take_stop(feedback);
   const bool mdi_waits = done() && mdi_->pending.load(std::memory_order_acquire) > 0 && !in_mdi_;
@@ -154,10 +154,15 @@ void ChannelPrep::take_block(const nc::Block& b, kernel::CommandQueue& commands)
 
 bool ChannelPrep::prepare(const nc::Block& b, kernel::CommandQueue& commands) {
   if (!window_.has_room() && !window_.release(commands, false)) return false;
-  std::vector<TrcOut> outs;
   if (observer_) observer_->decoded(b, *planner_, trc_.holding());
-  trc_.push(b, *planner_, outs);
-  plan_out(outs, commands);
+  if (trc_.passes_through(b)) {
+    plan_out(b, false, std::nullopt, commands);  // most blocks: planned from the decoder's own
+  } else {
+    trc_outs_.clear();  // kept: no allocation per block
+    trc_.push(b, *planner_, trc_outs_);
+    for (const TrcOut& o : trc_outs_)
+      if (!plan_out(o.block, o.inserted, o.error, commands)) break;
+  }
   // A block that needs feedback, and the program end, must reach the channel now.
   flushing_ = flushing_ || needs_feedback(b) || b.program_end;
   return push_out(commands);
@@ -169,39 +174,39 @@ void set_trc_event(PlannedCommand& c, const RadiusComp::State& s) { c.trc = kern
 
 }  // namespace
 
-void ChannelPrep::plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& commands) {
+bool ChannelPrep::plan_out(const nc::Block& block, bool inserted, const std::optional<Diagnostic>& error,
+                           kernel::CommandQueue& commands) {
   // A planned block is 13.5 KB: built once in place, not zeroed and copied.
-  auto plan_one = [&](const TrcOut& o) {
-    if (!o.error) return planner_->plan(o.block);
+  auto plan_one = [&] {
+    if (!error) return planner_->plan(block);
     PlannedBlock b;
-    (void)b.push_back(error_command(*o.error, o.block.file_id, *store_));
+    (void)b.push_back(error_command(*error, block.file_id, *store_));
     return b;
   };
-  for (TrcOut& o : outs) {
-    PlannedBlock planned = plan_one(o);
-    if (search_) {
-      search_out(o, planned, commands);
-      continue;
-    }
-    if (!planned.empty()) attach_warnings(planned[0]);
-    if (!o.error) {
-      if (o.inserted)
-        for (PlannedCommand& c : planned) c.emit_block_event = false;
-      else if (const auto st = trc_.report(o.block); st && !planned.empty())
-        set_trc_event(planned[0], *st);
-      if (record_frames_) {
-        const std::uint32_t frame = frame_index_now();
-        for (PlannedCommand& c : planned) c.frame_index = frame;
-      }
-    }
-    if (in_mdi_) mark_mdi(planned);
-    queue(planned, commands);
-    if (in_mdi_ && !planned.empty() && planned[0].kind == CommandKind::error) {
-      done_ = true;
-      finish_mdi(commands);
-      return;
+  PlannedBlock planned = plan_one();
+  if (search_) {
+    search_out(block, planned, commands);
+    return true;
+  }
+  if (!planned.empty()) attach_warnings(planned[0]);
+  if (!error) {
+    if (inserted)
+      for (PlannedCommand& c : planned) c.emit_block_event = false;
+    else if (const auto st = trc_.report(block); st && !planned.empty())
+      set_trc_event(planned[0], *st);
+    if (record_frames_) {
+      const std::uint32_t frame = frame_index_now();
+      for (PlannedCommand& c : planned) c.frame_index = frame;
     }
   }
+  if (in_mdi_) mark_mdi(planned);
+  queue(planned, commands);
+  if (in_mdi_ && !planned.empty() && planned[0].kind == CommandKind::error) {
+    done_ = true;
+    finish_mdi(commands);
+    return false;
+  }
+  return true;
 }
 
 void ChannelPrep::queue(const PlannedBlock& planned, kernel::CommandQueue& commands) {
@@ -214,17 +219,17 @@ void ChannelPrep::queue(const PlannedBlock& planned, kernel::CommandQueue& comma
 // In search nothing is handed over but errors (the run would abort there
 // too); decoder warnings wait for the restart. From the mark block on the
 // real run begins.
-void ChannelPrep::search_out(const TrcOut& o, const PlannedBlock& planned, kernel::CommandQueue& commands) {
+void ChannelPrep::search_out(const nc::Block& block, const PlannedBlock& planned, kernel::CommandQueue& commands) {
   const bool failed = !planned.empty() && planned[0].kind == CommandKind::error;
-  if (!search_->restarts_at(o.block) && !failed) {
+  if (!search_->restarts_at(block) && !failed) {
     search_->searched(planned);
     return;
   }
-  const SourceLoc at{decoder_->file_name(o.block.file_id), o.block.line, 0};
+  const SourceLoc at{decoder_->file_name(block.file_id), block.line, 0};
   auto restart = search_->restart(planned, *planner_, at);
   search_.reset();
   if (!restart) {
-    hand_over(error_command(restart.error(), o.block.file_id, *store_), commands);
+    hand_over(error_command(restart.error(), block.file_id, *store_), commands);
     return;
   }
   for (PlannedBlock& b : *restart) {

@@ -43,17 +43,26 @@ bool LookAheadWindow::push(const PlannedBlock& b) {
 }
 
 void LookAheadWindow::append(const PlannedCommand& command) {
-  PlannedCommand c = command;
-  const bool must_wait = late_wait_pending_ && c.feed_motion;
-  const bool linkable =
-      c.kind == CommandKind::motion && open_motion_ != 0 && open_motion_ - 1 >= head_ && is_quiet(c) && !must_wait;
+  const bool must_wait = late_wait_pending_ && command.feed_motion;
+  const bool linkable = command.kind == CommandKind::motion && open_motion_ != 0 && open_motion_ - 1 >= head_ &&
+                        is_quiet(command) && !must_wait;
   // A fillet goes in first (it chains after the motion before and becomes
   // the open motion that c chains after); it also links a corner so sharp
   // that the velocity look-ahead stops there (entry limit 0). Only right
   // after the motion: a block without motion in between keeps its place at
-  // the corner (its events are not moved behind a fillet).
-  if (linkable && open_motion_ == tail_ && at(open_motion_ - 1).command.blend_dev_mm > 0)
+  // the corner (its events are not moved behind a fillet). Only then is the
+  // command copied (3.4 KB) to be changed.
+  if (linkable && open_motion_ == tail_ && at(open_motion_ - 1).command.blend_dev_mm > 0) {
+    PlannedCommand c = command;
     (void)blend(open_motion_ - 1, c);
+    store(c, linkable, command.segment.length());
+  } else {
+    store(command, linkable, command.segment.length());
+  }
+}
+
+// Command c (as blended) enters the window; `programmed_mm`: its length as programmed.
+void LookAheadWindow::store(const PlannedCommand& c, bool linkable, double programmed_mm) {
   const bool chained = linkable && c.v_entry_max_mm_s > 0;
   const std::uint64_t seq = tail_++;
   Entry& e = at(seq);
@@ -61,7 +70,7 @@ void LookAheadWindow::append(const PlannedCommand& command) {
   e.command.v_end_mm_s = 0;
   e.prev_motion = 0;
   e.end_cap_mm_s = 0;
-  e.programmed_mm = command.segment.length();
+  e.programmed_mm = programmed_mm;
   if (c.kind == CommandKind::motion) {
     if (chained) {
       at(open_motion_ - 1).end_cap_mm_s = c.v_entry_max_mm_s;

@@ -63,28 +63,28 @@ Planner::Commands Planner::plan(const nc::Block& b) {
   // good block left it (a run stops at the error; `nck check` goes on from
   // there without a wrong start for the next block).
   const PlannedPosition before = planned_;
-  Planned c = plan_one(b, ctx);
-  if (!c) {
+  PlannedCommand& c = *out.emplace_back();
+  const PlanResult r = plan_one(b, c, ctx);
+  if (!r) {
     planned_ = before;
-    out = fail(c.error());
-  } else if (homing && c->kind == CommandKind::nop) {
-    auto groups = plan_homing(b, *c, ctx);
+    out = fail(r.error());
+  } else if (homing && c.kind == CommandKind::nop) {
+    auto groups = plan_homing(b, c, ctx);
     out = groups ? *groups : fail(groups.error());
-  } else if (c->kind == CommandKind::motion && c->trafo.kind == motion::CaxTrafoKind::face) {
-    cax_.face_centre_commands(*c, out, ctx);  // C turns at the face's centre
-  } else {
-    (void)out.push_back(*c);
+  } else if (c.kind == CommandKind::motion && c.trafo.kind == motion::CaxTrafoKind::face) {
+    const PlannedCommand first = c;  // out is refilled
+    out.clear();
+    cax_.face_centre_commands(first, out, ctx);  // C turns at the face's centre
   }
   manual_.stamp(out);
   couplings_.follow(ctx);
   return out;
 }
 
-Planner::Planned Planner::plan_one(const nc::Block& b, PlanContext& ctx) {
+PlanResult Planner::plan_one(const nc::Block& b, PlannedCommand& c, PlanContext& ctx) {
   modal_ = b.modal;
   if (auto r = check_supported(b); !r) return std::unexpected(r.error());
   if (auto r = check_spindle_scope(b); !r) return std::unexpected(r.error());
-  PlannedCommand c;
   c.file_id = b.file_id;
   c.line = b.line;
   c.has_n = b.n.has_value();
@@ -106,8 +106,7 @@ PlanResult Planner::plan_technologies(const nc::Block& b, PlannedCommand& c, Pla
   if (auto r = cax_.plan(b, c, ctx); !r) return r;
   if (auto r = couplings_.plan(b, c, ctx); !r) return r;
   if (auto r = dist_.plan(b, c, ctx); !r) return r;
-  nc::Block with_slaves_scratch;
-  auto actions = spindles_.plan(couplings_.with_slaves(b, with_slaves_scratch, channel_));
+  auto actions = spindles_.plan(couplings_.with_slaves(b, with_slaves_scratch_, channel_));
   if (!actions) return std::unexpected(actions.error());
   c.spindle_actions = *actions;
   couplings_.end_program(b);
@@ -151,21 +150,21 @@ PlanResult Planner::apply_frames(const nc::Block& b, PlannedCommand& c) {
 }
 
 // What the block executes: program end, stop, dwell, motion or nothing.
-Planner::Planned Planner::plan_execution(const nc::Block& b, PlannedCommand c, PlanContext& ctx) {
+PlanResult Planner::plan_execution(const nc::Block& b, PlannedCommand& c, PlanContext& ctx) {
   if (b.program_end) {
     c.kind = CommandKind::end;
     c.end_reason = std::find(b.m.begin(), b.m.end(), 2) != b.m.end() ? EndReason::m2 : EndReason::m30;
-    return c;
+    return {};
   }
   if (b.stop || b.optional_stop) {
     c.kind = CommandKind::stop;
     c.optional_stop = !b.stop;  // M0 and M1 together: M0 wins
-    return c;
+    return {};
   }
   if (b.dwell_s) {
     c.kind = CommandKind::dwell;
     c.dwell_s = std::max(0.0, *b.dwell_s);
-    return c;
+    return {};
   }
   if (b.dwell_revs) {
     if (!feed_.main_spindle().exists())
@@ -173,14 +172,14 @@ Planner::Planned Planner::plan_execution(const nc::Block& b, PlannedCommand c, P
     c.kind = CommandKind::dwell;
     c.dwell_revs = std::max(0.0, *b.dwell_revs);
     c.dwell_spindle = feed_.main_spindle().kernel;
-    return c;
+    return {};
   }
   if (b.g_nonmodal.has(nc::GCode::g100)) {
     // G100: a linear move at F that stops where the probe switches.
     nc::Block run = b;
     run.modal.motion = nc::Motion::linear;
-    Planned m = plan_motion(run, c, ctx);
-    if (m && m->kind == CommandKind::motion) measure_.start_run(*m, ctx);
+    const PlanResult m = plan_motion(run, c, ctx);
+    if (m && c.kind == CommandKind::motion) measure_.start_run(c, ctx);
     return m;
   }
   // With G201/G202 the axis words select the axes.
@@ -199,12 +198,12 @@ Planner::Planned Planner::plan_execution(const nc::Block& b, PlannedCommand c, P
     return plan_motion(move, c, ctx);
   }
   c.kind = CommandKind::nop;
-  return c;
+  return {};
 }
 
 // G0/G1/G2/G3: the target through the offsets, the path segment, its feed
 // and dynamic limits, and the transition from the motion before it.
-Planner::Planned Planner::plan_motion(const nc::Block& b, PlannedCommand c, PlanContext& ctx) {
+PlanResult Planner::plan_motion(const nc::Block& b, PlannedCommand& c, PlanContext& ctx) {
   const frames::SuppressMask mask = suppress_mask(b);
   AxisArray radius_mm{};
   for (std::size_t j = 0; j < n_axes_; ++j)
@@ -213,13 +212,15 @@ Planner::Planned Planner::plan_motion(const nc::Block& b, PlannedCommand c, Plan
   if (!target) return std::unexpected(target.error());
   const bool rapid = b.modal.motion == nc::Motion::rapid;
   const bool arc = b.modal.motion == nc::Motion::cw || b.modal.motion == nc::Motion::ccw;
-  AxisDynamicsArray dyn = axes_.dynamics(rapid);
+  // The axes' dynamics (2 KB) are copied only for a block that changes them.
+  std::optional<AxisDynamicsArray> own;
+  const auto changed = [&]() -> AxisDynamicsArray& { return own ? *own : own.emplace(axes_.dynamics(rapid)); };
   if (weights_.active()) {
-    weights_.weigh(dyn, rapid);
+    weights_.weigh(changed(), rapid);
     if (!rapid) c.weights = weights_.scale();
   }
   if (arc) {
-    if (auto r = plan_arc(b, c, *target, mask, dyn, ctx); !r) return std::unexpected(r.error());
+    if (auto r = plan_arc(b, c, *target, mask, changed(), ctx); !r) return std::unexpected(r.error());
   } else {
     auto seg = motion::make_line(planned_.mcs, *target, n_axes_, cax_.length_axes());
     if (!seg) return block_error(ErrorId::KernelBadDynamics, b, "degenerate line");
@@ -236,10 +237,11 @@ Planner::Planned Planner::plan_motion(const nc::Block& b, PlannedCommand c, Plan
   planned_.mcs = *target;
   if (c.segment.length() <= 0) {
     c.kind = CommandKind::nop;
-    return c;
+    return {};
   }
   c.kind = CommandKind::motion;
   manual_.moved(b, mask, ctx);
+  const AxisDynamicsArray& dyn = own ? *own : axes_.dynamics(rapid);
   c.limits = motion::path_limits(c.segment, std::span<const motion::AxisDynamics>(dyn.data(), n_axes_), b.modal.slope);
   cax_.limit_transformed(c, dyn, n_axes_);
   if (!motion::valid(c.limits)) return block_error(ErrorId::KernelBadDynamics, b, "the axes of this block cannot move");
@@ -249,7 +251,7 @@ Planner::Planned Planner::plan_motion(const nc::Block& b, PlannedCommand c, Plan
     case PathSpeed::Kind::share_of_max: c.v_cmd_mm_s = speed.value * c.limits.v_max_mm_s; break;
   }
   corner_.note_transition(b, c, rapid, ctx);
-  return c;
+  return {};
 }
 
 PlannedCommand Planner::return_motion(const motion::AxisVector& from_mcs, const motion::AxisVector& to_mcs) const {

@@ -183,8 +183,7 @@ void RadiusComp::fail(const nc::Block& b, ErrorId id, std::string why, std::vect
 
 void RadiusComp::push(const nc::Block& b, const Planner& planner, std::vector<TrcOut>& out) {
   planner_ = &planner;
-  const bool want = b.modal.radius_comp != nc::RadiusComp::g40;
-  if (queue_.empty() && !want) {
+  if (passes_through(b)) {
     out.push_back(TrcOut::of(b));
     return;
   }
@@ -228,7 +227,7 @@ void RadiusComp::push(const nc::Block& b, const Planner& planner, std::vector<Tr
   const auto tip = tip_of(b);
   if (!tip) return fail(b, tip.error(), out);
   item.tip = *tip;
-  if (!want) item.role = Role::departure;
+  if (b.modal.radius_comp == nc::RadiusComp::g40) item.role = Role::departure;
   else if (queue_.empty() || item.o != queue_.back().o || trc::length(item.tip - queue_.back().tip) > kTiny)
     item.role = Role::link;
   if (item.role != Role::contour && el->arc) {

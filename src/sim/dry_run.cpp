@@ -55,8 +55,11 @@ void DryRun::prepare() {
     if (sim_->skip_levels_used()) preps_[ch].set_skip_mask(sim_->hli().channel[ch].skip_mask);
     // Preparation runs ahead of the kernel: the sensor is on before the
     // kernel takes the first #DIST CTRL ON (planned by a call that progressed).
-    if (preps_[ch].feed(kernel_->commands(ch), kernel_->feedback(ch), kernel_->channel_done(ch)) &&
-        preps_[ch].planner().dist_ctrl_programmed())
+    kernel::CommandQueue& commands = kernel_->commands(ch);
+    kernel::FeedbackQueue& feedback = kernel_->feedback(ch);
+    const bool channel_done = kernel_->channel_done(ch);
+    if (preps_[ch].idle(commands, feedback, channel_done)) continue;
+    if (preps_[ch].feed(commands, feedback, channel_done) && preps_[ch].planner().dist_ctrl_programmed())
       sim_->switch_sensor_on(ch);
   }
 }

@@ -9,6 +9,7 @@
 #include <memory>
 #include <new>
 #include <type_traits>
+#include <utility>
 
 namespace nck {
 
@@ -35,6 +36,14 @@ class FixedVector {
     std::construct_at(slot(size_), v);
     ++size_;
     return true;
+  }
+  // Constructs an element in place: nullptr when full.
+  template <class... Args>
+  T* emplace_back(Args&&... args) noexcept(std::is_nothrow_constructible_v<T, Args...>) {
+    if (size_ == N) return nullptr;
+    T* p = std::construct_at(slot(size_), std::forward<Args>(args)...);
+    ++size_;
+    return p;
   }
   void pop_back() noexcept {
     if (size_ == 0) return;

@@ -66,8 +66,8 @@ class Kernel {
 
   // The queues of channel ch (0-based); see nck/kernel/queues.hpp for who
   // produces and who consumes each.
-  CommandQueue& commands(std::size_t ch);
-  FeedbackQueue& feedback(std::size_t ch);
+  CommandQueue& commands(std::size_t ch) { return *command_queues_.at(ch); }
+  FeedbackQueue& feedback(std::size_t ch) { return *feedback_queues_.at(ch); }
   ChannelState channel_state(std::size_t ch) const;
   // The coupling groups enabled in channel ch: their plan-store payloads.
   std::vector<std::uint32_t> active_links(std::size_t ch) const;

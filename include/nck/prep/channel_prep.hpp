@@ -65,6 +65,13 @@ class ChannelPrep {
   // anything (decoded, took feedback or handed commands over): a call that
   // did nothing will do nothing again until the kernel has run a cycle.
   bool feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& feedback, bool channel_done);
+  // True when feed() would return at once: nothing changed since a call
+  // that did nothing. Inline: most cycles of a dry run end here (the
+  // kernel takes one block while it runs for many cycles).
+  bool idle(const kernel::CommandQueue& commands, const kernel::FeedbackQueue& feedback, bool channel_done) const {
+    return idle_ && idle_->free_slots == commands.free_slots() && idle_->channel_done == channel_done &&
+           feedback.empty() && !(!in_mdi_ && done() && mdi_pending());
+  }
   // Plans one decoded block into the queue through the window (feed() uses
   // it; tests call it with blocks of their own). False when the queue has
   // no room for it.
@@ -111,12 +118,15 @@ class ChannelPrep {
   void attach_warnings(PlannedCommand& c);
   // Plans what tool radius compensation handed out, into the window or,
   // while it is full, the backlog (one block may become several).
-  void plan_out(std::vector<TrcOut>& outs, kernel::CommandQueue& commands);
+  // Plans one block (or the error raised in its place) and queues it; false
+  // when an MDI error ended the MDI (nothing after it is planned).
+  bool plan_out(const nc::Block& block, bool inserted, const std::optional<Diagnostic>& error,
+                kernel::CommandQueue& commands);
   bool drain_backlog(kernel::CommandQueue& commands);
   // Into the window, or the backlog while the window is full.
   void queue(const PlannedBlock& planned, kernel::CommandQueue& commands);
   // Block search: a planned block is searched, or restarts the real run.
-  void search_out(const TrcOut& o, const PlannedBlock& planned, kernel::CommandQueue& commands);
+  void search_out(const nc::Block& block, const PlannedBlock& planned, kernel::CommandQueue& commands);
   void search_not_found(const nc::Block& end, kernel::CommandQueue& commands);
   // MDI: starts the next text once everything before it is prepared; ends
   // one (the command that returns the channel to idle).
@@ -128,6 +138,7 @@ class ChannelPrep {
   std::optional<nc::Decoder> decoder_;
   std::unique_ptr<Planner> planner_;
   LookAheadWindow window_;
+  std::vector<TrcOut> trc_outs_;  // what radius compensation hands on for one block
   RadiusComp trc_;
   std::vector<PlannedBlock> backlog_;  // planned, waiting for room in the window
   std::optional<SearchRun> search_;    // while a block search runs

@@ -90,6 +90,7 @@ class LookAheadWindow {
   Entry& at(std::uint64_t seq) { return ring_[seq % ring_.size()]; }
   const Entry& at(std::uint64_t seq) const { return ring_[seq % ring_.size()]; }
   void append(const PlannedCommand& c);
+  void store(const PlannedCommand& c, bool linkable, double programmed_mm);
   void raise_chain(std::uint64_t next);
   double entry_limit(const PlannedCommand& c) const;
   bool blend(std::uint64_t prev, PlannedCommand& next);

@@ -60,6 +60,11 @@ class RadiusComp {
   // Drops what is held (the channel stops with an error before it).
   void discard() { queue_.clear(); }
   bool holding() const { return !queue_.empty(); }
+  // Block b goes to the planner as it is (compensation off, nothing held):
+  // push() would only copy it.
+  bool passes_through(const nc::Block& b) const {
+    return queue_.empty() && b.modal.radius_comp == nc::RadiusComp::g40;
+  }
 
   // The compensation state a block handed on carries (for the `trc` event):
   // the mode, the D in force and its tool radius.

@@ -220,8 +220,9 @@ bool CaxUnit::trafo_plane(int& a, int& b) const {
 // C has the radial axis's dynamics (face) or C's scaled to the reference
 // radius (cylinder); on the face the path speed is further limited so that
 // C's angular speed, growing near the centre, stays within C's own.
-void CaxUnit::limit_transformed(PlannedCommand& c, AxisDynamicsArray dyn, std::size_t n_axes) {
+void CaxUnit::limit_transformed(PlannedCommand& c, const AxisDynamicsArray& axes_dyn, std::size_t n_axes) {
   if (trafo_.kind == motion::CaxTrafoKind::none || c.kind != CommandKind::motion) return;
+  AxisDynamicsArray dyn = axes_dyn;  // C's entry becomes the Cartesian axis's
   c.trafo = trafo_;
   const auto jc = static_cast<std::size_t>(c_axis_);
   const motion::AxisDynamics c_dyn = dyn[jc];

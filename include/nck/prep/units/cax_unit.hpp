@@ -41,7 +41,7 @@ class CaxUnit {
   // false without a transformation.
   bool trafo_plane(int& a, int& b) const;
   // Limits of motion c under #FACE / #CYL (dyn: the axes' dynamics of its mode).
-  void limit_transformed(PlannedCommand& c, AxisDynamicsArray dyn, std::size_t n_axes);
+  void limit_transformed(PlannedCommand& c, const AxisDynamicsArray& dyn, std::size_t n_axes);
   // A face motion as the commands that run it (C turns at the face's centre).
   void face_centre_commands(const PlannedCommand& c, PlannedBlock& out, const PlanContext& ctx);
 
