@@ -98,6 +98,8 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
         if (ch.spindles[k].axis_index == ch.axes[static_cast<std::size_t>(ch.c_axis)].axis_index)
           channels_.back()->set_c_axis(static_cast<std::int8_t>(ch.c_axis), per_channel[i][k]);
   }
+  channel_done_.assign(channels_.size(), 0);
+  for (std::size_t i = 0; i < channels_.size(); ++i) channel_done_[i] = channels_[i]->done();
   return {};
 }
 
@@ -137,14 +139,12 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   take_external_commands(in, t_s, out);
   run_external_commands(t_s, out);
   ChannelContext ctx{spindles_.data(), spindles_.size(), plc_outputs_.get(), &in.spindles};
-  for (std::size_t i = 0; i < channels_.size(); ++i)
+  for (std::size_t i = 0; i < channels_.size(); ++i) {
     channels_[i]->tick(t_s, cycle_s_, in.channels[i], out.channels[i], out, ctx);
+    channel_done_[i] = channels_[i]->done();  // only a tick changes it
+  }
   tick_spindles(t_s, out);
   ++cycles_;
-}
-
-bool Kernel::channel_done(std::size_t ch) const noexcept {
-  return ch < channels_.size() && channels_[ch]->done();
 }
 
 ProgramState Kernel::program_state(std::size_t ch) const noexcept {

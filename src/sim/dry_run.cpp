@@ -25,6 +25,7 @@ std::expected<DryRun, Diagnostic> DryRun::create(const config::Machine& m,
     if (ch == options.search_channel && has_program) prep.search = options.search;
     run.preps_.emplace_back(*run.machine_, ch, has_program ? programs[ch] : std::filesystem::path(), *run.store_,
                             prep);
+    run.queues_.push_back({&run.kernel_->commands(ch), &run.kernel_->feedback(ch)});
   }
   for (std::size_t ch = 0; ch < run.preps_.size() && ch < config::kMaxChannels; ++ch) {
     run.sim_->start_with_skip_mask(ch, options.skip_masks[ch]);
@@ -42,7 +43,7 @@ DryRun& DryRun::operator=(DryRun&&) noexcept = default;
 // depth, so the kernel's reserve never binds where one thread's would not.
 constexpr std::size_t kQueuedAhead = kernel::kMaxLookAheadDepth;
 
-void DryRun::prepare() {
+void DryRun::prepare_now() {
   if (!sim_->mdi_requests().empty()) submit_mdi();
   if (threaded_) {
     feed_preparation_thread();
@@ -55,11 +56,10 @@ void DryRun::prepare() {
     if (sim_->skip_levels_used()) preps_[ch].set_skip_mask(sim_->hli().channel[ch].skip_mask);
     // Preparation runs ahead of the kernel: the sensor is on before the
     // kernel takes the first #DIST CTRL ON (planned by a call that progressed).
-    kernel::CommandQueue& commands = kernel_->commands(ch);
-    kernel::FeedbackQueue& feedback = kernel_->feedback(ch);
+    const ChannelQueues& q = queues_[ch];
     const bool channel_done = kernel_->channel_done(ch);
-    if (preps_[ch].idle(commands, feedback, channel_done)) continue;
-    if (preps_[ch].feed(commands, feedback, channel_done) && preps_[ch].planner().dist_ctrl_programmed())
+    if (preps_[ch].idle(*q.commands, *q.feedback, channel_done)) continue;
+    if (preps_[ch].feed(*q.commands, *q.feedback, channel_done) && preps_[ch].planner().dist_ctrl_programmed())
       sim_->switch_sensor_on(ch);
   }
 }

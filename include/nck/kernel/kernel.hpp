@@ -76,7 +76,8 @@ class Kernel {
   void tick(const TickInput& in, TickOutput& out) noexcept;
 
   bool all_channels_done() const noexcept;
-  bool channel_done(std::size_t ch) const noexcept;
+  // Inline: preparation asks it every cycle.
+  bool channel_done(std::size_t ch) const noexcept { return ch < channel_done_.size() && channel_done_[ch] != 0; }
   ProgramState program_state(std::size_t ch) const noexcept;
   // An axis of channel ch is being jogged (manual mode).
   bool channel_jogging(std::size_t ch) const noexcept;
@@ -103,6 +104,7 @@ class Kernel {
   std::vector<std::unique_ptr<CommandQueue>> command_queues_;
   std::vector<std::unique_ptr<FeedbackQueue>> feedback_queues_;
   std::vector<std::unique_ptr<Channel>> channels_;
+  std::vector<std::uint8_t> channel_done_;  // per channel: ended or aborted, as of the last tick
   double cycle_s_ = 0.001;
   std::uint64_t cycle_us_ = 1000;
   std::uint64_t cycles_ = 0;

@@ -75,7 +75,11 @@ class DryRun {
 
   // setup side: every channel's preparation decodes and plans what fits
   // (with prep_thread: waits until the preparation thread has caught up).
-  void prepare();
+  // Inline up to the test that nothing changed: most cycles end there.
+  void prepare() {
+    if (!threaded_ && quiet()) return;
+    prepare_now();
+  }
   // rt: one cycle of the simulated machine and the kernel.
   void cycle(kernel::TickOutput& out) noexcept;
   // A live kernel's preparation (nck serve): as prepare(), but never waits
@@ -147,6 +151,21 @@ class DryRun {
   std::unique_ptr<MachineSim> sim_;
   std::unique_ptr<prep::PlanStore> store_;
   std::vector<prep::ChannelPrep> preps_;
+  // Each channel's queues in the kernel (it owns them; their addresses stay).
+  struct ChannelQueues {
+    kernel::CommandQueue* commands;
+    kernel::FeedbackQueue* feedback;
+  };
+  std::vector<ChannelQueues> queues_;
+  void prepare_now();
+  // Every channel's preparation would return at once: no MDI line, no skip
+  // levels to hand over, and nothing changed since a call that did nothing.
+  bool quiet() const noexcept {
+    if (!sim_->mdi_requests().empty() || sim_->skip_levels_used()) return false;
+    for (std::size_t ch = 0; ch < queues_.size(); ++ch)
+      if (!preps_[ch].idle(*queues_[ch].commands, *queues_[ch].feedback, kernel_->channel_done(ch))) return false;
+    return true;
+  }
   std::unique_ptr<kernel::TickInput> in_;
   bool threaded_ = false;
   std::vector<Refusal> refusals_;

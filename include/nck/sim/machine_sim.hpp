@@ -79,6 +79,7 @@ class MachineSim {
     std::uint32_t text = 0;
   };
   FixedVector<MdiRequest, 64>& mdi_requests() noexcept { return mdi_requests_; }
+  const FixedVector<MdiRequest, 64>& mdi_requests() const noexcept { return mdi_requests_; }
   const std::string& mdi_text(std::uint32_t i) const { return scenario_->texts.at(i); }
   const std::string& scenario_file() const { return scenario_->file; }
   // The scenario types MDI text.
