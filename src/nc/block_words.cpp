@@ -1,4 +1,5 @@
 // Stage 1 of a block: read the words and evaluate their values.
+#include <bit>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -11,7 +12,8 @@ void Words::clear() {
   g.clear();
   m.clear();
   h.clear();
-  if (axis_count) axes.fill(std::nullopt);
+  for (std::uint32_t m = axis_mask; m != 0; m &= m - 1) axes[static_cast<std::size_t>(std::countr_zero(m))].reset();
+  axis_mask = 0;
   axis_count = 0;
   f = s = t = d = r = {};
   ijk = {};
@@ -132,10 +134,7 @@ bool parse_letter_word(Cursor& c, BlockCtx& b, Words& w) {
       if (!word_value(c, b, v, name[0])) return false;
       if (w.axes[ax])
         return b.x.err.fail(ErrorId::NcDuplicateWord, pos, fmt::format("axis {} is programmed twice", name));
-      w.axes[ax] = v;
-      w.axis_pos[ax] = static_cast<std::uint32_t>(pos);
-      ++w.axis_count;
-      ++w.word_count;
+      w.set_axis(static_cast<std::size_t>(ax), v, pos);
       return true;
     }
     if (const std::optional<GCode> g = valued_g(name)) {
@@ -156,10 +155,7 @@ bool parse_letter_word(Cursor& c, BlockCtx& b, Words& w) {
     if (!word_value(c, b, v, a)) return false;
     if (w.axes[ax])
       return b.x.err.fail(ErrorId::NcDuplicateWord, pos, fmt::format("axis {} is programmed twice", a));
-    w.axes[ax] = v;
-    w.axis_pos[ax] = static_cast<std::uint32_t>(pos);
-    ++w.axis_count;
-    ++w.word_count;
+    w.set_axis(static_cast<std::size_t>(ax), v, pos);
     return true;
   }
   switch (a) {

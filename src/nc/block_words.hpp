@@ -50,6 +50,8 @@ struct Words {
   std::array<std::optional<double>, kMaxAxes> axes{};
   std::array<std::uint32_t, kMaxAxes> axis_pos{};
   int axis_count = 0;
+  std::uint32_t axis_mask = 0;  // bit j: axes[j] is set (clear() resets only those)
+  static_assert(kMaxAxes <= 32, "axis_mask has a bit per axis");
   At<double> f, s, t, d, r;
   std::array<At<double>, 3> ijk{};
   At<double> dwell_direct;       // G4 <value>
@@ -67,6 +69,14 @@ struct Words {
   int word_count = 0;  // words other than N and the # command itself
 
   void clear();
+  // Axis word j with value v at column pos (one word of the block).
+  void set_axis(std::size_t j, double v, std::size_t pos) {
+    axes[j] = v;
+    axis_pos[j] = static_cast<std::uint32_t>(pos);
+    axis_mask |= 1u << j;
+    ++axis_count;
+    ++word_count;
+  }
   bool has_g(GCode code) const {
     for (const auto& x : g)
       if (x.code == code) return true;

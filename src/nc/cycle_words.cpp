@@ -40,10 +40,7 @@ bool main_axis_word(Cursor& c, BlockCtx& b, Words& w, std::size_t pos, int k, ch
   if (w.axes[j])
     return b.x.err.fail(ErrorId::NcDuplicateWord, pos,
                         fmt::format("axis {} is programmed twice (@{})", kMainAxisNames[m], what));
-  w.axes[j] = v;
-  w.axis_pos[j] = static_cast<std::uint32_t>(pos);
-  ++w.axis_count;
-  ++w.word_count;
+  w.set_axis(static_cast<std::size_t>(j), v, pos);
   return true;
 }
 
