@@ -46,8 +46,9 @@ TEST(Mdi, ASessionRunsThreeBlocksWithTheModalStateCarriedOn) {
   EXPECT_DOUBLE_EQ(axis(r, "Z"), 5);
   std::size_t blocks = 0;
   for (const nlohmann::json& e : r.events) {
-    blocks += e["ev"] == "block";
-    if (e["ev"] == "block") EXPECT_EQ(e["file"], "MDI");
+    if (e["ev"] != "block") continue;
+    ++blocks;
+    EXPECT_EQ(e["file"], "MDI");
   }
   EXPECT_EQ(blocks, 3u);
   // idle > running > idle for each text
