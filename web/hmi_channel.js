@@ -95,8 +95,20 @@
     // A click on a line: load the program with that block as the search mark.
     async search(nr, line) {
       const program = this.programName;
-      if (await this.load(program, "N" + nr))
+      if (await this.load(program, "N" + nr)) {
         this.say(`block search to N${nr} (line ${line}) staged: Cycle start searches, returns to the contour and holds; Cycle start again continues.`);
+        this.searchHint = "staged";
+      }
+    }
+
+    // The staged-search hint goes once the kernel took the search (the
+    // server's "staged" seen on, then off): it is no longer true after that.
+    followSearchHint(state) {
+      if (this.searchHint === "staged" && state.staged) this.searchHint = "seen";
+      else if (this.searchHint === "seen" && !state.staged) {
+        this.searchHint = null;
+        this.say("");
+      }
     }
 
     say(text) { this.notice.textContent = text; }
@@ -126,6 +138,7 @@
     update(state) {
       const c = state.channels[this.n - 1];
       if (!c) return;
+      this.followSearchHint(state);
       this.state = c;
       this.stateEl.textContent = c.state;
       this.stateEl.dataset.state = c.state;

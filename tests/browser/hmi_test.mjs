@@ -173,6 +173,9 @@ async function checkBlockSearch(h) {
     .catch(() => fail("clicking N120 stages no block search"));
   await h.button("Cycle start").click();
   const held = await h.until(m, (s) => s.state === "hold", 10000, "block search hold");
+  await h.page.waitForFunction(() => !/staged/.test(document.querySelector(".channel .notice").textContent), null, { timeout: 3000 })
+    .then(() => ok("the staged-search hint goes once the search runs"))
+    .catch(() => fail("the staged-search hint stays after the search ran"));
   const states = [...new Set((await h.since(m)).map((s) => s.state))];
   expect(held && (states.includes("searching") || states.includes("returning")),
     `block search to N120 (line ${line}): states ${states.join(" → ")}`);
