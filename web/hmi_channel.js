@@ -97,18 +97,16 @@
       const program = this.programName;
       if (await this.load(program, "N" + nr)) {
         this.say(`block search to N${nr} (line ${line}) staged: Cycle start searches, returns to the contour and holds; Cycle start again continues.`);
-        this.searchHint = "staged";
+        this.searchHint = true;
       }
     }
 
-    // The staged-search hint goes once the kernel took the search (the
-    // server's "staged" seen on, then off): it is no longer true after that.
-    followSearchHint(state) {
-      if (this.searchHint === "staged" && state.staged) this.searchHint = "seen";
-      else if (this.searchHint === "seen" && !state.staged) {
-        this.searchHint = null;
-        this.say("");
-      }
+    // The staged-search hint goes once the kernel took the search: nothing
+    // staged any more and the channel searching, returning, held or running.
+    followSearchHint(state, c) {
+      if (!this.searchHint || state.staged || !["searching", "returning", "hold", "running"].includes(c.state)) return;
+      this.searchHint = false;
+      this.say("");
     }
 
     say(text) { this.notice.textContent = text; }
@@ -138,7 +136,7 @@
     update(state) {
       const c = state.channels[this.n - 1];
       if (!c) return;
-      this.followSearchHint(state);
+      this.followSearchHint(state, c);
       this.state = c;
       this.stateEl.textContent = c.state;
       this.stateEl.dataset.state = c.state;

@@ -50,8 +50,10 @@ std::string first_error(const std::string& output) {
 }
 
 // `timeout` turns a hang into exit code 124 instead of a test that never ends.
+// 300 s: docHover2.nc runs into the loop limit (10 million iterations), 6 s
+// in a plain build and about 60 s under ASan on a loaded 2-core machine.
 CliResult parse_with_timeout(const std::filesystem::path& file) {
-  return run_shell("timeout 60 " + std::string(NCK_BINARY) + " parse '" + file.string() + "' 2>&1");
+  return run_shell("timeout 300 " + std::string(NCK_BINARY) + " parse '" + file.string() + "' 2>&1");
 }
 
 TEST(IsgSamplesCorpus, EveryFileMatchesTheTable) {
@@ -65,7 +67,7 @@ TEST(IsgSamplesCorpus, EveryFileMatchesTheTable) {
     const std::string rel = std::filesystem::relative(e.path(), samples()).generic_string();
     ++files;
     const CliResult r = parse_with_timeout(e.path());
-    ASSERT_NE(r.exit_code, 124) << rel << " did not finish within 60 s";
+    ASSERT_NE(r.exit_code, 124) << rel << " did not finish within 300 s";
     const std::string got = first_error(r.output);
     auto it = table.find(rel);
     if (it == table.end()) {
