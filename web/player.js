@@ -22,6 +22,8 @@
   }
 
   class Player {
+    // backplots: the views that show the tool (backplot.js, view3d.js):
+    // anything with the channel's data as `ch` and a setMarker(point).
     constructor(parent, data, backplots, inverse) {
       this.D = data;
       this.bps = backplots;

@@ -63,6 +63,7 @@ std::string html_text(const std::string& s) {
 }  // namespace
 
 std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const {
+  const auto num4 = [](std::string& o, double v) { append_number(o, v, 4); };
   std::string s = "[";
   for (std::size_t c = 0; c < channels_.size(); ++c) {
     const Channel& ch = channels_[c];
@@ -96,6 +97,8 @@ std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const 
     s += ",\"t\":" + array_of(pts, [](std::string& o, const PathPoint& p) { append_number(o, p.t_s, 4); });
     s += ",\"cause_t\":" + array_of(ch.cause_t, [](std::string& o, double t) { append_number(o, t, 4); });
     s += ",\"cause\":" + array_of(ch.cause_name, [](std::string& o, const std::string& n) { o += quoted(n); });
+    s += ",\"limits\":{\"min\":" + array_of(std::vector<double>(ch.limits.min_mm.begin(), ch.limits.min_mm.end()), num4) +
+         ",\"max\":" + array_of(std::vector<double>(ch.limits.max_mm.begin(), ch.limits.max_mm.end()), num4) + "}";
     s += ",\"frames\":" + frames_json(ch);
     if (ch.frames.size() > 1)  // which map each point is in; all the first one otherwise
       s += ",\"frame\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.frame); });
@@ -285,6 +288,7 @@ std::optional<std::string> ReportWriter::write(const std::string& path, double e
                 {"/*NCK_DATA*/", script_safe(data_json(end_s, exit_code))},
                 {"/*UPLOT_JS*/", std::string(embedded_file("uPlot.iife.min.js"))},
                 {"/*BACKPLOT_JS*/", std::string(embedded_file("backplot.js"))},
+                {"/*VIEW3D_JS*/", std::string(embedded_file("view3d.js"))},
                 {"/*PLAYER_JS*/", std::string(embedded_file("player.js"))},
                 {"/*REPORT_JS*/", std::string(embedded_file("report.js"))}}));
   return f.commit();
