@@ -155,6 +155,7 @@
       const ts = D.ts, k = floorIndex(ts.t, this.t);
       D.series.forEach((s, i) => {
         if (s.kind === "velocity" && s.ch === ch.n) h += "<b>path velocity</b><span>" + fmt(ts.v[i][k], 1) + " mm/min</span>";
+        if (s.kind === "path_a" && s.ch === ch.n) h += "<b>path acceleration</b><span>" + fmt(ts.v[i][k], 1) + " mm/s²</span>";
         if (s.unit === "rpm") h += "<b>" + esc(s.name) + "</b><span>" + fmt(ts.v[i][k], 1) + " rpm</span>";
       });
       document.getElementById("dro").innerHTML = h + "</div>";

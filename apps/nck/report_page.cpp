@@ -63,7 +63,6 @@ std::string html_text(const std::string& s) {
 }  // namespace
 
 std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const {
-  const auto num4 = [](std::string& o, double v) { append_number(o, v, 4); };
   std::string s = "[";
   for (std::size_t c = 0; c < channels_.size(); ++c) {
     const Channel& ch = channels_[c];
@@ -97,8 +96,7 @@ std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const 
     s += ",\"t\":" + array_of(pts, [](std::string& o, const PathPoint& p) { append_number(o, p.t_s, 4); });
     s += ",\"cause_t\":" + array_of(ch.cause_t, [](std::string& o, double t) { append_number(o, t, 4); });
     s += ",\"cause\":" + array_of(ch.cause_name, [](std::string& o, const std::string& n) { o += quoted(n); });
-    s += ",\"limits\":{\"min\":" + array_of(std::vector<double>(ch.limits.min_mm.begin(), ch.limits.min_mm.end()), num4) +
-         ",\"max\":" + array_of(std::vector<double>(ch.limits.max_mm.begin(), ch.limits.max_mm.end()), num4) + "}";
+    s += ",\"limits\":" + limits_json(ch);
     s += ",\"frames\":" + frames_json(ch);
     if (ch.frames.size() > 1)  // which map each point is in; all the first one otherwise
       s += ",\"frame\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.frame); });
@@ -107,6 +105,21 @@ std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const 
     for (const PathPoint& p : pts) lines_used.emplace_back(p.file, p.line);
   }
   return s + "]";
+}
+
+// The software limits of X, Y, Z (machine coordinates, mm; null where the
+// channel has no such axis): the 3D view's box.
+std::string ReportWriter::limits_json(const Channel& ch) const {
+  std::string s;
+  for (const auto* side : {&ch.limits.min_mm, &ch.limits.max_mm}) {
+    s += side == &ch.limits.min_mm ? "{\"min\":[" : "],\"max\":[";
+    for (int a = 0; a < 3; ++a) {
+      if (a > 0) s += ',';
+      if (ch.axis[a] < 0) s += "null";
+      else append_number(s, (*side)[a], 4);
+    }
+  }
+  return s + "]}";
 }
 
 // The channel's program -> machine maps: MCS = r * PCS + s on X, Y, Z

@@ -121,6 +121,7 @@ class ReportWriter {
   void take(const kernel::Event& e, const RunNames& names);
   void take_frame(Channel& ch, std::uint32_t store_index, const RunNames& names);
   void watch_plc(double t_s, const RunNames& names);  // overrides and feedholds from the HLI
+  std::string limits_json(const Channel& ch) const;
   std::string frames_json(const Channel& ch) const;
   std::string contour_json(const Channel& ch) const;
   std::string data_json(double end_s, int exit_code) const;
