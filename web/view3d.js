@@ -11,7 +11,7 @@
 // three.js (esbuild, CMakeLists.txt) into the report as window.NckView3d.
 import {
   BufferGeometry, Color, ConeGeometry, Float32BufferAttribute, Group, LineBasicMaterial, LineDashedMaterial,
-  LineSegments, Mesh, MeshBasicMaterial, PerspectiveCamera, Scene, Vector3, WebGLRenderer,
+  LineSegments, Mesh, MeshBasicMaterial, OrthographicCamera, Scene, Vector3, WebGLRenderer,
 } from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 
@@ -131,7 +131,9 @@ export class View3d {
     this.marker = new Mesh(cone, new MeshBasicMaterial({ color: 0x111111 }));
     this.marker.visible = false;
     this.scene.add(this.marker);
-    this.camera = new PerspectiveCamera(35, this.w / this.h, 0.01, 1e6);
+    // orthographic, as a machine drawing: the limit box, far or near, stays a box and does not
+    // sweep perspective lines across the path
+    this.camera = new OrthographicCamera(-1, 1, 1, -1, 0, 1);
     this.camera.up.set(0, 0, 1);  // Z up, as on the machine (before the controls read it)
     this.controls = new OrbitControls(this.camera, this.canvas);
     this.controls.screenSpacePanning = true;
@@ -147,19 +149,22 @@ export class View3d {
     this.canvas.addEventListener("contextmenu", (e) => e.preventDefault());
   }
 
-  // Looks at the path's (or the limits') box from the front right, above.
+  // Looks at the path's (or the limits') box from the front right, above;
+  // the box's bounding sphere fills the view's height.
   fit(what) {
     if (!this.camera) return;
     const b = what === "limits" && this.limits ? this.limits : this.box;
     const centre = new Vector3((b.min[0] + b.max[0]) / 2, (b.min[1] + b.max[1]) / 2, (b.min[2] + b.max[2]) / 2);
     const radius = Math.max(Math.hypot(b.max[0] - b.min[0], b.max[1] - b.min[1], b.max[2] - b.min[2]) / 2, 1e-3);
-    const dist = radius / Math.tan((this.camera.fov * Math.PI) / 360);  // the box just fits the view's height
-    this.camera.position.copy(centre).add(new Vector3(1, -1.4, 1).normalize().multiplyScalar(dist));
-    // near and far from the whole scene, so that zooming out to the limits keeps both in view
-    const all = this.limits ? Math.max(radius, Math.hypot(...[0, 1, 2].map((a) => this.limits.max[a] - this.limits.min[a]))) : radius;
-    this.camera.near = dist / 1000;
-    this.camera.far = dist + 4 * all + 10 * radius;
-    this.camera.updateProjectionMatrix();
+    const c = this.camera, aspect = this.w / this.h;
+    c.top = radius; c.bottom = -radius; c.left = -radius * aspect; c.right = radius * aspect; c.zoom = 1;
+    // the camera stands outside the whole scene (path, limits) at any rotation: nothing is clipped
+    const scene = [this.box, this.limits].filter(Boolean).map((x) => Math.hypot(...[0, 1, 2].map((a) => x.max[a] - x.min[a])));
+    const dist = Math.max(radius, ...scene) * 2 + Math.hypot(centre.x, centre.y, centre.z);
+    c.position.copy(centre).add(new Vector3(1, -1.4, 1).normalize().multiplyScalar(dist));
+    c.near = 0;
+    c.far = 2 * dist;
+    c.updateProjectionMatrix();
     this.controls.target.copy(centre);
     this.controls.update();
     this.renderSoon();
@@ -188,10 +193,8 @@ export class View3d {
   }
 
   render() {
-    if (this.marker.visible) {  // a constant size on screen: scaled with its distance from the camera
-      const d = this.camera.position.distanceTo(this.marker.position);
-      this.marker.scale.setScalar((2 * d * Math.tan((this.camera.fov * Math.PI) / 360) * MARKER_PX) / this.h);
-    }
+    const c = this.camera;  // the marker keeps its size on screen at any zoom
+    this.marker.scale.setScalar(((c.top - c.bottom) / c.zoom) * (MARKER_PX / this.h));
     this.renderer.render(this.scene, this.camera);
     this.canvas.dataset.camera = JSON.stringify(this.cameraState());
   }
