@@ -71,7 +71,8 @@ function bounds(ch) {
 export class View3d {
   constructor(parent, ch, opts = {}) {
     this.ch = ch;
-    this.limits = ch.limits || null;
+    const l = ch.limits;  // null for an axis the channel lacks: then no box
+    this.limits = l && l.min.concat(l.max).every((v) => v != null) ? l : null;
     const el = document.createElement("div");
     el.className = "backplot view3d";
     el.dataset.channel = ch.n;
