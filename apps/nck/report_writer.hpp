@@ -127,6 +127,7 @@ class ReportWriter {
   std::string data_json(double end_s, int exit_code) const;
   std::string channels_json(std::vector<std::pair<std::uint16_t, std::uint32_t>>& lines_used) const;
   std::string summary_json(std::vector<std::pair<std::uint16_t, std::uint32_t>>& lines_used) const;
+  std::string lines_json(const std::vector<std::pair<std::uint16_t, std::uint32_t>>& lines_used) const;
   // Synchronous operation: one row per coupling period (link events).
   struct LinkPeriod {
     int ch = 0, group = 0;
