@@ -248,16 +248,18 @@ std::string ReportWriter::data_json(double end_s, int exit_code) const {
 // for the rest).
 std::string ReportWriter::lines_json(const std::vector<LineRef>& lines_used) const {
   std::string s = "{";
+  bool full = false;  // the first line that does not fit ends the list
   std::set<LineRef> put_already;
   const auto put = [&](std::uint16_t file, std::uint32_t line) {
-    if (!put_already.insert({file, line}).second) return;
+    if (full || !put_already.insert({file, line}).second) return;
     const std::string& text = line_text(file, line);
     if (text.empty()) return;
     const std::string entry = fmt::format("{}\"{}:{}\":{}", s.size() > 1 ? "," : "", file, line, quoted(text));
-    if (s.size() + entry.size() <= kMaxLinesJsonBytes) s += entry;
+    full = s.size() + entry.size() > kMaxLinesJsonBytes;
+    if (!full) s += entry;
   };
   for (const auto& [file, line] : lines_used) put(file, line);
-  for (std::uint32_t d = 1; d <= kContextLines && s.size() < kMaxLinesJsonBytes; ++d)
+  for (std::uint32_t d = 1; d <= kContextLines && !full; ++d)
     for (const auto& [file, line] : lines_used) {
       if (line > d) put(file, line - d);
       put(file, line + d);
