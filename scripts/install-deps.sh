@@ -7,7 +7,7 @@ pkgs=(build-essential g++ cmake ninja-build pkg-config
       libgtest-dev libgmock-dev googletest libbenchmark-dev
       clang-14 libclang-rt-14-dev   # clang 14 + libFuzzer: the fuzz preset
       libboost1.74-dev              # Boost.Beast + Asio: nck serve
-      nodejs chromium               # the report's uPlot (inlined at build time) and its browser test
+      nodejs chromium               # the report's uPlot and three.js (inlined at build time) and its browser test
       pybind11-dev python3-dev python3-numpy   # the Python module (python/, docs/python.md)
       python3-pytest python3-distributed       # its tests; nck.batch on Dask
       python3-matplotlib)                      # examples/python/accel_sweep.py plots (CSV without it)
@@ -22,8 +22,8 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-# uPlot and playwright-core at the versions package-lock.json locks; the build
-# inlines uPlot into the report, tests/browser drives /usr/bin/chromium.
+# uPlot, three, esbuild and playwright-core at the versions package-lock.json locks; the build
+# inlines uPlot and bundles three.js (esbuild) into the report, tests/browser drives /usr/bin/chromium.
 cd "$(dirname "$0")/.."
 # Debian's nodejs comes without npm (a NodeSource nodejs brings its own).
 if ! command -v npm >/dev/null; then

@@ -252,8 +252,10 @@
       for (let k = 1; k < n; k++) {
         const du = this.uv[2 * k] - this.uv[2 * k - 2], dv = this.uv[2 * k + 1] - this.uv[2 * k - 1];
         if ((du * du + dv * dv) * this.scale * this.scale > 0.25 || ch.rapid[k] === 1) continue;
+        // a plunge moves at least 2 px out of the plane; a short arc chord that is also short in
+        // space (the benchmark's 0.25 mm semicircles) is no plunge and gets no ring
         const moved = Math.abs(ch.x[k] - ch.x[k - 1]) + Math.abs(ch.y[k] - ch.y[k - 1]) + Math.abs(ch.z[k] - ch.z[k - 1]);
-        if (moved < 1e-3) continue;
+        if (moved < 1e-3 || moved * this.scale < 2) continue;
         const [x, y] = this.toScreen(this.uv[2 * k], this.uv[2 * k + 1]);
         ctx.beginPath(); ctx.arc(x, y, 4, 0, 2 * Math.PI); ctx.stroke();
       }

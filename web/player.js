@@ -22,6 +22,8 @@
   }
 
   class Player {
+    // backplots: the views that show the tool (backplot.js, view3d.js):
+    // anything with the channel's data as `ch` and a setMarker(point).
     constructor(parent, data, backplots, inverse) {
       this.D = data;
       this.bps = backplots;
@@ -153,6 +155,7 @@
       const ts = D.ts, k = floorIndex(ts.t, this.t);
       D.series.forEach((s, i) => {
         if (s.kind === "velocity" && s.ch === ch.n) h += "<b>path velocity</b><span>" + fmt(ts.v[i][k], 1) + " mm/min</span>";
+        if (s.kind === "path_a" && s.ch === ch.n) h += "<b>path acceleration</b><span>" + fmt(ts.v[i][k], 1) + " mm/s²</span>";
         if (s.unit === "rpm") h += "<b>" + esc(s.name) + "</b><span>" + fmt(ts.v[i][k], 1) + " rpm</span>";
       });
       document.getElementById("dro").innerHTML = h + "</div>";

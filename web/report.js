@@ -1,5 +1,6 @@
 // The report page: reads the run's data (the JSON in #nck-data) and builds
-// the summary, tables, backplots (backplot.js) and time plots (uPlot).
+// the summary, tables, backplots (backplot.js, view3d.js), the time
+// cursor (player.js) and time plots (uPlot).
 (function () {
   "use strict";
   const t0 = performance.now();
@@ -154,6 +155,9 @@
     return items.join(" ");
   }
 
+  // A series that never changes gets a range of its own (not ticks of 0 0 0).
+  const yRange = (u, lo, hi) => (hi - lo < 1e-9 ? [lo - 1, hi + 1] : uPlot.rangeNum(lo, hi, 0.1, true));
+
   function timeplots() {
     const panels = new Map();
     D.series.forEach((s, i) => {
@@ -173,7 +177,8 @@
       box.dataset.panel = title;
       box.innerHTML = "<h3>" + esc(title) + "</h3>";
       $("timeplots").appendChild(box);
-      const unit = p.meta.unit;
+      // a scale and an axis per unit (path.a in mm/s² left, path.j in mm/s³ right)
+      const units = [...new Set(p.idx.map((i) => D.series[i].unit))];
       const marks = p.meta.spindle != null ? D.marks.filter((m) => m.spindle === p.meta.spindle)
         : p.meta.kind === "velocity" ? D.marks.filter((m) => m.ch === p.meta.ch) : [];
       const waits = waitsFor(p.meta);
@@ -182,14 +187,14 @@
       const opts = {
         width, height: 230,
         cursor: { sync: { key: "nck", setSeries: false }, drag: { x: true, y: false } },
-        // a series that never changes gets a range of its own (not ticks of 0 0 0)
-        scales: { x: { time: false }, y: { range: (u, lo, hi) => (hi - lo < 1e-9 ? [lo - 1, hi + 1] : uPlot.rangeNum(lo, hi, 0.1, true)) } },
-        axes: [
-          { label: "time (s)", grid: { stroke: "#eef0f4" }, ticks: { stroke: "#c9ced8" } },
-          { label: unit, size: 70, grid: { stroke: "#eef0f4" }, ticks: { stroke: "#c9ced8" } },
-        ],
+        scales: Object.fromEntries([["x", { time: false }]].concat(units.map((unit) => [unit, { range: yRange }]))),
+        axes: [{ label: "time (s)", grid: { stroke: "#eef0f4" }, ticks: { stroke: "#c9ced8" } }].concat(units.map((unit, k) => Object.assign({
+          scale: unit, label: unit, size: 70, side: k ? 1 : 3,
+          grid: { show: k === 0, stroke: "#eef0f4" }, ticks: { stroke: "#c9ced8" },
+        }, units.length > 1 ? { stroke: COLOURS[k % COLOURS.length] } : {}))),  // two scales: each in its series' colour
         series: [{ label: "t (s)", value: (u, v) => (v == null ? "-" : v.toFixed(4)) }].concat(p.idx.map((i, k) => ({
-          label: D.series[i].name + " (" + unit + ")",
+          label: D.series[i].name + " (" + D.series[i].unit + ")",
+          scale: D.series[i].unit,
           stroke: D.series[i].kind === "act_rpm" ? "#d62728" : D.series[i].kind === "set_rpm" ? "#1f6feb" : COLOURS[k % COLOURS.length],
           width: 1.5,
           dash: D.series[i].kind === "set_rpm" ? [6, 3] : undefined,
@@ -319,14 +324,18 @@
     render();
   }
 
+  // A plane view per channel and, beside it, a 3D view where the channel
+  // has three linear axes (view3d.js; both halves of the row then).
   function backplots() {
     const parent = $("backplots");
-    const list = [];
+    const list = [], views = [];
+    const with3d = (ch) => ch.has.every(Boolean) && window.NckView3d;
+    const half = D.channels.some(with3d) ? { width: Math.max(360, Math.floor((parent.clientWidth - 60) / 2)) } : {};
     for (const ch of D.channels) {
-      const b = new NckBackplot(parent, ch, D);
-      list.push(b);
+      list.push(new NckBackplot(parent, ch, D, half));
+      if (with3d(ch)) views.push(new NckView3d(parent, ch, { width: half.width, height: 460 }));
     }
-    return list;
+    return { list, views };
   }
 
   // nck diff --run --report: run B's cycle time and causes beside this run's.
@@ -351,13 +360,13 @@
 
   summary();
   diagnostics();
-  const bps = backplots();
-  const player = new NckPlayer($("player"), D, bps, NckBackplot.inverse);
+  const { list: bps, views } = backplots();
+  const player = new NckPlayer($("player"), D, bps.concat(views), NckBackplot.inverse);
   ghost();
   timeplots();
   cycletime();
   causes();
   events();
   // For the browser test and for scripting: what was drawn.
-  window.nckReport = { data: D, plots, backplots: bps, player, waitText, loadMs: performance.now() - t0, ready: true };
+  window.nckReport = { data: D, plots, backplots: bps, views3d: views, player, waitText, loadMs: performance.now() - t0, ready: true };
 })();

@@ -23,4 +23,17 @@ std::array<int, 3> backplot_axes(const config::ChannelConfig& ch) {
   return axis;
 }
 
+SoftLimits backplot_limits(const config::Machine& m, const config::ChannelConfig& ch, const std::array<int, 3>& axis) {
+  static const config::AxisConfig kNoAxisList;  // the planner's defaults (AxisTable)
+  SoftLimits out;
+  for (int a = 0; a < 3; ++a) {
+    if (axis[a] < 0) continue;
+    const int idx = ch.axes[static_cast<std::size_t>(axis[a])].axis_index;
+    const config::AxisConfig& ax = idx >= 0 ? m.axes[static_cast<std::size_t>(idx)] : kNoAxisList;
+    out.min_mm[a] = ax.sw_limit_neg;
+    out.max_mm[a] = ax.sw_limit_pos;
+  }
+  return out;
+}
+
 }  // namespace nck::app

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <set>
 #include <fmt/format.h>
 
 #include "nck/core/utf8.hpp"
@@ -20,7 +21,10 @@ using LineRef = std::pair<std::uint16_t, std::uint32_t>;
 std::string quoted(const std::string& s) { return dump_json(json(to_utf8(s))); }
 
 constexpr std::size_t kMaxSummaryBlocks = 300;    // the longest blocks in the table
-constexpr std::size_t kMaxLineTextBytes = 2 << 20;  // NC line texts carried (hovers, the program panel)
+// The "lines" object (NC texts for hovers, tables and the program panel),
+// JSON bytes: 1.5 MiB since the 3D view's 0.55 MB bundle joined the page
+// (was 2 MiB of text, i.e. about 2.2 MB of JSON).
+constexpr std::size_t kMaxLinesJsonBytes = 1536 << 10;
 constexpr std::uint32_t kContextLines = 2;           // lines around each line shown, for the program panel
 
 template <class T, class F>
@@ -96,6 +100,7 @@ std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const 
     s += ",\"t\":" + array_of(pts, [](std::string& o, const PathPoint& p) { append_number(o, p.t_s, 4); });
     s += ",\"cause_t\":" + array_of(ch.cause_t, [](std::string& o, double t) { append_number(o, t, 4); });
     s += ",\"cause\":" + array_of(ch.cause_name, [](std::string& o, const std::string& n) { o += quoted(n); });
+    s += ",\"limits\":" + limits_json(ch);
     s += ",\"frames\":" + frames_json(ch);
     if (ch.frames.size() > 1)  // which map each point is in; all the first one otherwise
       s += ",\"frame\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.frame); });
@@ -104,6 +109,21 @@ std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const 
     for (const PathPoint& p : pts) lines_used.emplace_back(p.file, p.line);
   }
   return s + "]";
+}
+
+// The software limits of X, Y, Z (machine coordinates, mm; null where the
+// channel has no such axis): the 3D view's box.
+std::string ReportWriter::limits_json(const Channel& ch) const {
+  std::string s;
+  for (const auto* side : {&ch.limits.min_mm, &ch.limits.max_mm}) {
+    s += side == &ch.limits.min_mm ? "{\"min\":[" : "],\"max\":[";
+    for (int a = 0; a < 3; ++a) {
+      if (a > 0) s += ',';
+      if (ch.axis[a] < 0) s += "null";
+      else append_number(s, (*side)[a], 4);
+    }
+  }
+  return s + "]}";
 }
 
 // The channel's program -> machine maps: MCS = r * PCS + s on X, Y, Z
@@ -216,30 +236,35 @@ std::string ReportWriter::data_json(double end_s, int exit_code) const {
   }
   std::sort(lines_used.begin(), lines_used.end());
   lines_used.erase(std::unique(lines_used.begin(), lines_used.end()), lines_used.end());
-  s += ",\"lines\":{";
-  std::size_t bytes = 0;
-  bool first = true;
+  s += ",\"lines\":" + lines_json(lines_used);
+  return s + "}";
+}
+
+// The NC text of the lines shown (hovers, tables, the program panel's
+// current line), then of their neighbours for the program panel: first
+// every line's next ones (±1), then ±2, so that a long program keeps the
+// nearest context everywhere rather than all of it in its first part. The
+// page's bytes are bounded (the panel shows "line N, text not embedded"
+// for the rest).
+std::string ReportWriter::lines_json(const std::vector<LineRef>& lines_used) const {
+  std::string s = "{";
+  bool full = false;  // the first line that does not fit ends the list
+  std::set<LineRef> put_already;
   const auto put = [&](std::uint16_t file, std::uint32_t line) {
+    if (full || !put_already.insert({file, line}).second) return;
     const std::string& text = line_text(file, line);
-    if (text.empty() || bytes + text.size() > kMaxLineTextBytes) return;
-    bytes += text.size();
-    s += fmt::format("{}\"{}:{}\":{}", first ? "" : ",", file, line, quoted(text));
-    first = false;
+    if (text.empty()) return;
+    const std::string entry = fmt::format("{}\"{}:{}\":{}", s.size() > 1 ? "," : "", file, line, quoted(text));
+    full = s.size() + entry.size() > kMaxLinesJsonBytes;
+    if (!full) s += entry;
   };
   for (const auto& [file, line] : lines_used) put(file, line);
-  // then the lines around them, while the budget lasts (the panel shows
-  // "line N, text not embedded" for the rest)
-  std::vector<LineRef> around;
-  for (const auto& [file, line] : lines_used)
-    for (std::uint32_t k = line > kContextLines ? line - kContextLines : 1; k <= line + kContextLines; ++k)
-      if (!std::binary_search(lines_used.begin(), lines_used.end(), LineRef{file, k})) around.emplace_back(file, k);
-  std::sort(around.begin(), around.end());
-  around.erase(std::unique(around.begin(), around.end()), around.end());
-  for (const auto& [file, line] : around) {
-    if (bytes >= kMaxLineTextBytes) break;
-    put(file, line);
-  }
-  return s + "}}";
+  for (std::uint32_t d = 1; d <= kContextLines && !full; ++d)
+    for (const auto& [file, line] : lines_used) {
+      if (line > d) put(file, line - d);
+      put(file, line + d);
+    }
+  return s + "}";
 }
 
 // Coupling periods from the link events: an "on" opens one, the "off" of
@@ -285,6 +310,7 @@ std::optional<std::string> ReportWriter::write(const std::string& path, double e
                 {"/*NCK_DATA*/", script_safe(data_json(end_s, exit_code))},
                 {"/*UPLOT_JS*/", std::string(embedded_file("uPlot.iife.min.js"))},
                 {"/*BACKPLOT_JS*/", std::string(embedded_file("backplot.js"))},
+                {"/*VIEW3D_JS*/", std::string(embedded_file("view3d.js"))},
                 {"/*PLAYER_JS*/", std::string(embedded_file("player.js"))},
                 {"/*REPORT_JS*/", std::string(embedded_file("report.js"))}}));
   return f.commit();

@@ -86,6 +86,7 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
                                        quoted(fmt::format("{}path velocity", c > 0 ? fmt::format("{}.", c + 1) : "")),
                                        quoted(ch_name + ": path velocity"), c + 1));
     decimals_.push_back(1);
+    add_path_derivative_series(c);
     for (std::size_t j = 0; j < axes.size(); ++j) {
       const bool rot = is_rotary_name(axes[j].name);
       // the C axis of #CAX follows the spindle while it turns: plotted only when #CAX was used
@@ -97,6 +98,8 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
     }
     col += axes.size();
     ch.axis_count = axes.size();
+    ch.limits = backplot_limits(m, m.channels[c], ch.axis);
+    ch.path_deriv = PathDerivatives(cycle_s);
     if (c < k.channel_count()) {  // the path starts where the axes stand
       const kernel::ChannelState st = k.channel_state(c);
       std::array<double, 3> p{};
@@ -134,6 +137,19 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
   }
   row_.assign(series_meta_.size(), 0.0);
   series_.start(series_meta_.size(), cycle_s);
+}
+
+// Channel c's path acceleration and jerk (trace_columns.hpp's names): one
+// panel, a scale per unit.
+void ReportWriter::add_path_derivative_series(std::size_t c) {
+  const std::string prefix = c > 0 ? fmt::format("{}.", c + 1) : std::string();
+  const std::string panel = quoted(fmt::format("channel {}: path acceleration and jerk", c + 1));
+  series_meta_.push_back(fmt::format(R"({{"name":{},"unit":"mm/s²","panel":{},"kind":"path_a","ch":{}}})",
+                                     quoted(prefix + "path.a"), panel, c + 1));
+  decimals_.push_back(1);
+  series_meta_.push_back(fmt::format(R"({{"name":{},"unit":"mm/s³","panel":{},"kind":"path_j","ch":{}}})",
+                                     quoted(prefix + "path.j"), panel, c + 1));
+  decimals_.push_back(0);
 }
 
 std::uint16_t ReportWriter::file_index(const std::string& name) {
@@ -301,6 +317,9 @@ void ReportWriter::sample(std::uint64_t cycle, const kernel::TickOutput& out, co
     ch.path.add(p, ch.line, ch.file, ch.motion == 0, ch.frame, out.t_s);
     note_cause(ch, o, out.t_s);
     row_[k++] = o.path_velocity_mm_s * 60.0;
+    ch.path_deriv.update(o.path_velocity_mm_s);
+    row_[k++] = ch.path_deriv.a_mm_s2();
+    row_[k++] = ch.path_deriv.j_mm_s3();
     for (std::size_t j = 0; j < ch.axis_count; ++j) row_[k++] = o.axis_mcs[j];
   }
   for (std::size_t s = 0; s < spindles_.size(); ++s) {

@@ -1,7 +1,8 @@
 #pragma once
 // --report FILE.html: one offline page (web/ and uPlot compiled in) showing
 // the run as a CNC user reads it — backplot per channel, time plots of path
-// velocity, axes and spindle speeds (set and actual) with waits shaded,
+// velocity, acceleration and jerk, axes and spindle speeds (set and
+// actual) with waits shaded, a 3D view with the soft-limit box,
 // tables of diagnostics, events and cycle time per block and per tool.
 // The data stays bounded for any run length (report_series.hpp).
 #include <array>
@@ -18,10 +19,12 @@
 #include "nck/config/machine.hpp"
 #include "nck/kernel/kernel.hpp"
 #include "nck/kernel/tick_io.hpp"
+#include "backplot_axes.hpp"
 #include "report_contour.hpp"
 #include "report_series.hpp"
 #include "source_lines.hpp"
 #include "run_command.hpp"
+#include "trace_columns.hpp"
 
 namespace nck::sim {
 class DryRun;
@@ -85,6 +88,8 @@ class ReportWriter {
     std::array<int, 3> axis{-1, -1, -1};  // channel axis index of X, Y, Z (-1: none)
     std::array<std::string, 3> axis_name;
     std::size_t axis_count = 0;  // path axes of the channel (time-plot series)
+    SoftLimits limits;           // of X, Y, Z: the 3D view's box
+    PathDerivatives path_deriv;  // path.a and path.j as --trace-columns computes them
     std::uint32_t line = 0;
     std::uint16_t file = 0;
     int motion = 1;   // modal G0..G3 of the block in execution
@@ -108,6 +113,7 @@ class ReportWriter {
     std::vector<std::string> cause_name;
     std::string cause_now;
   };
+  void add_path_derivative_series(std::size_t c);
   void note_cause(Channel& ch, const kernel::ChannelOutput& o, double t_s);
   void add_mark(Mark m);
   std::uint16_t file_index(const std::string& name);
@@ -115,11 +121,13 @@ class ReportWriter {
   void take(const kernel::Event& e, const RunNames& names);
   void take_frame(Channel& ch, std::uint32_t store_index, const RunNames& names);
   void watch_plc(double t_s, const RunNames& names);  // overrides and feedholds from the HLI
+  std::string limits_json(const Channel& ch) const;
   std::string frames_json(const Channel& ch) const;
   std::string contour_json(const Channel& ch) const;
   std::string data_json(double end_s, int exit_code) const;
   std::string channels_json(std::vector<std::pair<std::uint16_t, std::uint32_t>>& lines_used) const;
   std::string summary_json(std::vector<std::pair<std::uint16_t, std::uint32_t>>& lines_used) const;
+  std::string lines_json(const std::vector<std::pair<std::uint16_t, std::uint32_t>>& lines_used) const;
   // Synchronous operation: one row per coupling period (link events).
   struct LinkPeriod {
     int ch = 0, group = 0;

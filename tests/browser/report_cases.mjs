@@ -48,17 +48,25 @@ export function writeHoldProgram(dir) {
 
 export function expectations(longProgram, blocks, longCaps, out) {
   const sin60 = 30 * Math.sin(Math.PI / 3);  // bolt circle: holes at 60 deg steps, radius 30
+  // the 3D view's soft-limit box: the mill's kenngr.swe_neg/swe_pos (x.lis, y.lis, z.lis), mm
+  const mill3d = { limits: { min: [-500, -400, -400], max: [500, 400, 200] } };
   return [
     {
       name: "contour", image: "report-contour.png", machine: "examples/mill", programs: ["examples/mill/contour.nc"], play: true,
       minPlots: 2, minCauses: 4,
       // pocket +-40 x +-25; helix r 15; holes r 30 (Y +-25.98); Z from -3 (holes, helix) to 2 + 20 (G91 retract)
-      backplots: [{ view: "XY", min: [-40, -sin60, -3], max: [40, sin60, 22], tol: 0.02 }],
+      backplots: [{ view: "XY", min: [-40, -sin60, -3], max: [40, sin60, 22], tol: 0.02, view3d: mill3d }],
+    },
+    {
+      // #SLOPE STEP, TRAPEZ, SIN2: the square (X 0..60, Y -10..30) and the G2 bulging to X80; Z0 to Z10
+      name: "slope", machine: "examples/mill", programs: ["examples/mill/slope.nc"], minPlots: 3,
+      backplots: [{ view: "XY", min: [0, -10, 0], max: [80, 30, 10], tol: 0.01, view3d: true }],
+      accel: { panel: "channel 1: path acceleration and jerk" },
     },
     {
       name: "spindle", image: "report-spindle.png", machine: "examples/mill", programs: ["examples/mill/spindle.nc"],
       plc: "examples/mill/spindle.plc", minPlots: 4,
-      backplots: [{ view: "XY", min: [0, 0, 0], max: [50, 30, 20], tol: 0.01 }],
+      backplots: [{ view: "XY", min: [0, 0, 0], max: [50, 30, 20], tol: 0.01, view3d: true }],
       wait: { panel: "channel 1: path velocity", reason: "speed_reached", text: /^N\d+ waits \d+\.\d{3} s for S1 speed reached/ },
       // spindle.plc: the HLI override of S1 is 50 % from the start
       marks: [{ panel: "spindle S1: speed", kind: "override", t: 0, text: /^0\.000 s: S1 spindle override 50 %$/ }],
@@ -68,7 +76,7 @@ export function expectations(longProgram, blocks, longCaps, out) {
       minPlots: 2,
       // the tool centre 5 mm (D1) outside the 60 x 40 rectangle: X -5..65, Y -5..45; the start -20/-20;
       // Z from the machine zero to Z10 + the tool length 100 (machine coordinates of the spindle nose)
-      backplots: [{ view: "XY", min: [-20, -20, 0], max: [65, 45, 110], tol: 0.02 }],
+      backplots: [{ view: "XY", min: [-20, -20, 0], max: [65, 45, 110], tol: 0.02, view3d: true }],
       // three compensated stretches, each programmed line 5 mm from the tool centre
       contour: { runs: 3, radius: 5, tol: 0.05 },
     },
@@ -84,7 +92,7 @@ export function expectations(longProgram, blocks, longCaps, out) {
       name: "frames", machine: "examples/mill", programs: [path.join(out, "frames.nc")], minPlots: 1,
       // machine coordinates: G54 (X100 Y50 Z-150) and the rectangle 40 x 20 turned 90 deg about the
       // program zero: X 80..100, Y 50..90; from the machine zero to Z20 (-130)
-      backplots: [{ view: "XY", min: [0, 0, -145], max: [100, 90, 0], tol: 0.01 }],
+      backplots: [{ view: "XY", min: [0, 0, -145], max: [100, 90, 0], tol: 0.01, view3d: true }],
       // program coordinates: the rectangle as programmed, X 0..40 Y 0..20 Z 5..20, and the start (the
       // machine zero) in the first block's system: -100 / -50 / 150
       pcs: [{ min: [-100, -50, 5], max: [40, 20, 150], tol: 0.01 }],
@@ -92,7 +100,7 @@ export function expectations(longProgram, blocks, longCaps, out) {
     {
       name: "feedhold", machine: "examples/mill", programs: [path.join(out, "hold.nc")], plc: path.join(out, "hold.plc"),
       minPlots: 1,
-      backplots: [{ view: "XY", min: [0, 0, 0], max: [100, 0, 0], tol: 0.01 }],
+      backplots: [{ view: "XY", min: [0, 0, 0], max: [100, 0, 0], tol: 0.01, view3d: true }],
       wait: { panel: "channel 1: path velocity", reason: "feedhold", span: [0.5, 1.3],
               text: /^N20 held 0\.800 s by the PLC's feedhold \(HLI\)$/ },
       marks: [{ panel: "channel 1: path velocity", kind: "override", t: 1.5, text: /^1\.500 s: feed override 50 %$/ }],
@@ -101,8 +109,18 @@ export function expectations(longProgram, blocks, longCaps, out) {
       // overlapping waits count once in the summary (0.540 s, not 0.856 s)
       name: "two-waits", machine: "examples/mill", programs: [path.join(out, "two_waits.nc")],
       minPlots: 1,
-      backplots: [{ view: "XY", min: [null, null, null], max: [null, null, null], tol: 0.01 }],
+      backplots: [{ view: "XY", min: [null, null, null], max: [null, null, null], tol: 0.01, view3d: true }],
       summary: /waitsthe PLC's acknowledgement 0\.010 s, speed reached 0\.540 s/,
+    },
+    {
+      // issue 31 item 5: the channel's axes are X, Y1, Z1 (no Y or Z): the backplot takes its first three
+      // linear axes (N40 Y1 0 -> 50, N90 Z1 0 -> -10). Its waits, each pair of spindles at once (events):
+      // M3 S1/S2 0.163..0.506 s, M19 1.525..2.273 s, M4 S1/S3 2.879..3.577 s, M5 3.577..4.586 s; counted
+      // once per channel and reason: speed reached 0.343 + 0.698 s, in position 0.748 s, standstill 1.009 s
+      name: "twin-spindle", machine: "examples/twin-spindle", programs: ["examples/twin-spindle/twin.nc"], minPlots: 3,
+      backplots: [{ view: "XY", min: [0, 0, -10], max: [0, 50, 0], tol: 0.01, minPoints: 3,
+                    view3d: { limits: { min: [-500, -500, -500], max: [500, 500, 500] } } }],
+      summary: /waitsspeed reached 1\.041 s, in position 0\.748 s, standstill 1\.009 s$/,
     },
     {
       name: "lathe", image: "report-lathe.png", machine: "examples/lathe", programs: ["examples/lathe/turn.nc"],
@@ -114,7 +132,7 @@ export function expectations(longProgram, blocks, longCaps, out) {
       name: "two-channel", image: "report-two-channel.png", machine: "examples/two-channel",
       programs: ["examples/two-channel/channel1.nc", "examples/two-channel/channel2.nc"], minPlots: 4,
       backplots: [
-        { view: "XY", min: [0, 0, 0], max: [20, 20, 5], tol: 0.01 },
+        { view: "XY", min: [0, 0, 0], max: [20, 20, 5], tol: 0.01, view3d: true },
         { view: "ZX", min: [-30, null, -10], max: [0, null, 5], tol: 0.01 },
       ],
     },
@@ -123,7 +141,7 @@ export function expectations(longProgram, blocks, longCaps, out) {
       // the circle of radius 50 (complete after 629 blocks), Z from -1 to 5, under G54 of the mill
       // (zero.lis: X +100, Y +50, Z -150): X 50..150, Y 0..100, Z -151..-145 in machine
       // coordinates, and the start at the machine zero
-      backplots: [{ view: "XY", min: [0, 0, -151], max: [150, 100, 0], tol: 0.02 }],
+      backplots: [{ view: "XY", min: [0, 0, -151], max: [150, 100, 0], tol: 0.02, view3d: true }],
     },
   ];
 }

@@ -10,6 +10,7 @@ import { execFileSync } from "node:child_process";
 import fs from "node:fs";
 import path from "node:path";
 import { caps, expectations, writeCommonProgram, writeFrameProgram, writeHoldProgram } from "./report_cases.mjs";
+import { check3d, checkAccel } from "./report_view3d.mjs";
 
 const args = Object.fromEntries(process.argv.slice(2).reduce((acc, a, i, all) => {
   if (a.startsWith("--")) acc.push([a.slice(2), all[i + 1] && !all[i + 1].startsWith("--") ? all[i + 1] : "1"]);
@@ -95,7 +96,12 @@ async function check(browser, c) {
   const context = await browser.newContext({ offline: true, viewport: { width: 1320, height: 900 }, deviceScaleFactor: 1 });
   const page = await context.newPage();
   const problems = [], requests = [];
-  page.on("console", (m) => { if (m.type() === "error" || m.type() === "warning") problems.push(m.type() + ": " + m.text()); });
+  // Chromium's software GL says "GPU stall due to ReadPixels" when it composites a WebGL canvas
+  // (the 3D view) headless: a note of the driver, not of the page.
+  const driverNote = (m) => /^\[\.WebGL-[^\]]*\]GL Driver Message .*GPU stall due to ReadPixels/.test(m.text());
+  page.on("console", (m) => {
+    if ((m.type() === "error" || m.type() === "warning") && !driverNote(m)) problems.push(m.type() + ": " + m.text());
+  });
   page.on("pageerror", (e) => problems.push("page error: " + e.message));
   await page.route("**/*", (route) => {
     const url = route.request().url();
@@ -116,6 +122,7 @@ async function check(browser, c) {
         series: p.u.data.slice(1).map((s) => s.filter((v) => v != null && Number.isFinite(v)).length),
       })),
       backplots: r.backplots.map((b) => ({ n: b.n, extents: b.extents(), has: b.ch.has, view: b.select.value })),
+      views3d: r.views3d.length,
       waits: r.data.waits.length,
     };
   });
@@ -171,6 +178,7 @@ async function check(browser, c) {
     const got = info.backplots[i];
     if (!got) return;
     if (want.view && got.view !== want.view) fail(name, `backplot ${i + 1} shows ${got.view}, expected ${want.view}`);
+    if (want.minPoints && got.n < want.minPoints) fail(name, `backplot ${i + 1} has ${got.n} points, expected >= ${want.minPoints}`);
     for (let a = 0; a < 3; a++) {
       if (want.min[a] == null) continue;
       const dmin = Math.abs(got.extents.min[a] - want.min[a]), dmax = Math.abs(got.extents.max[a] - want.max[a]);
@@ -288,6 +296,11 @@ async function check(browser, c) {
     else ok(name, `backplot ${i + 1} in program coordinates: ${JSON.stringify(got)}`);
   }
   if (c.play) await checkPlayer(page, name);
+  // a 3D view for each channel with three linear axes, none otherwise
+  const want3d = c.backplots.filter((b) => b.view3d).length;
+  if (info.views3d !== want3d) fail(name, `${info.views3d} 3D views, expected ${want3d}`);
+  if (typeof c.backplots[0].view3d === "object") await check3d(page, name, c.backplots[0].view3d, { fail, ok });
+  if (c.accel) await checkAccel(page, name, c.accel, { fail, ok });
   if (c.caps) {
     if (sizeBytes > c.caps.bytes) fail(name, `report is ${sizeBytes} bytes, cap ${c.caps.bytes}`);
     if (loadMs > c.caps.loadMs) fail(name, `report loads in ${loadMs} ms, cap ${c.caps.loadMs}`);

@@ -34,6 +34,8 @@ json run_report(const std::string& name, const std::string& args, int want_exit 
   EXPECT_NE(html.find("</html>"), std::string::npos);
   // offline: uPlot is inlined, nothing is loaded
   EXPECT_NE(html.find("uPlot"), std::string::npos);
+  EXPECT_NE(html.find("window.NckView3d="), std::string::npos);  // the 3D view's bundle (three.js)
+  EXPECT_NE(html.find("Three.js Authors"), std::string::npos);    // with three's licence notice
   EXPECT_EQ(html.find(" src="), std::string::npos);
   EXPECT_EQ(html.find("<link"), std::string::npos);
   return report_data(html);
@@ -53,6 +55,14 @@ double series_max(const json& d, const std::string& name) {
   if (!series(d, name, &i)) return NAN;
   double m = -1e300;
   for (const json& v : d["ts"]["v"][i]) m = std::max(m, v.get<double>());
+  return m;
+}
+
+double series_min(const json& d, const std::string& name) {
+  std::size_t i = 0;
+  if (!series(d, name, &i)) return NAN;
+  double m = 1e300;
+  for (const json& v : d["ts"]["v"][i]) m = std::min(m, v.get<double>());
   return m;
 }
 
@@ -187,6 +197,46 @@ TEST(Report, LatheShowsTheZxPlaneAndTwoChannelsOneBackplotEach) {
   EXPECT_EQ(t["channels"][0]["max"], json::array({20, 20, 5}));
   EXPECT_EQ(t["channels"][1]["min"], json::array({-30, 0, -10}));
   EXPECT_NE(series(t, "2.path velocity"), nullptr);
+}
+
+// path.a and path.j are --trace-columns' PathDerivatives, sampled as min/max
+// envelopes: their extremes are the trace's extremes over every cycle.
+TEST(Report, PathAccelerationAndJerkHaveTheTracesExtremes) {
+  const std::string ex = root() + "/examples/mill";
+  const auto dir = temp_dir("report_slope");
+  const CliResult r = run_nck("run " + ex + " " + ex + "/slope.nc --report " + (dir / "r.html").string() + " --trace " +
+                              (dir / "t.csv").string() + " --trace-columns path.a,path.j");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const json d = report_data(read_file(dir / "r.html"));
+  ASSERT_NE(series(d, "path.a"), nullptr);
+  EXPECT_EQ((*series(d, "path.a"))["unit"], "mm/s²");
+  EXPECT_EQ((*series(d, "path.j"))["unit"], "mm/s³");
+  EXPECT_EQ((*series(d, "path.a"))["panel"], (*series(d, "path.j"))["panel"]);
+  const auto lines = split(read_file(dir / "t.csv"), '\n');
+  const auto head = split(lines[0], ',');
+  const auto col_a = std::find(head.begin(), head.end(), "path.a") - head.begin();
+  double a_min = 0, a_max = 0, j_min = 0, j_max = 0;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const auto c = split(lines[i], ',');
+    const double a = std::stod(c[col_a]), j = std::stod(c[col_a + 1]);
+    a_min = std::min(a_min, a), a_max = std::max(a_max, a), j_min = std::min(j_min, j), j_max = std::max(j_max, j);
+  }
+  EXPECT_GT(a_max, 1000);  // the mill accelerates at 2500 mm/s² (a_beschl)
+  // the report keeps floats to 0.1 mm/s² and 1 mm/s³
+  EXPECT_NEAR(series_max(d, "path.a"), a_max, 0.1 + 1e-6 * a_max);
+  EXPECT_NEAR(series_min(d, "path.a"), a_min, 0.1 - 1e-6 * a_min);
+  EXPECT_NEAR(series_max(d, "path.j"), j_max, 1 + 1e-6 * j_max);
+  EXPECT_NEAR(series_min(d, "path.j"), j_min, 1 - 1e-6 * j_min);
+}
+
+// The 3D view's box: each channel's software limits of its backplot axes
+// (x.lis, y.lis, z.lis: kenngr.swe_neg/swe_pos), null for an axis it lacks.
+TEST(Report, ChannelsCarryTheSoftwareLimitsOfTheirBackplotAxes) {
+  const std::string two = root() + "/examples/two-channel";
+  const json t = run_report("report_limits", two + " " + two + "/channel1.nc " + two + "/channel2.nc");
+  ASSERT_EQ(t["channels"].size(), 2u);
+  EXPECT_EQ(t["channels"][0]["limits"], json::parse(R"({"min":[-500,-400,-400],"max":[500,400,200]})"));
+  EXPECT_EQ(t["channels"][1]["limits"], json::parse(R"({"min":[-100,null,-500],"max":[300,null,50]})"));
 }
 
 TEST(Report, AbortedRunListsTheErrorWithItsLineText) {
