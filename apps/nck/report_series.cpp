@@ -30,17 +30,21 @@ void EnvelopeSeries::add(std::uint64_t cycle, std::span<const double> values) {
   const std::uint64_t rel = cycle - first_cycle_;
   while (rel / stride_ >= kMaxBuckets) merge_pairs();
   const std::size_t k = rel / stride_;
-  const bool fresh = k >= count_;
-  if (fresh) count_ = k + 1;
-  for (std::size_t s = 0; s < series_.size(); ++s) {
-    auto& b = series_[s];
-    if (b.size() < count_) b.resize(count_, Bucket{});
-    const auto v = static_cast<float>(s < values.size() ? values[s] : 0.0);
-    Bucket& x = b[k];
-    if (fresh) {
-      x = {v, v, true};
-      continue;
+  const auto value = [&](std::size_t s) { return static_cast<float>(s < values.size() ? values[s] : 0.0); };
+  if (k >= count_) {  // a new bucket: every series has count_ buckets after this
+    count_ = k + 1;
+    for (std::size_t s = 0; s < series_.size(); ++s) {
+      series_[s].resize(count_, Bucket{});
+      const float v = value(s);
+      series_[s][k] = {v, v, true};
     }
+    return;
+  }
+  // Most cycles: the envelope of the bucket under way widens (one stride in
+  // 4,096 buckets is hundreds of cycles).
+  for (std::size_t s = 0; s < series_.size(); ++s) {
+    const float v = value(s);
+    Bucket& x = series_[s][k];
     if (v < x.min) {
       x.min = v;
       x.min_first = false;  // the minimum now comes after the maximum

@@ -358,10 +358,11 @@ void ReportWriter::take_frame(Channel& ch, std::uint32_t store_index, const RunN
 void ReportWriter::watch_plc(double t_s, const RunNames& names) {
   if (!names.run) return;
   const plc::HliImage& hli = names.run->machine().hli();
-  auto hold = [&](bool on, std::optional<std::size_t>& open, Wait w) {
+  // make_wait: called only when a hold starts (a Wait holds strings: not built every cycle)
+  auto hold = [&](bool on, std::optional<std::size_t>& open, const auto& make_wait) {
     if (on && !open && waits_.size() < kMaxListed) {
       open = waits_.size();
-      waits_.push_back(std::move(w));
+      waits_.push_back(make_wait());
     } else if (!on && open) {
       waits_[*open].t1 = t_s;
       open.reset();
@@ -373,14 +374,15 @@ void ReportWriter::watch_plc(double t_s, const RunNames& names) {
     if (ovr != ch.feed_override_pct)
       add_mark({t_s, 0, c + 1, "override", fmt::format("feed override {:g} %", ovr)});
     ch.feed_override_pct = ovr;
-    hold(hli.channel[c].feedhold, ch.hold, Wait{c + 1, t_s, -1, "feedhold", "", "", "", ch.line, ch.file});
+    hold(hli.channel[c].feedhold, ch.hold, [&] { return Wait{c + 1, t_s, -1, "feedhold", "", "", "", ch.line, ch.file}; });
   }
   for (std::size_t s = 0; s < spindles_.size() && s < hli.spindle_control.size(); ++s) {
     const double ovr = hli.spindle_control[s].effective_override_percent();
     if (ovr != spindle_override_pct_[s])
       add_mark({t_s, s, 0, "override", fmt::format("spindle override {:g} %", ovr)});
     spindle_override_pct_[s] = ovr;
-    hold(hli.spindle_control[s].feedhold, spindle_hold_[s], Wait{0, t_s, -1, "feedhold", "", spindles_[s], "", 0, 0});
+    hold(hli.spindle_control[s].feedhold, spindle_hold_[s],
+         [&] { return Wait{0, t_s, -1, "feedhold", "", spindles_[s], "", 0, 0}; });
   }
 }
 
