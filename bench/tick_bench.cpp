@@ -26,10 +26,25 @@ nck::config::Machine mill() {
   return *nck::config::load_machine(std::string(NCK_SOURCE_DIR) + "/examples/mill").machine;
 }
 
-// state.range(0): 0 = contour.nc (path only), 1 = spindle.nc (path + S1/S2 running)
+// The mill with jerk-limited slopes (issue 30): the path's profile at
+// program start (P-CHAN-00071 = 1, TRAPEZ) and the spindles' ramps
+// (getriebe[i].slope_type = 1), set in the loaded machine so that the
+// programs stay the same bytes.
+nck::config::Machine trapez_mill() {
+  nck::config::Machine m = mill();
+  for (auto& ch : m.channels) ch.slope_profile = nck::SlopeProfile::trapez;
+  for (auto& ax : m.axes)
+    if (ax.is_spindle())
+      for (auto& g : ax.gears) g.slope_type = nck::SlopeProfile::trapez;
+  return m;
+}
+
+// state.range(0): 0 = contour.nc (path only), 1 = spindle.nc (path + S1/S2
+// running), both STEP as the mill's lists say; 2 and 3 the same programs
+// under TRAPEZ (path and spindles).
 void BM_Tick(benchmark::State& state) {
-  const char* program = state.range(0) == 0 ? "contour.nc" : "spindle.nc";
-  const nck::config::Machine m = mill();
+  const char* program = state.range(0) % 2 == 0 ? "contour.nc" : "spindle.nc";
+  const nck::config::Machine m = state.range(0) < 2 ? mill() : trapez_mill();
   auto run = make_run(m, program);
   auto out = std::make_unique<nck::kernel::TickOutput>();
   for (auto _ : state) {
@@ -42,7 +57,7 @@ void BM_Tick(benchmark::State& state) {
     benchmark::DoNotOptimize(*out);
   }
 }
-BENCHMARK(BM_Tick)->Arg(0)->Arg(1);
+BENCHMARK(BM_Tick)->Arg(0)->Arg(1)->Arg(2)->Arg(3);
 
 void BM_WholeRun(benchmark::State& state) {
   const nck::config::Machine m = mill();

@@ -52,7 +52,6 @@ void read_gear(const ParamList& l, std::size_t g, GearStage& s, Diagnostics& d) 
   s.encoder_ratio_num = encoder_part(l, k("wegaufz"), ErrorId::ConfigWegaufzZero, d);
   s.encoder_ratio_denom = encoder_part(l, k("wegaufn"), ErrorId::ConfigWegaufnZero, d);
   s.reverse_sense = l.flag(k("reverse"), s.reverse_sense);
-  s.slope_type = l.u32(k("slope_type"), s.slope_type);
   s.tr_acc_down_s = l.num(k("slope_profil.tr_beschl_ab"), s.tr_acc_down_s);
   s.tr_acc_up_s = l.num(k("slope_profil.tr_beschl_zu"), s.tr_acc_up_s);
   s.tr_dec_down_s = l.num(k("slope_profil.tr_brems_ab"), s.tr_dec_down_s);
@@ -67,6 +66,30 @@ void read_gear(const ParamList& l, std::size_t g, GearStage& s, Diagnostics& d) 
   s.modulo_error_incr = static_cast<std::int32_t>(l.num(k("modulo_fehler"), 0));
   s.modulo_revolutions = static_cast<std::int32_t>(l.num(k("modulo_umdreh"), 0));
   read_curve(l, g, s.curve);
+}
+
+// P-AXIS-00270, a spindle's acceleration profile: 0..2 name STEP, TRAPEZ
+// and SIN2; any other number is the TF5200's warning 60226, corrected to
+// its default 0. A characteristic curve (beschl_kennlinie.typ 1..3) needs
+// slope type 0 (TF5200, P-AXIS-00202's section): the curve gives the
+// acceleration, so a jerk-limited type beside it is 930900 and STEP too.
+void read_slope_type(const ParamList& l, std::size_t g, const AxisConfig& a, GearStage& s, Diagnostics& d) {
+  const std::string key = gkey(g, "slope_type");
+  const ParamValue* at = l.find(key);
+  if (!at) return;
+  const std::uint32_t n = l.u32(key, 0);
+  if (n > 2) {
+    d.add(ErrorId::ConfigSpindleSlopeType, at->loc,
+          fmt::format("{} = {} (axis {}) is not 0 (STEP), 1 (TRAPEZ) or 2 (SIN2); nck uses 0", key, n, a.log_axis_nr));
+    return;
+  }
+  s.slope_type = static_cast<SlopeProfile>(n);
+  if (jerk_limited(s.slope_type) && a.is_spindle() && s.curve.type >= 1 && s.curve.type <= 3) {
+    d.add(ErrorId::ConfigSpindleSlopeWithCurve, at->loc,
+          fmt::format("{} = {} beside {} = {}: the curve gives the acceleration; nck uses slope type 0", key, n,
+                      gkey(g, "beschl_kennlinie.typ"), s.curve.type));
+    s.slope_type = SlopeProfile::step;
+  }
 }
 
 // The ramp times of the jerk-limited slopes may not undercut the drive's
@@ -196,7 +219,10 @@ AxisConfig build_axis(const ParamList& l, Diagnostics& d) {
   AxisConfig a;
   read_head(l, a);
   read_drive(l, a);
-  for (std::size_t g = 0; g < kMaxGearStages; ++g) read_gear(l, g, a.gears[g], d);
+  for (std::size_t g = 0; g < kMaxGearStages; ++g) {
+    read_gear(l, g, a.gears[g], d);
+    read_slope_type(l, g, a, a.gears[g], d);
+  }
   if (a.homing_without_cam && !a.homing_without_reversal)
     d.add(ErrorId::ConfigRefWithoutCam, l.loc("kenngr.ref_ohne_nocken"),
           "kenngr.ref_ohne_nocken 1 requires kenngr.ref_ohne_rev 1");

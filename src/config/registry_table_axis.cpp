@@ -94,7 +94,7 @@ constexpr ParamInfo kTable[] = {
     {"getriebe[].getr_schalt_pos", "P-AXIS-00078", A, T::integer, kS32Min, kS32, 0, 1e-4, kPos, kPosI, "Position approached before shifting to another stage.", {6}},
     {"getriebe[].pos_refpkt", "P-AXIS-00152", A, T::integer, kS32Min, kS32, 0, 1e-4, kPos, kPosI, "Position set when homing completes.", {6}},
     {"getriebe[].reverse", "P-AXIS-00159", A, T::boolean, 0, 1, 0, 1, "—", "—", "Flip the sign of command and actual values.", {6}},
-    {"getriebe[].slope_type", "P-AXIS-00270", A, T::integer, 0, 3, 0, 1, "—", "—", "Spindle/homing ramp: 0 step, 1 trapezoid, 2 sine-square.", {6}},
+    {"getriebe[].slope_type", "P-AXIS-00270", A, T::integer, 0, kU16, 0, 1, "—", "—", "Spindle ramps: 0 STEP, 1 TRAPEZ (jerk a/tr), 2 SIN2 with the ramp times P-AXIS-00195…00198; another number is warning 60226 and 0; with a beschl_kennlinie curve 0 (930900).", {6}},
     {"getriebe[].beschl_kennlinie.typ", "P-AXIS-00202", A, T::integer, 0, 3, 0, 1, "—", "—", "Acceleration curve: 0 none, 1 hyperbola, 2 polynomial, 3 asynchronous drive.", {6}},
     {"getriebe[].beschl_kennlinie.n_grenz", "P-AXIS-00130", A, T::real, 0, kU32, 0, 1e-3, "0.001°/s", "deg/s", "Speed below which a_konst applies.", {6}},
     {"getriebe[].beschl_kennlinie.a_konst", "P-AXIS-00007", A, T::real, 0, kU32, 0, 1, "°/s²", "deg/s²", "Constant acceleration below n_grenz.", {6}},

@@ -21,6 +21,9 @@ GearConfig GearConfig::from(const config::GearStage& g) noexcept {
   c.gear_change_pos_deg = g.gear_change_pos_deg;
   c.reference_pos_deg = g.reference_pos;
   c.accel_curve = g.curve;
+  // The config layer made it STEP where a curve gives the acceleration.
+  c.slope = g.slope_type;
+  c.ramp_times = motion::RampTimes{g.tr_acc_up_s, g.tr_acc_down_s, g.tr_dec_up_s, g.tr_dec_down_s};
   c.reverse_sense = g.reverse_sense;
   return c;
 }

@@ -18,6 +18,7 @@ bool SpindleAxis::tick(double dt, bool refresh_status) noexcept {
   }
   const double v_old = set_.vel_deg_s;
   set_.step_deg = 0;
+  jerk_.used = false;
   switch (mode_) {
     case SpindleMode::stop:
     case SpindleMode::error: ramp_to(0, dt); break;
@@ -30,6 +31,10 @@ bool SpindleAxis::tick(double dt, bool refresh_status) noexcept {
       set_.step_deg = axis_.step_deg;
       axis_.step_deg = 0;
       break;
+  }
+  if (!jerk_.used) {  // something else moved the set point: a later ramp plans anew from a = 0
+    jerk_.kind = JerkRamp::Kind::none;
+    jerk_.a_deg_s2 = 0;
   }
   set_.accel_deg_s2 = (set_.vel_deg_s - v_old) / dt;
   if (refresh_status) update_status();  // with the last feedback, until the drive's answer comes
@@ -50,6 +55,7 @@ void SpindleAxis::advance(double step_deg) noexcept {
 }
 
 void SpindleAxis::ramp_to(double target, double dt) noexcept {
+  if (jerk_limited_slope()) return jerk_ramp_to(target, dt);
   const double v = set_.vel_deg_s;
   // Reversing goes through standstill: brake to 0 first.
   const double goal = (v != 0 && sign_of(target) == -sign_of(v)) ? 0.0 : target;
@@ -97,10 +103,12 @@ void SpindleAxis::tick_position(double dt) noexcept {
       ramp_to(0, dt);
       return;
     }
+    if (jerk_limited_slope() && jerk_finish_speed_ramp(dt)) return;
     plan_positioning(dt);
     if (pos_.done) return;
   }
-  step_positioning(dt);
+  if (jerk_limited_slope()) jerk_step_positioning(dt);
+  else step_positioning(dt);
 }
 
 void SpindleAxis::plan_positioning(double dt) noexcept {
@@ -117,12 +125,18 @@ void SpindleAxis::plan_positioning(double dt) noexcept {
     return;
   }
   pos_.dir = d;
-  pos_.speed_cap_deg_s = std::max(u, positioning_speed_deg_s());
-  pos_.brake_accel_deg_s2 = min_accel_down(pos_.speed_cap_deg_s);
+  double stop = 0;
+  if (jerk_limited_slope()) {
+    jerk_.kind = JerkRamp::Kind::none;  // the next step plans this positioning
+    stop = jerk_stop_distance_deg(u, d);
+  } else {
+    pos_.speed_cap_deg_s = std::max(u, positioning_speed_deg_s());
+    pos_.brake_accel_deg_s2 = min_accel_down(pos_.speed_cap_deg_s);
+    const double a = pos_.brake_accel_deg_s2;
+    stop = u * (u + a * dt) / (2 * a);
+  }
   // Too close to stop in time: go round once more (or several times).
   double s = std::fabs(travel);
-  const double a = pos_.brake_accel_deg_s2;
-  const double stop = u * (u + a * dt) / (2 * a);
   const double range = gear().range_deg();
   if (s < stop) s += std::ceil((stop - s) / range) * range;
   pos_.remaining_deg = s;

@@ -79,7 +79,10 @@ struct GearStage {
   std::uint32_t encoder_ratio_num = 1, encoder_ratio_denom = 1;  // wegaufz / wegaufn
   bool reverse_sense = false;         // P-AXIS-00159 (reverse)
   double a_emergency = 0;             // P-AXIS-00003, 0 = use a_max
-  std::uint32_t slope_type = 0;       // P-AXIS-00270: 0 step, 1 trapezoid, 2 sine-square
+  // P-AXIS-00270 (slope_type) of a spindle: 0 STEP, 1 TRAPEZ, 2 SIN2 (an
+  // invalid number is warning 60226 at load and STEP). Path axes (the C
+  // axis under #CAX too) follow the channel's #SLOPE instead.
+  SlopeProfile slope_type = SlopeProfile::step;
   // Ramp times of the jerk-limited slopes (TRAPEZ, SIN2), s; list µs.
   double tr_acc_down_s = 0.05;  // P-AXIS-00195 slope_profil.tr_beschl_ab: acceleration back to 0
   double tr_acc_up_s = 0.05;    // P-AXIS-00196 slope_profil.tr_beschl_zu: acceleration built up

@@ -20,6 +20,7 @@ struct JerkLimits {
   double tr_dec_up_s = 0;    // build-up of a_dec (tr_brems_zu)
   double tr_dec_down_s = 0;  // reduction of a_dec (tr_brems_ab)
   bool sin2 = false;         // sin^2 ramps instead of straight ones
+  bool operator==(const JerkLimits&) const = default;
 };
 
 // Both accelerations finite and > 0, every ramp time finite and >= 0.
@@ -54,6 +55,9 @@ class JerkPlan {
   double duration() const noexcept { return t_[n_]; }
   std::size_t phases() const noexcept { return n_; }
   const JerkPhase& phase(std::size_t i) const noexcept { return ph_[i]; }
+  // Start time of phase i and the state there (i == phases(): the end). rt
+  double phase_start_s(std::size_t i) const noexcept { return t_[i]; }
+  const Kinematics& phase_start_state(std::size_t i) const noexcept { return ends_[i]; }
   // The first time from which the path only slows down or holds (the
   // plan's final change downwards begins); duration() when none. rt
   double braking_from_s() const noexcept;

@@ -104,6 +104,16 @@ class SpindleAxis {
   double limit_rotation_speed(double speed_deg_s) const noexcept;  // + tool vb_min (M3/M4 only)
   double rotation_speed_deg_s() const noexcept;  // programmed x override, limited, signed (memo)
   double compute_rotation_speed_deg_s() const noexcept;
+  // jerk.cpp: slope_type TRAPEZ / SIN2
+  bool jerk_limited_slope() const noexcept { return jerk_limited(gear().slope); }
+  motion::JerkLimits jerk_limits() const noexcept;
+  void jerk_ramp_to(double target_deg_s, double dt) noexcept;
+  void jerk_step_positioning(double dt) noexcept;
+  void plan_positioning_ramp(double remaining_deg, double v_cap_deg_s, const motion::JerkLimits& lim) noexcept;
+  double jerk_stop_distance_deg(double speed_deg_s, int dir) const noexcept;
+  void follow_jerk_plan(double dt, double end_deg_s) noexcept;
+  bool jerk_plan_settling(double goal_deg_s) const noexcept;
+  bool jerk_finish_speed_ramp(double dt) noexcept;
   // tick.cpp
   void ramp_to(double target_deg_s, double dt) noexcept;
   void advance(double step_deg) noexcept;
@@ -146,6 +156,7 @@ class SpindleAxis {
   Reference ref_{};
   ToolLimits tool_{};
   Feedforward ff_{};
+  JerkRamp jerk_{};
   AxisModeInput axis_{};
   DriveFeedback feedback_{};  // the drive's last measured values (drive sense)
 

@@ -8,6 +8,8 @@
 #include <cstdint>
 
 #include "nck/config/machine.hpp"
+#include "nck/core/slope.hpp"
+#include "nck/motion/limits.hpp"
 #include "nck/spindle/drive_scaling.hpp"
 #include "nck/spindle/positioning.hpp"
 
@@ -29,6 +31,10 @@ struct GearConfig {
   double reference_pos_deg = 0;        // pos_refpkt: the zero mark
   bool reverse_sense = false;          // reverse: drive output and actual values with flipped sign
   config::AccelCurve accel_curve{};    // beschl_kennlinie: a(n) instead of the slope
+  // slope_type: STEP (acceleration steps) or the jerk-limited TRAPEZ / SIN2
+  // ramps with the feed ramp times of a_beschl / a_brems (P-AXIS-00195...198).
+  SlopeProfile slope = SlopeProfile::step;
+  motion::RampTimes ramp_times{};
 
   static GearConfig from(const config::GearStage& g) noexcept;  // setup
 

@@ -4,6 +4,7 @@
 // lives apart in SpindleConfig.
 #include <cstdint>
 
+#include "nck/motion/jerk_profile.hpp"
 #include "nck/spindle/positioning.hpp"
 
 namespace nck::spindle {
@@ -84,6 +85,26 @@ struct Feedforward {
 struct AxisModeInput {
   double step_deg = 0;
   double vel_deg_s = 0;
+};
+
+// The jerk-limited ramp in force (slope_type TRAPEZ / SIN2): the plan and
+// where the set point is on it. The plan knows magnitudes only: it runs in
+// the turning sense `dir` (speeds and accelerations times dir).
+struct JerkRamp {
+  enum class Kind : std::uint8_t { none, speed, positioning };
+  motion::JerkPlan plan{};
+  Kind kind = Kind::none;       // what the plan was made for; none: plan anew
+  int dir = 1;                  // +1 / -1
+  double goal_deg_s = 0;        // speed: the speed aimed at; positioning: the speed cap
+  motion::JerkLimits limits{};  // the limits it was made with (a change replans)
+  double length_deg = 0;        // positioning: the distance the plan covers
+  double t_s = 0;               // time on the plan at the last sample
+  double s_deg = 0;             // distance along the plan at the last sample
+  // Signed acceleration at the last sample: the exact value a replan starts
+  // from (the set point's finite difference is a cycle's mean). 0 whenever
+  // anything else moved the set point.
+  double a_deg_s2 = 0;
+  bool used = false;            // the last tick sampled or checked the plan
 };
 
 }  // namespace nck::spindle

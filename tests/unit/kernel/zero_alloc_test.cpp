@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unistd.h>
 
 #include "nck/config/load.hpp"
 #include "nck/sim/scenario.hpp"
@@ -64,11 +65,12 @@ struct Example {
 // simulated machine's read and write, the kernel's tick and both queues.
 std::uint64_t run_counting(const Example& ex, bool prep_thread = false) {
   const std::string root = NCK_SOURCE_DIR;
-  config::LoadResult loaded = config::load_machine(root + "/" + ex.machine);
+  // Relative to the repository; an absolute path (a machine written by the test) as it is.
+  config::LoadResult loaded = config::load_machine(std::filesystem::path(root) / ex.machine);
   EXPECT_TRUE(loaded.ok());
   if (!loaded.ok()) return 0;
   std::vector<std::filesystem::path> programs;
-  for (const char* p : ex.programs) programs.emplace_back(root + "/" + p);
+  for (const char* p : ex.programs) programs.emplace_back(std::filesystem::path(root) / p);
   sim::DryRunOptions options;
   options.prep_thread = prep_thread;
   auto run = sim::DryRun::create(*loaded.machine, programs, options);
@@ -158,6 +160,29 @@ TEST(ZeroAllocation, WholeExamplesRunThroughTickWithoutHeap) {
     EXPECT_GT(cycles, 1000u) << ex.machine;
     EXPECT_EQ(g_allocations.load(), 0u) << ex.machine;
   }
+}
+
+// The spindles' jerk-limited ramps (slope_type 1 and 2): examples/mill
+// with S1 on TRAPEZ and S2 on SIN2 runs spindle.nc (run-ups, override,
+// reversal, M19 with homing, G74) through tick without heap.
+TEST(ZeroAllocation, JerkLimitedSpindlesRunThroughTickWithoutHeap) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("nck_zero_alloc_slope_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::copy(std::string(NCK_SOURCE_DIR) + "/examples/mill", dir, fs::copy_options::recursive);
+  for (auto [file, type] : {std::pair{"s1.lis", "1"}, {"s2.lis", "2"}}) {
+    std::stringstream text;
+    text << std::ifstream(dir / file).rdbuf();
+    std::string s = text.str();
+    s.insert(s.rfind("Ende"), std::string("getriebe[0].slope_type ") + type + "\n");
+    std::ofstream(dir / file) << s;
+  }
+  const std::string machine = dir.string();
+  g_allocations = 0;
+  const Example ex{machine.c_str(), {"examples/mill/spindle.nc"}, "examples/mill/spindle.plc"};
+  EXPECT_GT(run_counting(ex), 1000u);
+  EXPECT_EQ(g_allocations.load(), 0u);
+  fs::remove_all(dir);
 }
 
 // Preparation in its own thread (--prep-thread): the cycle thread still

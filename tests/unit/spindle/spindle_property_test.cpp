@@ -1,6 +1,7 @@
 // Seeded property tests of the spindle interpolator: whatever the gear data,
 // curve, tool limits, override and command sequence, the set point never
-// exceeds its speed and acceleration limits, never becomes NaN, and every
+// exceeds its speed and acceleration limits (under slope_type TRAPEZ / SIN2
+// its jerk limit a/tr or (pi/2) a/tr too), never becomes NaN, and every
 // M19 ends exactly on its target, approached in the requested direction.
 // Count from NCK_PROPERTY_COUNT (default 300).
 #include <gtest/gtest.h>
@@ -8,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <numbers>
 #include <random>
 
 #include "nck/spindle/accel_curve.hpp"
@@ -65,6 +67,15 @@ Case random_case(std::mt19937& rng) {
   }
   if (rng() % 2) c.tool = ToolDynamics{0, uni(100, 3000), uni(500, 5000)};
   c.weight = uni(0.5, 1.5);
+  // slope_type (drawn last, so the cases above stay those of before): a
+  // jerk-limited stage has no curve (the config layer makes it STEP).
+  if (g.curve.type == 0 && rng() % 3 != 0) {
+    g.slope_type = (rng() % 2) ? SlopeProfile::trapez : SlopeProfile::sin2;
+    g.tr_acc_up_s = uni(0.005, 0.2);
+    g.tr_acc_down_s = uni(0.005, 0.2);
+    g.tr_dec_up_s = uni(0.005, 0.2);
+    g.tr_dec_down_s = uni(0.005, 0.2);
+  }
   return c;
 }
 
@@ -78,6 +89,20 @@ double accel_bound(const Case& c, double speed_deg_s) {
   };
   return std::max(lim(curve_accel_deg_s2(g.curve, speed_deg_s, g.accel_mm_s2)),
                   lim(curve_accel_deg_s2(g.curve, speed_deg_s, g.decel_mm_s2)));
+}
+
+// Under TRAPEZ / SIN2 the steepest ramp: a/tr, sin^2 (pi/2) a/tr; 0 for STEP.
+double jerk_bound(const Case& c) {
+  const auto& g = c.ax.gears[0];
+  if (!jerk_limited(g.slope_type)) return 0;
+  auto lim = [&](double a) {
+    a = std::min(a * c.weight, g.a_max);
+    if (c.tool.a_max_deg_s2 > 0) a = std::min(a, c.tool.a_max_deg_s2);
+    return a;
+  };
+  const double shape = g.slope_type == SlopeProfile::sin2 ? std::numbers::pi / 2 : 1.0;
+  return shape * std::max({lim(g.accel_mm_s2) / g.tr_acc_up_s, lim(g.accel_mm_s2) / g.tr_acc_down_s,
+                           lim(g.decel_mm_s2) / g.tr_dec_up_s, lim(g.decel_mm_s2) / g.tr_dec_down_s});
 }
 
 double speed_bound(const Case& c) {
@@ -101,11 +126,17 @@ class Checker {
     const double a = std::fabs(v - v_old) / kDt;
     const double bound = accel_bound(c_, std::fabs(v_old)) * (1 + 1e-9) + 1e-6;
     EXPECT_LE(a, bound) << "at speed " << v_old;
+    if (const double j_max = jerk_bound(c_); j_max > 0) {
+      const double j = std::fabs(v - 2 * v_old + v_older_) / (kDt * kDt);
+      EXPECT_LE(j, j_max * (1 + 1e-6) + 1e-3) << "at speed " << v_old;
+    }
+    v_older_ = v_old;
     return !::testing::Test::HasFailure();
   }
 
  private:
   const Case& c_;
+  double v_older_ = 0;  // the set speed two cycles back (the spindle starts at rest)
 };
 
 // Runs an M19 and checks it lands exactly, in the requested direction, with
@@ -144,7 +175,7 @@ TEST(SpindleProperty, LimitsTargetsAndNoNaN) {
     std::mt19937 rng(static_cast<unsigned>(1000 + k));
     auto uni = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
     const Case c = random_case(rng);
-    SCOPED_TRACE(::testing::Message() << "case " << k);
+    SCOPED_TRACE(::testing::Message() << "case " << k << ", slope_type " << slope_name(c.ax.gears[0].slope_type));
     auto s = test::make_spindle(c.ax, kDt);
     s.set_tool_dynamics(c.tool);
     ASSERT_TRUE(s.set_accel_weight_pct(c.weight * 100).ok());
