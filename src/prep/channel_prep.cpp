@@ -57,11 +57,8 @@ bool ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& fe
   // A call that did nothing does nothing again until the kernel has taken a
   // command or sent feedback, or the channel ended.
   if (idle(commands, feedback, channel_done)) return false;
-  const Idle now{commands.free_slots(), channel_done};
   if (channel_done && !in_mdi_) take_stop(feedback);
-  const bool mdi_waits = done() && mdi_->pending.load(std::memory_order_acquire) > 0 && !in_mdi_;
-  if (idle_ && *idle_ == now && feedback.empty() && !mdi_waits) return false;
-  if (mdi_waits) start_mdi();
+  if (!in_mdi_ && done() && mdi_pending()) start_mdi();
   const std::uint64_t before = decoded_ + window_.released();
   feed_blocks(commands, feedback, channel_done);
   const bool progressed = decoded_ + window_.released() != before;

@@ -58,7 +58,6 @@ void DryRun::prepare_now() {
     // kernel takes the first #DIST CTRL ON (planned by a call that progressed).
     const ChannelQueues& q = queues_[ch];
     const bool channel_done = kernel_->channel_done(ch);
-    if (preps_[ch].idle(*q.commands, *q.feedback, channel_done)) continue;
     if (preps_[ch].feed(*q.commands, *q.feedback, channel_done) && preps_[ch].planner().dist_ctrl_programmed())
       sim_->switch_sensor_on(ch);
   }
