@@ -74,7 +74,7 @@ constexpr ParamInfo kTable[] = {
     {"messtyp", "P-CHAN-00057", C, T::integer, 1, 7, 1, 1, "—", "—", "Measuring-move variant."},
     {"versch_im_durchm", "P-CHAN-00091", C, T::boolean, 0, 1, 0, 1, "—", "—", "Face-axis offsets are diameters."},
     {"einzelschrittmodus", "P-CHAN-00015", C, T::integer, -1, 1, 0, 1, "—", "—", "Single step stops after: -1 motion blocks only, 0 motion blocks and blocks with functions (M, H, T, S, dwell), 1 every block."},
-    {"prog_start.slope.profile", "P-CHAN-00071", C, T::integer, 0, 3, 0, 1, "—", "—", "Acceleration profile of path motions at program start and after #SLOPE DEFAULT: 0 step, 1 trapezoid, 2 sine-square, 3 HSC (nck: trapezoid per block)."},
+    {"prog_start.slope.profile", "P-CHAN-00071", C, T::integer, 0, 3, 0, 1, "—", "—", "Acceleration profile of path motions at program start and after #SLOPE DEFAULT: 0 step, 1 trapezoid, 2 sine-square, 3 HSC (trapezoid across the blocks the path passes at speed)."},
     {"exact_stop_after_g00", "P-CHAN-00235", C, T::boolean, 0, 1, 0, 1, "—", "—", "Every G0 block ends with an exact stop (G60)."},
     {"configuration.interpolator.number_blocks_lah", "P-CHAN-00653", C, T::integer, 10, 500, 120, 1, "blocks", "blocks", "Motion blocks in the velocity look-ahead window; nck takes at most 120 (its command queue must hold every block the window planned with: docs/decisions.md)."},
     {"move_tool_offsets_directly", "P-CHAN-00100", C, T::boolean, 0, 1, 0, 1, "—", "—", "Tool offsets move with the D word (1) or at the next absolute move (0)."},

@@ -282,6 +282,7 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
 bool LookAheadWindow::release(kernel::CommandQueue& q, bool flush) {
   const std::size_t keep = flush ? 0 : depth_;
   while (size() > keep) {
+    at(head_).command.v_end_cap_mm_s = at(head_).end_cap_mm_s;
     if (!packer_.pack(at(head_).command, q)) return false;
     ++head_;
   }

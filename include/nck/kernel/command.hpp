@@ -41,6 +41,11 @@ struct Motion {
   // ends (#SUPPRESS OFFSETS and #MCS ON leave it out); taken in or out
   // along the path.
   std::uint32_t handwheel_axes = ~0u;
+  // The transition's own limit at its end (corner and feed rules) while
+  // the next motion chains after it, before the braking of the blocks
+  // after it (v_end_mm_s includes that); 0 when none chains. HSC runs its
+  // chains across the transitions where it is not below the path's speed.
+  double v_end_cap_mm_s = 0;
 };
 
 // G4: a time, or as many revolutions as a spindle really turns (G4 S..).

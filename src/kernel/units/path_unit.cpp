@@ -1,6 +1,7 @@
 #include "path_unit.hpp"
 
 #include "nck/kernel/braking_reserve.hpp"
+#include "nck/kernel/hsc_chain.hpp"
 
 namespace nck::kernel {
 
@@ -21,7 +22,13 @@ void PathUnit::start_block(const Command& c, const StartPoint* start, const Prog
 void PathUnit::start_motion(const Motion& m, const CommandQueue& queued, double dt_s) noexcept {
   const double v_end = reserve_end_speed(m, queued, dt_s);
   reserve_ = v_end < m.v_end_mm_s;
-  profile_.start(segment_.length(), m.v_cmd_mm_s, m.limits, v_end);
+  hsc_ = HscChain{};
+  if (m.limits.slope == SlopeProfile::hsc) hsc_ = hsc_chain(m, segment_.length(), queued, dt_s);
+  // Inside a chain this segment's end is passed at the chain's speed; the
+  // chain's end is lowered while it reaches the end of the queue.
+  const bool chained = hsc_.chain.length_mm > 0;
+  if (chained) reserve_ = hsc_.open;
+  profile_.start(segment_.length(), m.v_cmd_mm_s, m.limits, chained ? m.v_end_mm_s : v_end, hsc_.chain);
 }
 
 bool PathUnit::carry_on(const Motion& m) noexcept {
@@ -64,6 +71,7 @@ void PathUnit::place(const Motion& m, double s_mm, std::size_t n_axes) noexcept 
 bool PathUnit::end_at_standstill(double dt_s) noexcept {
   if (!profile_.stop_fits(dt_s)) return false;
   reserve_ = false;  // the end speed is 0 now; no reserve raises it again
+  hsc_ = HscChain{};  // nor a chain (set_end_velocity(0) ends it in the profile)
   profile_.set_end_velocity(0.0);
   return true;
 }
@@ -71,6 +79,7 @@ bool PathUnit::end_at_standstill(double dt_s) noexcept {
 void PathUnit::reset() noexcept {
   velocity_ = 0;
   passing_ = reserve_ = starved_ = false;
+  hsc_ = HscChain{};
   profile_.reset();
   // The next motion starts where the path stands, not at the end of a block
   // a reset left (a rotated block's segment is in program coordinates: kept).
@@ -84,8 +93,20 @@ void PathUnit::reset() noexcept {
 
 // While the commands queued after a motion do not reach a stop or a braking
 // distance, its end speed is lowered to what they leave room for; raised
-// again, up to the planned speed, as soon as preparation queues more.
+// again, up to the planned speed, as soon as preparation queues more. An
+// HSC chain that reaches the end of the queue grows the same way.
 void PathUnit::keep_braking_reserve(const Motion& m, const CommandQueue& queued, double dt_s) noexcept {
+  if (hsc_.open) {
+    if (queued.size() == hsc_.queued_seen) return;  // nothing new: the chain stays
+    const bool was_chained = hsc_.chain.length_mm > 0;
+    hsc_ = hsc_chain(m, segment_.length(), queued, dt_s);  // more queued: it may reach further
+    if (was_chained || hsc_.chain.length_mm > 0) profile_.set_chain(hsc_.chain);
+    if (hsc_.chain.length_mm > 0) {
+      reserve_ = hsc_.open;
+      return;
+    }
+    reserve_ = true;  // the motion alone (nothing joins yet): its own reserve below
+  }
   if (!reserve_) return;
   const double v_end = reserve_end_speed(m, queued, dt_s);
   profile_.set_end_velocity(v_end);

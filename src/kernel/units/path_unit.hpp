@@ -10,6 +10,7 @@
 
 #include "nck/kernel/attachment.hpp"
 #include "nck/kernel/command.hpp"
+#include "nck/kernel/hsc_chain.hpp"
 #include "nck/kernel/queues.hpp"
 #include "nck/motion/path_profile.hpp"
 #include "cycle.hpp"
@@ -78,6 +79,7 @@ class PathUnit {
   double velocity_ = 0;
   bool passing_ = false;  // the last motion ended at speed: the next one takes over this cycle
   bool reserve_ = false;  // the motion's end speed is lowered: its successors are not all queued yet
+  HscChain hsc_{};        // HSC: the chain the motion starts (open: looked at again as the queue grows)
   bool starved_ = false;  // the braking reserve slowed the path (a KernelPrepStarved episode)
   bool moved_this_cycle_ = false, moved_last_cycle_ = false;  // the path advanced in this / the last cycle
   CycleCause cause_ = CycleCause::transition;
@@ -87,7 +89,7 @@ class PathUnit {
 // Every cycle of a motion: defined here so that it inlines into the channel.
 inline motion::ProfileSample PathUnit::step(const Motion& m, const CommandQueue& queued, Cycle& cy) noexcept {
   const double ovr = cy.in.feedhold || cy.stopped ? 0.0 : std::clamp(cy.in.feed_override_pct, 0.0, 100.0) / 100.0;
-  if (reserve_) keep_braking_reserve(m, queued, cy.dt_s);
+  if (reserve_ || hsc_.open) keep_braking_reserve(m, queued, cy.dt_s);
   const double v_prev = profile_.v();
   const motion::ProfileSample st = profile_.step(cy.dt_s, ovr);
   if (reserve_ && st.braking) note_starved(cy);
