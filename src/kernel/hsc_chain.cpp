@@ -10,11 +10,12 @@ namespace {
 
 double cruise_of(const Motion& m) noexcept { return std::min(m.v_cmd_mm_s, m.limits.v_max_mm_s); }
 
-// Whether m may join a chain of cruise v after a motion whose end allows
-// v_cap (its transition into m).
-bool joins(const Motion& m, double v_cap_mm_s, double v_cruise_mm_s) noexcept {
-  return m.limits.slope == SlopeProfile::hsc && m.trafo.kind == motion::CaxTrafoKind::none && !m.measure &&
-         v_cap_mm_s >= v_cruise_mm_s && cruise_of(m) >= v_cruise_mm_s && motion::valid(m.limits);
+// Whether m may join a chain of cruise v after `last` (the chain's last
+// motion): the transition passes at both motions' speed, and m's is not
+// below the chain's (so neither is the transition's).
+bool joins(const Motion& last, const Motion& m, double v_cruise_mm_s) noexcept {
+  return last.passes_at_cruise && m.limits.slope == SlopeProfile::hsc && m.trafo.kind == motion::CaxTrafoKind::none &&
+         !m.measure && cruise_of(m) >= v_cruise_mm_s && motion::valid(m.limits);
 }
 
 motion::PathLimits merged(const motion::PathLimits& a, const motion::PathLimits& b) noexcept {
@@ -40,7 +41,7 @@ HscChain hsc_chain(const Motion& current, double length_mm, const CommandQueue& 
     const Command& cmd = queued.at(i);
     if (cmd.is<Nop>()) continue;
     const Motion* m = cmd.as<Motion>();
-    if (!m || !joins(*m, last->v_end_cap_mm_s, v_cruise)) break;
+    if (!m || !joins(*last, *m, v_cruise)) break;
     c.length_mm += m->path.length_mm;
     c.limits = merged(c.limits, m->limits);
     last = m;

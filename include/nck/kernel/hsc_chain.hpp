@@ -23,10 +23,10 @@ struct HscChain {
 
 // The chain that starts with `current` (length_mm of its segment, cruise
 // min(v_cmd, v_max)). A motion joins while every transition on the way is
-// passable at the chain's speed: its own limit (Motion::v_end_cap_mm_s,
-// corner and feed rules) and the joining motion's cruise at least the
-// current motion's cruise, HSC, no transformation, no probing, only
-// blocks without motion between. The chain's limits are its motions'
+// passable at the chain's speed: the corner and feed rules let it pass at
+// the speed of its motions (Motion::passes_at_cruise) and the joining
+// motion's cruise is at least the current motion's; HSC, no
+// transformation, no probing, only blocks without motion between. The chain's limits are its motions'
 // smallest accelerations and speed limits and longest ramp times. It ends
 // at its last motion's planned end speed, lowered by the braking reserve
 // of what is queued after it; at the end of the queue, at 0. rt

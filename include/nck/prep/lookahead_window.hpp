@@ -92,6 +92,7 @@ class LookAheadWindow {
   void append(const PlannedCommand& c);
   void raise_chain(std::uint64_t next);
   double entry_limit(const PlannedCommand& c) const;
+  bool passes_at_cruise(std::uint64_t seq) const;
   bool blend(std::uint64_t prev, PlannedCommand& next);
   static motion::PathLimits fillet_limits(const motion::Segment& fillet,
                                          std::span<const motion::AxisDynamics> dyn);

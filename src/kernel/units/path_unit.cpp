@@ -22,13 +22,19 @@ void PathUnit::start_block(const Command& c, const StartPoint* start, const Prog
 void PathUnit::start_motion(const Motion& m, const CommandQueue& queued, double dt_s) noexcept {
   const double v_end = reserve_end_speed(m, queued, dt_s);
   reserve_ = v_end < m.v_end_mm_s;
-  hsc_ = HscChain{};
-  if (m.limits.slope == SlopeProfile::hsc) hsc_ = hsc_chain(m, segment_.length(), queued, dt_s);
+  HscChain h;
+  if (m.limits.slope == SlopeProfile::hsc) h = hsc_chain(m, segment_.length(), queued, dt_s);
+  note_chain(h);
   // Inside a chain this segment's end is passed at the chain's speed; the
   // chain's end is lowered while it reaches the end of the queue.
-  const bool chained = hsc_.chain.length_mm > 0;
-  if (chained) reserve_ = hsc_.open;
-  profile_.start(segment_.length(), m.v_cmd_mm_s, m.limits, chained ? m.v_end_mm_s : v_end, hsc_.chain);
+  if (hsc_chained_) reserve_ = hsc_open_;
+  profile_.start(segment_.length(), m.v_cmd_mm_s, m.limits, hsc_chained_ ? m.v_end_mm_s : v_end, h.chain);
+}
+
+void PathUnit::note_chain(const HscChain& h) noexcept {
+  hsc_chained_ = h.chain.length_mm > 0;
+  hsc_open_ = h.open;
+  hsc_seen_ = h.queued_seen;
 }
 
 bool PathUnit::carry_on(const Motion& m) noexcept {
@@ -71,7 +77,7 @@ void PathUnit::place(const Motion& m, double s_mm, std::size_t n_axes) noexcept 
 bool PathUnit::end_at_standstill(double dt_s) noexcept {
   if (!profile_.stop_fits(dt_s)) return false;
   reserve_ = false;  // the end speed is 0 now; no reserve raises it again
-  hsc_ = HscChain{};  // nor a chain (set_end_velocity(0) ends it in the profile)
+  hsc_chained_ = hsc_open_ = false;  // nor a chain (set_end_velocity(0) ends it in the profile)
   profile_.set_end_velocity(0.0);
   return true;
 }
@@ -79,7 +85,7 @@ bool PathUnit::end_at_standstill(double dt_s) noexcept {
 void PathUnit::reset() noexcept {
   velocity_ = 0;
   passing_ = reserve_ = starved_ = false;
-  hsc_ = HscChain{};
+  hsc_chained_ = hsc_open_ = false;
   profile_.reset();
   // The next motion starts where the path stands, not at the end of a block
   // a reset left (a rotated block's segment is in program coordinates: kept).
@@ -96,13 +102,14 @@ void PathUnit::reset() noexcept {
 // again, up to the planned speed, as soon as preparation queues more. An
 // HSC chain that reaches the end of the queue grows the same way.
 void PathUnit::keep_braking_reserve(const Motion& m, const CommandQueue& queued, double dt_s) noexcept {
-  if (hsc_.open) {
-    if (queued.size() == hsc_.queued_seen) return;  // nothing new: the chain stays
-    const bool was_chained = hsc_.chain.length_mm > 0;
-    hsc_ = hsc_chain(m, segment_.length(), queued, dt_s);  // more queued: it may reach further
-    if (was_chained || hsc_.chain.length_mm > 0) profile_.set_chain(hsc_.chain);
-    if (hsc_.chain.length_mm > 0) {
-      reserve_ = hsc_.open;
+  if (hsc_open_) {
+    if (queued.size() == hsc_seen_) return;  // nothing new: the chain stays
+    const bool was_chained = hsc_chained_;
+    const HscChain h = hsc_chain(m, segment_.length(), queued, dt_s);  // more queued: it may reach further
+    note_chain(h);
+    if (was_chained || hsc_chained_) profile_.set_chain(h.chain);
+    if (hsc_chained_) {
+      reserve_ = hsc_open_;
       return;
     }
     reserve_ = true;  // the motion alone (nothing joins yet): its own reserve below

@@ -10,12 +10,13 @@
 
 #include "nck/kernel/attachment.hpp"
 #include "nck/kernel/command.hpp"
-#include "nck/kernel/hsc_chain.hpp"
 #include "nck/kernel/queues.hpp"
 #include "nck/motion/path_profile.hpp"
 #include "cycle.hpp"
 
 namespace nck::kernel {
+
+struct HscChain;  // hsc_chain.hpp
 
 class PathUnit {
  public:
@@ -67,6 +68,7 @@ class PathUnit {
 
  private:
   void keep_braking_reserve(const Motion& m, const CommandQueue& queued, double dt_s) noexcept;
+  void note_chain(const HscChain& h) noexcept;
   void note_starved(Cycle& cy) noexcept;
   // What limited step st (v_prev: the speed before it). rt
   CycleCause classify(const Motion& m, const motion::ProfileSample& st, double v_prev, double ovr,
@@ -79,17 +81,20 @@ class PathUnit {
   double velocity_ = 0;
   bool passing_ = false;  // the last motion ended at speed: the next one takes over this cycle
   bool reserve_ = false;  // the motion's end speed is lowered: its successors are not all queued yet
-  HscChain hsc_{};        // HSC: the chain the motion starts (open: looked at again as the queue grows)
   bool starved_ = false;  // the braking reserve slowed the path (a KernelPrepStarved episode)
   bool moved_this_cycle_ = false, moved_last_cycle_ = false;  // the path advanced in this / the last cycle
   CycleCause cause_ = CycleCause::transition;
   CycleCause ramp_ = CycleCause::none;  // a speed-up under way: from standstill or out of a corner
+  // HSC: the motion starts a chain; it reaches the end of the queue (looked
+  // at again when the queue grows, from queue size hsc_seen_ on).
+  bool hsc_chained_ = false, hsc_open_ = false;
+  std::size_t hsc_seen_ = 0;
 };
 
 // Every cycle of a motion: defined here so that it inlines into the channel.
 inline motion::ProfileSample PathUnit::step(const Motion& m, const CommandQueue& queued, Cycle& cy) noexcept {
   const double ovr = cy.in.feedhold || cy.stopped ? 0.0 : std::clamp(cy.in.feed_override_pct, 0.0, 100.0) / 100.0;
-  if (reserve_ || hsc_.open) keep_braking_reserve(m, queued, cy.dt_s);
+  if (reserve_ || hsc_open_) keep_braking_reserve(m, queued, cy.dt_s);
   const double v_prev = profile_.v();
   const motion::ProfileSample st = profile_.step(cy.dt_s, ovr);
   if (reserve_ && st.braking) note_starved(cy);
