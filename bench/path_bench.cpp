@@ -151,7 +151,11 @@ BENCHMARK(BM_CommonProgramBlend001)->Arg(20000)->Unit(benchmark::kMillisecond)->
 
 // The jerk-limited TRAPEZ slope with every ramp time 20 ms (issue 30).
 void BM_CommonProgramTrapez(benchmark::State& state) { run_common(state, "#SLOPE [TYPE=TRAPEZ]\n", 0.020); }
-BENCHMARK(BM_CommonProgramTrapez)->Arg(2000)->Arg(200000)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_CommonProgramTrapez)->Arg(2000)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// HSC across blocks with the same ramp times (issue 30, third part).
+void BM_CommonProgramHsc(benchmark::State& state) { run_common(state, "#SLOPE [TYPE=HSC]\n", 0.020); }
+BENCHMARK(BM_CommonProgramHsc)->Arg(2000)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 // Exact stop at every block (G360): the behaviour before the look-ahead.
 void BM_CommonProgramExactStop(benchmark::State& state) { run_common(state, "G360\n"); }

@@ -27,12 +27,12 @@ nck::config::Machine mill() {
 }
 
 // The mill with jerk-limited slopes (issue 30): the path's profile at
-// program start (P-CHAN-00071 = 1, TRAPEZ) and the spindles' ramps
+// program start (P-CHAN-00071 = 1 TRAPEZ or 3 HSC) and the spindles' ramps
 // (getriebe[i].slope_type = 1), set in the loaded machine so that the
 // programs stay the same bytes.
-nck::config::Machine trapez_mill() {
+nck::config::Machine jerk_mill(nck::SlopeProfile path) {
   nck::config::Machine m = mill();
-  for (auto& ch : m.channels) ch.slope_profile = nck::SlopeProfile::trapez;
+  for (auto& ch : m.channels) ch.slope_profile = path;
   for (auto& ax : m.axes)
     if (ax.is_spindle())
       for (auto& g : ax.gears) g.slope_type = nck::SlopeProfile::trapez;
@@ -41,10 +41,12 @@ nck::config::Machine trapez_mill() {
 
 // state.range(0): 0 = contour.nc (path only), 1 = spindle.nc (path + S1/S2
 // running), both STEP as the mill's lists say; 2 and 3 the same programs
-// under TRAPEZ (path and spindles).
+// under TRAPEZ (path and spindles), 4 and 5 under HSC (the spindles TRAPEZ).
 void BM_Tick(benchmark::State& state) {
   const char* program = state.range(0) % 2 == 0 ? "contour.nc" : "spindle.nc";
-  const nck::config::Machine m = state.range(0) < 2 ? mill() : trapez_mill();
+  const nck::config::Machine m = state.range(0) < 2   ? mill()
+                                 : state.range(0) < 4 ? jerk_mill(nck::SlopeProfile::trapez)
+                                                      : jerk_mill(nck::SlopeProfile::hsc);
   auto run = make_run(m, program);
   auto out = std::make_unique<nck::kernel::TickOutput>();
   for (auto _ : state) {
@@ -57,7 +59,7 @@ void BM_Tick(benchmark::State& state) {
     benchmark::DoNotOptimize(*out);
   }
 }
-BENCHMARK(BM_Tick)->Arg(0)->Arg(1)->Arg(2)->Arg(3);
+BENCHMARK(BM_Tick)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Arg(4)->Arg(5);
 
 void BM_WholeRun(benchmark::State& state) {
   const nck::config::Machine m = mill();

@@ -74,7 +74,7 @@ constexpr ParamInfo kTable[] = {
     {"messtyp", "P-CHAN-00057", C, T::integer, 1, 7, 1, 1, "—", "—", "Measuring-move variant."},
     {"versch_im_durchm", "P-CHAN-00091", C, T::boolean, 0, 1, 0, 1, "—", "—", "Face-axis offsets are diameters."},
     {"einzelschrittmodus", "P-CHAN-00015", C, T::integer, -1, 1, 0, 1, "—", "—", "Single step stops after: -1 motion blocks only, 0 motion blocks and blocks with functions (M, H, T, S, dwell), 1 every block."},
-    {"prog_start.slope.profile", "P-CHAN-00071", C, T::integer, 0, 3, 0, 1, "—", "—", "Acceleration profile of path motions at program start and after #SLOPE DEFAULT: 0 step, 1 trapezoid, 2 sine-square, 3 HSC (nck: trapezoid per block)."},
+    {"prog_start.slope.profile", "P-CHAN-00071", C, T::integer, 0, 3, 0, 1, "—", "—", "Acceleration profile of path motions at program start and after #SLOPE DEFAULT: 0 step, 1 trapezoid, 2 sine-square, 3 HSC (trapezoid across the blocks the path passes at speed)."},
     {"g00_override_mode", "P-CHAN-00181", C, T::choice, 0, 0, 0, 1, "—", "—", "Which override scales G0 blocks: NOT_USED (0) the feed override, MINIMUM_OF_G0_G1 (1) the smaller of feed and rapid override, ACTIVE (2) the rapid override, ACTIVE_EXTENDED (3) as ACTIVE and continuous jog too.", {},
      "NOT_USED MINIMUM_OF_G0_G1 ACTIVE ACTIVE_EXTENDED 0 1 2 3", "NOT_USED"},
     {"exact_stop_after_g00", "P-CHAN-00235", C, T::boolean, 0, 1, 0, 1, "—", "—", "Every G0 block ends with an exact stop (G60)."},

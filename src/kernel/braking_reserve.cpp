@@ -23,11 +23,12 @@ double entry_speed(const Motion& m, double v_exit_mm_s, double dt_s) noexcept {
 // own planned end speed; only the last queued motion must now also stop:
 // lower what it cannot brake from, back along the queue until a planned
 // end speed holds again (usually one or two blocks).
-double jerk_reserve_end_speed(const Motion& current, const CommandQueue& queued, double dt_s) noexcept {
+double jerk_reserve_end_speed(const Motion& current, const CommandQueue& queued, double dt_s,
+                              std::size_t first) noexcept {
   const double planned = current.v_end_mm_s;
   std::array<const Motion*, kCommandQueueLength> chain{};
   std::size_t n = 0;
-  for (std::size_t i = 0; i < queued.size() && n < chain.size(); ++i) {
+  for (std::size_t i = first; i < queued.size() && n < chain.size(); ++i) {
     const Command& c = queued.at(i);
     if (c.is<Nop>()) continue;
     const Motion* m = c.as<Motion>();
@@ -46,14 +47,14 @@ double jerk_reserve_end_speed(const Motion& current, const CommandQueue& queued,
 
 }  // namespace
 
-double reserve_end_speed(const Motion& current, const CommandQueue& queued, double dt_s) noexcept {
+double reserve_end_speed(const Motion& current, const CommandQueue& queued, double dt_s, std::size_t first) noexcept {
   const double planned = current.v_end_mm_s;
   if (!(planned > 0.0)) return 0.0;
-  if (jerk_limited(current.limits.slope)) return jerk_reserve_end_speed(current, queued, dt_s);
+  if (jerk_limited(current.limits.slope)) return jerk_reserve_end_speed(current, queued, dt_s, first);
   double a_mm_s2 = current.limits.a_dec_mm_s2;  // the gentlest deceleration of the chain
   double length_mm = 0.0;                       // queued path to stop within
   const std::size_t n = queued.size();
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = first; i < n; ++i) {
     const Command& c = queued.at(i);
     if (c.is<Nop>()) continue;  // a block without motion: the path passes through it
     // Anything else than a motion was planned with a stop before it.

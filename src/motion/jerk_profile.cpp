@@ -234,7 +234,14 @@ BlockPlanKind plan_block(JerkPlan& plan, const Kinematics& start, double length_
   }
   double v_peak = v_target;
   if (peak_distance(k0, v_target, ve, l) > length_mm) {
-    double lo = v_lo, hi = v_target;
+    // An acceleration under way carries the speed up to v_nat whatever
+    // comes next: a peak below it only adds a pause at that speed on the
+    // way down (more distance, not less), so the distance grows with the
+    // peak only from v_nat on. Search there, or stay at v_lo's plan (which
+    // passes v_nat without a pause) when the peak cannot rise above it.
+    // (Braking under way: the distance grows with the peak throughout.)
+    double lo = a0 > 0.0 ? std::max(v_lo, std::min(v_nat, v_target)) : v_lo, hi = v_target;
+    if (lo > v_lo && peak_distance(k0, lo, ve, l) > length_mm) lo = hi = v_lo;
     for (int i = 0; i < kBisections && hi - lo > kTinyVel; ++i) {
       const double mid = (lo + hi) / 2.0;
       (peak_distance(k0, mid, ve, l) <= length_mm ? lo : hi) = mid;

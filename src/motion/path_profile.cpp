@@ -65,10 +65,11 @@ void PathProfile::reset() noexcept {
   finished_ = true;
   jerk_ = false;
   a_mm_s2_ = carry_s_ = 0.0;
+  chain_ = PathChain{};
 }
 
-bool PathProfile::start(double length_mm, double v_cmd_mm_s, const PathLimits& limits,
-                        double v_end_mm_s) noexcept {
+bool PathProfile::start(double length_mm, double v_cmd_mm_s, const PathLimits& limits, double v_end_mm_s,
+                        const PathChain& chain) noexcept {
   if (!std::isfinite(v_mm_s_) || v_mm_s_ < 0.0) v_mm_s_ = 0.0;
   const double carry = carry_mm_;
   carry_mm_ = 0.0;
@@ -104,6 +105,10 @@ bool PathProfile::start(double length_mm, double v_cmd_mm_s, const PathLimits& l
   if (positive_finite(v_end_mm_s)) v_end_mm_s_ = std::min(v_end_mm_s, v_cmd_mm_s_);
   finished_ = false;
   jerk_ = jerk_limited(limits.slope) && valid(jerk_limits(limits));
+  // A chain of one segment is the segment itself.
+  const bool chain_on = jerk_ && chain.length_mm > length_mm + kSnapMm && valid(jerk_limits(chain.limits));
+  chain_ = chain_on ? chain : PathChain{};
+  chain_changed_ = false;
   if (jerk_) {
     start_jerk(carry, passing);
     return true;
@@ -115,6 +120,10 @@ bool PathProfile::start(double length_mm, double v_cmd_mm_s, const PathLimits& l
 
 void PathProfile::set_end_velocity(double v_end_mm_s) noexcept {
   const double v = positive_finite(v_end_mm_s) ? std::min(v_end_mm_s, v_cmd_mm_s_) : 0.0;
+  if (v == 0.0 && chained()) {  // a stop at this segment's end: the chain ends here
+    chain_ = PathChain{};
+    plan_end_mm_s_ = -1.0;  // plan anew
+  }
   if (v == v_end_mm_s_) return;
   v_end_mm_s_ = v;
   beyond_dt_s_ = 0.0;  // the braking curve's end point moves

@@ -1,9 +1,12 @@
-// PathProfile under a jerk-limited slope (TRAPEZ, SIN2; HSC as TRAPEZ): the
-// segment follows a JerkPlan, sampled at the cycle times. Replanning starts
-// from the exact state (position, velocity, acceleration) at the last
-// sample, so the acceleration never jumps; the time a cycle runs past the
+// PathProfile under a jerk-limited slope (TRAPEZ, SIN2, HSC): the segment
+// follows a JerkPlan, sampled at the cycle times. Replanning starts from
+// the exact state (position, velocity, acceleration) at the last sample,
+// so the acceleration never jumps; the time a cycle runs past the
 // segment's end is carried into the next segment's plan, whose start state
-// is the crossing state, so passing at speed is exact too.
+// is the crossing state, so passing at speed is exact too. Under HSC the
+// plan reaches over the chain of segments after this one (PathChain): it
+// ends at the chain's end, so the acceleration goes on across the
+// segments' ends inside it.
 #include <algorithm>
 #include <cmath>
 
@@ -14,6 +17,9 @@ namespace {
 
 constexpr double kSnapMm = 1e-9;  // as in path_profile.cpp
 constexpr int kCrossingBisections = 60;
+// HSC: a chain that grew is planned in when the plan in force begins to
+// brake within this time (before, the longer chain changes nothing yet).
+constexpr double kChainReplanAheadS = 0.05;
 
 }  // namespace
 
@@ -35,27 +41,53 @@ void PathProfile::start_jerk(double carry_mm, bool passing) noexcept {
   }
 }
 
-// A new plan from the state now over what is left of the segment.
+// A new plan from the state now over what is left of the segment (HSC:
+// of the chain).
 void PathProfile::replan_jerk(double target_mm_s) noexcept {
-  const JerkLimits l = jerk_limits(limits_);
+  const bool chain = chained();
+  const JerkLimits l = jerk_limits(chain ? chain_.limits : limits_);
+  const double length_mm = chain ? chain_.length_mm : length_mm_;
+  const double v_end = chain ? std::min(chain_.v_end_mm_s, target_mm_s) : v_end_mm_s_;
   const Kinematics now{0.0, v_mm_s_, a_mm_s2_};
   plan_s0_mm_ = s_mm_;
   t_s_ = 0.0;
   plan_target_mm_s_ = target_mm_s;
   plan_end_mm_s_ = v_end_mm_s_;
+  chain_changed_ = false;
   // Past the end only with a successor to go on braking in.
-  plan_kind_ = plan_block(plan_, now, length_mm_ - s_mm_, target_mm_s, v_end_mm_s_, l, v_end_mm_s_ > 0.0);
+  plan_kind_ = plan_block(plan_, now, length_mm - s_mm_, target_mm_s, v_end, l, v_end > 0.0);
+}
+
+void PathProfile::set_chain(const PathChain& chain) noexcept {
+  if (!jerk_ || finished_) return;
+  if (!(chain.length_mm > length_mm_ + kSnapMm) || !valid(jerk_limits(chain.limits))) {
+    // The chain ends with this segment now: its own end speed is the chain's.
+    if (chained()) {
+      chain_ = PathChain{};
+      plan_end_mm_s_ = -1.0;  // plan anew
+    }
+    set_end_velocity(chain.v_end_mm_s);
+    return;
+  }
+  if (chain == chain_) return;
+  // Shorter, slower at its end or with other limits: plan at once.
+  const bool grew = chained() && chain.length_mm >= chain_.length_mm && chain.v_end_mm_s >= chain_.v_end_mm_s;
+  chain_ = chain;
+  if (grew) chain_changed_ = true;
+  else plan_end_mm_s_ = -1.0;
 }
 
 ProfileSample PathProfile::step_jerk(double dt_s, double override_factor) noexcept {
   if (!(std::isfinite(dt_s) && dt_s > 0.0)) return ProfileSample{s_mm_, v_mm_s_, 0.0, false};
   last_override_ = override_factor;
   const double target = target_velocity(override_factor);
-  if (target != plan_target_mm_s_ || v_end_mm_s_ != plan_end_mm_s_) replan_jerk(target);
+  const bool chain_due = chain_changed_ && t_s_ + kChainReplanAheadS >= plan_.braking_from_s();
+  if (target != plan_target_mm_s_ || v_end_mm_s_ != plan_end_mm_s_ || chain_due) replan_jerk(target);
   const double t1 = t_s_ + dt_s;
   const Kinematics k = plan_.at(t1);
   const double s1 = plan_s0_mm_ + k.s_mm;
-  const bool to_end = plan_kind_ != BlockPlanKind::overrun;
+  // HSC: inside a chain the plan goes on past this segment's end.
+  const bool to_end = plan_kind_ != BlockPlanKind::overrun && !chained();
   if (s1 >= length_mm_ - kSnapMm || (to_end && t1 >= plan_.duration())) {
     if (to_end) return finish_jerk(std::min(plan_.duration(), t1), t1);
     // Overrun: when within the cycle the path crossed the end.
@@ -79,7 +111,7 @@ ProfileSample PathProfile::finish_jerk(double t_end_s, double t1_s) noexcept {
   const Kinematics k = plan_.at(t_end_s);
   s_mm_ = length_mm_;
   finished_ = true;
-  const bool flying = v_end_mm_s_ > 0.0 && k.v_mm_s > 0.0;
+  const bool flying = (v_end_mm_s_ > 0.0 || chained()) && k.v_mm_s > 0.0;
   v_mm_s_ = flying ? k.v_mm_s : 0.0;
   a_mm_s2_ = flying ? k.a_mm_s2 : 0.0;
   carry_s_ = flying ? std::max(t1_s - t_end_s, 0.0) : 0.0;

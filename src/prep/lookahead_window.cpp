@@ -288,9 +288,21 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   return true;
 }
 
+// Whether the motion at `seq` chains into the next one at the full speed of
+// the slower of the two (its end cap is theirs, no corner below it).
+bool LookAheadWindow::passes_at_cruise(std::uint64_t seq) const {
+  const Entry& e = at(seq);
+  if (!(e.end_cap_mm_s > 0)) return false;
+  for (std::uint64_t n = seq + 1; n < tail_; ++n)
+    if (at(n).prev_motion == seq + 1)
+      return e.end_cap_mm_s >= std::min(cruise(e.command), cruise(at(n).command)) * (1 - 1e-12);
+  return false;
+}
+
 bool LookAheadWindow::release(kernel::CommandQueue& q, bool flush) {
   const std::size_t keep = flush ? 0 : depth_;
   while (size() > keep) {
+    at(head_).command.passes_at_cruise = passes_at_cruise(head_);
     if (!packer_.pack(at(head_).command, q)) return false;
     ++head_;
   }

@@ -13,7 +13,7 @@ enum class SlopeProfile : std::uint8_t {
   step = 0,    // acceleration steps (velocity trapezoids, jerk unbounded)
   trapez = 1,  // trapezoidal acceleration, jerk bounded by the ramp times
   sin2 = 2,    // sine-square build-up and decay of the acceleration
-  hsc = 3,     // trapezoidal across blocks (nck: per block as trapez, docs/decisions.md)
+  hsc = 3,     // trapezoidal across the blocks passed at speed (kernel/hsc_chain.hpp)
 };
 
 constexpr bool jerk_limited(SlopeProfile p) noexcept { return p != SlopeProfile::step; }

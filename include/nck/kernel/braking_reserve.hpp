@@ -15,6 +15,9 @@ namespace nck::kernel {
 // queued commands after it reach a planned stop, or are long enough to brake
 // to standstill within them; otherwise the speed from which the path stops
 // within the queued motions (0 without any). rt
-double reserve_end_speed(const Motion& current, const CommandQueue& queued, double dt_s) noexcept;
+// `first`: where in `queued` the commands after `current` begin (HSC asks
+// for the last motion of a chain, which is queued itself).
+double reserve_end_speed(const Motion& current, const CommandQueue& queued, double dt_s,
+                         std::size_t first = 0) noexcept;
 
 }  // namespace nck::kernel

@@ -37,6 +37,13 @@ struct Motion {
   // #FACE / #CYL: the segment is Cartesian; every set point is mapped.
   motion::CaxTrafo trafo{};
   bool measure = false;      // G100: the motion stops where the probe switches
+  // The transition at its end may be passed at the full speed of both
+  // motions: the corner and feed rules do not lower it below the slower
+  // one's cruise (the planned v_end_mm_s may still be lower, for the
+  // braking of the blocks after it). HSC runs its chains across such
+  // transitions. (A flag in the padding here: Command stays at 504 bytes;
+  // at 512, the queue's entries fell on the same cache sets.)
+  bool passes_at_cruise = false;
   // Bit j: axis j's handwheel offset is in its set point when the motion
   // ends (#SUPPRESS OFFSETS and #MCS ON leave it out); taken in or out
   // along the path.

@@ -12,6 +12,7 @@ namespace nck::motion {
 // The four ramp times of a slope, s (P-AXIS-00196, 00195, 00198, 00197).
 struct RampTimes {
   double acc_up_s = 0.0, acc_down_s = 0.0, dec_up_s = 0.0, dec_down_s = 0.0;
+  bool operator==(const RampTimes&) const = default;
 };
 
 // One axis (mm/s, mm/s^2; deg/s, deg/s^2 for rotary axes).
@@ -35,6 +36,7 @@ struct PathLimits {
   // ignores them.
   SlopeProfile slope = SlopeProfile::step;
   RampTimes tr{};
+  bool operator==(const PathLimits&) const = default;
 };
 
 // All three finite and > 0.

@@ -22,6 +22,19 @@
 
 namespace nck::motion {
 
+// HSC (#SLOPE [TYPE=HSC], P-CHAN-00071 = 3): the segment that starts and
+// the ones after it that the path runs through at speed, planned as one
+// jerk-limited profile (acceleration carried across their transitions).
+// length_mm from the segment's start to the chain's end; limits the
+// smallest accelerations and longest ramp times of its segments; the
+// chain ends at v_end_mm_s with acceleration 0. length_mm 0: no chain.
+struct PathChain {
+  double length_mm = 0.0;
+  PathLimits limits{};
+  double v_end_mm_s = 0.0;
+  bool operator==(const PathChain&) const = default;
+};
+
 struct ProfileSample {
   double s_mm = 0.0;         // path length travelled within the segment
   double v_mm_s = 0.0;       // velocity during the last step
@@ -40,7 +53,12 @@ class PathProfile {
   // next segment). Returns false (and becomes finished, s = 0) when
   // length > 0 and v_cmd or a limit is not finite and positive. rt
   bool start(double length_mm, double v_cmd_mm_s, const PathLimits& limits,
-             double v_end_mm_s = 0.0) noexcept;
+             double v_end_mm_s = 0.0, const PathChain& chain = {}) noexcept;
+  // HSC: the chain changed while the segment runs (preparation queued more,
+  // the braking reserve at its end moved). A chain that only grew is taken
+  // when the plan in force nears its braking (before that it brakes earlier
+  // than the longer chain needs: still safe). rt
+  void set_chain(const PathChain& chain) noexcept;
 
   // One cycle of dt seconds. override_factor 1 = 100 %; 0 = feedhold (brakes
   // to standstill with a_dec and stays until the override rises again);
@@ -92,6 +110,9 @@ class PathProfile {
   void replan_jerk(double target_mm_s) noexcept;
   ProfileSample step_jerk(double dt_s, double override_factor) noexcept;
   ProfileSample finish_jerk(double t_end_s, double t1_s) noexcept;
+  // HSC: this segment's end lies inside a chain (start() and set_chain()
+  // keep only chains longer than the segment).
+  bool chained() const noexcept { return chain_.length_mm > 0.0; }
   ProfileSample finish(double v_step_mm_s, double v_prev_mm_s, double dt_s, double past_end_mm) noexcept;
 
   double length_mm_ = 0.0;
@@ -117,6 +138,8 @@ class PathProfile {
   double plan_target_mm_s_ = -1.0, plan_end_mm_s_ = -1.0;
   double carry_s_ = 0.0;  // time run past the previous segment's end
   double last_override_ = 1.0;
+  PathChain chain_{};           // HSC: the chain planned over (length 0: none)
+  bool chain_changed_ = false;  // set_chain brought a new chain not planned yet
 };
 
 // Largest velocity v for this cycle such that moving v*dt now and then

@@ -93,6 +93,7 @@ class LookAheadWindow {
   void store(const PlannedCommand& c, bool linkable, double programmed_mm);
   void raise_chain(std::uint64_t next);
   double entry_limit(const PlannedCommand& c) const;
+  bool passes_at_cruise(std::uint64_t seq) const;
   bool blend(std::uint64_t prev, PlannedCommand& next);
   static motion::PathLimits fillet_limits(const motion::Segment& fillet,
                                          std::span<const motion::AxisDynamics> dyn);

@@ -73,6 +73,11 @@ struct PlannedCommand {
   double v_entry_max_mm_s = 0;
   bool exact_stop = false;
   double v_end_mm_s = 0;
+  // The next motion chains after it and the corner and feed rules let the
+  // path pass between them at the full speed of the slower of the two
+  // (kernel::Motion::passes_at_cruise). The look-ahead window sets it when
+  // the command leaves (HSC's chains).
+  bool passes_at_cruise = false;
   // Starting from an exact stop right after moving, the first step's
   // acceleration (0: one cycle at standstill). The last step into the stop
   // and the first out of it fall into consecutive cycles; the planner takes

@@ -1,6 +1,7 @@
 #include "path_unit.hpp"
 
 #include "nck/kernel/braking_reserve.hpp"
+#include "nck/kernel/hsc_chain.hpp"
 
 namespace nck::kernel {
 
@@ -21,7 +22,19 @@ void PathUnit::start_block(const Command& c, const StartPoint* start, const Prog
 void PathUnit::start_motion(const Motion& m, const CommandQueue& queued, double dt_s) noexcept {
   const double v_end = reserve_end_speed(m, queued, dt_s);
   reserve_ = v_end < m.v_end_mm_s;
-  profile_.start(segment_.length(), m.v_cmd_mm_s, m.limits, v_end);
+  HscChain h;
+  if (m.limits.slope == SlopeProfile::hsc) h = hsc_chain(m, segment_.length(), queued, dt_s);
+  note_chain(h);
+  // Inside a chain this segment's end is passed at the chain's speed; the
+  // chain's end is lowered while it reaches the end of the queue.
+  if (hsc_chained_) reserve_ = hsc_open_;
+  profile_.start(segment_.length(), m.v_cmd_mm_s, m.limits, hsc_chained_ ? m.v_end_mm_s : v_end, h.chain);
+}
+
+void PathUnit::note_chain(const HscChain& h) noexcept {
+  hsc_chained_ = h.chain.length_mm > 0;
+  hsc_open_ = h.open;
+  hsc_seen_ = h.queued_seen;
 }
 
 bool PathUnit::carry_on(const Motion& m) noexcept {
@@ -64,6 +77,7 @@ void PathUnit::place(const Motion& m, double s_mm, std::size_t n_axes) noexcept 
 bool PathUnit::end_at_standstill(double dt_s) noexcept {
   if (!profile_.stop_fits(dt_s)) return false;
   reserve_ = false;  // the end speed is 0 now; no reserve raises it again
+  hsc_chained_ = hsc_open_ = false;  // nor a chain (set_end_velocity(0) ends it in the profile)
   profile_.set_end_velocity(0.0);
   return true;
 }
@@ -71,6 +85,7 @@ bool PathUnit::end_at_standstill(double dt_s) noexcept {
 void PathUnit::reset() noexcept {
   velocity_ = 0;
   passing_ = reserve_ = starved_ = false;
+  hsc_chained_ = hsc_open_ = false;
   profile_.reset();
   // The next motion starts where the path stands, not at the end of a block
   // a reset left (a rotated block's segment is in program coordinates: kept).
@@ -84,8 +99,21 @@ void PathUnit::reset() noexcept {
 
 // While the commands queued after a motion do not reach a stop or a braking
 // distance, its end speed is lowered to what they leave room for; raised
-// again, up to the planned speed, as soon as preparation queues more.
+// again, up to the planned speed, as soon as preparation queues more. An
+// HSC chain that reaches the end of the queue grows the same way.
 void PathUnit::keep_braking_reserve(const Motion& m, const CommandQueue& queued, double dt_s) noexcept {
+  if (hsc_open_) {
+    if (queued.size() == hsc_seen_) return;  // nothing new: the chain stays
+    const bool was_chained = hsc_chained_;
+    const HscChain h = hsc_chain(m, segment_.length(), queued, dt_s);  // more queued: it may reach further
+    note_chain(h);
+    if (was_chained || hsc_chained_) profile_.set_chain(h.chain);
+    if (hsc_chained_) {
+      reserve_ = hsc_open_;
+      return;
+    }
+    reserve_ = true;  // the motion alone (nothing joins yet): its own reserve below
+  }
   if (!reserve_) return;
   const double v_end = reserve_end_speed(m, queued, dt_s);
   profile_.set_end_velocity(v_end);

@@ -17,6 +17,8 @@
 
 namespace nck::kernel {
 
+struct HscChain;  // hsc_chain.hpp
+
 class PathUnit {
  public:
   // setup: which override scales G0 blocks (P-CHAN-00181).
@@ -69,6 +71,7 @@ class PathUnit {
 
  private:
   void keep_braking_reserve(const Motion& m, const CommandQueue& queued, double dt_s) noexcept;
+  void note_chain(const HscChain& h) noexcept;
   void note_starved(Cycle& cy) noexcept;
   // What limited step st (v_prev: the speed before it). rt
   CycleCause classify(const Motion& m, const motion::ProfileSample& st, double v_prev, double ovr,
@@ -89,6 +92,10 @@ class PathUnit {
   bool moved_this_cycle_ = false, moved_last_cycle_ = false;  // the path advanced in this / the last cycle
   CycleCause cause_ = CycleCause::transition;
   CycleCause ramp_ = CycleCause::none;  // a speed-up under way: from standstill or out of a corner
+  // HSC: the motion starts a chain; it reaches the end of the queue (looked
+  // at again when the queue grows, from queue size hsc_seen_ on).
+  bool hsc_chained_ = false, hsc_open_ = false;
+  std::size_t hsc_seen_ = 0;
 };
 
 inline double PathUnit::override_factor(const Motion& m, const Cycle& cy) const noexcept {
@@ -101,7 +108,7 @@ inline double PathUnit::override_factor(const Motion& m, const Cycle& cy) const 
 // Every cycle of a motion: defined here so that it inlines into the channel.
 inline motion::ProfileSample PathUnit::step(const Motion& m, const CommandQueue& queued, Cycle& cy) noexcept {
   const double ovr = override_factor(m, cy);
-  if (reserve_) keep_braking_reserve(m, queued, cy.dt_s);
+  if (reserve_ || hsc_open_) keep_braking_reserve(m, queued, cy.dt_s);
   const double v_prev = profile_.v();
   const motion::ProfileSample st = profile_.step(cy.dt_s, ovr);
   if (reserve_ && st.braking) note_starved(cy);

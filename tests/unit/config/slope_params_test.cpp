@@ -71,6 +71,14 @@ TEST(SlopeParams, RaisedTrMinAboveDefaultRampsPointsAtTrMin) {
   EXPECT_NE(found[0].message.find("tr_grenz"), std::string::npos) << found[0].message;
 }
 
+TEST(SlopeParams, ProfileThreeIsHsc) {  // TF5200: 3 = trapezoidal HSC profile across blocks
+  MachineFolder f;
+  f.append("ch.lis", "prog_start.slope.profile 3\n");
+  const LoadResult r = f.load();
+  ASSERT_TRUE(r.machine) << dump(r.diagnostics);
+  EXPECT_EQ(r.machine->channels.at(0).slope_profile, SlopeProfile::hsc);
+}
+
 TEST(SlopeParams, ProfileOutOfRangeIsRefused) {
   MachineFolder f;
   f.append("ch.lis", "prog_start.slope.profile 4\n");

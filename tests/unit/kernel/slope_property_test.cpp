@@ -1,16 +1,19 @@
 // Seeded property test of the jerk-limited slopes (issue 30) through the
 // whole execution path on the mill: random programs of lines, arcs,
-// reversals, feed changes and tangent line/arc pairs under #SLOPE TRAPEZ
-// and SIN2. Every cycle of every axis, at full precision: |v| <= vb_max,
-// |a| <= a_max; inside blocks the jerk <= a/tr (TRAPEZ) or (pi/2) a/tr
+// reversals, feed changes, tangent line/arc pairs and polylines of short
+// nearly straight blocks under #SLOPE TRAPEZ, SIN2 and HSC. Every cycle of every axis, at full precision: |v| <= vb_max,
+// |a| <= a_max; inside blocks the jerk <= a/tr (TRAPEZ, HSC) or (pi/2) a/tr
 // (SIN2), a and tr of the motion in force (feed: a_beschl with the
 // shortest feed ramp time; G0: a_grenz with tr_grenz); within three cycles
 // of a block start the transition rules hold instead (kinks change an
 // axis's velocity within a_max in one cycle). No NaN, every end point
-// reached, and the path passes transitions at speed (not all exact stops).
+// reached, and the path passes transitions at speed (not all exact stops);
+// under HSC some transitions (inside its chains) with the path still
+// accelerating or braking, under TRAPEZ and SIN2 none.
 // Count from NCK_PROPERTY_COUNT (default 10 per profile).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -28,21 +31,27 @@ namespace nck::kernel {
 namespace {
 
 constexpr double kDt = 0.001;
+// A path acceleration above this as a block begins counts as carried on.
+constexpr double kCarriedA = 500;
 
 struct Program {
   std::string text;
   std::vector<std::array<double, 2>> points;  // programmed end points (X, Y)
 };
 
-// Lines, half circles, reversals, G0 and tangent line -> arc pairs; more
-// than 30 % of the transitions turn by more than 10 degrees.
+// Lines, half circles, reversals, G0, tangent line -> arc pairs and
+// polylines of short blocks turning by up to 2 degrees (HSC's chains);
+// more than 30 % of the transitions turn by more than 10 degrees.
 Program random_program(std::mt19937& rng, const char* slope) {
   std::uniform_real_distribution<double> pos(-40, 40), feed(600, 9000), unit(0, 1);
   std::uniform_int_distribution<int> kind(0, 9);
   Program p{fmt::format("N1 G17 G90 G0 X0 Y0 Z0\n#SLOPE [TYPE={}]\n", slope), {{0, 0}}};
   double x = 0, y = 0;
+  // The point as the program text has it (formatted as there, so that the
+  // rounding is the text's own).
   auto to = [&](double nx, double ny, double scale = 1000) {
-    p.points.push_back({std::round(nx * scale) / scale, std::round(ny * scale) / scale});
+    const int digits = scale == 1000 ? 3 : 4;
+    p.points.push_back({std::stod(fmt::format("{:.{}f}", nx, digits)), std::stod(fmt::format("{:.{}f}", ny, digits))});
     x = p.points.back()[0], y = p.points.back()[1];
   };
   for (int i = 0; i < 30; ++i) {
@@ -62,6 +71,18 @@ Program random_program(std::mt19937& rng, const char* slope) {
     } else if (k == 6) {
       p.text += fmt::format("G0 X{:.3f} Y{:.3f}\n", nx, ny);
       to(nx, ny);
+    } else if (k == 4) {  // polyline: short blocks at one feed, nearly straight on
+      const int n = 6 + static_cast<int>(7 * unit(rng));
+      const double f = feed(rng);
+      double ang = 2 * std::numbers::pi * unit(rng);
+      for (int s = 0; s < n; ++s) {
+        ang += (unit(rng) - 0.5) * 4 * std::numbers::pi / 180;
+        const double len = 0.3 + 2.7 * unit(rng);
+        const double px = std::clamp(x + len * std::cos(ang), -45.0, 45.0);
+        const double py = std::clamp(y + len * std::sin(ang), -45.0, 45.0);
+        p.text += fmt::format("G1 X{:.4f} Y{:.4f} F{:.0f}\n", px, py, f);
+        to(px, py, 10000);
+      }
     } else if (k == 5) {  // tangent pair: a line, then a quarter circle leaving along it
       const double len = 5 + 20 * unit(rng), ang = 2 * std::numbers::pi * unit(rng), r = 3 + 10 * unit(rng);
       const double dx = std::cos(ang), dy = std::sin(ang);
@@ -94,7 +115,7 @@ AxisBound bound(const config::AxisConfig& ax, double shape) {
           shape * g.rapid_accel_mm_s2 / g.tr_rapid_s};
 }
 
-void check_profile(const char* slope, double shape, std::uint32_t seed0) {
+void check_profile(const char* slope, double shape, std::uint32_t seed0, bool across_blocks = false) {
   const char* env = std::getenv("NCK_PROPERTY_COUNT");
   const int count = env ? std::atoi(env) : 10;
   const std::string root = NCK_SOURCE_DIR;
@@ -103,7 +124,7 @@ void check_profile(const char* slope, double shape, std::uint32_t seed0) {
   std::array<AxisBound, 2> ax{bound(mill.machine->axes.at(0), shape), bound(mill.machine->axes.at(1), shape)};
   const auto dir = std::filesystem::temp_directory_path() / ("nck_slope_prop_" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
-  int passed_at_speed = 0, transitions = 0;
+  int passed_at_speed = 0, transitions = 0, accelerating = 0;
   for (int n = 0; n < count; ++n) {
     std::mt19937 rng(seed0 + static_cast<std::uint32_t>(n));
     const Program prog = random_program(rng, slope);
@@ -128,6 +149,8 @@ void check_profile(const char* slope, double shape, std::uint32_t seed0) {
       block_start.push_back(starts);
       // At speed: the path moved in the cycle before the block started.
       if (starts && v_before > 0) ++passed_at_speed;
+      // The path's speed still changing as a block begins (HSC's chains).
+      if (starts && v_before > 0 && std::abs(ch.path_velocity_mm_s - v_before) > kCarriedA * kDt) ++accelerating;
       v_before = ch.path_velocity_mm_s;
       transitions += starts;
     }
@@ -162,6 +185,13 @@ void check_profile(const char* slope, double shape, std::uint32_t seed0) {
   std::filesystem::remove_all(dir);
   // Not a run of exact stops: a good share of the block starts at speed.
   EXPECT_GT(passed_at_speed, transitions / 5) << passed_at_speed << " of " << transitions;
+  // Per block the acceleration is 0 at every block end; HSC carries it on
+  // inside its chains (the polylines mostly).
+  if (across_blocks) {
+    EXPECT_GT(accelerating, transitions / 50) << accelerating << " of " << transitions;
+  } else {
+    EXPECT_EQ(accelerating, 0) << transitions;
+  }
 }
 
 TEST(SlopeProperty, TrapezHoldsVelocityAccelerationAndJerkEveryCycle) { check_profile("TRAPEZ", 1.0, 3000); }
@@ -169,6 +199,10 @@ TEST(SlopeProperty, TrapezHoldsVelocityAccelerationAndJerkEveryCycle) { check_pr
 TEST(SlopeProperty, Sin2HoldsVelocityAccelerationAndJerkEveryCycle) {
   check_profile("SIN2", std::numbers::pi / 2, 4000);
 }
+
+// HSC: the acceleration runs on across the transitions of its chains; the
+// same bounds (trapezoidal ramps, the longest ramp times of the axes).
+TEST(SlopeProperty, HscHoldsVelocityAccelerationAndJerkEveryCycle) { check_profile("HSC", 1.0, 5000, true); }
 
 }  // namespace
 }  // namespace nck::kernel

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <cstdlib>
 #include <new>
 
@@ -183,6 +184,32 @@ TEST(ZeroAllocation, JerkLimitedSpindlesRunThroughTickWithoutHeap) {
   EXPECT_GT(run_counting(ex), 1000u);
   EXPECT_EQ(g_allocations.load(), 0u);
   fs::remove_all(dir);
+}
+
+// HSC's chains (#SLOPE [TYPE=HSC]): 400 short collinear and slightly
+// turning blocks, more than the command queue holds, so the chain grows as
+// preparation queues more, then a corner and an arc; through tick without
+// heap.
+TEST(ZeroAllocation, HscChainsRunThroughTickWithoutHeap) {
+  namespace fs = std::filesystem;
+  const fs::path file = fs::temp_directory_path() / ("nck_zero_alloc_hsc_" + std::to_string(getpid()) + ".nc");
+  std::ofstream out(file);
+  out << "N1 G17 G90 G0 X0 Y0 Z0\n#SLOPE [TYPE=HSC]\n";
+  double x = 0, y = 0, angle = 0;
+  for (int i = 0; i < 400; ++i) {
+    angle += (i % 40 < 20 ? 0.002 : -0.002);
+    x += 0.5 * std::cos(angle);
+    y += 0.5 * std::sin(angle);
+    out << "G1 X" << x << " Y" << y << " F6000\n";
+  }
+  out << "G1 Y" << y + 20 << "\nG2 X" << x + 20 << " I10 J0\nM30\n";
+  out.close();
+  const std::string program = file.string();
+  g_allocations = 0;
+  const Example ex{"examples/mill", {program.c_str()}};
+  EXPECT_GT(run_counting(ex), 1000u);
+  EXPECT_EQ(g_allocations.load(), 0u);
+  fs::remove(file);
 }
 
 // Preparation in its own thread (--prep-thread): the cycle thread still

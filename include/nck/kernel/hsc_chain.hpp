@@ -1,0 +1,35 @@
+#pragma once
+// HSC (#SLOPE [TYPE=HSC], P-CHAN-00071 = 3, "trapezoidal across blocks"):
+// the motion that starts and the queued motions after it that the path
+// runs through at its speed form one chain, which the profile plans as one
+// jerk-limited move (motion::PathChain): the acceleration goes on across
+// the transitions inside it instead of returning to 0 at every block end.
+#include <cstddef>
+
+#include "nck/kernel/command.hpp"
+#include "nck/kernel/queues.hpp"
+#include "nck/motion/path_profile.hpp"
+
+namespace nck::kernel {
+
+struct HscChain {
+  motion::PathChain chain{};  // length 0: the motion alone (no successor joins)
+  // The chain reaches the end of the queue: more queued commands may make
+  // it longer (and its end faster), so it is looked at again when the
+  // queue grows (also while no motion has joined yet).
+  bool open = false;
+  std::size_t queued_seen = 0;  // queued.size() when it was built
+};
+
+// The chain that starts with `current` (length_mm of its segment, cruise
+// min(v_cmd, v_max)). A motion joins while every transition on the way is
+// passable at the chain's speed: the corner and feed rules let it pass at
+// the speed of its motions (Motion::passes_at_cruise) and the joining
+// motion's cruise is at least the current motion's; HSC, no
+// transformation, no probing, only blocks without motion between. The chain's limits are its motions'
+// smallest accelerations and speed limits and longest ramp times. It ends
+// at its last motion's planned end speed, lowered by the braking reserve
+// of what is queued after it; at the end of the queue, at 0. rt
+HscChain hsc_chain(const Motion& current, double length_mm, const CommandQueue& queued, double dt_s) noexcept;
+
+}  // namespace nck::kernel
