@@ -1,6 +1,7 @@
 #include "output_writers.hpp"
 
-
+#include <charconv>
+#include <cmath>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -159,6 +160,36 @@ void EventWriter::write_line(const std::string& line) {
 }
 
 std::string EventWriter::line(const kernel::Event& e, const RunNames& names) { return dump_json(object(e, names)); }
+
+const std::string& BlockEventText::quoted_file(std::size_t ch, std::uint16_t id, const RunNames& names) {
+  const auto key = static_cast<std::uint32_t>(ch << 16 | id);
+  for (const auto& [k, text] : files_)
+    if (k == key) return text;
+  files_.emplace_back(key, dump_json(json(names.file(ch, id))));
+  return files_.back().second;
+}
+
+const std::string& BlockEventText::line(const kernel::Event& e, const RunNames& names) {
+  std::string& s = line_;
+  s.assign("{\"t\":");
+  char num[64];
+  // nlohmann's own number writer: the digits dump_json gives the same double
+  if (std::isfinite(e.t_s)) s.append(num, nlohmann::detail::to_chars(num, num + sizeof num, e.t_s));
+  else s += "null";
+  if (e.channel > 0) {
+    s += ",\"ch\":";
+    s.append(num, std::to_chars(num, num + sizeof num, unsigned{e.channel}).ptr);
+  }
+  s += ",\"ev\":\"block\",\"line\":";
+  s.append(num, std::to_chars(num, num + sizeof num, e.line).ptr);
+  s += ",\"n\":";
+  if (e.has_n) s.append(num, std::to_chars(num, num + sizeof num, e.n).ptr);
+  else s += "null";
+  s += ",\"file\":";
+  s += quoted_file(e.channel > 0 ? e.channel - 1u : 0u, e.file_id, names);
+  s += '}';
+  return s;
+}
 
 nlohmann::ordered_json EventWriter::object(const kernel::Event& e, const RunNames& names) {
   json j = base_event(e);

@@ -57,6 +57,20 @@ class EventWriter {
   OutputFile file_;
 };
 
+// Block events, the bulk of every events file (one per NC block), written
+// straight as text: the same bytes as EventWriter::line (a test compares
+// them) without building a JSON object per block. The file names come
+// quoted from a cache (a program has few files).
+class BlockEventText {
+ public:
+  const std::string& line(const kernel::Event& e, const RunNames& names);
+
+ private:
+  const std::string& quoted_file(std::size_t ch, std::uint16_t id, const RunNames& names);
+  std::vector<std::pair<std::uint32_t, std::string>> files_;  // (channel << 16 | file id, quoted name)
+  std::string line_;
+};
+
 // A trace row's values in the order of TraceWriter::column_names, each with
 // the format the CSV gives it: the one walk over a cycle's output that the
 // CSV file and the Python module's numpy columns share.

@@ -33,12 +33,13 @@ struct RunOutputs {
   // Events are rendered only when an output wants them.
   bool wants_events() const { return keep_events || events.is_open() || report.enabled(); }
   void event(nlohmann::ordered_json&& e, bool is_error) {
-    if (events.is_open() || report.enabled()) {
-      const std::string line = dump_json(e);
-      events.write_line(line);
-      report.event(line, is_error);
-    }
+    if (events.is_open() || report.enabled()) event_line(dump_json(e), is_error);
     if (keep_events) event_list.push_back(std::move(e));
+  }
+  // An event already written as its line (block events: BlockEventText).
+  void event_line(const std::string& line, bool is_error) {
+    events.write_line(line);
+    report.event(line, is_error);
   }
 };
 

@@ -80,6 +80,7 @@ class Simulation {
   std::unique_ptr<sim::DryRun> run_;
   RunOutputs out_;
   RunNames names_;
+  BlockEventText block_text_;  // block events written without a JSON object
   Progress progress_;
   std::optional<StopAtWatch> stop_at_;
   std::unique_ptr<kernel::TickOutput> tick_;
