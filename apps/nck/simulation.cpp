@@ -215,8 +215,9 @@ void Simulation::cycle() {
   if (opt_.track) opt_.track->take(o);
   record_events(o);
   report_dropped_events(o);
-  report_refusals(o);
-  out_.trace.write(index, o);
+  // tested here: most cycles have neither (nor their code in the cache)
+  if (run_->has_refusals()) report_refusals(o);
+  if (out_.trace.is_open()) out_.trace.write(index, o);
   if (!out_.trace_memory.write(index, o)) trace_full_ = true;
   out_.report.sample(index, o, names_);
   if (stop_at_ && stop_at_->reached(o)) stop_at_reached_ = true;

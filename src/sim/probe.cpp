@@ -2,8 +2,7 @@
 
 namespace nck::sim {
 
-bool Probe::watch(const Positions& now) noexcept {
-  if (axis_ < 0) return false;
+bool Probe::watch_axis(const Positions& now) noexcept {
   const auto a = static_cast<std::size_t>(axis_);
   const double p = switch_pos_mm_, d = now[a] - last_[a];
   const bool switched = started_ && d != 0 && (last_[a] - p) * (now[a] - p) <= 0;

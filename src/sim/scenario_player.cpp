@@ -3,12 +3,6 @@
 
 namespace nck::sim {
 
-std::span<const sim::ScenarioAction> ScenarioPlayer::due(double now_s) noexcept {
-  const std::size_t first = next_;
-  while (next_ < actions_.size() && actions_[next_].t_s <= now_s + kTimeEps_s) ++next_;
-  return actions_.subspan(first, next_ - first);
-}
-
 void ScenarioPlayer::entered(std::uint8_t ch, kernel::ProgramState st, double t_s) noexcept {
   for (std::size_t i = 0; i < triggered_.size(); ++i)
     if (due_s_[i] == kNotArmed && triggered_[i].channel == ch && triggered_[i].trigger == st) {

@@ -10,10 +10,10 @@ namespace {
 SpindleResult err(ErrorId id) { return SpindleResult{id, false}; }
 }  // namespace
 
-void SpindleAxis::set_override_pct(double pct) noexcept {
+void SpindleAxis::change_override_pct(double pct) noexcept {
   if (!std::isfinite(pct)) return;  // a broken HLI value keeps the last one
   const double clamped = std::clamp(pct, 0.0, 200.0);
-  if (clamped == speed_.override_pct) return;  // the PLC writes it every cycle
+  if (clamped == speed_.override_pct) return;
   speed_.override_pct = clamped;
   update_status();
 }

@@ -109,6 +109,7 @@ class DryRun {
     std::uint8_t channel = 1;
     Diagnostic diagnostic;
   };
+  bool has_refusals() const noexcept { return !refusals_.empty(); }
   std::vector<Refusal> take_refusals() { return std::exchange(refusals_, {}); }
   // An operator's action (the Python session; from the thread that runs
   // the cycles): MDI text goes to its channel's preparation when the
@@ -158,12 +159,19 @@ class DryRun {
   };
   std::vector<ChannelQueues> queues_;
   void prepare_now();
-  // Every channel's preparation would return at once: no MDI line, no skip
-  // levels to hand over, and nothing changed since a call that did nothing.
+  // Preparation has nothing to do now: no MDI line, no skip levels to hand
+  // over, and in each channel nothing changed since a call that did nothing,
+  // or its queue still holds more than the kernel looks ahead (as the
+  // preparation thread keeps it). Refilling in bursts of a few blocks, not
+  // one block each time the kernel takes one, keeps the cycle's code in the
+  // instruction cache across cycles and the decoder's across blocks.
   bool quiet() const noexcept {
     if (!sim_->mdi_requests().empty() || sim_->skip_levels_used()) return false;
-    for (std::size_t ch = 0; ch < queues_.size(); ++ch)
-      if (!preps_[ch].idle(*queues_[ch].commands, *queues_[ch].feedback, kernel_->channel_done(ch))) return false;
+    for (std::size_t ch = 0; ch < queues_.size(); ++ch) {
+      const ChannelQueues& q = queues_[ch];
+      const bool ahead = q.commands->size() > kernel::kMaxLookAheadDepth && q.feedback->empty();
+      if (!ahead && !preps_[ch].idle(*q.commands, *q.feedback, kernel_->channel_done(ch))) return false;
+    }
     return true;
   }
   std::unique_ptr<kernel::TickInput> in_;

@@ -23,10 +23,11 @@ class Probe {
 
   // rt: the set points of the cycle just computed. True when the probe
   // switched during it; latched() then holds the positions.
-  bool watch(const Positions& now) noexcept;
+  bool watch(const Positions& now) noexcept { return axis_ >= 0 && watch_axis(now); }
   const Positions& latched() const noexcept { return latched_; }
 
  private:
+  bool watch_axis(const Positions& now) noexcept;
   int axis_ = -1;
   double switch_pos_mm_ = 0;
   std::size_t n_axes_ = 0;

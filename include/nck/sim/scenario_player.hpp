@@ -22,7 +22,11 @@ class ScenarioPlayer {
   explicit ScenarioPlayer(const sim::Scenario& sc)
       : actions_(sc.actions), triggered_(sc.triggered), due_s_(sc.triggered.size(), kNotArmed) {}
 
-  std::span<const sim::ScenarioAction> due(double now_s) noexcept;
+  std::span<const sim::ScenarioAction> due(double now_s) noexcept {
+    const std::size_t first = next_;
+    while (next_ < actions_.size() && actions_[next_].t_s <= now_s + kTimeEps_s) ++next_;
+    return actions_.subspan(first, next_ - first);
+  }
   // Channel ch (1-based) entered program state st in the cycle at t_s. rt
   void entered(std::uint8_t ch, kernel::ProgramState st, double t_s) noexcept;
   // Calls f(action) for each armed triggered line whose time has come. rt

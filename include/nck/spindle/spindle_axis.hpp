@@ -39,7 +39,9 @@ class SpindleAxis {
   SpindleResult start_gear_change(std::uint32_t stage) noexcept;      // M40..M45 -> 1..6
   SpindleResult finish_gear_change() noexcept;                         // PLC shifted
   SpindleResult load_gear_data(std::uint32_t stage) noexcept;         // G112 (standstill)
-  void set_override_pct(double pct) noexcept;                         // HLI, clamped 0..200
+  void set_override_pct(double pct) noexcept {                       // HLI, clamped 0..200
+    if (pct != speed_.override_pct) change_override_pct(pct);          // the PLC writes it every cycle
+  }
   void suppress_override() noexcept;                                  // G167 alone
   SpindleResult set_accel_weight_pct(double pct) noexcept;            // G130
   SpindleResult feedforward_on() noexcept;                            // G135
@@ -81,6 +83,7 @@ class SpindleAxis {
   bool configured() const noexcept { return configured_; }
 
  private:
+  void change_override_pct(double pct) noexcept;
   // commands.cpp
   SpindleResult guard() const noexcept;
   SpindleResult fail(ErrorId id) noexcept;
