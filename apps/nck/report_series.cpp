@@ -56,8 +56,9 @@ void append_number(std::string& out, double v, int decimals) {
 }
 
 void EnvelopeSeries::start(std::size_t series_count, double cycle_s) {
-  series_.assign(series_count, {});
-  for (auto& s : series_) s.reserve(kMaxBuckets);
+  n_ = series_count;
+  buckets_.clear();
+  buckets_.reserve(kMaxBuckets * n_);
   cycle_s_ = cycle_s;
 }
 
@@ -66,24 +67,27 @@ void EnvelopeSeries::add(std::uint64_t cycle, std::span<const double> values) {
     first_cycle_ = cycle;
     started_ = true;
   }
-  const std::uint64_t rel = cycle - first_cycle_;
-  while (rel / stride_ >= kMaxBuckets) merge_pairs();
-  const std::size_t k = rel / stride_;
   const auto value = [&](std::size_t s) { return static_cast<float>(s < values.size() ? values[s] : 0.0); };
-  if (k >= count_) {  // a new bucket: every series has count_ buckets after this
+  const std::uint64_t rel = cycle - first_cycle_;
+  if (rel >= next_start_) {  // a new bucket (or, after a jump, several)
+    while (rel / stride_ >= kMaxBuckets) merge_pairs();
+    const std::size_t k = rel / stride_;
     count_ = k + 1;
-    for (std::size_t s = 0; s < series_.size(); ++s) {
-      series_[s].resize(count_, Bucket{});
+    next_start_ = (k + 1) * stride_;
+    buckets_.resize(count_ * n_, Bucket{});
+    Bucket* row = &buckets_[k * n_];
+    for (std::size_t s = 0; s < n_; ++s) {
       const float v = value(s);
-      series_[s][k] = {v, v, true};
+      row[s] = {v, v, true};
     }
     return;
   }
   // Most cycles: the envelope of the bucket under way widens (one stride in
-  // 4,096 buckets is hundreds of cycles).
-  for (std::size_t s = 0; s < series_.size(); ++s) {
+  // 4,096 buckets is hundreds of cycles). A bucket's series lie side by side.
+  Bucket* row = &buckets_[(count_ - 1) * n_];
+  for (std::size_t s = 0; s < n_; ++s) {
     const float v = value(s);
-    Bucket& x = series_[s][k];
+    Bucket& x = row[s];
     if (v < x.min) {
       x.min = v;
       x.min_first = false;  // the minimum now comes after the maximum
@@ -96,25 +100,27 @@ void EnvelopeSeries::add(std::uint64_t cycle, std::span<const double> values) {
 }
 
 void EnvelopeSeries::merge_pairs() {
-  for (auto& b : series_) {
-    std::size_t out = 0;
-    for (std::size_t i = 0; i < b.size(); i += 2, ++out) {
-      if (i + 1 >= b.size()) {
-        b[out] = b[i];
+  const std::size_t merged = (count_ + 1) / 2;
+  for (std::size_t out = 0; out < merged; ++out)
+    for (std::size_t s = 0; s < n_; ++s) {
+      const std::size_t i = 2 * out;
+      const Bucket a = buckets_[i * n_ + s];
+      if (i + 1 >= count_) {
+        buckets_[out * n_ + s] = a;
         continue;
       }
-      const Bucket a = b[i], c = b[i + 1];
+      const Bucket c = buckets_[(i + 1) * n_ + s];
       const bool min_in_a = a.min <= c.min, max_in_a = a.max >= c.max;
       Bucket m{std::min(a.min, c.min), std::max(a.max, c.max), true};
       if (min_in_a && max_in_a) m.min_first = a.min_first;
       else if (!min_in_a && !max_in_a) m.min_first = c.min_first;
       else m.min_first = min_in_a;
-      b[out] = m;
+      buckets_[out * n_ + s] = m;
     }
-    b.resize(out);
-  }
-  count_ = (count_ + 1) / 2;
+  count_ = merged;
+  buckets_.resize(count_ * n_);
   stride_ *= 2;
+  next_start_ = count_ * stride_;
 }
 
 std::string EnvelopeSeries::json(std::span<const int> decimals) const {
@@ -132,12 +138,12 @@ std::string EnvelopeSeries::json(std::span<const int> decimals) const {
     }
   }
   s += "],\"v\":[";
-  for (std::size_t i = 0; i < series_.size(); ++i) {
+  for (std::size_t i = 0; i < n_; ++i) {
     if (i > 0) s += ',';
     s += '[';
     const int d = i < decimals.size() ? decimals[i] : 3;
-    for (std::size_t k = 0; k < count_ && k < series_[i].size(); ++k) {
-      const Bucket& b = series_[i][k];
+    for (std::size_t k = 0; k < count_; ++k) {
+      const Bucket& b = buckets_[k * n_ + i];
       if (k > 0) s += ',';
       append_number(s, b.min_first ? b.min : b.max, d);
       if (pairs) {

@@ -34,9 +34,10 @@ class EnvelopeSeries {
     bool min_first = true;
   };
   void merge_pairs();
-  std::vector<std::vector<Bucket>> series_;
-  std::size_t count_ = 0;
+  std::vector<Bucket> buckets_;  // bucket k's series s at k * n_ + s
+  std::size_t n_ = 0, count_ = 0;
   std::uint64_t stride_ = 1, first_cycle_ = 0;
+  std::uint64_t next_start_ = 0;  // the cycle (relative) where the next bucket starts
   bool started_ = false;
   double cycle_s_ = 0.001;
 };

@@ -160,6 +160,16 @@ std::uint16_t ReportWriter::file_index(const std::string& name) {
   return id;
 }
 
+// The report's index of a program file, remembered per decoder file id (a
+// block event names its file by that id: looked up by name once per file).
+std::uint16_t ReportWriter::file_of(Channel& ch, std::size_t c, std::uint16_t id, const RunNames& names) {
+  if (id < ch.file_of_id.size() && ch.file_of_id[id] != kNoFile) return ch.file_of_id[id];
+  const std::uint16_t index = file_index(names.file(c, id));
+  if (ch.file_of_id.size() <= id) ch.file_of_id.resize(id + 1u, kNoFile);
+  ch.file_of_id[id] = index;
+  return index;
+}
+
 const std::string& ReportWriter::line_text(std::uint16_t file, std::uint32_t line) const {
   static const std::string none;
   if (file >= files_.size()) return none;
@@ -185,7 +195,7 @@ void ReportWriter::take(const kernel::Event& e, const RunNames& names) {
   };
   switch (e.kind) {
     case K::block: {
-      ch.file = file_index(names.file(c, e.file_id));
+      ch.file = file_of(ch, c, e.file_id, names);
       ch.line = e.line;
       if (e.message_index != kernel::kNoMessage) take_frame(ch, e.message_index, names);
       scan_g_words(line_text(ch.file, ch.line), ch.motion, ch.plane);
@@ -256,6 +266,10 @@ void ReportWriter::drop_shortest_blocks() {
 // The channel's cause timeline for the time cursor: one entry where the
 // class changes (kMaxListed per channel; beyond, the cursor shows none).
 void ReportWriter::note_cause(Channel& ch, const kernel::ChannelOutput& o, double t_s) {
+  // The name is built only when the cause changes (not in every cycle).
+  const auto reason = o.cause == kernel::CycleCause::wait ? static_cast<int>(o.wait_reason) : -1;
+  if (ch.cause_key && ch.cause_key->first == o.cause && ch.cause_key->second == reason) return;
+  ch.cause_key = {o.cause, reason};
   std::string name = cause_name(o.cause);
   if (o.cause == kernel::CycleCause::wait) name += std::string(" ") + wait_reason_name(o.wait_reason);
   if (o.cause == kernel::CycleCause::feedhold) name += " feedhold";

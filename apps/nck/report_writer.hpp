@@ -92,6 +92,7 @@ class ReportWriter {
     PathDerivatives path_deriv;  // path.a and path.j as --trace-columns computes them
     std::uint32_t line = 0;
     std::uint16_t file = 0;
+    std::vector<std::uint16_t> file_of_id;  // decoder file id -> file_index (kNoFile: not seen yet)
     int motion = 1;   // modal G0..G3 of the block in execution
     int plane = 0;    // G17 / G18 / G19 last programmed (0: none)
     std::string tool = "-";
@@ -112,11 +113,14 @@ class ReportWriter {
     std::vector<double> cause_t;
     std::vector<std::string> cause_name;
     std::string cause_now;
+    std::optional<std::pair<kernel::CycleCause, int>> cause_key;  // cause_now's cause and wait reason
   };
   void add_path_derivative_series(std::size_t c);
   void note_cause(Channel& ch, const kernel::ChannelOutput& o, double t_s);
   void add_mark(Mark m);
   std::uint16_t file_index(const std::string& name);
+  static constexpr std::uint16_t kNoFile = 0xFFFF;
+  std::uint16_t file_of(Channel& ch, std::size_t c, std::uint16_t id, const RunNames& names);
   const std::string& line_text(std::uint16_t file, std::uint32_t line) const;
   void take(const kernel::Event& e, const RunNames& names);
   void take_frame(Channel& ch, std::uint32_t store_index, const RunNames& names);
