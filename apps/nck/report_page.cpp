@@ -296,8 +296,9 @@ std::string ReportWriter::link_table() const {
   return h + "</table></section>";
 }
 
-std::optional<std::string> ReportWriter::write(const std::string& path, double end_s, int exit_code) const {
+std::optional<std::string> ReportWriter::write(const std::string& path, double end_s, int exit_code) {
   if (!enabled_) return std::nullopt;
+  fold_pending();
   OutputFile f;
   if (auto err = f.open(path)) return err;
   std::string title = "nck report";

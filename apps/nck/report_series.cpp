@@ -83,10 +83,12 @@ void EnvelopeSeries::add(std::uint64_t cycle, std::span<const double> values) {
     return;
   }
   // Most cycles: the envelope of the bucket under way widens (one stride in
-  // 4,096 buckets is hundreds of cycles). A bucket's series lie side by side.
+  // 4,096 buckets is hundreds of cycles). A bucket's series lie side by side;
+  // a series without a value keeps its 0, which the bucket holds already.
   Bucket* row = &buckets_[(count_ - 1) * n_];
-  for (std::size_t s = 0; s < n_; ++s) {
-    const float v = value(s);
+  const std::size_t n = std::min(n_, values.size());
+  for (std::size_t s = 0; s < n; ++s) {
+    const auto v = static_cast<float>(values[s]);
     Bucket& x = row[s];
     if (v < x.min) {
       x.min = v;

@@ -135,7 +135,10 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
       decimals_.push_back(4);
     }
   }
-  row_.assign(series_meta_.size(), 0.0);
+  row_size_ = series_meta_.size();
+  pending_.reserve(kFoldEvery);
+  pending_rows_.assign(kFoldEvery * row_size_, 0.0);
+  pending_channels_.assign(kFoldEvery * channels_.size(), {});
   series_.start(series_meta_.size(), cycle_s);
 }
 
@@ -265,14 +268,14 @@ void ReportWriter::drop_shortest_blocks() {
 
 // The channel's cause timeline for the time cursor: one entry where the
 // class changes (kMaxListed per channel; beyond, the cursor shows none).
-void ReportWriter::note_cause(Channel& ch, const kernel::ChannelOutput& o, double t_s) {
+void ReportWriter::note_cause(Channel& ch, kernel::CycleCause cause, kernel::WaitReason wait_reason, double t_s) {
   // The name is built only when the cause changes (not in every cycle).
-  const auto reason = o.cause == kernel::CycleCause::wait ? static_cast<int>(o.wait_reason) : -1;
-  if (ch.cause_key && ch.cause_key->first == o.cause && ch.cause_key->second == reason) return;
-  ch.cause_key = {o.cause, reason};
-  std::string name = cause_name(o.cause);
-  if (o.cause == kernel::CycleCause::wait) name += std::string(" ") + wait_reason_name(o.wait_reason);
-  if (o.cause == kernel::CycleCause::feedhold) name += " feedhold";
+  const auto reason = cause == kernel::CycleCause::wait ? static_cast<int>(wait_reason) : -1;
+  if (ch.cause_key && ch.cause_key->first == cause && ch.cause_key->second == reason) return;
+  ch.cause_key = {cause, reason};
+  std::string name = cause_name(cause);
+  if (cause == kernel::CycleCause::wait) name += std::string(" ") + wait_reason_name(wait_reason);
+  if (cause == kernel::CycleCause::feedhold) name += " feedhold";
   if (name == ch.cause_now || ch.cause_t.size() >= kMaxListed) return;
   ch.cause_now = name;
   ch.cause_t.push_back(t_s);
@@ -303,8 +306,13 @@ void ReportWriter::add_mark(Mark m) {
   if (marks_.size() < kMaxListed) marks_.push_back(std::move(m));
 }
 
+// A cycle is recorded as it comes and folded into the plots in batches:
+// the batch's code then stays in the instruction cache (and the kernel's
+// between batches). Events change what a cycle counts towards (block,
+// tool, line): the batch before them is folded first.
 void ReportWriter::sample(std::uint64_t cycle, const kernel::TickOutput& out, const RunNames& names) {
   if (!enabled_) return;
+  if (!out.events.empty()) fold_pending();
   for (const kernel::Event& e : out.events) {
     take(e, names);
     using K = kernel::EventKind;
@@ -316,36 +324,57 @@ void ReportWriter::sample(std::uint64_t cycle, const kernel::TickOutput& out, co
       add_mark({e.t_s, s, 0, "s", fmt::format("S {:g} rpm programmed", e.value)});
   }
   watch_plc(out.t_s, names);
+  record(cycle, out);
+  if (pending_.size() == kFoldEvery) fold_pending();
+}
+
+void ReportWriter::record(std::uint64_t cycle, const kernel::TickOutput& out) {
+  pending_.push_back({cycle, out.t_s});
+  const std::size_t i = pending_.size() - 1;
+  double* row = &pending_rows_[i * row_size_];
   std::size_t k = 0;
   for (std::size_t c = 0; c < channels_.size(); ++c) {
     Channel& ch = channels_[c];
     const kernel::ChannelOutput& o = out.channels[c];
-    if (o.status == kernel::ChannelStatus::running || o.status == kernel::ChannelStatus::waiting) {
-      if (ch.block) ch.block->time_s += cycle_s_;
-      if (!ch.tool_acc) ch.tool_acc = &tools_[{c, ch.tool}];
-      ch.tool_acc->time_s += cycle_s_;
-    }
-    std::array<double, 3> p{};
-    for (int a = 0; a < 3; ++a)
-      if (ch.axis[a] >= 0) p[a] = o.axis_mcs[static_cast<std::size_t>(ch.axis[a])];
-    ch.path.add(p, ch.line, ch.file, ch.motion == 0, ch.frame, out.t_s);
-    note_cause(ch, o, out.t_s);
-    row_[k++] = o.path_velocity_mm_s * 60.0;
+    PendingChannel& pc = pending_channels_[i * channels_.size() + c];
+    pc.counts = o.status == kernel::ChannelStatus::running || o.status == kernel::ChannelStatus::waiting;
+    for (int a = 0; a < 3; ++a) pc.pos[a] = ch.axis[a] >= 0 ? o.axis_mcs[static_cast<std::size_t>(ch.axis[a])] : 0.0;
+    pc.cause = o.cause;
+    pc.wait_reason = o.wait_reason;
+    row[k++] = o.path_velocity_mm_s * 60.0;
     ch.path_deriv.update(o.path_velocity_mm_s);
-    row_[k++] = ch.path_deriv.a_mm_s2();
-    row_[k++] = ch.path_deriv.j_mm_s3();
-    for (std::size_t j = 0; j < ch.axis_count; ++j) row_[k++] = o.axis_mcs[j];
+    row[k++] = ch.path_deriv.a_mm_s2();
+    row[k++] = ch.path_deriv.j_mm_s3();
+    for (std::size_t j = 0; j < ch.axis_count; ++j) row[k++] = o.axis_mcs[j];
   }
   for (std::size_t s = 0; s < spindles_.size(); ++s) {
-    row_[k++] = out.spindles[s].set_rpm;
-    row_[k++] = out.spindles[s].act_rpm;
+    row[k++] = out.spindles[s].set_rpm;
+    row[k++] = out.spindles[s].act_rpm;
   }
   for (std::size_t c : dist_channels_) {
-    row_[k++] = out.channels[c].dist_sensor_mm;
-    row_[k++] = out.channels[c].dist_offset_mm;
-    row_[k++] = out.channels[c].dist_error_mm;
+    row[k++] = out.channels[c].dist_sensor_mm;
+    row[k++] = out.channels[c].dist_offset_mm;
+    row[k++] = out.channels[c].dist_error_mm;
   }
-  series_.add(cycle, row_);
+}
+
+void ReportWriter::fold_pending() {
+  for (std::size_t i = 0; i < pending_.size(); ++i) {
+    const PendingCycle& p = pending_[i];
+    for (std::size_t c = 0; c < channels_.size(); ++c) {
+      Channel& ch = channels_[c];
+      const PendingChannel& pc = pending_channels_[i * channels_.size() + c];
+      if (pc.counts) {
+        if (ch.block) ch.block->time_s += cycle_s_;
+        if (!ch.tool_acc) ch.tool_acc = &tools_[{c, ch.tool}];
+        ch.tool_acc->time_s += cycle_s_;
+      }
+      ch.path.add(pc.pos, ch.line, ch.file, ch.motion == 0, ch.frame, p.t_s);
+      note_cause(ch, pc.cause, pc.wait_reason, p.t_s);
+    }
+    series_.add(p.cycle, std::span<const double>(&pending_rows_[i * row_size_], row_size_));
+  }
+  pending_.clear();
 }
 
 // A block's map (the PlanStore index in its block event): a new entry in the

@@ -45,8 +45,9 @@ class ReportWriter {
   void sample(std::uint64_t cycle, const kernel::TickOutput& out, const RunNames& names);
   // One line of the event log (the JSON text of an event).
   void event(const std::string& json_line, bool is_error);
-  // The error text when it cannot be written.
-  std::optional<std::string> write(const std::string& path, double end_s, int exit_code) const;
+  // The error text when it cannot be written (the cycles not yet folded in
+  // are folded first).
+  std::optional<std::string> write(const std::string& path, double end_s, int exit_code);
   bool enabled() const { return enabled_; }
   // Time by cause (time_by_cause.hpp's JSON), shown as a stacked bar and
   // tables; each block row gets the page's file index ("fid") of its line.
@@ -116,7 +117,25 @@ class ReportWriter {
     std::optional<std::pair<kernel::CycleCause, int>> cause_key;  // cause_now's cause and wait reason
   };
   void add_path_derivative_series(std::size_t c);
-  void note_cause(Channel& ch, const kernel::ChannelOutput& o, double t_s);
+  void note_cause(Channel& ch, kernel::CycleCause cause, kernel::WaitReason wait_reason, double t_s);
+  // Cycles recorded, not yet folded into the plots and tables (sample()).
+  struct PendingChannel {
+    std::array<double, 3> pos{};  // X, Y, Z of the backplot
+    kernel::CycleCause cause = kernel::CycleCause::none;
+    kernel::WaitReason wait_reason{};
+    bool counts = false;  // running or waiting: the cycle counts towards block and tool
+  };
+  struct PendingCycle {
+    std::uint64_t cycle = 0;
+    double t_s = 0;
+  };
+  static constexpr std::size_t kFoldEvery = 64;
+  void record(std::uint64_t cycle, const kernel::TickOutput& out);
+  void fold_pending();
+  std::vector<PendingCycle> pending_;
+  std::vector<PendingChannel> pending_channels_;  // kFoldEvery rows of one per channel
+  std::vector<double> pending_rows_;              // kFoldEvery rows of row_size_ values
+  std::size_t row_size_ = 0;
   void add_mark(Mark m);
   std::uint16_t file_index(const std::string& name);
   static constexpr std::uint16_t kNoFile = 0xFFFF;
@@ -153,7 +172,7 @@ class ReportWriter {
   std::vector<std::size_t> dist_channels_;  // channels with 3D distance control (3 series each)
   std::vector<std::string> series_meta_;  // JSON objects, in EnvelopeSeries order
   std::vector<int> decimals_;
-  std::vector<double> row_;
+
   EnvelopeSeries series_;
   mutable std::vector<SourceLines> files_;  // mutable: reading a line moves the file's stream and cache
   mutable std::size_t open_files_ = 0;       // of files_ (at most 16)
