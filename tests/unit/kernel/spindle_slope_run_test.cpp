@@ -16,6 +16,7 @@
 #include <fstream>
 #include <numbers>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include <unistd.h>
@@ -57,13 +58,13 @@ constexpr const char* kProgram =
     "N60 #SLOPE [TYPE=TRAPEZ]\nN70 G1 C90 F30000\nN80 G0 C0\nN90 #CAX OFF\nN100 S1000 M4\nN110 M5\nN120 M30\n";
 constexpr std::uint32_t kCaxLine = 5, kG1Line = 8, kCaxOffLine = 10;
 
-SlopeRun run_program(int slope_type) {
+SlopeRun run_program(int slope_type, const std::string& program = kProgram) {
   const auto dir = mill_with_slope(slope_type);
   SlopeRun r;
   const config::LoadResult loaded = config::load_machine(dir);
   EXPECT_TRUE(loaded.ok());
   if (!loaded.ok()) return r;
-  std::ofstream(dir / "p.nc") << kProgram;
+  std::ofstream(dir / "p.nc") << program;
   auto created = sim::DryRun::create(*loaded.machine, {dir / "p.nc"});
   EXPECT_TRUE(created.has_value());
   if (!created) return r;
@@ -112,6 +113,16 @@ TEST(SpindleSlopeRun, TrapezAndSin2RunUpInTheClosedFormTimeWithinTheJerk) {
     EXPECT_LE(max_jerk_spindle(r), shape * 400'000 * (1 + 1e-6));
     EXPECT_GT(max_jerk_spindle(r), shape * 400'000 * 0.9);
   }
+}
+
+// G132/G133 weight the feed ramps of path motions only (TF5200: feed
+// interpolation, not single-axis slopes): G133=50 would make S1's run-up
+// 1.8 + 0.025 = 1.825 s; it stays 1.85 s.
+TEST(SpindleSlopeRun, RampTimeWeightingLeavesTheSpindleAlone) {
+  std::string program = kProgram;
+  program.insert(program.find("N20"), "N15 #SLOPE [TYPE=TRAPEZ]\nN16 G133=50\n");
+  const SlopeRun r = run_program(1, program);
+  EXPECT_LE(std::abs(run_up_cycles(r.s1_deg_s) - 1850), 5) << run_up_cycles(r.s1_deg_s);
 }
 
 TEST(SpindleSlopeRun, StepRunsUpInVOverA) {
