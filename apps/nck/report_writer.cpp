@@ -135,10 +135,7 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
       decimals_.push_back(4);
     }
   }
-  row_size_ = series_meta_.size();
-  pending_.reserve(kFoldEvery);
-  pending_rows_.assign(kFoldEvery * row_size_, 0.0);
-  pending_channels_.assign(kFoldEvery * channels_.size(), {});
+  pending_.start(channels_.size(), series_meta_.size());
   series_.start(series_meta_.size(), cycle_s);
 }
 
@@ -325,18 +322,17 @@ void ReportWriter::sample(std::uint64_t cycle, const kernel::TickOutput& out, co
   }
   watch_plc(out.t_s, names);
   record(cycle, out);
-  if (pending_.size() == kFoldEvery) fold_pending();
+  if (pending_.full()) fold_pending();
 }
 
 void ReportWriter::record(std::uint64_t cycle, const kernel::TickOutput& out) {
-  pending_.push_back({cycle, out.t_s});
-  const std::size_t i = pending_.size() - 1;
-  double* row = &pending_rows_[i * row_size_];
+  const std::size_t i = pending_.add(cycle, out.t_s);
+  double* row = pending_.row(i);
   std::size_t k = 0;
   for (std::size_t c = 0; c < channels_.size(); ++c) {
     Channel& ch = channels_[c];
     const kernel::ChannelOutput& o = out.channels[c];
-    PendingChannel& pc = pending_channels_[i * channels_.size() + c];
+    ReportBatch::ChannelSample& pc = pending_.channel(i, c);
     pc.counts = o.status == kernel::ChannelStatus::running || o.status == kernel::ChannelStatus::waiting;
     for (int a = 0; a < 3; ++a) pc.pos[a] = ch.axis[a] >= 0 ? o.axis_mcs[static_cast<std::size_t>(ch.axis[a])] : 0.0;
     pc.cause = o.cause;
@@ -359,20 +355,20 @@ void ReportWriter::record(std::uint64_t cycle, const kernel::TickOutput& out) {
 }
 
 void ReportWriter::fold_pending() {
-  for (std::size_t i = 0; i < pending_.size(); ++i) {
-    const PendingCycle& p = pending_[i];
+  const ReportBatch& batch = pending_;
+  for (std::size_t i = 0; i < batch.size(); ++i) {
     for (std::size_t c = 0; c < channels_.size(); ++c) {
       Channel& ch = channels_[c];
-      const PendingChannel& pc = pending_channels_[i * channels_.size() + c];
+      const ReportBatch::ChannelSample& pc = batch.channel(i, c);
       if (pc.counts) {
         if (ch.block) ch.block->time_s += cycle_s_;
         if (!ch.tool_acc) ch.tool_acc = &tools_[{c, ch.tool}];
         ch.tool_acc->time_s += cycle_s_;
       }
-      ch.path.add(pc.pos, ch.line, ch.file, ch.motion == 0, ch.frame, p.t_s);
-      note_cause(ch, pc.cause, pc.wait_reason, p.t_s);
+      ch.path.add(pc.pos, ch.line, ch.file, ch.motion == 0, ch.frame, batch.t_s(i));
+      note_cause(ch, pc.cause, pc.wait_reason, batch.t_s(i));
     }
-    series_.add(p.cycle, std::span<const double>(&pending_rows_[i * row_size_], row_size_));
+    series_.add(batch.cycle(i), batch.row(i));
   }
   pending_.clear();
 }

@@ -20,6 +20,7 @@
 #include "nck/kernel/kernel.hpp"
 #include "nck/kernel/tick_io.hpp"
 #include "backplot_axes.hpp"
+#include "report_batch.hpp"
 #include "report_contour.hpp"
 #include "report_series.hpp"
 #include "source_lines.hpp"
@@ -118,24 +119,9 @@ class ReportWriter {
   };
   void add_path_derivative_series(std::size_t c);
   void note_cause(Channel& ch, kernel::CycleCause cause, kernel::WaitReason wait_reason, double t_s);
-  // Cycles recorded, not yet folded into the plots and tables (sample()).
-  struct PendingChannel {
-    std::array<double, 3> pos{};  // X, Y, Z of the backplot
-    kernel::CycleCause cause = kernel::CycleCause::none;
-    kernel::WaitReason wait_reason{};
-    bool counts = false;  // running or waiting: the cycle counts towards block and tool
-  };
-  struct PendingCycle {
-    std::uint64_t cycle = 0;
-    double t_s = 0;
-  };
-  static constexpr std::size_t kFoldEvery = 64;
   void record(std::uint64_t cycle, const kernel::TickOutput& out);
   void fold_pending();
-  std::vector<PendingCycle> pending_;
-  std::vector<PendingChannel> pending_channels_;  // kFoldEvery rows of one per channel
-  std::vector<double> pending_rows_;              // kFoldEvery rows of row_size_ values
-  std::size_t row_size_ = 0;
+  ReportBatch pending_;  // cycles recorded, not yet folded into the plots and tables
   void add_mark(Mark m);
   std::uint16_t file_index(const std::string& name);
   static constexpr std::uint16_t kNoFile = 0xFFFF;
@@ -172,7 +158,6 @@ class ReportWriter {
   std::vector<std::size_t> dist_channels_;  // channels with 3D distance control (3 series each)
   std::vector<std::string> series_meta_;  // JSON objects, in EnvelopeSeries order
   std::vector<int> decimals_;
-
   EnvelopeSeries series_;
   mutable std::vector<SourceLines> files_;  // mutable: reading a line moves the file's stream and cache
   mutable std::size_t open_files_ = 0;       // of files_ (at most 16)
