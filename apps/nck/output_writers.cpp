@@ -25,6 +25,29 @@ std::string dump_json(const nlohmann::ordered_json& j, int indent) {
   return j.dump(indent, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
+std::string json_quoted(std::string_view text) {
+  const std::string utf8 = to_utf8(text);
+  std::string out;
+  out.reserve(utf8.size() + 2);
+  out += '"';
+  for (const char c : utf8) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\b': out += "\\b"; break;
+      case '\t': out += "\\t"; break;
+      case '\n': out += "\\n"; break;
+      case '\f': out += "\\f"; break;
+      case '\r': out += "\\r"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04x}", static_cast<unsigned>(c));
+        else out += c;  // UTF-8 bytes pass through, as dump_json leaves them
+    }
+  }
+  out += '"';
+  return out;
+}
+
 std::string RunNames::text(const kernel::Event& e) const {
   if (e.message_index != kernel::kNoMessage && run) return to_utf8(run->message(e.message_index));
   const ErrorInfo* info = find_error(e.id);

@@ -40,6 +40,11 @@ const char* wait_reason_name(kernel::WaitReason r);
 
 // JSON text that never throws (invalid UTF-8 is replaced, not an abort).
 std::string dump_json(const nlohmann::ordered_json& j, int indent = -1);
+// Text as a JSON string literal, the bytes dump_json gives it: made UTF-8
+// (to_utf8), then '"', '\\' and control characters escaped (a report
+// quotes thousands of NC lines; a JSON value for each cost ~3,000
+// instructions).
+std::string json_quoted(std::string_view text);
 
 class EventWriter {
  public:

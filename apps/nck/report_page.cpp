@@ -18,8 +18,6 @@ namespace {
 using json = nlohmann::ordered_json;
 using LineRef = std::pair<std::uint16_t, std::uint32_t>;
 
-std::string quoted(const std::string& s) { return dump_json(json(to_utf8(s))); }
-
 constexpr std::size_t kMaxSummaryBlocks = 300;    // the longest blocks in the table
 // The "lines" object (NC texts for hovers, tables and the program panel),
 // JSON bytes: 1.5 MiB since the 3D view's 0.55 MB bundle joined the page
@@ -79,7 +77,7 @@ std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const 
     const bool has_y = ch.axis[1] >= 0;
     const char* plane = ch.plane == 18 || (ch.plane == 0 && !has_y) ? "XZ" : ch.plane == 19 ? "YZ" : "XY";
     s += fmt::format(R"({}{{"n":{},"plane":"{}","axes":[{},{},{}],"has":[{},{},{}],"min":[)", c > 0 ? "," : "", c + 1,
-                     plane, quoted(ch.axis_name[0]), quoted(ch.axis_name[1]), quoted(ch.axis_name[2]), ch.axis[0] >= 0,
+                     plane, json_quoted(ch.axis_name[0]), json_quoted(ch.axis_name[1]), json_quoted(ch.axis_name[2]), ch.axis[0] >= 0,
                      ch.axis[1] >= 0, ch.axis[2] >= 0);
     for (int a = 0; a < 3; ++a) {
       if (a > 0) s += ',';
@@ -99,7 +97,7 @@ std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const 
     s += ",\"rapid\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += p.rapid ? '1' : '0'; });
     s += ",\"t\":" + array_of(pts, [](std::string& o, const PathPoint& p) { append_number(o, p.t_s, 4); });
     s += ",\"cause_t\":" + array_of(ch.cause_t, [](std::string& o, double t) { append_number(o, t, 4); });
-    s += ",\"cause\":" + array_of(ch.cause_name, [](std::string& o, const std::string& n) { o += quoted(n); });
+    s += ",\"cause\":" + array_of(ch.cause_name, [](std::string& o, const std::string& n) { o += json_quoted(n); });
     s += ",\"limits\":" + limits_json(ch);
     s += ",\"frames\":" + frames_json(ch);
     if (ch.frames.size() > 1)  // which map each point is in; all the first one otherwise
@@ -189,7 +187,7 @@ std::string ReportWriter::summary_json(std::vector<LineRef>& lines_used) const {
   bool first = true;
   for (const auto& [key, acc] : tools_) {
     s += fmt::format(R"({}{{"ch":{},"tool":{},"count":{},"time_s":)", first ? "" : ",", key.first + 1,
-                     quoted(key.second), acc.count);
+                     json_quoted(key.second), acc.count);
     append_number(s, acc.time_s, 4);
     s += "}";
     first = false;
@@ -200,25 +198,25 @@ std::string ReportWriter::summary_json(std::vector<LineRef>& lines_used) const {
 std::string ReportWriter::data_json(double end_s, int exit_code) const {
   std::vector<LineRef> lines_used;
   std::string s = "{\"meta\":{";
-  s += fmt::format(R"("machine":{},"plc":{},"programs":{},"end_s":)", quoted(machine_), quoted(plc_),
-                   array_of(programs_, [](std::string& o, const std::string& p) { o += quoted(p); }));
+  s += fmt::format(R"("machine":{},"plc":{},"programs":{},"end_s":)", json_quoted(machine_), json_quoted(plc_),
+                   array_of(programs_, [](std::string& o, const std::string& p) { o += json_quoted(p); }));
   append_number(s, end_s, 4);
   s += fmt::format(R"(,"exit_code":{},"end":{},"cycle_s":{},"errors":{},"warnings":{},"stride":{},"c_axis":{}}})",
-                   exit_code, quoted(end_reason_), cycle_s_, errors_, warnings_, series_.stride(), c_axis_used_);
-  s += ",\"files\":" + array_of(files_, [](std::string& o, const SourceLines& f) { o += quoted(f.name()); });
-  s += ",\"spindles\":" + array_of(spindles_, [](std::string& o, const std::string& n) { o += quoted(n); });
+                   exit_code, json_quoted(end_reason_), cycle_s_, errors_, warnings_, series_.stride(), c_axis_used_);
+  s += ",\"files\":" + array_of(files_, [](std::string& o, const SourceLines& f) { o += json_quoted(f.name()); });
+  s += ",\"spindles\":" + array_of(spindles_, [](std::string& o, const std::string& n) { o += json_quoted(n); });
   s += ",\"series\":" + array_of(series_meta_, [](std::string& o, const std::string& m) { o += m; });
   s += ",\"ts\":" + series_.json(decimals_);
   s += ",\"channels\":" + channels_json(lines_used);
   s += ",\"waits\":" + array_of(waits_, [&](std::string& o, const Wait& w) {
     o += fmt::format(R"({{"ch":{},"t0":{},"t1":{},"reason":{},"fn":{},"spindle":{},"sync":{},"file":{},"line":{}}})",
-                     w.ch, w.t0, w.t1 < 0 ? end_s : w.t1, quoted(w.reason), quoted(w.fn), quoted(w.spindle),
-                     quoted(w.sync), w.file, w.line);
+                     w.ch, w.t0, w.t1 < 0 ? end_s : w.t1, json_quoted(w.reason), json_quoted(w.fn), json_quoted(w.spindle),
+                     json_quoted(w.sync), w.file, w.line);
     lines_used.emplace_back(w.file, w.line);
   });
   s += ",\"marks\":" + array_of(marks_, [](std::string& o, const Mark& m) {
     o += fmt::format(R"({{"t":{},"spindle":{},"ch":{},"kind":{},"text":{}}})", m.t, m.ch ? -1 : static_cast<int>(m.spindle),
-                     m.ch, quoted(m.kind), quoted(m.text));
+                     m.ch, json_quoted(m.kind), json_quoted(m.text));
   });
   s += ",\"diagnostics\":" + array_of(diagnostics_, [](std::string& o, const std::string& l) { o += l; });
   s += ",\"events\":" + array_of(events_, [](std::string& o, const std::string& l) { o += l; });
@@ -254,7 +252,7 @@ std::string ReportWriter::lines_json(const std::vector<LineRef>& lines_used) con
     if (full || !put_already.insert({file, line}).second) return;
     const std::string& text = line_text(file, line);
     if (text.empty()) return;
-    const std::string entry = fmt::format("{}\"{}:{}\":{}", s.size() > 1 ? "," : "", file, line, quoted(text));
+    const std::string entry = fmt::format("{}\"{}:{}\":{}", s.size() > 1 ? "," : "", file, line, json_quoted(text));
     full = s.size() + entry.size() > kMaxLinesJsonBytes;
     if (!full) s += entry;
   };

@@ -8,7 +8,6 @@
 
 #include "backplot_axes.hpp"
 #include "machine_names.hpp"
-#include "nck/core/utf8.hpp"
 #include "nck/sim/dry_run.hpp"
 #include "nck/spindle/spindle_status.hpp"
 #include "output_writers.hpp"
@@ -18,8 +17,6 @@ namespace nck::app {
 namespace {
 
 using json = nlohmann::ordered_json;
-
-std::string quoted(const std::string& s) { return dump_json(json(to_utf8(s))); }
 
 std::string function_text(const kernel::Event& e) {
   using F = plc::TechKind;
@@ -83,8 +80,8 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
       if (ch.axis[a] >= 0) ch.axis_name[a] = columns[col + static_cast<std::size_t>(ch.axis[a])];
     const std::string ch_name = fmt::format("channel {}", c + 1);
     series_meta_.push_back(fmt::format(R"({{"name":{},"unit":"mm/min","panel":{},"kind":"velocity","ch":{}}})",
-                                       quoted(fmt::format("{}path velocity", c > 0 ? fmt::format("{}.", c + 1) : "")),
-                                       quoted(ch_name + ": path velocity"), c + 1));
+                                       json_quoted(fmt::format("{}path velocity", c > 0 ? fmt::format("{}.", c + 1) : "")),
+                                       json_quoted(ch_name + ": path velocity"), c + 1));
     decimals_.push_back(1);
     add_path_derivative_series(c);
     for (std::size_t j = 0; j < axes.size(); ++j) {
@@ -92,8 +89,8 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
       // the C axis of #CAX follows the spindle while it turns: plotted only when #CAX was used
       const bool c_axis = static_cast<int>(j) == m.channels[c].c_axis;
       series_meta_.push_back(fmt::format(R"({{"name":{},"unit":"{}","kind":"{}","panel":{},"ch":{}}})",
-                                         quoted(columns[col + j]), rot ? "deg" : "mm", c_axis ? "c_axis" : "axis",
-                                         quoted(ch_name + (rot ? ": rotary axes" : ": axis positions (MCS)")), c + 1));
+                                         json_quoted(columns[col + j]), rot ? "deg" : "mm", c_axis ? "c_axis" : "axis",
+                                         json_quoted(ch_name + (rot ? ": rotary axes" : ": axis positions (MCS)")), c + 1));
       decimals_.push_back(4);
     }
     col += axes.size();
@@ -118,20 +115,20 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
     spindles_.push_back(spindles[s].name);
     spindle_override_pct_.push_back(100);
     spindle_hold_.emplace_back();
-    const std::string panel = quoted(fmt::format("spindle {}: speed", spindles[s].name));
+    const std::string panel = json_quoted(fmt::format("spindle {}: speed", spindles[s].name));
     series_meta_.push_back(fmt::format(R"({{"name":{},"unit":"rpm","panel":{},"kind":"set_rpm","spindle":{}}})",
-                                       quoted(spindles[s].name + " set"), panel, s));
+                                       json_quoted(spindles[s].name + " set"), panel, s));
     series_meta_.push_back(fmt::format(R"({{"name":{},"unit":"rpm","panel":{},"kind":"act_rpm","spindle":{}}})",
-                                       quoted(spindles[s].name + " actual"), panel, s));
+                                       json_quoted(spindles[s].name + " actual"), panel, s));
     decimals_.push_back(2);
     decimals_.push_back(2);
   }
   for (std::size_t c = 0; c < m.channels.size(); ++c) {  // 3D distance control: sensor, offset, error
     if (!m.channels[c].dist_ctrl_enabled()) continue;
     dist_channels_.push_back(c);
-    const std::string panel = quoted(fmt::format("channel {}: distance control", c + 1));
+    const std::string panel = json_quoted(fmt::format("channel {}: distance control", c + 1));
     for (const char* n : {"dist.sensor", "dist.offset", "dist.error"}) {
-      series_meta_.push_back(fmt::format(R"({{"name":{},"unit":"mm","panel":{},"kind":"dist"}})", quoted(n), panel));
+      series_meta_.push_back(fmt::format(R"({{"name":{},"unit":"mm","panel":{},"kind":"dist"}})", json_quoted(n), panel));
       decimals_.push_back(4);
     }
   }
@@ -143,12 +140,12 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
 // panel, a scale per unit.
 void ReportWriter::add_path_derivative_series(std::size_t c) {
   const std::string prefix = c > 0 ? fmt::format("{}.", c + 1) : std::string();
-  const std::string panel = quoted(fmt::format("channel {}: path acceleration and jerk", c + 1));
+  const std::string panel = json_quoted(fmt::format("channel {}: path acceleration and jerk", c + 1));
   series_meta_.push_back(fmt::format(R"({{"name":{},"unit":"mm/s²","panel":{},"kind":"path_a","ch":{}}})",
-                                     quoted(prefix + "path.a"), panel, c + 1));
+                                     json_quoted(prefix + "path.a"), panel, c + 1));
   decimals_.push_back(1);
   series_meta_.push_back(fmt::format(R"({{"name":{},"unit":"mm/s³","panel":{},"kind":"path_j","ch":{}}})",
-                                     quoted(prefix + "path.j"), panel, c + 1));
+                                     json_quoted(prefix + "path.j"), panel, c + 1));
   decimals_.push_back(0);
 }
 

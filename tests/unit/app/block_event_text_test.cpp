@@ -1,8 +1,10 @@
-// Block events written as text are byte for byte the JSON object's line.
+// Text written as JSON directly (block events, quoted strings) is byte for
+// byte what the JSON library writes.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "nck/core/utf8.hpp"
 #include "nck/output_writers.hpp"
 
 namespace nck::app {
@@ -35,6 +37,14 @@ TEST(BlockEventText, SameBytesAsTheJsonObject) {
     ASSERT_EQ(text.line(e, names), EventWriter::line(e, names)) << t;
   }
   EXPECT_EQ(text.line(block_event(NAN, 1, 1, false, 0), names), EventWriter::line(block_event(NAN, 1, 1, false, 0), names));
+}
+
+TEST(JsonQuoted, SameBytesAsDumpJson) {
+  std::string all;
+  for (int c = 0; c < 256; ++c) all += static_cast<char>(c);  // Latin-1 above 0x7F: to_utf8 converts it
+  const std::string texts[] = {"", "G1 X10 Y-5.5 F1000", "(\"quoted\" \\ back)", "tab\there\r\n", all,
+                               "\xc3\xa4\xc3\xb6\xc3\xbc UTF-8", std::string("nul\0in", 6)};
+  for (const std::string& t : texts) EXPECT_EQ(json_quoted(t), dump_json(nlohmann::ordered_json(to_utf8(t)))) << t;
 }
 
 }  // namespace
