@@ -139,6 +139,11 @@ void PathProfile::limit_first_step(double a_mm_s2) noexcept {
   if (a_mm_s2 >= 0.0) first_acc_mm_s2_ = std::min(first_acc_mm_s2_, a_mm_s2);  // NaN: ignored
 }
 
+void PathProfile::pass_first_step(double a_mm_s2) noexcept {
+  if (!(a_mm_s2 >= 0.0)) return;  // NaN: ignored
+  first_acc_mm_s2_ = first_dec_mm_s2_ = a_mm_s2;
+}
+
 void PathProfile::set_velocity_limit(double v_mm_s) noexcept {
   v_limit_mm_s_ = std::isfinite(v_mm_s) && v_mm_s >= 0.0 ? v_mm_s : -1.0;
 }

@@ -77,6 +77,10 @@ class PathProfile {
   // The first step after start() changes the speed by at most a * dt (a
   // start out of a sharp corner's exact stop; 0 stands still a cycle). rt
   void limit_first_step(double a_mm_s2) noexcept;
+  // Passing in from a fillet (STEP): the first step changes the speed by at
+  // most a * dt (and the segment's own limits), instead of the fillet's
+  // tangential acceleration. rt
+  void pass_first_step(double a_mm_s2) noexcept;
   // Changes the speed at the segment's end while it runs (the kernel's
   // braking reserve: 0 while no successor is queued, the planned v_end once
   // one is). Raising it is always possible; lowering it is only safe while

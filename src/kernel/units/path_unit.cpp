@@ -40,6 +40,7 @@ void PathUnit::note_chain(const HscChain& h) noexcept {
 bool PathUnit::carry_on(const Motion& m) noexcept {
   if (passing_) {
     passing_ = false;
+    if (m.after_fillet && m.start_a_mm_s2) profile_.pass_first_step(*m.start_a_mm_s2);
     velocity_ = profile_.v();
     return true;
   }

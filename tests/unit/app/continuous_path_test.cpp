@@ -259,9 +259,12 @@ TEST(ContinuousPathProperty, BlendedCornersStayWithinPathDevAndLimits) {
 
 // examples/mill/contour_blend.nc: a 20 mm square at F1200 (20 mm/s) with
 // G261, PATH_DEV 0.05. At a right angle the fillet's radius is
-// r = 0.05 / (sqrt(2) - 1) = 0.12071 mm; a fillet gives the turn
-// sqrt(1 - 0.25^2) = 96.8 % of the plane axes' 2500 mm/s^2, so its speed
-// limit is sqrt(0.968 * 2500 * r) = 17.09 mm/s.
+// r = 0.05 / (sqrt(2) - 1) = 0.12071 mm; a fillet gives speeding up on it
+// 25 % of the plane axes' feed acceleration (625 mm/s^2) and the turn what
+// that leaves of 99 % of their a_max (3000 mm/s^2):
+// sqrt(2970^2 - 625^2) = 2903 mm/s^2, so its speed limit is
+// sqrt(2903 * r) = 18.72 mm/s (before issue 30: 96.8 % of the feed
+// acceleration, 17.09 mm/s).
 TEST(CornerBlending, ExampleRunsThroughTheCornersWithinPathDev) {
   const PathRun blend = run_mill_file(root() + "/examples/mill/contour_blend.nc", temp_dir("cb-example"));
   ASSERT_EQ(blend.cli.exit_code, 0) << blend.cli.output;
@@ -269,8 +272,9 @@ TEST(CornerBlending, ExampleRunsThroughTheCornersWithinPathDev) {
   sharp_text.replace(sharp_text.find("N50 G261"), 8, "N50 G260");
   const PathRun sharp = run_mill("cb-sharp", sharp_text);
   ASSERT_EQ(sharp.cli.exit_code, 0) << sharp.cli.output;
-  const double r = 0.05 / (std::sqrt(2.0) - 1), v_fillet = std::sqrt(std::sqrt(1 - 0.25 * 0.25) * 2500 * r);
-  EXPECT_NEAR(v_fillet, 17.09, 0.01);
+  const double r = 0.05 / (std::sqrt(2.0) - 1), a_turn = std::sqrt(2970.0 * 2970.0 - 625.0 * 625.0);
+  const double v_fillet = std::sqrt(a_turn * r);
+  EXPECT_NEAR(v_fillet, 18.72, 0.01);
   // No stop from the start of N60 to the end of N80 (three corners); the
   // slowest cycle runs through the fillet at its limit (the passing cycle
   // keeps the planned speed exactly; a chord of 0.14 rad of the fillet is
@@ -289,7 +293,7 @@ TEST(CornerBlending, ExampleRunsThroughTheCornersWithinPathDev) {
     late.t.push_back(blend.trace.t[i]), late.p.push_back(blend.trace.p[i]);
   EXPECT_NEAR(distance_to_trace(late, {0, 0, -1}), 0.05, 0.002);
   // Without blending every corner slows to 0.5 mm/s (about v / a = 8 ms
-  // lost with the two ramps); a fillet costs about (20 - 17.1)^2 / (2500 * 20) = 0.2 ms.
+  // lost with the two ramps); a fillet costs about (20 - 18.7)^2 / (2500 * 20) = 0.03 ms.
   EXPECT_LT(blend.end_t, sharp.end_t - 4 * 0.004);
   EXPECT_LT(distance_to_trace(sharp.trace, {20, 0, -1}), 0.002);
 }
