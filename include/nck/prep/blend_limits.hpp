@@ -39,8 +39,9 @@ void widen_arc_limits(const motion::Segment& arc, const BlendDynamics& d, bool o
 // the step after it turns by at most half the fillet's centripetal
 // acceleration (what the crossing chord still lay on the fillet) plus what
 // the next block itself turns at one step faster; speeding up or braking
-// gets what that leaves of a_max, less what the crossing chord's lean adds
-// along the path (next's own limits apply as well).
+// gets what that leaves of a_max, less what the crossing chord's lean and
+// shortening add along the path (next's own limits apply as well). The
+// same bound holds the step into a fillet (`next` then the block before).
 double pass_acceleration(const motion::Segment& fillet, const motion::PathLimits& fillet_l,
                          const motion::Segment& next, const motion::PathLimits& next_l, const BlendDynamics& d,
                          double cycle_s);
