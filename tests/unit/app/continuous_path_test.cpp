@@ -298,6 +298,38 @@ TEST(CornerBlending, ExampleRunsThroughTheCornersWithinPathDev) {
   EXPECT_LT(distance_to_trace(sharp.trace, {20, 0, -1}), 0.002);
 }
 
+// Issue 30: the common program's right angle between a chord and a small
+// semicircle (r 0.25 mm), here twice (into and out of it), at PATH_DEV
+// 0.01 mm. The fillets (r ~ 0.026 mm) turn with what 25 % of the feed
+// acceleration leaves of 99 % of a_max, the semicircle speeds up and brakes
+// with what its turn leaves of a_max, and the blocks pass into and out of
+// the fillets without a cycle held at the fillet's speed. Before issue 30
+// the slowest cycle ran at sqrt(0.968 * 2500 * 0.026) = 7.9 mm/s; now at
+// 8.5 mm/s or more. Every cycle within each axis's vb_max and a_max, both
+// corners within PATH_DEV of the trace (+2 um for its chords).
+TEST(CornerBlending, RightAnglesAtASmallSemicircleWithinPathDev001) {
+  const PathRun r = run_mill("cb-semicircle",
+                             "N10 G17 G90 G0 X0 Y0 Z-1\n#CONTOUR MODE [DEV PATH_DEV=0.01]\nG261\n"
+                             "N20 G1 X2 Y0 F1500\nN30 G2 X2.5 Y0 I0.25 J0 F1200\nN40 G1 X4.5 Y0 F1500\n"
+                             "N50 G1 X4.5 Y2\nM30\n");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  const Trace& tr = r.trace;
+  const std::array<double, 3> a_max{3000, 3000, 2500};
+  for (std::size_t i = 2; i < tr.p.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const double v1 = (tr.p[i][k] - tr.p[i - 1][k]) / kDt, v0 = (tr.p[i - 1][k] - tr.p[i - 2][k]) / kDt;
+      ASSERT_LE(std::fabs(v1), 500.01) << "axis " << k << " t " << tr.t[i];
+      ASSERT_LE(std::fabs(v1 - v0) / kDt, a_max[k] + 5.0) << "axis " << k << " t " << tr.t[i];
+    }
+  // From N20's last 0.2 mm (8 ms at F1500) to N40's first: both fillets.
+  const std::size_t i0 = row_at(tr, r.block_t.at(30) - 0.008), i1 = row_at(tr, r.block_t.at(40) + 0.008);
+  double v_min = 1e9;
+  for (std::size_t i = i0; i < i1; ++i) v_min = std::min(v_min, speed(tr, i));
+  EXPECT_GE(v_min, 8.5);
+  EXPECT_LT(distance_to_trace(tr, {2, 0, -1}), 0.01 + 0.002);
+  EXPECT_LT(distance_to_trace(tr, {2.5, 0, -1}), 0.01 + 0.002);
+}
+
 TEST(CornerBlending, SyntaxErrorsNameIdFileAndLine) {
   auto expect_error = [](const std::string& name, const std::string& text, const std::string& id, const std::string& line) {
     const PathRun r = run_mill(name, text);
