@@ -257,6 +257,12 @@ TEST(ContinuousPathProperty, BlendedCornersStayWithinPathDevAndLimits) {
   check_random_programs("#CONTOUR MODE [DEV PATH_DEV=0.05]\nG261\n", 0.05 + 0.002, 2 * 0.05);
 }
 
+// The same at issue 30's PATH_DEV 0.01 mm: small fillets, run at their
+// centripetal limit, passed into and out of within one cycle.
+TEST(ContinuousPathProperty, BlendedCornersStayWithinPathDev001AndLimits) {
+  check_random_programs("#CONTOUR MODE [DEV PATH_DEV=0.01]\nG261\n", 0.01 + 0.002, 2 * 0.01);
+}
+
 // examples/mill/contour_blend.nc: a 20 mm square at F1200 (20 mm/s) with
 // G261, PATH_DEV 0.05. At a right angle the fillet's radius is
 // r = 0.05 / (sqrt(2) - 1) = 0.12071 mm; a fillet gives speeding up on it
