@@ -39,9 +39,13 @@ double discrete_brake_distance(double v_mm_s, double a_mm_s2, double dt_s) noexc
   return dt_s * (n + 1.0) * (v_mm_s - dv * n / 2.0);
 }
 
-double pass_brake_distance(double v_end_mm_s, double a_mm_s2, double dt_s) noexcept {
+double pass_brake_distance(double v_end_mm_s, double a_mm_s2, double dt_s, double hold_cycles) noexcept {
   if (!(v_end_mm_s > 0.0)) return 0.0;
-  return discrete_brake_distance(v_end_mm_s, a_mm_s2, dt_s) - kHoldCycles * v_end_mm_s * dt_s;
+  return discrete_brake_distance(v_end_mm_s, a_mm_s2, dt_s) - hold_cycles * v_end_mm_s * dt_s;
+}
+
+double pass_brake_distance(double v_end_mm_s, double a_mm_s2, double dt_s) noexcept {
+  return pass_brake_distance(v_end_mm_s, a_mm_s2, dt_s, kHoldCycles);
 }
 
 double duration_estimate(double length_mm, double v_cmd_mm_s, const PathLimits& limits) noexcept {
@@ -84,6 +88,7 @@ bool PathProfile::start(double length_mm, double v_cmd_mm_s, const PathLimits& l
   v_end_mm_s_ = 0.0;
   v_limit_mm_s_ = -1.0;
   override_ignored_ = false;
+  into_fillet_ = false;
   if (!std::isfinite(length_mm) || length_mm < 0.0) {
     length_mm_ = s_mm_ = 0.0;
     finished_ = true;
@@ -139,6 +144,17 @@ void PathProfile::limit_first_step(double a_mm_s2) noexcept {
   if (a_mm_s2 >= 0.0) first_acc_mm_s2_ = std::min(first_acc_mm_s2_, a_mm_s2);  // NaN: ignored
 }
 
+void PathProfile::pass_into_fillet() noexcept {
+  if (jerk_ || into_fillet_) return;
+  into_fillet_ = true;
+  beyond_dt_s_ = 0.0;  // the braking curve's end point moves a cycle on
+}
+
+void PathProfile::pass_first_step(double a_mm_s2) noexcept {
+  if (!(a_mm_s2 >= 0.0)) return;  // NaN: ignored
+  first_acc_mm_s2_ = first_dec_mm_s2_ = a_mm_s2;
+}
+
 void PathProfile::set_velocity_limit(double v_mm_s) noexcept {
   v_limit_mm_s_ = std::isfinite(v_mm_s) && v_mm_s >= 0.0 ? v_mm_s : -1.0;
 }
@@ -182,7 +198,8 @@ ProfileSample PathProfile::step(double dt_s, double override_factor) noexcept {
   // Passing on at v_end > 0: over the last cycles before the end the
   // profile runs at v_end (pass_brake_distance), so it crosses at exactly
   // that speed.
-  const bool holding = v_end_mm_s_ > 0.0 && left_mm <= kHoldCycles * v_end_mm_s_ * dt_s;
+  const double hold_cycles = into_fillet_ ? 1.0 : kHoldCycles;
+  const bool holding = v_end_mm_s_ > 0.0 && left_mm <= hold_cycles * v_end_mm_s_ * dt_s;
   bool braking = false;
   const double goal = holding ? std::min(target, v_end_mm_s_) : target;
   double v = v_prev < goal ? std::min(v_prev + a_acc * dt_s, goal) : std::max(v_prev - a_dec * dt_s, goal);
@@ -193,7 +210,7 @@ ProfileSample PathProfile::step(double dt_s, double override_factor) noexcept {
   if (!holding) {
     const double a = limits_.a_dec_mm_s2;
     if (dt_s != beyond_dt_s_) {  // once per segment and cycle time
-      beyond_mm_ = pass_brake_distance(v_end_mm_s_, a, dt_s);
+      beyond_mm_ = pass_brake_distance(v_end_mm_s_, a, dt_s, hold_cycles);
       beyond_dt_s_ = dt_s;
     }
     // Far from the end the braking curve is not reached: it lies above
@@ -208,8 +225,12 @@ ProfileSample PathProfile::step(double dt_s, double override_factor) noexcept {
   v = std::max(v, 0.0);
 
   // The cycle that passes into the next segment lies on both (a fillet's
-  // turn starts or ends in it): it keeps the speed it had.
-  if (v_end_mm_s_ > 0.0 && v_prev > 0.0 && v * dt_s >= left_mm - kSnapMm) v = v_prev;
+  // turn starts or ends in it): it keeps the speed it had. Into a fillet it
+  // takes the speed to pass at instead (the fillet's first part turns by at
+  // most half its centripetal acceleration in it, and the window gave this
+  // segment no acceleration beyond what that leaves of a_max).
+  if (v_end_mm_s_ > 0.0 && v_prev > 0.0 && v * dt_s >= left_mm - kSnapMm)
+    v = into_fillet_ ? std::clamp(std::min(target, v_end_mm_s_), v_prev - a_dec * dt_s, v_prev) : v_prev;
   const double move_mm = v * dt_s;
   if (move_mm >= left_mm - kSnapMm) {
     // Stopping at the end: report the speed that covers exactly what was left.

@@ -13,7 +13,8 @@ kernel::Action action_of(const PlannedCommand& c) {
   switch (c.kind) {
     case CommandKind::motion:
       return kernel::Motion{c.segment.tail(), c.limits,  c.v_cmd_mm_s,          c.v_end_mm_s,        c.start_a_mm_s2,
-                            c.trafo,          c.measure, c.passes_at_cruise, c.manual_offset_axes};
+                            c.trafo,          c.measure, c.passes_at_cruise, c.after_fillet,
+                            c.into_fillet,    c.manual_offset_axes};
     case CommandKind::dwell: {
       kernel::Dwell d{c.dwell_s, std::nullopt};
       if (c.dwell_spindle >= 0) d.revolutions = kernel::Dwell::Revolutions{c.dwell_revs, c.dwell_spindle};

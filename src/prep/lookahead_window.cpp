@@ -4,12 +4,18 @@
 #include <cmath>
 
 #include "nck/motion/corner_blend.hpp"
+#include "nck/prep/blend_limits.hpp"
 #include "nck/motion/junction.hpp"
 
 namespace nck::prep {
 namespace {
 
 using kernel::SyncPoint;
+
+// The block before a fillet reaches the fillet's speed in the crossing
+// cycle if that costs it no more than 20 % of its braking (the common
+// program: 1 % on its time at PATH_DEV 0.01, docs/performance.md).
+constexpr double kIntoFilletShare = 0.8;
 
 // Nothing around it makes the channel wait or act at a block boundary: no
 // output, spindle function, probing, manual mode or feedback. Only then can
@@ -115,35 +121,14 @@ double LookAheadWindow::entry_limit(const PlannedCommand& c) const {
   return std::max(motion::entry_velocity_limit(shorter, c.v_end_mm_s, a, cycle_s_) - a * cycle_s_, 0.0);
 }
 
-// The path limits of a fillet. An ordinary arc splits the plane axes'
-// acceleration evenly between speeding up and turning (each a/sqrt 2); a
-// fillet is meant to be run through at one speed, so it gives changing
-// speed on it 25 % of a and the turn sqrt(1 - 0.25^2) = 96.8 % (the vector
-// sum stays within a, so every plane axis does): its speed limit is 1.17
-// times that of an ordinary arc of the same radius.
-motion::PathLimits LookAheadWindow::fillet_limits(const motion::Segment& fillet,
-                                                  std::span<const motion::AxisDynamics> dyn) {
-  constexpr double kTangentialShare = 0.25;
-  motion::PathLimits l;
-  const motion::AxisDynamics& da = dyn[fillet.plane_a()];
-  const motion::AxisDynamics& db = dyn[fillet.plane_b()];
-  const double a = std::min({da.a_acc_mm_s2, da.a_dec_mm_s2, db.a_acc_mm_s2, db.a_dec_mm_s2});
-  const double r = std::min(fillet.radius_start(), fillet.radius_end());
-  l.v_max_mm_s = std::min({da.v_max_mm_s, db.v_max_mm_s,
-                           std::sqrt(std::sqrt(1 - kTangentialShare * kTangentialShare) * a * r)});
-  l.a_acc_mm_s2 = l.a_dec_mm_s2 = kTangentialShare * a;
-  return l;
-}
-
 // Under a jerk-limited slope a fillet also keeps the contour's jerk within
 // what path_limits allows an arc (motion/limits.hpp): the lower speed and
 // tangential acceleration of the two, the ramp times of the blocks.
-motion::PathLimits LookAheadWindow::jerk_fillet_limits(const motion::Segment& fillet,
-                                                       std::span<const motion::AxisDynamics> dyn,
+motion::PathLimits LookAheadWindow::jerk_fillet_limits(const motion::Segment& fillet, const BlendDynamics& d,
                                                        const motion::PathLimits& before) {
-  motion::PathLimits l = fillet_limits(fillet, dyn);
+  motion::PathLimits l = fillet_limits(fillet, d);
   if (!jerk_limited(before.slope)) return l;
-  const motion::PathLimits arc = motion::path_limits(fillet, dyn, before.slope);
+  const motion::PathLimits arc = motion::path_limits(fillet, d.feed, before.slope);
   l.v_max_mm_s = std::min(l.v_max_mm_s, arc.v_max_mm_s);
   l.a_acc_mm_s2 = std::min(l.a_acc_mm_s2, arc.a_acc_mm_s2);
   l.a_dec_mm_s2 = std::min(l.a_dec_mm_s2, arc.a_dec_mm_s2);
@@ -202,6 +187,7 @@ const BlendAxes& LookAheadWindow::weighted_axes(const WeightScale& w) {
     d.a_dec_mm_s2 *= less;
     d.tr = {d.tr.acc_up_s * ramp, d.tr.acc_down_s * ramp, d.tr.dec_up_s * ramp, d.tr.dec_down_s * ramp};
     d.tr_geom_s *= std::max(w.geom, 1.0);
+    weighted_.a_max_mm_s2[j] *= less;
     if (w.acc_max > 1.0)
       weighted_.corner_dv_mm_s[j] = std::max(weighted_.corner_dv_mm_s[j] - (w.acc_max - 1.0) * a_along * cycle_s_, 0.0);
   }
@@ -227,7 +213,8 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   if (!cb) return false;
   const WeightScale w = both(p.command.weights, next.weights);
   const BlendAxes& ax = w.unit() ? axes_ : weighted_axes(w);
-  const std::span<const motion::AxisDynamics> dyn(ax.feed_dyn.data(), ax.n_axes);
+  const BlendDynamics dyn{std::span<const motion::AxisDynamics>(ax.feed_dyn.data(), ax.n_axes),
+                          std::span<const double>(ax.a_max_mm_s2.data(), ax.n_axes)};
   PlannedCommand f;
   f.weights = w;
   f.kind = CommandKind::motion;
@@ -248,6 +235,8 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   PlannedCommand before = p.command, after = next;
   before.segment = cb->before;
   after.segment = cb->after;
+  widen_arc_limits(before.segment, dyn, false, before.limits);
+  widen_arc_limits(after.segment, dyn, true, after.limits);
   const double dt2 = 2 * cycle_s_;
   if (cb->fillet.length() < dt2 * cruise(f) || cb->before.length() < dt2 * cruise(before) ||
       cb->after.length() < dt2 * cruise(after))
@@ -260,6 +249,19 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   const double fillet_entry = cruise(f) > 2 * step_mm_s ? cruise(f) : cruise(f) - step_mm_s;
   f.v_entry_max_mm_s = std::max(std::min(tangent_cap(before, f, ax), fillet_entry), 0.0);
   after.v_entry_max_mm_s = tangent_cap(f, after, ax);
+  if (f.limits.slope == SlopeProfile::step && after.limits.slope == SlopeProfile::step) {
+    after.start_a_mm_s2 = pass_acceleration(cb->fillet, f.limits, cb->after, after.limits, dyn, cycle_s_);
+    after.after_fillet = true;
+  }
+  // Into the fillet: the block before brakes to the fillet's speed in the
+  // cycle that crosses into it (not a cycle earlier) with at most what the
+  // fillet's first part leaves of a_max. Worth a lower braking over the
+  // whole block only down to kIntoFilletShare of its own.
+  if (f.limits.slope == SlopeProfile::step && before.limits.slope == SlopeProfile::step) {
+    const double a_in = pass_acceleration(cb->fillet, f.limits, cb->before, before.limits, dyn, cycle_s_);
+    before.into_fillet = a_in >= kIntoFilletShare * before.limits.a_dec_mm_s2;
+    if (before.into_fillet) before.limits.a_dec_mm_s2 = std::min(before.limits.a_dec_mm_s2, a_in);
+  }
   // The window's promise: a command that has left can still brake in what
   // follows. Shortening prev may lower the velocities before it (the fillet
   // is slower than a stop is far): fine inside the window, where the chain
@@ -270,7 +272,12 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   if (!lowering_is_safe(prev, before)) return false;
 
   p.command.segment = cb->before;
+  p.command.limits = before.limits;
+  p.command.into_fillet = before.into_fillet;
   next.segment = cb->after;
+  next.limits = after.limits;
+  next.start_a_mm_s2 = after.start_a_mm_s2;
+  next.after_fillet = after.after_fillet;
   next.v_entry_max_mm_s = after.v_entry_max_mm_s;
   f.v_end_mm_s = 0;
   const std::uint64_t seq = tail_++;

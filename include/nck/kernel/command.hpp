@@ -44,6 +44,16 @@ struct Motion {
   // transitions. (A flag in the padding here: Command stays at 504 bytes;
   // at 512, the queue's entries fell on the same cache sets.)
   bool passes_at_cruise = false;
+  // It follows a fillet (corner blending) and passes in from it: then
+  // start_a_mm_s2 is also the first step's acceleration when passing in
+  // (what the rest of the fillet's turn in that step leaves of a_max; the
+  // fillet's own, lower, would apply otherwise). Padding too.
+  bool after_fillet = false;
+  // A fillet follows and the path passes into it: the speed to pass at is
+  // reached in the crossing cycle (PathProfile::pass_into_fillet; the
+  // window keeps this motion's accelerations within what the fillet's
+  // first part leaves of a_max). Padding too.
+  bool into_fillet = false;
   // Bit j: axis j's handwheel offset is in its set point when the motion
   // ends (#SUPPRESS OFFSETS and #MCS ON leave it out); taken in or out
   // along the path.

@@ -77,6 +77,14 @@ class PathProfile {
   // The first step after start() changes the speed by at most a * dt (a
   // start out of a sharp corner's exact stop; 0 stands still a cycle). rt
   void limit_first_step(double a_mm_s2) noexcept;
+  // Passing in from a fillet (STEP): the first step changes the speed by at
+  // most a * dt (and the segment's own limits), instead of the fillet's
+  // tangential acceleration. rt
+  void pass_first_step(double a_mm_s2) noexcept;
+  // The next segment is a fillet (STEP): the speed to pass at is reached in
+  // the cycle that crosses into it, not a cycle before (kHoldCycles 1
+  // instead of 2). Set after start(). rt
+  void pass_into_fillet() noexcept;
   // Changes the speed at the segment's end while it runs (the kernel's
   // braking reserve: 0 while no successor is queued, the planned v_end once
   // one is). Raising it is always possible; lowering it is only safe while
@@ -129,6 +137,7 @@ class PathProfile {
   double v_limit_mm_s_ = -1.0;  // < 0: none
   double beyond_mm_ = 0.0, beyond_dt_s_ = 0.0;  // pass_brake_distance for that cycle time
   bool override_ignored_ = false;
+  bool into_fillet_ = false;  // pass_into_fillet()
   // Jerk-limited slopes: the plan (relative to s = plan_s0_mm_ at its start),
   // the time in it, the acceleration now, and what it was planned for.
   bool jerk_ = false;
@@ -157,6 +166,8 @@ double discrete_brake_distance(double v_mm_s, double a_mm_s2, double dt_s) noexc
 // passes into the next segment, lying on both, does not change the speed as
 // well (docs/decisions.md, corner blending). 0 for v_end = 0. rt
 double pass_brake_distance(double v_end_mm_s, double a_mm_s2, double dt_s) noexcept;
+// The same for a segment that holds v_end over hold_cycles cycles' travel. rt
+double pass_brake_distance(double v_end_mm_s, double a_mm_s2, double dt_s, double hold_cycles) noexcept;
 
 // Analytic (continuous-time) duration of a rest-to-rest trapezoid or
 // triangle: for tests and estimates. 0 for length 0; +infinity when the

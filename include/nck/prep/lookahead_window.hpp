@@ -31,6 +31,7 @@
 #include "nck/core/fixed_vector.hpp"
 #include "nck/kernel/queues.hpp"
 #include "nck/motion/limits.hpp"
+#include "nck/prep/blend_limits.hpp"
 #include "nck/prep/command_packer.hpp"
 #include "nck/prep/planned_command.hpp"
 
@@ -44,6 +45,7 @@ struct BlendAxes {
   std::size_t n_axes = 0;
   std::array<motion::AxisDynamics, kMaxAxes> feed_dyn{};  // G1/G2/G3 dynamics per axis
   std::array<double, kMaxAxes> corner_dv_mm_s{};           // kink budget per axis and cycle
+  std::array<double, kMaxAxes> a_max_mm_s2{};              // hard cap of every acceleration per axis
 };
 
 // Totals over the run, for reports and benchmarks.
@@ -95,10 +97,7 @@ class LookAheadWindow {
   double entry_limit(const PlannedCommand& c) const;
   bool passes_at_cruise(std::uint64_t seq) const;
   bool blend(std::uint64_t prev, PlannedCommand& next);
-  static motion::PathLimits fillet_limits(const motion::Segment& fillet,
-                                         std::span<const motion::AxisDynamics> dyn);
-  static motion::PathLimits jerk_fillet_limits(const motion::Segment& fillet,
-                                               std::span<const motion::AxisDynamics> dyn,
+  static motion::PathLimits jerk_fillet_limits(const motion::Segment& fillet, const BlendDynamics& d,
                                                const motion::PathLimits& before);
   bool lowering_is_safe(std::uint64_t seq, PlannedCommand changed) const;
   double cruise(const PlannedCommand& c) const;

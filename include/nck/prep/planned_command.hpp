@@ -78,6 +78,12 @@ struct PlannedCommand {
   // (kernel::Motion::passes_at_cruise). The look-ahead window sets it when
   // the command leaves (HSC's chains).
   bool passes_at_cruise = false;
+  // It follows a fillet and start_a_mm_s2 is also its first step when
+  // passing in from it (kernel::Motion::after_fillet; STEP only).
+  bool after_fillet = false;
+  // A fillet follows: it reaches the speed to pass at in the crossing
+  // cycle (kernel::Motion::into_fillet; STEP only).
+  bool into_fillet = false;
   // Starting from an exact stop right after moving, the first step's
   // acceleration (0: one cycle at standstill). The last step into the stop
   // and the first out of it fall into consecutive cycles; the planner takes

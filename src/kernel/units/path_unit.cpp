@@ -29,6 +29,7 @@ void PathUnit::start_motion(const Motion& m, const CommandQueue& queued, double 
   // chain's end is lowered while it reaches the end of the queue.
   if (hsc_chained_) reserve_ = hsc_open_;
   profile_.start(segment_.length(), m.v_cmd_mm_s, m.limits, hsc_chained_ ? m.v_end_mm_s : v_end, h.chain);
+  if (m.into_fillet) profile_.pass_into_fillet();
 }
 
 void PathUnit::note_chain(const HscChain& h) noexcept {
@@ -40,6 +41,7 @@ void PathUnit::note_chain(const HscChain& h) noexcept {
 bool PathUnit::carry_on(const Motion& m) noexcept {
   if (passing_) {
     passing_ = false;
+    if (m.after_fillet && m.start_a_mm_s2) profile_.pass_first_step(*m.start_a_mm_s2);
     velocity_ = profile_.v();
     return true;
   }

@@ -38,6 +38,7 @@ BlendAxes CornerUnit::blend_axes(const AxisTable& axes) const {
   a.n_axes = axes.count();
   a.feed_dyn = axes.feed();
   a.corner_dv_mm_s = dv_feed_mm_s_;
+  for (std::size_t j = 0; j < a.n_axes; ++j) a.a_max_mm_s2[j] = axes.accel_cap_mm_s2(j);
   return a;
 }
 

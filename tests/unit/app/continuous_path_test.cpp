@@ -257,11 +257,20 @@ TEST(ContinuousPathProperty, BlendedCornersStayWithinPathDevAndLimits) {
   check_random_programs("#CONTOUR MODE [DEV PATH_DEV=0.05]\nG261\n", 0.05 + 0.002, 2 * 0.05);
 }
 
+// The same at issue 30's PATH_DEV 0.01 mm: small fillets, run at their
+// centripetal limit, passed into and out of within one cycle.
+TEST(ContinuousPathProperty, BlendedCornersStayWithinPathDev001AndLimits) {
+  check_random_programs("#CONTOUR MODE [DEV PATH_DEV=0.01]\nG261\n", 0.01 + 0.002, 2 * 0.01);
+}
+
 // examples/mill/contour_blend.nc: a 20 mm square at F1200 (20 mm/s) with
 // G261, PATH_DEV 0.05. At a right angle the fillet's radius is
-// r = 0.05 / (sqrt(2) - 1) = 0.12071 mm; a fillet gives the turn
-// sqrt(1 - 0.25^2) = 96.8 % of the plane axes' 2500 mm/s^2, so its speed
-// limit is sqrt(0.968 * 2500 * r) = 17.09 mm/s.
+// r = 0.05 / (sqrt(2) - 1) = 0.12071 mm; a fillet gives speeding up on it
+// 25 % of the plane axes' feed acceleration (625 mm/s^2) and the turn what
+// that leaves of 99 % of their a_max (3000 mm/s^2):
+// sqrt(2970^2 - 625^2) = 2903 mm/s^2, so its speed limit is
+// sqrt(2903 * r) = 18.72 mm/s (before issue 30: 96.8 % of the feed
+// acceleration, 17.09 mm/s).
 TEST(CornerBlending, ExampleRunsThroughTheCornersWithinPathDev) {
   const PathRun blend = run_mill_file(root() + "/examples/mill/contour_blend.nc", temp_dir("cb-example"));
   ASSERT_EQ(blend.cli.exit_code, 0) << blend.cli.output;
@@ -269,8 +278,9 @@ TEST(CornerBlending, ExampleRunsThroughTheCornersWithinPathDev) {
   sharp_text.replace(sharp_text.find("N50 G261"), 8, "N50 G260");
   const PathRun sharp = run_mill("cb-sharp", sharp_text);
   ASSERT_EQ(sharp.cli.exit_code, 0) << sharp.cli.output;
-  const double r = 0.05 / (std::sqrt(2.0) - 1), v_fillet = std::sqrt(std::sqrt(1 - 0.25 * 0.25) * 2500 * r);
-  EXPECT_NEAR(v_fillet, 17.09, 0.01);
+  const double r = 0.05 / (std::sqrt(2.0) - 1), a_turn = std::sqrt(2970.0 * 2970.0 - 625.0 * 625.0);
+  const double v_fillet = std::sqrt(a_turn * r);
+  EXPECT_NEAR(v_fillet, 18.72, 0.01);
   // No stop from the start of N60 to the end of N80 (three corners); the
   // slowest cycle runs through the fillet at its limit (the passing cycle
   // keeps the planned speed exactly; a chord of 0.14 rad of the fillet is
@@ -289,9 +299,41 @@ TEST(CornerBlending, ExampleRunsThroughTheCornersWithinPathDev) {
     late.t.push_back(blend.trace.t[i]), late.p.push_back(blend.trace.p[i]);
   EXPECT_NEAR(distance_to_trace(late, {0, 0, -1}), 0.05, 0.002);
   // Without blending every corner slows to 0.5 mm/s (about v / a = 8 ms
-  // lost with the two ramps); a fillet costs about (20 - 17.1)^2 / (2500 * 20) = 0.2 ms.
+  // lost with the two ramps); a fillet costs about (20 - 18.7)^2 / (2500 * 20) = 0.03 ms.
   EXPECT_LT(blend.end_t, sharp.end_t - 4 * 0.004);
   EXPECT_LT(distance_to_trace(sharp.trace, {20, 0, -1}), 0.002);
+}
+
+// Issue 30: the common program's right angle between a chord and a small
+// semicircle (r 0.25 mm), here twice (into and out of it), at PATH_DEV
+// 0.01 mm. The fillets (r ~ 0.026 mm) turn with what 25 % of the feed
+// acceleration leaves of 99 % of a_max, the semicircle speeds up and brakes
+// with what its turn leaves of a_max, and the blocks pass into and out of
+// the fillets without a cycle held at the fillet's speed. Before issue 30
+// the slowest cycle ran at sqrt(0.968 * 2500 * 0.026) = 7.9 mm/s; now at
+// 8.5 mm/s or more. Every cycle within each axis's vb_max and a_max, both
+// corners within PATH_DEV of the trace (+2 um for its chords).
+TEST(CornerBlending, RightAnglesAtASmallSemicircleWithinPathDev001) {
+  const PathRun r = run_mill("cb-semicircle",
+                             "N10 G17 G90 G0 X0 Y0 Z-1\n#CONTOUR MODE [DEV PATH_DEV=0.01]\nG261\n"
+                             "N20 G1 X2 Y0 F1500\nN30 G2 X2.5 Y0 I0.25 J0 F1200\nN40 G1 X4.5 Y0 F1500\n"
+                             "N50 G1 X4.5 Y2\nM30\n");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  const Trace& tr = r.trace;
+  const std::array<double, 3> a_max{3000, 3000, 2500};
+  for (std::size_t i = 2; i < tr.p.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const double v1 = (tr.p[i][k] - tr.p[i - 1][k]) / kDt, v0 = (tr.p[i - 1][k] - tr.p[i - 2][k]) / kDt;
+      ASSERT_LE(std::fabs(v1), 500.01) << "axis " << k << " t " << tr.t[i];
+      ASSERT_LE(std::fabs(v1 - v0) / kDt, a_max[k] + 5.0) << "axis " << k << " t " << tr.t[i];
+    }
+  // From N20's last 0.2 mm (8 ms at F1500) to N40's first: both fillets.
+  const std::size_t i0 = row_at(tr, r.block_t.at(30) - 0.008), i1 = row_at(tr, r.block_t.at(40) + 0.008);
+  double v_min = 1e9;
+  for (std::size_t i = i0; i < i1; ++i) v_min = std::min(v_min, speed(tr, i));
+  EXPECT_GE(v_min, 8.5);
+  EXPECT_LT(distance_to_trace(tr, {2, 0, -1}), 0.01 + 0.002);
+  EXPECT_LT(distance_to_trace(tr, {2.5, 0, -1}), 0.01 + 0.002);
 }
 
 TEST(CornerBlending, SyntaxErrorsNameIdFileAndLine) {

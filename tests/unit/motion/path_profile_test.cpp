@@ -260,5 +260,29 @@ TEST(PathProfile, EndVelocityBrakesDownToIt) {
   EXPECT_LE(p.v(), 20.0 + 500.0 * kDt);
 }
 
+// Into a fillet (corner blending, issue 30) the cycle that crosses the end
+// runs at v_end exactly and may itself be the last braking step; without
+// pass_into_fillet the profile holds v_end a cycle before it. For lengths
+// that put the end at every phase of the braking staircase: the crossing
+// cycle at v_end, no step beyond a_dec, never slower than the plain profile
+// (and at some lengths a cycle faster).
+TEST(PathProfile, PassIntoFilletBrakesInTheCrossingCycle) {
+  const PathLimits l{100.0, 500.0, 500.0};
+  std::size_t faster = 0;
+  for (int i = 0; i < 40; ++i) {
+    const double length = 10.0 + 0.0013 * i;
+    PathProfile into, plain;
+    ASSERT_TRUE(into.start(length, 80.0, l, 20.0));
+    into.pass_into_fillet();
+    ASSERT_TRUE(plain.start(length, 80.0, l, 20.0));
+    const Trace r = run_checked(into, 1.0, 100000), q = run_checked(plain, 1.0, 100000);
+    ASSERT_TRUE(r.finished && q.finished);
+    EXPECT_NEAR(into.v(), 20.0, 1e-9) << length;
+    EXPECT_LE(r.steps, q.steps) << length;
+    if (r.steps < q.steps || r.s[r.s.size() - 2] > q.s[q.s.size() - 2] + 1e-9) ++faster;
+  }
+  EXPECT_GT(faster, 0u);
+}
+
 }  // namespace
 }  // namespace nck::motion

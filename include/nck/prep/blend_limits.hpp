@@ -1,0 +1,49 @@
+#pragma once
+// The path limits of what corner blending puts into a chain (docs/decisions.md,
+// corner blending): a fillet, and the arcs it joins (STEP). Every plane
+// axis must stay within its a_max (P-AXIS-00008, the hard cap of every
+// acceleration) in every cycle, so the vector sum of the along-path and the
+// across-path (centripetal) acceleration is held within the smaller a_max of
+// the two plane axes; the along-path part stays within the feed
+// accelerations, as on a line. Setup side (preparation).
+#include <span>
+
+#include "nck/motion/limits.hpp"
+#include "nck/motion/segment.hpp"
+
+namespace nck::prep {
+
+struct BlendDynamics {
+  std::span<const motion::AxisDynamics> feed;  // G1/G2/G3 dynamics per axis (weighted)
+  std::span<const double> a_max_mm_s2;          // hard cap per axis (weighted)
+};
+
+// A fillet is meant to be run through at one speed: speeding up or braking
+// on it gets 25 % of the plane axes' feed acceleration, the turn the rest of
+// a_max (v <= sqrt(a_n r)).
+motion::PathLimits fillet_limits(const motion::Segment& fillet, const BlendDynamics& d);
+
+// An arc next to a fillet: at its top speed l.v_max_mm_s (which no
+// override exceeds) its centripetal acceleration a_n = v^2/r leaves
+// sqrt(a_max^2 - a_n^2) for speeding up and braking (the feed accelerations
+// at most) instead of the even a/sqrt 2 split path_limits gives every arc.
+// Only raises l, and only for a plain arc in the plane under STEP: its
+// a_acc when the fillet lies before it (`out_of_fillet`), its a_dec when it
+// lies after it. An arc's braking into an exact stop keeps the planner's
+// a_dec, from which the planner took the first step of the block after the
+// stop (CornerUnit::start_acceleration).
+void widen_arc_limits(const motion::Segment& arc, const BlendDynamics& d, bool out_of_fillet, motion::PathLimits& l);
+
+// The first step of the block after a fillet when the path passes in from
+// it (STEP): the cycle that crosses the fillet's end keeps its speed, so
+// the step after it turns by at most half the fillet's centripetal
+// acceleration (what the crossing chord still lay on the fillet) plus what
+// the next block itself turns at one step faster; speeding up or braking
+// gets what that leaves of a_max, less what the crossing chord's lean and
+// shortening add along the path (next's own limits apply as well). The
+// same bound holds the step into a fillet (`next` then the block before).
+double pass_acceleration(const motion::Segment& fillet, const motion::PathLimits& fillet_l,
+                         const motion::Segment& next, const motion::PathLimits& next_l, const BlendDynamics& d,
+                         double cycle_s);
+
+}  // namespace nck::prep
