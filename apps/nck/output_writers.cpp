@@ -1,5 +1,6 @@
 #include "output_writers.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fmt/format.h>
@@ -26,8 +27,19 @@ std::string dump_json(const nlohmann::ordered_json& j, int indent) {
 }
 
 std::string json_quoted(std::string_view text) {
-  const std::string utf8 = to_utf8(text);
   std::string out;
+  const auto plain = [](char c) {  // printable ASCII without '"' and '\\': as it is
+    const auto u = static_cast<unsigned char>(c);
+    return u >= 0x20 && u < 0x80 && c != '"' && c != '\\';
+  };
+  if (std::all_of(text.begin(), text.end(), plain)) {  // most NC lines
+    out.reserve(text.size() + 2);
+    out += '"';
+    out += text;
+    out += '"';
+    return out;
+  }
+  const std::string utf8 = to_utf8(text);
   out.reserve(utf8.size() + 2);
   out += '"';
   for (const char c : utf8) {
