@@ -206,6 +206,10 @@ void PathRecorder::add(const std::array<double, 3>& pos, std::uint32_t line, std
                        std::uint32_t frame, double t_s) {
   if (points_.empty()) {
     min_ = max_ = tip_ = pos;
+    // Room for every vertex kept: pages are touched only as the path grows,
+    // and the vector never moves (a doubling copies megabytes and faults in
+    // pages twice).
+    points_.reserve(kMaxVertices + 1);
     points_.push_back({to_float(pos), line, file, rapid, frame, t_s});
     anchor_ = pos;
     has_dir_ = false;
@@ -270,6 +274,7 @@ void PathRecorder::thin_in_place() {
     points_ = thin(points_, tol, breaks);
     thin_tol_mm_ = tol;
   }
+  points_.reserve(kMaxVertices + 1);
   if (points_.empty() || points_.back().pos != tip.pos) points_.push_back(tip);
   has_dir_ = false;  // the next point starts a new run from the tip
   anchor_ = tip_;

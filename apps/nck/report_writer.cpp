@@ -407,6 +407,7 @@ void ReportWriter::watch_plc(double t_s, const RunNames& names) {
   for (std::size_t c = 0; c < channels_.size() && c < hli.channel.size(); ++c) {
     Channel& ch = channels_[c];
     const double ovr = hli.channel[c].feed_override_percent;
+    if (ovr == ch.feed_override_pct && hli.channel[c].feedhold == ch.hold.has_value()) continue;  // most cycles
     if (ovr != ch.feed_override_pct)
       add_mark({t_s, 0, c + 1, "override", fmt::format("feed override {:g} %", ovr)});
     ch.feed_override_pct = ovr;
@@ -414,6 +415,7 @@ void ReportWriter::watch_plc(double t_s, const RunNames& names) {
   }
   for (std::size_t s = 0; s < spindles_.size() && s < hli.spindle_control.size(); ++s) {
     const double ovr = hli.spindle_control[s].effective_override_percent();
+    if (ovr == spindle_override_pct_[s] && hli.spindle_control[s].feedhold == spindle_hold_[s].has_value()) continue;
     if (ovr != spindle_override_pct_[s])
       add_mark({t_s, s, 0, "override", fmt::format("spindle override {:g} %", ovr)});
     spindle_override_pct_[s] = ovr;
