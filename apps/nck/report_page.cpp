@@ -107,28 +107,17 @@ std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const 
     for (int a = 0; a < 3; ++a)
       s += fmt::format(",\"{}\":", "xyz"[a]) +
            array_of(pts, [a](std::string& o, const PathPoint& p) { append_number(o, p.pos[a], 4); });
-    s += ",\"line\":";
-    s += array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.line); });
-    s += ",\"file\":";
-    s += array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.file); });
-    s += ",\"rapid\":";
-    s += array_of(pts, [](std::string& o, const PathPoint& p) { o += p.rapid ? '1' : '0'; });
-    s += ",\"t\":";
-    s += array_of(pts, [](std::string& o, const PathPoint& p) { append_number(o, p.t_s, 4); });
-    s += ",\"cause_t\":";
-    s += array_of(ch.cause_t, [](std::string& o, double t) { append_number(o, t, 4); });
-    s += ",\"cause\":";
-    s += array_of(ch.cause_name, [](std::string& o, const std::string& n) { o += json_quoted(n); });
-    s += ",\"limits\":";
-    s += limits_json(ch);
-    s += ",\"frames\":";
-    s += frames_json(ch);
-    if (ch.frames.size() > 1) {  // which map each point is in; all the first one otherwise
-      s += ",\"frame\":";
-      s += array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.frame); });
-    }
-    s += ",\"contour\":";
-    s += contour_json(ch);
+    s += ",\"line\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.line); });
+    s += ",\"file\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.file); });
+    s += ",\"rapid\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += p.rapid ? '1' : '0'; });
+    s += ",\"t\":" + array_of(pts, [](std::string& o, const PathPoint& p) { append_number(o, p.t_s, 4); });
+    s += ",\"cause_t\":" + array_of(ch.cause_t, [](std::string& o, double t) { append_number(o, t, 4); });
+    s += ",\"cause\":" + array_of(ch.cause_name, [](std::string& o, const std::string& n) { o += json_quoted(n); });
+    s += ",\"limits\":" + limits_json(ch);
+    s += ",\"frames\":" + frames_json(ch);
+    if (ch.frames.size() > 1)  // which map each point is in; all the first one otherwise
+      s += ",\"frame\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.frame); });
+    s += ",\"contour\":" + contour_json(ch);
     s += "}";
     for (const PathPoint& p : pts) lines_used.emplace_back(p.file, p.line);
   }
@@ -229,16 +218,11 @@ std::string ReportWriter::data_json(double end_s, int exit_code) const {
   append_number(s, end_s, 4);
   s += fmt::format(R"(,"exit_code":{},"end":{},"cycle_s":{},"errors":{},"warnings":{},"stride":{},"c_axis":{}}})",
                    exit_code, json_quoted(end_reason_), cycle_s_, errors_, warnings_, series_.stride(), c_axis_used_);
-  s += ",\"files\":";
-  s += array_of(files_, [](std::string& o, const SourceLines& f) { o += json_quoted(f.name()); });
-  s += ",\"spindles\":";
-  s += array_of(spindles_, [](std::string& o, const std::string& n) { o += json_quoted(n); });
-  s += ",\"series\":";
-  s += array_of(series_meta_, [](std::string& o, const std::string& m) { o += m; });
-  s += ",\"ts\":";
-  s += series_.json(decimals_);
-  s += ",\"channels\":";
-  s += channels_json(lines_used);
+  s += ",\"files\":" + array_of(files_, [](std::string& o, const SourceLines& f) { o += json_quoted(f.name()); });
+  s += ",\"spindles\":" + array_of(spindles_, [](std::string& o, const std::string& n) { o += json_quoted(n); });
+  s += ",\"series\":" + array_of(series_meta_, [](std::string& o, const std::string& m) { o += m; });
+  s += ",\"ts\":" + series_.json(decimals_);
+  s += ",\"channels\":" + channels_json(lines_used);
   s += ",\"waits\":" + array_of(waits_, [&](std::string& o, const Wait& w) {
     o += fmt::format(R"({{"ch":{},"t0":{},"t1":{},"reason":{},"fn":{},"spindle":{},"sync":{},"file":{},"line":{}}})",
                      w.ch, w.t0, w.t1 < 0 ? end_s : w.t1, json_quoted(w.reason), json_quoted(w.fn), json_quoted(w.spindle),
@@ -249,17 +233,12 @@ std::string ReportWriter::data_json(double end_s, int exit_code) const {
     o += fmt::format(R"({{"t":{},"spindle":{},"ch":{},"kind":{},"text":{}}})", m.t, m.ch ? -1 : static_cast<int>(m.spindle),
                      m.ch, json_quoted(m.kind), json_quoted(m.text));
   });
-  s += ",\"diagnostics\":";
-  s += array_of(diagnostics_, [](std::string& o, const std::string& l) { o += l; });
-  s += ",\"events\":";
-  s += array_of(events_, [](std::string& o, const std::string& l) { o += l; });
+  s += ",\"diagnostics\":" + array_of(diagnostics_, [](std::string& o, const std::string& l) { o += l; });
+  s += ",\"events\":" + array_of(events_, [](std::string& o, const std::string& l) { o += l; });
   s += fmt::format(",\"events_dropped\":{}", events_dropped_);
-  s += ",\"summary\":";
-  s += summary_json(lines_used);
-  s += ",\"causes\":";
-  s += causes_json_;
-  s += ",\"ghost\":";
-  s += ghost_json_;
+  s += ",\"summary\":" + summary_json(lines_used);
+  s += ",\"causes\":" + causes_json_;
+  s += ",\"ghost\":" + ghost_json_;
   lines_used.insert(lines_used.end(), cause_lines_.begin(), cause_lines_.end());
   // the NC text of every line a hover or table shows
   for (const std::string& d : diagnostics_) {
@@ -270,8 +249,7 @@ std::string ReportWriter::data_json(double end_s, int exit_code) const {
   }
   std::sort(lines_used.begin(), lines_used.end());
   lines_used.erase(std::unique(lines_used.begin(), lines_used.end()), lines_used.end());
-  s += ",\"lines\":";
-  s += lines_json(lines_used);
+  s += ",\"lines\":" + lines_json(lines_used);
   return s + "}";
 }
 
