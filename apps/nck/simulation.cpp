@@ -188,10 +188,10 @@ void Simulation::record_events(const kernel::TickOutput& o) {
   progress_.take(o);
   for (const kernel::Event& e : o.events) {
     out_.summary.take(e);
-    if (e.kind == kernel::EventKind::block && !out_.keep_events && out_.wants_events())
-      out_.event_line(block_text_.line(e, names_), false);
-    else if (out_.wants_events())
-      out_.event(EventWriter::object(e, names_), e.kind == kernel::EventKind::error);
+    if (out_.wants_events()) {
+      if (e.kind == kernel::EventKind::block && !out_.keep_events) out_.event_line(block_text_.line(e, names_), false);
+      else out_.event(EventWriter::object(e, names_), e.kind == kernel::EventKind::error);
+    }
     if (e.kind == kernel::EventKind::end && e.end_reason == kernel::EndReason::reset) report_reset(e);
     const bool error = e.kind == kernel::EventKind::error;
     if (!error && e.kind != kernel::EventKind::warning) continue;
