@@ -59,12 +59,14 @@ TEST(SpindleSlopeParams, BeyondUns16IsOutOfRange) {
   EXPECT_FALSE(with_id(r.diagnostics, ErrorId::ConfigOutOfRange).empty()) << dump(r.diagnostics);
 }
 
+// An acceleration curve of type 3 on S1's first gear stage (four list lines).
+constexpr const char* kCurveStage =
+    "getriebe[0].beschl_kennlinie.typ 3\ngetriebe[0].beschl_kennlinie.a_max 800\n"
+    "getriebe[0].beschl_kennlinie.n1 100000\ngetriebe[0].beschl_kennlinie.n2 150000\n";
+
 TEST(SpindleSlopeParams, JerkLimitedTypeBesideACurveIsWarning930900AndStep) {
   MachineFolder f;
-  f.append("s1.lis",
-           "getriebe[0].beschl_kennlinie.typ 3\ngetriebe[0].beschl_kennlinie.a_max 800\n"
-           "getriebe[0].beschl_kennlinie.n1 100000\ngetriebe[0].beschl_kennlinie.n2 150000\n"
-           "getriebe[0].slope_type 2\n");
+  f.append("s1.lis", std::string(kCurveStage) + "getriebe[0].slope_type 2\n");
   const LoadResult r = f.load();
   ASSERT_TRUE(r.machine) << dump(r.diagnostics);
   const auto found = with_id(r.diagnostics, ErrorId::ConfigSpindleSlopeWithCurve);
@@ -77,10 +79,7 @@ TEST(SpindleSlopeParams, JerkLimitedTypeBesideACurveIsWarning930900AndStep) {
 
 TEST(SpindleSlopeParams, StepBesideACurveIsQuiet) {
   MachineFolder f;
-  f.append("s1.lis",
-           "getriebe[0].beschl_kennlinie.typ 3\ngetriebe[0].beschl_kennlinie.a_max 800\n"
-           "getriebe[0].beschl_kennlinie.n1 100000\ngetriebe[0].beschl_kennlinie.n2 150000\n"
-           "getriebe[0].slope_type 0\n");
+  f.append("s1.lis", std::string(kCurveStage) + "getriebe[0].slope_type 0\n");
   const LoadResult r = f.load();
   ASSERT_TRUE(r.machine) << dump(r.diagnostics);
   EXPECT_TRUE(with_id(r.diagnostics, ErrorId::ConfigSpindleSlopeWithCurve).empty()) << dump(r.diagnostics);
