@@ -1,9 +1,9 @@
 #pragma once
 // The report's cycles between two folds into its plots: each cycle's time,
 // its plot values (one row) and per channel what the backplot and the
-// tables need. The cycle only writes here; ReportWriter folds a batch at
-// once, so that its code runs for many cycles in a row (docs/decisions.md,
-// "Preparation in bursts, and the release build").
+// cause timeline need. The run's thread only writes here; ReportPlots folds
+// whole batches on its own thread (docs/decisions.md, "The report's plots
+// on a thread").
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -16,12 +16,15 @@ namespace nck::app {
 
 class ReportBatch {
  public:
-  static constexpr std::size_t kCycles = 64;
+  static constexpr std::size_t kCycles = 512;
   struct ChannelSample {
     std::array<double, 3> pos{};  // X, Y, Z of the backplot
+    std::uint32_t line = 0;       // the block in execution: its line, file and map
+    std::uint32_t frame = 0;
+    std::uint16_t file = 0;
+    bool rapid = false;           // G0
     kernel::CycleCause cause = kernel::CycleCause::none;
     kernel::WaitReason wait_reason{};
-    bool counts = false;  // running or waiting: the cycle counts towards block and tool
   };
 
   void start(std::size_t channels, std::size_t row_size) {

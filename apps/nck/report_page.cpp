@@ -83,12 +83,14 @@ std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const 
   std::string s = "[";
   for (std::size_t c = 0; c < channels_.size(); ++c) {
     const Channel& ch = channels_[c];
-    const double diag = std::hypot(ch.path.max()[0] - ch.path.min()[0], ch.path.max()[1] - ch.path.min()[1],
-                                   ch.path.max()[2] - ch.path.min()[2]);
+    const ReportPlots::Channel& plot = plots_->channel(c);
+    const PathRecorder& path = plot.path;
+    const double diag = std::hypot(path.max()[0] - path.min()[0], path.max()[1] - path.min()[1],
+                                   path.max()[2] - path.min()[2]);
     // A tenth of a pixel of a 1000-pixel view, and never more than kMaxBackplotPoints.
     double tol = std::max(diag / 10000.0, PathRecorder::kRecordTolMm);
-    std::vector<PathPoint> pts = ch.path.simplified(tol);
-    while (pts.size() > kMaxBackplotPoints) pts = ch.path.simplified(tol *= 2);
+    std::vector<PathPoint> pts = path.simplified(tol);
+    while (pts.size() > kMaxBackplotPoints) pts = path.simplified(tol *= 2);
     const bool has_y = ch.axis[1] >= 0;
     const char* plane = ch.plane == 18 || (ch.plane == 0 && !has_y) ? "XZ" : ch.plane == 19 ? "YZ" : "XY";
     s += fmt::format(R"({}{{"n":{},"plane":"{}","axes":[{},{},{}],"has":[{},{},{}],"min":[)", c > 0 ? "," : "", c + 1,
@@ -96,12 +98,12 @@ std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const 
                      ch.axis[1] >= 0, ch.axis[2] >= 0);
     for (int a = 0; a < 3; ++a) {
       if (a > 0) s += ',';
-      append_number(s, ch.path.empty() ? 0 : ch.path.min()[a], 4);
+      append_number(s, path.empty() ? 0 : path.min()[a], 4);
     }
     s += "],\"max\":[";
     for (int a = 0; a < 3; ++a) {
       if (a > 0) s += ',';
-      append_number(s, ch.path.empty() ? 0 : ch.path.max()[a], 4);
+      append_number(s, path.empty() ? 0 : path.max()[a], 4);
     }
     s += "]";
     for (int a = 0; a < 3; ++a)
@@ -111,8 +113,8 @@ std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const 
     s += ",\"file\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.file); });
     s += ",\"rapid\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += p.rapid ? '1' : '0'; });
     s += ",\"t\":" + array_of(pts, [](std::string& o, const PathPoint& p) { append_number(o, p.t_s, 4); });
-    s += ",\"cause_t\":" + array_of(ch.cause_t, [](std::string& o, double t) { append_number(o, t, 4); });
-    s += ",\"cause\":" + array_of(ch.cause_name, [](std::string& o, const std::string& n) { o += json_quoted(n); });
+    s += ",\"cause_t\":" + array_of(plot.cause_t, [](std::string& o, double t) { append_number(o, t, 4); });
+    s += ",\"cause\":" + array_of(plot.cause_name, [](std::string& o, const std::string& n) { o += json_quoted(n); });
     s += ",\"limits\":" + limits_json(ch);
     s += ",\"frames\":" + frames_json(ch);
     if (ch.frames.size() > 1)  // which map each point is in; all the first one otherwise
@@ -217,11 +219,11 @@ std::string ReportWriter::data_json(double end_s, int exit_code) const {
                    array_of(programs_, [](std::string& o, const std::string& p) { o += json_quoted(p); }));
   append_number(s, end_s, 4);
   s += fmt::format(R"(,"exit_code":{},"end":{},"cycle_s":{},"errors":{},"warnings":{},"stride":{},"c_axis":{}}})",
-                   exit_code, json_quoted(end_reason_), cycle_s_, errors_, warnings_, series_.stride(), c_axis_used_);
+                   exit_code, json_quoted(end_reason_), cycle_s_, errors_, warnings_, plots_->series().stride(), c_axis_used_);
   s += ",\"files\":" + array_of(files_, [](std::string& o, const SourceLines& f) { o += json_quoted(f.name()); });
   s += ",\"spindles\":" + array_of(spindles_, [](std::string& o, const std::string& n) { o += json_quoted(n); });
   s += ",\"series\":" + array_of(series_meta_, [](std::string& o, const std::string& m) { o += m; });
-  s += ",\"ts\":" + series_.json(decimals_);
+  s += ",\"ts\":" + plots_->series().json(decimals_);
   s += ",\"channels\":" + channels_json(lines_used);
   s += ",\"waits\":" + array_of(waits_, [&](std::string& o, const Wait& w) {
     o += fmt::format(R"({{"ch":{},"t0":{},"t1":{},"reason":{},"fn":{},"spindle":{},"sync":{},"file":{},"line":{}}})",
@@ -311,7 +313,7 @@ std::string ReportWriter::link_table() const {
 
 std::optional<std::string> ReportWriter::write(const std::string& path, double end_s, int exit_code) {
   if (!enabled_) return std::nullopt;
-  fold_pending();
+  plots_->finish();
   OutputFile f;
   if (auto err = f.open(path)) return err;
   std::string title = "nck report";

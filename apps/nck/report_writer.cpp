@@ -59,6 +59,18 @@ void scan_g_words(const std::string& text, int& motion, int& plane) {
   }
 }
 
+// The "ev" of an event line: its value is a name without escapes, and the
+// key comes before any string value (time and channel are numbers), so the
+// first match is the key. Found once instead of searching the whole line
+// for each kind (an event line per block of the run).
+std::string_view event_kind(std::string_view json_line) {
+  constexpr std::string_view key = "\"ev\":\"";
+  const std::size_t from = json_line.find(key);
+  if (from == std::string_view::npos) return {};
+  const std::size_t begin = from + key.size(), end = json_line.find('"', begin);
+  return end == std::string_view::npos ? std::string_view() : json_line.substr(begin, end - begin);
+}
+
 }  // namespace
 
 void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::DryRun& run) {
@@ -72,6 +84,8 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
   programs_ = opt.programs;
   const std::vector<std::string> columns = path_axis_columns(m);
   std::size_t col = 0;
+  plots_ = std::make_unique<ReportPlots>();
+  std::vector<std::optional<std::array<double, 3>>> path_start(m.channels.size());
   for (std::size_t c = 0; c < m.channels.size(); ++c) {
     Channel ch;
     const auto& axes = m.channels[c].axes;
@@ -102,7 +116,7 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
       std::array<double, 3> p{};
       for (int a = 0; a < 3; ++a)
         if (ch.axis[a] >= 0) p[a] = st.axis_mcs[static_cast<std::size_t>(ch.axis[a])];
-      ch.path.add(p, 0, 0, false);
+      path_start[c] = p;
     }
     if (c < run.channel_count()) {
       ch.contour = std::make_unique<ProgrammedContour>(ch.axis);
@@ -132,8 +146,10 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
       decimals_.push_back(4);
     }
   }
-  pending_.start(channels_.size(), series_meta_.size());
-  series_.start(series_meta_.size(), cycle_s);
+  plots_->configure(channels_.size(), series_meta_.size(), cycle_s);
+  for (std::size_t c = 0; c < channels_.size(); ++c)
+    if (path_start[c]) plots_->channel(c).path.add(*path_start[c], 0, 0, false);
+  plots_->start();
 }
 
 // Channel c's path acceleration and jerk (trace_columns.hpp's names): one
@@ -260,22 +276,6 @@ void ReportWriter::drop_shortest_blocks() {
     it = it->second.time_s <= threshold && !in_use(&it->second) ? blocks_.erase(it) : std::next(it);
 }
 
-// The channel's cause timeline for the time cursor: one entry where the
-// class changes (kMaxListed per channel; beyond, the cursor shows none).
-void ReportWriter::note_cause(Channel& ch, kernel::CycleCause cause, kernel::WaitReason wait_reason, double t_s) {
-  // The name is built only when the cause changes (not in every cycle).
-  const auto reason = cause == kernel::CycleCause::wait ? static_cast<int>(wait_reason) : -1;
-  if (ch.cause_key && ch.cause_key->first == cause && ch.cause_key->second == reason) return;
-  ch.cause_key = {cause, reason};
-  std::string name = cause_name(cause);
-  if (cause == kernel::CycleCause::wait) name += std::string(" ") + wait_reason_name(wait_reason);
-  if (cause == kernel::CycleCause::feedhold) name += " feedhold";
-  if (name == ch.cause_now || ch.cause_t.size() >= kMaxListed) return;
-  ch.cause_now = name;
-  ch.cause_t.push_back(t_s);
-  ch.cause_name.push_back(name);
-}
-
 void ReportWriter::set_ghost(const nlohmann::ordered_json& ghost) {
   if (enabled_) ghost_json_ = dump_json(ghost);
 }
@@ -300,13 +300,11 @@ void ReportWriter::add_mark(Mark m) {
   if (marks_.size() < kMaxListed) marks_.push_back(std::move(m));
 }
 
-// A cycle is recorded as it comes and folded into the plots in batches:
-// the batch's code then stays in the instruction cache (and the kernel's
-// between batches). Events change what a cycle counts towards (block,
-// tool, line): the batch before them is folded first.
+// A cycle is recorded as it comes (what it counts towards, after its own
+// events, and its plot values); ReportPlots folds the batches into the
+// plots on its own thread.
 void ReportWriter::sample(std::uint64_t cycle, const kernel::TickOutput& out, const RunNames& names) {
   if (!enabled_) return;
-  if (!out.events.empty()) fold_pending();
   for (const kernel::Event& e : out.events) {
     take(e, names);
     using K = kernel::EventKind;
@@ -319,19 +317,27 @@ void ReportWriter::sample(std::uint64_t cycle, const kernel::TickOutput& out, co
   }
   watch_plc(out.t_s, names);
   record(cycle, out);
-  if (pending_.full()) fold_pending();
 }
 
 void ReportWriter::record(std::uint64_t cycle, const kernel::TickOutput& out) {
-  const std::size_t i = pending_.add(cycle, out.t_s);
-  double* row = pending_.row(i);
+  ReportBatch& batch = plots_->batch();
+  const std::size_t i = batch.add(cycle, out.t_s);
+  double* row = batch.row(i);
   std::size_t k = 0;
   for (std::size_t c = 0; c < channels_.size(); ++c) {
     Channel& ch = channels_[c];
     const kernel::ChannelOutput& o = out.channels[c];
-    ReportBatch::ChannelSample& pc = pending_.channel(i, c);
-    pc.counts = o.status == kernel::ChannelStatus::running || o.status == kernel::ChannelStatus::waiting;
+    if (o.status == kernel::ChannelStatus::running || o.status == kernel::ChannelStatus::waiting) {
+      if (ch.block) ch.block->time_s += cycle_s_;  // the cycle counts towards its block and tool
+      if (!ch.tool_acc) ch.tool_acc = &tools_[{c, ch.tool}];
+      ch.tool_acc->time_s += cycle_s_;
+    }
+    ReportBatch::ChannelSample& pc = batch.channel(i, c);
     for (int a = 0; a < 3; ++a) pc.pos[a] = ch.axis[a] >= 0 ? o.axis_mcs[static_cast<std::size_t>(ch.axis[a])] : 0.0;
+    pc.line = ch.line;
+    pc.frame = ch.frame;
+    pc.file = ch.file;
+    pc.rapid = ch.motion == 0;
     pc.cause = o.cause;
     pc.wait_reason = o.wait_reason;
     row[k++] = o.path_velocity_mm_s * 60.0;
@@ -349,25 +355,7 @@ void ReportWriter::record(std::uint64_t cycle, const kernel::TickOutput& out) {
     row[k++] = out.channels[c].dist_offset_mm;
     row[k++] = out.channels[c].dist_error_mm;
   }
-}
-
-void ReportWriter::fold_pending() {
-  const ReportBatch& batch = pending_;
-  for (std::size_t i = 0; i < batch.size(); ++i) {
-    for (std::size_t c = 0; c < channels_.size(); ++c) {
-      Channel& ch = channels_[c];
-      const ReportBatch::ChannelSample& pc = batch.channel(i, c);
-      if (pc.counts) {
-        if (ch.block) ch.block->time_s += cycle_s_;
-        if (!ch.tool_acc) ch.tool_acc = &tools_[{c, ch.tool}];
-        ch.tool_acc->time_s += cycle_s_;
-      }
-      ch.path.add(pc.pos, ch.line, ch.file, ch.motion == 0, ch.frame, batch.t_s(i));
-      note_cause(ch, pc.cause, pc.wait_reason, batch.t_s(i));
-    }
-    series_.add(batch.cycle(i), batch.row(i));
-  }
-  pending_.clear();
+  if (batch.full()) plots_->publish();
 }
 
 // A block's map (the PlanStore index in its block event): a new entry in the
@@ -426,21 +414,22 @@ void ReportWriter::watch_plc(double t_s, const RunNames& names) {
 
 void ReportWriter::event(const std::string& json_line, bool is_error) {
   if (!enabled_) return;
-  if (json_line.find("\"ev\":\"link\"") != std::string::npos) note_link(json_line);
-  const bool block = json_line.find("\"ev\":\"block\"") != std::string::npos;
+  const std::string_view kind = event_kind(json_line);
+  if (kind == "link") note_link(json_line);
+  const bool block = kind == "block";
   if (block ? table_blocks_++ < kMaxTableBlocks : events_.size() - std::min(table_blocks_, kMaxTableBlocks) < kMaxTableEvents)
     events_.push_back(json_line);
   else
     ++events_dropped_;
   if (block) return;
-  const bool warning = json_line.find("\"ev\":\"warning\"") != std::string::npos;
+  const bool warning = kind == "warning";
   if (is_error || warning) {
     if (diagnostics_.size() < kMaxListed) diagnostics_.push_back(json_line);
     ++(is_error ? errors_ : warnings_);
     const json j = json::parse(json_line, nullptr, false);
     if (j.is_object() && j.contains("file") && j["file"].is_string()) file_index(j["file"].get<std::string>());
   }
-  if (json_line.find("\"ev\":\"end\"") != std::string::npos) {
+  if (kind == "end") {
     const json j = json::parse(json_line, nullptr, false);
     if (j.is_object() && j.contains("reason") && j["reason"].is_string()) {
       const std::string r = j["reason"].get<std::string>();

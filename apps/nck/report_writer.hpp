@@ -22,6 +22,7 @@
 #include "backplot_axes.hpp"
 #include "report_batch.hpp"
 #include "report_contour.hpp"
+#include "report_plots.hpp"
 #include "report_series.hpp"
 #include "source_lines.hpp"
 #include "run_command.hpp"
@@ -102,7 +103,6 @@ class ReportWriter {
     Accum* tool_acc = nullptr;
     std::map<std::string, std::uint32_t> last_sync;  // fn -> sync bits of its last plc_out
     std::vector<std::size_t> open_waits;  // waits_ indices: one per spindle/function waited for
-    PathRecorder path;
     // program -> machine maps of the blocks executed, in order of appearance
     // (PathPoint::frame); the PlanStore index of the newest
     std::vector<kernel::AffineMap> frames;
@@ -111,17 +111,10 @@ class ReportWriter {
     std::unique_ptr<ProgrammedContour> contour;  // G41/G42 stretches as programmed
     double feed_override_pct = 100;
     std::optional<std::size_t> hold;  // the feedhold in progress (waits_ index)
-    // the cause timeline (note_cause): when each class began, and its name
-    std::vector<double> cause_t;
-    std::vector<std::string> cause_name;
-    std::string cause_now;
-    std::optional<std::pair<kernel::CycleCause, int>> cause_key;  // cause_now's cause and wait reason
   };
   void add_path_derivative_series(std::size_t c);
-  void note_cause(Channel& ch, kernel::CycleCause cause, kernel::WaitReason wait_reason, double t_s);
   void record(std::uint64_t cycle, const kernel::TickOutput& out);
-  void fold_pending();
-  ReportBatch pending_;  // cycles recorded, not yet folded into the plots and tables
+  std::unique_ptr<ReportPlots> plots_;  // tool paths, cause timelines and time series, folded on their own thread
   void add_mark(Mark m);
   std::uint16_t file_index(const std::string& name);
   static constexpr std::uint16_t kNoFile = 0xFFFF;
@@ -158,7 +151,6 @@ class ReportWriter {
   std::vector<std::size_t> dist_channels_;  // channels with 3D distance control (3 series each)
   std::vector<std::string> series_meta_;  // JSON objects, in EnvelopeSeries order
   std::vector<int> decimals_;
-  EnvelopeSeries series_;
   mutable std::vector<SourceLines> files_;  // mutable: reading a line moves the file's stream and cache
   mutable std::size_t open_files_ = 0;       // of files_ (at most 16)
   std::unordered_map<std::string, std::uint16_t> file_ids_;

@@ -1,0 +1,70 @@
+#pragma once
+// The report's plots: each channel's tool path and cause timeline, and the
+// envelopes of the time series. The run's thread only records its cycles
+// into batches (ReportBatch); a thread of their own folds them into the
+// plots, in the order they were recorded, so the page is the same as if the
+// run's thread had folded them itself, and the run does not wait for the
+// report's geometry (docs/decisions.md, "The report's plots on a thread").
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <optional>
+#include <stop_token>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "nck/kernel/tick_io.hpp"
+#include "report_batch.hpp"
+#include "report_series.hpp"
+
+namespace nck::app {
+
+class ReportPlots {
+ public:
+  struct Channel {
+    PathRecorder path;
+    // the cause timeline (the time cursor's class): when each class began, and its name
+    std::vector<double> cause_t;
+    std::vector<std::string> cause_name;
+    std::string cause_now;
+    std::optional<std::pair<kernel::CycleCause, int>> cause_key;  // cause_now's cause and wait reason
+  };
+  static constexpr std::size_t kMaxCauses = 20000;  // timeline entries per channel; beyond, the cursor shows none
+  static constexpr std::size_t kSlots = 8;           // batches recorded ahead of the folding
+
+  ReportPlots() = default;
+  ReportPlots(const ReportPlots&) = delete;
+  ReportPlots& operator=(const ReportPlots&) = delete;
+  ~ReportPlots() { finish(); }
+
+  // The plots' shape; then each channel's path start (channel(c).path),
+  // then start() the folding thread.
+  void configure(std::size_t channels, std::size_t series_count, double cycle_s);
+  void start();
+  Channel& channel(std::size_t c) { return channels_[c]; }  // before start() and after finish() only
+  const Channel& channel(std::size_t c) const { return channels_[c]; }
+  std::size_t channels() const { return channels_.size(); }
+  const EnvelopeSeries& series() const { return series_; }  // after finish() only
+
+  // The batch the run's thread records into; hand it over when full.
+  ReportBatch& batch() { return ring_[published_.load(std::memory_order_relaxed) % kSlots]; }
+  void publish();
+  // Folds every recorded cycle and stops the thread (idempotent).
+  void finish();
+
+ private:
+  void run(std::stop_token stop);
+  void fold(const ReportBatch& b);
+  void note_cause(Channel& ch, kernel::CycleCause cause, kernel::WaitReason wait_reason, double t_s);
+
+  std::vector<Channel> channels_;
+  EnvelopeSeries series_;
+  std::array<ReportBatch, kSlots> ring_;
+  std::atomic<std::uint64_t> published_{0};  // batches handed over (written by the run's thread)
+  std::atomic<std::uint64_t> folded_{0};     // batches folded (written by the folding thread)
+  std::jthread thread_;
+};
+
+}  // namespace nck::app
