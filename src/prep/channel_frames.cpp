@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <fmt/format.h>
 
 namespace nck::prep {
@@ -91,11 +92,28 @@ AffineMap ChannelFrames::affine(frames::SuppressMask m) const {
   AffineMap a;
   for (std::size_t k = 0; k < 3; ++k) a.main[k] = to_channel_[k];
   a.shift = to_mcs(motion::AxisVector{}, m);
+  // Without a rotation or coordinate system every axis is only shifted, each
+  // by its own sums: one point with all three main axes at 1 then gives
+  // each column's numbers bit for bit as a point per axis would (this runs
+  // for every block while a report records the maps).
+  std::optional<motion::AxisVector> all_columns;
+  if (!chain_.turns()) {
+    motion::AxisVector ones{};
+    for (std::size_t k = 0; k < 3; ++k)
+      if (a.main[k] >= 0) ones[static_cast<std::size_t>(a.main[k])] = 1.0;
+    all_columns = to_mcs(ones, m);
+  }
   for (std::size_t k = 0; k < 3; ++k) {
-    motion::AxisVector unit{};
     if (a.main[k] < 0) continue;
-    unit[static_cast<std::size_t>(a.main[k])] = 1.0;
-    const motion::AxisVector col = to_mcs(unit, m);
+    const auto axis = static_cast<std::size_t>(a.main[k]);
+    motion::AxisVector col = a.shift;
+    if (all_columns) {
+      col[axis] = (*all_columns)[axis];
+    } else {
+      motion::AxisVector unit{};
+      unit[axis] = 1.0;
+      col = to_mcs(unit, m);
+    }
     for (std::size_t r = 0; r < 3; ++r) {
       const double v = a.main[r] >= 0 ? col[static_cast<std::size_t>(a.main[r])] - a.shift[static_cast<std::size_t>(a.main[r])] : 0.0;
       a.rot[r][k] = v;

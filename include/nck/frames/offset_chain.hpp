@@ -167,6 +167,12 @@ class OffsetChain {
   std::uint32_t pending_axes() const;
 
   // --- mapping (rt: noexcept, no allocation) --------------------------------
+  // True when a #ROTATION, #ECS, #CS or #ACS is on: the map turns or mixes
+  // the main axes; otherwise each axis is only shifted.
+  bool turns() const noexcept {
+    return state_.rotation.active || state_.ecs_active || state_.cs.effective_depth() > 0 ||
+           state_.acs.effective_depth() > 0;
+  }
   McsPoint to_mcs(const PcsPoint& p, SuppressMask m = SuppressMask::none()) const noexcept;
   PcsPoint to_pcs(const McsPoint& p, SuppressMask m = SuppressMask::none()) const noexcept;
   // #SUPPRESS OFFSETS needs G90 (20985).

@@ -162,6 +162,37 @@ TEST(ChannelFrames, ClampOffsetOfTheChosenGroup) {
   expect_xyz(r.mcs(0, 0, 0), 110, 45, -150);
 }
 
+// The map as one point per main axis gives it (to_mcs of each unit vector
+// minus the shift), compared bit for bit: affine() takes a shortcut when
+// nothing turns, which must not change a digit.
+void expect_map_as_by_columns(const FramesRig& r) {
+  const AffineMap a = r.frames.affine(r.none);
+  const motion::AxisVector shift = r.frames.to_mcs({}, r.none);
+  EXPECT_EQ(a.shift, shift);
+  for (std::size_t k = 0; k < 3; ++k) {
+    motion::AxisVector unit{};
+    unit[static_cast<std::size_t>(a.main[k])] = 1.0;
+    const motion::AxisVector col = r.frames.to_mcs(unit, r.none);
+    for (std::size_t rr = 0; rr < 3; ++rr) {
+      const auto j = static_cast<std::size_t>(a.main[rr]);
+      EXPECT_EQ(a.rot[rr][k], col[j] - shift[j]) << rr << "," << k;
+    }
+  }
+}
+
+TEST(ChannelFrames, MapOfShiftsIsExactlyTheMapOfItsColumns) {
+  FramesRig r("mill");
+  // offsets whose digits do not survive 1 + offset - offset
+  r.apply_all("G92 X0.0000000000000001 Y0.00000000000000015 Z-0.0000000000000001\nM30\n");
+  expect_map_as_by_columns(r);
+  const AffineMap shifted = r.frames.affine(r.none);
+  EXPECT_NE(shifted.rot[0][0], 1.0);  // so an identity would not pass for the map
+  EXPECT_TRUE(shifted.pure_translation);
+  r.apply_all("#CS ON [1][0.1,0.2,0.3,0,0,30]\nM30\n");  // and with a turn (the general way)
+  expect_map_as_by_columns(r);
+  EXPECT_FALSE(r.frames.affine(r.none).pure_translation);
+}
+
 TEST(ChannelFrames, RotatedCoordinateSystem) {
   FramesRig r("mill");
   r.load("G54\n#CS ON [1][20,0,0,0,0,90]\n#CS OFF\nM30\n");
