@@ -182,9 +182,9 @@ std::array<float, 3> to_float(const std::array<double, 3>& p) {
 // within tol of the line through the run's first point and its direction
 // at the start; `breaks(a, b)` forces a vertex between two points.
 template <class Breaks>
-std::vector<PathPoint> thin(const std::vector<PathPoint>& in, double tol, Breaks breaks) {
-  std::vector<PathPoint> out;
-  if (in.empty()) return out;
+void thin(const std::vector<PathPoint>& in, double tol, Breaks breaks, std::vector<PathPoint>& out) {
+  out.clear();
+  if (in.empty()) return;
   out.push_back(in.front());
   std::size_t dir_from = 0;  // the run: in[dir_from] (the anchor) and in[dir_from + 1] give the direction
   for (std::size_t i = 1; i < in.size(); ++i) {
@@ -197,8 +197,9 @@ std::vector<PathPoint> thin(const std::vector<PathPoint>& in, double tol, Breaks
     if (i > dir_from + 1) dir_from = i - 1;  // the previous end is a vertex; a new run starts there
     out.push_back(in[i]);
   }
-  return out;
 }
+
+bool breaks_run(const PathPoint& a, const PathPoint& b) { return a.rapid != b.rapid || a.frame != b.frame; }
 
 }  // namespace
 
@@ -260,21 +261,22 @@ void PathRecorder::add(const std::array<double, 3>& pos, std::uint32_t line, std
 // twice the last one; if breaks (G0/G1, maps) alone leave too many, every
 // second vertex goes. The newest point stays the tip.
 void PathRecorder::thin_in_place() {
-  auto breaks = [](const PathPoint& a, const PathPoint& b) { return a.rapid != b.rapid || a.frame != b.frame; };
   constexpr double kMaxTolMm = 1e6;
   const PathPoint tip = points_.back();
+  // Thinned into a second buffer of the same room, then swapped: no
+  // allocation and no fresh pages after the first time.
+  scratch_.reserve(kMaxVertices + 1);
   for (double tol = std::max(2 * thin_tol_mm_, 2 * kRecordTolMm); points_.size() > kMaxVertices / 2; tol *= 2) {
     if (tol > kMaxTolMm) {
-      std::vector<PathPoint> half;
-      half.reserve(points_.size() / 2 + 1);
-      for (std::size_t i = 0; i < points_.size(); i += 2) half.push_back(points_[i]);
-      points_ = std::move(half);
+      scratch_.clear();
+      for (std::size_t i = 0; i < points_.size(); i += 2) scratch_.push_back(points_[i]);
+      points_.swap(scratch_);
       break;
     }
-    points_ = thin(points_, tol, breaks);
+    thin(points_, tol, breaks_run, scratch_);
+    points_.swap(scratch_);
     thin_tol_mm_ = tol;
   }
-  points_.reserve(kMaxVertices + 1);
   if (points_.empty() || points_.back().pos != tip.pos) points_.push_back(tip);
   has_dir_ = false;  // the next point starts a new run from the tip
   anchor_ = tip_;
@@ -282,8 +284,9 @@ void PathRecorder::thin_in_place() {
 
 std::vector<PathPoint> PathRecorder::simplified(double tol_mm) const {
   // a new map starts a new run: the page draws each point in its own block's program coordinates
-  return thin(points_, tol_mm,
-              [](const PathPoint& a, const PathPoint& b) { return a.rapid != b.rapid || a.frame != b.frame; });
+  std::vector<PathPoint> out;
+  thin(points_, tol_mm, breaks_run, out);
+  return out;
 }
 
 }  // namespace nck::app

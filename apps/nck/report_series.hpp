@@ -79,6 +79,7 @@ class PathRecorder {
   void thin_in_place();
 
   std::vector<PathPoint> points_;  // vertices; the last one is the newest set point
+  std::vector<PathPoint> scratch_;  // thin_in_place's second buffer
   std::array<double, 3> tip_{};    // the newest set point in full precision
   std::array<double, 3> anchor_{}, dir_{};  // the current run: its start and unit direction
   bool has_dir_ = false;
