@@ -1,59 +1,65 @@
 #include "report_plots.hpp"
 
-#include <chrono>
-
 #include "output_writers.hpp"
 #include "time_by_cause.hpp"
 
 namespace nck::app {
-namespace {
 
-// How long the folding thread sleeps when it has caught up, and the run's
-// thread when every slot waits to be folded (rare: folding a batch costs a
-// fraction of running its cycles).
-constexpr std::chrono::microseconds kIdleWait{100};
-
-}  // namespace
-
-void ReportPlots::configure(std::size_t channels, std::size_t series_count, double cycle_s) {
-  channels_.resize(channels);
+void ReportPlots::start(std::size_t series_count, double cycle_s) {
   series_.start(series_count, cycle_s);
-  for (ReportBatch& b : ring_) b.start(channels, series_count);
+  for (ReportBatch& b : ring_) b.start(channels_.size(), series_count);
+  thread_ = std::thread([this] { run(); });
 }
 
-void ReportPlots::start() {
-  thread_ = std::jthread([this](std::stop_token stop) { run(stop); });
-}
-
+// The folding thread is woken when half the ring waits (a wake per batch
+// would be a system call every 512 cycles); the run's thread waits only
+// when the whole ring waits, which a folding thread on a free core never
+// lets happen.
 void ReportPlots::publish() {
   const std::uint64_t next = published_.load(std::memory_order_relaxed) + 1;
-  published_.store(next, std::memory_order_release);
-  // The slot to record into next must have been folded and emptied.
-  while (next - folded_.load(std::memory_order_acquire) >= kSlots) std::this_thread::sleep_for(kIdleWait);
+  published_.store(next, std::memory_order_seq_cst);
+  if (next - folded_.load(std::memory_order_seq_cst) >= kWakeBatches && folder_idle_.load(std::memory_order_seq_cst))
+    wake(false);
+  if (next - folded_.load(std::memory_order_acquire) < kSlots) return;  // the next slot is free
+  std::unique_lock lock(mutex_);
+  recorder_waits_.store(true, std::memory_order_seq_cst);
+  woken_.wait(lock, [&] { return next - folded_.load(std::memory_order_seq_cst) < kSlots; });
+  recorder_waits_.store(false, std::memory_order_relaxed);
+}
+
+void ReportPlots::wake(bool stop) {
+  const std::lock_guard lock(mutex_);
+  if (stop) stopping_ = true;
+  woken_.notify_all();
 }
 
 void ReportPlots::finish() {
   if (!thread_.joinable()) return;
   if (batch().size() > 0) publish();
-  thread_.request_stop();
+  wake(true);
   thread_.join();
 }
 
-// Folds the batches in the order they were handed over; after a stop
-// request, what was handed over still is folded before the thread ends.
-void ReportPlots::run(std::stop_token stop) {
+// Folds the batches in the order they were handed over; once stopped, what
+// was handed over still is folded before the thread ends.
+void ReportPlots::run() {
   std::uint64_t folded = folded_.load(std::memory_order_relaxed);
   for (;;) {
-    const bool stopping = stop.stop_requested();
     if (folded == published_.load(std::memory_order_acquire)) {
-      if (stopping) return;
-      std::this_thread::sleep_for(kIdleWait);
+      std::unique_lock lock(mutex_);
+      folder_idle_.store(true, std::memory_order_seq_cst);
+      woken_.wait(lock, [&] {
+        return stopping_ || published_.load(std::memory_order_seq_cst) - folded >= kWakeBatches;
+      });
+      folder_idle_.store(false, std::memory_order_relaxed);
+      if (stopping_ && folded == published_.load(std::memory_order_acquire)) return;
       continue;
     }
     ReportBatch& b = ring_[folded % kSlots];
     fold(b);
     b.clear();
-    folded_.store(++folded, std::memory_order_release);
+    folded_.store(++folded, std::memory_order_seq_cst);
+    if (recorder_waits_.load(std::memory_order_seq_cst)) wake(false);
   }
 }
 

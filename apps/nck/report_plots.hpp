@@ -7,9 +7,10 @@
 // report's geometry (docs/decisions.md, "The report's plots on a thread").
 #include <array>
 #include <atomic>
+#include <condition_variable>
 #include <cstdint>
+#include <mutex>
 #include <optional>
-#include <stop_token>
 #include <string>
 #include <thread>
 #include <utility>
@@ -32,17 +33,17 @@ class ReportPlots {
     std::optional<std::pair<kernel::CycleCause, int>> cause_key;  // cause_now's cause and wait reason
   };
   static constexpr std::size_t kMaxCauses = 20000;  // timeline entries per channel; beyond, the cursor shows none
-  static constexpr std::size_t kSlots = 8;           // batches recorded ahead of the folding
+  static constexpr std::size_t kSlots = 16;          // batches recorded ahead of the folding
+  static constexpr std::size_t kWakeBatches = kSlots / 2;
 
-  ReportPlots() = default;
+  explicit ReportPlots(std::size_t channels) : channels_(channels) {}
   ReportPlots(const ReportPlots&) = delete;
   ReportPlots& operator=(const ReportPlots&) = delete;
   ~ReportPlots() { finish(); }
 
-  // The plots' shape; then each channel's path start (channel(c).path),
-  // then start() the folding thread.
-  void configure(std::size_t channels, std::size_t series_count, double cycle_s);
-  void start();
+  // After each channel's path start (channel(c).path): the time series and
+  // the folding thread.
+  void start(std::size_t series_count, double cycle_s);
   Channel& channel(std::size_t c) { return channels_[c]; }  // before start() and after finish() only
   const Channel& channel(std::size_t c) const { return channels_[c]; }
   std::size_t channels() const { return channels_.size(); }
@@ -55,7 +56,8 @@ class ReportPlots {
   void finish();
 
  private:
-  void run(std::stop_token stop);
+  void run();
+  void wake(bool stop);
   void fold(const ReportBatch& b);
   void note_cause(Channel& ch, kernel::CycleCause cause, kernel::WaitReason wait_reason, double t_s);
 
@@ -64,7 +66,13 @@ class ReportPlots {
   std::array<ReportBatch, kSlots> ring_;
   std::atomic<std::uint64_t> published_{0};  // batches handed over (written by the run's thread)
   std::atomic<std::uint64_t> folded_{0};     // batches folded (written by the folding thread)
-  std::jthread thread_;
+  // Sleeping and waking: a side sets its flag under the mutex before it
+  // waits; the other side, having moved its counter, wakes it if the flag is set.
+  std::mutex mutex_;
+  std::condition_variable woken_;
+  std::atomic<bool> folder_idle_{false}, recorder_waits_{false};
+  bool stopping_ = false;  // under mutex_
+  std::thread thread_;
 };
 
 }  // namespace nck::app

@@ -84,8 +84,7 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
   programs_ = opt.programs;
   const std::vector<std::string> columns = path_axis_columns(m);
   std::size_t col = 0;
-  plots_ = std::make_unique<ReportPlots>();
-  std::vector<std::optional<std::array<double, 3>>> path_start(m.channels.size());
+  plots_ = std::make_unique<ReportPlots>(m.channels.size());
   for (std::size_t c = 0; c < m.channels.size(); ++c) {
     Channel ch;
     const auto& axes = m.channels[c].axes;
@@ -116,7 +115,7 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
       std::array<double, 3> p{};
       for (int a = 0; a < 3; ++a)
         if (ch.axis[a] >= 0) p[a] = st.axis_mcs[static_cast<std::size_t>(ch.axis[a])];
-      path_start[c] = p;
+      plots_->channel(c).path.add(p, 0, 0, false);
     }
     if (c < run.channel_count()) {
       ch.contour = std::make_unique<ProgrammedContour>(ch.axis);
@@ -146,10 +145,7 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
       decimals_.push_back(4);
     }
   }
-  plots_->configure(channels_.size(), series_meta_.size(), cycle_s);
-  for (std::size_t c = 0; c < channels_.size(); ++c)
-    if (path_start[c]) plots_->channel(c).path.add(*path_start[c], 0, 0, false);
-  plots_->start();
+  plots_->start(series_meta_.size(), cycle_s);
 }
 
 // Channel c's path acceleration and jerk (trace_columns.hpp's names): one

@@ -38,10 +38,9 @@ std::vector<Cycle> cycles(std::size_t n) {
 
 TEST(ReportPlots, FoldedOnTheirThreadAsOnTheRunsThread) {
   const std::vector<Cycle> run = cycles(70000);  // 137 batches, the envelope past its 4,096 buckets
-  ReportPlots plots;
-  plots.configure(1, kSeries, kCycleS);
+  ReportPlots plots(1);
   plots.channel(0).path.add({1, 0, 0}, 0, 0, false);
-  plots.start();
+  plots.start(kSeries, kCycleS);
   PathRecorder path;
   path.add({1, 0, 0}, 0, 0, false);
   EnvelopeSeries series;
@@ -85,9 +84,8 @@ TEST(ReportPlots, FoldedOnTheirThreadAsOnTheRunsThread) {
 }
 
 TEST(ReportPlots, EndWithoutFinishingLeavesNoThreadBehind) {
-  auto plots = std::make_unique<ReportPlots>();
-  plots->configure(2, 1, kCycleS);
-  plots->start();
+  auto plots = std::make_unique<ReportPlots>(2);
+  plots->start(1, kCycleS);
   for (std::size_t i = 0; i < 3 * ReportBatch::kCycles; ++i) {
     ReportBatch& b = plots->batch();
     b.row(b.add(i, static_cast<double>(i) * kCycleS))[0] = 1.0;
