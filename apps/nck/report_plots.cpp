@@ -1,5 +1,7 @@
 #include "report_plots.hpp"
 
+#include <exception>
+
 #include "output_writers.hpp"
 #include "time_by_cause.hpp"
 
@@ -56,7 +58,15 @@ void ReportPlots::run() {
       continue;
     }
     ReportBatch& b = ring_[folded % kSlots];
-    fold(b);
+    // Out of memory in a plot ends the plots where they are (the page shows
+    // what was folded), never the run: the batches are still taken.
+    if (!failed_) {
+      try {
+        fold(b);
+      } catch (const std::exception&) {
+        failed_ = true;
+      }
+    }
     b.clear();
     folded_.store(++folded, std::memory_order_seq_cst);
     if (recorder_waits_.load(std::memory_order_seq_cst)) wake(false);

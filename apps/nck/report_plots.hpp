@@ -72,6 +72,7 @@ class ReportPlots {
   std::condition_variable woken_;
   std::atomic<bool> folder_idle_{false}, recorder_waits_{false};
   bool stopping_ = false;  // under mutex_
+  bool failed_ = false;    // a fold ran out of memory (folding thread only)
   std::thread thread_;
 };
 
