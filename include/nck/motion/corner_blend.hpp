@@ -35,4 +35,14 @@ struct CornerBlend {
 std::optional<CornerBlend> blend_corner(const Segment& a, const Segment& b, double path_dev_mm,
                                         double max_trim_a_mm, double max_trim_b_mm) noexcept;
 
+// The same corner with a parabola instead of the fillet (SegmentKind::parabola,
+// STEP's blend): a quadratic Bezier with equal legs, tangent to both blocks,
+// whose control point is where their tangents meet (the programmed corner
+// between lines). The largest that keeps the corner within path_dev_mm of
+// it and the trims within their bounds; between lines it has the closed
+// form leg = 4 path_dev / |t_out - t_in|. Line-line, line-arc and arc-line
+// corners only (nullopt otherwise, or when none fits); radius_mm is the leg.
+std::optional<CornerBlend> blend_corner_parabola(const Segment& a, const Segment& b, double path_dev_mm,
+                                                 double max_trim_a_mm, double max_trim_b_mm) noexcept;
+
 }  // namespace nck::motion

@@ -30,6 +30,7 @@
 
 #include "nck/core/fixed_vector.hpp"
 #include "nck/kernel/queues.hpp"
+#include "nck/motion/corner_blend.hpp"
 #include "nck/motion/limits.hpp"
 #include "nck/prep/blend_limits.hpp"
 #include "nck/prep/command_packer.hpp"
@@ -97,6 +98,8 @@ class LookAheadWindow {
   double entry_limit(const PlannedCommand& c) const;
   bool passes_at_cruise(std::uint64_t seq) const;
   bool blend(std::uint64_t prev, PlannedCommand& next);
+  double corner_cost(const motion::CornerBlend& cb, const motion::PathLimits& l, const PlannedCommand& before,
+                     const PlannedCommand& after) const;
   static motion::PathLimits jerk_fillet_limits(const motion::Segment& fillet, const BlendDynamics& d,
                                                const motion::PathLimits& before);
   bool lowering_is_safe(std::uint64_t seq, PlannedCommand changed) const;
