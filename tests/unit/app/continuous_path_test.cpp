@@ -336,6 +336,44 @@ TEST(CornerBlending, RightAnglesAtASmallSemicircleWithinPathDev001) {
   EXPECT_LT(distance_to_trace(tr, {2.5, 0, -1}), 0.01 + 0.002);
 }
 
+// Issue 30's parabolic blend (STEP): a right angle between lines along the
+// axes at PATH_DEV 0.01 mm. Legs L = 0.04 / sqrt 2 mm, the path enters at
+// v = sqrt(2 L (0.99 a_max - 0.05 a)) = 12.686 mm/s (a fillet: 8.37), and
+// inside X brakes and Y speeds up, each by v^2 / (2 L) = 2845 mm/s^2 in
+// every cycle; the true speed dips to v cos 45 degrees in the middle.
+TEST(CornerBlending, ParabolaAtARightAngleMatchesTheClosedForm) {
+  const PathRun r = run_mill("cb-parabola",
+                             "N10 G17 G90 G0 X0 Y0 Z-1\n#CONTOUR MODE [DEV PATH_DEV=0.01]\nG261\n"
+                             "N20 G1 X5 Y0 F1500\nN30 G1 X5 Y5\nM30\n");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  const Trace& tr = r.trace;
+  const double leg = 0.04 / std::sqrt(2.0), v = std::sqrt(2 * leg * (0.99 * 3000 - 0.05 * 2500));
+  const double a_turn = v * v / (2 * leg);
+  auto inside = [&](std::size_t i) { return tr.p[i][0] > 5 - leg + 1e-6 && tr.p[i][1] < leg - 1e-6; };
+  std::size_t cycles_inside = 0, last_before = 0;
+  double v_min = 1e9;
+  for (std::size_t i = 2; i < tr.p.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      const double v1 = (tr.p[i][k] - tr.p[i - 1][k]) / kDt, v0 = (tr.p[i - 1][k] - tr.p[i - 2][k]) / kDt;
+      ASSERT_LE(std::fabs(v1), 500.01) << "axis " << k << " t " << tr.t[i];
+      ASSERT_LE(std::fabs(v1 - v0) / kDt, (k == 2 ? 2500 : 3000) + 5.0) << "axis " << k << " t " << tr.t[i];
+    }
+    if (tr.p[i][0] <= 5 - leg && tr.p[i][1] == 0) last_before = i;
+    if (!(inside(i - 2) && inside(i - 1) && inside(i))) continue;
+    ++cycles_inside;
+    const double ax = (tr.p[i][0] - 2 * tr.p[i - 1][0] + tr.p[i - 2][0]) / (kDt * kDt);
+    const double ay = (tr.p[i][1] - 2 * tr.p[i - 1][1] + tr.p[i - 2][1]) / (kDt * kDt);
+    EXPECT_NEAR(ax, -a_turn, 5.0) << tr.t[i];
+    EXPECT_NEAR(ay, a_turn, 5.0) << tr.t[i];
+    v_min = std::min(v_min, speed(tr, i));
+  }
+  EXPECT_NEAR(v, 12.686, 0.001);
+  EXPECT_GE(cycles_inside, 1u);  // 4.5 cycles long: at least one second difference wholly inside
+  EXPECT_NEAR(speed(tr, last_before), v, 0.01);  // entered at its limit
+  EXPECT_GT(v_min, v * std::sqrt(0.5) - 0.05);
+  EXPECT_NEAR(distance_to_trace(tr, {5, 0, -1}), 0.01, 0.002);
+}
+
 TEST(CornerBlending, SyntaxErrorsNameIdFileAndLine) {
   auto expect_error = [](const std::string& name, const std::string& text, const std::string& id, const std::string& line) {
     const PathRun r = run_mill(name, text);
