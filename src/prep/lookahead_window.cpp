@@ -325,6 +325,7 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   raise_chain(seq);
   open_motion_ = seq + 1;
   ++stats_.blends;
+  stats_.parabolas += parabola ? 1 : 0;
   stats_.shortfall_mm += cb->shortfall_mm;
   stats_.max_deviation_mm = std::max(stats_.max_deviation_mm, cb->deviation_mm);
   return true;

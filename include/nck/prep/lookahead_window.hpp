@@ -51,9 +51,10 @@ struct BlendAxes {
 
 // Totals over the run, for reports and benchmarks.
 struct BlendStats {
-  std::uint64_t blends = 0;      // fillets placed
+  std::uint64_t blends = 0;      // blends placed (fillets and parabolas)
+  std::uint64_t parabolas = 0;   // of them parabolas (STEP)
   double shortfall_mm = 0;       // programmed length minus blended length, summed
-  double max_deviation_mm = 0;   // largest corner-to-fillet distance
+  double max_deviation_mm = 0;   // largest corner-to-blend distance
 };
 
 class LookAheadWindow {

@@ -12,6 +12,8 @@
 #include <fmt/format.h>
 
 #include "cli_helpers.hpp"
+#include "nck/config/load.hpp"
+#include "nck/sim/dry_run.hpp"
 
 namespace nck::app {
 namespace {
@@ -205,6 +207,19 @@ double distance_to_trace(const Trace& tr, const std::array<double, 3>& q) {
   return best;
 }
 
+// The blends preparation placed in a program on the mill (fillets and
+// parabolas), from a dry run of it.
+prep::BlendStats blends_of(const std::string& text) {
+  const auto file = temp_dir("cp-prop-blends") / "p.nc";
+  std::ofstream(file) << text;
+  static const config::Machine mill = *config::load_machine(root() + "/examples/mill").machine;
+  auto run = sim::DryRun::create(mill, {file});
+  if (!run) return {};
+  auto out = std::make_unique<kernel::TickOutput>();
+  while (!run->done()) run->step(*out);
+  return run->prep(0).blend_stats();
+}
+
 // Runs `count` random programs (with `prelude` after the first block) and
 // checks every cycle: no axis beyond max_speed_mm_s or a_max, every programmed end
 // point within end_tol_mm of the trace, and the trace no shorter than the
@@ -214,9 +229,15 @@ void check_random_programs(const std::string& prelude, double end_tol_mm, double
   const int count = env ? std::atoi(env) : 12;
   const std::array<double, 3> v_max{500, 500, 500}, a_max{3000, 3000, 2500};
   std::mt19937 rng(20261123);
+  prep::BlendStats blends{};  // of the first 12 programs: both kinds of blend are among what is checked
   for (int n = 0; n < count; ++n) {
     RandomProgram program = random_program(rng);
     program.text.insert(program.text.find('\n') + 1, prelude);
+    if (!prelude.empty() && n < 12) {
+      const prep::BlendStats b = blends_of(program.text);
+      blends.blends += b.blends;
+      blends.parabolas += b.parabolas;
+    }
     PathRun r = run_mill("cp-prop", program.text);
     std::ofstream(temp_dir("cp-prop-last") / "p.nc") << program.text;
     ASSERT_EQ(r.cli.exit_code, 0) << program.text << r.cli.output;
@@ -241,6 +262,10 @@ void check_random_programs(const std::string& prelude, double end_tol_mm, double
     const double blocks = static_cast<double>(program.points.size()), rounding = 2e-6 * static_cast<double>(tr.p.size());
     EXPECT_GE(travelled_mm, program.length_mm - max_short_per_block_mm * blocks - rounding) << program.text;
     EXPECT_LE(travelled_mm, program.length_mm + rounding) << program.text;
+  }
+  if (!prelude.empty() && count >= 12) {
+    EXPECT_GT(blends.parabolas, 0u);
+    EXPECT_GT(blends.blends, blends.parabolas);  // fillets too
   }
 }
 
