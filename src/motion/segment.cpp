@@ -100,15 +100,15 @@ void Segment::point_at(double s_mm, AxisVector& out) const noexcept {
     return;
   }
   for (std::size_t i = 0; i < n_axes_; ++i) out[i] = start_[i] + f * (end_[i] - start_[i]);
-  if (kind_ == SegmentKind::parabola) {
-    const double g = 1.0 - f;
-    out[plane_a_] = g * g * start_[plane_a_] + 2.0 * f * g * center_a_ + f * f * end_[plane_a_];
-    out[plane_b_] = g * g * start_[plane_b_] + 2.0 * f * g * center_b_ + f * f * end_[plane_b_];
-  } else if (kind_ == SegmentKind::arc) {
+  if (kind_ == SegmentKind::arc) {
     const double ang = angle_start_rad_ + f * sweep_rad_;
     const double r = r_start_mm_ + f * (r_end_mm_ - r_start_mm_);
     out[plane_a_] = center_a_ + r * std::cos(ang);
     out[plane_b_] = center_b_ + r * std::sin(ang);
+  } else if (kind_ == SegmentKind::parabola) [[unlikely]] {
+    const double g = 1.0 - f;
+    out[plane_a_] = g * g * start_[plane_a_] + 2.0 * f * g * center_a_ + f * f * end_[plane_a_];
+    out[plane_b_] = g * g * start_[plane_b_] + 2.0 * f * g * center_b_ + f * f * end_[plane_b_];
   }
 }
 
@@ -135,7 +135,7 @@ void Segment::tangent_at(double s_mm, AxisVector& out) const noexcept {
     return;
   }
   for (std::size_t i = 0; i < n_axes_; ++i) out[i] = (end_[i] - start_[i]) / length_mm_;
-  if (kind_ == SegmentKind::parabola) {  // not a unit vector inside: the axes' share of the path speed
+  if (kind_ == SegmentKind::parabola) [[unlikely]] {  // not a unit vector inside: the axes' share of the path speed
     const double f = fraction(s_mm), k = 2.0 / length_mm_;
     out[plane_a_] = k * ((1.0 - f) * (center_a_ - start_[plane_a_]) + f * (end_[plane_a_] - center_a_));
     out[plane_b_] = k * ((1.0 - f) * (center_b_ - start_[plane_b_]) + f * (end_[plane_b_] - center_b_));
