@@ -100,16 +100,20 @@ void Segment::point_at(double s_mm, AxisVector& out) const noexcept {
     return;
   }
   for (std::size_t i = 0; i < n_axes_; ++i) out[i] = start_[i] + f * (end_[i] - start_[i]);
-  if (kind_ == SegmentKind::arc) {
-    const double ang = angle_start_rad_ + f * sweep_rad_;
-    const double r = r_start_mm_ + f * (r_end_mm_ - r_start_mm_);
-    out[plane_a_] = center_a_ + r * std::cos(ang);
-    out[plane_b_] = center_b_ + r * std::sin(ang);
-  } else if (kind_ == SegmentKind::parabola) [[unlikely]] {
-    const double g = 1.0 - f;
-    out[plane_a_] = g * g * start_[plane_a_] + 2.0 * f * g * center_a_ + f * f * end_[plane_a_];
-    out[plane_b_] = g * g * start_[plane_b_] + 2.0 * f * g * center_b_ + f * f * end_[plane_b_];
-  }
+  // One test for a line, as before parabolas (SegmentKind orders line
+  // first), and the parabola out of line: a line's cycle costs what it did.
+  if (kind_ < SegmentKind::arc) return;
+  if (kind_ == SegmentKind::parabola) [[unlikely]] return parabola_point(f, out);
+  const double ang = angle_start_rad_ + f * sweep_rad_;
+  const double r = r_start_mm_ + f * (r_end_mm_ - r_start_mm_);
+  out[plane_a_] = center_a_ + r * std::cos(ang);
+  out[plane_b_] = center_b_ + r * std::sin(ang);
+}
+
+void Segment::parabola_point(double f, AxisVector& out) const noexcept {
+  const double g = 1.0 - f;
+  out[plane_a_] = g * g * start_[plane_a_] + 2.0 * f * g * center_a_ + f * f * end_[plane_a_];
+  out[plane_b_] = g * g * start_[plane_b_] + 2.0 * f * g * center_b_ + f * f * end_[plane_b_];
 }
 
 Segment Segment::remainder(double s_mm) const noexcept {

@@ -4,6 +4,8 @@
 // blocks is put in the corner, and both blocks are shortened to its tangent
 // points. Lines stay lines and arcs stay arcs on their own circle, the
 // fillet is an arc: the kernel executes all three exactly, by path length.
+// Under STEP the corner may get a parabola instead (blend_corner_parabola,
+// corner_parabola.cpp), also run by path length.
 //
 // The fillet radius is the largest at which (a) the corner point is no
 // further than path_dev_mm from the fillet (the largest distance between

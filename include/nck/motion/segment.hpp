@@ -120,6 +120,8 @@ class Segment {
                                                         std::size_t, std::size_t, std::size_t) noexcept;
 
   double fraction(double s_mm) const noexcept;
+  // point_at's plane axes on a parabola at fraction f (kept out of point_at).
+  [[gnu::noinline]] void parabola_point(double f, AxisVector& out) const noexcept;
 
   SegmentKind kind_ = SegmentKind::line;
   std::size_t n_axes_ = 0;

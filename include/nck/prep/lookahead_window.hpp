@@ -16,6 +16,7 @@
 //
 // Corner blending (G61/G261, docs/decisions.md): when a motion chains after
 // one whose end may be blended (PlannedCommand::blend_dev_mm), a circular fillet
+// or (STEP, where its corner costs less time) a parabola
 // (motion/corner_blend.hpp) is put between them as a motion command of its
 // own, both neighbours shortened to its tangent points; where none fits,
 // the corner stays sharp with its velocity limit.
