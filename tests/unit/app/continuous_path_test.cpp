@@ -61,9 +61,10 @@ struct PathRun {
 };
 
 // Runs a program file on the mill with trace, events and final state.
-PathRun run_mill_file(const std::filesystem::path& program, const std::filesystem::path& dir) {
+PathRun run_mill_file(const std::filesystem::path& program, const std::filesystem::path& dir,
+                      const std::string& options = "") {
   PathRun r;
-  r.cli = run_nck("run " + root() + "/examples/mill " + program.string() + " --trace " + (dir / "t.csv").string() +
+  r.cli = run_nck("run " + root() + "/examples/mill " + program.string() + options + " --trace " + (dir / "t.csv").string() +
                   " --events " + (dir / "e.jsonl").string() + " --final " + (dir / "f.json").string());
   r.trace = read_trace(dir / "t.csv");
   for (const json& e : read_jsonl(dir / "e.jsonl"))
@@ -397,6 +398,33 @@ TEST(CornerBlending, ParabolaAtARightAngleMatchesTheClosedForm) {
   EXPECT_NEAR(speed(tr, last_before), v, 0.01);  // entered at its limit
   EXPECT_GT(v_min, v * std::sqrt(0.5) - 0.05);
   EXPECT_NEAR(distance_to_trace(tr, {5, 0, -1}), 0.01, 0.002);
+}
+
+// The operator on a parabola: a feedhold (brakes along it with 5 % of the
+// feed acceleration, the rest after it) or an override change starting in
+// any cycle around the chord/semicircle right angles keeps every axis
+// within a_max.
+TEST(CornerBlending, FeedholdAndOverrideOnAParabolaKeepTheAxesWithinAMax) {
+  const auto dir = temp_dir("cb-parabola-hold");
+  std::ofstream(dir / "p.nc") << "N10 G17 G90 G0 X0 Y0 Z-1\n#CONTOUR MODE [DEV PATH_DEV=0.01]\nG261\n"
+                                 "N20 G1 X5 Y0 F1500\nN30 G2 X5.5 Y0 I0.25 J0 F1200\nN40 G1 X5.5 Y-5 F1500\nM30\n";
+  // N30 starts at 0.248 s, N40 at 0.287 s: the parabolas lie around both.
+  // The feedhold is released 0.1 s later (a held program would run on to the run's time limit).
+  for (const char* action : {"feedhold on", "feed_override 10", "feed_override 150"})
+    for (int ms = 238; ms <= 296; ms += 3) {
+      const bool hold = std::string(action) == "feedhold on";
+      std::ofstream(dir / "h.plc") << fmt::format("{:.3f} {}\n", ms / 1000.0, action)
+                                   << (hold ? fmt::format("{:.3f} feedhold off\n", ms / 1000.0 + 0.1) : "");
+      const PathRun r = run_mill_file(dir / "p.nc", dir, " --plc " + (dir / "h.plc").string());
+      ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+      const Trace& tr = r.trace;
+      ASSERT_GT(tr.p.size(), 300u) << action << " " << ms;
+      for (std::size_t i = 2; i < tr.p.size(); ++i)
+        for (int k = 0; k < 2; ++k) {
+          const double a = (tr.p[i][k] - 2 * tr.p[i - 1][k] + tr.p[i - 2][k]) / (kDt * kDt);
+          ASSERT_LE(std::fabs(a), 3000 + 5.0) << action << " at " << ms << " ms, axis " << k << " t " << tr.t[i];
+        }
+    }
 }
 
 TEST(CornerBlending, SyntaxErrorsNameIdFileAndLine) {
