@@ -210,6 +210,27 @@ double LookAheadWindow::corner_cost(const motion::CornerBlend& cb, const motion:
          ramp(v_out, after.limits.a_acc_mm_s2);
 }
 
+// The blend of the corner between p and next: the fillet, or (both under
+// STEP) the parabola where its corner costs less time (corner_cost); each
+// block keeps at least 10 % of its programmed length. `limits`: the chosen
+// blend's path limits.
+std::optional<motion::CornerBlend> LookAheadWindow::corner_blend(const Entry& p, const PlannedCommand& next,
+                                                                 const BlendDynamics& dyn, motion::PathLimits& limits) const {
+  const double trim_a = 0.45 * p.programmed_mm, trim_b = 0.45 * next.segment.length();
+  auto cb = motion::blend_corner(p.command.segment, next.segment, p.command.blend_dev_mm, trim_a, trim_b);
+  if (cb) limits = jerk_fillet_limits(cb->fillet, dyn, p.command.limits);
+  // STEP only: a parabola's axes change their acceleration at its ends by
+  // up to a_max (no jerk limit could hold there).
+  if (p.command.limits.slope != SlopeProfile::step || next.limits.slope != SlopeProfile::step) return cb;
+  const auto cb_parabola =
+      motion::blend_corner_parabola(p.command.segment, next.segment, p.command.blend_dev_mm, trim_a, trim_b);
+  if (!cb_parabola) return cb;
+  const motion::PathLimits l = parabola_limits(cb_parabola->fillet, dyn);
+  if (cb && corner_cost(*cb, limits, p.command, next) <= corner_cost(*cb_parabola, l, p.command, next)) return cb;
+  limits = l;
+  return cb_parabola;
+}
+
 // Puts a fillet between the open motion `prev` and `next` (about to be
 // appended): shortens both, appends the fillet as a motion of prev's block
 // and makes it the open motion. False (nothing changed) where no fillet
@@ -223,28 +244,13 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   // the feed, like the chords of a fine polygon, stays as programmed).
   const double feed = std::min(cruise(p.command), cruise(next));
   if (next.v_entry_max_mm_s >= 0.999 * feed) return false;
-  // Each block keeps at least 10 % of its programmed length.
-  const double trim_a = 0.45 * p.programmed_mm, trim_b = 0.45 * next.segment.length();
-  auto cb = motion::blend_corner(p.command.segment, next.segment, p.command.blend_dev_mm, trim_a, trim_b);
-  // STEP only: a parabola's axes change their acceleration at its ends by
-  // up to a_max (no jerk limit could hold there).
-  const bool step = p.command.limits.slope == SlopeProfile::step && next.limits.slope == SlopeProfile::step;
-  const auto cb_parabola =
-      step ? motion::blend_corner_parabola(p.command.segment, next.segment, p.command.blend_dev_mm, trim_a, trim_b)
-           : std::nullopt;
-  if (!cb && !cb_parabola) return false;
   const WeightScale w = both(p.command.weights, next.weights);
   const BlendAxes& ax = w.unit() ? axes_ : weighted_axes(w);
   const BlendDynamics dyn{std::span<const motion::AxisDynamics>(ax.feed_dyn.data(), ax.n_axes),
                           std::span<const double>(ax.a_max_mm_s2.data(), ax.n_axes)};
-  motion::PathLimits blend_limits = cb ? jerk_fillet_limits(cb->fillet, dyn, p.command.limits) : motion::PathLimits{};
-  if (cb_parabola) {
-    const motion::PathLimits l = parabola_limits(cb_parabola->fillet, dyn);
-    if (!cb || corner_cost(*cb_parabola, l, p.command, next) < corner_cost(*cb, blend_limits, p.command, next)) {
-      cb = cb_parabola;
-      blend_limits = l;
-    }
-  }
+  motion::PathLimits blend_limits{};
+  const auto cb = corner_blend(p, next, dyn, blend_limits);
+  if (!cb) return false;
   const bool parabola = cb->fillet.kind() == motion::SegmentKind::parabola;
   PlannedCommand f;
   f.weights = w;

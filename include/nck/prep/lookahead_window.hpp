@@ -100,6 +100,8 @@ class LookAheadWindow {
   double entry_limit(const PlannedCommand& c) const;
   bool passes_at_cruise(std::uint64_t seq) const;
   bool blend(std::uint64_t prev, PlannedCommand& next);
+  std::optional<motion::CornerBlend> corner_blend(const Entry& p, const PlannedCommand& next, const BlendDynamics& dyn,
+                                                  motion::PathLimits& limits) const;
   double corner_cost(const motion::CornerBlend& cb, const motion::PathLimits& l, const PlannedCommand& before,
                      const PlannedCommand& after) const;
   static motion::PathLimits jerk_fillet_limits(const motion::Segment& fillet, const BlendDynamics& d,
