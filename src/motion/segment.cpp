@@ -124,6 +124,7 @@ Segment Segment::remainder(double s_mm) const noexcept {
   if (kind_ == SegmentKind::parabola) {  // de Casteljau: the same curve, the same speed law
     r.center_a_ = (1.0 - f) * center_a_ + f * end_[plane_a_];
     r.center_b_ = (1.0 - f) * center_b_ + f * end_[plane_b_];
+    r.plane_len_mm_ = r.length_mm_;
   } else if (kind_ == SegmentKind::arc) {
     r.angle_start_rad_ = angle_start_rad_ + f * sweep_rad_;
     r.sweep_rad_ = sweep_rad_ * (1.0 - f);

@@ -140,6 +140,7 @@ TEST(CornerParabola, RemainderIsTheSameCurveAndSpeedLaw) {
   const double s0 = 0.3 * cb->fillet.length();
   const Segment rest = cb->fillet.remainder(s0);
   EXPECT_NEAR(rest.length(), cb->fillet.length() - s0, 1e-12);
+  EXPECT_EQ(rest.plane_arc_length(), rest.length());
   AxisVector p{}, q{};
   for (int i = 0; i <= 10; ++i) {
     const double s = rest.length() * i / 10;
@@ -147,6 +148,22 @@ TEST(CornerParabola, RemainderIsTheSameCurveAndSpeedLaw) {
     cb->fillet.point_at(s0 + s, q);
     EXPECT_LT(unit_gap(p, q), 1e-12);
     EXPECT_EQ(p[2], 1);
+  }
+}
+
+// The command queue carries a motion without its start (SegmentTail):
+// joined again it is the same parabola, bit for bit.
+TEST(CornerParabola, TailAndJoinedKeepItBitForBit) {
+  const Segment a = line(p3(0, 0), p3(1, 0)), b = line(p3(1, 0), p3(1, 1));
+  const auto cb = blend_corner_parabola(a, b, 0.01, 0.45, 0.45);
+  ASSERT_TRUE(cb);
+  const Segment back = Segment::joined(cb->fillet.start_point(), cb->fillet.tail());
+  EXPECT_EQ(back.kind(), SegmentKind::parabola);
+  AxisVector p{}, q{};
+  for (int i = 0; i <= 10; ++i) {
+    back.point_at(cb->fillet.length() * i / 10, p);
+    cb->fillet.point_at(cb->fillet.length() * i / 10, q);
+    EXPECT_EQ(p, q);
   }
 }
 
