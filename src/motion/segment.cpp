@@ -100,9 +100,10 @@ void Segment::point_at(double s_mm, AxisVector& out) const noexcept {
     return;
   }
   for (std::size_t i = 0; i < n_axes_; ++i) out[i] = start_[i] + f * (end_[i] - start_[i]);
-  // One test for a line, as before parabolas (SegmentKind orders line
-  // first), and the parabola out of line: a line's cycle costs what it did.
-  if (kind_ < SegmentKind::arc) return;
+  // A line returns after one test of its kind (as before parabolas; the
+  // kind is now held in a register for the second test: one instruction
+  // more), and the parabola's point is out of line.
+  if (kind_ == SegmentKind::line) [[likely]] return;
   if (kind_ == SegmentKind::parabola) [[unlikely]] return parabola_point(f, out);
   const double ang = angle_start_rad_ + f * sweep_rad_;
   const double r = r_start_mm_ + f * (r_end_mm_ - r_start_mm_);
