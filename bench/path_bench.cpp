@@ -121,6 +121,7 @@ void run_common(benchmark::State& state, const std::string& prelude, double tr_s
   state.counters["time_ratio"] = last_s / w.ideal_s;
   state.counters["path_short_pct"] = 100.0 * (w.length_mm - travelled_mm) / w.length_mm;
   state.counters["blends"] = static_cast<double>(blends.blends);
+  state.counters["parabolas"] = static_cast<double>(blends.parabolas);
   state.counters["blend_short_mm"] = blends.shortfall_mm;
   state.counters["max_dev_mm"] = blends.max_deviation_mm;
   state.counters["sim_s"] = last_s;

@@ -100,12 +100,21 @@ void Segment::point_at(double s_mm, AxisVector& out) const noexcept {
     return;
   }
   for (std::size_t i = 0; i < n_axes_; ++i) out[i] = start_[i] + f * (end_[i] - start_[i]);
-  if (kind_ == SegmentKind::arc) {
-    const double ang = angle_start_rad_ + f * sweep_rad_;
-    const double r = r_start_mm_ + f * (r_end_mm_ - r_start_mm_);
-    out[plane_a_] = center_a_ + r * std::cos(ang);
-    out[plane_b_] = center_b_ + r * std::sin(ang);
-  }
+  // A line returns after one test of its kind (as before parabolas; the
+  // kind is now held in a register for the second test: one instruction
+  // more), and the parabola's point is out of line.
+  if (kind_ == SegmentKind::line) [[likely]] return;
+  if (kind_ == SegmentKind::parabola) [[unlikely]] return parabola_point(f, out);
+  const double ang = angle_start_rad_ + f * sweep_rad_;
+  const double r = r_start_mm_ + f * (r_end_mm_ - r_start_mm_);
+  out[plane_a_] = center_a_ + r * std::cos(ang);
+  out[plane_b_] = center_b_ + r * std::sin(ang);
+}
+
+void Segment::parabola_point(double f, AxisVector& out) const noexcept {
+  const double g = 1.0 - f;
+  out[plane_a_] = g * g * start_[plane_a_] + 2.0 * f * g * center_a_ + f * f * end_[plane_a_];
+  out[plane_b_] = g * g * start_[plane_b_] + 2.0 * f * g * center_b_ + f * f * end_[plane_b_];
 }
 
 Segment Segment::remainder(double s_mm) const noexcept {
@@ -113,7 +122,11 @@ Segment Segment::remainder(double s_mm) const noexcept {
   Segment r = *this;
   point_at(s_mm, r.start_);
   r.length_mm_ = length_mm_ * (1.0 - f);
-  if (kind_ == SegmentKind::arc) {
+  if (kind_ == SegmentKind::parabola) {  // de Casteljau: the same curve, the same speed law
+    r.center_a_ = (1.0 - f) * center_a_ + f * end_[plane_a_];
+    r.center_b_ = (1.0 - f) * center_b_ + f * end_[plane_b_];
+    r.plane_len_mm_ = r.length_mm_;
+  } else if (kind_ == SegmentKind::arc) {
     r.angle_start_rad_ = angle_start_rad_ + f * sweep_rad_;
     r.sweep_rad_ = sweep_rad_ * (1.0 - f);
     r.r_start_mm_ = r_start_mm_ + f * (r_end_mm_ - r_start_mm_);
@@ -128,7 +141,11 @@ void Segment::tangent_at(double s_mm, AxisVector& out) const noexcept {
     return;
   }
   for (std::size_t i = 0; i < n_axes_; ++i) out[i] = (end_[i] - start_[i]) / length_mm_;
-  if (kind_ == SegmentKind::arc) {
+  if (kind_ == SegmentKind::parabola) [[unlikely]] {  // not a unit vector inside: the axes' share of the path speed
+    const double f = fraction(s_mm), k = 2.0 / length_mm_;
+    out[plane_a_] = k * ((1.0 - f) * (center_a_ - start_[plane_a_]) + f * (end_[plane_a_] - center_a_));
+    out[plane_b_] = k * ((1.0 - f) * (center_b_ - start_[plane_b_]) + f * (end_[plane_b_] - center_b_));
+  } else if (kind_ == SegmentKind::arc) {
     const double f = fraction(s_mm);
     const double ang = angle_start_rad_ + f * sweep_rad_;
     const double r = r_start_mm_ + f * (r_end_mm_ - r_start_mm_);
@@ -262,6 +279,28 @@ std::expected<Segment, ArcError> make_arc_radius(const AxisVector& start, const 
   // The computed centre is equidistant by construction (a radius that was
   // short by the tolerance gives a half circle of radius chord/2).
   return make_arc_center(start, end, n_axes, plane_a, plane_b, ca, cb, ccw, 0, tol, length_axes);
+}
+
+std::expected<Segment, ArcError> make_parabola(const AxisVector& start, double control_a, double control_b,
+                                               const AxisVector& end, std::size_t n_axes, std::size_t plane_a,
+                                               std::size_t plane_b) noexcept {
+  if (auto e = plane_error(n_axes, plane_a, plane_b)) return std::unexpected(*e);
+  if (!all_finite(start, n_axes) || !all_finite(end, n_axes) || !std::isfinite(control_a) ||
+      !std::isfinite(control_b))
+    return std::unexpected(ArcError::non_finite_input);
+  Segment seg;
+  seg.kind_ = SegmentKind::parabola;
+  seg.n_axes_ = n_axes;
+  seg.start_ = start;
+  seg.end_ = end;
+  seg.plane_a_ = plane_a;
+  seg.plane_b_ = plane_b;
+  seg.center_a_ = control_a;
+  seg.center_b_ = control_b;
+  const double leg1 = std::hypot(control_a - start[plane_a], control_b - start[plane_b]);
+  const double leg2 = std::hypot(end[plane_a] - control_a, end[plane_b] - control_b);
+  seg.length_mm_ = seg.plane_len_mm_ = leg1 + leg2;
+  return seg;
 }
 
 }  // namespace nck::motion

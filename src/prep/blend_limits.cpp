@@ -1,7 +1,9 @@
 #include "nck/prep/blend_limits.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 
 namespace nck::prep {
 namespace {
@@ -11,6 +13,10 @@ namespace {
 constexpr double kCapShare = 0.99;
 // Speeding up or braking on a fillet: this share of the feed acceleration.
 constexpr double kFilletTangentialShare = 0.25;
+// On a parabola: it is run at one speed (a feedhold or an override change
+// on it is the only change), and every share taken from its turn costs
+// speed where the time is lost (docs/performance.md, issue 30).
+constexpr double kParabolaTangentialShare = 0.05;
 
 struct PlaneBudget {
   double a_feed_mm_s2 = 0;  // the smaller feed acceleration (speeding up or braking) of both plane axes
@@ -34,7 +40,68 @@ double along_beside(double a_cap_mm_s2, double a_n_mm_s2) {
   return a_n_mm_s2 < a_cap_mm_s2 ? std::sqrt(a_cap_mm_s2 * a_cap_mm_s2 - a_n_mm_s2 * a_n_mm_s2) : 0.0;
 }
 
+// The plane axes' acceleration on parabola p at path speed 1 mm/s (signed,
+// mm/s^2 per (mm/s)^2): constant over it, 2 (p0 - 2 c + p2) / length^2.
+std::array<double, 2> parabola_turn(const motion::Segment& p) {
+  const double k = 2.0 / (p.length() * p.length());
+  const std::size_t a = p.plane_a(), b = p.plane_b();
+  return {k * (p.start_point()[a] - 2.0 * p.control_a() + p.end_point()[a]),
+          k * (p.start_point()[b] - 2.0 * p.control_b() + p.end_point()[b])};
+}
+
 }  // namespace
+
+motion::PathLimits parabola_limits(const motion::Segment& parabola, const BlendDynamics& d) {
+  const PlaneBudget p = plane_budget(parabola, d);
+  const double a_t = kParabolaTangentialShare * p.a_feed_mm_s2;
+  const std::array<double, 2> turn = parabola_turn(parabola);
+  const std::array<std::size_t, 2> axis{parabola.plane_a(), parabola.plane_b()};
+  // Each axis on its own: its turn and (at most, the tangent's share being
+  // at most 1) the along-path part within its own a_max.
+  double v2 = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < 2; ++k) {
+    const double left = kCapShare * d.a_max_mm_s2[axis[k]] - a_t;
+    if (std::fabs(turn[k]) > 0) v2 = std::min(v2, std::max(left, 0.0) / std::fabs(turn[k]));
+  }
+  motion::PathLimits l;
+  l.v_max_mm_s = std::min(p.v_max_mm_s, std::sqrt(v2));
+  l.a_acc_mm_s2 = l.a_dec_mm_s2 = a_t;
+  return l;
+}
+
+double parabola_pass_acceleration(const motion::Segment& parabola, const motion::PathLimits& parabola_l,
+                                  const motion::Segment& other, const motion::PathLimits& other_l, bool other_after,
+                                  const BlendDynamics& d, double cycle_s) {
+  const double v = parabola_l.v_max_mm_s;
+  const std::array<double, 2> turn = parabola_turn(parabola);
+  const std::array<std::size_t, 2> axis{parabola.plane_a(), parabola.plane_b()};
+  // Half the parabola's acceleration (what the crossing chord lies on it)
+  // plus the other block's own turn one step faster, per axis, signed.
+  std::array<double, 2> across{0.5 * turn[0] * v * v, 0.5 * turn[1] * v * v};
+  const motion::AxisVector& joint = other_after ? other.start_point() : other.end_point();
+  if (other.kind() == motion::SegmentKind::arc) {
+    const double v1 = v + std::max(other_l.a_acc_mm_s2, other_l.a_dec_mm_s2) * cycle_s;
+    const double r = std::min(other.radius_start(), other.radius_end());
+    const double to_a = other.center_a() - joint[axis[0]], to_b = other.center_b() - joint[axis[1]];
+    const double k = v1 * v1 / (r * std::max(std::hypot(to_a, to_b), 1e-12));
+    across[0] += k * to_a;
+    across[1] += k * to_b;
+  }
+  motion::AxisVector t{};
+  other.tangent_at(other_after ? 0.0 : other.length(), t);
+  double a = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < 2; ++k) {
+    const double left = kCapShare * d.a_max_mm_s2[axis[k]] - std::fabs(across[k]);
+    if (left <= 0) return 0.0;
+    if (std::fabs(t[axis[k]]) > 1e-12) a = std::min(a, left / std::fabs(t[axis[k]]));
+  }
+  // The crossing chord's lean and shortening, as for a fillet (pass_acceleration).
+  const double a_turn = std::hypot(turn[0], turn[1]) * v * v;
+  const double lean = std::min(std::hypot(across[0], across[1]) * cycle_s / std::max(v, 1e-9), 1.0);
+  const double theta = a_turn * cycle_s / std::max(v, 1e-9);
+  const double extra = v * (1 - std::sqrt(1 - lean * lean) + theta * theta / 24) / cycle_s;
+  return std::isfinite(a) ? std::max(a - extra, 0.0) : 0.0;
+}
 
 motion::PathLimits fillet_limits(const motion::Segment& fillet, const BlendDynamics& d) {
   const PlaneBudget p = plane_budget(fillet, d);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "nck/motion/corner_blend.hpp"
 #include "nck/prep/blend_limits.hpp"
@@ -194,6 +195,42 @@ const BlendAxes& LookAheadWindow::weighted_axes(const WeightScale& w) {
   return weighted_;
 }
 
+// Roughly what a blend costs against the programmed corner at the feed
+// (continuous time, to choose between a fillet and a parabola): its own
+// time less the trimmed length's, braking into it and speeding up after it.
+double LookAheadWindow::corner_cost(const motion::CornerBlend& cb, const motion::PathLimits& l,
+                                    const PlannedCommand& before, const PlannedCommand& after) const {
+  const double v = std::min({l.v_max_mm_s, before.v_cmd_mm_s, after.v_cmd_mm_s});
+  if (!(v > 0)) return std::numeric_limits<double>::infinity();
+  const double v_in = cruise(before), v_out = cruise(after);
+  const double trim_in = before.segment.length() - cb.before.length();
+  const double trim_out = after.segment.length() - cb.after.length();
+  auto ramp = [v](double v_feed, double a) { return v < v_feed && a > 0 ? (v_feed - v) * (v_feed - v) / (2 * a * v_feed) : 0.0; };
+  return cb.fillet.length() / v - trim_in / v_in - trim_out / v_out + ramp(v_in, before.limits.a_dec_mm_s2) +
+         ramp(v_out, after.limits.a_acc_mm_s2);
+}
+
+// The blend of the corner between p and next: the fillet, or (both under
+// STEP) the parabola where its corner costs less time (corner_cost); each
+// block keeps at least 10 % of its programmed length. `limits`: the chosen
+// blend's path limits.
+std::optional<motion::CornerBlend> LookAheadWindow::corner_blend(const Entry& p, const PlannedCommand& next,
+                                                                 const BlendDynamics& dyn, motion::PathLimits& limits) const {
+  const double trim_a = 0.45 * p.programmed_mm, trim_b = 0.45 * next.segment.length();
+  auto cb = motion::blend_corner(p.command.segment, next.segment, p.command.blend_dev_mm, trim_a, trim_b);
+  if (cb) limits = jerk_fillet_limits(cb->fillet, dyn, p.command.limits);
+  // STEP only: a parabola's axes change their acceleration at its ends by
+  // up to a_max (no jerk limit could hold there).
+  if (p.command.limits.slope != SlopeProfile::step || next.limits.slope != SlopeProfile::step) return cb;
+  const auto cb_parabola =
+      motion::blend_corner_parabola(p.command.segment, next.segment, p.command.blend_dev_mm, trim_a, trim_b);
+  if (!cb_parabola) return cb;
+  const motion::PathLimits l = parabola_limits(cb_parabola->fillet, dyn);
+  if (cb && corner_cost(*cb, limits, p.command, next) <= corner_cost(*cb_parabola, l, p.command, next)) return cb;
+  limits = l;
+  return cb_parabola;
+}
+
 // Puts a fillet between the open motion `prev` and `next` (about to be
 // appended): shortens both, appends the fillet as a motion of prev's block
 // and makes it the open motion. False (nothing changed) where no fillet
@@ -207,14 +244,14 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   // the feed, like the chords of a fine polygon, stays as programmed).
   const double feed = std::min(cruise(p.command), cruise(next));
   if (next.v_entry_max_mm_s >= 0.999 * feed) return false;
-  // Each block keeps at least 10 % of its programmed length.
-  const auto cb = motion::blend_corner(p.command.segment, next.segment, p.command.blend_dev_mm,
-                                       0.45 * p.programmed_mm, 0.45 * next.segment.length());
-  if (!cb) return false;
   const WeightScale w = both(p.command.weights, next.weights);
   const BlendAxes& ax = w.unit() ? axes_ : weighted_axes(w);
   const BlendDynamics dyn{std::span<const motion::AxisDynamics>(ax.feed_dyn.data(), ax.n_axes),
                           std::span<const double>(ax.a_max_mm_s2.data(), ax.n_axes)};
+  motion::PathLimits blend_limits{};
+  const auto cb = corner_blend(p, next, dyn, blend_limits);
+  if (!cb) return false;
+  const bool parabola = cb->fillet.kind() == motion::SegmentKind::parabola;
   PlannedCommand f;
   f.weights = w;
   f.kind = CommandKind::motion;
@@ -224,7 +261,7 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   f.n = p.command.n;
   f.emit_block_event = false;  // a follow-up of the block before
   f.segment = cb->fillet;
-  f.limits = jerk_fillet_limits(cb->fillet, dyn, p.command.limits);
+  f.limits = blend_limits;
   f.v_cmd_mm_s = std::min(p.command.v_cmd_mm_s, next.v_cmd_mm_s);
   f.css = p.command.css;
   f.feed_motion = true;
@@ -250,7 +287,9 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   f.v_entry_max_mm_s = std::max(std::min(tangent_cap(before, f, ax), fillet_entry), 0.0);
   after.v_entry_max_mm_s = tangent_cap(f, after, ax);
   if (f.limits.slope == SlopeProfile::step && after.limits.slope == SlopeProfile::step) {
-    after.start_a_mm_s2 = pass_acceleration(cb->fillet, f.limits, cb->after, after.limits, dyn, cycle_s_);
+    after.start_a_mm_s2 =
+        parabola ? parabola_pass_acceleration(cb->fillet, f.limits, cb->after, after.limits, true, dyn, cycle_s_)
+                 : pass_acceleration(cb->fillet, f.limits, cb->after, after.limits, dyn, cycle_s_);
     after.after_fillet = true;
   }
   // Into the fillet: the block before brakes to the fillet's speed in the
@@ -258,7 +297,9 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   // fillet's first part leaves of a_max. Worth a lower braking over the
   // whole block only down to kIntoFilletShare of its own.
   if (f.limits.slope == SlopeProfile::step && before.limits.slope == SlopeProfile::step) {
-    const double a_in = pass_acceleration(cb->fillet, f.limits, cb->before, before.limits, dyn, cycle_s_);
+    const double a_in =
+        parabola ? parabola_pass_acceleration(cb->fillet, f.limits, cb->before, before.limits, false, dyn, cycle_s_)
+                 : pass_acceleration(cb->fillet, f.limits, cb->before, before.limits, dyn, cycle_s_);
     before.into_fillet = a_in >= kIntoFilletShare * before.limits.a_dec_mm_s2;
     if (before.into_fillet) before.limits.a_dec_mm_s2 = std::min(before.limits.a_dec_mm_s2, a_in);
   }
@@ -290,6 +331,7 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   raise_chain(seq);
   open_motion_ = seq + 1;
   ++stats_.blends;
+  stats_.parabolas += parabola ? 1 : 0;
   stats_.shortfall_mm += cb->shortfall_mm;
   stats_.max_deviation_mm = std::max(stats_.max_deviation_mm, cb->deviation_mm);
   return true;

@@ -4,6 +4,8 @@
 // blocks is put in the corner, and both blocks are shortened to its tangent
 // points. Lines stay lines and arcs stay arcs on their own circle, the
 // fillet is an arc: the kernel executes all three exactly, by path length.
+// Under STEP the corner may get a parabola instead (blend_corner_parabola,
+// corner_parabola.cpp), also run by path length.
 //
 // The fillet radius is the largest at which (a) the corner point is no
 // further than path_dev_mm from the fillet (the largest distance between
@@ -34,5 +36,15 @@ struct CornerBlend {
 // nullopt when no fillet fits: the caller keeps the sharp corner.
 std::optional<CornerBlend> blend_corner(const Segment& a, const Segment& b, double path_dev_mm,
                                         double max_trim_a_mm, double max_trim_b_mm) noexcept;
+
+// The same corner with a parabola instead of the fillet (SegmentKind::parabola,
+// STEP's blend): a quadratic Bezier with equal legs, tangent to both blocks,
+// whose control point is where their tangents meet (the programmed corner
+// between lines). The largest that keeps the corner within path_dev_mm of
+// it and the trims within their bounds; between lines it has the closed
+// form leg = 4 path_dev / |t_out - t_in|. Line-line, line-arc and arc-line
+// corners only (nullopt otherwise, or when none fits); radius_mm is the leg.
+std::optional<CornerBlend> blend_corner_parabola(const Segment& a, const Segment& b, double path_dev_mm,
+                                                 double max_trim_a_mm, double max_trim_b_mm) noexcept;
 
 }  // namespace nck::motion

@@ -33,7 +33,13 @@ enum class ArcError : std::uint8_t {
 // A short English description of the cause, for diagnostics.
 std::string_view describe(ArcError e) noexcept;
 
-enum class SegmentKind : std::uint8_t { line, arc };
+// parabola: a corner blend (docs/decisions.md, corner blending), the
+// quadratic Bezier start -> control point -> end in the plane, run at a
+// uniform Bezier parameter per unit of "path length" s: at a constant
+// path speed every axis accelerates constantly. Its length() is the sum of
+// its two (equal) legs, so s is not the arc length: the path speed is the
+// true speed at both ends and up to cos(turn/2) below it inside.
+enum class SegmentKind : std::uint8_t { line, arc, parabola };
 
 // How far the start and end radius of a centre-programmed arc may differ:
 // accepted when |r_end - r_start| <= max(abs_mm, rel * r_start).
@@ -53,7 +59,7 @@ struct SegmentTail {
   std::uint8_t plane_a = 0, plane_b = 1;
   AxisVector end{};
   double length_mm = 0;
-  // arc only
+  // arc only (a parabola: its control point in center_a/center_b)
   double center_a = 0, center_b = 0;
   double r_start_mm = 0, r_end_mm = 0;
   double angle_start_rad = 0, sweep_rad = 0, plane_len_mm = 0;
@@ -99,6 +105,9 @@ class Segment {
   double radius_end() const noexcept { return r_end_mm_; }
   double sweep_rad() const noexcept { return sweep_rad_; }  // signed, + = ccw
   double plane_arc_length() const noexcept { return plane_len_mm_; }
+  // Parabola: its control point in the plane (the legs' intersection).
+  double control_a() const noexcept { return center_a_; }
+  double control_b() const noexcept { return center_b_; }
 
  private:
   friend std::expected<Segment, ArcError> make_line(const AxisVector&, const AxisVector&,
@@ -107,8 +116,12 @@ class Segment {
                                                           std::size_t, std::size_t, std::size_t,
                                                           double, double, bool, int, ArcTolerance,
                                                           AxisMask) noexcept;
+  friend std::expected<Segment, ArcError> make_parabola(const AxisVector&, double, double, const AxisVector&,
+                                                        std::size_t, std::size_t, std::size_t) noexcept;
 
   double fraction(double s_mm) const noexcept;
+  // point_at's plane axes on a parabola at fraction f (kept out of point_at).
+  [[gnu::noinline]] void parabola_point(double f, AxisVector& out) const noexcept;
 
   SegmentKind kind_ = SegmentKind::line;
   std::size_t n_axes_ = 0;
@@ -152,5 +165,13 @@ std::expected<Segment, ArcError> make_arc_radius(const AxisVector& start, const 
                                                  std::size_t plane_b, double radius_mm, bool ccw,
                                                  ArcTolerance tol = {},
                                                  AxisMask length_axes = kAllAxes) noexcept;
+
+// A parabola from start to end in the plane (plane_a, plane_b) with its
+// control point (control_a, control_b): both legs (start to control point,
+// control point to end) should be of one length, so that the path speed is
+// the true speed at both ends; every other axis must stand. setup
+std::expected<Segment, ArcError> make_parabola(const AxisVector& start, double control_a, double control_b,
+                                               const AxisVector& end, std::size_t n_axes, std::size_t plane_a,
+                                               std::size_t plane_b) noexcept;
 
 }  // namespace nck::motion

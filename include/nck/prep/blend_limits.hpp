@@ -46,4 +46,20 @@ double pass_acceleration(const motion::Segment& fillet, const motion::PathLimits
                          const motion::Segment& next, const motion::PathLimits& next_l, const BlendDynamics& d,
                          double cycle_s);
 
+// A parabola (STEP's corner blend, SegmentKind::parabola) is run at one
+// speed too: at path speed v each plane axis accelerates constantly by
+// v^2 times its share of the curve's second derivative; v is the largest
+// at which that plus 5 % of the feed acceleration (along the path, a
+// feedhold on it) stays within each axis's own a_max.
+motion::PathLimits parabola_limits(const motion::Segment& parabola, const BlendDynamics& d);
+
+// pass_acceleration for a parabola, per axis: half its constant
+// acceleration plus the other block's turn (signed, the vector sum per
+// axis), the rest of each axis's a_max for speeding up or braking along the
+// other block's tangent at the joint. other_after: `other` follows the
+// parabola (else it is the block before).
+double parabola_pass_acceleration(const motion::Segment& parabola, const motion::PathLimits& parabola_l,
+                                  const motion::Segment& other, const motion::PathLimits& other_l, bool other_after,
+                                  const BlendDynamics& d, double cycle_s);
+
 }  // namespace nck::prep

@@ -16,6 +16,7 @@
 //
 // Corner blending (G61/G261, docs/decisions.md): when a motion chains after
 // one whose end may be blended (PlannedCommand::blend_dev_mm), a circular fillet
+// or (STEP, where its corner costs less time) a parabola
 // (motion/corner_blend.hpp) is put between them as a motion command of its
 // own, both neighbours shortened to its tangent points; where none fits,
 // the corner stays sharp with its velocity limit.
@@ -30,6 +31,7 @@
 
 #include "nck/core/fixed_vector.hpp"
 #include "nck/kernel/queues.hpp"
+#include "nck/motion/corner_blend.hpp"
 #include "nck/motion/limits.hpp"
 #include "nck/prep/blend_limits.hpp"
 #include "nck/prep/command_packer.hpp"
@@ -50,9 +52,10 @@ struct BlendAxes {
 
 // Totals over the run, for reports and benchmarks.
 struct BlendStats {
-  std::uint64_t blends = 0;      // fillets placed
+  std::uint64_t blends = 0;      // blends placed (fillets and parabolas)
+  std::uint64_t parabolas = 0;   // of them parabolas (STEP)
   double shortfall_mm = 0;       // programmed length minus blended length, summed
-  double max_deviation_mm = 0;   // largest corner-to-fillet distance
+  double max_deviation_mm = 0;   // largest corner-to-blend distance
 };
 
 class LookAheadWindow {
@@ -97,6 +100,10 @@ class LookAheadWindow {
   double entry_limit(const PlannedCommand& c) const;
   bool passes_at_cruise(std::uint64_t seq) const;
   bool blend(std::uint64_t prev, PlannedCommand& next);
+  std::optional<motion::CornerBlend> corner_blend(const Entry& p, const PlannedCommand& next, const BlendDynamics& dyn,
+                                                  motion::PathLimits& limits) const;
+  double corner_cost(const motion::CornerBlend& cb, const motion::PathLimits& l, const PlannedCommand& before,
+                     const PlannedCommand& after) const;
   static motion::PathLimits jerk_fillet_limits(const motion::Segment& fillet, const BlendDynamics& d,
                                                const motion::PathLimits& before);
   bool lowering_is_safe(std::uint64_t seq, PlannedCommand changed) const;

@@ -12,6 +12,8 @@
 #include <fmt/format.h>
 
 #include "cli_helpers.hpp"
+#include "nck/config/load.hpp"
+#include "nck/sim/dry_run.hpp"
 
 namespace nck::app {
 namespace {
@@ -59,9 +61,10 @@ struct PathRun {
 };
 
 // Runs a program file on the mill with trace, events and final state.
-PathRun run_mill_file(const std::filesystem::path& program, const std::filesystem::path& dir) {
+PathRun run_mill_file(const std::filesystem::path& program, const std::filesystem::path& dir,
+                      const std::string& options = "") {
   PathRun r;
-  r.cli = run_nck("run " + root() + "/examples/mill " + program.string() + " --trace " + (dir / "t.csv").string() +
+  r.cli = run_nck("run " + root() + "/examples/mill " + program.string() + options + " --trace " + (dir / "t.csv").string() +
                   " --events " + (dir / "e.jsonl").string() + " --final " + (dir / "f.json").string());
   r.trace = read_trace(dir / "t.csv");
   for (const json& e : read_jsonl(dir / "e.jsonl"))
@@ -205,6 +208,19 @@ double distance_to_trace(const Trace& tr, const std::array<double, 3>& q) {
   return best;
 }
 
+// The blends preparation placed in a program on the mill (fillets and
+// parabolas), from a dry run of it.
+prep::BlendStats blends_of(const std::string& text) {
+  const auto file = temp_dir("cp-prop-blends") / "p.nc";
+  std::ofstream(file) << text;
+  static const config::Machine mill = *config::load_machine(root() + "/examples/mill").machine;
+  auto run = sim::DryRun::create(mill, {file});
+  if (!run) return {};
+  auto out = std::make_unique<kernel::TickOutput>();
+  while (!run->done()) run->step(*out);
+  return run->prep(0).blend_stats();
+}
+
 // Runs `count` random programs (with `prelude` after the first block) and
 // checks every cycle: no axis beyond max_speed_mm_s or a_max, every programmed end
 // point within end_tol_mm of the trace, and the trace no shorter than the
@@ -214,9 +230,15 @@ void check_random_programs(const std::string& prelude, double end_tol_mm, double
   const int count = env ? std::atoi(env) : 12;
   const std::array<double, 3> v_max{500, 500, 500}, a_max{3000, 3000, 2500};
   std::mt19937 rng(20261123);
+  prep::BlendStats blends{};  // of the first 12 programs: both kinds of blend are among what is checked
   for (int n = 0; n < count; ++n) {
     RandomProgram program = random_program(rng);
     program.text.insert(program.text.find('\n') + 1, prelude);
+    if (!prelude.empty() && n < 12) {
+      const prep::BlendStats b = blends_of(program.text);
+      blends.blends += b.blends;
+      blends.parabolas += b.parabolas;
+    }
     PathRun r = run_mill("cp-prop", program.text);
     std::ofstream(temp_dir("cp-prop-last") / "p.nc") << program.text;
     ASSERT_EQ(r.cli.exit_code, 0) << program.text << r.cli.output;
@@ -241,6 +263,10 @@ void check_random_programs(const std::string& prelude, double end_tol_mm, double
     const double blocks = static_cast<double>(program.points.size()), rounding = 2e-6 * static_cast<double>(tr.p.size());
     EXPECT_GE(travelled_mm, program.length_mm - max_short_per_block_mm * blocks - rounding) << program.text;
     EXPECT_LE(travelled_mm, program.length_mm + rounding) << program.text;
+  }
+  if (!prelude.empty() && count >= 12) {
+    EXPECT_GT(blends.parabolas, 0u);
+    EXPECT_GT(blends.blends, blends.parabolas);  // fillets too
   }
 }
 
@@ -334,6 +360,71 @@ TEST(CornerBlending, RightAnglesAtASmallSemicircleWithinPathDev001) {
   EXPECT_GE(v_min, 8.5);
   EXPECT_LT(distance_to_trace(tr, {2, 0, -1}), 0.01 + 0.002);
   EXPECT_LT(distance_to_trace(tr, {2.5, 0, -1}), 0.01 + 0.002);
+}
+
+// Issue 30's parabolic blend (STEP): a right angle between lines along the
+// axes at PATH_DEV 0.01 mm. Legs L = 0.04 / sqrt 2 mm, the path enters at
+// v = sqrt(2 L (0.99 a_max - 0.05 a)) = 12.686 mm/s (a fillet: 8.37), and
+// inside X brakes and Y speeds up, each by v^2 / (2 L) = 2845 mm/s^2 in
+// every cycle; the true speed dips to v cos 45 degrees in the middle.
+TEST(CornerBlending, ParabolaAtARightAngleMatchesTheClosedForm) {
+  const PathRun r = run_mill("cb-parabola",
+                             "N10 G17 G90 G0 X0 Y0 Z-1\n#CONTOUR MODE [DEV PATH_DEV=0.01]\nG261\n"
+                             "N20 G1 X5 Y0 F1500\nN30 G1 X5 Y5\nM30\n");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  const Trace& tr = r.trace;
+  const double leg = 0.04 / std::sqrt(2.0), v = std::sqrt(2 * leg * (0.99 * 3000 - 0.05 * 2500));
+  const double a_turn = v * v / (2 * leg);
+  auto inside = [&](std::size_t i) { return tr.p[i][0] > 5 - leg + 1e-6 && tr.p[i][1] < leg - 1e-6; };
+  std::size_t cycles_inside = 0, last_before = 0;
+  double v_min = 1e9;
+  for (std::size_t i = 2; i < tr.p.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      const double v1 = (tr.p[i][k] - tr.p[i - 1][k]) / kDt, v0 = (tr.p[i - 1][k] - tr.p[i - 2][k]) / kDt;
+      ASSERT_LE(std::fabs(v1), 500.01) << "axis " << k << " t " << tr.t[i];
+      ASSERT_LE(std::fabs(v1 - v0) / kDt, (k == 2 ? 2500 : 3000) + 5.0) << "axis " << k << " t " << tr.t[i];
+    }
+    if (tr.p[i][0] <= 5 - leg && tr.p[i][1] == 0) last_before = i;
+    if (!(inside(i - 2) && inside(i - 1) && inside(i))) continue;
+    ++cycles_inside;
+    const double ax = (tr.p[i][0] - 2 * tr.p[i - 1][0] + tr.p[i - 2][0]) / (kDt * kDt);
+    const double ay = (tr.p[i][1] - 2 * tr.p[i - 1][1] + tr.p[i - 2][1]) / (kDt * kDt);
+    EXPECT_NEAR(ax, -a_turn, 5.0) << tr.t[i];
+    EXPECT_NEAR(ay, a_turn, 5.0) << tr.t[i];
+    v_min = std::min(v_min, speed(tr, i));
+  }
+  EXPECT_NEAR(v, 12.686, 0.001);
+  EXPECT_GE(cycles_inside, 1u);  // 4.5 cycles long: at least one second difference wholly inside
+  EXPECT_NEAR(speed(tr, last_before), v, 0.01);  // entered at its limit
+  EXPECT_GT(v_min, v * std::sqrt(0.5) - 0.05);
+  EXPECT_NEAR(distance_to_trace(tr, {5, 0, -1}), 0.01, 0.002);
+}
+
+// The operator on a parabola: a feedhold (brakes along it with 5 % of the
+// feed acceleration, the rest after it) or an override change starting in
+// any cycle around the chord/semicircle right angles keeps every axis
+// within a_max.
+TEST(CornerBlending, FeedholdAndOverrideOnAParabolaKeepTheAxesWithinAMax) {
+  const auto dir = temp_dir("cb-parabola-hold");
+  std::ofstream(dir / "p.nc") << "N10 G17 G90 G0 X0 Y0 Z-1\n#CONTOUR MODE [DEV PATH_DEV=0.01]\nG261\n"
+                                 "N20 G1 X5 Y0 F1500\nN30 G2 X5.5 Y0 I0.25 J0 F1200\nN40 G1 X5.5 Y-5 F1500\nM30\n";
+  // N30 starts at 0.248 s, N40 at 0.287 s: the parabolas lie around both.
+  // The feedhold is released 0.1 s later (a held program would run on to the run's time limit).
+  for (const char* action : {"feedhold on", "feed_override 10", "feed_override 150"})
+    for (int ms = 238; ms <= 296; ms += 3) {
+      const bool hold = std::string(action) == "feedhold on";
+      std::ofstream(dir / "h.plc") << fmt::format("{:.3f} {}\n", ms / 1000.0, action)
+                                   << (hold ? fmt::format("{:.3f} feedhold off\n", ms / 1000.0 + 0.1) : "");
+      const PathRun r = run_mill_file(dir / "p.nc", dir, " --plc " + (dir / "h.plc").string());
+      ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+      const Trace& tr = r.trace;
+      ASSERT_GT(tr.p.size(), 300u) << action << " " << ms;
+      for (std::size_t i = 2; i < tr.p.size(); ++i)
+        for (int k = 0; k < 2; ++k) {
+          const double a = (tr.p[i][k] - 2 * tr.p[i - 1][k] + tr.p[i - 2][k]) / (kDt * kDt);
+          ASSERT_LE(std::fabs(a), 3000 + 5.0) << action << " at " << ms << " ms, axis " << k << " t " << tr.t[i];
+        }
+    }
 }
 
 TEST(CornerBlending, SyntaxErrorsNameIdFileAndLine) {

@@ -1,0 +1,114 @@
+#pragma once
+// The plane geometry both corner blends share (corner_blend.cpp: fillets,
+// corner_parabola.cpp: parabolas): 2-D vectors, the two blocks near the
+// corner as a line or a circle, the plane they lie in. Internal to
+// src/motion; setup side.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "nck/motion/segment.hpp"
+
+namespace nck::motion::corner_geometry {
+
+struct V2 {
+  double x = 0, y = 0;
+};
+inline V2 operator+(V2 a, V2 b) { return {a.x + b.x, a.y + b.y}; }
+inline V2 operator-(V2 a, V2 b) { return {a.x - b.x, a.y - b.y}; }
+inline V2 operator*(double k, V2 a) { return {k * a.x, k * a.y}; }
+inline double dot(V2 a, V2 b) { return a.x * b.x + a.y * b.y; }
+inline double cross(V2 a, V2 b) { return a.x * b.y - a.y * b.x; }
+inline double norm(V2 a) { return std::hypot(a.x, a.y); }
+inline V2 left_normal(V2 t) { return {-t.y, t.x}; }
+// Angle from u to w, counter-clockwise positive, in (-pi, pi].
+inline double angle_between(V2 u, V2 w) { return std::atan2(cross(u, w), dot(u, w)); }
+
+// Coordinates below this (1 nm) are rounding; radii may differ by 1 % at
+// most for an arc to count as a circle here (the decoder accepts centre
+// programming with a small end-radius error).
+constexpr double kTiny = 1e-9;
+constexpr double kRadiusSpread = 0.01;
+constexpr double kMaxRadiusMm = 1e4;
+
+// One block near the corner, in the plane: a line through p along t, or a
+// circle around p of radius r run ccw or cw.
+struct Curve {
+  bool arc = false;
+  V2 p{}, t{};
+  double r = 0;
+  bool ccw = false;
+};
+
+struct Plane {
+  std::size_t a = 0, b = 1;
+};
+
+inline V2 in_plane(const AxisVector& v, Plane pl) { return {v[pl.a], v[pl.b]}; }
+
+// The two axes the corner lies in (an arc's plane, else the axes the lines
+// move), when every other axis stands still over both blocks.
+inline std::optional<Plane> corner_plane(const Segment& s1, const Segment& s2) {
+  const std::size_t n = s1.axis_count();
+  if (n != s2.axis_count() || n < 2) return std::nullopt;
+  std::optional<Plane> pl;
+  for (const Segment* s : {&s1, &s2})
+    if (s->kind() == SegmentKind::arc) {
+      const Plane p{s->plane_a(), s->plane_b()};
+      if (pl && (pl->a != p.a || pl->b != p.b)) return std::nullopt;
+      pl = p;
+    }
+  if (!pl) {
+    std::size_t found[2]{}, count = 0;
+    for (std::size_t j = 0; j < n; ++j) {
+      const bool moves = std::fabs(s1.end_point()[j] - s1.start_point()[j]) > kTiny ||
+                         std::fabs(s2.end_point()[j] - s2.start_point()[j]) > kTiny;
+      if (!moves) continue;
+      if (count == 2) return std::nullopt;  // a corner in space: not blended
+      found[count++] = j;
+    }
+    if (count != 2) return std::nullopt;
+    pl = Plane{found[0], found[1]};
+  }
+  for (std::size_t j = 0; j < n; ++j) {
+    if (j == pl->a || j == pl->b) continue;
+    const double z = s1.end_point()[j];
+    if (std::fabs(s1.start_point()[j] - z) > kTiny || std::fabs(s2.start_point()[j] - z) > kTiny ||
+        std::fabs(s2.end_point()[j] - z) > kTiny)
+      return std::nullopt;  // helix or a moving third axis
+  }
+  return pl;
+}
+
+// The curve of s near its end (at_end) or start, or nullopt for an arc
+// that is not a plain circle (extra turns, a spiral).
+inline std::optional<Curve> curve_of(const Segment& s, Plane pl, bool at_end) {
+  Curve c;
+  const V2 p0 = in_plane(s.start_point(), pl), p1 = in_plane(s.end_point(), pl);
+  if (s.kind() == SegmentKind::line) {
+    const double len = norm(p1 - p0);
+    if (len <= kTiny) return std::nullopt;
+    c.p = at_end ? p1 : p0;
+    c.t = (1.0 / len) * (p1 - p0);
+    return c;
+  }
+  const double r0 = s.radius_start(), r1 = s.radius_end();
+  if (std::fabs(s.sweep_rad()) >= 2 * std::numbers::pi - 1e-9) return std::nullopt;
+  if (std::fabs(r1 - r0) > kRadiusSpread * std::max(r0, r1)) return std::nullopt;
+  c.arc = true;
+  c.p = {s.center_a(), s.center_b()};
+  c.r = at_end ? r1 : r0;
+  c.ccw = s.sweep_rad() > 0;
+  return c;
+}
+
+// Direction of travel of c at point x.
+inline V2 tangent(const Curve& c, V2 x) {
+  if (!c.arc) return c.t;
+  const V2 radial = x - c.p;
+  const V2 t = (1.0 / norm(radial)) * left_normal(radial);
+  return c.ccw ? t : -1.0 * t;
+}
+
+}  // namespace nck::motion::corner_geometry
