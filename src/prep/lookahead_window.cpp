@@ -206,7 +206,7 @@ double LookAheadWindow::corner_cost(const motion::CornerBlend& cb, const motion:
   const double trim_in = before.segment.length() - cb.before.length();
   const double trim_out = after.segment.length() - cb.after.length();
   auto ramp = [v](double v_feed, double a) { return v < v_feed && a > 0 ? (v_feed - v) * (v_feed - v) / (2 * a * v_feed) : 0.0; };
-  return cb.fillet.length() / v - trim_in / v_in - trim_out / v_out + ramp(v_in, before.limits.a_dec_mm_s2) +
+  return cb.corner.length() / v - trim_in / v_in - trim_out / v_out + ramp(v_in, before.limits.a_dec_mm_s2) +
          ramp(v_out, after.limits.a_acc_mm_s2);
 }
 
@@ -218,23 +218,24 @@ std::optional<motion::CornerBlend> LookAheadWindow::corner_blend(const Entry& p,
                                                                  const BlendDynamics& dyn, motion::PathLimits& limits) const {
   const double trim_a = 0.45 * p.programmed_mm, trim_b = 0.45 * next.segment.length();
   auto cb = motion::blend_corner(p.command.segment, next.segment, p.command.blend_dev_mm, trim_a, trim_b);
-  if (cb) limits = jerk_fillet_limits(cb->fillet, dyn, p.command.limits);
+  if (cb) limits = jerk_fillet_limits(cb->corner, dyn, p.command.limits);
   // STEP only: a parabola's axes change their acceleration at its ends by
   // up to a_max (no jerk limit could hold there).
   if (p.command.limits.slope != SlopeProfile::step || next.limits.slope != SlopeProfile::step) return cb;
   const auto cb_parabola =
       motion::blend_corner_parabola(p.command.segment, next.segment, p.command.blend_dev_mm, trim_a, trim_b);
   if (!cb_parabola) return cb;
-  const motion::PathLimits l = parabola_limits(cb_parabola->fillet, dyn);
+  const motion::PathLimits l = parabola_limits(cb_parabola->corner, dyn);
   if (cb && corner_cost(*cb, limits, p.command, next) <= corner_cost(*cb_parabola, l, p.command, next)) return cb;
   limits = l;
   return cb_parabola;
 }
 
-// Puts a fillet between the open motion `prev` and `next` (about to be
-// appended): shortens both, appends the fillet as a motion of prev's block
-// and makes it the open motion. False (nothing changed) where no fillet
-// fits or it would not let the path pass faster than the sharp corner.
+// Puts a blend (fillet or parabola) between the open motion `prev` and
+// `next` (about to be appended): shortens both, appends the blend as a
+// motion of prev's block and makes it the open motion. False (nothing
+// changed) where no blend fits or it would not let the path pass faster
+// than the sharp corner.
 bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   Entry& p = at(prev);
   if (axes_.n_axes == 0 || !next.feed_motion || next.mapped || next.trafo.kind != motion::CaxTrafoKind::none ||
@@ -251,7 +252,7 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   motion::PathLimits blend_limits{};
   const auto cb = corner_blend(p, next, dyn, blend_limits);
   if (!cb) return false;
-  const bool parabola = cb->fillet.kind() == motion::SegmentKind::parabola;
+  const bool parabola = cb->corner.kind() == motion::SegmentKind::parabola;
   PlannedCommand f;
   f.weights = w;
   f.kind = CommandKind::motion;
@@ -260,7 +261,7 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   f.has_n = p.command.has_n;
   f.n = p.command.n;
   f.emit_block_event = false;  // a follow-up of the block before
-  f.segment = cb->fillet;
+  f.segment = cb->corner;
   f.limits = blend_limits;
   f.v_cmd_mm_s = std::min(p.command.v_cmd_mm_s, next.v_cmd_mm_s);
   f.css = p.command.css;
@@ -275,7 +276,7 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   widen_arc_limits(before.segment, dyn, false, before.limits);
   widen_arc_limits(after.segment, dyn, true, after.limits);
   const double dt2 = 2 * cycle_s_;
-  if (cb->fillet.length() < dt2 * cruise(f) || cb->before.length() < dt2 * cruise(before) ||
+  if (cb->corner.length() < dt2 * cruise(f) || cb->before.length() < dt2 * cruise(before) ||
       cb->after.length() < dt2 * cruise(after))
     return false;
   // The profile passes on at exactly its planned end speed (it holds it over
@@ -288,8 +289,8 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   after.v_entry_max_mm_s = tangent_cap(f, after, ax);
   if (f.limits.slope == SlopeProfile::step && after.limits.slope == SlopeProfile::step) {
     after.start_a_mm_s2 =
-        parabola ? parabola_pass_acceleration(cb->fillet, f.limits, cb->after, after.limits, true, dyn, cycle_s_)
-                 : pass_acceleration(cb->fillet, f.limits, cb->after, after.limits, dyn, cycle_s_);
+        parabola ? parabola_pass_acceleration(cb->corner, f.limits, cb->after, after.limits, true, dyn, cycle_s_)
+                 : pass_acceleration(cb->corner, f.limits, cb->after, after.limits, dyn, cycle_s_);
     after.after_fillet = true;
   }
   // Into the fillet: the block before brakes to the fillet's speed in the
@@ -298,8 +299,8 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   // whole block only down to kIntoFilletShare of its own.
   if (f.limits.slope == SlopeProfile::step && before.limits.slope == SlopeProfile::step) {
     const double a_in =
-        parabola ? parabola_pass_acceleration(cb->fillet, f.limits, cb->before, before.limits, false, dyn, cycle_s_)
-                 : pass_acceleration(cb->fillet, f.limits, cb->before, before.limits, dyn, cycle_s_);
+        parabola ? parabola_pass_acceleration(cb->corner, f.limits, cb->before, before.limits, false, dyn, cycle_s_)
+                 : pass_acceleration(cb->corner, f.limits, cb->before, before.limits, dyn, cycle_s_);
     before.into_fillet = a_in >= kIntoFilletShare * before.limits.a_dec_mm_s2;
     if (before.into_fillet) before.limits.a_dec_mm_s2 = std::min(before.limits.a_dec_mm_s2, a_in);
   }
@@ -326,7 +327,7 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   e.command = f;
   e.prev_motion = prev + 1;
   e.end_cap_mm_s = 0;
-  e.programmed_mm = cb->fillet.length();
+  e.programmed_mm = cb->corner.length();
   p.end_cap_mm_s = f.v_entry_max_mm_s;
   raise_chain(seq);
   open_motion_ = seq + 1;

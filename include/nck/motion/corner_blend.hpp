@@ -19,12 +19,12 @@
 namespace nck::motion {
 
 struct CornerBlend {
-  Segment before;         // the block before, ending at the fillet's first tangent point
-  Segment fillet;         // the arc in the corner
-  Segment after;          // the block after, starting at the fillet's second tangent point
-  double radius_mm = 0;   // of the fillet
-  double deviation_mm = 0;  // distance of the programmed corner from the fillet
-  // Path length the blend removes: both trims minus the fillet's length (>= 0).
+  Segment before;         // the block before, ending at the blend's first tangent point
+  Segment corner;         // the blend in the corner: a fillet (arc) or a parabola
+  Segment after;          // the block after, starting at the blend's second tangent point
+  double radius_mm = 0;   // of the fillet (a parabola: its leg)
+  double deviation_mm = 0;  // distance of the programmed corner from the blend
+  // Path length the blend removes: both trims minus the blend's length (>= 0).
   double shortfall_mm = 0;
 };
 

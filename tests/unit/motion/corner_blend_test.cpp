@@ -39,7 +39,7 @@ double max_deviation(const CornerBlend& cb, const Segment& a, const Segment& b) 
   double worst = 0;
   AxisVector p{};
   for (int i = 0; i <= 100; ++i) {
-    cb.fillet.point_at(cb.fillet.length() * i / 100.0, p);
+    cb.corner.point_at(cb.corner.length() * i / 100.0, p);
     worst = std::max(worst, std::min(distance_to(a, p), distance_to(b, p)));
   }
   return worst;
@@ -47,15 +47,15 @@ double max_deviation(const CornerBlend& cb, const Segment& a, const Segment& b) 
 
 void expect_joined(const CornerBlend& cb) {
   for (int k = 0; k < 3; ++k) {
-    EXPECT_NEAR(cb.before.end_point()[k], cb.fillet.start_point()[k], 1e-12);
-    EXPECT_NEAR(cb.fillet.end_point()[k], cb.after.start_point()[k], 1e-12);
+    EXPECT_NEAR(cb.before.end_point()[k], cb.corner.start_point()[k], 1e-12);
+    EXPECT_NEAR(cb.corner.end_point()[k], cb.after.start_point()[k], 1e-12);
   }
   // Tangent at both joints.
   AxisVector t0{}, t1{};
   cb.before.tangent_at(cb.before.length(), t0);
-  cb.fillet.tangent_at(0, t1);
+  cb.corner.tangent_at(0, t1);
   EXPECT_NEAR(std::hypot(t0[0] - t1[0], t0[1] - t1[1]), 0, 1e-6);
-  cb.fillet.tangent_at(cb.fillet.length(), t0);
+  cb.corner.tangent_at(cb.corner.length(), t0);
   cb.after.tangent_at(0, t1);
   EXPECT_NEAR(std::hypot(t0[0] - t1[0], t0[1] - t1[1]), 0, 1e-6);
 }
@@ -70,10 +70,10 @@ TEST(CornerBlend, RightAngleOfLinesByHand) {
   EXPECT_NEAR(cb->deviation_mm, 0.05, 1e-9);
   EXPECT_NEAR(cb->before.end_point()[0], 10 - r, 1e-9);
   EXPECT_NEAR(cb->after.start_point()[1], r, 1e-9);
-  EXPECT_NEAR(cb->fillet.center_a(), 10 - r, 1e-9);
-  EXPECT_NEAR(cb->fillet.center_b(), r, 1e-9);
-  EXPECT_NEAR(cb->fillet.sweep_rad(), M_PI / 2, 1e-9);  // left turn: ccw
-  EXPECT_NEAR(cb->fillet.length(), r * M_PI / 2, 1e-9);
+  EXPECT_NEAR(cb->corner.center_a(), 10 - r, 1e-9);
+  EXPECT_NEAR(cb->corner.center_b(), r, 1e-9);
+  EXPECT_NEAR(cb->corner.sweep_rad(), M_PI / 2, 1e-9);  // left turn: ccw
+  EXPECT_NEAR(cb->corner.length(), r * M_PI / 2, 1e-9);
   EXPECT_NEAR(cb->shortfall_mm, r * (2 - M_PI / 2), 1e-9);  // 0.051802 mm
   EXPECT_NEAR(cb->after.end_point()[1], 10, 0);  // the block's end stays as programmed
   expect_joined(*cb);
@@ -86,7 +86,7 @@ TEST(CornerBlend, TrimLimitCapsTheRadius) {
   ASSERT_TRUE(cb);
   EXPECT_NEAR(cb->radius_mm, 0.1, 1e-9);
   EXPECT_NEAR(cb->deviation_mm, 0.1 * (std::sqrt(2.0) - 1), 1e-9);
-  EXPECT_LT(cb->fillet.sweep_rad(), 0);  // right turn: cw
+  EXPECT_LT(cb->corner.sweep_rad(), 0);  // right turn: cw
   expect_joined(*cb);
 }
 
@@ -97,7 +97,7 @@ TEST(CornerBlend, LineIntoSemicircleTouchesItFromOutside) {
   const Segment a = line(p3(-0.5, 0), p3(0, 0)), b = arc(p3(0, 0), p3(2 * R, 0), R, 0, false);
   const auto cb = blend_corner(a, b, 0.01, 0.225, 0.45 * b.length());
   ASSERT_TRUE(cb);
-  const double r = cb->radius_mm, fx = cb->fillet.center_a(), fy = cb->fillet.center_b();
+  const double r = cb->radius_mm, fx = cb->corner.center_a(), fy = cb->corner.center_b();
   EXPECT_NEAR(fy, r, 1e-9);                             // tangent to the line y = 0
   EXPECT_NEAR(std::hypot(fx - R, fy), R + r, 1e-9);     // tangent to the circle from outside
   EXPECT_NEAR(std::hypot(fx, fy) - r, 0.01, 1e-9);      // PATH_DEV used up
@@ -149,8 +149,8 @@ TEST(CornerBlend, GentleKinkBetweenArcsKeepsAFiniteExactFillet) {
   EXPECT_GT(cb->radius_mm, 1e3);
   expect_joined(*cb);
   AxisVector p{};
-  cb->fillet.point_at(0.001, p);
-  EXPECT_NEAR(std::hypot(p[0] - cb->fillet.start_point()[0], p[1] - cb->fillet.start_point()[1]), 0.001, 1e-6);
+  cb->corner.point_at(0.001, p);
+  EXPECT_NEAR(std::hypot(p[0] - cb->corner.start_point()[0], p[1] - cb->corner.start_point()[1]), 0.001, 1e-6);
   EXPECT_LE(max_deviation(*cb, a, b), 0.05 + 1e-6);
 }
 

@@ -41,13 +41,13 @@ double unit_gap(const AxisVector& a, const AxisVector& b) { return std::hypot(a[
 // Both joints continuous in position and in the unit tangent (the path
 // speed passes on unchanged because the parabola's legs are equal).
 void expect_joined(const CornerBlend& cb) {
-  EXPECT_LT(unit_gap(cb.before.end_point(), cb.fillet.start_point()), 1e-12);
-  EXPECT_LT(unit_gap(cb.fillet.end_point(), cb.after.start_point()), 1e-12);
+  EXPECT_LT(unit_gap(cb.before.end_point(), cb.corner.start_point()), 1e-12);
+  EXPECT_LT(unit_gap(cb.corner.end_point(), cb.after.start_point()), 1e-12);
   AxisVector t0{}, t1{};
   cb.before.tangent_at(cb.before.length(), t0);
-  cb.fillet.tangent_at(0, t1);
+  cb.corner.tangent_at(0, t1);
   EXPECT_LT(unit_gap(t0, t1), 1e-9);
-  cb.fillet.tangent_at(cb.fillet.length(), t0);
+  cb.corner.tangent_at(cb.corner.length(), t0);
   cb.after.tangent_at(0, t1);
   EXPECT_LT(unit_gap(t0, t1), 1e-9);
 }
@@ -56,22 +56,22 @@ TEST(CornerParabola, RightAngleBetweenLinesHasTheClosedForm) {
   const Segment a = line(p3(0, 0), p3(1, 0)), b = line(p3(1, 0), p3(1, 1));
   const auto cb = blend_corner_parabola(a, b, 0.01, 0.45, 0.45);
   ASSERT_TRUE(cb);
-  ASSERT_EQ(cb->fillet.kind(), SegmentKind::parabola);
+  ASSERT_EQ(cb->corner.kind(), SegmentKind::parabola);
   // leg = 4 PATH_DEV / |t_out - t_in| = 0.04 / sqrt 2; the control point is the corner.
   const double leg = 0.04 / std::sqrt(2.0);
   EXPECT_NEAR(cb->radius_mm, leg, 1e-9);
-  EXPECT_NEAR(cb->fillet.length(), 2 * leg, 1e-9);
-  EXPECT_NEAR(cb->fillet.control_a(), 1, 1e-12);
-  EXPECT_NEAR(cb->fillet.control_b(), 0, 1e-12);
+  EXPECT_NEAR(cb->corner.length(), 2 * leg, 1e-9);
+  EXPECT_NEAR(cb->corner.control_a(), 1, 1e-12);
+  EXPECT_NEAR(cb->corner.control_b(), 0, 1e-12);
   EXPECT_NEAR(cb->before.end_point()[0], 1 - leg, 1e-9);
   EXPECT_NEAR(cb->after.start_point()[1], leg, 1e-9);
   // Its middle (p0 + 2 c + p2) / 4 is PATH_DEV from the corner, and nothing is closer.
   AxisVector mid{};
-  cb->fillet.point_at(leg, mid);
+  cb->corner.point_at(leg, mid);
   EXPECT_NEAR(mid[0], 1 - leg / 4, 1e-9);
   EXPECT_NEAR(mid[1], leg / 4, 1e-9);
   EXPECT_NEAR(cb->deviation_mm, 0.01, 1e-9);
-  EXPECT_NEAR(distance_to(cb->fillet, p3(1, 0)), 0.01, 1e-9);
+  EXPECT_NEAR(distance_to(cb->corner, p3(1, 0)), 0.01, 1e-9);
   expect_joined(*cb);
   // Cut: both trims less the curve's length (below 2 x PATH_DEV).
   EXPECT_GT(cb->shortfall_mm, 0);
@@ -84,7 +84,7 @@ TEST(CornerParabola, UniformPathSpeedGivesEveryAxisAConstantAcceleration) {
   const Segment a = line(p3(0, 0), p3(1, 0)), b = line(p3(1, 0), p3(1, 1));
   const auto cb = blend_corner_parabola(a, b, 0.01, 0.45, 0.45);
   ASSERT_TRUE(cb);
-  const Segment& z = cb->fillet;
+  const Segment& z = cb->corner;
   const double h = z.length() / 40, len2 = z.length() * z.length();
   // 2 (p0 - 2 c + p2) / length^2 per (mm of s)^2: X -leg, Y +leg.
   const double ax = 2 * (z.start_point()[0] - 2 * z.control_a() + z.end_point()[0]) / len2;
@@ -116,19 +116,19 @@ TEST(CornerParabola, LineArcAndArcLineAreTangentOnTheCircleAndWithinPathDev) {
   for (const auto& [a, b] : {std::pair{chord, semi}, std::pair{semi, next}}) {
     const auto cb = blend_corner_parabola(a, b, 0.01, 0.45 * a.length(), 0.45 * b.length());
     ASSERT_TRUE(cb);
-    EXPECT_EQ(cb->fillet.kind(), SegmentKind::parabola);
+    EXPECT_EQ(cb->corner.kind(), SegmentKind::parabola);
     expect_joined(*cb);
     const AxisVector corner = a.end_point();
     EXPECT_NEAR(cb->deviation_mm, 0.01, 1e-6);
-    EXPECT_NEAR(distance_to(cb->fillet, corner), cb->deviation_mm, 1e-6);
+    EXPECT_NEAR(distance_to(cb->corner, corner), cb->deviation_mm, 1e-6);
     // The end on the arc lies on its circle.
-    const AxisVector& on_arc = a.kind() == SegmentKind::arc ? cb->fillet.start_point() : cb->fillet.end_point();
+    const AxisVector& on_arc = a.kind() == SegmentKind::arc ? cb->corner.start_point() : cb->corner.end_point();
     EXPECT_NEAR(std::hypot(on_arc[0] - 2.25, on_arc[1]), 0.25, 1e-12);
     // Equal legs: unit tangent at both ends.
     AxisVector t{};
-    cb->fillet.tangent_at(0, t);
+    cb->corner.tangent_at(0, t);
     EXPECT_NEAR(std::hypot(t[0], t[1]), 1, 1e-9);
-    cb->fillet.tangent_at(cb->fillet.length(), t);
+    cb->corner.tangent_at(cb->corner.length(), t);
     EXPECT_NEAR(std::hypot(t[0], t[1]), 1, 1e-9);
   }
 }
@@ -137,15 +137,15 @@ TEST(CornerParabola, RemainderIsTheSameCurveAndSpeedLaw) {
   const Segment a = line(p3(0, 0, 1), p3(1, 0, 1)), b = line(p3(1, 0, 1), p3(1.5, 0.8, 1));
   const auto cb = blend_corner_parabola(a, b, 0.02, 0.45, 0.45);
   ASSERT_TRUE(cb);
-  const double s0 = 0.3 * cb->fillet.length();
-  const Segment rest = cb->fillet.remainder(s0);
-  EXPECT_NEAR(rest.length(), cb->fillet.length() - s0, 1e-12);
+  const double s0 = 0.3 * cb->corner.length();
+  const Segment rest = cb->corner.remainder(s0);
+  EXPECT_NEAR(rest.length(), cb->corner.length() - s0, 1e-12);
   EXPECT_EQ(rest.plane_arc_length(), rest.length());
   AxisVector p{}, q{};
   for (int i = 0; i <= 10; ++i) {
     const double s = rest.length() * i / 10;
     rest.point_at(s, p);
-    cb->fillet.point_at(s0 + s, q);
+    cb->corner.point_at(s0 + s, q);
     EXPECT_LT(unit_gap(p, q), 1e-12);
     EXPECT_EQ(p[2], 1);
   }
@@ -157,12 +157,12 @@ TEST(CornerParabola, TailAndJoinedKeepItBitForBit) {
   const Segment a = line(p3(0, 0), p3(1, 0)), b = line(p3(1, 0), p3(1, 1));
   const auto cb = blend_corner_parabola(a, b, 0.01, 0.45, 0.45);
   ASSERT_TRUE(cb);
-  const Segment back = Segment::joined(cb->fillet.start_point(), cb->fillet.tail());
+  const Segment back = Segment::joined(cb->corner.start_point(), cb->corner.tail());
   EXPECT_EQ(back.kind(), SegmentKind::parabola);
   AxisVector p{}, q{};
   for (int i = 0; i <= 10; ++i) {
-    back.point_at(cb->fillet.length() * i / 10, p);
-    cb->fillet.point_at(cb->fillet.length() * i / 10, q);
+    back.point_at(cb->corner.length() * i / 10, p);
+    cb->corner.point_at(cb->corner.length() * i / 10, q);
     EXPECT_EQ(p, q);
   }
 }

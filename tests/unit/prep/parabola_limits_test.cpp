@@ -41,7 +41,7 @@ TEST(ParabolaLimits, RightAngleAlongTheAxesEntersAtTheClosedForm) {
   const Mill m;
   const motion::CornerBlend cb = corner(0, 0, 5, 0, 5, 5, 0.01);
   const double leg = 0.04 / std::sqrt(2.0);
-  const motion::PathLimits l = parabola_limits(cb.fillet, m.dyn());
+  const motion::PathLimits l = parabola_limits(cb.corner, m.dyn());
   EXPECT_NEAR(l.v_max_mm_s, std::sqrt(2 * leg * (0.99 * 3000 - 0.05 * 2500)), 1e-9);
   EXPECT_NEAR(l.v_max_mm_s, 12.686, 0.001);
   EXPECT_NEAR(l.a_acc_mm_s2, 125, 1e-12);
@@ -58,7 +58,7 @@ TEST(ParabolaLimits, DiagonalRightAngleLoadsOneAxisOnly) {
   const double h = 5 / std::sqrt(2.0);
   const motion::CornerBlend cb = corner(0, 0, h, h, 0, 2 * h, 0.01);
   const double leg = 0.04 / std::sqrt(2.0);
-  const motion::PathLimits l = parabola_limits(cb.fillet, m.dyn());
+  const motion::PathLimits l = parabola_limits(cb.corner, m.dyn());
   EXPECT_NEAR(l.v_max_mm_s, std::sqrt(2 * leg * (0.99 * 3000 - 0.05 * 2500) / std::sqrt(2.0)), 1e-6);
 }
 
@@ -68,9 +68,9 @@ TEST(ParabolaLimits, DiagonalRightAngleLoadsOneAxisOnly) {
 TEST(ParabolaLimits, PassingOnTakesWhatHalfTheTurnLeavesPerAxis) {
   const Mill m;
   const motion::CornerBlend cb = corner(0, 0, 5, 0, 5, 5, 0.01);
-  const motion::PathLimits l = parabola_limits(cb.fillet, m.dyn());
+  const motion::PathLimits l = parabola_limits(cb.corner, m.dyn());
   motion::PathLimits after{500, 2500, 2500};
-  const double a = parabola_pass_acceleration(cb.fillet, l, cb.after, after, true, m.dyn(), 0.001);
+  const double a = parabola_pass_acceleration(cb.corner, l, cb.after, after, true, m.dyn(), 0.001);
   const double half_turn = 0.5 * (0.99 * 3000 - 0.05 * 2500);
   EXPECT_LT(a, 0.99 * 3000 - half_turn);
   // The crossing chord: v (1 - cos e + theta^2 / 24) / dt = 214 mm/s^2 at
@@ -78,7 +78,7 @@ TEST(ParabolaLimits, PassingOnTakesWhatHalfTheTurnLeavesPerAxis) {
   EXPECT_NEAR(a, 0.99 * 3000 - half_turn - 214, 2);
   // Into it from the X line: the same by symmetry.
   motion::PathLimits before{500, 2500, 2500};
-  EXPECT_NEAR(parabola_pass_acceleration(cb.fillet, l, cb.before, before, false, m.dyn(), 0.001), a, 1e-9);
+  EXPECT_NEAR(parabola_pass_acceleration(cb.corner, l, cb.before, before, false, m.dyn(), 0.001), a, 1e-9);
 }
 
 }  // namespace
