@@ -128,21 +128,11 @@ std::optional<CornerBlend> blend_corner(const Segment& a, const Segment& b, doub
   if (lo > 0) fl = ok(lo);
   if (!fl) return std::nullopt;
 
-  auto full = [&](V2 p) {
-    AxisVector v = a.end_point();
-    v[pl->a] = p.x;
-    v[pl->b] = p.y;
-    return v;
-  };
-  const std::size_t n = a.axis_count();
-  const AxisVector p1 = full(fl->t1), p2 = full(fl->t2);
-  auto before = in->arc ? make_arc_center(a.start_point(), p1, n, pl->a, pl->b, in->p.x, in->p.y, in->ccw)
-                        : make_line(a.start_point(), p1, n);
-  auto after = out->arc ? make_arc_center(p2, b.end_point(), n, pl->a, pl->b, out->p.x, out->p.y, out->ccw)
-                        : make_line(p2, b.end_point(), n);
-  auto fillet = make_arc_center(p1, p2, n, pl->a, pl->b, fl->f.x, fl->f.y, left);
-  if (!before || !after || !fillet) return std::nullopt;
-  CornerBlend cb{*before, *fillet, *after, lo, fl->deviation, 0};
+  const auto sides = trimmed_blocks(a, b, *pl, *in, *out, fl->t1, fl->t2);
+  if (!sides) return std::nullopt;
+  auto fillet = make_arc_center(sides->t1, sides->t2, a.axis_count(), pl->a, pl->b, fl->f.x, fl->f.y, left);
+  if (!fillet) return std::nullopt;
+  CornerBlend cb{sides->before, *fillet, sides->after, lo, fl->deviation, 0};
   cb.shortfall_mm = std::max(fl->trim1 + fl->trim2 - fillet->length(), 0.0);
   return cb;
 }

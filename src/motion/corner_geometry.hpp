@@ -111,4 +111,29 @@ inline V2 tangent(const Curve& c, V2 x) {
   return c.ccw ? t : -1.0 * t;
 }
 
+// The two blocks trimmed to a blend's tangent points t1 (on a, near its
+// end, curve `in`) and t2 (on b, near its start, curve `out`): lines stay
+// lines, arcs stay on their circle; the other axes where the corner is.
+struct Trimmed {
+  Segment before, after;
+  AxisVector t1, t2;  // the tangent points in every axis
+};
+inline std::optional<Trimmed> trimmed_blocks(const Segment& a, const Segment& b, Plane pl, const Curve& in,
+                                             const Curve& out, V2 t1, V2 t2) {
+  auto full = [&](V2 p) {
+    AxisVector v = a.end_point();
+    v[pl.a] = p.x;
+    v[pl.b] = p.y;
+    return v;
+  };
+  const std::size_t n = a.axis_count();
+  const AxisVector p1 = full(t1), p2 = full(t2);
+  auto before = in.arc ? make_arc_center(a.start_point(), p1, n, pl.a, pl.b, in.p.x, in.p.y, in.ccw)
+                       : make_line(a.start_point(), p1, n);
+  auto after = out.arc ? make_arc_center(p2, b.end_point(), n, pl.a, pl.b, out.p.x, out.p.y, out.ccw)
+                       : make_line(p2, b.end_point(), n);
+  if (!before || !after) return std::nullopt;
+  return Trimmed{*before, *after, p1, p2};
+}
+
 }  // namespace nck::motion::corner_geometry

@@ -162,21 +162,11 @@ std::optional<CornerBlend> blend_corner_parabola(const Segment& a, const Segment
   }
   if (!z) return std::nullopt;
 
-  auto full = [&](V2 p) {
-    AxisVector v = a.end_point();
-    v[pl->a] = p.x;
-    v[pl->b] = p.y;
-    return v;
-  };
-  const std::size_t n = a.axis_count();
-  const AxisVector p0 = full(z->p0), p2 = full(z->p2);
-  auto before = in->arc ? make_arc_center(a.start_point(), p0, n, pl->a, pl->b, in->p.x, in->p.y, in->ccw)
-                        : make_line(a.start_point(), p0, n);
-  auto after = out->arc ? make_arc_center(p2, b.end_point(), n, pl->a, pl->b, out->p.x, out->p.y, out->ccw)
-                        : make_line(p2, b.end_point(), n);
-  auto blend = make_parabola(p0, z->c.x, z->c.y, p2, n, pl->a, pl->b);
-  if (!before || !after || !blend) return std::nullopt;
-  CornerBlend cb{*before, *blend, *after, 0.5 * blend->length(), z->deviation, 0};
+  const auto sides = trimmed_blocks(a, b, *pl, *in, *out, z->p0, z->p2);
+  if (!sides) return std::nullopt;
+  auto blend = make_parabola(sides->t1, z->c.x, z->c.y, sides->t2, a.axis_count(), pl->a, pl->b);
+  if (!blend) return std::nullopt;
+  CornerBlend cb{sides->before, *blend, sides->after, 0.5 * blend->length(), z->deviation, 0};
   cb.shortfall_mm = std::max(z->trim1 + z->trim2 - bezier_length(*z), 0.0);
   return cb;
 }
