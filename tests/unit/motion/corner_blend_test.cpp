@@ -1,6 +1,7 @@
 // Circular fillets for corner blending, checked against the geometry done
 // by hand (90-degree line corner) and by sampling (line into arc, arc to arc).
 #include "nck/motion/corner_blend.hpp"
+#include "corner_test_helpers.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,29 +11,10 @@
 namespace nck::motion {
 namespace {
 
-AxisVector p3(double x, double y, double z = 0) {
-  AxisVector v{};
-  v[0] = x;
-  v[1] = y;
-  v[2] = z;
-  return v;
-}
-
-Segment line(AxisVector a, AxisVector b) { return *make_line(a, b, 3); }
-Segment arc(AxisVector a, AxisVector b, double cx, double cy, bool ccw) {
-  return *make_arc_center(a, b, 3, 0, 1, cx, cy, ccw);
-}
-
-// Distance from q to the programmed path (sampled finely).
-double distance_to(const Segment& s, const AxisVector& q) {
-  double best = 1e9;
-  AxisVector p{};
-  for (int i = 0; i <= 4000; ++i) {
-    s.point_at(s.length() * i / 4000.0, p);
-    best = std::min(best, std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]));
-  }
-  return best;
-}
+using corner_test::arc;
+using corner_test::line;
+using corner_test::p3;
+double distance_to(const Segment& s, const AxisVector& q) { return corner_test::distance_to(s, q, 4000); }
 
 // The fillet's largest distance from the programmed path a+b.
 double max_deviation(const CornerBlend& cb, const Segment& a, const Segment& b) {
