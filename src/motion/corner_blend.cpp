@@ -90,20 +90,16 @@ std::optional<Fillet> fillet_at(const Curve& in, const Curve& out, V2 corner, bo
 
 std::optional<CornerBlend> blend_corner(const Segment& a, const Segment& b, double path_dev_mm,
                                         double max_trim_a_mm, double max_trim_b_mm) noexcept {
-  if (!(path_dev_mm > 0) || !std::isfinite(path_dev_mm)) return std::nullopt;
-  const auto pl = corner_plane(a, b);
-  if (!pl) return std::nullopt;
-  const auto in = curve_of(a, *pl, true), out = curve_of(b, *pl, false);
-  if (!in || !out) return std::nullopt;
-  const V2 corner = in_plane(a.end_point(), *pl);
-  if (norm(corner - in_plane(b.start_point(), *pl)) > kTiny) return std::nullopt;
-  const V2 t_in = tangent(*in, corner), t_out = tangent(*out, corner);
-  const double turn = angle_between(t_in, t_out);
+  const auto c = corner_between(a, b, path_dev_mm);
+  if (!c) return std::nullopt;
+  const Curve &in = c->in, &out = c->out;
+  const V2 corner = c->at;
+  const double turn = c->turn;
   // Collinear or tangent: nothing to blend; a reversal has no fillet.
   if (std::fabs(turn) < 1e-6 || std::fabs(turn) > std::numbers::pi - 1e-3) return std::nullopt;
   const bool left = turn > 0;
   auto ok = [&](double r) -> std::optional<Fillet> {
-    auto fl = fillet_at(*in, *out, corner, left, r);
+    auto fl = fillet_at(in, out, corner, left, r);
     if (!fl || fl->deviation > path_dev_mm || fl->deviation < -kTiny) return std::nullopt;
     if (!(fl->trim1 > kTiny && fl->trim1 <= max_trim_a_mm)) return std::nullopt;
     if (!(fl->trim2 > kTiny && fl->trim2 <= max_trim_b_mm)) return std::nullopt;
@@ -128,9 +124,9 @@ std::optional<CornerBlend> blend_corner(const Segment& a, const Segment& b, doub
   if (lo > 0) fl = ok(lo);
   if (!fl) return std::nullopt;
 
-  const auto sides = trimmed_blocks(a, b, *pl, *in, *out, fl->t1, fl->t2);
+  const auto sides = trimmed_blocks(a, b, *c, fl->t1, fl->t2);
   if (!sides) return std::nullopt;
-  auto fillet = make_arc_center(sides->t1, sides->t2, a.axis_count(), pl->a, pl->b, fl->f.x, fl->f.y, left);
+  auto fillet = make_arc_center(sides->t1, sides->t2, a.axis_count(), c->plane.a, c->plane.b, fl->f.x, fl->f.y, left);
   if (!fillet) return std::nullopt;
   CornerBlend cb{sides->before, *fillet, sides->after, lo, fl->deviation, 0};
   cb.shortfall_mm = std::max(fl->trim1 + fl->trim2 - fillet->length(), 0.0);

@@ -111,15 +111,37 @@ inline V2 tangent(const Curve& c, V2 x) {
   return c.ccw ? t : -1.0 * t;
 }
 
+// The corner between a (ending there) and b (starting there) as both
+// blends see it: its plane, the two blocks' curves near it, the point and
+// the turn (ccw positive). nullopt where there is no corner to blend (no
+// usable tolerance, not in one plane, not a plain circle, a gap).
+struct Corner {
+  Plane plane;
+  Curve in, out;
+  V2 at;
+  double turn = 0;
+};
+inline std::optional<Corner> corner_between(const Segment& a, const Segment& b, double path_dev_mm) {
+  if (!(path_dev_mm > 0) || !std::isfinite(path_dev_mm)) return std::nullopt;
+  const auto pl = corner_plane(a, b);
+  if (!pl) return std::nullopt;
+  const auto in = curve_of(a, *pl, true), out = curve_of(b, *pl, false);
+  if (!in || !out) return std::nullopt;
+  const V2 at = in_plane(a.end_point(), *pl);
+  if (norm(at - in_plane(b.start_point(), *pl)) > kTiny) return std::nullopt;
+  return Corner{*pl, *in, *out, at, angle_between(tangent(*in, at), tangent(*out, at))};
+}
+
 // The two blocks trimmed to a blend's tangent points t1 (on a, near its
-// end, curve `in`) and t2 (on b, near its start, curve `out`): lines stay
-// lines, arcs stay on their circle; the other axes where the corner is.
+// end) and t2 (on b, near its start): lines stay lines, arcs stay on their
+// circle; the other axes where the corner is.
 struct Trimmed {
   Segment before, after;
   AxisVector t1, t2;  // the tangent points in every axis
 };
-inline std::optional<Trimmed> trimmed_blocks(const Segment& a, const Segment& b, Plane pl, const Curve& in,
-                                             const Curve& out, V2 t1, V2 t2) {
+inline std::optional<Trimmed> trimmed_blocks(const Segment& a, const Segment& b, const Corner& c, V2 t1, V2 t2) {
+  const Plane pl = c.plane;
+  const Curve &in = c.in, &out = c.out;
   auto full = [&](V2 p) {
     AxisVector v = a.end_point();
     v[pl.a] = p.x;

@@ -116,33 +116,30 @@ std::optional<Bezier> parabola_at(const Curve& in, const Curve& out, V2 corner, 
 
 std::optional<CornerBlend> blend_corner_parabola(const Segment& a, const Segment& b, double path_dev_mm,
                                                  double max_trim_a_mm, double max_trim_b_mm) noexcept {
-  if (!(path_dev_mm > 0) || !std::isfinite(path_dev_mm)) return std::nullopt;
-  const auto pl = corner_plane(a, b);
-  if (!pl) return std::nullopt;
-  const auto in = curve_of(a, *pl, true), out = curve_of(b, *pl, false);
-  if (!in || !out || (in->arc && out->arc)) return std::nullopt;
-  const V2 corner = in_plane(a.end_point(), *pl);
-  if (norm(corner - in_plane(b.start_point(), *pl)) > kTiny) return std::nullopt;
-  const double turn = angle_between(tangent(*in, corner), tangent(*out, corner));
+  const auto c = corner_between(a, b, path_dev_mm);
+  if (!c || (c->in.arc && c->out.arc)) return std::nullopt;  // arc-arc: the fillet
+  const Curve &in = c->in, &out = c->out;
+  const V2 corner = c->at;
+  const double turn = c->turn;
   // Up to 150 degrees: beyond, the parabola's legs grow long against its
   // deviation and it turns slower than a fillet.
   if (std::fabs(turn) < 1e-6 || std::fabs(turn) > 150.0 / 180.0 * std::numbers::pi) return std::nullopt;
   auto ok = [&](double tau) -> std::optional<Bezier> {
-    auto z = parabola_at(*in, *out, corner, tau);
+    auto z = parabola_at(in, out, corner, tau);
     if (!z || z->deviation > path_dev_mm) return std::nullopt;
     if (!(z->trim1 > kTiny && z->trim1 <= max_trim_a_mm)) return std::nullopt;
     if (!(z->trim2 > kTiny && z->trim2 <= max_trim_b_mm)) return std::nullopt;
     return z;
   };
   // The parameter runs along the arc (or both lines): at most its trim bound.
-  const double hi = in->arc ? max_trim_a_mm : out->arc ? max_trim_b_mm : std::min(max_trim_a_mm, max_trim_b_mm);
+  const double hi = in.arc ? max_trim_a_mm : out.arc ? max_trim_b_mm : std::min(max_trim_a_mm, max_trim_b_mm);
   // The deviation grows about in proportion to the parabola's size (between
   // lines exactly): from the lines' closed form, one proportional step, then
   // the secant (a few steps), then a hair smaller where rounding left it above.
-  double tau = std::min(4 * path_dev_mm / norm(tangent(*out, corner) - tangent(*in, corner)), hi);
+  double tau = std::min(4 * path_dev_mm / norm(tangent(out, corner) - tangent(in, corner)), hi);
   double tau_last = 0, miss_last = -path_dev_mm;  // at tau 0 the deviation is 0
   for (int i = 0; i < 12; ++i) {
-    const auto z = parabola_at(*in, *out, corner, tau);
+    const auto z = parabola_at(in, out, corner, tau);
     if (!z) break;
     const double miss = z->deviation - path_dev_mm;
     if (miss == miss_last) break;
@@ -162,9 +159,9 @@ std::optional<CornerBlend> blend_corner_parabola(const Segment& a, const Segment
   }
   if (!z) return std::nullopt;
 
-  const auto sides = trimmed_blocks(a, b, *pl, *in, *out, z->p0, z->p2);
+  const auto sides = trimmed_blocks(a, b, *c, z->p0, z->p2);
   if (!sides) return std::nullopt;
-  auto blend = make_parabola(sides->t1, z->c.x, z->c.y, sides->t2, a.axis_count(), pl->a, pl->b);
+  auto blend = make_parabola(sides->t1, z->c.x, z->c.y, sides->t2, a.axis_count(), c->plane.a, c->plane.b);
   if (!blend) return std::nullopt;
   CornerBlend cb{sides->before, *blend, sides->after, 0.5 * blend->length(), z->deviation, 0};
   cb.shortfall_mm = std::max(z->trim1 + z->trim2 - bezier_length(*z), 0.0);
