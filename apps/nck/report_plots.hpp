@@ -46,7 +46,6 @@ class ReportPlots {
   void start(std::size_t series_count, double cycle_s);
   Channel& channel(std::size_t c) { return channels_[c]; }  // before start() and after finish() only
   const Channel& channel(std::size_t c) const { return channels_[c]; }
-  std::size_t channels() const { return channels_.size(); }
   const EnvelopeSeries& series() const { return series_; }  // after finish() only
 
   // The batch the run's thread records into; hand it over when full.
