@@ -153,8 +153,13 @@ async function malformed(s) {
     if (r.status === 400 && errorId(r) >= 940300) n400++;
     else other.push(r.status);
   }
-  const after = await state(s), t1 = Date.now();
   check(`${sent} malformed messages -> as many 400s with an ID`, n400 === sent, `${n400} ${other.slice(0, 5)}`);
+  // The kernel keeps its deadlines: a kernel thread the flood (or a loaded
+  // CI host) held back runs its missed cycles once it gets the CPU again;
+  // only a skipped cycle is lost for good. Hence the count is read after a
+  // short quiet spell.
+  await sleep(500);
+  const after = await state(s), t1 = Date.now();
   const cycles = after.cycle - before.cycle, expected = (t1 - t0) / 1000 / 0.001;
   // The state the API gives is the one of the server's last 25 ms tick: each
   // of the two reads may lag by up to 25 cycles, besides the 1 %.
