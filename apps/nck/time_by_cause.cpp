@@ -79,6 +79,7 @@ void TimeByCause::start(const config::Machine& m, double cycle_s) {
       ch.a_dec.push_back(d.a_dec_mm_s2);
     }
     ch.last_mcs.assign(n, 0.0);
+    ch.blocks.reserve(kMaxLines + 1);  // no rehash of every line while they come
     ch.c_axis = m.channels[c].c_axis;
   }
 }
@@ -98,6 +99,7 @@ void TimeByCause::take_event(const kernel::Event& e, const RunNames& names) {
   auto [it, added] = ch.blocks.try_emplace(key);
   Block& b = it->second;
   if (added) {
+    b.tally.reserve(4);  // a block's classes: feed, the binding axes, the corner... (one allocation)
     b.file = e.file_id;
     b.line = e.line;
     b.has_n = e.has_n;
@@ -119,7 +121,10 @@ void TimeByCause::flush(Channel& ch) {
   add(ch.total, ch.run, ch.run_cycles);
   add(*ch.tool_tally, ch.run, ch.run_cycles);
   add(*ch.file_tally, ch.run, ch.run_cycles);
-  if (ch.block) add(ch.block->tally, ch.run, ch.run_cycles);
+  if (ch.block) {
+    add(ch.block->tally, ch.run, ch.run_cycles);
+    ch.block->cycles += ch.run_cycles;
+  }
   ch.run_cycles = 0;
 }
 
@@ -127,7 +132,7 @@ void TimeByCause::finish() {
   for (Channel& ch : channels_) flush(ch);
 }
 
-double TimeByCause::lost_s(const Block& b) const { return seconds(cycles_of(b.tally)) - b.ideal_s; }
+double TimeByCause::lost_s(const Block& b) const { return seconds(b.cycles) - b.ideal_s; }
 
 void TimeByCause::drop_least_lost(Channel& ch) {
   std::vector<double> lost;
@@ -249,7 +254,7 @@ ordered_json TimeByCause::channel_json(const Channel& ch) const {
                     {"line", b.line},
                     {"n", b.has_n ? ordered_json(b.n) : ordered_json(nullptr)},
                     {"runs", b.runs},
-                    {"time_s", seconds(cycles_of(b.tally))},
+                    {"time_s", seconds(b.cycles)},
                     {"length_mm", b.length_mm},
                     {"ideal_s", b.ideal_s},
                     {"lost_s", lost(&b)},

@@ -61,6 +61,7 @@ class TimeByCause {
     std::uint64_t runs = 0;
     double length_mm = 0, ideal_s = 0;  // travelled, and its length / feed
     Tally tally;
+    std::uint64_t cycles = 0;  // of the tally: asked for by each drop of the lines that lost least
   };
   struct Channel {
     std::vector<std::string> axis_names;

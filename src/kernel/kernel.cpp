@@ -48,6 +48,7 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
   cycle_us_ = machine.cycle_time_us;
   cycle_s_ = machine.cycle_time_us * 1e-6;
   cycles_ = 0;
+  time_s_ = 0;
   machine_ = std::make_unique<const config::Machine>(machine);
   plc_outputs_ = std::make_unique<PlcOutputs>();
   ext_commands_ = plc::ExtCommandQueue{};
@@ -127,8 +128,7 @@ ChannelState Kernel::channel_state(std::size_t ch) const {
 }
 
 void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
-  // From integer microseconds, so times print as the decimals they are.
-  const double t_s = static_cast<double>(cycles_ * cycle_us_) / 1e6;
+  const double t_s = time_s_;
   out.t_s = t_s;
   out.events.clear();
   out.events_dropped = 0;
@@ -145,6 +145,7 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   }
   tick_spindles(t_s, out);
   ++cycles_;
+  time_s_ = static_cast<double>(cycles_ * cycle_us_) / 1e6;
 }
 
 ProgramState Kernel::program_state(std::size_t ch) const noexcept {

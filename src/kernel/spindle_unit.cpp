@@ -17,6 +17,11 @@ Event spindle_event(const SpindleUnit& u, std::int8_t index, double t_s, EventKi
 }  // namespace
 
 void report_spindle_changes(SpindleUnit& u, std::int8_t index, double t_s, TickOutput& out) noexcept {
+  // It reads the judged part of the status only (and the speed law): a
+  // spindle at a steady speed has nothing new most cycles.
+  if (u.axis.judgements() == u.reported_judgements && u.speed_law == u.reported_speed_law) return;
+  u.reported_judgements = u.axis.judgements();
+  u.reported_speed_law = u.speed_law;
   const spindle::SpindleStatus& s = u.axis.status();
   if (s.mode != u.last_mode || (s.cmd_rpm != u.last_cmd_rpm && !u.speed_law)) {
     Event e = spindle_event(u, index, t_s, EventKind::spindle);

@@ -55,6 +55,9 @@ struct SpindleUnit {
   double last_cmd_rpm = 0;
   bool last_speed_reached = false;
   std::uint32_t last_gear = 1;
+  // what the last report saw: with the same, it has nothing new to say
+  std::uint64_t reported_judgements = ~0ull;
+  bool reported_speed_law = false;
 };
 
 // Emits spindle / speed_reached events for what changed since

@@ -22,6 +22,7 @@ SpindleDrive::SpindleDrive(const SpindleDriveConfig& cfg) : cfg_(cfg) {
   const double dt = cfg_.cycle_s;
   const double t = cfg_.speed_time_constant_s;
   speed_share_ = t > 0 ? 1.0 - std::exp(-dt / t) : 1.0;
+  feedforward_share_ = dt / (cfg_.feedforward_ta_s + dt);  // backward Euler: ramp lag is exactly a*Ta
   for (std::size_t g = 0; g < kv_1_s_.size(); ++g) {
     kv_1_s_[g] = cfg_.position_gain_1_s[g] > 0 ? cfg_.position_gain_1_s[g] : 10.0;
     decay_[g] = std::exp(-kv_1_s_[g] * dt);
@@ -30,22 +31,22 @@ SpindleDrive::SpindleDrive(const SpindleDriveConfig& cfg) : cfg_(cfg) {
 
 spindle::DriveFeedback SpindleDrive::step(const spindle::DriveCommand& cmd) noexcept {
   const double dt = cfg_.cycle_s;
-  const double v_cmd = cmd.step_deg / dt;  // what the set point really moved this cycle
+  const double v_cmd = speed_cmd_.divide(cmd.step_deg, dt);  // what the set point really moved this cycle
   if (cfg_.open_loop) {
     act_vel_deg_s_ += (v_cmd - act_vel_deg_s_) * speed_share_;
     lag_deg_ += (v_cmd - act_vel_deg_s_) * dt;
   } else {
-    const double ta = cfg_.feedforward_ta_s;
-    const double kf = dt / (ta + dt);  // backward Euler: ramp lag is exactly a*Ta
-    filtered_vel_deg_s_ += (v_cmd - filtered_vel_deg_s_) * kf;  // the drive answers with time constant Ta
+    filtered_vel_deg_s_ += (v_cmd - filtered_vel_deg_s_) * feedforward_share_;  // the drive answers with time constant Ta
     const double w = cmd.feedforward_weight;
     const std::uint32_t g = cmd.gear_stage >= 1 && cmd.gear_stage <= config::kMaxGearStages ? cmd.gear_stage - 1 : 0;
     const double kv = kv_1_s_[g];
     // Exact solution of d(lag)/dt = v_cmd - w*v_filt - kv*lag over one cycle:
     // stable for any kv*dt.
     const double e = decay_[g];
-    const double lag_new = lag_deg_ * e + (v_cmd - w * filtered_vel_deg_s_) * (1.0 - e) / kv;
-    act_vel_deg_s_ = v_cmd - (lag_new - lag_deg_) / dt;
+    const double lag_new = lag_deg_ * e + lag_share_.divide((v_cmd - w * filtered_vel_deg_s_) * (1.0 - e), kv);
+    // A lag that stays (a steady speed) leaves the actual speed the commanded one.
+    const double lag_change = lag_new - lag_deg_;
+    act_vel_deg_s_ = lag_change == 0 && v_cmd != 0 ? v_cmd : v_cmd - lag_change / dt;
     lag_deg_ = lag_new;
   }
   // With the command at rest, the decaying lag and speed are cut to zero once

@@ -50,6 +50,7 @@ SpindleResult SpindleAxis::guard() const noexcept {
 }
 
 SpindleResult SpindleAxis::fail(ErrorId id) noexcept {
+  const Changed changed(*this);
   // 60254 is the one error that changes the spindle's state (FCT-S1 2.3).
   error_ = id;
   mode_ = SpindleMode::error;
@@ -66,6 +67,7 @@ void SpindleAxis::adopt_pending_tool() noexcept {
 }
 
 SpindleResult SpindleAxis::rotate(double rpm, bool g167) noexcept {
+  const Changed changed(*this);
   if (auto g = guard(); !g.ok()) return g;
   if (!std::isfinite(rpm)) return err(ErrorId::SpindleBadValue);
   if (!direction_allowed(cfg_.preferred_direction, static_cast<Direction>(sign_of(rpm))))
@@ -82,6 +84,7 @@ SpindleResult SpindleAxis::rotate(double rpm, bool g167) noexcept {
 }
 
 SpindleResult SpindleAxis::stop() noexcept {
+  const Changed changed(*this);
   if (auto g = guard(); !g.ok()) return g;
   pos_.planned = pos_.done = false;
   // After the control limit the reference is lost: M5 homes on the way down.
@@ -95,6 +98,7 @@ SpindleResult SpindleAxis::stop() noexcept {
 }
 
 SpindleResult SpindleAxis::position(double target_deg, Direction dir, double rpm, bool g167) noexcept {
+  const Changed changed(*this);
   if (auto g = guard(); !g.ok()) return g;
   if (!cfg_.can_position) return err(ErrorId::SpindleSensorlessPositioning);
   if (!std::isfinite(target_deg) || !std::isfinite(rpm) || rpm == 0) return err(ErrorId::SpindleBadValue);
@@ -128,6 +132,7 @@ Direction SpindleAxis::shorter_way(double target_deg) const noexcept {
 }
 
 SpindleResult SpindleAxis::home() noexcept {
+  const Changed changed(*this);
   if (auto g = guard(); !g.ok()) return g;
   if (!cfg_.can_position) return err(ErrorId::SpindleSensorlessPositioning);
   adopt_pending_tool();
@@ -160,6 +165,7 @@ void SpindleAxis::begin_positioning(SpindleMode mode, double target_deg, Directi
 }
 
 SpindleResult SpindleAxis::start_gear_change(std::uint32_t stage) noexcept {
+  const Changed changed(*this);
   if (auto g = guard(); !g.ok()) return g;
   if (stage < 1 || stage > config::kMaxGearStages) return err(ErrorId::SpindleGearStageInvalid);
   pos_.gear_change_stage = stage;
@@ -179,6 +185,7 @@ SpindleResult SpindleAxis::start_gear_change(std::uint32_t stage) noexcept {
 }
 
 SpindleResult SpindleAxis::finish_gear_change() noexcept {
+  const Changed changed(*this);
   if (!configured_) return err(ErrorId::SpindleNotConfigured);
   if (mode_ != SpindleMode::gear_change || !status_.gear_change_ready)
     return err(ErrorId::SpindleGearChangeState);
@@ -191,6 +198,7 @@ SpindleResult SpindleAxis::finish_gear_change() noexcept {
 }
 
 SpindleResult SpindleAxis::load_gear_data(std::uint32_t stage) noexcept {
+  const Changed changed(*this);
   if (auto g = guard(); !g.ok()) return g;
   if (stage < 1 || stage > config::kMaxGearStages) return err(ErrorId::SpindleGearStageInvalid);
   if (set_.vel_deg_s != 0) return err(ErrorId::SpindleNotAtStandstill);

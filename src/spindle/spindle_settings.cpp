@@ -14,16 +14,19 @@ void SpindleAxis::change_override_pct(double pct) noexcept {
   if (!std::isfinite(pct)) return;  // a broken HLI value keeps the last one
   const double clamped = std::clamp(pct, 0.0, 200.0);
   if (clamped == speed_.override_pct) return;
+  const Changed changed(*this);
   speed_.override_pct = clamped;
   update_status();
 }
 
 void SpindleAxis::suppress_override() noexcept {
+  const Changed changed(*this);
   speed_.ignore_override = true;
   update_status();
 }
 
 SpindleResult SpindleAxis::set_accel_weight_pct(double pct) noexcept {
+  const Changed changed(*this);
   if (!configured_) return err(ErrorId::SpindleNotConfigured);
   if (!std::isfinite(pct) || pct <= 0) return err(ErrorId::SpindleBadValue);
   speed_.accel_weight = pct / 100.0;  // capped by a_max where it is applied
@@ -31,12 +34,14 @@ SpindleResult SpindleAxis::set_accel_weight_pct(double pct) noexcept {
 }
 
 SpindleResult SpindleAxis::feedforward_on() noexcept {
+  const Changed changed(*this);
   if (!configured_) return err(ErrorId::SpindleNotConfigured);
   ff_.on = true;
   return {};
 }
 
 SpindleResult SpindleAxis::feedforward_weight_pct(double pct) noexcept {
+  const Changed changed(*this);
   if (!configured_) return err(ErrorId::SpindleNotConfigured);
   if (!std::isfinite(pct) || pct < 0 || pct > 100) return err(ErrorId::SpindleBadValue);
   ff_.weight = pct / 100.0;
@@ -44,18 +49,21 @@ SpindleResult SpindleAxis::feedforward_weight_pct(double pct) noexcept {
 }
 
 SpindleResult SpindleAxis::feedforward_off() noexcept {
+  const Changed changed(*this);
   if (!configured_) return err(ErrorId::SpindleNotConfigured);
   ff_.on = false;  // the weighting is kept for the next G135
   return {};
 }
 
 void SpindleAxis::set_tool_dynamics(const ToolDynamics& t) noexcept {
+  const Changed changed(*this);
   auto clean = [](double v) { return std::isfinite(v) && v > 0 ? v : 0.0; };
   tool_.pending = ToolDynamics{clean(t.vb_min_rpm), clean(t.vb_max_rpm), clean(t.a_max_deg_s2)};
   tool_.has_pending = true;
 }
 
 SpindleResult SpindleAxis::adopt_tool_dynamics_now() noexcept {
+  const Changed changed(*this);
   if (!configured_) return err(ErrorId::SpindleNotConfigured);
   if (tool_.has_pending) tool_.active = tool_.pending;
   tool_.has_pending = false;
@@ -63,6 +71,7 @@ SpindleResult SpindleAxis::adopt_tool_dynamics_now() noexcept {
 }
 
 SpindleResult SpindleAxis::default_dynamic_data() noexcept {
+  const Changed changed(*this);
   if (!configured_) return err(ErrorId::SpindleNotConfigured);
   if (set_.vel_deg_s != 0) return err(ErrorId::SpindleNotAtStandstill);
   tool_.active = ToolDynamics{};
@@ -72,11 +81,13 @@ SpindleResult SpindleAxis::default_dynamic_data() noexcept {
 
 void SpindleAxis::set_feedhold(bool on) noexcept {
   if (on == speed_.feedhold) return;  // the PLC writes it every cycle
+  const Changed changed(*this);
   speed_.feedhold = on;
   update_status();
 }
 
 void SpindleAxis::reset() noexcept {
+  const Changed changed(*this);
   if (!configured_) return;
   error_ = ErrorId{};
   const bool keep = cfg_.keep_running_on_reset &&
@@ -90,6 +101,7 @@ void SpindleAxis::reset() noexcept {
 }
 
 void SpindleAxis::abort() noexcept {
+  const Changed changed(*this);
   if (!configured_) return;
   if (mode_ != SpindleMode::error) return reset();
   // The error state stays until a reset clears it (FCT-S1 2.3); the spindle
@@ -100,6 +112,7 @@ void SpindleAxis::abort() noexcept {
 }
 
 SpindleResult SpindleAxis::enter_axis_mode() noexcept {
+  const Changed changed(*this);
   if (auto g = guard(); !g.ok()) return g;
   if (set_.vel_deg_s != 0) return err(ErrorId::SpindleNotAtStandstill);
   mode_ = SpindleMode::axis;
@@ -109,6 +122,7 @@ SpindleResult SpindleAxis::enter_axis_mode() noexcept {
 }
 
 void SpindleAxis::axis_set_point(double pos_deg, double vel_deg_s) noexcept {
+  const Changed changed(*this);
   if (mode_ != SpindleMode::axis || !std::isfinite(pos_deg) || !std::isfinite(vel_deg_s)) return;
   const double from = set_.pos_deg;
   set_.pos_deg = gear().wrap(pos_deg);
@@ -120,6 +134,7 @@ void SpindleAxis::axis_set_point(double pos_deg, double vel_deg_s) noexcept {
 }
 
 SpindleResult SpindleAxis::leave_axis_mode() noexcept {
+  const Changed changed(*this);
   if (!configured_) return err(ErrorId::SpindleNotConfigured);
   if (mode_ != SpindleMode::axis) return {};
   mode_ = SpindleMode::stop;

@@ -1,6 +1,7 @@
 // The spindle's side of its drive: the command that goes out, the measured
 // actual values that come back, and the status the kernel reads, judged
 // from those values against the set point and the tolerances.
+#include <cassert>
 #include <cmath>
 
 #include "nck/spindle/drive_scaling.hpp"
@@ -9,7 +10,7 @@
 namespace nck::spindle {
 
 void SpindleAxis::take_feedback(const DriveFeedback& feedback) noexcept {
-  feedback_ = feedback;
+  feedback_ = feedback;  // not a change of commands or state: the speeds are compared
   update_status();
 }
 
@@ -21,26 +22,15 @@ void SpindleAxis::update_status() noexcept {
   const bool measured = feedback_.valid;
   const double act_vel_deg_s = measured ? drive_sense() * feedback_.actual_speed_deg_s : set_.vel_deg_s;
   const double act_pos_deg = measured ? drive_sense() * feedback_.actual_pos_deg : set_.pos_deg;
-  const bool rotating = mode_ == SpindleMode::rotate;
-  // What the speed judgement depends on: at a steady speed (most cycles of
-  // a turning spindle) nothing of it changes, and only positions are new.
-  const StatusInputs in{mode_,
-                        gear_,
-                        error_,
-                        set_.vel_deg_s,
-                        set_.accel_deg_s2,
-                        act_vel_deg_s,
-                        speed_.programmed_rpm,
-                        speed_.override_pct,
-                        rotating ? rotation_speed_deg_s() : 0.0,
-                        speed_.ignore_override,
-                        speed_.feedhold,
-                        ref_.homed,
-                        ref_.lost};
-  if (!(judged_ && *judged_ == in)) {
-    judge_speed(in);
-    judged_ = in;
+  // At a steady speed (most cycles of a turning spindle) nothing the speed
+  // judgement depends on changes, and only positions are new.
+  if (!(judged_.epoch == epoch_ && judged_.set_vel_deg_s == set_.vel_deg_s &&
+        judged_.set_accel_deg_s2 == set_.accel_deg_s2 && judged_.act_vel_deg_s == act_vel_deg_s)) {
+    judged_inputs_ = status_inputs(act_vel_deg_s);
+    judge_speed(judged_inputs_);
+    judged_ = Judged{epoch_, set_.vel_deg_s, set_.accel_deg_s2, act_vel_deg_s};
   }
+  assert(std::isnan(act_vel_deg_s) || judged_inputs_ == status_inputs(act_vel_deg_s));  // they change only with epoch_
   s.set_pos_deg = set_.pos_deg;
   // The following error, the short way round the modulo range.
   double lag_deg = set_.pos_deg - act_pos_deg;
@@ -57,8 +47,26 @@ void SpindleAxis::update_status() noexcept {
   s.gear_change_ready = mode_ == SpindleMode::gear_change && pos_.done && s.standstill;
 }
 
+SpindleAxis::StatusInputs SpindleAxis::status_inputs(double act_vel_deg_s) const noexcept {
+  const bool rotating = mode_ == SpindleMode::rotate;
+  return StatusInputs{mode_,
+                      gear_,
+                      error_,
+                      set_.vel_deg_s,
+                      set_.accel_deg_s2,
+                      act_vel_deg_s,
+                      speed_.programmed_rpm,
+                      speed_.override_pct,
+                      rotating ? rotation_speed_deg_s() : 0.0,
+                      speed_.ignore_override,
+                      speed_.feedhold,
+                      ref_.homed,
+                      ref_.lost};
+}
+
 // The status fields that follow from the speeds, the commands and the state.
 void SpindleAxis::judge_speed(const StatusInputs& in) noexcept {
+  ++judgements_;
   SpindleStatus& s = status_;
   const auto& g = gear();
   s.mode = in.mode;

@@ -1,6 +1,7 @@
 // The cyclic part of the spindle interpolator: speed ramps, exact
 // positioning, homing on the zero mark, the control limit.
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include "nck/spindle/spindle_axis.hpp"
@@ -16,13 +17,24 @@ bool SpindleAxis::tick(double dt, bool refresh_status) noexcept {
     set_.step_deg = 0;
     return false;
   }
+  if (cruise_epoch_ == epoch_) cruise(dt);
+  else if (tick_all(dt)) cruise_epoch_ = epoch_;
+  if (refresh_status) update_status();  // with the last feedback, until the drive's answer comes
+  return true;
+}
+
+// A tick that may change anything; true when it found the spindle turning
+// at its commanded speed with a linear slope (the next ticks may cruise).
+bool SpindleAxis::tick_all(double dt) noexcept {
+  ++epoch_;
   const double v_old = set_.vel_deg_s;
   set_.step_deg = 0;
   jerk_.used = false;
+  bool at_speed = false;
   switch (mode_) {
     case SpindleMode::stop:
     case SpindleMode::error: ramp_to(0, dt); break;
-    case SpindleMode::rotate: tick_rotate(dt); break;
+    case SpindleMode::rotate: at_speed = tick_rotate(dt); break;
     case SpindleMode::position:
     case SpindleMode::gear_change: tick_position(dt); break;
     case SpindleMode::homing: tick_homing(dt); break;
@@ -37,8 +49,19 @@ bool SpindleAxis::tick(double dt, bool refresh_status) noexcept {
     jerk_.a_deg_s2 = 0;
   }
   set_.accel_deg_s2 = (set_.vel_deg_s - v_old) / dt;
-  if (refresh_status) update_status();  // with the last feedback, until the drive's answer comes
-  return true;
+  return at_speed;
+}
+
+// What tick_all does to a spindle at its commanded speed when no command
+// came since: advance by a cycle at that speed. The rest of it (the control
+// limit, the jerk ramp's reset, an acceleration of 0) was done by the tick
+// that found it at speed and gives the same again.
+void SpindleAxis::cruise(double dt) noexcept {
+  assert(mode_ == SpindleMode::rotate && !speed_.feedhold && !jerk_limited_slope() && set_.vel_deg_s != 0 &&
+         set_.vel_deg_s == rotation_speed_deg_s() && set_.accel_deg_s2 == 0 &&
+         jerk_.kind == JerkRamp::Kind::none && !jerk_.used);
+  set_.step_deg = 0;
+  advance(set_.vel_deg_s * dt);
 }
 
 // Stopped, standing, the drive measured exactly no speed and no following
@@ -54,25 +77,30 @@ void SpindleAxis::advance(double step_deg) noexcept {
   set_.step_deg += step_deg;
 }
 
-void SpindleAxis::ramp_to(double target, double dt) noexcept {
-  if (jerk_limited_slope()) return jerk_ramp_to(target, dt);
+// True when the spindle was at the target speed already (and not jerk-limited).
+bool SpindleAxis::ramp_to(double target, double dt) noexcept {
+  if (jerk_limited_slope()) {
+    jerk_ramp_to(target, dt);
+    return false;
+  }
   const double v = set_.vel_deg_s;
   // Reversing goes through standstill: brake to 0 first.
   const double goal = (v != 0 && sign_of(target) == -sign_of(v)) ? 0.0 : target;
   const double diff = goal - v;
   if (diff == 0 && v != 0) {  // at speed: no acceleration to look up
     advance(v * dt);
-    return;
+    return true;
   }
   const bool faster = std::fabs(goal) > std::fabs(v);
   const double a = faster ? accel_up(v) : accel_down(v);
   const double dv = std::min(std::fabs(diff), a * dt);
   set_.vel_deg_s = v + std::copysign(dv, diff);
   advance(set_.vel_deg_s * dt);
+  return false;
 }
 
-void SpindleAxis::tick_rotate(double dt) noexcept {
-  ramp_to(speed_.feedhold ? 0.0 : rotation_speed_deg_s(), dt);
+bool SpindleAxis::tick_rotate(double dt) noexcept {
+  const bool at_speed = ramp_to(speed_.feedhold ? 0.0 : rotation_speed_deg_s(), dt);
   // Above the control limit the encoder signal is not valid: the loop opens
   // and the reference is lost (FCT-S1 2.4.2).
   const double limit = gear().control_limit_deg_s;
@@ -80,6 +108,7 @@ void SpindleAxis::tick_rotate(double dt) noexcept {
     ref_.lost = true;
     ref_.homed = false;
   }
+  return at_speed;
 }
 
 double SpindleAxis::positioning_speed_deg_s() const noexcept {

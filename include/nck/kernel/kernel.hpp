@@ -83,7 +83,7 @@ class Kernel {
   bool channel_jogging(std::size_t ch) const noexcept;
   std::uint64_t cycles() const noexcept { return cycles_; }
   // Simulated time at the start of the next cycle.
-  double time_s() const noexcept { return static_cast<double>(cycles_ * cycle_us_) / 1e6; }
+  double time_s() const noexcept { return time_s_; }
 
  private:
   void take_acknowledgements(const TickInput& in, double t_s, TickOutput& out) noexcept;
@@ -108,6 +108,9 @@ class Kernel {
   double cycle_s_ = 0.001;
   std::uint64_t cycle_us_ = 1000;
   std::uint64_t cycles_ = 0;
+  // The next tick's time, from integer microseconds so that times print as
+  // the decimals they are; kept because it is asked for several times a cycle.
+  double time_s_ = 0;
 };
 
 }  // namespace nck::kernel

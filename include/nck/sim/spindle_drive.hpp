@@ -12,6 +12,7 @@
 #include <array>
 
 #include "nck/config/machine.hpp"
+#include "nck/core/kept_quotient.hpp"
 #include "nck/spindle/drive_io.hpp"
 
 namespace nck::sim {
@@ -42,7 +43,9 @@ class SpindleDrive {
   // Per cycle: the speed lag's share (open loop), and per gear stage the
   // position loop's gain and its decay over one cycle (computed once).
   double speed_share_ = 1;
+  double feedforward_share_ = 1;  // of the commanded speed into the filter, per cycle (backward Euler)
   std::array<double, config::kMaxGearStages> kv_1_s_{}, decay_{};
+  KeptQuotient speed_cmd_, lag_share_;  // step / dt and the lag's input / kv, at a steady speed the same
   double lag_deg_ = 0;
   double filtered_vel_deg_s_ = 0;  // commanded speed through the time constant Ta
   double act_vel_deg_s_ = 0;

@@ -79,6 +79,9 @@ class SpindleAxis {
   const DriveFeedback& feedback() const noexcept { return feedback_; }
 
   const SpindleStatus& status() const noexcept { return status_; }
+  // How often the speed part of the status (mode, speeds, speed reached,
+  // standstill...) was judged: unchanged, so is that part. // rt
+  std::uint64_t judgements() const noexcept { return judgements_; }
   const SpindleConfig& config() const noexcept { return cfg_; }
   bool configured() const noexcept { return configured_; }
 
@@ -117,11 +120,22 @@ class SpindleAxis {
   void follow_jerk_plan(double dt, double end_deg_s) noexcept;
   bool jerk_plan_settling(double goal_deg_s) const noexcept;
   bool jerk_finish_speed_ramp(double dt) noexcept;
+  // Marks a change of commands or state on entry and on every way out, so
+  // that a cruise (below) and the judged speed status end with it.
+  struct Changed {
+    explicit Changed(SpindleAxis& a) noexcept : axis(a) { ++axis.epoch_; }
+    ~Changed() { ++axis.epoch_; }
+    Changed(const Changed&) = delete;
+    Changed& operator=(const Changed&) = delete;
+    SpindleAxis& axis;
+  };
   // tick.cpp
-  void ramp_to(double target_deg_s, double dt) noexcept;
+  bool tick_all(double dt) noexcept;
+  void cruise(double dt) noexcept;
+  bool ramp_to(double target_deg_s, double dt) noexcept;
   void advance(double step_deg) noexcept;
   bool at_rest() const noexcept;
-  void tick_rotate(double dt) noexcept;
+  bool tick_rotate(double dt) noexcept;
   void tick_position(double dt) noexcept;
   void plan_positioning(double dt) noexcept;
   void step_positioning(double dt) noexcept;
@@ -143,6 +157,7 @@ class SpindleAxis {
     bool ignore_override = false, feedhold = false, homed = false, reference_lost = false;
     bool operator==(const StatusInputs&) const = default;
   };
+  StatusInputs status_inputs(double act_vel_deg_s) const noexcept;
   void update_status() noexcept;
   void judge_speed(const StatusInputs& in) noexcept;
 
@@ -174,7 +189,21 @@ class SpindleAxis {
   };
   mutable std::optional<RotationInputs> rotation_seen_;
   mutable double rotation_deg_s_ = 0;
-  std::optional<StatusInputs> judged_;  // the inputs of the speed status now shown
+  // The speed status follows from the commands and state, which change only
+  // with epoch_, and three speeds: it is judged anew when one of them moved.
+  struct Judged {
+    std::uint64_t epoch = ~0ull;
+    double set_vel_deg_s = 0, set_accel_deg_s2 = 0, act_vel_deg_s = 0;
+  };
+  Judged judged_{};
+  StatusInputs judged_inputs_{};  // what was judged: debug builds check that only epoch_ changes it
+  std::uint64_t judgements_ = 0;
+  // Bumped by every command and every tick that is not a cruise. A spindle
+  // found turning at its commanded speed (not jerk-limited) cruises while
+  // epoch_ stays cruise_epoch_: its ticks only advance the position, the
+  // same arithmetic the whole tick does then (checked in debug builds).
+  std::uint64_t epoch_ = 0;
+  std::uint64_t cruise_epoch_ = ~0ull;
 };
 
 }  // namespace nck::spindle

@@ -57,18 +57,25 @@ class HandwheelUnit {
   // Share (0..1) of the handwheel offset in each set point, when the block
   // started and now.
   motion::AxisVector share_start_{}, share_{};
+  bool settled_ = true;               // share_ is 1 for the axes in settled_axes_, 0 for the others
+  std::uint32_t settled_axes_ = ~0u;
   motion::AxisVector in_force_mm_{};
 };
 
 // A motion block takes the handwheel offset of its axes in or out
 // (Motion::handwheel_axes) in step with its path, 0 at its start and 1 at
 // its end, so the set point never jumps by the offset.
+// Shares already at the targets this block blends to stay as they are
+// (start + (target - start) * f is target): most blocks of most programs.
 inline void HandwheelUnit::blend(const Motion& m, double length_mm, double s_mm, std::size_t n_axes) noexcept {
+  if (settled_ && m.handwheel_axes == settled_axes_) return;
   const double fraction = length_mm > 0 ? std::clamp(s_mm / length_mm, 0.0, 1.0) : 1.0;
   for (std::size_t j = 0; j < n_axes; ++j) {
     const double target = (m.handwheel_axes >> j) & 1u ? 1.0 : 0.0;
     share_[j] = share_start_[j] + (target - share_start_[j]) * fraction;
   }
+  settled_ = fraction == 1.0;
+  settled_axes_ = m.handwheel_axes;
 }
 
 }  // namespace nck::kernel
