@@ -115,7 +115,7 @@ nlohmann::json final_json(const config::Machine& m, const sim::DryRun& run, doub
   const plc::PositionFormat fmt_pos = plc::position_format(h.ads_32_bit_comp_mode);
   json hli_spindles = json::object();
   for (std::size_t i = 0; i < k.spindle_count(); ++i) {
-    const plc::SpindleStatus& st = h.spindle_status[i];
+    const plc::SpindleStatus st = k.hli_spindle_status(i);
     // Named as the HLI paths of the facts sheet (E); the objects whose paths
     // it does not give keep the seed's words (FCT-S1 2.9) in snake case.
     hli_spindles[k.spindle_name(i)] =

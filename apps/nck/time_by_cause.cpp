@@ -79,7 +79,10 @@ void TimeByCause::start(const config::Machine& m, double cycle_s) {
       ch.a_dec.push_back(d.a_dec_mm_s2);
     }
     ch.last_mcs.assign(n, 0.0);
-    ch.blocks.reserve(kMaxLines + 1);  // no rehash of every line while they come
+    // room for every line kept: no rehash while they come, and a line's
+    // place (ch.block) stays until the next drop
+    ch.blocks.reserve(kMaxLines + 1);
+    ch.block_index.reserve(kMaxLines + 1);
     ch.c_axis = m.channels[c].c_axis;
   }
 }
@@ -95,21 +98,21 @@ void TimeByCause::take_event(const kernel::Event& e, const RunNames& names) {
   }
   if (e.kind != kernel::EventKind::block) return;
   flush(ch);
-  const std::uint64_t key = static_cast<std::uint64_t>(e.file_id) << 32 | e.line;
-  auto [it, added] = ch.blocks.try_emplace(key);
-  Block& b = it->second;
+  const auto [it, added] = ch.block_index.try_emplace(key_of(e.file_id, e.line), ch.blocks.size());
   if (added) {
-    b.tally.reserve(4);  // a block's classes: feed, the binding axes, the corner... (one allocation)
-    b.file = e.file_id;
-    b.line = e.line;
-    b.has_n = e.has_n;
-    b.n = e.n;
+    Block& fresh = ch.blocks.emplace_back();
+    fresh.tally.reserve(4);  // a block's classes: feed, the binding axes, the corner... (one allocation)
+    fresh.file = e.file_id;
+    fresh.line = e.line;
+    fresh.has_n = e.has_n;
+    fresh.n = e.n;
   }
+  Block& b = ch.blocks[it->second];
   ++b.runs;
   ch.block = &b;
   if (added && ch.blocks.size() > kMaxLines) drop_least_lost(ch);
+  if (ch.file != e.file_id || !ch.file_tally) ch.file_tally = &ch.files[e.file_id];
   ch.file = e.file_id;
-  ch.file_tally = &ch.files[ch.file];
   if (ch.file_names.size() <= e.file_id) ch.file_names.resize(e.file_id + 1u);
   if (ch.file_names[e.file_id].empty()) ch.file_names[e.file_id] = names.file(e.channel - 1u, e.file_id);
 }
@@ -134,15 +137,26 @@ void TimeByCause::finish() {
 
 double TimeByCause::lost_s(const Block& b) const { return seconds(b.cycles) - b.ideal_s; }
 
+// The lines lie side by side (a drop reads all of them): the kept ones move
+// up in their order, and the index is built anew.
 void TimeByCause::drop_least_lost(Channel& ch) {
   std::vector<double> lost;
   lost.reserve(ch.blocks.size());
-  for (const auto& [key, b] : ch.blocks) lost.push_back(lost_s(b));
+  for (const Block& b : ch.blocks) lost.push_back(lost_s(b));
   const auto keep = static_cast<std::ptrdiff_t>(kMaxLines / 2);
   std::nth_element(lost.begin(), lost.begin() + keep, lost.end(), std::greater<>());
   const double threshold = lost[static_cast<std::size_t>(keep)];
-  for (auto it = ch.blocks.begin(); it != ch.blocks.end();)
-    it = lost_s(it->second) <= threshold && &it->second != ch.block ? ch.blocks.erase(it) : std::next(it);
+  std::size_t kept = 0;
+  for (Block& b : ch.blocks) {
+    const bool running = &b == ch.block;
+    if (lost_s(b) <= threshold && !running) continue;
+    Block& to = ch.blocks[kept++];
+    if (&to != &b) to = std::move(b);
+    if (running) ch.block = &to;
+  }
+  ch.blocks.resize(kept);
+  ch.block_index.clear();
+  for (std::size_t i = 0; i < kept; ++i) ch.block_index.emplace(key_of(ch.blocks[i].file, ch.blocks[i].line), i);
 }
 
 // The kernel's cause, with the axis that binds read from the set points:
@@ -190,7 +204,7 @@ void TimeByCause::take(const kernel::TickOutput& out, const RunNames& names) {
       if (ch.block) {
         const double moved_mm = o.path_velocity_mm_s * cycle_s_;
         ch.block->length_mm += moved_mm;
-        if (o.feed_mm_s > 0) ch.block->ideal_s += moved_mm / o.feed_mm_s;
+        if (o.feed_mm_s > 0) ch.block->ideal_s += ch.ideal_step_s.divide(moved_mm, o.feed_mm_s);
       }
     }
     for (std::size_t j = 0; j < ch.last_mcs.size(); ++j) ch.last_mcs[j] = o.axis_mcs[j];
@@ -238,7 +252,7 @@ ordered_json TimeByCause::channel_json(const Channel& ch) const {
   // The blocks where the most time is lost against length / feed.
   std::vector<const Block*> blocks;
   blocks.reserve(ch.blocks.size());
-  for (const auto& [key, b] : ch.blocks) blocks.push_back(&b);
+  for (const Block& b : ch.blocks) blocks.push_back(&b);
   const auto lost = [&](const Block* b) { return lost_s(*b); };
   const std::size_t keep = std::min(blocks.size(), kMaxBlocks);
   std::partial_sort(blocks.begin(), blocks.begin() + static_cast<std::ptrdiff_t>(keep), blocks.end(),

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "nck/config/machine.hpp"
+#include "nck/core/kept_quotient.hpp"
 #include "nck/kernel/tick_io.hpp"
 
 namespace nck::app {
@@ -71,7 +72,8 @@ class TimeByCause {
     Block* block = nullptr;
     std::string tool = "-";
     std::uint16_t file = 0;
-    std::unordered_map<std::uint64_t, Block> blocks;  // by file << 32 | line
+    std::vector<Block> blocks;  // the lines kept, at most kMaxLines + 1
+    std::unordered_map<std::uint64_t, std::size_t> block_index;  // key_of(file, line) -> blocks[]
     std::unordered_map<std::string, Tally> tools;
     std::unordered_map<std::uint16_t, Tally> files;
     Tally* tool_tally = nullptr;  // tools[tool], files[file]: where cycles count now
@@ -83,7 +85,11 @@ class TimeByCause {
     // ends when the class, block, tool or file changes).
     Class run{};
     std::uint64_t run_cycles = 0;
+    KeptQuotient ideal_step_s;  // a cycle's length / feed: at a steady feed the same
   };
+  static std::uint64_t key_of(std::uint16_t file, std::uint32_t line) {
+    return static_cast<std::uint64_t>(file) << 32 | line;
+  }
   void take_event(const kernel::Event& e, const RunNames& names);
   static void flush(Channel& ch);
   double lost_s(const Block& b) const;

@@ -107,6 +107,12 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
 std::size_t Kernel::channel_count() const { return channels_.size(); }
 std::size_t Kernel::spindle_count() const { return spindles_.size(); }
 const std::string& Kernel::spindle_name(std::size_t index) const { return spindle_names_.at(index); }
+plc::SpindleStatus Kernel::hli_spindle_status(std::size_t index) const {
+  plc::SpindleStatus h;
+  fill_hli_status(spindles_.at(index), h);
+  return h;
+}
+
 const spindle::SpindleStatus& Kernel::spindle_status(std::size_t index) const {
   return spindles_.at(index).axis.status();
 }

@@ -100,7 +100,6 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
 
 void MachineSim::write(const kernel::TickOutput& out) noexcept {
   for (const kernel::TechRequest& r : out.tech_outputs) (void)plc_.submit(r.handle, r.output, t_s_);
-  for (std::size_t i = 0; i < spindles_; ++i) hli_.spindle_status[i] = out.hli_spindles[i];
   if (player_.has_triggers())  // lines waiting for a program state ('@hold cycle_start')
     for (const kernel::Event& e : out.events)
       if (e.kind == kernel::EventKind::state) player_.entered(e.channel, e.state_to, out.t_s);

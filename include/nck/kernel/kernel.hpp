@@ -61,6 +61,8 @@ class Kernel {
   std::size_t spindle_count() const;
   const std::string& spindle_name(std::size_t index) const;
   const spindle::SpindleStatus& spindle_status(std::size_t index) const;
+  // The spindle's HLI status object as the last tick wrote it to hli_spindles.
+  plc::SpindleStatus hli_spindle_status(std::size_t index) const;
   const plc::SpindleMap& spindle_map() const;
   double cycle_time_s() const { return cycle_s_; }
 

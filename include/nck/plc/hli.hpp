@@ -147,8 +147,10 @@ struct SpindleMap {
 // setup: extra spindles beyond kMaxHliSpindles get kNoSpindle.
 SpindleMap build_spindle_map(const config::Machine& m);
 
+// The PLC's side of the HLI. The spindles' status objects come with each
+// cycle's TickOutput (hli_spindles), and kernel::Kernel::hli_spindle_status
+// gives them at any time; no copy of them is kept here.
 struct HliImage {
-  std::array<SpindleStatus, kMaxHliSpindles> spindle_status{};
   std::array<SpindleControl, kMaxHliSpindles> spindle_control{};
   std::array<ChannelControl, kMaxHliChannels> channel{};
   std::array<ChannelState, kMaxHliChannels> channel_state{};

