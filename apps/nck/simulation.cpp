@@ -135,7 +135,9 @@ std::expected<std::unique_ptr<Simulation>, Diagnostics> Simulation::create(confi
   s->names_.run = s->run_.get();
   s->tick_ = std::make_unique<kernel::TickOutput>();
   if (opt.stop_at) s->stop_at_.emplace(*opt.stop_at, *s->run_);
-  s->out_.causes.start(*s->machine_, s->run_->kernel().cycle_time_s());
+  // the ledger per line, tool and file only for an output that shows it
+  const bool by_line = host == Host::embedded || !opt.final_state.empty() || !opt.report.empty();
+  s->out_.causes.start(*s->machine_, s->run_->kernel().cycle_time_s(), by_line);
   if (opt.track) opt.track->start(*s->machine_);
   return s;
 }

@@ -63,7 +63,8 @@ const char* cause_name(CycleCause c) {
   return "none";
 }
 
-void TimeByCause::start(const config::Machine& m, double cycle_s) {
+void TimeByCause::start(const config::Machine& m, double cycle_s, bool by_line) {
+  by_line_ = by_line;
   cycle_s_ = cycle_s;
   cycle_us_ = std::llround(cycle_s * 1e6);
   channels_.resize(m.channels.size());
@@ -79,17 +80,23 @@ void TimeByCause::start(const config::Machine& m, double cycle_s) {
       ch.a_dec.push_back(d.a_dec_mm_s2);
     }
     ch.last_mcs.assign(n, 0.0);
+    ch.c_axis = m.channels[c].c_axis;
     // room for every line kept: no rehash while they come, and a line's
     // place (ch.block) stays until the next drop
+    if (!by_line) continue;
     ch.blocks.reserve(kMaxLines + 1);
     ch.block_index.reserve(kMaxLines + 1);
-    ch.c_axis = m.channels[c].c_axis;
   }
 }
 
 void TimeByCause::take_event(const kernel::Event& e, const RunNames& names) {
   if (e.channel == 0 || e.channel > channels_.size()) return;
   Channel& ch = channels_[e.channel - 1u];
+  if (!by_line_) {  // a run still ends here: the totals take their classes in the same order
+    if (e.kind == kernel::EventKind::block || (e.kind == kernel::EventKind::plc_out && e.fn == plc::TechKind::t))
+      flush(ch);
+    return;
+  }
   if (e.kind == kernel::EventKind::plc_out && e.fn == plc::TechKind::t) {
     flush(ch);
     ch.tool = fmt::format("T{}", e.fn_number);
@@ -119,16 +126,20 @@ void TimeByCause::take_event(const kernel::Event& e, const RunNames& names) {
 
 void TimeByCause::flush(Channel& ch) {
   if (ch.run_cycles == 0) return;
+  add(ch.total, ch.run, ch.run_cycles);
+  if (by_line_) flush_lines(ch);
+  ch.run_cycles = 0;
+}
+
+void TimeByCause::flush_lines(Channel& ch) {
   if (!ch.tool_tally) ch.tool_tally = &ch.tools[ch.tool];
   if (!ch.file_tally) ch.file_tally = &ch.files[ch.file];
-  add(ch.total, ch.run, ch.run_cycles);
   add(*ch.tool_tally, ch.run, ch.run_cycles);
   add(*ch.file_tally, ch.run, ch.run_cycles);
   if (ch.block) {
     add(ch.block->tally, ch.run, ch.run_cycles);
     ch.block->cycles += ch.run_cycles;
   }
-  ch.run_cycles = 0;
 }
 
 void TimeByCause::finish() {

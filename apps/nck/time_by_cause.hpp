@@ -32,7 +32,10 @@ class TimeByCause {
   static constexpr std::size_t kMaxLines = 20000;
 
   // setup: the channels' axes (names and dynamics) and the cycle time.
-  void start(const config::Machine& m, double cycle_s);
+  // by_line false: only the channels' totals are kept (top_lines(); json()
+  // then has no tools, subroutines or blocks), for runs whose outputs show
+  // no more.
+  void start(const config::Machine& m, double cycle_s, bool by_line = true);
   // Once per cycle, after the kernel's tick. rt-ish: no allocation but
   // when a line runs for the first time.
   void take(const kernel::TickOutput& out, const RunNames& names);
@@ -91,7 +94,8 @@ class TimeByCause {
     return static_cast<std::uint64_t>(file) << 32 | line;
   }
   void take_event(const kernel::Event& e, const RunNames& names);
-  static void flush(Channel& ch);
+  void flush(Channel& ch);
+  void flush_lines(Channel& ch);
   double lost_s(const Block& b) const;
   void drop_least_lost(Channel& ch);
   Class classify(Channel& ch, const kernel::ChannelOutput& o) const;
@@ -103,6 +107,7 @@ class TimeByCause {
   double seconds(std::uint64_t n) const { return static_cast<double>(n) * static_cast<double>(cycle_us_) / 1e6; }
 
   std::vector<Channel> channels_;
+  bool by_line_ = true;
   double cycle_s_ = 0.001;
   std::int64_t cycle_us_ = 1000;
 };

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <sstream>
 
 #include "time_by_cause_helpers.hpp"
 
@@ -175,6 +176,40 @@ TEST(TimeByCause, OutputsDocDescribesEveryField) {
   const std::string doc = read_file(root() + "/docs/outputs.md");
   for (const std::string& k : keys)
     EXPECT_NE(doc.find("\"" + k + "\""), std::string::npos) << k << " is not in docs/outputs.md";
+}
+
+}  // namespace
+}  // namespace nck::app::testing
+
+namespace nck::app::testing {
+namespace {
+
+// The lines of stderr that name the top causes.
+std::vector<std::string> cause_lines(const std::string& output) {
+  std::vector<std::string> lines;
+  std::istringstream in(output);
+  for (std::string line; std::getline(in, line);)
+    if (line.starts_with("nck: time by cause")) lines.push_back(line);
+  return lines;
+}
+
+// A plain run keeps only the channels' totals (no outputs show more): its
+// top causes are those of a run with --final, word for word. With the
+// spindle turning the C axis moves too, and must not be named for the
+// path's ramps.
+TEST(TimeByCause, PlainRunNamesTheSameTopCausesAsARunWithFinal) {
+  std::string p = "G90 G0 X0 Y0 Z0\nM3 S1000\nG360 F6000\n";
+  for (int i = 1; i <= 20; ++i) p += "G1 Y" + std::to_string(i) + " X" + std::to_string(i % 3) + "\n";
+  p += "M30\n";
+  const CauseRun with_final = run_program("plain_vs_final", p);
+  const auto prog = write(temp_dir("cause_plain") / "prog.nc", p);
+  const CliResult plain = run_nck("run " + mill() + " " + prog.string());
+  ASSERT_EQ(with_final.exit_code, 0) << with_final.output;
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  const std::vector<std::string> lines = cause_lines(with_final.output);
+  ASSERT_EQ(lines.size(), 3u) << with_final.output;
+  EXPECT_EQ(cause_lines(plain.output), lines);
+  for (const std::string& line : lines) EXPECT_EQ(line.find("acceleration C"), std::string::npos) << line;
 }
 
 }  // namespace
