@@ -186,8 +186,9 @@ std::string ReportWriter::contour_json(const Channel& ch) const {
 }
 
 std::string ReportWriter::summary_json(std::vector<LineRef>& lines_used) const {
-  std::vector<std::pair<std::tuple<std::size_t, std::uint16_t, std::uint32_t>, Accum>> blocks(blocks_.begin(),
-                                                                                                 blocks_.end());
+  auto blocks = blocks_;
+  // in the lines' order first: equal times then come in that order
+  std::sort(blocks.begin(), blocks.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::sort(blocks.begin(), blocks.end(), [](const auto& a, const auto& b) { return a.second.time_s > b.second.time_s; });
   const std::size_t listed = std::min(blocks.size(), kMaxSummaryBlocks);
   std::string s = "{\"blocks\":[";

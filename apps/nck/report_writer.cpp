@@ -76,6 +76,8 @@ std::string_view event_kind(std::string_view json_line) {
 void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::DryRun& run) {
   enabled_ = !opt.report.empty();
   if (!enabled_) return;
+  blocks_.reserve(kMaxBlockLines + 1);
+  block_index_.reserve(kMaxBlockLines + 1);
   const kernel::Kernel& k = run.kernel();
   const double cycle_s = k.cycle_time_s();
   cycle_s_ = cycle_s;
@@ -208,8 +210,10 @@ void ReportWriter::take(const kernel::Event& e, const RunNames& names) {
       ch.line = e.line;
       if (e.message_index != kernel::kNoMessage) take_frame(ch, e.message_index, names);
       scan_g_words(line_text(ch.file, ch.line), ch.motion, ch.plane);
-      auto [it, added] = blocks_.try_emplace({c, ch.file, ch.line});
-      ch.block = &it->second;
+      const BlockKey key{c, ch.file, ch.line};
+      const auto [it, added] = block_index_.try_emplace(packed(key), blocks_.size());
+      if (added) blocks_.emplace_back(key, Accum{});
+      ch.block = &blocks_[it->second].second;
       ++ch.block->count;
       block_lines_ += added;
       if (blocks_.size() > kMaxBlockLines) drop_shortest_blocks();
@@ -268,8 +272,18 @@ void ReportWriter::drop_shortest_blocks() {
       if (ch.block == a) return true;
     return false;
   };
-  for (auto it = blocks_.begin(); it != blocks_.end();)
-    it = it->second.time_s <= threshold && !in_use(&it->second) ? blocks_.erase(it) : std::next(it);
+  std::size_t kept = 0;
+  for (auto& entry : blocks_) {
+    if (entry.second.time_s <= threshold && !in_use(&entry.second)) continue;
+    auto& to = blocks_[kept++];
+    if (&to == &entry) continue;
+    for (Channel& ch : channels_)
+      if (ch.block == &entry.second) ch.block = &to.second;
+    to = entry;
+  }
+  blocks_.resize(kept);
+  block_index_.clear();
+  for (std::size_t i = 0; i < kept; ++i) block_index_.emplace(packed(blocks_[i].first), i);
 }
 
 void ReportWriter::set_ghost(const nlohmann::ordered_json& ghost) {

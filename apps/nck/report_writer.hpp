@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -155,7 +156,15 @@ class ReportWriter {
   mutable std::size_t open_files_ = 0;       // of files_ (at most 16)
   std::unordered_map<std::string, std::uint16_t> file_ids_;
   // (channel, file, line) and (channel, tool) -> cycles spent there
-  std::map<std::tuple<std::size_t, std::uint16_t, std::uint32_t>, Accum> blocks_;
+  // side by side (a drop reads them all), with an index; room for every
+  // line kept, so a channel's block pointer stays until the next drop
+  using BlockKey = std::tuple<std::size_t, std::uint16_t, std::uint32_t>;
+  std::vector<std::pair<BlockKey, Accum>> blocks_;
+  std::unordered_map<std::uint64_t, std::size_t> block_index_;  // packed BlockKey -> blocks_[]
+  static std::uint64_t packed(const BlockKey& k) {
+    return static_cast<std::uint64_t>(std::get<0>(k)) << 48 | static_cast<std::uint64_t>(std::get<1>(k)) << 32 |
+           std::get<2>(k);
+  }
   std::uint64_t block_lines_ = 0;  // lines that ran (counted again after a drop)
   void drop_shortest_blocks();
   std::map<std::pair<std::size_t, std::string>, Accum> tools_;
