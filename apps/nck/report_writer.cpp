@@ -272,9 +272,13 @@ void ReportWriter::drop_shortest_blocks() {
       if (ch.block == a) return true;
     return false;
   };
+  constexpr std::size_t kDropped = ~std::size_t{0};
+  std::vector<std::size_t> moved_to(blocks_.size(), kDropped);
   std::size_t kept = 0;
-  for (auto& entry : blocks_) {
+  for (std::size_t i = 0; i < blocks_.size(); ++i) {
+    auto& entry = blocks_[i];
     if (entry.second.time_s <= threshold && !in_use(&entry.second)) continue;
+    moved_to[i] = kept;
     auto& to = blocks_[kept++];
     if (&to == &entry) continue;
     for (Channel& ch : channels_)
@@ -282,8 +286,14 @@ void ReportWriter::drop_shortest_blocks() {
     to = entry;
   }
   blocks_.resize(kept);
-  block_index_.clear();
-  for (std::size_t i = 0; i < kept; ++i) block_index_.emplace(packed(blocks_[i].first), i);
+  for (auto it = block_index_.begin(); it != block_index_.end();) {
+    if (const std::size_t to = moved_to[it->second]; to != kDropped) {
+      it->second = to;
+      ++it;
+    } else {
+      it = block_index_.erase(it);
+    }
+  }
 }
 
 void ReportWriter::set_ghost(const nlohmann::ordered_json& ghost) {

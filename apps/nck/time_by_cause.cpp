@@ -149,7 +149,7 @@ void TimeByCause::finish() {
 double TimeByCause::lost_s(const Block& b) const { return seconds(b.cycles) - b.ideal_s; }
 
 // The lines lie side by side (a drop reads all of them): the kept ones move
-// up in their order, and the index is built anew.
+// up in their order, and the index follows them.
 void TimeByCause::drop_least_lost(Channel& ch) {
   std::vector<double> lost;
   lost.reserve(ch.blocks.size());
@@ -157,17 +157,27 @@ void TimeByCause::drop_least_lost(Channel& ch) {
   const auto keep = static_cast<std::ptrdiff_t>(kMaxLines / 2);
   std::nth_element(lost.begin(), lost.begin() + keep, lost.end(), std::greater<>());
   const double threshold = lost[static_cast<std::size_t>(keep)];
+  constexpr std::size_t kDropped = ~std::size_t{0};
+  std::vector<std::size_t> moved_to(ch.blocks.size(), kDropped);
   std::size_t kept = 0;
-  for (Block& b : ch.blocks) {
+  for (std::size_t i = 0; i < ch.blocks.size(); ++i) {
+    Block& b = ch.blocks[i];
     const bool running = &b == ch.block;
     if (lost_s(b) <= threshold && !running) continue;
+    moved_to[i] = kept;
     Block& to = ch.blocks[kept++];
     if (&to != &b) to = std::move(b);
     if (running) ch.block = &to;
   }
   ch.blocks.resize(kept);
-  ch.block_index.clear();
-  for (std::size_t i = 0; i < kept; ++i) ch.block_index.emplace(key_of(ch.blocks[i].file, ch.blocks[i].line), i);
+  for (auto it = ch.block_index.begin(); it != ch.block_index.end();) {
+    if (const std::size_t to = moved_to[it->second]; to != kDropped) {
+      it->second = to;
+      ++it;
+    } else {
+      it = ch.block_index.erase(it);
+    }
+  }
 }
 
 // The kernel's cause, with the axis that binds read from the set points:

@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "nck/core/kept_quotient.hpp"
+
 namespace nck::app {
 
 struct TraceColumns {
@@ -24,8 +26,8 @@ class PathDerivatives {
  public:
   explicit PathDerivatives(double dt_s = 0.001) : dt_s_(dt_s) {}
   void update(double v_mm_s) {
-    const double a = (v_mm_s - v_mm_s_) / dt_s_;
-    j_mm_s3_ = (a - a_mm_s2_) / dt_s_;
+    const double a = a_step_.divide(v_mm_s - v_mm_s_, dt_s_);
+    j_mm_s3_ = j_step_.divide(a - a_mm_s2_, dt_s_);
     a_mm_s2_ = a;
     v_mm_s_ = v_mm_s;
   }
@@ -33,6 +35,7 @@ class PathDerivatives {
   double j_mm_s3() const { return j_mm_s3_; }
 
  private:
+  KeptQuotient a_step_, j_step_;  // at a steady speed or acceleration the same quotients
   double dt_s_;
   double v_mm_s_ = 0, a_mm_s2_ = 0, j_mm_s3_ = 0;  // from rest
 };
