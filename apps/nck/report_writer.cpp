@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "backplot_axes.hpp"
+#include "line_ledger.hpp"
 #include "machine_names.hpp"
 #include "nck/sim/dry_run.hpp"
 #include "nck/spindle/spindle_status.hpp"
@@ -272,28 +273,13 @@ void ReportWriter::drop_shortest_blocks() {
       if (ch.block == a) return true;
     return false;
   };
-  constexpr std::size_t kDropped = ~std::size_t{0};
-  std::vector<std::size_t> moved_to(blocks_.size(), kDropped);
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < blocks_.size(); ++i) {
-    auto& entry = blocks_[i];
-    if (entry.second.time_s <= threshold && !in_use(&entry.second)) continue;
-    moved_to[i] = kept;
-    auto& to = blocks_[kept++];
-    if (&to == &entry) continue;
-    for (Channel& ch : channels_)
-      if (ch.block == &entry.second) ch.block = &to.second;
-    to = entry;
-  }
-  blocks_.resize(kept);
-  for (auto it = block_index_.begin(); it != block_index_.end();) {
-    if (const std::size_t to = moved_to[it->second]; to != kDropped) {
-      it->second = to;
-      ++it;
-    } else {
-      it = block_index_.erase(it);
-    }
-  }
+  keep_lines(
+      blocks_, block_index_,
+      [&](const std::pair<BlockKey, Accum>& line) { return !(line.second.time_s <= threshold) || in_use(&line.second); },
+      [&](const std::pair<BlockKey, Accum>& from, std::pair<BlockKey, Accum>& to) {
+        for (Channel& ch : channels_)
+          if (ch.block == &from.second) ch.block = &to.second;
+      });
 }
 
 void ReportWriter::set_ghost(const nlohmann::ordered_json& ghost) {

@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "nck/prep/units/axis_table.hpp"
+#include "line_ledger.hpp"
 #include "output_writers.hpp"
 
 namespace nck::app {
@@ -81,9 +82,9 @@ void TimeByCause::start(const config::Machine& m, double cycle_s, bool by_line) 
     }
     ch.last_mcs.assign(n, 0.0);
     ch.c_axis = m.channels[c].c_axis;
+    if (!by_line) continue;
     // room for every line kept: no rehash while they come, and a line's
     // place (ch.block) stays until the next drop
-    if (!by_line) continue;
     ch.blocks.reserve(kMaxLines + 1);
     ch.block_index.reserve(kMaxLines + 1);
   }
@@ -148,8 +149,7 @@ void TimeByCause::finish() {
 
 double TimeByCause::lost_s(const Block& b) const { return seconds(b.cycles) - b.ideal_s; }
 
-// The lines lie side by side (a drop reads all of them): the kept ones move
-// up in their order, and the index follows them.
+// Keeps the half of the lines that lost the most (and the one running).
 void TimeByCause::drop_least_lost(Channel& ch) {
   std::vector<double> lost;
   lost.reserve(ch.blocks.size());
@@ -157,27 +157,12 @@ void TimeByCause::drop_least_lost(Channel& ch) {
   const auto keep = static_cast<std::ptrdiff_t>(kMaxLines / 2);
   std::nth_element(lost.begin(), lost.begin() + keep, lost.end(), std::greater<>());
   const double threshold = lost[static_cast<std::size_t>(keep)];
-  constexpr std::size_t kDropped = ~std::size_t{0};
-  std::vector<std::size_t> moved_to(ch.blocks.size(), kDropped);
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < ch.blocks.size(); ++i) {
-    Block& b = ch.blocks[i];
-    const bool running = &b == ch.block;
-    if (lost_s(b) <= threshold && !running) continue;
-    moved_to[i] = kept;
-    Block& to = ch.blocks[kept++];
-    if (&to != &b) to = std::move(b);
-    if (running) ch.block = &to;
-  }
-  ch.blocks.resize(kept);
-  for (auto it = ch.block_index.begin(); it != ch.block_index.end();) {
-    if (const std::size_t to = moved_to[it->second]; to != kDropped) {
-      it->second = to;
-      ++it;
-    } else {
-      it = ch.block_index.erase(it);
-    }
-  }
+  keep_lines(
+      ch.blocks, ch.block_index,
+      [&](const Block& b) { return !(lost_s(b) <= threshold) || &b == ch.block; },
+      [&](const Block& from, Block& to) {
+        if (ch.block == &from) ch.block = &to;
+      });
 }
 
 // The kernel's cause, with the axis that binds read from the set points:
