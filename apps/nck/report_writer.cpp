@@ -78,7 +78,7 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
   enabled_ = !opt.report.empty();
   if (!enabled_) return;
   blocks_.reserve(kMaxBlockLines + 1);
-  block_index_.reserve(kMaxBlockLines + 1);
+  block_index_->reserve(kMaxBlockLines + 1);
   const kernel::Kernel& k = run.kernel();
   const double cycle_s = k.cycle_time_s();
   cycle_s_ = cycle_s;
@@ -212,7 +212,7 @@ void ReportWriter::take(const kernel::Event& e, const RunNames& names) {
       if (e.message_index != kernel::kNoMessage) take_frame(ch, e.message_index, names);
       scan_g_words(line_text(ch.file, ch.line), ch.motion, ch.plane);
       const BlockKey key{c, ch.file, ch.line};
-      const auto [it, added] = block_index_.try_emplace(packed(key), blocks_.size());
+      const auto [it, added] = block_index_->try_emplace(packed(key), blocks_.size());
       if (added) blocks_.emplace_back(key, Accum{});
       ch.block = &blocks_[it->second].second;
       ++ch.block->count;

@@ -21,6 +21,7 @@
 #include "nck/kernel/kernel.hpp"
 #include "nck/kernel/tick_io.hpp"
 #include "backplot_axes.hpp"
+#include "line_ledger.hpp"
 #include "report_batch.hpp"
 #include "report_contour.hpp"
 #include "report_plots.hpp"
@@ -160,7 +161,7 @@ class ReportWriter {
   // line kept, so a channel's block pointer stays until the next drop
   using BlockKey = std::tuple<std::size_t, std::uint16_t, std::uint32_t>;
   std::vector<std::pair<BlockKey, Accum>> blocks_;
-  std::unordered_map<std::uint64_t, std::size_t> block_index_;  // packed BlockKey -> blocks_[]
+  LineIndex block_index_;  // packed BlockKey -> blocks_[]
   static std::uint64_t packed(const BlockKey& k) {
     return static_cast<std::uint64_t>(std::get<0>(k)) << 48 | static_cast<std::uint64_t>(std::get<1>(k)) << 32 |
            std::get<2>(k);

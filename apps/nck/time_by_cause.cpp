@@ -19,31 +19,36 @@ using kernel::CycleCause;
 // Hold kinds in Class::detail.
 constexpr std::int16_t kProgramHold = 0, kFeedhold = 1;
 
-// Runs of cycles share their class: the hit moves to the front, so the
-// next cycle's usually is the first compared.
-void add(TimeByCause::Tally& t, TimeByCause::Class c, std::uint64_t cycles = 1) {
-  for (std::size_t i = 0; i < t.size(); ++i)
-    if (t[i].first == c) {
-      t[i].second += cycles;
-      if (i > 0) std::swap(t[i], t[0]);
+}  // namespace
+
+// Runs of cycles share their class: the hit moves to the front (a swap
+// with the first, as a new entry does).
+void CauseTally::add(CauseClass c, std::uint64_t cycles) {
+  const std::size_t n = size();
+  for (std::size_t i = 0; i < n; ++i)
+    if (at(i).first == c) {
+      at(i).second += cycles;
+      if (i > 0) std::swap(at(i), at(0));
       return;
     }
-  t.emplace_back(c, cycles);
-  std::swap(t.back(), t.front());
+  if (near_count_ < kNear) near_[near_count_++] = {c, cycles};
+  else far_.emplace_back(c, cycles);
+  std::swap(at(n), at(0));
 }
 
-std::uint64_t cycles_of(const TimeByCause::Tally& t) {
-  std::uint64_t n = 0;
-  for (const auto& [k, c] : t) n += c;
-  return n;
+std::uint64_t CauseTally::cycles() const {
+  std::uint64_t cycles = 0;
+  for (std::size_t i = 0; i < size(); ++i) cycles += (*this)[i].second;
+  return cycles;
 }
 
-TimeByCause::Tally sorted(TimeByCause::Tally t) {
-  std::stable_sort(t.begin(), t.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
-  return t;
+std::vector<CauseTally::Entry> CauseTally::sorted() const {
+  std::vector<Entry> entries;
+  entries.reserve(size());
+  for (std::size_t i = 0; i < size(); ++i) entries.push_back((*this)[i]);
+  std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.second > b.second; });
+  return entries;
 }
-
-}  // namespace
 
 const char* cause_name(CycleCause c) {
   switch (c) {
@@ -86,7 +91,7 @@ void TimeByCause::start(const config::Machine& m, double cycle_s, bool by_line) 
     // room for every line kept: no rehash while they come, and a line's
     // place (ch.block) stays until the next drop
     ch.blocks.reserve(kMaxLines + 1);
-    ch.block_index.reserve(kMaxLines + 1);
+    ch.block_index->reserve(kMaxLines + 1);
   }
 }
 
@@ -106,10 +111,9 @@ void TimeByCause::take_event(const kernel::Event& e, const RunNames& names) {
   }
   if (e.kind != kernel::EventKind::block) return;
   flush(ch);
-  const auto [it, added] = ch.block_index.try_emplace(key_of(e.file_id, e.line), ch.blocks.size());
+  const auto [it, added] = ch.block_index->try_emplace(key_of(e.file_id, e.line), ch.blocks.size());
   if (added) {
     Block& fresh = ch.blocks.emplace_back();
-    fresh.tally.reserve(4);  // a block's classes: feed, the binding axes, the corner... (one allocation)
     fresh.file = e.file_id;
     fresh.line = e.line;
     fresh.has_n = e.has_n;
@@ -127,7 +131,7 @@ void TimeByCause::take_event(const kernel::Event& e, const RunNames& names) {
 
 void TimeByCause::flush(Channel& ch) {
   if (ch.run_cycles == 0) return;
-  add(ch.total, ch.run, ch.run_cycles);
+  ch.total.add(ch.run, ch.run_cycles);
   if (by_line_) flush_lines(ch);
   ch.run_cycles = 0;
 }
@@ -135,10 +139,10 @@ void TimeByCause::flush(Channel& ch) {
 void TimeByCause::flush_lines(Channel& ch) {
   if (!ch.tool_tally) ch.tool_tally = &ch.tools[ch.tool];
   if (!ch.file_tally) ch.file_tally = &ch.files[ch.file];
-  add(*ch.tool_tally, ch.run, ch.run_cycles);
-  add(*ch.file_tally, ch.run, ch.run_cycles);
+  ch.tool_tally->add(ch.run, ch.run_cycles);
+  ch.file_tally->add(ch.run, ch.run_cycles);
   if (ch.block) {
-    add(ch.block->tally, ch.run, ch.run_cycles);
+    ch.block->tally.add(ch.run, ch.run_cycles);
     ch.block->cycles += ch.run_cycles;
   }
 }
@@ -228,9 +232,9 @@ std::string TimeByCause::class_name(const Channel& ch, Class c) const {
 
 // [{"cause": "accelerating", "axis": "X", "name": "accelerating X", "time_s": .., "share": ..}, ...]
 ordered_json TimeByCause::tally_json(const Channel& ch, const Tally& t) const {
-  const double total = static_cast<double>(std::max<std::uint64_t>(cycles_of(t), 1));
+  const double total = static_cast<double>(std::max<std::uint64_t>(t.cycles(), 1));
   ordered_json rows = ordered_json::array();
-  for (const auto& [k, n] : sorted(t)) {
+  for (const auto& [k, n] : t.sorted()) {
     ordered_json r{{"cause", cause_name(k.cause)}};
     const auto d = static_cast<std::size_t>(k.detail);
     if (k.cause == CycleCause::wait && k.detail >= 0)
@@ -248,12 +252,12 @@ ordered_json TimeByCause::tally_json(const Channel& ch, const Tally& t) const {
 ordered_json TimeByCause::channel_json(const Channel& ch) const {
   ordered_json tools = ordered_json::array();
   for (const auto& [tool, t] : ch.tools)
-    tools.push_back({{"tool", tool}, {"time_s", seconds(cycles_of(t))}, {"causes", tally_json(ch, t)}});
+    tools.push_back({{"tool", tool}, {"time_s", seconds(t.cycles())}, {"causes", tally_json(ch, t)}});
   ordered_json files = ordered_json::array();
   for (const auto& [id, t] : ch.files) {
     const std::string name = id < ch.file_names.size() ? ch.file_names[id] : std::string();
     files.push_back({{"file", name}, {"main", id == 0},
-                     {"time_s", seconds(cycles_of(t))}, {"causes", tally_json(ch, t)}});
+                     {"time_s", seconds(t.cycles())}, {"causes", tally_json(ch, t)}});
   }
   // The blocks where the most time is lost against length / feed.
   std::vector<const Block*> blocks;
@@ -305,7 +309,8 @@ std::vector<std::string> TimeByCause::top_lines(std::size_t count) const {
   };
   std::vector<Row> rows;
   for (std::size_t c = 0; c < channels_.size(); ++c)
-    for (const auto& [k, n] : channels_[c].total) rows.push_back({c, k, n});
+    for (std::size_t i = 0; i < channels_[c].total.size(); ++i)
+      rows.push_back({c, channels_[c].total[i].first, channels_[c].total[i].second});
   std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.cycles > b.cycles; });
   std::vector<std::string> lines;
   const bool several = channels_.size() > 1;

@@ -7,6 +7,7 @@
 // path unit); this ledger, outside the cycle, names the binding axis from
 // the set points and sums cycles per block (NC line), tool, file and cause.
 // Sums are whole cycles, so the classes add up to the channel's time exactly.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <unordered_map>
@@ -17,10 +18,41 @@
 #include "nck/config/machine.hpp"
 #include "nck/core/kept_quotient.hpp"
 #include "nck/kernel/tick_io.hpp"
+#include "line_ledger.hpp"
 
 namespace nck::app {
 
 struct RunNames;
+
+// A class: the kernel's cause and its detail (axis index, wait reason,
+// hold kind; -1: none).
+struct CauseClass {
+  kernel::CycleCause cause = kernel::CycleCause::none;
+  std::int16_t detail = -1;
+  bool operator==(const CauseClass&) const = default;
+};
+// Cycles per class, a handful per block: the first few kept in place, so
+// a line run for the first time allocates nothing (200,000 lines of a
+// long program would be as many allocations and frees). Entries keep
+// the order add() gives them: the hit moves to the front, so the next
+// cycle's class usually is the first compared.
+class CauseTally {
+ public:
+  using Entry = std::pair<CauseClass, std::uint64_t>;
+  void add(CauseClass c, std::uint64_t cycles);
+  std::size_t size() const { return near_count_ + far_.size(); }
+  const Entry& operator[](std::size_t i) const { return i < kNear ? near_[i] : far_[i - kNear]; }
+  std::uint64_t cycles() const;
+  // The entries by cycles, most first (equal counts in their order).
+  std::vector<Entry> sorted() const;
+
+ private:
+  static constexpr std::size_t kNear = 4;
+  Entry& at(std::size_t i) { return i < kNear ? near_[i] : far_[i - kNear]; }
+  std::array<Entry, kNear> near_{};
+  std::uint8_t near_count_ = 0;
+  std::vector<Entry> far_;  // beyond the first kNear
+};
 
 class TimeByCause {
  public:
@@ -37,7 +69,7 @@ class TimeByCause {
   // no more.
   void start(const config::Machine& m, double cycle_s, bool by_line = true);
   // Once per cycle, after the kernel's tick. rt-ish: no allocation but
-  // when a line runs for the first time.
+  // for a new tool or file, or a line with more than a few classes.
   void take(const kernel::TickOutput& out, const RunNames& names);
   // After the last cycle, before json() and top_lines().
   void finish();
@@ -46,15 +78,8 @@ class TimeByCause {
   // The three causes with the most time, one line each, for stderr.
   std::vector<std::string> top_lines(std::size_t count = 3) const;
 
-  // A class: the kernel's cause and its detail (axis index, wait reason,
-  // hold kind; -1: none).
-  struct Class {
-    kernel::CycleCause cause = kernel::CycleCause::none;
-    std::int16_t detail = -1;
-    bool operator==(const Class&) const = default;
-  };
-  // Cycles per class, a handful per block.
-  using Tally = std::vector<std::pair<Class, std::uint64_t>>;
+  using Class = CauseClass;
+  using Tally = CauseTally;
 
  private:
   struct Block {
@@ -76,7 +101,7 @@ class TimeByCause {
     std::string tool = "-";
     std::uint16_t file = 0;
     std::vector<Block> blocks;  // the lines kept, at most kMaxLines + 1
-    std::unordered_map<std::uint64_t, std::size_t> block_index;  // key_of(file, line) -> blocks[]
+    LineIndex block_index;  // key_of(file, line) -> blocks[]
     std::unordered_map<std::string, Tally> tools;
     std::unordered_map<std::uint16_t, Tally> files;
     Tally* tool_tally = nullptr;  // tools[tool], files[file]: where cycles count now

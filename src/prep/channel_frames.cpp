@@ -76,8 +76,6 @@ const config::ToolRecord* ChannelFrames::tool_in_force() const {
   return d > 0 && d < tools_.size() ? &tools_[d] : nullptr;
 }
 
-void ChannelFrames::commit_axis(std::size_t j) { chain_.commit_axis(static_cast<std::size_t>(to_chain_[j])); }
-
 motion::AxisVector ChannelFrames::to_mcs(const motion::AxisVector& pcs, frames::SuppressMask m) const {
   return channel_order(chain_.to_mcs(pcs_point(pcs), m).pos_mm);
 }

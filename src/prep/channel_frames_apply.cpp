@@ -34,6 +34,10 @@ static Diagnostic frame_diagnostic(const frames::FrameError& e, const nc::Block&
 std::expected<FrameChanges, Diagnostic> ChannelFrames::apply(const nc::Block& b,
                                                              const motion::AxisVector& mcs_now) {
   FrameChanges out;
+  // what below may change an offset (most blocks: none of it)
+  if (b.modal.plane != chain_.plane() || b.zero_offset_programmed || b.modal.zero_offset != zero_modal_ ||
+      !b.kernel_writes.empty() || b.g_nonmodal.has(nc::GCode::g92) || b.d || b.hash)
+    ++changes_;
   auto check = [&](const frames::OffsetChain::Result& r, frames::OffsetKind k) -> Result {
     if (!r) {
       Diagnostic d = frame_diagnostic(r.error(), b, names_, to_channel_.data());
@@ -83,12 +87,14 @@ void ChannelFrames::note_changed_translations(const OffsetValues& before, FrameC
 std::expected<void, Diagnostic> ChannelFrames::measure_apply(std::size_t j, double factor,
                                                        std::optional<double> measured_mm,
                                                        double target_mm, const nc::Block& b) {
+  ++changes_;
   auto r = chain_.measure_apply(to_chain_[j], factor, measured_mm, target_mm);
   if (r) return {};
   return std::unexpected(frame_diagnostic(r.error(), b, names_, to_channel_.data()));
 }
 
 std::expected<void, Diagnostic> ChannelFrames::measure_clear(std::optional<std::size_t> j, const nc::Block& b) {
+  ++changes_;
   auto r = chain_.measure_clear(j ? std::optional<int>(to_chain_[*j]) : std::nullopt);
   if (r) return {};
   return std::unexpected(frame_diagnostic(r.error(), b, names_, to_channel_.data()));

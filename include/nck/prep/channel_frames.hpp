@@ -36,13 +36,25 @@ class ChannelFrames {
   std::expected<FrameChanges, Diagnostic> apply(const nc::Block& b, const motion::AxisVector& mcs_now);
 
   // Axis j (channel index) is programmed absolutely: pending offsets act.
-  void commit_axis(std::size_t j);
+  void commit_axis(std::size_t j) {
+    const int c = to_chain_[j];
+    if (!chain_.is_pending(static_cast<std::size_t>(c))) return;
+    ++changes_;
+    chain_.commit_axis(static_cast<std::size_t>(c));
+  }
   // G101 / G102 on channel axis j (nullopt: all axes); its error as a diagnostic.
   std::expected<void, Diagnostic> measure_apply(std::size_t j, double factor, std::optional<double> measured_mm,
                                                 double target_mm, const nc::Block& b);
   std::expected<void, Diagnostic> measure_clear(std::optional<std::size_t> j, const nc::Block& b);
   // G74 homed axis j: its #PSET preset is cleared.
-  void preset_axis(std::size_t j) { (void)chain_.preset(to_chain_[j]); }
+  void preset_axis(std::size_t j) {
+    ++changes_;
+    (void)chain_.preset(to_chain_[j]);
+  }
+  // Counts the calls that may have changed the offsets, at least one per
+  // change: while it stays, so do the maps (a report asks for the map of
+  // every block; most blocks change no offset).
+  std::uint64_t changes() const { return changes_; }
   motion::AxisVector to_mcs(const motion::AxisVector& pcs, frames::SuppressMask m) const;
   motion::AxisVector to_pcs(const motion::AxisVector& mcs,
                             frames::SuppressMask m = frames::SuppressMask::none()) const;
@@ -86,6 +98,7 @@ class ChannelFrames {
   int zero_modal_ = 0;  // the program's G53..G59/G159 state (not the default index)
   std::array<int, kMaxAxes> to_chain_{};    // channel j -> chain index
   std::array<int, kMaxAxes> to_channel_{};      // chain index -> channel j (-1)
+  std::uint64_t changes_ = 0;
 };
 
 }  // namespace nck::prep

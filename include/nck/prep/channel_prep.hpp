@@ -174,6 +174,7 @@ class ChannelPrep {
   bool record_frames_ = false;  // and the last map put there:
   bool record_modal_ = false;   // with the modal state
   std::uint32_t frame_index_ = kernel::kNoMessage;
+  std::uint64_t frame_changes_ = 0;  // ChannelFrames::changes() when frame_index_ was put there
   PrepObserver* observer_ = nullptr;
   std::uint32_t frame_index_now();
 };
