@@ -4,6 +4,7 @@
 // spans from the PLC scenario. Expected numbers worked out by hand.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -64,6 +65,27 @@ TEST(ReportFrames, ProgramCoordinatesUndoG54AndARotation) {
     corner = corner || (ch["line"][i] == 4 && std::abs(ch["x"][i].get<double>() - 80) < 1e-3 &&
                         std::abs(ch["y"][i].get<double>() - 90) < 1e-3);
   EXPECT_TRUE(corner);
+}
+
+// G54 selected under G91 acts on each axis when it is next programmed
+// absolutely (the G91 rule): a block that programs no offset still gets a
+// new map (the report's maps are computed again only after a change).
+TEST(ReportFrames, AnOffsetDeferredByG91GivesANewMapAtEachAxisProgrammedAbsolutely) {
+  const auto dir = temp_dir("report_frames_g91_src");
+  std::ofstream(dir / "p.nc") << "N10 G17 G90 G0 X0 Y0 Z5\nN20 G91 G54 G1 X10 F3000\nN30 G90 X20\nN40 Y10\n"
+                                 "N50 Z10\nN60 M30\n";
+  const json d = report_of("report_frames_g91", root() + "/examples/mill " + (dir / "p.nc").string());
+  const json& ch = d["channels"][0];
+  ASSERT_EQ(ch["frames"].size(), 4u);  // none; then G54's X (100), Y (50), Z (-150) one by one
+  EXPECT_EQ(ch["frames"][0]["s"], json::array({0, 0, 0}));
+  EXPECT_EQ(ch["frames"][1]["s"], json::array({100, 0, 0}));
+  EXPECT_EQ(ch["frames"][2]["s"], json::array({100, 50, 0}));
+  EXPECT_EQ(ch["frames"][3]["s"], json::array({100, 50, -150}));
+  for (std::size_t i = 0; i < ch["line"].size(); ++i) {  // N20 (line 2) still without G54; N30..N50 one map each
+    const int line = ch["line"][i];
+    if (line < 2 || line > 5) continue;
+    EXPECT_EQ(ch["frame"][i], std::max(0, line - 2)) << "line " << line;
+  }
 }
 
 TEST(ReportFrames, TrcShowsTheProgrammedContourBesideTheToolCentre) {

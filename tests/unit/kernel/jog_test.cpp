@@ -99,7 +99,7 @@ TEST(Jog, ContinuousRampsWithinManualAMaxAndStopsWhenReleased) {
 // P-CHAN-00181 ACTIVE_EXTENDED: the rapid override scales a continuous
 // jog (50 % of 50 mm/s); other modes leave the jog at its speed.
 TEST(Jog, RapidOverrideScalesAContinuousJogUnderActiveExtendedOnly) {
-  for (const auto [mode, speed_mm_s] : {std::pair{RapidOverrideMode::active_extended, 25.0},
+  for (const auto& [mode, speed_mm_s] : {std::pair{RapidOverrideMode::active_extended, 25.0},
                                         std::pair{RapidOverrideMode::active, 50.0},
                                         std::pair{RapidOverrideMode::not_used, 50.0}}) {
     config::Machine m = jog_machine();
