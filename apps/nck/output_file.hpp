@@ -6,6 +6,7 @@
 // in place. Every write is checked; the first failure is kept with the OS's
 // reason and reported by commit().
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -30,7 +31,7 @@ class OutputFile {
   void discard();
 
  private:
-
+  std::unique_ptr<char[]> buffer_;  // stdio's buffer of a temporary file (outlives f_)
   std::FILE* f_ = nullptr;
   std::string path_;  // the target
   std::string temp_;  // written here, renamed at commit (empty: in place)

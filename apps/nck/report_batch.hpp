@@ -19,6 +19,7 @@ class ReportBatch {
   static constexpr std::size_t kCycles = 512;
   struct ChannelSample {
     std::array<double, 3> pos{};  // X, Y, Z of the backplot
+    double path_velocity_mm_s = 0;  // its derivatives are plotted (computed where the batch is folded)
     std::uint32_t line = 0;       // the block in execution: its line, file and map
     std::uint32_t frame = 0;
     std::uint16_t file = 0;

@@ -1,6 +1,7 @@
 #include "report_plots.hpp"
 
 #include <exception>
+#include <utility>
 
 #include "output_writers.hpp"
 #include "time_by_cause.hpp"
@@ -73,15 +74,19 @@ void ReportPlots::run() {
   }
 }
 
-void ReportPlots::fold(const ReportBatch& b) {
+void ReportPlots::fold(ReportBatch& b) {
   for (std::size_t i = 0; i < b.size(); ++i) {
+    double* row = b.row(i);
     for (std::size_t c = 0; c < channels_.size(); ++c) {
       Channel& ch = channels_[c];
       const ReportBatch::ChannelSample& s = b.channel(i, c);
       ch.path.add(s.pos, s.line, s.file, s.rapid, s.frame, b.t_s(i));
       note_cause(ch, s.cause, s.wait_reason, b.t_s(i));
+      ch.path_deriv.update(s.path_velocity_mm_s);
+      row[ch.velocity_column + 1] = ch.path_deriv.a_mm_s2();
+      row[ch.velocity_column + 2] = ch.path_deriv.j_mm_s3();
     }
-    series_.add(b.cycle(i), b.row(i));
+    series_.add(b.cycle(i), std::as_const(b).row(i));
   }
 }
 

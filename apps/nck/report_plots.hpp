@@ -19,6 +19,7 @@
 #include "nck/kernel/tick_io.hpp"
 #include "report_batch.hpp"
 #include "report_series.hpp"
+#include "trace_columns.hpp"
 
 namespace nck::app {
 
@@ -26,6 +27,10 @@ class ReportPlots {
  public:
   struct Channel {
     PathRecorder path;
+    // path.a and path.j as --trace-columns computes them, into the row's
+    // columns after the path velocity's
+    PathDerivatives path_deriv;
+    std::size_t velocity_column = 0;
     // the cause timeline (the time cursor's class): when each class began, and its name
     std::vector<double> cause_t;
     std::vector<std::string> cause_name;
@@ -41,8 +46,8 @@ class ReportPlots {
   ReportPlots& operator=(const ReportPlots&) = delete;
   ~ReportPlots() { finish(); }
 
-  // After each channel's path start (channel(c).path): the time series and
-  // the folding thread.
+  // After each channel's path start and path velocity column (channel(c)):
+  // the time series and the folding thread.
   void start(std::size_t series_count, double cycle_s);
   Channel& channel(std::size_t c) { return channels_[c]; }  // before start() and after finish() only
   const Channel& channel(std::size_t c) const { return channels_[c]; }
@@ -57,7 +62,7 @@ class ReportPlots {
  private:
   void run();
   void wake(bool stop);
-  void fold(const ReportBatch& b);
+  void fold(ReportBatch& b);
   void note_cause(Channel& ch, kernel::CycleCause cause, kernel::WaitReason wait_reason, double t_s);
 
   std::vector<Channel> channels_;

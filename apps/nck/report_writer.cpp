@@ -99,6 +99,8 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
                                        json_quoted(fmt::format("{}path velocity", c > 0 ? fmt::format("{}.", c + 1) : "")),
                                        json_quoted(ch_name + ": path velocity"), c + 1));
     decimals_.push_back(1);
+    plots_->channel(c).velocity_column = series_meta_.size() - 1;
+    plots_->channel(c).path_deriv = PathDerivatives(cycle_s);
     add_path_derivative_series(c);
     for (std::size_t j = 0; j < axes.size(); ++j) {
       const bool rot = is_rotary_name(axes[j].name);
@@ -112,7 +114,6 @@ void ReportWriter::start(const config::Machine& m, const RunOptions& opt, sim::D
     col += axes.size();
     ch.axis_count = axes.size();
     ch.limits = backplot_limits(m, m.channels[c], ch.axis);
-    ch.path_deriv = PathDerivatives(cycle_s);
     if (c < k.channel_count()) {  // the path starts where the axes stand
       const kernel::ChannelState st = k.channel_state(c);
       std::array<double, 3> p{};
@@ -346,10 +347,9 @@ void ReportWriter::record(std::uint64_t cycle, const kernel::TickOutput& out) {
     pc.rapid = ch.motion == 0;
     pc.cause = o.cause;
     pc.wait_reason = o.wait_reason;
-    row[k++] = o.path_velocity_mm_s * 60.0;
-    ch.path_deriv.update(o.path_velocity_mm_s);
-    row[k++] = ch.path_deriv.a_mm_s2();
-    row[k++] = ch.path_deriv.j_mm_s3();
+    pc.path_velocity_mm_s = o.path_velocity_mm_s;
+    row[k] = o.path_velocity_mm_s * 60.0;
+    k += 3;  // path.a and path.j: the folding thread's
     for (std::size_t j = 0; j < ch.axis_count; ++j) row[k++] = o.axis_mcs[j];
   }
   for (std::size_t s = 0; s < spindles_.size(); ++s) {

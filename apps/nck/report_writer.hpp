@@ -94,7 +94,6 @@ class ReportWriter {
     std::array<std::string, 3> axis_name;
     std::size_t axis_count = 0;  // path axes of the channel (time-plot series)
     SoftLimits limits;           // of X, Y, Z: the 3D view's box
-    PathDerivatives path_deriv;  // path.a and path.j as --trace-columns computes them
     std::uint32_t line = 0;
     std::uint16_t file = 0;
     std::vector<std::uint16_t> file_of_id;  // decoder file id -> file_index (kNoFile: not seen yet)

@@ -47,12 +47,12 @@ const std::string& SourceLines::line(std::uint32_t n) {
     in_.seekg(static_cast<std::streamoff>(offsets_[block]));
     next_ = block * kStride + 1;
   }
-  std::string text;
+  // read into the slot (its buffer serves again; line 0 is no line while it fills)
+  slot.line = 0;
   while (next_ != 0 && next_ <= n)
-    if (!read_line(text)) break;
+    if (!read_line(slot.text)) break;
   if (next_ != n + 1) return none;
   slot.line = n;
-  slot.text = std::move(text);
   return slot.text;
 }
 
