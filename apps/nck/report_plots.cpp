@@ -82,9 +82,10 @@ void ReportPlots::fold(ReportBatch& b) {
       const ReportBatch::ChannelSample& s = b.channel(i, c);
       ch.path.add(s.pos, s.line, s.file, s.rapid, s.frame, b.t_s(i));
       note_cause(ch, s.cause, s.wait_reason, b.t_s(i));
+      if (!ch.velocity_column) continue;
       ch.path_deriv.update(s.path_velocity_mm_s);
-      row[ch.velocity_column + 1] = ch.path_deriv.a_mm_s2();
-      row[ch.velocity_column + 2] = ch.path_deriv.j_mm_s3();
+      row[*ch.velocity_column + 1] = ch.path_deriv.a_mm_s2();
+      row[*ch.velocity_column + 2] = ch.path_deriv.j_mm_s3();
     }
     series_.add(b.cycle(i), std::as_const(b).row(i));
   }

@@ -27,10 +27,10 @@ class ReportPlots {
  public:
   struct Channel {
     PathRecorder path;
-    // path.a and path.j as --trace-columns computes them, into the row's
-    // columns after the path velocity's
+    // The row's path velocity column: path.a and path.j as --trace-columns
+    // computes them go into the two after it (none: not plotted).
+    std::optional<std::size_t> velocity_column;
     PathDerivatives path_deriv;
-    std::size_t velocity_column = 0;
     // the cause timeline (the time cursor's class): when each class began, and its name
     std::vector<double> cause_t;
     std::vector<std::string> cause_name;

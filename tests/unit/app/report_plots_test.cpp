@@ -1,5 +1,6 @@
 // The report's plots folded on their own thread: the same tool path, cause
-// timeline and envelopes as folding every cycle on the run's thread.
+// timeline and envelopes (path.a and path.j derived there) as folding every
+// cycle on the run's thread.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,7 +19,7 @@ struct Cycle {
   std::uint32_t line;
   bool rapid;
   kernel::CycleCause cause;
-  std::array<double, kSeries> row;
+  std::array<double, kSeries> row;  // path velocity (path.a and path.j: derived by the plots)
 };
 
 // A run of arcs and lines over several blocks and causes: enough cycles for
@@ -31,7 +32,7 @@ std::vector<Cycle> cycles(std::size_t n) {
     const bool arc = line % 2 == 0;
     const std::array<double, 3> pos{arc ? 10 * std::cos(t) : t, arc ? 10 * std::sin(t) : 0.5 * t, 0};
     const auto cause = i % 1900 < 300 ? kernel::CycleCause::corner : kernel::CycleCause::feed;
-    out.push_back({pos, line, line % 5 == 0, cause, {std::sin(3 * t), t, static_cast<double>(line)}});
+    out.push_back({pos, line, line % 5 == 0, cause, {std::sin(3 * t) + static_cast<double>(line), 0, 0}});
   }
   return out;
 }
@@ -40,7 +41,10 @@ TEST(ReportPlots, FoldedOnTheirThreadAsOnTheRunsThread) {
   const std::vector<Cycle> run = cycles(70000);  // 137 batches, the envelope past its 4,096 buckets
   ReportPlots plots(1);
   plots.channel(0).path.add({1, 0, 0}, 0, 0, false);
+  plots.channel(0).velocity_column = 0;
+  plots.channel(0).path_deriv = PathDerivatives(kCycleS);
   plots.start(kSeries, kCycleS);
+  PathDerivatives derivatives(kCycleS);
   PathRecorder path;
   path.add({1, 0, 0}, 0, 0, false);
   EnvelopeSeries series;
@@ -57,10 +61,12 @@ TEST(ReportPlots, FoldedOnTheirThreadAsOnTheRunsThread) {
     s.line = c.line;
     s.rapid = c.rapid;
     s.cause = c.cause;
-    std::copy(c.row.begin(), c.row.end(), b.row(k));
+    s.path_velocity_mm_s = c.row[0];
+    b.row(k)[0] = c.row[0];
     if (b.full()) plots.publish();
     path.add(c.pos, c.line, 0, c.rapid, 0, t);
-    series.add(i, c.row);
+    derivatives.update(c.row[0]);
+    series.add(i, std::array<double, kSeries>{c.row[0], derivatives.a_mm_s2(), derivatives.j_mm_s3()});
     if (c.cause != last) cause_t.push_back(t);
     last = c.cause;
   }
