@@ -68,8 +68,9 @@ class TimeByCause {
   // then has no tools, subroutines or blocks), for runs whose outputs show
   // no more.
   void start(const config::Machine& m, double cycle_s, bool by_line = true);
-  // Once per cycle, after the kernel's tick. rt-ish: no allocation but
-  // for a new tool or file, or a line with more than a few classes.
+  // Once per cycle, after the kernel's tick. rt-ish: it allocates for a
+  // new tool or file, a line with more than four classes, and now and then
+  // for the index's pool.
   void take(const kernel::TickOutput& out, const RunNames& names);
   // After the last cycle, before json() and top_lines().
   void finish();
