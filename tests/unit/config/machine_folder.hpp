@@ -73,4 +73,7 @@ inline std::string dump(const Diagnostics& d) {
   return s;
 }
 
+// The first gear stage of the first axis (X of the minimal machine).
+inline const GearStage& x_gear(const LoadResult& r) { return r.machine->axes.at(0).gears.at(0); }
+
 }  // namespace nck::config::test

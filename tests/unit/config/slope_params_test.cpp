@@ -11,8 +11,7 @@ namespace {
 using test::dump;
 using test::MachineFolder;
 using test::with_id;
-
-const GearStage& x_gear(const LoadResult& r) { return r.machine->axes.at(0).gears.at(0); }
+using test::x_gear;
 
 TEST(SlopeParams, DefaultsAreTheTf5200Values) {
   MachineFolder f;
