@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "decoder_impl.hpp"
+#include "nck/core/path_within.hpp"
 
 namespace nck::nc {
 
@@ -24,9 +25,7 @@ bool inside_roots(const std::filesystem::path& p, const std::vector<std::filesys
   if (ec) return false;
   for (const std::filesystem::path& root : roots) {
     const std::filesystem::path r = std::filesystem::weakly_canonical(root, ec);
-    if (ec) continue;
-    const auto [end, _] = std::mismatch(r.begin(), r.end(), real.begin(), real.end());
-    if (end == r.end()) return true;
+    if (!ec && path_within(r, real)) return true;
   }
   return false;
 }

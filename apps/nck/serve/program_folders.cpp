@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "nck/core/path_within.hpp"
+
 namespace nck::app::serve {
 namespace fs = std::filesystem;
 
@@ -13,11 +15,6 @@ namespace {
 Diagnostic refused(std::string_view name, std::string why) {
   return make_diagnostic(ErrorId::ApiProgramNotAllowed, SourceLoc{std::string(name.substr(0, 200)), 0, 0},
                          std::move(why));
-}
-
-bool inside(const fs::path& root, const fs::path& p) {
-  const auto [end, _] = std::mismatch(root.begin(), root.end(), p.begin(), p.end());
-  return end == root.end();
 }
 
 fs::path canonical_or_empty(const fs::path& p) {
@@ -62,7 +59,7 @@ std::expected<fs::path, Diagnostic> ProgramFolders::resolve(std::string_view nam
     if (part == "..") return std::unexpected(refused(name, "'..' may not appear in a program name"));
   for (const fs::path& root : roots_) {
     const fs::path real = canonical_or_empty(given.is_absolute() ? given : root / given);
-    if (real.empty() || !inside(root, real)) continue;
+    if (real.empty() || !path_within(root, real)) continue;
     std::error_code ec;
     if (!fs::is_regular_file(real, ec)) continue;
     const std::uintmax_t size = fs::file_size(real, ec);
