@@ -187,7 +187,9 @@ std::string ReportWriter::contour_json(const Channel& ch) const {
 
 std::string ReportWriter::summary_json(std::vector<LineRef>& lines_used) const {
   auto blocks = blocks_;
-  // in the lines' order first: equal times then come in that order
+  // in the lines' order first, as the std::map this ledger was gave them:
+  // the unstable sort by time then orders equal times as it did (the page
+  // stays byte for byte the same)
   std::sort(blocks.begin(), blocks.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::sort(blocks.begin(), blocks.end(), [](const auto& a, const auto& b) { return a.second.time_s > b.second.time_s; });
   const std::size_t listed = std::min(blocks.size(), kMaxSummaryBlocks);

@@ -374,7 +374,7 @@ void ReportWriter::take_frame(Channel& ch, std::uint32_t store_index, const RunN
   // a map seen before keeps its index (a program switching between G54 and
   // G55 a million times still has two); beyond kMaxFrames the last one stays
   for (std::size_t i = 0; i < ch.frames.size(); ++i)
-    if (ch.frames[i].rot == f->rot && ch.frames[i].shift == f->shift && ch.frames[i].main == f->main) {
+    if (ch.frames[i] == *f) {
       ch.frame = static_cast<std::uint32_t>(i);
       return;
     }

@@ -34,9 +34,12 @@ static Diagnostic frame_diagnostic(const frames::FrameError& e, const nc::Block&
 std::expected<FrameChanges, Diagnostic> ChannelFrames::apply(const nc::Block& b,
                                                              const motion::AxisVector& mcs_now) {
   FrameChanges out;
+  // Selected whenever the block programs it: after #CS/#ACS/#MCS OFF the
+  // chain may hold another offset than the decoder's remembered modal code.
+  const bool select_zero = b.zero_offset_programmed || b.modal.zero_offset != zero_modal_;
   // what below may change an offset (most blocks: none of it)
-  if (b.modal.plane != chain_.plane() || b.zero_offset_programmed || b.modal.zero_offset != zero_modal_ ||
-      !b.kernel_writes.empty() || b.g_nonmodal.has(nc::GCode::g92) || b.d || b.hash)
+  if (b.modal.plane != chain_.plane() || select_zero || !b.kernel_writes.empty() ||
+      b.g_nonmodal.has(nc::GCode::g92) || b.d || b.hash)
     ++changes_;
   auto check = [&](const frames::OffsetChain::Result& r, frames::OffsetKind k) -> Result {
     if (!r) {
@@ -54,9 +57,7 @@ std::expected<FrameChanges, Diagnostic> ChannelFrames::apply(const nc::Block& b,
     out.warnings.push_back(frame_diagnostic(*w, b, names_, to_channel_.data()));
     (void)out.kinds.push_back(frames::OffsetKind::rotation);
   }
-  // Selected whenever the block programs it: after #CS/#ACS/#MCS OFF the
-  // chain may hold another offset than the decoder's remembered modal code.
-  if (b.zero_offset_programmed || b.modal.zero_offset != zero_modal_) {
+  if (select_zero) {
     zero_modal_ = b.modal.zero_offset;
     if (auto r = check(chain_.select_zero_offset(zero_table_, zero_modal_), frames::OffsetKind::zero); !r)
       return std::unexpected(r.error());

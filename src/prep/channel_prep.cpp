@@ -297,19 +297,17 @@ bool ChannelPrep::push_out(kernel::CommandQueue& commands) {
 // into the store only when it differs from the last one.
 std::uint32_t ChannelPrep::frame_index_now() {
   const ChannelFrames& offsets = planner_->frames();
-  const auto same_map = [](const kernel::AffineMap& a, const kernel::AffineMap& b) {
-    return a.rot == b.rot && a.shift == b.shift && a.main == b.main;
-  };
-  // no offset changed since the last map: the same map (the modal state may have changed)
+  // No offset changed since the last map: the same map. (Not when the modal
+  // state is recorded with it: that changes without an offset.)
   if (frame_index_ != kernel::kNoMessage && offsets.changes() == frame_changes_ && !record_modal_) {
-    assert(same_map(store_->frames[frame_index_], offsets.affine(frames::SuppressMask::none())));
+    assert(store_->frames[frame_index_] == offsets.affine(frames::SuppressMask::none()));
     return frame_index_;
   }
   frame_changes_ = offsets.changes();
   const kernel::AffineMap m = offsets.affine(frames::SuppressMask::none());
   if (frame_index_ != kernel::kNoMessage) {
     const bool same_modal = !record_modal_ || store_->frame_modals[frame_index_] == planner_->modal();
-    if (same_map(store_->frames[frame_index_], m) && same_modal) return frame_index_;
+    if (store_->frames[frame_index_] == m && same_modal) return frame_index_;
   }
   // one writer: the modal state is in place before the map's index is published
   if (record_modal_) (void)store_->frame_modals.push_back(planner_->modal());

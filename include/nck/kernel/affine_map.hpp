@@ -15,6 +15,8 @@ struct AffineMap {
   frames::Mat3 rot = frames::identity3();
   motion::AxisVector shift{};
   bool pure_translation = true;
+  // The same map: main axes, rotation and shift (pure_translation follows from rot).
+  bool operator==(const AffineMap& o) const { return main == o.main && rot == o.rot && shift == o.shift; }
   void apply(const motion::AxisVector& pcs, motion::AxisVector& mcs, std::size_t n) const noexcept;  // rt
 };
 
