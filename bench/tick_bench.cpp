@@ -74,7 +74,7 @@ void BM_WholeRun(benchmark::State& state) {
 }
 BENCHMARK(BM_WholeRun)->Unit(benchmark::kMillisecond);
 
-// SPEC 4: 3 axes + 3 spindles + distance control. The mill with a third
+// BM_TickCycles (docs/performance.md): 3 axes + 3 spindles + distance control. The mill with a third
 // spindle S3 (a copy of S2 as logical axis 6), all three turning while X/Y/Z
 // move over the sine sheet of its sim.lis; once with #DIST CTRL ON, once
 // without. Each cycle (sim read, tick, sim write) is timed on its own:

@@ -1,4 +1,4 @@
-// The nck command line (SPEC 2.2). Exit codes: 0 ok, 1 errors in the input
+// The nck command line (README, docs/cli.md). Exit codes: 0 ok, 1 errors in the input
 // (NC error, plausibility errors), 2 bad usage or machine data.
 #include "nck/cli.hpp"
 

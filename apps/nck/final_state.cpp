@@ -1,4 +1,5 @@
-// --final: the state at the end of the run as one JSON document (SPEC 2.5).
+// --final: the state at the end of the run as one JSON document (README;
+// additions in docs/outputs.md).
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -116,8 +117,8 @@ nlohmann::json final_json(const config::Machine& m, const sim::DryRun& run, doub
   json hli_spindles = json::object();
   for (std::size_t i = 0; i < k.spindle_count(); ++i) {
     const plc::SpindleStatus st = k.hli_spindle_status(i);
-    // Named as the HLI paths of the facts sheet (E); the objects whose paths
-    // it does not give keep the seed's words (FCT-S1 2.9) in snake case.
+    // Named as the TF5200 HLI paths; the objects whose paths nck does not
+    // know keep the seed's words (FCT-S1 2.9) in snake case.
     hli_spindles[k.spindle_name(i)] =
         json{{"mode_r", st.mode_bits},
              {"active_rev_r", plc::to_hli_speed(st.nominal_rpm)},

@@ -13,7 +13,7 @@
 
 namespace nck::app {
 
-// ordered: "t", "ch", "ev" first, as SPEC 2.3 lists them
+// ordered: "t", "ch", "ev" first in every event line
 using json = nlohmann::ordered_json;
 
 nlohmann::ordered_json RunNames::spindle(std::int8_t index) const {

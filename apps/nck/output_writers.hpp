@@ -30,12 +30,12 @@ struct RunNames {
 
 
 std::string sync_name(std::uint32_t sync_bits);
-// "M30", "error", "interrupted" ... as SPEC 2.3 names them.
+// "M30", "error", "interrupted" ...: the `end` event's reason.
 const char* end_name(kernel::EndReason r);
 // The event kind with this "ev" name (block, wait, plc_out ...), if any.
 std::optional<kernel::EventKind> event_kind_from(std::string_view name);
 const char* link_reason_name(kernel::LinkReason r);
-// "plc_ack", "speed_reached" ... as SPEC 2.3 names them.
+// "plc_ack", "speed_reached" ...: the `wait` event's reason.
 const char* wait_reason_name(kernel::WaitReason r);
 
 // JSON text that never throws (invalid UTF-8 is replaced, not an abort).

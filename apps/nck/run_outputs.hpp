@@ -44,8 +44,8 @@ struct RunOutputs {
 };
 
 // An output path that names an input (a program, the --plc file, a file of
-// the machine folder) or another output: the error text (SPEC 2.2: refused,
-// exit 2). Paths are compared after resolving links and "..".
+// the machine folder) or another output: the error text (refused with
+// exit 2, as README says). Paths are compared after resolving links and "..".
 std::optional<std::string> output_path_conflict(const RunOptions& opt);
 
 // The outputs whose target is, at the end of the run, a file the run read:

@@ -45,7 +45,7 @@ class Simulation {
   // (`stopped`), sums the time by cause. Then exit_code(), end_reason() and
   // final_json() may be read.
   void finish(std::optional<kernel::EndReason> stopped);
-  // SPEC 2.2: 0 program end, 1 NC error or a limit, 130/143 SIGINT/SIGTERM.
+  // As README lists them: 0 program end, 1 NC error or a limit, 130/143 SIGINT/SIGTERM.
   int exit_code() const;
   // The final state's "end": why the run ended.
   std::string end_reason() const;

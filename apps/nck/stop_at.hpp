@@ -1,5 +1,5 @@
 #pragma once
-// nck run --stop-at (SPEC 2.7): the run ends where a block ends — the block
+// nck run --stop-at (docs/cli.md): the run ends where a block ends — the block
 // numbered N<n>, the block on line:<L> of the main program, the K-th block
 // (block:<K>), or the block that runs when the first event of a kind comes
 // (event:<kind>, e.g. event:wait). The kernel holds at that block's end

@@ -1,5 +1,5 @@
-; Lathe example: the profile of turn.nc programmed in diameters (G51, facts
-; C11). X words are diameters (x.lis: kenngr.durchm_prog_abs 1), R stays a
+; Lathe example: the profile of turn.nc programmed in diameters (G51,
+; docs/nc-language.md). X words are diameters (x.lis: kenngr.durchm_prog_abs 1), R stays a
 ; radius; the trace shows the same radii as turn.nc. Runs to M30.
 %diameter
 N10 G18 G90 G51

@@ -1,6 +1,6 @@
 #pragma once
 // Private to the config layer: builders from checked lists to the typed model,
-// and the plausibility checks (SPEC 3.1).
+// and the plausibility checks (IDs 910010-910027 in docs/errors.md).
 #include <vector>
 
 #include "nck/config/machine.hpp"

@@ -1,4 +1,4 @@
-// The main spindle as C axis (#CAX, facts B12): a channel whose main spindle
+// The main spindle as C axis (#CAX, FCT-S1 §2.8.8): a channel whose main spindle
 // may become a C axis (axis_mode 0x0204) has it as one more path axis from
 // the start, so every layer (decoder words, planner, trace columns, final
 // state) knows it; the planner and the channel let it move only in C-axis

@@ -1,4 +1,4 @@
-// Plausibility checks across lists (SPEC 3.1): axis lists against the
+// Plausibility checks across lists (docs/errors.md, 9100xx): axis lists against the
 // channels' use of logical axis numbers, offsets against channel axes.
 #include <cctype>
 #include <fmt/format.h>

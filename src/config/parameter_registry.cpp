@@ -67,7 +67,7 @@ bool replace_part(std::string& s, std::string_view from, std::string_view to) {
   return true;
 }
 
-// The seed misspellings listed in PARAMETER_FACTS "Surprises".
+// The seed misspellings accepted with warning 910005 (docs/parameters.md).
 bool rewrite_misspelling(ListKind list, std::string& k) {
   bool changed = false;
   switch (list) {

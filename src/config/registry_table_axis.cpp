@@ -1,4 +1,4 @@
-// Axis list keys (P-AXIS, PARAMETER_FACTS.md). getriebe[i] = gear stage i+1.
+// Axis list keys (P-AXIS, docs/parameters.md). getriebe[i] = gear stage i+1.
 // Row layout as in registry_table_channel.cpp. Where a unit depends on the
 // axis type, both list units convert by the same factor (0.1 um and 0.0001
 // deg are both 1e-4 of mm / deg), so one scale serves all axis types.

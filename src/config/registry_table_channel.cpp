@@ -1,4 +1,4 @@
-// Startup and channel list keys (P-STUP / P-CHAN, PARAMETER_FACTS.md).
+// Startup and channel list keys (P-STUP / P-CHAN, TF5200 parameter pages; docs/parameters.md).
 // Row: key, ID, list, type, min, max, default, scale (list -> internal),
 // list unit, internal unit, meaning, index counts, choices, text default.
 #include "registry_internal.hpp"

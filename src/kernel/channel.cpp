@@ -496,7 +496,7 @@ void Channel::end_spindles(EndReason reason, Cycle& cy) noexcept {
       (void)u.axis.stop();
     }
   }
-  // `end` is the channel's last event (SPEC 2.3): what the end did to its
+  // `end` is the channel's last event (docs/outputs.md): what the end did to its
   // spindles is reported before it, not by the spindles' cycle after it.
   for (std::int8_t s : spindles_)
     if (s >= 0 && static_cast<std::size_t>(s) < ctx.spindle_count && ctx.spindles[s].channel == number_)

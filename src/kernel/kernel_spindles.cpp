@@ -119,8 +119,9 @@ void start_external_command(SpindleUnit& u, std::int8_t index, double t_s, TickO
 
 // External spindle commands keep their order of arrival per spindle: a
 // spindle's next command starts when its last one is done and acknowledged,
-// while the other spindles go on with theirs (facts sheet E: jobs run in
-// order of arrival; a job to S1 does not wait for S2's speed).
+// while the other spindles go on with theirs (TF5200 HLI ext_to_ipo: jobs
+// run in order of arrival, docs/plc-scenario.md; a job to S1 does not wait
+// for S2's speed).
 void Kernel::run_external_commands(double t_s, TickOutput& out) noexcept {
   hand_out_external_commands();
   for (std::size_t i = 0; i < spindles_.size(); ++i) {

@@ -106,7 +106,7 @@ struct BlockCtx {
   std::string& main_target;       // configured name of the current main spindle
   std::vector<std::string> axis_upper;  // axis names, upper case (the C axis's as #CAX names it)
   std::vector<std::string> alias_upper;  // P-CHAN-00253 alias names per axis ("" none)
-  // #DIST CTRL state kept by the decoder (facts D: mode changes, SET_POS).
+  // #DIST CTRL state kept by the decoder (mode changes 310025, SET_POS 310024).
   int dist_state = 0;             // 0 off, 1 on surface, 2 on const, 3 freeze
   bool dist_set_pos_known = false;
   Plane plane = Plane::g17;       // the working plane before the block (cycle @X/@Y/@Z)

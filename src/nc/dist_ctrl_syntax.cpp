@@ -1,5 +1,6 @@
 // #DIST CTRL: 3D distance control switch with its keyword overrides
-// (facts sheet D). The decoder tracks the mode to report 310024/310025.
+// (docs/nc-language.md, "3D distance control"). The decoder tracks the mode
+// to report 310024/310025.
 #include <cmath>
 #include <fmt/format.h>
 

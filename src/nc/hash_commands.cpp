@@ -1,5 +1,5 @@
 // '#' commands: syntax and argument checks into the typed structs of
-// hash_commands.hpp (facts sheet A, B, D). Execution is the kernel's.
+// hash_commands.hpp (docs/nc-language.md, "# commands"). Execution is the kernel's.
 // This file holds the keyword table, the shared argument helpers and the
 // small families; couplings are in hash_links.cpp, the offset chain in
 // hash_cs.cpp, #DIST CTRL in dist_ctrl_syntax.cpp.

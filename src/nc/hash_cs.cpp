@@ -1,4 +1,4 @@
-// # commands of the offset chain (facts sheet A): coordinate systems, the
+// # commands of the offset chain (FCT-C2 §2; docs/nc-language.md): coordinate systems, the
 // rotation, suppressed offsets and the tool length correction.
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-// # commands of the axis couplings (AX LINK groups, facts sheet B).
+// # commands of the axis couplings (AX LINK groups; spindle_link seed, TF5200 #SET AX LINK).
 #include <fmt/format.h>
 
 #include "hash_parse_util.hpp"

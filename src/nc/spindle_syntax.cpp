@@ -1,6 +1,7 @@
 // Spindle words: DIN syntax of the main spindle (S1000, S.POS=90,
 // S.POS_SHIFT=.., S.OFFSET=..) and the spindle-specific syntax
-// S1[M3 REV1000 ...] with the keywords of facts sheet B3.
+// S1[M3 REV1000 ...] with the keywords of TF5200's spindle-specific syntax
+// (listed in docs/nc-language.md, "Spindles").
 #include <cmath>
 #include <fmt/format.h>
 
@@ -81,7 +82,7 @@ bool parse_feed_link(Cursor& c, BlockCtx& b, SpindleCommand& sc) {
   return true;
 }
 
-// Checks the combination rules of one bracket (facts B3, B17).
+// Checks the combination rules of one bracket (docs/nc-language.md, "Spindles").
 bool check_bracket(BlockCtx& b, const SpindleCommand& sc, int m_count, int g136_count,
                    int other_count, std::size_t pos) {
   if (m_count > 0)

@@ -1,5 +1,5 @@
-// Coupling groups and their rules (facts B18, spindle-link seed, FCT-S1
-// 2.8.3); see ax_link_groups.hpp.
+// Coupling groups and their rules (spindle_link seed, FCT-S1 §2.8.3,
+// docs/nc-language.md "Synchronous operation"); see ax_link_groups.hpp.
 #include "nck/prep/ax_link_groups.hpp"
 
 #include <algorithm>

@@ -105,7 +105,7 @@ PlanResult add_outputs(const nc::Block& b, PlannedCommand& c, const config::Chan
   }
   for (int h : b.h)
     if (!c.outputs.push_back({TechKind::h, h, config::sync::MOS})) return overflow();
-  // #TOOL PREP [basic, ...] is the T word's form (facts B16): the PLC gets the basic number.
+  // #TOOL PREP [basic, ...] is the T word's form (TF5200 #TOOL PREP): the PLC gets the basic number.
   std::optional<std::int64_t> t = b.t;
   if (const auto* td = b.hash ? std::get_if<nc::ToolData>(&*b.hash) : nullptr; td && td->prep) t = td->fields[0];
   if (t && !c.outputs.push_back({TechKind::t, static_cast<std::int32_t>(*t), config::sync::MOS}))

@@ -45,8 +45,8 @@ bool RadiusComp::relevant(const nc::Block& b) const {
   return false;
 }
 
-// What may not be programmed while compensation is selected (facts A1, A7,
-// A14; TF5200 20049, 20133).
+// What may not be programmed while compensation is selected (docs/nc-language.md,
+// "Tool radius compensation"; TF5200 20802, 20671, 20608, 20049, 20133).
 PlanResult RadiusComp::forbidden(const nc::Block& b) const {
   auto selected = [&](ErrorId id) {
     return block_error(id, b, fmt::format("{} while tool radius compensation is selected",

@@ -149,7 +149,7 @@ std::expected<std::optional<SpindleAction>, Diagnostic> main_action(const nc::Bl
   std::optional<SyncPoint> point;
   if (m != SpindleM::none) {
     point = sync_point(bits_for(sp, m));
-    if (!point) m = SpindleM::none;  // NO_SYNCH: the M function is not executed (SPEC 3.3)
+    if (!point) m = SpindleM::none;  // NO_SYNCH: the M function is not executed (docs/parameters.md)
   }
   // S / REV, POS and POS_SHIFT are modal whatever the function does (S with M5 is kept).
   if (c.rev_rpm) {
@@ -183,7 +183,7 @@ std::expected<std::optional<SpindleAction>, Diagnostic> main_action(const nc::Bl
       return a;
     case SpindleM::m3:
     case SpindleM::m4: {
-      // Facts B1: M3/M4 start a rotation only with a valid speed. Without one
+      // TF5200 M03/M04: a rotation starts only with a valid speed. Without one
       // the direction is selected at 0 rpm, so that a later S turns the
       // spindle that way (seed FCT-S1 2.5.2, second synchronisation example).
       const double rpm = st.speed_rpm.value_or(0.0);

@@ -1,5 +1,6 @@
-// Spindle planning, the configuration-driven rules: PLC spindle detection, gear selection of the main spindle (FCT-S1 2.8.2,
-// SPEC 3.3 with its erratum) and tool-related dynamic limits (FCT-S1 2.8.5).
+// Spindle planning, the configuration-driven rules: PLC spindle detection, gear selection of the main spindle
+// (FCT-S1 2.8.2; a stage that covers S is kept, also where the seed's example changes it: docs/decisions.md)
+// and tool-related dynamic limits (FCT-S1 2.8.5).
 #include <string_view>
 
 #include <fmt/format.h>
@@ -66,7 +67,7 @@ std::expected<void, Diagnostic> SpindlePlanner::plan_gear(Step& s, std::optional
                 "too many spindle actions in one block; split the spindle commands over several blocks");
   };
   // Gear changes exist only for the main spindle in DIN syntax and only when
-  // enabled; otherwise M40..M45 are free M functions (facts B6),
+  // enabled; otherwise M40..M45 are free M functions (FCT-S1 §3.2.1, P-CHAN-00052),
   // synchronised by their m_synch[n] like any other (NO_SYNCH: no output).
   if (!c.din || !channel_->main_spindle_gear_change) {
     if (!c.gear_stage) return {};
@@ -103,7 +104,7 @@ std::expected<void, Diagnostic> SpindlePlanner::plan_gear(Step& s, std::optional
   a.spindle = s.kernel_spindle;
   a.op = SpindleOp::gear_change;
   a.stage = d->stage;
-  a.sync_bits = config::sync::MVS_SVS;  // M40..M45 are synchronised before the block (facts B6)
+  a.sync_bits = config::sync::MVS_SVS;  // M40..M45 are synchronised before the block (FCT-S1 §2.8.2)
   a.sync = SyncPoint::before;
   a.output = true;
   a.wait = SpindleWait::gear_change;

@@ -12,8 +12,8 @@ double hyperbola(const config::AccelCurve& c, double n) {
 }
 
 double polynomial(const config::AccelCurve& c, double n) {
-  // SPEC erratum: the seed prints dn = n_grenz - n, but its own coefficients
-  // only reproduce its table with dn = n - n_grenz.
+  // FCT-S1 §2.8.4.1 prints dn = n_grenz - n, but its own example coefficients
+  // reproduce its table only with dn = n - n_grenz, which nck uses.
   const double dn = n - c.limit_speed_deg_s;
   return ((c.b3 * dn + c.b2) * dn + c.b1) * dn + c.const_accel_deg_s2;
 }

@@ -37,7 +37,7 @@ struct ApiCommand {
 };
 
 inline constexpr std::size_t kMaxCommandBytes = 64 * 1024;
-inline constexpr std::size_t kMaxMdiChars = 4000;  // one NC block (facts C3)
+inline constexpr std::size_t kMaxMdiChars = 4000;  // one NC block (docs/nc-language.md)
 
 // The command in `body`, or nothing and the reason (ID, "api" as the file).
 std::optional<ApiCommand> parse_api_command(std::string_view body, std::size_t channels, Diagnostics& diags);

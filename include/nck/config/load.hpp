@@ -14,7 +14,7 @@ struct LoadResult {
 };
 
 // Reads startup.lis in `folder` and every list it names, converts units,
-// runs all plausibility checks (SPEC 3.1). Never throws on bad input.
+// runs all plausibility checks (docs/errors.md). Never throws on bad input.
 LoadResult load_machine(const std::filesystem::path& folder);
 
 }  // namespace nck::config

@@ -26,7 +26,7 @@ inline constexpr std::size_t kMaxGearStages = 6;
 
 enum class AxisKind : std::uint8_t { translatory = 1, rotary = 2, spindle = 4 };
 
-// Synchronisation type bits (facts sheet B0).
+// Synchronisation type bits (FCT-S1 §2.5).
 namespace sync {
 inline constexpr std::uint32_t NO_SYNCH = 0x0;
 inline constexpr std::uint32_t MOS = 0x1;

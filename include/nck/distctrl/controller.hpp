@@ -1,5 +1,6 @@
 #pragma once
-// 3D distance control of one channel (SPEC 3.7, facts D2): the state
+// 3D distance control of one channel (channel_params_distctrl seed;
+// docs/nc-language.md): the state
 // machine, and per cycle the chain sensor -> range and rate monitoring ->
 // filter -> ref_offset -> PID -> limiter -> max_deviation. Its output is the
 // offset the channel adds to the tool axis. Fixed-size, no allocation; the

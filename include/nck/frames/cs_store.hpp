@@ -33,9 +33,9 @@ RigidFrame make_frame(const CsValues& v, const RotationConvention& c);
 
 class CsStore {
  public:
-  static constexpr std::size_t kMaxDefinitions = 5;  // seed / facts A1
+  static constexpr std::size_t kMaxDefinitions = 5;  // TF5200 #CS DEF; docs/coordinate-systems.md
   static constexpr std::size_t kMaxActive = 5;
-  static constexpr std::size_t kMaxName = 8;  // #CS ADD names (facts A2)
+  static constexpr std::size_t kMaxName = 8;  // #CS ADD names (TF5200 #CS ADD)
 
   struct Definition {
     int id = 0;

@@ -19,7 +19,7 @@ inline constexpr std::size_t kMainAxes = 3;
 using AxisValues = AxisArray;  // per channel axis, mm or deg
 
 // Distinct types so a machine position is never fed where a programmed one
-// is expected (ARCHITECTURE.md: "distinct types where a mix-up is likely").
+// is expected (a mix-up the compiler should catch).
 struct PcsPoint {
   AxisValues pos_mm{};
 };

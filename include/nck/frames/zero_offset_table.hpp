@@ -1,5 +1,5 @@
 #pragma once
-// The zero-offset table [ZERO] as given at setup (FCT-C2 §2.7, facts A9/A10):
+// The zero-offset table [ZERO] as given at setup (FCT-C2 §2.7, P-ZERO-00001..4):
 // groups 0..96, group 0 = G53, 1..6 = G54..G59, 7.. only through G159=n.
 #include <cstdint>
 #include <expected>

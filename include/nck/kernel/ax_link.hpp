@@ -1,6 +1,6 @@
 #pragma once
-// Synchronous operation (#SET AX LINK / #ENABLE AX LINK, facts B18, FCT-S1
-// 2.8.3): what the kernel needs of a coupling group, as fixed-size data.
+// Synchronous operation (#SET AX LINK / #ENABLE AX LINK, spindle_link seed,
+// FCT-S1 2.8.3): what the kernel needs of a coupling group, as fixed-size data.
 // Preparation checks the rules and resolves names; a command enables one
 // group or disables several. Spindle pairs: preparation already commands the
 // slaves in parallel with their master; the kernel only keeps other

@@ -1,7 +1,7 @@
 #pragma once
 // Events the kernel emits in the cyclic path: plain data, no strings, so
 // producing one never allocates. The application turns them into JSON lines
-// (SPEC 2.3), looking texts up by id.
+// (the events file, docs/outputs.md), looking texts up by id.
 #include <cstdint>
 
 #include "nck/core/diagnostic.hpp"

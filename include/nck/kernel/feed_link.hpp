@@ -1,6 +1,6 @@
 #pragma once
 // Spindle-path couplings as a per-cycle law (FCT-S1 2.8.6, 2.8.7, 2.8.9;
-// facts B7-B11). Preparation describes the coupling in fixed-size data; the
+// TF5200 G95, G96). Preparation describes the coupling in fixed-size data; the
 // channel evaluates it every cycle and hands the result to the path as a
 // commanded-velocity limit (PathProfile::set_commanded_velocity), or to the
 // spindle as a speed (G96) or a position (tapping). Nothing here knows the
@@ -25,7 +25,7 @@ struct FeedLink {
   // G63 / G331 / G332: spindle turn direction (+1 M3 sense, -1 M4 sense)
   // while the path moves forward; G95 with a PLC spindle: the programmed rpm.
   double direction = 1;
-  double programmed_rpm = 0;  // G95 on a PLC spindle (programmed values only, facts B10)
+  double programmed_rpm = 0;  // G95 on a PLC spindle (programmed values only, TF5200 G95)
   // Tapping: the spindle's top speed as an axis (G63: the gear stage of
   // P-AXIS-00052 def_cax_gear_st), 0 = its current gear stage's.
   double spindle_max_rpm = 0;

@@ -1,5 +1,5 @@
 #pragma once
-// A channel's program state as the operator sees it (SPEC 2.7): every
+// A channel's program state as the operator sees it (docs/operating.md): every
 // change is a `state` event with the state left, the state entered and why.
 #include <cstdint>
 #include <string_view>

@@ -42,7 +42,7 @@ enum class SyncPoint : std::uint8_t {
   late_explicit, // MVS_SLP: output now, wait at #EXPL SYN
 };
 
-// The sync point of configured synchronisation bits (facts sheet B0);
+// The sync point of configured synchronisation bits (FCT-S1 §2.5);
 // nullopt = NO_SYNCH (no output; a spindle M function is then not executed).
 constexpr std::optional<SyncPoint> sync_point(std::uint32_t bits) noexcept {
   namespace s = config::sync;

@@ -78,7 +78,7 @@ struct Block {
   // entry per bracket.
   std::vector<SpindleCommand> spindles;
 
-  // At most one # command per block (facts sheet C3), plus #PSET / #PRESET
+  // At most one # command per block (docs/nc-language.md), plus #PSET / #PRESET
   // which may share a block.
   std::optional<HashCommand> hash;
 

@@ -57,7 +57,7 @@ struct DecoderConfig {
   int max_zero_offset_index = 96;             // highest G159 index (zero-offset groups 0..96)
   bool dist_ctrl_available = true;            // FCT_3D_DIST_CTRL (else #DIST CTRL -> 310015)
   bool continue_after_error = false;          // lint mode: skip a bad block and go on
-  std::size_t max_block_chars = 4000;         // facts C3
+  std::size_t max_block_chars = 4000;         // docs/nc-language.md (TF5200's limit)
   // Cycle search path after the program's folder: the machine's
   // cycle_path[i] folders (startup.lis), then --cycles DIR.
   std::vector<std::filesystem::path> cycle_dirs;
@@ -127,8 +127,8 @@ class Decoder {
   // is not a known kernel variable (or declared program variable).
   std::optional<double> get_variable(std::string_view name) const;
   bool set_variable(std::string_view name, double value);
-  // The active block-skip levels (the HLI's program_block_ignore, facts
-  // C4): they act on the blocks decoded from now on.
+  // The active block-skip levels (the HLI's program_block_ignore,
+  // docs/plc-scenario.md): they act on the blocks decoded from now on.
   void set_skip_mask(std::uint32_t mask) noexcept;
   // MDI: decoding goes on with `text`, blocks the operator typed, with the
   // modal state, variables and offsets where decoding stopped (after the

@@ -1,5 +1,5 @@
 #pragma once
-// Typed # commands (SPEC 3.2, facts sheet A, B, D). The decoder checks their
+// Typed # commands (docs/nc-language.md, "# commands"). The decoder checks their
 // syntax and arguments; their execution belongs to the kernel.
 // Lengths are in program units (mm or inch), angles in degrees.
 #include <array>
@@ -11,7 +11,7 @@
 
 namespace nck::nc {
 
-// --- couplings (facts B18) -------------------------------------------------
+// --- couplings (spindle_link seed, TF5200 #SET AX LINK) --------------------
 struct AxLinkPair {
   std::string slave, master;        // names, or logical axis numbers as text (NBR form)
   bool gantry = false;              // [slave=master, G, lim1, lim2]
@@ -29,7 +29,7 @@ struct EnableAxLink { std::optional<int> group; };
 // #DISABLE AX LINK [g]  /  #AX LINK OFF [g] [ALL]; no group = the group enabled last
 struct DisableAxLink { std::optional<int> group; bool all = false; };
 
-// --- spindles (facts B4, B12-B16) ------------------------------------------
+// --- spindles (FCT-S1 §2.2.3, §2.5, §2.8.5, §2.8.8) ------------------------
 // #MAIN SPINDLE [name | log_nr]; neither = back to the configured main spindle
 struct MainSpindle {
   std::optional<std::string> name;
@@ -53,7 +53,7 @@ struct ToolData {
   int count = 0;                          // fields written
 };
 
-// --- coordinate systems (facts A1-A6, A14, A16) -----------------------------
+// --- coordinate systems (FCT-C2 §2.2, §2.8.1, §2.10) -----------------------
 enum class CsOp : std::uint8_t { def, on, off, off_all, add, select, mode_on, mode_off };
 // #CS ... and #ACS ... (same grammar, acs = true)
 struct CoordSystem {
@@ -84,7 +84,7 @@ struct SuppressOffsets {
 };
 struct GetManualOffsets {};
 
-// --- 3D distance control (facts D) -----------------------------------------
+// --- 3D distance control (channel_params_distctrl seed) --------------------
 enum class DistCtrlOp : std::uint8_t { on, freeze, off, settings };
 struct DistCtrl {
   DistCtrlOp op = DistCtrlOp::on;

@@ -1,6 +1,6 @@
 #pragma once
 // One spindle's words in a block: DIN (main spindle: M3 S1000, M19 S.POS=..,
-// G74 S1, G167 S..) or spindle syntax (S1[M3 REV1000 ...], facts sheet B3).
+// G74 S1, G167 S..) or spindle syntax (S1[M3 REV1000 ...], docs/nc-language.md).
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -10,7 +10,7 @@ namespace nck::nc {
 
 enum class SpindleM : std::uint8_t { none = 0, m3 = 3, m4 = 4, m5 = 5, m19 = 19 };
 
-// FEED_LINK [ON|OFF] [[FACT=..] [CORR=..] | AUTO] [MAIN] SRC=..  (facts B3)
+// FEED_LINK [ON|OFF] [[FACT=..] [CORR=..] | AUTO] [MAIN] SRC=..  (TF5200 FEED_LINK)
 struct FeedLink {
   std::optional<bool> on;           // ON / OFF (absent: keep)
   std::optional<double> fact_pct;   // FACT= (programmed in 0.1 %, stored in %)

@@ -1,5 +1,5 @@
 #pragma once
-// External spindle commands (HLI ext_to_ipo, facts sheet E): the PLC hands
+// External spindle commands (TF5200 HLI ext_to_ipo; FCT-S1 §2.9): the PLC hands
 // the CNC spindle jobs past the NC program. They run in order of arrival
 // (per spindle), and the CNC acknowledges each one when it has completed it
 // (speed reached, standstill, in position).

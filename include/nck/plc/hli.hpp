@@ -1,7 +1,7 @@
 #pragma once
-// The HLI image: the data the CNC and the PLC exchange every cycle (facts
-// sheet E, seed FCT-S1 §2.4/§2.9). Plain fixed-size structs, no heap, so the
-// kernel can read and write them in the cyclic path.
+// The HLI image: the data the CNC and the PLC exchange every cycle (seed
+// FCT-S1 §2.4/§2.9; paths as the TF5200 HLI names them). Plain fixed-size
+// structs, no heap, so the kernel can read and write them in the cyclic path.
 //
 // Directions: *Status is written by the CNC and read by the PLC; *Control is
 // written by the PLC (or a --plc scenario) and read by the CNC.
@@ -19,7 +19,7 @@ inline constexpr std::size_t kMaxHliSpindles = 32;
 inline constexpr std::size_t kMaxHliChannels = config::kMaxChannels;
 inline constexpr std::int8_t kNoSpindle = -1;
 
-// Operating-state bits of ipo_state.spindle.mode_r (facts sheet E).
+// Operating-state bits of ipo_state.spindle.mode_r (TF5200 HLI).
 namespace spindle_mode {
 inline constexpr std::uint32_t M05 = 1;
 inline constexpr std::uint32_t M03 = 2;
@@ -72,7 +72,7 @@ struct ChannelControl {
   bool single_step = false;    // single step mode (held until switched off)
   bool manual_mode = false;    // mode selection: manual (jog, handwheel without G201) or automatic
   // decoder_mc_control.program_block_ignore: the active block-skip levels,
-  // /1 = 0x1 ... /10 = 0x200 (facts C4); blocks decoded from then on skip
+  // /1 = 0x1 ... /10 = 0x200 (docs/nc-language.md); blocks decoded from then on skip
   std::uint32_t skip_mask = 0;
 };
 

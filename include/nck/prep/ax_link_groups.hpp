@@ -1,8 +1,8 @@
 #pragma once
 // The coupling groups of one channel as preparation sees them (setup side):
 // definitions (#SET AX LINK / #AX LINK [NBR], group 0 from the channel list),
-// which groups are enabled, and the rules of facts B18 and the spindle-link
-// seed. Pure bookkeeping: no kernel, no time. The planner turns what it
+// which groups are enabled, and the rules of TF5200 #SET AX LINK and the
+// spindle_link seed. Pure bookkeeping: no kernel, no time. The planner turns what it
 // answers into kernel::LinkCommand and fans spindle functions out.
 #include <cstdint>
 #include <expected>

@@ -10,7 +10,7 @@ namespace nck::spindle {
 
 enum class SpindleMode : std::uint8_t { stop, rotate, position, homing, gear_change, axis, error };
 
-// "stop", "rotate", ... as the events file writes them (SPEC 2.3).
+// "stop", "rotate", ... as the events file writes them (`spindle` events' `mode`).
 std::string_view mode_name(SpindleMode m) noexcept;
 
 // Outcome of a command: id 0 = accepted; a warning id (SpindleSpeedLimited)

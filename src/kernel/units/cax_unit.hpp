@@ -1,5 +1,5 @@
 #pragma once
-// C-axis machining (#CAX, facts B12): the main spindle is a path axis of
+// C-axis machining (#CAX, FCT-S1 §2.8.8): the main spindle is a path axis of
 // the channel while C-axis mode is on. The path computes its set point like
 // any axis (through #FACE / #CYL in PathUnit::place); every cycle hands it
 // to the spindle, whose own interpolator then only follows (SpindleAxis

@@ -1,5 +1,6 @@
 #pragma once
-// 3D distance control (SPEC 3.7): #DIST CTRL commands switch the controller
+// 3D distance control (channel_params_distctrl seed; docs/nc-language.md):
+// #DIST CTRL commands switch the controller
 // at their block's start; every cycle it takes the sensor value (from
 // TickInput or a channel variable) and its offset is added to the tool
 // axis's machine set point (never to the path: the program's positions stay

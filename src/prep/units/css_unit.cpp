@@ -29,7 +29,7 @@ PlanResult CssUnit::plan(const nc::Block& b, PlannedCommand& c, const PlanContex
   c.css = {true, main.kernel, static_cast<std::int8_t>(x), m.css_m_min, m.max_speed_rpm, tool_mm};
   on_ = true;
   v_m_min_ = m.css_m_min;
-  // The start speed comes from where the face axis was last programmed (facts B11).
+  // The start speed comes from where the face axis was last programmed (TF5200 G96).
   const double r_mm = ctx.planned.mcs[ux] - tool_mm;
   if (new_speed && kernel::css_limited(m.css_m_min, r_mm, m.max_speed_rpm, vb_max_rpm))
     (void)c.warnings.push_back(

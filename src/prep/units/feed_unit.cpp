@@ -111,7 +111,7 @@ std::expected<PathSpeed, Diagnostic> FeedUnit::plan_feed(const nc::Block& b, con
     f.kind = FeedLinkKind::per_rev;
     f.mm_per_rev = m.feed_mm_rev;
     if (config::is_plc_spindle(ctx.machine, ctx.channel.spindles[main_.list_index])) {
-      // A PLC spindle: programmed values only (facts B10).
+      // A PLC spindle: programmed values only (TF5200 G95; docs/nc-language.md).
       const double rpm = main.speed_rpm.value_or(0);
       if (!(rpm > 0))
         return block_error(ErrorId::KernelFeedPerRevSpindleStopped, b, "G95 without a programmed spindle speed");

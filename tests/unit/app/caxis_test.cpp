@@ -1,5 +1,5 @@
 // C-axis machining end to end through the nck binary (#CAX, #FACE, #CYL;
-// facts B12-B14): machine positions X / Z / C in the trace against values
+// FCT-S1 §2.8.8): machine positions X / Z / C in the trace against values
 // computed by hand, the spindle's axis mode, and the errors with their IDs.
 #include <gtest/gtest.h>
 
@@ -279,7 +279,7 @@ N80 M30
 }
 
 TEST(CAxis, CylinderSeedExampleHalfCircleOnTheDevelopedSurface) {
-  // Facts B14's example: #CYL [Z, C, X60], G01 C100, G02 Z100 R50. From
+  // TF5200's #CYL example: #CYL [Z, C, X60], G01 C100, G02 Z100 R50. From
   // (Z0, C100 mm) the clockwise half circle about (Z50, C100) passes
   // C 150 mm = 2.5 rad = 143.2394 deg at Z50 and ends at Z100, C 95.4930 deg.
   const auto dir = temp_dir("cax_cyl_seed");

@@ -107,7 +107,7 @@ TEST(ParseCommand, OverlongLineIsADiagnosticNotACrash) {
 
 TEST(ParseCommand, MissingFileIsADiagnostic) {
   CliResult r = run_nck("parse /nonexistent/prog.nc");
-  EXPECT_EQ(r.exit_code, 2);  // bad usage (SPEC 2.2), not an error in a program
+  EXPECT_EQ(r.exit_code, 2);  // bad usage (README: exit 2), not an error in a program
   EXPECT_NE(r.output.find("prog.nc"), std::string::npos) << r.output;
 }
 

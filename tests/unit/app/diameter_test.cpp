@@ -1,4 +1,4 @@
-// G51/G52 diameter programming through `nck run` (facts C11, issue 11 item
+// G51/G52 diameter programming through `nck run` (docs/nc-language.md, issue 11 item
 // 5): the lathe's X (kenngr.achs_mode 0x40, diameter_prog_abs/rel 1) takes
 // diameters; the trace stays in radius, --final shows both.
 #include <gtest/gtest.h>

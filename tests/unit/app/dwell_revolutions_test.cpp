@@ -1,4 +1,4 @@
-// G4 S.. (facts C8): a dwell of main-spindle revolutions, counted from the
+// G4 S.. (docs/nc-language.md): a dwell of main-spindle revolutions, counted from the
 // spindle's set-point speed each cycle, through `nck run` on the mill.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// SPEC 2.3: `end` is each channel's last event, also when an error aborts
+// `end` is each channel's last event (docs/outputs.md), also when an error aborts
 // the program while its spindles are turning or fail (the spindle events
 // the abort causes come before `end`).
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-// Synchronous operation (issue 14; spindle-link seed, FCT-S1 2.8.3 and
-// 2.2.5.2, facts B18) through the nck binary: the seed's three programs on
+// Synchronous operation (issue 14; spindle_link seed, FCT-S1 2.8.3 and
+// 2.2.5.2) through the nck binary: the seed's three programs on
 // the twin-spindle machine, slaves following speed and M19, own overrides,
 // path-axis slaves every cycle, the rules as errors, links dissolved at
 // abort and program end, two channels sharing spindles.

@@ -1,5 +1,5 @@
 // Spindle-path functions end to end through `nck run` (FCT-S1 2.8.6, 2.8.7,
-// 2.8.9; facts B7-B11): the trace's numbers against values by hand.
+// 2.8.9; docs/nc-language.md): the trace's numbers against values by hand.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -88,7 +88,7 @@ TEST(SpindlePath, G95FollowsTheRampingSpindleEachCycle) {
   EXPECT_GT(ramping, 100u);  // the spindle ramped 400 -> 800 rpm while the path ran
 }
 
-// Facts B10: with a PLC main spindle (plc_control) G95 uses the programmed
+// TF5200 G95: with a PLC main spindle (plc_control) G95 uses the programmed
 // speed only: 500 rpm x 0.1 mm = 0.8333 mm/s while the spindle still ramps.
 TEST(SpindlePath, G95WithAPlcMainSpindleUsesTheProgrammedSpeed) {
   const auto m = patched_example("mill", "g95plc_machine", "channel1.lis",
@@ -290,7 +290,7 @@ TEST(SpindlePath, G63WithG95Is20635) {
   EXPECT_EQ(r.of("error")[0]["id"], 20635);
 }
 
-// Bad input ends the channel with the ID and the line (facts B7-B9).
+// Bad input ends the channel with the ID and the line (TF5200 G63, G331, G33).
 TEST(SpindlePath, IllegalCouplingsEndTheChannelWithTheirId) {
   struct Case {
     const char* machine;

@@ -190,7 +190,7 @@ TEST(SpindleRun, PreferredDirectionErrorStateIsVisibleAfterTheAbort) {
 }
 
 // Item 15, seed 2.9: --final lists the spindle's HLI objects, named after
-// the facts sheet's paths. 200 rpm = 1200 deg/s = 1200000 in 0.001 deg/s.
+// their TF5200 HLI paths. 200 rpm = 1200 deg/s = 1200000 in 0.001 deg/s.
 TEST(SpindleRun, FinalStateListsTheSeedsHliSpindleObjects) {
   const SpindleRunResult rot = run(mill(), "%h\nN10 S200 M3\nN20 G4 X0.5\nN30 M30\n");
   ASSERT_EQ(rot.exit_code, 0) << rot.output;

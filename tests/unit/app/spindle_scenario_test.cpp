@@ -314,7 +314,8 @@ TEST(SpindleScenario, ChannelPlcSpindleKnowsOnlySpeedAndSpindleM) {
   EXPECT_EQ(of_kind(bad.events, "error")[0]["id"], 930013);
 }
 
-// Facts sheet E: external jobs run in order of arrival; the order holds per
+// TF5200 HLI ext_to_ipo (docs/plc-scenario.md): external jobs run in order
+// of arrival; the order holds per
 // spindle, and a job to S1 does not wait until S2 has reached its speed.
 TEST(SpindleScenario, ExternalCommandsKeepTheirOrderPerSpindleEachAcknowledged) {
   const auto dir = temp_dir("ext");

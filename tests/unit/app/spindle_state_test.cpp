@@ -98,7 +98,7 @@ TEST(SpindleState, SChangesASpeedThePlcStarted) {
   EXPECT_EQ(rotations(r, "S1"), (std::vector<double>{500, 800}));
 }
 
-// Facts B4: #MAIN SPINDLE [<spindle_name> | <log_axis_nr>]. In the mill S2
+// TF5200 #MAIN SPINDLE [<spindle_name> | <log_axis_nr>]. In the mill S2
 // has log_achs_nr 5: it becomes S, the former main spindle S1 stays still.
 TEST(SpindleState, MainSpindleByLogicalAxisNumber) {
   SpindleRun r = run_programs(example("mill"), {"#MAIN SPINDLE [5]\nM3 S1000\nG4 X0.5\nM30\n"});

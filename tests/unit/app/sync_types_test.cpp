@@ -129,8 +129,8 @@ TEST(SyncTypes, NoSynchSpeedIsCommandedWithoutOutputAndCheckExplains) {
       << c.output;
 }
 
-// With gear change off, M40..M45 are free M functions (facts B6, FCT-S1
-// 2.8.2): m_synch[41] MVS_SVS with a 1 s acknowledgement holds the path.
+// With gear change off, M40..M45 are free M functions (FCT-S1 2.8.2 and
+// §3.2.1, P-CHAN-00052): m_synch[41] MVS_SVS with a 1 s acknowledgement holds the path.
 TEST(SyncTypes, FreeGearMFunctionFollowsItsMSynch) {
   const auto patched = patched_example("mill", "m41synch", "channel1.lis", "m_synch[41] MVS_SVS");
   const auto dir = patched.dir.parent_path();
@@ -218,7 +218,7 @@ TEST(SyncTypes, SixteenLateWaitsFit) {
 }  // namespace
 
 // FCT-S1 2.5.2, second example, as written (s_sync 0x2, m3_sync 0x1, no S
-// before N10): M3 selects the direction at 0 rpm (facts B1) and is no error;
+// before N10): M3 selects the direction at 0 rpm (TF5200 M03) and is no error;
 // N20's S500 turns the spindle in the M3 direction and the path waits for
 // the speed before N20's motion, N30 waits for 100 rpm before its motion.
 TEST(SyncTypes, SeedSecondExampleSpindleSynchronousWithThePath) {

@@ -1,4 +1,4 @@
-// #TOOL PREP [basic, sister, variant] is the T word's form (facts B16): the
+// #TOOL PREP [basic, sister, variant] is the T word's form (TF5200 #TOOL PREP): the
 // PLC gets a T output with the basic number, as for T5.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Every plausibility check of SPEC 3.1, provoked in a small machine folder:
+// Every plausibility check (docs/errors.md, 9100xx), provoked in a small machine folder:
 // asserts the ID, the file and the line of the offending key.
 #include <gtest/gtest.h>
 

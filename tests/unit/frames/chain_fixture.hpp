@@ -37,7 +37,7 @@ inline void expect_point(const AxisValues& got, const AxisValues& want, double t
   for (std::size_t j = 0; j < kAxes; ++j) EXPECT_NEAR(got[j], want[j], tol) << "axis " << j;
 }
 
-// Zero-offset table with G54 = X10 Y-5 (facts A10 example: versch 100000 = 10 mm).
+// Zero-offset table with G54 = X10 Y-5 (P-ZERO-00003 versch 100000 = 10 mm).
 inline ZeroOffsetTable zero_table() {
   ZeroOffsetTable t;
   t.groups[1].offset_mm[0] = 10.0;

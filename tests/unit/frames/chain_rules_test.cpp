@@ -23,7 +23,7 @@ TEST(G91Rule, NewZeroOffsetWaitsForTheAxisAbsolutePosition) {
 }
 
 TEST(G91Rule, G92DoesNotMoveUnderG91) {
-  // Facts A8: G92 X10, then G0 X0 G91 does not move X.
+  // TF5200 G92 (docs/coordinate-systems.md, G91 rule): G92 X10, then G0 X0 G91 does not move X.
   OffsetChain c = make_chain();
   ok(c.set_g92(0, 10, false));
   expect_point(c.to_mcs(pcs(0, 0, 0)).pos_mm, mcs(0, 0, 0).pos_mm);
@@ -192,7 +192,7 @@ TEST(CsStack, CsWithoutIdIsGoneAfterOff) {
 }
 
 TEST(CsStack, AddAndSelect) {
-  // Facts A2 example: #CS ADD [ICS][10,10,0,0,0,45], #CS ADD [WCS][15,20,0,0,0,0].
+  // TF5200 #CS ADD example: #CS ADD [ICS][10,10,0,0,0,45], #CS ADD [WCS][15,20,0,0,0,0].
   OffsetChain c = make_chain();
   ok(c.cs_add("ICS", CsValues{{10, 10, 0}, {0, 0, 45}}));
   ok(c.cs_add("WCS", CsValues{{15, 20, 0}, {}}));

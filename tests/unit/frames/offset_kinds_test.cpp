@@ -73,7 +73,7 @@ std::vector<Case> single_kinds() {
        [](OffsetChain& c) { ok(c.measure_apply(1, 0.5, 4.0, 5.0)); }, pcs(0, 0, 0), mcs(0, -0.5, 0)},
       {"manual offset X1.5 (no deferral)", [](OffsetChain& c) { ok(c.set_manual_offset(0, 1.5)); },
        pcs(0, 0, 0), mcs(1.5, 0, 0)},
-      {"clamp offset X10 (facts A15 example)",
+      {"clamp offset X10 (TF5200 [CLMP] example)",
        [](OffsetChain& c) {
          AxisValues v{};
          v[0] = 10;
@@ -107,13 +107,13 @@ std::vector<Case> single_kinds() {
        },
        pcs(0, 0, 0, 0), mcs(2, 0, 0, 0.5)},
       {"#TLC ON [15]", [](OffsetChain& c) { ok(c.tlc_on(15)); }, pcs(0, 0, 0), mcs(0, 0, 15)},
-      {"#CS ON [1][0,0,10,0,0,45] (facts A1 example)",
+      {"#CS ON [1][0,0,10,0,0,45] (TF5200 #CS example)",
        [](OffsetChain& c) { ok(c.cs_on(CsFamily::cs, 1, CsValues{{0, 0, 10}, {0, 0, 45}})); },
        pcs(10, 0, 0), mcs(10 * kS45, 10 * kS45, 10)},
-      {"#ACS ON [2][0,0,0,0,0,1.5] (facts A3 example)",
+      {"#ACS ON [2][0,0,0,0,0,1.5] (TF5200 #ACS example)",
        [](OffsetChain& c) { ok(c.cs_on(CsFamily::acs, 2, CsValues{{0, 0, 0}, {0, 0, 1.5}})); },
        pcs(100, 0, 0), mcs(99.965732497555726, 2.6176948307873153, 0)},
-      {"#ROTATION ON [ANGLE=30 CENTER1=10 CENTER2=5] (facts A6 example)",
+      {"#ROTATION ON [ANGLE=30 CENTER1=10 CENTER2=5] (TF5200 #ROTATION example)",
        [](OffsetChain& c) { ok(c.rotation_on(30, 10, 5)); }, pcs(20, 5, 7), mcs(18.660254037844386, 10, 7)},
       {"#ROTATION 90 in G18 turns Z towards X",
        [](OffsetChain& c) {

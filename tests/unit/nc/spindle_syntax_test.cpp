@@ -1,4 +1,4 @@
-// Spindle words: DIN syntax of the main spindle and S..[ ] (facts B1-B6, B17).
+// Spindle words: DIN syntax of the main spindle and S..[ ] (docs/nc-language.md, "Spindles").
 #include "nc_test_util.hpp"
 
 namespace nck::nc::test {

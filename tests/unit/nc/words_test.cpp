@@ -98,7 +98,7 @@ TEST(NcWords, RadiusWithCenterIs21024) {
 }
 
 TEST(NcWords, FeedBelongsToItsFeedMode) {
-  // Facts B10: G95 F1.5 then G94 X50 runs with the old G94 feed again.
+  // TF5200 G95 (docs/nc-language.md): G95 F1.5 then G94 X50 runs with the old G94 feed again.
   auto d = decode("G94 F500 X1\nG95 F1.5 X2\nG94 X50\nM30\n");
   ASSERT_EQ(d.blocks.size(), 4u) << dump(d);
   EXPECT_DOUBLE_EQ(d.blocks[1].modal.feed_mm_rev, 1.5);

@@ -1,4 +1,4 @@
-// The coupling-group rules on their own (facts B18, spindle-link seed):
+// The coupling-group rules on their own (TF5200 #SET AX LINK, spindle_link seed):
 // a channel X Y1 Z1 Y2 with spindles S1 (6, main), S2 (11), S3 (17).
 #include <gtest/gtest.h>
 

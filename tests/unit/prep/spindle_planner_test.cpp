@@ -1,5 +1,5 @@
-// SpindlePlanner: NC spindle words -> SpindleActions (SPEC 3.3, facts B1-B6,
-// FCT-S1 2.5.2 both examples, 2.8.2 both gear examples, 2.8.5 tool data).
+// SpindlePlanner: NC spindle words -> SpindleActions (FCT-S1 §2.3-§2.8,
+// docs/nc-language.md "Spindles", FCT-S1 2.5.2 both examples, 2.8.2 both gear examples, 2.8.5 tool data).
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -128,7 +128,7 @@ TEST(SpindlePlanner, RotateStoreStopAndModalSpeed) {
   EXPECT_EQ(a[0].rpm, 300);
 }
 
-// Facts B1: M3/M4 without a valid speed select the direction at 0 rpm.
+// TF5200 M03/M04: without a valid speed they select the direction at 0 rpm.
 TEST(SpindlePlanner, M3WithoutAnySpeedSelectsTheDirectionAtZeroRpm) {
   auto m = spindle_machine();
   auto p = planner(m);
@@ -363,9 +363,10 @@ TEST(SpindlePlanner, SeedGearExampleAutomatic) {
                 {"S750", SpindleM::none, 750, {}, {}, {}, 2},
                 {"S950", SpindleM::none, 950, {}, {}, 3, 3},    // M42 -> PLC
                 {"S1050", SpindleM::none, 1050, {}, {}, {}, 3},
-                // SPEC erratum: M42 covers 700..3500, S750 keeps M42 (seed: M41).
+                // FCT-S1 §2.8.2 prints M41 here; M42 covers 700..3500 and its own
+                // rule keeps a stage that covers S, so nck keeps M42 (docs/decisions.md).
                 {"S750", SpindleM::none, 750, {}, {}, {}, 3},
-                // Follows from the erratum: M42 cannot run 500, bottom-up search -> M40.
+                // Follows from keeping M42: it cannot run 500, bottom-up search -> M40.
                 {"S500", SpindleM::none, 500, {}, {}, 1, 1},
                 {"S350", SpindleM::none, 350, {}, {}, {}, 1},
                 {"S8000", SpindleM::none, 8000, {}, ErrorId::SpindleSpeedTooHigh, {}, 1},

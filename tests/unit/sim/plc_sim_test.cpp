@@ -104,7 +104,7 @@ TEST(PlcSim, GearChangeTakesGearTimeAndSetsStage) {
   EXPECT_FALSE(plc.gear_changing(1, 0));
   EXPECT_EQ(ack_cycle(plc, h, 1), 500);
   EXPECT_FALSE(plc.gear_changing(2, 0));
-  EXPECT_EQ(plc.gear_stage(2, 0), 3);  // M40 = stage 1, so M42 = stage 3 (SPEC 2.1)
+  EXPECT_EQ(plc.gear_stage(2, 0), 3);  // M40 = stage 1, so M42 = stage 3 (FCT-S1 §2.8.2)
   EXPECT_EQ(plc.gear_stage(99, 0), 0);  // out of range never crashes
 }
 

@@ -49,7 +49,7 @@ TEST(AccelCurveFit, HyperbolaGivesTheSeedCoefficients) {
   auto c = fit_hyperbola(kNGrenz, kAKonst, pts);
   ASSERT_TRUE(c.has_value()) << c.error();
   EXPECT_NEAR(c->b2, 0.4166666, 1e-7);
-  EXPECT_NEAR(c->b3, 0.02857142, 1e-8);  // SPEC erratum: positive, not -2.857142E-2
+  EXPECT_NEAR(c->b3, 0.02857142, 1e-8);  // FCT-S1 §2.8.4.1's result; its list example prints -2.857142E-2
   EXPECT_NEAR(c->b1, 22857.14, 0.01);
 }
 

@@ -55,9 +55,11 @@ TEST(GearSelect, AutomaticExample) {
           {"S750", {}, 750, {}, 2, false},         // M41 kept
           {"S950", {}, 950, {}, 3, true},          // M42 -> PLC
           {"S1050", {}, 1050, {}, 3, false},       // M42 kept
-          // SPEC erratum: M42 covers 700..3500, so S750 keeps M42 (seed: M41).
+          // FCT-S1 §2.8.2 prints M41 here, against its own rule that a stage
+          // covering S is kept: M42 covers 700..3500, so nck keeps M42
+          // (docs/decisions.md, Spindles).
           {"S750", {}, 750, {}, 3, false},
-          // Consequence of the erratum: M42 cannot run 500, the bottom-up
+          // Follows from keeping M42: it cannot run 500, the bottom-up
           // search takes M40 (50..560) (seed: "M41 kept", from its own chain).
           {"S500", {}, 500, {}, 1, true},
           {"S350", {}, 350, {}, 1, false},
@@ -76,8 +78,8 @@ TEST(GearSelect, ManualExample) {
           {"M42 S1050", 3, 1050, {}, 3, false},
           {"M41 S750", 2, 750, {}, 2, true},
           {"M41 S500", 2, 500, {}, 2, false},
-          // Seed says OK, but M41 runs 400..800: with the SPEC rule "a manual
-          // stage that does not cover S is an error" S350 is rejected like S200.
+          // Seed says OK, but M41 runs 400..800: by the seed's own rule (FCT-S1
+          // §2.8.2: a manual stage must cover S) S350 is rejected like S200.
           {"M41 S350", 2, 350, ErrorId::SpindleGearStageWrong, 0, false},
           {"M41 S200", 2, 200, ErrorId::SpindleGearStageWrong, 0, false},
           {"S950", {}, 950, ErrorId::SpindleGearStageRequired, 0, false},

@@ -1,5 +1,5 @@
 #pragma once
-// C-axis machining in block preparation (facts B12-B14): #CAX / #CAX OFF,
+// C-axis machining in block preparation (FCT-S1 §2.8.8): #CAX / #CAX OFF,
 // #FACE / #FACE OFF, #CYL / #CYL OFF, the rules around them, and the path
 // limits of a transformed motion. The math is in motion/cax_transform.
 // Under a transformation the planned position (PlanContext::planned) holds

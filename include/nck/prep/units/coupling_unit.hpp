@@ -1,6 +1,6 @@
 #pragma once
-// Synchronous operation in preparation (facts B18, spindle-link seed,
-// FCT-S1 2.8.3): #SET AX LINK / #ENABLE AX LINK / #DISABLE AX LINK become
+// Synchronous operation in preparation (spindle_link seed, FCT-S1 2.8.3,
+// TF5200 #SET AX LINK): #SET AX LINK / #ENABLE AX LINK / #DISABLE AX LINK become
 // kernel::LinkCommand; while a spindle group is enabled, the master's speed,
 // M3/M4/M5 and M19 are commanded to its slaves in the same block; path-axis
 // slaves follow their master (the kernel moves them every cycle; the planned

@@ -1,5 +1,5 @@
 #pragma once
-// G96 constant cutting speed in preparation (FCT-S1 2.8.9, facts B11): the
+// G96 constant cutting speed in preparation (FCT-S1 2.8.9, TF5200 G96): the
 // coupling of the main spindle's speed to the face axis's radius
 // (kernel::CssLink, evaluated by the channel each cycle), and the warning
 // when the start speed is limited.

@@ -1,5 +1,5 @@
 #pragma once
-// G51/G52 diameter programming (facts C11): under G51 the positions of the
+// G51/G52 diameter programming (docs/nc-language.md): under G51 the positions of the
 // face-turning axes (kenngr.achs_mode 0x40) are diameters about the turning
 // centre — G90 words when the axis sets kenngr.durchm_prog_abs, G91 words
 // when it sets diameter_prog_rel. Only the programmed words are halved: the

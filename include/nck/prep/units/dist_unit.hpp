@@ -1,5 +1,5 @@
 #pragma once
-// #DIST CTRL in preparation: the decoded switch (facts D2) becomes the
+// #DIST CTRL in preparation: the decoded switch (docs/nc-language.md) becomes the
 // fixed-size distctrl::Switch the channel executes, with the overrides
 // checked against the ranges of their channel parameters (P-CHAN-00800..00827).
 #include <cstdint>

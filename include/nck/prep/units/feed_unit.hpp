@@ -1,6 +1,6 @@
 #pragma once
-// Feed and the spindle-path feed links (FCT-S1 2.8.6, 2.8.7, 2.8.9; facts
-// B7-B10): G94 mm/min, G93 block time, G194 share of the maximum, G95
+// Feed and the spindle-path feed links (FCT-S1 2.8.6, 2.8.7, 2.8.9; TF5200
+// G93-G95, G194): G94 mm/min, G93 block time, G194 share of the maximum, G95
 // mm/rev, G33 thread cutting (and its chain), G63 and G331/G332 tapping.
 // Preparation only describes the coupling (kernel::FeedLink); the channel
 // evaluates it each cycle.
