@@ -13,12 +13,11 @@
 
 namespace nck::app {
 
-// ordered: "t", "ch", "ev" first in every event line
 using json = nlohmann::ordered_json;
 
-nlohmann::ordered_json RunNames::spindle(std::int8_t index) const {
-  if (index < 0 || !run || static_cast<std::size_t>(index) >= run->kernel().spindle_count()) return nullptr;
-  return run->kernel().spindle_name(static_cast<std::size_t>(index));
+nlohmann::ordered_json RunNames::spindle(std::optional<std::int8_t> index) const {
+  if (!index || *index < 0 || !run || static_cast<std::size_t>(*index) >= run->kernel().spindle_count()) return nullptr;
+  return run->kernel().spindle_name(static_cast<std::size_t>(*index));
 }
 
 std::string dump_json(const nlohmann::ordered_json& j, int indent) {
@@ -60,9 +59,9 @@ std::string json_quoted(std::string_view text) {
   return out;
 }
 
-std::string RunNames::text(const kernel::Event& e) const {
-  if (e.message_index != kernel::kNoMessage && run) return to_utf8(run->message(e.message_index));
-  const ErrorInfo* info = find_error(e.id);
+std::string RunNames::text(ErrorId id, std::optional<std::uint32_t> message) const {
+  if (message && run) return to_utf8(run->message(*message));
+  const ErrorInfo* info = find_error(id);
   return info ? fmt::format("{}: {}", info->text, info->remedy) : std::string();
 }
 
@@ -71,123 +70,11 @@ std::string RunNames::file(std::size_t ch, std::uint16_t id) const {
   return d ? to_utf8(d->file_name(id)) : std::string();
 }
 
-std::string sync_name(std::uint32_t bits) {
-  namespace s = config::sync;
-  static constexpr std::pair<std::uint32_t, const char*> kNames[] = {
-      {s::MOS, "MOS"},         {s::MVS_SVS, "MVS_SVS"}, {s::MVS_SNS, "MVS_SNS"},
-      {s::MNS_SNS, "MNS_SNS"}, {s::MNE_SNS, "MNE_SNS"}, {s::MVS_SLM, "MVS_SLM"},
-      {s::MVS_SLP, "MVS_SLP"}, {s::PLC_INFO, "PLC_INFO"}};
-  std::string out;
-  for (auto [bit, name] : kNames) {
-    if (!(bits & bit)) continue;
-    if (!out.empty()) out += '|';
-    out += name;
-  }
-  return out.empty() ? "NO_SYNCH" : out;
-}
-
-namespace {
-
-const char* kind_name(kernel::EventKind k) {
-  using K = kernel::EventKind;
-  switch (k) {
-    case K::block: return "block";
-    case K::plc_out: return "plc_out";
-    case K::plc_ack: return "plc_ack";
-    case K::wait: return "wait";
-    case K::wait_end: return "wait_end";
-    case K::spindle: return "spindle";
-    case K::speed_reached: return "speed_reached";
-    case K::gear: return "gear";
-    case K::link: return "link";
-    case K::offset: return "offset";
-    case K::stop: return "stop";
-    case K::warning: return "warning";
-    case K::error: return "error";
-    case K::end: return "end";
-    case K::dist_ctrl: return "dist_ctrl";
-    case K::trc: return "trc";
-    case K::state: return "state";
-  }
-  return "unknown";
-}
-
-}  // namespace
-
 std::optional<kernel::EventKind> event_kind_from(std::string_view name) {
-  for (int k = 0; k <= static_cast<int>(kernel::EventKind::state); ++k)
-    if (name == kind_name(static_cast<kernel::EventKind>(k))) return static_cast<kernel::EventKind>(k);
+  for (std::size_t k = 0; k < std::variant_size_v<kernel::EventPayload>; ++k)
+    if (name == kernel::event_name(static_cast<kernel::EventKind>(k))) return static_cast<kernel::EventKind>(k);
   return std::nullopt;
 }
-
-const char* wait_reason_name(kernel::WaitReason r) {
-  using W = kernel::WaitReason;
-  switch (r) {
-    case W::plc_ack: return "plc_ack";
-    case W::speed_reached: return "speed_reached";
-    case W::in_position: return "in_position";
-    case W::standstill: return "standstill";
-    case W::homing: return "homing";
-    case W::gear_change: return "gear_change";
-    case W::expl_syn: return "expl_syn";
-    case W::dwell: return "dwell";
-    case W::feedhold: return "feedhold";
-    case W::coupling: return "coupling";
-  }
-  return "plc_ack";
-}
-
-const char* link_reason_name(kernel::LinkReason r) {
-  using R = kernel::LinkReason;
-  switch (r) {
-    case R::program: return "program";
-    case R::abort: return "abort";
-    case R::program_end: return "program_end";
-    case R::reset: return "reset";
-  }
-  return "program";
-}
-
-const char* end_name(kernel::EndReason r) {
-  using R = kernel::EndReason;
-  switch (r) {
-    case R::m30: return "M30";
-    case R::m2: return "M2";
-    case R::error: return "error";
-    case R::reset: return "reset";
-    case R::max_time: return "max_time";
-    case R::max_wall: return "max_wall";
-    case R::interrupted: return "interrupted";
-    case R::hold: return "hold";
-    case R::stop_at: return "stop_at";
-    case R::max_trace: return "max_trace";
-  }
-  return "error";
-}
-
-namespace {
-
-std::string function_name(plc::TechKind fn, std::int32_t number) {
-  using F = plc::TechKind;
-  switch (fn) {
-    case F::m: return fmt::format("M{}", number);
-    case F::h: return fmt::format("H{}", number);
-    case F::t: return fmt::format("T{}", number);
-    case F::s: return "S";
-    case F::none: break;
-  }
-  return "";
-}
-
-json base_event(const kernel::Event& e) {
-  json j;
-  j["t"] = e.t_s;
-  if (e.channel > 0) j["ch"] = e.channel;
-  j["ev"] = kind_name(e.kind);
-  return j;
-}
-
-}  // namespace
 
 void EventWriter::write_line(const std::string& line) {
   file_.write(line);
@@ -216,112 +103,24 @@ const std::string& BlockEventText::line(const kernel::Event& e, const RunNames& 
     s.append(num, std::to_chars(num, num + sizeof num, unsigned{e.channel}).ptr);
   }
   s += ",\"ev\":\"block\",\"line\":";
-  s.append(num, std::to_chars(num, num + sizeof num, e.line).ptr);
+  s.append(num, std::to_chars(num, num + sizeof num, e.at.line).ptr);
   s += ",\"n\":";
-  if (e.has_n) s.append(num, std::to_chars(num, num + sizeof num, e.n).ptr);
+  if (e.at.n) s.append(num, std::to_chars(num, num + sizeof num, *e.at.n).ptr);
   else s += "null";
   s += ",\"file\":";
-  s += quoted_file(e.channel > 0 ? e.channel - 1u : 0u, e.file_id, names);
+  s += quoted_file(e.channel_index(), e.at.file_id, names);
   s += '}';
   return s;
 }
 
+// The head's fields ("t", "ch", "ev" first, as docs/outputs.md lists them),
+// then the payload's, by the writer beside its type.
 nlohmann::ordered_json EventWriter::object(const kernel::Event& e, const RunNames& names) {
-  json j = base_event(e);
-  const std::size_t ch = e.channel > 0 ? e.channel - 1u : 0u;
-  using K = kernel::EventKind;
-  switch (e.kind) {
-    case K::block:
-    case K::stop:
-      j["line"] = e.line;
-      j["n"] = e.has_n ? json(e.n) : json(nullptr);
-      j["file"] = names.file(ch, e.file_id);
-      break;
-    case K::plc_out:
-    case K::plc_ack:
-      j["fn"] = function_name(e.fn, e.fn_number);
-      j["spindle"] = names.spindle(e.spindle);
-      j["value"] = e.fn == plc::TechKind::s ? json(e.value) : json(nullptr);
-      if (e.kind == K::plc_out) j["sync"] = sync_name(e.sync);
-      break;
-    case K::wait:
-    case K::wait_end:
-      j["reason"] = wait_reason_name(e.wait_reason);
-      j["spindle"] = names.spindle(e.spindle);
-      j["fn"] = function_name(e.fn, e.fn_number);
-      j["line"] = e.line;
-      break;
-    case K::spindle:
-      j["spindle"] = names.spindle(e.spindle);
-      j["mode"] = spindle::mode_name(e.spindle_mode);
-      j["rpm"] = e.value;
-      j["gear"] = e.gear;
-      break;
-    case K::speed_reached:
-      j["spindle"] = names.spindle(e.spindle);
-      j["rpm"] = e.value;
-      break;
-    case K::gear:
-      j["spindle"] = names.spindle(e.spindle);
-      j["stage"] = e.gear;
-      j["fn"] = function_name(e.fn, e.fn_number);
-      break;
-    case K::warning:
-    case K::error:
-      j["id"] = number(e.id);
-      j["line"] = e.line;
-      j["file"] = names.file(ch, e.file_id);
-      j["msg"] = names.text(e);
-      if (e.spindle >= 0) j["spindle"] = names.spindle(e.spindle);
-      break;
-    case K::end:
-      j["reason"] = end_name(e.end_reason);
-      break;
-    case K::state:
-      j["from"] = kernel::state_name(e.state_from);
-      j["to"] = kernel::state_name(e.state_to);
-      j["reason"] = kernel::state_reason_name(e.state_reason);
-      j["line"] = e.line;
-      j["n"] = e.has_n ? json(e.n) : json(nullptr);
-      j["file"] = names.file(ch, e.file_id);
-      break;
-    case K::link: {
-      const prep::LinkPayload& p = names.run->link(e.message_index);
-      j["group"] = e.link_group;
-      json pairs = json::array();
-      for (const auto& [slave, master] : p.pairs) pairs.push_back(json::array({slave, master}));
-      j["pairs"] = pairs;
-      j["on"] = e.link_on;
-      j["reason"] = link_reason_name(e.link_reason);
-      j["line"] = e.line;
-      break;
-    }
-    case K::dist_ctrl:
-      j["state"] = distctrl::state_name(e.dist_state);
-      j["line"] = e.line;
-      break;
-    case K::trc: {
-      j["state"] = e.trc_mode == nc::RadiusComp::g41   ? "G41"
-                   : e.trc_mode == nc::RadiusComp::g42 ? "G42"
-                                                       : "G40";
-      j["d"] = e.trc_d;
-      j["radius_mm"] = e.trc_radius_mm;
-      j["line"] = e.line;
-      j["file"] = names.file(ch, e.file_id);
-      break;
-    }
-    case K::offset: {
-      const prep::OffsetPayload& p = names.run->offset(e.message_index);
-      j["kind"] = p.kind;
-      json values = json::object();
-      for (const auto& [axis, v] : p.values) values[axis] = v;
-      j["values"] = values;
-      j["line"] = e.line;
-      break;
-    }
-    default:
-      break;
-  }
+  json j;
+  j["t"] = e.t_s;
+  if (e.channel > 0) j["ch"] = e.channel;
+  j["ev"] = kernel::event_name(e.kind());
+  std::visit([&](const auto& payload) { write_json(j, payload, e, names); }, e.payload);
   return j;
 }
 

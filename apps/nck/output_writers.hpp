@@ -12,31 +12,33 @@
 #include "nck/config/machine.hpp"
 #include "nck/kernel/kernel.hpp"
 #include "nck/nc/decoder.hpp"
+#include "nck/plc/function_text.hpp"
 #include "nck/sim/dry_run.hpp"
 #include "output_file.hpp"
 #include "trace_columns.hpp"
 
 namespace nck::app {
 
-// Names a decoded file id / event text for output.
+// What the events' JSON writers look up outside the real-time path: file
+// names, spindle names, message texts, and the plan store's link and offset
+// payloads (the writers beside each payload, nck/kernel/event.hpp).
 struct RunNames {
   const sim::DryRun* run = nullptr;
   std::string file(std::size_t ch, std::uint16_t id) const;
   // A spindle's designation, or null.
-  nlohmann::ordered_json spindle(std::int8_t index) const;
-  // An event's message: its own text, or the ID's text from the table.
-  std::string text(const kernel::Event& e) const;
+  nlohmann::ordered_json spindle(std::optional<std::int8_t> index) const;
+  // A diagnostic's message: its own text (Kernel::message), or the ID's text from the table.
+  std::string text(ErrorId id, std::optional<std::uint32_t> message) const;
+  const prep::LinkPayload& link(std::uint32_t index) const { return run->link(index); }
+  const prep::OffsetPayload& offset(std::uint32_t index) const { return run->offset(index); }
 };
 
-
-std::string sync_name(std::uint32_t sync_bits);
-// "M30", "error", "interrupted" ...: the `end` event's reason.
-const char* end_name(kernel::EndReason r);
+using kernel::end_name;
+using kernel::link_reason_name;
+using kernel::wait_reason_name;
+using plc::sync_name;
 // The event kind with this "ev" name (block, wait, plc_out ...), if any.
 std::optional<kernel::EventKind> event_kind_from(std::string_view name);
-const char* link_reason_name(kernel::LinkReason r);
-// "plc_ack", "speed_reached" ...: the `wait` event's reason.
-const char* wait_reason_name(kernel::WaitReason r);
 
 // JSON text that never throws (invalid UTF-8 is replaced, not an abort).
 std::string dump_json(const nlohmann::ordered_json& j, int indent = -1);

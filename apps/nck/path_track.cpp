@@ -47,7 +47,7 @@ void PathTrack::start(const config::Machine& m) {
 
 void PathTrack::take(const kernel::TickOutput& out) {
   for (const kernel::Event& e : out.events)
-    if (e.channel == 1 && e.kind == kernel::EventKind::block) line_ = e.line;
+    if (e.channel == 1 && e.kind() == kernel::EventKind::block) line_ = e.at.line;
   std::array<double, 3> p{};
   for (int a = 0; a < 3; ++a)
     if (axis_[a] >= 0) p[a] = out.channels[0].axis_mcs[static_cast<std::size_t>(axis_[a])];

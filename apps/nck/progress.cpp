@@ -35,12 +35,12 @@ void Progress::take(const kernel::TickOutput& o) {
   if (!enabled_) return;
   for (const kernel::Event& e : o.events) {
     // file 0 is the channel's main program; a subroutine keeps its caller's place.
-    if (e.kind != kernel::EventKind::block || e.file_id != 0 || e.channel == 0) continue;
+    if (e.kind() != kernel::EventKind::block || e.at.file_id != 0 || e.channel == 0) continue;
     if (e.channel > channels_.size()) continue;
     Channel& c = channels_[e.channel - 1u];
-    c.line = e.line;
-    c.has_n = e.has_n;
-    c.n = e.n;
+    c.line = e.at.line;
+    c.has_n = e.at.n.has_value();
+    c.n = e.at.n.value_or(0);
   }
 }
 

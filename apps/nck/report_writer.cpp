@@ -19,17 +19,6 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-std::string function_text(const kernel::Event& e) {
-  using F = plc::TechKind;
-  switch (e.fn) {
-    case F::m: return fmt::format("M{}", e.fn_number);
-    case F::h: return fmt::format("H{}", e.fn_number);
-    case F::t: return fmt::format("T{}", e.fn_number);
-    case F::s: return "S";
-    case F::none: break;
-  }
-  return "";
-}
 
 // The G words of one NC line that the backplot needs: motion G0..G3 and
 // plane G17..G19 (comments in parentheses and after ';' skipped). The
@@ -196,68 +185,65 @@ const std::string& ReportWriter::line_text(std::uint16_t file, std::uint32_t lin
 }
 
 void ReportWriter::take(const kernel::Event& e, const RunNames& names) {
-  using K = kernel::EventKind;
-  if (e.channel == 0 || e.channel > channels_.size()) {
-    return;
-  }
+  if (e.channel == 0 || e.channel > channels_.size()) return;
   const std::size_t c = e.channel - 1u;
   Channel& ch = channels_[c];
-  auto spindle_name = [&](std::int8_t s) {
+  auto spindle_name = [&](std::optional<std::int8_t> s) {
     const json j = names.spindle(s);
     return j.is_string() ? j.get<std::string>() : std::string();
   };
-  switch (e.kind) {
-    case K::block: {
-      ch.file = file_of(ch, c, e.file_id, names);
-      ch.line = e.line;
-      if (e.message_index != kernel::kNoMessage) take_frame(ch, e.message_index, names);
-      scan_g_words(line_text(ch.file, ch.line), ch.motion, ch.plane);
-      const BlockKey key{c, ch.file, ch.line};
-      const auto [it, added] = block_index_->try_emplace(packed(key), blocks_.size());
-      if (added) blocks_.emplace_back(key, Accum{});
-      ch.block = &blocks_[it->second].second;
-      ++ch.block->count;
-      block_lines_ += added;
-      if (blocks_.size() > kMaxBlockLines) drop_shortest_blocks();
-      break;
-    }
-    case K::plc_out: {
-      const std::string fn = function_text(e);
-      ch.last_sync[fn] = e.sync;
-      if (e.fn == plc::TechKind::t) {
-        ch.tool = fn;
-        ch.tool_acc = &tools_[{c, ch.tool}];
-        ++ch.tool_acc->count;
-      }
-      break;
-    }
-    case K::wait: {
-      Wait w{c + 1, e.t_s, -1, wait_reason_name(e.wait_reason), function_text(e),
-             spindle_name(e.spindle), "", e.line ? e.line : ch.line, ch.file};
-      if (auto it = ch.last_sync.find(w.fn); it != ch.last_sync.end() && !w.fn.empty()) w.sync = sync_name(it->second);
-      if (waits_.size() >= kMaxListed) break;
-      ch.open_waits.push_back(waits_.size());
-      waits_.push_back(std::move(w));
-      break;
-    }
-    case K::spindle:
-      if (e.spindle_mode == spindle::SpindleMode::axis) c_axis_used_ = true;
-      break;
-    case K::wait_end: {  // ends the wait for the same spindle, function and reason
-      const std::string reason = wait_reason_name(e.wait_reason);
-      const std::string fn = function_text(e), spindle = spindle_name(e.spindle);
-      const auto it = std::find_if(ch.open_waits.begin(), ch.open_waits.end(), [&](std::size_t i) {
-        const Wait& w = waits_[i];
-        return w.reason == reason && w.fn == fn && w.spindle == spindle;
-      });
-      if (it == ch.open_waits.end()) break;
-      waits_[*it].t1 = e.t_s;
-      ch.open_waits.erase(it);
-      break;
-    }
-    default:
-      break;
+  if (e.get<kernel::ev::Block>()) take_block(ch, c, e, names);
+  else if (const auto* out = e.get<kernel::ev::PlcOut>()) take_output(ch, c, *out);
+  else if (const auto* w = e.get<kernel::ev::Wait>()) take_wait(ch, c, e, *w, spindle_name(w->spindle));
+  else if (const auto* end = e.get<kernel::ev::WaitEnd>()) end_wait(ch, e.t_s, *end, spindle_name(end->spindle));
+  else if (const auto* s = e.get<spindle::ModeEvent>(); s && s->mode == spindle::SpindleMode::axis) c_axis_used_ = true;
+}
+
+void ReportWriter::take_block(Channel& ch, std::size_t c, const kernel::Event& e, const RunNames& names) {
+  ch.file = file_of(ch, c, e.at.file_id, names);
+  ch.line = e.at.line;
+  if (const auto frame = e.get<kernel::ev::Block>()->frame_index) take_frame(ch, *frame, names);
+  scan_g_words(line_text(ch.file, ch.line), ch.motion, ch.plane);
+  const BlockKey key{c, ch.file, ch.line};
+  const auto [it, added] = block_index_->try_emplace(packed(key), blocks_.size());
+  if (added) blocks_.emplace_back(key, Accum{});
+  ch.block = &blocks_[it->second].second;
+  ++ch.block->count;
+  block_lines_ += added;
+  if (blocks_.size() > kMaxBlockLines) drop_shortest_blocks();
+}
+
+void ReportWriter::take_output(Channel& ch, std::size_t c, const kernel::ev::PlcOut& out) {
+  const std::string fn = plc::function_name(out.fn, out.number);
+  ch.last_sync[fn] = out.sync;
+  if (out.fn == plc::TechKind::t) {
+    ch.tool = fn;
+    ch.tool_acc = &tools_[{c, ch.tool}];
+    ++ch.tool_acc->count;
   }
+}
+
+void ReportWriter::take_wait(Channel& ch, std::size_t c, const kernel::Event& e, const kernel::ev::Wait& wait,
+                             const std::string& spindle) {
+  Wait w{c + 1, e.t_s, -1, wait_reason_name(wait.reason), plc::function_name(wait.fn, wait.number),
+         spindle, "", e.at.line ? e.at.line : ch.line, ch.file};
+  if (auto it = ch.last_sync.find(w.fn); it != ch.last_sync.end() && !w.fn.empty()) w.sync = sync_name(it->second);
+  if (waits_.size() >= kMaxListed) return;
+  ch.open_waits.push_back(waits_.size());
+  waits_.push_back(std::move(w));
+}
+
+// Ends the wait for the same spindle, function and reason.
+void ReportWriter::end_wait(Channel& ch, double t_s, const kernel::ev::Wait& wait, const std::string& spindle) {
+  const std::string reason = wait_reason_name(wait.reason);
+  const std::string fn = plc::function_name(wait.fn, wait.number);
+  const auto it = std::find_if(ch.open_waits.begin(), ch.open_waits.end(), [&](std::size_t i) {
+    const Wait& w = waits_[i];
+    return w.reason == reason && w.fn == fn && w.spindle == spindle;
+  });
+  if (it == ch.open_waits.end()) return;
+  waits_[*it].t1 = t_s;
+  ch.open_waits.erase(it);
 }
 
 // Keeps the half of the lines with the most time (and the lines the
@@ -314,16 +300,22 @@ void ReportWriter::sample(std::uint64_t cycle, const kernel::TickOutput& out, co
   if (!enabled_) return;
   for (const kernel::Event& e : out.events) {
     take(e, names);
-    using K = kernel::EventKind;
-    const auto s = static_cast<std::size_t>(e.spindle);
-    if (e.spindle < 0 || s >= spindles_.size()) continue;
-    if (e.kind == K::gear) add_mark({e.t_s, s, 0, "gear", fmt::format("{} gear stage {}", function_text(e), e.gear)});
-    if (e.kind == K::speed_reached) add_mark({e.t_s, s, 0, "speed_reached", fmt::format("speed reached {:g} rpm", e.value)});
-    if (e.kind == K::plc_out && e.fn == plc::TechKind::s)
-      add_mark({e.t_s, s, 0, "s", fmt::format("S {:g} rpm programmed", e.value)});
+    mark_spindle(e);
   }
   watch_plc(out.t_s, names);
   record(cycle, out);
+}
+
+// A spindle's gear change, speed reached and programmed S as marks on its plot.
+void ReportWriter::mark_spindle(const kernel::Event& e) {
+  auto index = [&](std::int8_t s) { return s >= 0 && static_cast<std::size_t>(s) < spindles_.size(); };
+  if (const auto* g = e.get<spindle::GearEvent>(); g && index(g->spindle))
+    add_mark({e.t_s, static_cast<std::size_t>(g->spindle), 0, "gear", fmt::format("M{} gear stage {}", g->m, g->stage)});
+  else if (const auto* r = e.get<spindle::SpeedReachedEvent>(); r && index(r->spindle))
+    add_mark({e.t_s, static_cast<std::size_t>(r->spindle), 0, "speed_reached",
+              fmt::format("speed reached {:g} rpm", r->act_rpm)});
+  else if (const auto* o = e.get<kernel::ev::PlcOut>(); o && o->fn == plc::TechKind::s && o->spindle && index(*o->spindle))
+    add_mark({e.t_s, static_cast<std::size_t>(*o->spindle), 0, "s", fmt::format("S {:g} rpm programmed", o->s_rpm)});
 }
 
 void ReportWriter::record(std::uint64_t cycle, const kernel::TickOutput& out) {

@@ -122,6 +122,12 @@ class ReportWriter {
   std::uint16_t file_of(Channel& ch, std::size_t c, std::uint16_t id, const RunNames& names);
   const std::string& line_text(std::uint16_t file, std::uint32_t line) const;
   void take(const kernel::Event& e, const RunNames& names);
+  void take_block(Channel& ch, std::size_t c, const kernel::Event& e, const RunNames& names);
+  void take_output(Channel& ch, std::size_t c, const kernel::ev::PlcOut& out);
+  void take_wait(Channel& ch, std::size_t c, const kernel::Event& e, const kernel::ev::Wait& wait,
+                 const std::string& spindle);
+  void end_wait(Channel& ch, double t_s, const kernel::ev::Wait& wait, const std::string& spindle);
+  void mark_spindle(const kernel::Event& e);
   void take_frame(Channel& ch, std::uint32_t store_index, const RunNames& names);
   void watch_plc(double t_s, const RunNames& names);  // overrides and feedholds from the HLI
   std::string limits_json(const Channel& ch) const;

@@ -15,29 +15,31 @@ std::string clock_time(double s) {
 
 void RunSummary::take(const kernel::Event& e) {
   using K = kernel::EventKind;
-  switch (e.kind) {
+  switch (e.kind()) {
     case K::block: ++blocks_; break;
     case K::error: ++errors_; break;
     case K::warning: ++warnings_; break;
     case K::end:
-      if (e.end_reason == kernel::EndReason::reset) ++resets_, ++errors_;
+      if (e.get<kernel::ev::End>()->reason == kernel::EndReason::reset) ++resets_, ++errors_;
       break;
-    case K::wait:
+    case K::wait: {
       // A channel waiting for two spindles at once waits once: the time
       // counts from the first of them (the one open before this, if any).
-      open_.push_back({e.channel, e.spindle, e.fn, e.fn_number, e.wait_reason,
-                       first_open(e.channel, e.wait_reason).value_or(e.t_s)});
+      const kernel::ev::Wait& w = *e.get<kernel::ev::Wait>();
+      open_.push_back({e.channel, w, first_open(e.channel, w.reason).value_or(e.t_s)});
       break;
+    }
     case K::wait_end: {
+      const kernel::ev::Wait& end = *e.get<kernel::ev::WaitEnd>();
       auto it = std::find_if(open_.begin(), open_.end(), [&](const OpenWait& w) {
-        return w.channel == e.channel && w.spindle == e.spindle && w.fn == e.fn && w.fn_number == e.fn_number &&
-               w.reason == e.wait_reason;
+        return w.channel == e.channel && w.wait.spindle == end.spindle && w.wait.fn == end.fn &&
+               w.wait.number == end.number && w.wait.reason == end.reason;
       });
       if (it == open_.end()) break;
       const OpenWait ended = *it;
       open_.erase(it);
-      const auto r = static_cast<std::size_t>(ended.reason);
-      if (!first_open(ended.channel, ended.reason) && r < waited_s_.size())
+      const auto r = static_cast<std::size_t>(ended.wait.reason);
+      if (!first_open(ended.channel, ended.wait.reason) && r < waited_s_.size())
         waited_s_[r] += e.t_s - ended.since_s;  // the last of them
       break;
     }
@@ -47,7 +49,7 @@ void RunSummary::take(const kernel::Event& e) {
 
 std::optional<double> RunSummary::first_open(std::uint8_t channel, kernel::WaitReason reason) const {
   for (const OpenWait& w : open_)
-    if (w.channel == channel && w.reason == reason) return w.since_s;
+    if (w.channel == channel && w.wait.reason == reason) return w.since_s;
   return std::nullopt;
 }
 

@@ -24,10 +24,7 @@ class RunSummary {
  private:
   struct OpenWait {
     std::uint8_t channel;
-    std::int8_t spindle;
-    plc::TechKind fn;
-    std::int32_t fn_number;
-    kernel::WaitReason reason;
+    kernel::ev::Wait wait;
     double since_s;  // since when the channel waits for this reason (overlapping waits count once)
   };
   // The start of the channel's open waits for `reason`, if it waits for one.

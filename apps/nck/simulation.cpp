@@ -146,15 +146,10 @@ std::expected<std::unique_ptr<Simulation>, Diagnostics> Simulation::create(confi
 void Simulation::report_dropped_events(const kernel::TickOutput& o) {
   if (o.events_dropped == 0) return;
   progress_.clear();
-  kernel::Event e;
-  e.t_s = o.t_s;
-  e.kind = kernel::EventKind::warning;
-  e.id = ErrorId::KernelEventsDropped;
-  e.message_index = kernel::kNoMessage;
-  e.value = o.events_dropped;
+  const kernel::Event e{{o.t_s, 0, {}}, kernel::ev::Warning{{ErrorId::KernelEventsDropped, {}, {}}}};
   const std::string text = fmt::format("{} event(s) of the cycle at {} s were not recorded", o.events_dropped, o.t_s);
-  out_.console.line(fmt::format("nck: warning {}: {}", number(e.id), text));
-  out_.warnings.push_back(FinalError{number(e.id), 0, 0, std::string(), text});
+  out_.console.line(fmt::format("nck: warning {}: {}", number(ErrorId::KernelEventsDropped), text));
+  out_.warnings.push_back(FinalError{number(ErrorId::KernelEventsDropped), 0, 0, std::string(), text});
   if (out_.wants_events()) out_.event(EventWriter::object(e, names_), false);
 }
 
@@ -167,12 +162,7 @@ void Simulation::report_refusals(const kernel::TickOutput& o) {
     out_.summary.warning();
     out_.warnings.push_back(FinalError{number(d.id), channel, d.loc.line, d.loc.file, d.message});
     if (!out_.wants_events()) continue;
-    kernel::Event e;
-    e.t_s = o.t_s;
-    e.channel = channel;
-    e.kind = kernel::EventKind::warning;
-    e.id = d.id;
-    e.message_index = kernel::kNoMessage;
+    const kernel::Event e{{o.t_s, channel, {}}, kernel::ev::Warning{{d.id, {}, {}}}};
     out_.event(EventWriter::object(e, names_), false);
   }
 }
@@ -191,19 +181,20 @@ void Simulation::record_events(const kernel::TickOutput& o) {
   for (const kernel::Event& e : o.events) {
     out_.summary.take(e);
     if (out_.wants_events()) {
-      if (e.kind == kernel::EventKind::block && !out_.keep_events) out_.event_line(block_text_.line(e, names_), false);
-      else out_.event(EventWriter::object(e, names_), e.kind == kernel::EventKind::error);
+      if (e.kind() == kernel::EventKind::block && !out_.keep_events) out_.event_line(block_text_.line(e, names_), false);
+      else out_.event(EventWriter::object(e, names_), e.kind() == kernel::EventKind::error);
     }
-    if (e.kind == kernel::EventKind::end && e.end_reason == kernel::EndReason::reset) report_reset(e);
-    const bool error = e.kind == kernel::EventKind::error;
-    if (!error && e.kind != kernel::EventKind::warning) continue;
-    const std::size_t ch = e.channel - 1u;
+    if (const auto* end = e.get<kernel::ev::End>(); end && end->reason == kernel::EndReason::reset) report_reset(e);
+    const auto* error = e.get<kernel::ev::Error>();
+    const auto* warning = e.get<kernel::ev::Warning>();
+    if (!error && !warning) continue;
+    const kernel::ev::Diagnosis& d = error ? static_cast<const kernel::ev::Diagnosis&>(*error) : *warning;
     // warnings too: every diagnostic reaches stderr, not only the events file
-    const std::string file = e.channel > 0 ? names_.file(ch, e.file_id) : std::string();
+    const std::string file = e.channel > 0 ? names_.file(e.channel_index(), e.at.file_id) : std::string();
     progress_.clear();
-    const FinalError said{number(e.id), e.channel, e.line, file, names_.text(e)};
-    out_.console.line(format(Diagnostic{e.id, error ? Severity::error : Severity::warning,
-                                        SourceLoc{file, e.line, 0}, said.msg}));
+    const FinalError said{number(d.id), e.channel, e.at.line, file, names_.text(d.id, d.message)};
+    out_.console.line(format(Diagnostic{d.id, error ? Severity::error : Severity::warning,
+                                        SourceLoc{file, e.at.line, 0}, said.msg}));
     (error ? out_.errors : out_.warnings).push_back(said);
   }
 }
@@ -249,15 +240,10 @@ void Simulation::end_unfinished_channels(kernel::EndReason reason) {
   for (std::size_t ch = 0; ch < k.channel_count(); ++ch) {
     const kernel::ChannelState st = k.channel_state(ch);
     if (st.status == kernel::ChannelStatus::ended || st.status == kernel::ChannelStatus::aborted) continue;
-    kernel::Event e = st.at;
-    e.t_s = run_->time_s();
-    e.state_from = st.program_state;
-    e.state_to = kernel::ProgramState::ended;
-    e.state_reason = state_reason_of(reason);
-    out_.event(EventWriter::object(e, names_), false);
-    e.kind = kernel::EventKind::end;
-    e.end_reason = reason;
-    out_.event(EventWriter::object(e, names_), false);
+    const EventHead head{run_->time_s(), static_cast<std::uint8_t>(ch + 1), st.at};
+    const kernel::ev::State state{st.program_state, kernel::ProgramState::ended, state_reason_of(reason)};
+    out_.event(EventWriter::object(kernel::Event{head, state}, names_), false);
+    out_.event(EventWriter::object(kernel::Event{head, kernel::ev::End{reason}}, names_), false);
   }
   using R = kernel::EndReason;
   if (reason == R::max_time)

@@ -42,10 +42,9 @@ StopAtWatch::StopAtWatch(const StopAt& stop_at, sim::DryRun& run) : stop_at_(sto
 bool StopAtWatch::reached(const kernel::TickOutput& out) {
   for (const kernel::Event& e : out.events) {
     if (e.channel == 0) continue;
-    if (e.kind == kernel::EventKind::state && e.state_to == kernel::ProgramState::hold &&
-        e.state_reason == kernel::StateReason::stop_at)
-      return true;
-    if (stop_at_.event && e.kind == *stop_at_.event) {
+    const auto* state = e.get<kernel::ev::State>();
+    if (state && state->to == kernel::ProgramState::hold && state->reason == kernel::StateReason::stop_at) return true;
+    if (stop_at_.event && e.kind() == *stop_at_.event) {
       run_->set_stop_at(e.channel - 1u, kernel::StopMark{kernel::StopMark::Kind::now, 0});
       stop_at_.event.reset();  // the first such event marks its block
     }

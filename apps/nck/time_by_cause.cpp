@@ -95,38 +95,46 @@ void TimeByCause::start(const config::Machine& m, double cycle_s, bool by_line) 
   }
 }
 
+namespace {
+bool is_tool_change(const kernel::Event& e) {
+  const auto* out = e.get<kernel::ev::PlcOut>();
+  return out && out->fn == plc::TechKind::t;
+}
+}  // namespace
+
 void TimeByCause::take_event(const kernel::Event& e, const RunNames& names) {
   if (e.channel == 0 || e.channel > channels_.size()) return;
   Channel& ch = channels_[e.channel - 1u];
   if (!by_line_) {  // a run still ends here: the totals take their classes in the same order
-    if (e.kind == kernel::EventKind::block || (e.kind == kernel::EventKind::plc_out && e.fn == plc::TechKind::t))
+    if (e.kind() == kernel::EventKind::block || is_tool_change(e))
       flush(ch);
     return;
   }
-  if (e.kind == kernel::EventKind::plc_out && e.fn == plc::TechKind::t) {
+  if (is_tool_change(e)) {
     flush(ch);
-    ch.tool = fmt::format("T{}", e.fn_number);
+    ch.tool = fmt::format("T{}", e.get<kernel::ev::PlcOut>()->number);
     ch.tool_tally = &ch.tools[ch.tool];
     return;
   }
-  if (e.kind != kernel::EventKind::block) return;
+  if (e.kind() != kernel::EventKind::block) return;
   flush(ch);
-  const auto [it, added] = ch.block_index->try_emplace(key_of(e.file_id, e.line), ch.blocks.size());
+  const auto [it, added] = ch.block_index->try_emplace(key_of(e.at.file_id, e.at.line), ch.blocks.size());
   if (added) {
     Block& fresh = ch.blocks.emplace_back();
-    fresh.file = e.file_id;
-    fresh.line = e.line;
-    fresh.has_n = e.has_n;
-    fresh.n = e.n;
+    fresh.file = e.at.file_id;
+    fresh.line = e.at.line;
+    fresh.has_n = e.at.n.has_value();
+    fresh.n = e.at.n.value_or(0);
   }
   Block& b = ch.blocks[it->second];
   ++b.runs;
   ch.block = &b;
   if (added && ch.blocks.size() > kMaxLines) drop_least_lost(ch);
-  if (ch.file != e.file_id || !ch.file_tally) ch.file_tally = &ch.files[e.file_id];
-  ch.file = e.file_id;
-  if (ch.file_names.size() <= e.file_id) ch.file_names.resize(e.file_id + 1u);
-  if (ch.file_names[e.file_id].empty()) ch.file_names[e.file_id] = names.file(e.channel - 1u, e.file_id);
+  const std::uint16_t file = e.at.file_id;
+  if (ch.file != file || !ch.file_tally) ch.file_tally = &ch.files[file];
+  ch.file = file;
+  if (ch.file_names.size() <= file) ch.file_names.resize(file + 1u);
+  if (ch.file_names[file].empty()) ch.file_names[file] = names.file(e.channel - 1u, file);
 }
 
 void TimeByCause::flush(Channel& ch) {

@@ -185,11 +185,11 @@ pyb::object Session::state() const {
     ch["program_state"] = kernel::state_name(st.program_state);
     ch["status"] = status_name(st.status);
     ch["line"] = st.at.line;
-    ch["n"] = st.at.has_n ? nlohmann::json(st.at.n) : nlohmann::json(nullptr);
+    ch["n"] = st.at.n ? nlohmann::json(*st.at.n) : nlohmann::json(nullptr);
     ch["file"] = sim_->names().file(c, st.at.file_id);
     ch["path_velocity_mm_s"] = o.channels[c].path_velocity_mm_s;
     ch["wait"] = o.channels[c].cause == kernel::CycleCause::wait
-                     ? nlohmann::json(app::wait_reason_name(o.channels[c].wait_reason))
+                     ? nlohmann::json(kernel::wait_reason_name(o.channels[c].wait_reason))
                      : nlohmann::json(nullptr);
   }
   return to_python(doc);

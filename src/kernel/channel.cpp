@@ -25,10 +25,7 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
   if (in.reset) jog_.release_all();
   if (!in.jogs.empty()) take_jogs(cy);
   if (in.cycle_start && state_ == ProgramState::error && !in.reset) {
-    Event e = cy.event(EventKind::warning);  // an operator action the state does not allow
-    e.id = ErrorId::KernelCycleStartInError;
-    e.message_index = kNoMessage;  // the ID's own text
-    cy.sink.emit(e);
+    cy.emit(ev::Warning{{ErrorId::KernelCycleStartInError, {}, {}}});  // an operator action the state does not allow
   }
   if (done()) take_mdi();
   cause_ = done() ? CycleCause::none : CycleCause::transition;
@@ -113,10 +110,7 @@ void Channel::take_jogs(Cycle& cy) noexcept {
       jog_.take(r, cy);
       continue;
     }
-    Event e = cy.event(EventKind::warning);
-    e.id = ErrorId::KernelJogRefused;
-    e.message_index = kNoMessage;  // the ID's table text
-    cy.sink.emit(e);
+    cy.emit(ev::Warning{{ErrorId::KernelJogRefused, {}, {}}});
   }
 }
 
@@ -171,23 +165,12 @@ struct AttachmentSorter {
   Cycle& cy;
 
   void operator()(const Warning& w) const noexcept {
-    Event e = cy.event(EventKind::warning);
-    e.id = w.id;
-    e.message_index = w.message_index;
-    cy.sink.emit(e);
+    ev::Warning e{{w.id, {}, {}}};
+    if (w.message_index != kNoMessage) e.message = w.message_index;
+    cy.emit(e);
   }
-  void operator()(const OffsetEvent& o) const noexcept {
-    Event e = cy.event(EventKind::offset);
-    e.message_index = o.index;
-    cy.sink.emit(e);
-  }
-  void operator()(const TrcChange& t) const noexcept {
-    Event e = cy.event(EventKind::trc);
-    e.trc_mode = t.mode;
-    e.trc_d = t.d;
-    e.trc_radius_mm = t.radius_mm;
-    cy.sink.emit(e);
-  }
+  void operator()(const OffsetEvent& o) const noexcept { cy.emit(o); }
+  void operator()(const TrcChange& t) const noexcept { cy.emit(t); }
   void operator()(const Output& o) const noexcept { sync.take(o); }
   void operator()(const SpindleAction& a) const noexcept { sync.take(a); }
   void operator()(const StartPoint& x) const noexcept { parts.start = &x; }
@@ -209,9 +192,7 @@ void Channel::start(Cycle& cy) noexcept {
   active_ = true;
   phase_ = Phase::pre_wait;
   if (current_.emit_block_event) {
-    Event e = cy.event(EventKind::block);
-    e.message_index = current_.frame_index.value_or(kNoMessage);  // the block's program -> machine map (report)
-    cy.sink.emit(e);
+    cy.emit(ev::Block{current_.frame_index});  // with the block's program -> machine map (report)
   }
   BlockAttachments parts;
   sync_.start_block(current_);
@@ -347,7 +328,7 @@ void Channel::end_block(Cycle& cy) noexcept {
 // then holds before its next block until a cycle start (ChannelInput).
 void Channel::stop_program(const Hold& hold, Cycle& cy) noexcept {
   if (hold.optional_stop && !cy.in.optional_stop) return;
-  cy.sink.emit(cy.event(EventKind::stop));
+  cy.emit(ev::Stop{});
   set_state(ProgramState::hold, hold.optional_stop ? StateReason::m1 : StateReason::m0, cy);
 }
 
@@ -420,11 +401,7 @@ void Channel::leave_restart_state(Cycle& cy) noexcept {
 
 void Channel::set_state(ProgramState to, StateReason why, Cycle& cy) noexcept {
   if (to == state_) return;
-  Event e = cy.event(EventKind::state);
-  e.state_from = state_;
-  e.state_to = to;
-  e.state_reason = why;
-  cy.sink.emit(e);
+  cy.emit(ev::State{state_, to, why});
   state_ = to;
 }
 
@@ -474,9 +451,7 @@ void Channel::end_program(EndReason reason, Cycle& cy) noexcept {
   end_spindles(reason, cy);
   const auto [state, why] = state_after(reason);
   set_state(state, why, cy);
-  Event e = cy.event(EventKind::end);
-  e.end_reason = reason;
-  cy.sink.emit(e);
+  cy.emit(ev::End{reason});
 }
 
 // Program end keeps an endless rotation unless the HLI asks to stop it; a
@@ -514,10 +489,9 @@ bool Channel::fail(const Fault& f, Cycle& cy) noexcept {
 void Channel::raise(ErrorId id, std::uint32_t message, Cycle& cy) noexcept {
   // The state changes first, so that the error stays right before its end.
   set_state(ProgramState::error, StateReason::error, cy);
-  Event e = cy.event(EventKind::error);
-  e.id = id;
-  e.message_index = message;
-  cy.sink.emit(e);
+  ev::Error e{{id, {}, {}}};
+  if (message != kNoMessage) e.message = message;
+  cy.emit(e);
   end_program(EndReason::error, cy);
 }
 

@@ -57,8 +57,8 @@ class Channel {
 
   ChannelStatus status() const noexcept { return status_; }
   ProgramState program_state() const noexcept { return state_; }
-  // An event of kind k at the block the channel stands at.
-  Event event(EventKind k, double t_s) const noexcept { return block_event(current_, number_, k, t_s); }
+  // The block the channel stands at.
+  BlockRef at() const noexcept { return block_ref(current_); }
   bool done() const noexcept {
     return status_ == ChannelStatus::ended || status_ == ChannelStatus::aborted;
   }

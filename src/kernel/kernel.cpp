@@ -129,7 +129,7 @@ ChannelState Kernel::channel_state(std::size_t ch) const {
   const Channel& c = *channels_.at(ch);
   return ChannelState{c.position(),      c.manual_offsets(),
                       c.machine_position(), c.status(),
-                      c.program_state(), c.event(EventKind::state, 0.0),
+                      c.program_state(), c.at(),
                       c.dist_state(), c.dist_offset_mm()};
 }
 

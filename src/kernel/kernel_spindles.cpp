@@ -11,14 +11,8 @@ namespace nck::kernel {
 void Kernel::take_acknowledgements(const TickInput& in, double t_s, TickOutput& out) noexcept {
   for (const plc::PlcAck& a : in.acks) {
     plc_outputs_->acknowledged();
-    Event e;
-    e.t_s = t_s;
-    e.channel = a.output.channel;
-    e.kind = EventKind::plc_ack;
-    e.fn = a.output.kind;
-    e.fn_number = a.output.number;
-    e.spindle = spindle_map_.at(a.output.channel, a.output.spindle);
-    out.emit(e);
+    const std::int8_t spindle = spindle_map_.at(a.output.channel, a.output.spindle);
+    out.emit(Event{{t_s, a.output.channel, {}}, ev::PlcAck{a.output.kind, a.output.number, ev::spindle_or_none(spindle)}});
     for (auto& c : channels_) c->on_ack(a.handle);
     for (SpindleUnit& u : spindles_)
       if (u.gear_handle == a.handle) u.gear_acked = true;
@@ -55,14 +49,7 @@ void Kernel::take_external_commands(const TickInput& in, double t_s, TickOutput&
     channel = cmd.channel;
   }
   if (lost == 0) return;
-  Event e;
-  e.t_s = t_s;
-  e.channel = channel;
-  e.kind = EventKind::warning;
-  e.id = ErrorId::PlcExtCommandQueueFull;
-  e.message_index = kNoMessage;
-  e.value = lost;  // how many commands were dropped
-  out.emit(e);
+  out.emit(Event{{t_s, channel, {}}, ev::Warning{{ErrorId::PlcExtCommandQueueFull, {}, {}}}});
 }
 
 namespace {
@@ -81,14 +68,7 @@ void acknowledge_external_command(SpindleUnit& u, std::int8_t index, plc::ExtCom
                                   TickOutput& out) noexcept {
   queue.acknowledge(u.ext_seq);
   u.ext_seq = 0;
-  Event e;  // the PLC learns that its command is done
-  e.t_s = t_s;
-  e.channel = u.channel;
-  e.kind = EventKind::plc_ack;
-  e.fn = plc::TechKind::m;
-  e.fn_number = u.ext_m;
-  e.spindle = index;
-  out.emit(e);
+  out.emit(Event{{t_s, u.channel, {}}, ev::PlcAck{plc::TechKind::m, u.ext_m, index}});  // the PLC learns that its command is done
 }
 
 void start_external_command(SpindleUnit& u, std::int8_t index, double t_s, TickOutput& out) noexcept {
@@ -105,14 +85,7 @@ void start_external_command(SpindleUnit& u, std::int8_t index, double t_s, TickO
   u.channel = cmd.channel;
   u.ext_m = static_cast<std::int32_t>(cmd.fn);  // the enum's values are the M numbers
   if (r.ok()) return;
-  Event e;
-  e.t_s = t_s;
-  e.channel = cmd.channel;
-  e.kind = EventKind::error;
-  e.id = r.id;
-  e.message_index = kNoMessage;
-  e.spindle = index;
-  out.emit(e);
+  out.emit(Event{{t_s, cmd.channel, {}}, ev::Error{{r.id, std::nullopt, index}}});
 }
 
 }  // namespace

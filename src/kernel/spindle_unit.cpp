@@ -5,13 +5,9 @@
 namespace nck::kernel {
 namespace {
 
-Event spindle_event(const SpindleUnit& u, std::int8_t index, double t_s, EventKind k) noexcept {
-  Event e;
-  e.t_s = t_s;
-  e.channel = u.channel;
-  e.kind = k;
-  e.spindle = index;
-  return e;
+// An event of the spindle, in the channel that commands it. rt
+Event spindle_event(const SpindleUnit& u, double t_s, const EventPayload& p) noexcept {
+  return Event{{t_s, u.channel, {}}, p};
 }
 
 }  // namespace
@@ -24,18 +20,14 @@ void report_spindle_changes(SpindleUnit& u, std::int8_t index, double t_s, TickO
   u.reported_speed_law = u.speed_law;
   const spindle::SpindleStatus& s = u.axis.status();
   if (s.mode != u.last_mode || (s.cmd_rpm != u.last_cmd_rpm && !u.speed_law)) {
-    Event e = spindle_event(u, index, t_s, EventKind::spindle);
-    e.spindle_mode = s.mode;
-    e.value = s.cmd_rpm;
-    e.gear = s.gear_stage;
+    const Event e = spindle_event(u, t_s, spindle::ModeEvent{index, s.mode, s.cmd_rpm, s.gear_stage});
     out.emit(e);
     u.last_mode = s.mode;
     u.last_cmd_rpm = s.cmd_rpm;
   }
   const bool reached = s.mode == spindle::SpindleMode::rotate && s.cmd_rpm != 0 && s.speed_reached;
   if (reached && !u.last_speed_reached) {
-    Event e = spindle_event(u, index, t_s, EventKind::speed_reached);
-    e.value = s.act_rpm;
+    const Event e = spindle_event(u, t_s, spindle::SpeedReachedEvent{index, s.act_rpm});
     out.emit(e);
   }
   u.last_speed_reached = reached;
@@ -57,27 +49,19 @@ void advance_gear_job(SpindleUnit& u, std::int8_t index, PlcOutputs& plc, double
     u.gear_handle = plc.submit(o, out);
     if (u.gear_handle == plc::kNoHandle) {  // tried again next cycle
       if (!u.gear_output_delayed) {
-        Event w = spindle_event(u, index, t_s, EventKind::warning);
-        w.id = ErrorId::KernelPlcOutputsFull;
-        w.message_index = kNoMessage;
+        const Event w = spindle_event(u, t_s, ev::Warning{{ErrorId::KernelPlcOutputsFull, std::nullopt, index}});
         out.emit(w);
       }
       u.gear_output_delayed = true;
       return;
     }
     u.gear_output_delayed = false;
-    Event e = spindle_event(u, index, t_s, EventKind::plc_out);
-    e.fn = plc::TechKind::m;
-    e.fn_number = m;
-    e.sync = config::sync::MVS_SVS;
+    const Event e = spindle_event(u, t_s, ev::PlcOut{plc::TechKind::m, m, index, 0, config::sync::MVS_SVS});
     out.emit(e);
     u.gear_job = GearJob::shifting;
   } else if (u.gear_job == GearJob::shifting && u.gear_acked) {
     (void)u.axis.finish_gear_change();
-    Event e = spindle_event(u, index, t_s, EventKind::gear);
-    e.gear = u.gear_stage;
-    e.fn = plc::TechKind::m;
-    e.fn_number = m;
+    const Event e = spindle_event(u, t_s, spindle::GearEvent{index, u.gear_stage, m});
     out.emit(e);
     u.last_gear = u.gear_stage;
     u.gear_job = GearJob::done;

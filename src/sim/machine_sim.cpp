@@ -102,7 +102,7 @@ void MachineSim::write(const kernel::TickOutput& out) noexcept {
   for (const kernel::TechRequest& r : out.tech_outputs) (void)plc_.submit(r.handle, r.output, t_s_);
   if (player_.has_triggers())  // lines waiting for a program state ('@hold cycle_start')
     for (const kernel::Event& e : out.events)
-      if (e.kind == kernel::EventKind::state) player_.entered(e.channel, e.state_to, out.t_s);
+      if (const auto* s = e.get<kernel::ev::State>()) player_.entered(e.channel, s->to, out.t_s);
   for (std::size_t ch = 0; ch < channels_; ++ch) {
     write_channel_state(out.channels[ch].program_state, hli_.channel_state[ch]);
     probe_switched_[ch] = probes_[ch].watch(out.channels[ch].axis_mcs);

@@ -25,7 +25,7 @@ struct LiveChannel {
   kernel::ProgramState program_state = kernel::ProgramState::idle;
   kernel::CycleCause cause = kernel::CycleCause::none;
   kernel::WaitReason wait_reason = kernel::WaitReason::plc_ack;
-  kernel::Event at{};  // the block the channel stands at (file_id, line, n)
+  BlockRef at{};  // the block the channel stands at
   plc::ChannelControl hli{};  // the operator's controls as the HLI holds them
 };
 

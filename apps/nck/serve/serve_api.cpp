@@ -263,11 +263,11 @@ void ServeApi::drain_events(std::vector<std::string>& frames) {
     const LiveEvent& le = q.front();
     if (le.generation > generation_) advance();  // every event of the old run came before
     const kernel::Event& e = le.event;
-    if (e.kind == kernel::EventKind::block && e.message_index != kernel::kNoMessage && e.channel >= 1)
-      if (const kernel::AffineMap* f = serving_->frame(e.message_index)) {
+    if (const auto* block = e.get<kernel::ev::Block>(); block && block->frame_index && e.channel >= 1)
+      if (const kernel::AffineMap* f = serving_->frame(*block->frame_index)) {
         BlockContext& b = frames_[e.channel - 1u];
         b.frame = *f;
-        if (const nc::ModalState* m = serving_->modal(e.message_index)) b.modal = *m;
+        if (const nc::ModalState* m = serving_->modal(*block->frame_index)) b.modal = *m;
       }
     batch += batch.empty() ? "[" : ",";
     batch += EventWriter::line(e, RunNames{serving_});

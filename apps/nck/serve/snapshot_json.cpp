@@ -36,7 +36,7 @@ json channel_json(const LiveChannel& c, const config::ChannelConfig& cfg, const 
     pcs[cfg.axes[j].name] = program[j];
   }
   const RunNames names{&run};
-  json block = {{"file", names.file(ch, c.at.file_id)}, {"line", c.at.line}, {"n", c.at.has_n ? json(c.at.n) : json()}};
+  json block = {{"file", names.file(ch, c.at.file_id)}, {"line", c.at.line}, {"n", c.at.n ? json(*c.at.n) : json()}};
   json j = {{"channel", ch + 1},
             {"state", std::string(kernel::state_name(c.program_state))},
             {"mcs", std::move(mcs)},

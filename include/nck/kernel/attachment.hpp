@@ -12,14 +12,15 @@
 #include <variant>
 
 #include "nck/core/diagnostic.hpp"
-#include "nck/distctrl/controller.hpp"
+#include "nck/distctrl/dist_data.hpp"
+#include "nck/frames/offset_event.hpp"
 #include "nck/kernel/affine_map.hpp"
 #include "nck/kernel/ax_link.hpp"
 #include "nck/kernel/event.hpp"
 #include "nck/kernel/feed_link.hpp"
 #include "nck/kernel/spindle_action.hpp"
 #include "nck/motion/axis_vector.hpp"
-#include "nck/nc/modal.hpp"
+#include "nck/trc/trc.hpp"
 
 namespace nck::kernel {
 
@@ -51,19 +52,7 @@ struct ProgramMap {
 // A warning raised with the block.
 struct Warning {
   ErrorId id{};
-  std::uint32_t message_index = kNoMessage;
-};
-
-// An offset changed with the block (PlanStore::offsets index, for its event).
-struct OffsetEvent {
-  std::uint32_t index = 0;
-};
-
-// Tool radius compensation changed with the block (a `trc` event).
-struct TrcChange {
-  nc::RadiusComp mode = nc::RadiusComp::g40;
-  std::int32_t d = 0;        // the D in force
-  double radius_mm = 0;      // its tool radius
+  std::uint32_t message_index = kNoMessage;  // Kernel::message(); kNoMessage: the ID's table text
 };
 
 // G201 / G202: axes entering / leaving manual (handwheel) mode (bit j =
@@ -81,20 +70,9 @@ struct CaxChange {
   std::int8_t axis = 0;
 };
 
-// #DIST CTRL: the switch and its overrides, the tool axis that carries the
-// offset (the plane's third axis) and, with CHECK_SW_LIMIT_SWITCH, its
-// software limits.
-struct DistChange {
-  enum class Source : std::uint8_t {
-    machine,   // the machine's sensor (TickInput)
-    variable,  // the channel variable named `variable` (TickInput's variables)
-  };
-  distctrl::Switch sw{};
-  std::int8_t axis = 0;
-  std::optional<Source> source;  // none: keep the one in force
-  std::array<char, 32> variable{};
-  std::optional<std::array<double, 2>> sw_limits_mm;  // negative, positive
-};
+using distctrl::DistChange;
+using frames::OffsetEvent;
+using trc::TrcChange;
 
 using Attachment = std::variant<Output, SpindleAction, FeedLink, CssLink, StartPoint, ProgramMap,
                                 Warning, OffsetEvent, TrcChange, ManualChange, CaxChange,

@@ -8,6 +8,9 @@
 // slave with its master every cycle.
 #include <cstdint>
 
+#include <string_view>
+
+#include "nck/core/event_head.hpp"
 #include "nck/core/fixed_vector.hpp"
 
 namespace nck::kernel {
@@ -18,6 +21,16 @@ inline constexpr std::size_t kMaxLinkPairs = 15;
 inline constexpr int kMaxLinkGroupNr = 31;
 
 enum class LinkReason : std::uint8_t { program, abort, program_end, reset };
+
+constexpr const char* link_reason_name(LinkReason r) noexcept {
+  switch (r) {
+    case LinkReason::program: return "program";
+    case LinkReason::abort: return "abort";
+    case LinkReason::program_end: return "program_end";
+    case LinkReason::reset: return "reset";
+  }
+  return "program";
+}
 
 struct AxLinkPair {
   bool spindle = false;   // mode 1: kernel spindle indices; mode 0: channel axis indices
@@ -37,5 +50,24 @@ struct LinkCommand {
   std::uint32_t disable_mask = 0;
   bool any() const noexcept { return enable || disable_mask != 0; }
 };
+
+// A coupling group was enabled or dissolved (a `link` event).
+struct LinkEvent {
+  std::int8_t group = -1;
+  bool on = false;
+  LinkReason reason = LinkReason::program;
+  std::uint32_t payload = 0;  // PlanStore::links: the pairs' names
+};
+
+template <class Json, class Names>
+void write_json(Json& j, const LinkEvent& e, const EventHead& h, const Names& names) {
+  j["group"] = e.group;
+  Json pairs = Json::array();
+  for (const auto& [slave, master] : names.link(e.payload).pairs) pairs.push_back(Json::array({slave, master}));
+  j["pairs"] = pairs;
+  j["on"] = e.on;
+  j["reason"] = link_reason_name(e.reason);
+  j["line"] = h.at.line;
+}
 
 }  // namespace nck::kernel

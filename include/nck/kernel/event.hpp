@@ -1,19 +1,25 @@
 #pragma once
-// Events the kernel emits in the cyclic path: plain data, no strings, so
-// producing one never allocates. The application turns them into JSON lines
-// (the events file, docs/outputs.md), looking texts up by id.
+// Events the kernel emits in the cyclic path: a head (when, which channel,
+// which block) and one typed payload per kind, each defined with its JSON
+// writer in its technology's header. Plain data, no strings, so producing
+// one never allocates; the run service writes them as JSON lines
+// (docs/outputs.md), looking texts up by index.
 #include <cstdint>
+#include <type_traits>
+#include <variant>
 
-#include "nck/core/diagnostic.hpp"
-#include "nck/distctrl/controller.hpp"
+#include "nck/core/event_head.hpp"
+#include "nck/distctrl/dist_data.hpp"
+#include "nck/frames/offset_event.hpp"
 #include "nck/kernel/ax_link.hpp"
-#include "nck/kernel/program_state.hpp"
-#include "nck/nc/modal.hpp"
-#include "nck/plc/hli.hpp"
-#include "nck/spindle/spindle_status.hpp"
+#include "nck/kernel/channel_events.hpp"
+#include "nck/kernel/sync_events.hpp"
+#include "nck/spindle/spindle_events.hpp"
+#include "nck/trc/trc.hpp"
 
 namespace nck::kernel {
 
+// The kinds in the order of EventPayload's alternatives.
 enum class EventKind : std::uint8_t {
   block,      // a block starts executing
   plc_out,    // a function is output to the PLC
@@ -29,64 +35,43 @@ enum class EventKind : std::uint8_t {
   warning,
   error,
   end,        // program end of a channel
-  dist_ctrl,  // 3D distance control changed state (dist_state)
-  trc,        // tool radius compensation selected, deselected or its D changed (trc_*)
-  state,      // the channel's program state changed (state_from / state_to / state_reason)
+  dist_ctrl,  // 3D distance control changed state
+  trc,        // tool radius compensation selected, deselected or its D changed
+  state,      // the channel's program state changed
 };
 
-inline constexpr std::uint32_t kNoMessage = 0xFFFFFFFFu;
+using EventPayload =
+    std::variant<ev::Block, ev::PlcOut, ev::PlcAck, ev::Wait, ev::WaitEnd, spindle::ModeEvent,
+                 spindle::SpeedReachedEvent, spindle::GearEvent, LinkEvent, frames::OffsetEvent, ev::Stop,
+                 ev::Warning, ev::Error, ev::End, distctrl::StateEvent, trc::TrcChange, ev::State>;
 
-// hold: the run ended while a channel held and nothing could release it (nck run)
-// stop_at: the run ended at its stop-at mark (nck run --stop-at)
-enum class EndReason : std::uint8_t { m30, m2, error, reset, max_time, max_wall, interrupted, hold, stop_at,
-                                      max_trace };  // max_trace: the Python trace's memory limit
+// "block", "plc_out", ... as the events file writes them.
+constexpr const char* event_name(EventKind k) noexcept {
+  constexpr const char* kNames[] = {"block", "plc_out", "plc_ack", "wait",    "wait_end", "spindle",
+                                    "speed_reached", "gear", "link", "offset", "stop", "warning",
+                                    "error", "end", "dist_ctrl", "trc", "state"};
+  static_assert(std::size(kNames) == std::variant_size_v<EventPayload>);
+  return kNames[static_cast<std::size_t>(k)];
+}
 
+struct Event : EventHead {
+  EventPayload payload{};
 
-enum class WaitReason : std::uint8_t {
-  plc_ack, speed_reached, in_position, standstill, homing, gear_change, expl_syn, dwell, feedhold,
-  coupling  // a spindle coupling holds the path (G95/G33/G63 with the spindle at rest); time by cause only
+  EventKind kind() const noexcept { return static_cast<EventKind>(payload.index()); }
+  template <class T>
+  const T* get() const noexcept { return std::get_if<T>(&payload); }
 };
 
-struct Event {
-  double t_s = 0;             // cycle start
-  std::uint8_t channel = 0;   // 1-based, 0 = not channel-specific
-  EventKind kind = EventKind::block;
-  // block / warning / error
-  std::uint16_t file_id = 0;
-  std::uint32_t line = 0;
-  bool has_n = false;
-  std::int64_t n = 0;
-  // warning / error
-  ErrorId id{};
-  std::uint32_t message_index = 0;  // Kernel::message(), text prepared outside the cycle
-                                    // (kNoMessage: the ID's table text); block: the
-                                    // PlanStore::frames index of its map (kNoMessage: none)
-  // plc_out / plc_ack / wait
-  plc::TechKind fn = plc::TechKind::none;
-  std::int32_t fn_number = 0;       // M3, T5 ...
-  double value = 0;                 // S: rpm
-  std::uint32_t sync = 0;           // synchronisation type bits
-  std::int8_t spindle = -1;         // kernel spindle index (Kernel::spindle_name), -1 = none
-  WaitReason wait_reason = WaitReason::plc_ack;
-  // spindle / gear
-  spindle::SpindleMode spindle_mode = spindle::SpindleMode::stop;
-  std::uint32_t gear = 0;           // gear stage 1..6
-  // end
-  EndReason end_reason = EndReason::m30;
-  // link: group, on/off, why (ax_link.hpp LinkReason); the pairs' names are
-  // in the plan store at message_index
-  std::int8_t link_group = -1;
-  bool link_on = false;
-  LinkReason link_reason = LinkReason::program;
-  // dist_ctrl
-  distctrl::State dist_state = distctrl::State::inactive;
-  // trc: the mode, the D in force and its tool radius
-  nc::RadiusComp trc_mode = nc::RadiusComp::g40;
-  std::int32_t trc_d = 0;
-  double trc_radius_mm = 0;
-  // state: the program state left and entered, and why
-  ProgramState state_from = ProgramState::idle, state_to = ProgramState::idle;
-  StateReason state_reason = StateReason::start;
-};
+// The index of payload type T, which is its kind.
+template <class T, std::size_t I = 0>
+constexpr EventKind kind_of() noexcept {
+  if constexpr (std::is_same_v<T, std::variant_alternative_t<I, EventPayload>>) return static_cast<EventKind>(I);
+  else return kind_of<T, I + 1>();
+}
+static_assert(kind_of<ev::State>() == EventKind::state && kind_of<ev::Error>() == EventKind::error &&
+              kind_of<distctrl::StateEvent>() == EventKind::dist_ctrl);
+
+// Events cross the real-time queues and may sit in shared memory.
+static_assert(std::is_trivially_copyable_v<Event>);
 
 }  // namespace nck::kernel

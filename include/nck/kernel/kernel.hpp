@@ -36,7 +36,7 @@ struct ChannelState {
   motion::AxisVector axis_mcs{};        // machine set point: path + handwheel
   ChannelStatus status = ChannelStatus::idle;
   ProgramState program_state = ProgramState::idle;
-  Event at{};  // the block the channel stands at: file_id, line, has_n, n
+  BlockRef at{};  // the block the channel stands at
   distctrl::State dist_state = distctrl::State::inactive;
   double dist_offset_mm = 0;    // distance-control offset in axis_mcs
 };

@@ -4,13 +4,14 @@
 
 #include "nck/core/plane.hpp"
 #include "nck/core/slope.hpp"
+#include "nck/trc/trc.hpp"
 
 namespace nck::nc {
 
 enum class Motion : std::uint8_t { rapid, linear, cw, ccw, thread, tap, tap_rigid, tap_retract };
 enum class FeedMode : std::uint8_t { g93 = 93, g94 = 94, g95 = 95, g194 = 194 };
 enum class SpeedMode : std::uint8_t { g97 = 97, g96 = 96 };
-enum class RadiusComp : std::uint8_t { g40 = 40, g41 = 41, g42 = 42 };
+using RadiusComp = trc::RadiusComp;  // G40 G41 G42
 
 struct ModalState {
   Motion motion = Motion::rapid;        // G0 G1 G2 G3 G33 G63 G331 G332

@@ -37,12 +37,7 @@ Fault AxisLinkUnit::start(const LinkCommand& c, const motion::AxisVector& pos_mm
 }
 
 void AxisLinkUnit::emit(const ActiveLink& l, bool on, LinkReason why, Cycle& cy) const noexcept {
-  Event e = cy.event(EventKind::link);
-  e.message_index = l.cmd.payload;
-  e.link_group = l.cmd.group;
-  e.link_on = on;
-  e.link_reason = why;
-  cy.sink.emit(e);
+  cy.emit(LinkEvent{l.cmd.group, on, why, l.cmd.payload});
 }
 
 void AxisLinkUnit::dissolve(std::size_t i, LinkReason why, Cycle& cy) noexcept {

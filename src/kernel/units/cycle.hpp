@@ -31,18 +31,8 @@ struct ChannelContext {
   }
 };
 
-// An event of kind k at block c of channel `channel` (1-based). rt
-inline Event block_event(const Command& c, std::uint8_t channel, EventKind k, double t_s) noexcept {
-  Event e;
-  e.t_s = t_s;
-  e.channel = channel;
-  e.kind = k;
-  e.file_id = c.file_id;
-  e.line = c.line;
-  e.has_n = c.n.has_value();
-  e.n = c.n.value_or(0);
-  return e;
-}
+// Where command c came from. rt
+inline BlockRef block_ref(const Command& c) noexcept { return {c.file_id, c.line, c.n}; }
 
 // Something a unit met that ends the program with an error. The channel
 // raises `id` (program state, error event, end) — unless the unit emitted
@@ -67,7 +57,8 @@ struct Cycle {
   std::span<const std::int8_t> spindles;  // kernel index per channel spindle
   bool stopped = false;                    // NC stop in force: the path is held as by feedhold
 
-  Event event(EventKind k) const noexcept { return block_event(block, channel, k, t_s); }
+  // Emits an event at the block the channel stands at. rt
+  void emit(const EventPayload& p) const noexcept { sink.emit(Event{{t_s, channel, block_ref(block)}, p}); }
   // Hands a record to preparation. The queue holds more records than can be
   // in flight (queues.hpp); a full one is still reported (preparation would
   // wait for the record for ever), never dropped silently.

@@ -35,9 +35,7 @@ Fault DistUnit::step(const motion::AxisVector& pos_mm, Cycle& cy) noexcept {
 void DistUnit::note_state(Cycle& cy) noexcept {
   if (ctrl_.state() == reported_) return;
   reported_ = ctrl_.state();
-  Event e = cy.event(EventKind::dist_ctrl);
-  e.dist_state = reported_;
-  cy.sink.emit(e);
+  cy.emit(distctrl::StateEvent{reported_});
 }
 
 bool DistUnit::wind_down() noexcept {

@@ -11,10 +11,7 @@ namespace {
 
 // An event of kind k with id at the channel's block (warnings of manual mode).
 void warn(ErrorId id, Cycle& cy) noexcept {
-  Event e = cy.event(EventKind::warning);
-  e.id = id;
-  e.message_index = kNoMessage;  // the ID's table text
-  cy.sink.emit(e);
+  cy.emit(ev::Warning{{id, {}, {}}});  // the ID's table text
 }
 
 }  // namespace

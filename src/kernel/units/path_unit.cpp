@@ -127,10 +127,7 @@ void PathUnit::keep_braking_reserve(const Motion& m, const CommandQueue& queued,
 void PathUnit::note_starved(Cycle& cy) noexcept {
   if (starved_) return;
   starved_ = true;
-  Event e = cy.event(EventKind::warning);
-  e.id = ErrorId::KernelPrepStarved;
-  e.message_index = kNoMessage;
-  cy.sink.emit(e);
+  cy.emit(ev::Warning{{ErrorId::KernelPrepStarved, {}, {}}});
 }
 
 // Time by cause: a few comparisons of what the profile did with what it

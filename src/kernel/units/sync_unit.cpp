@@ -129,11 +129,7 @@ Fault SyncUnit::issue_spindle(const SpindleAction& a, Cycle& cy) noexcept {
   if (!target) return {};
   SpindleUnit& u = *target;
   if (linked_to_other_channel(u, cy.channel)) {  // only the channel that enabled the link commands it
-    Event e = cy.event(EventKind::error);
-    e.id = ErrorId::AxLinkOtherChannel;
-    e.message_index = kNoMessage;
-    e.spindle = a.spindle;
-    cy.sink.emit(e);
+    cy.emit(ev::Error{{ErrorId::AxLinkOtherChannel, std::nullopt, a.spindle}});
     return {ErrorId::AxLinkOtherChannel, true};
   }
   u.channel = cy.channel;
@@ -143,11 +139,7 @@ Fault SyncUnit::issue_spindle(const SpindleAction& a, Cycle& cy) noexcept {
   const spindle::SpindleResult r = run(u.axis, now);
   if (!r.ok()) return {r.id};
   if (r.warning) {
-    Event e = cy.event(EventKind::warning);
-    e.id = r.id;
-    e.message_index = kNoMessage;
-    e.spindle = a.spindle;
-    cy.sink.emit(e);
+    cy.emit(ev::Warning{{r.id, std::nullopt, a.spindle}});
   }
   if (a.op == SpindleOp::gear_change) {
     u.gear_job = GearJob::approaching;
@@ -182,13 +174,7 @@ Fault SyncUnit::output_spindle_function(const SpindleAction& a, const SpindleAct
   o.sync = a.sync_bits;
   w.handle = cy.machine.plc ? cy.machine.plc->submit(o, cy.sink) : plc::kNoHandle;
   if (w.handle == plc::kNoHandle) return {ErrorId::PlcOutputQueueFull};
-  Event e = cy.event(EventKind::plc_out);
-  e.fn = w.fn;
-  e.fn_number = a.fn_number;
-  e.spindle = a.spindle;
-  e.value = o.value;
-  e.sync = a.sync_bits;
-  cy.sink.emit(e);
+  cy.emit(ev::PlcOut{w.fn, a.fn_number, ev::spindle_or_none(a.spindle), o.value, a.sync_bits});
   return {};
 }
 
@@ -204,11 +190,7 @@ Fault SyncUnit::issue_output(const Output& o, Cycle& cy) noexcept {
   w.deadline_s = o.ack_timeout_s > 0 ? cy.t_s + o.ack_timeout_s : 0;
   w.handle = cy.machine.plc ? cy.machine.plc->submit(t, cy.sink) : plc::kNoHandle;
   if (w.handle == plc::kNoHandle) return {ErrorId::PlcOutputQueueFull};
-  Event e = cy.event(EventKind::plc_out);
-  e.fn = o.fn;
-  e.fn_number = o.number;
-  e.sync = o.sync;
-  cy.sink.emit(e);
+  cy.emit(ev::PlcOut{o.fn, o.number, std::nullopt, 0, o.sync});
   if (!add_wait(w, sync_point(o.sync).value_or(SyncPoint::none))) return {ErrorId::KernelWaitOverflow};
   return {};
 }
@@ -267,16 +249,11 @@ Fault SyncUnit::check(Wait& w, bool& stays, Cycle& cy) noexcept {
   const SpindleUnit* u = cy.machine.spindle(w.spindle);
   const bool acked = w.handle == plc::kNoHandle || w.acked;
   const bool satisfied = acked && (!u || satisfied_by(*u, w.what));
-  Event e = cy.event(EventKind::wait);
-  e.spindle = w.spindle;
-  e.fn = w.fn;
-  e.fn_number = w.fn_number;
-  e.wait_reason = w.reason;
+  ev::Wait e{w.reason, ev::spindle_or_none(w.spindle), w.fn, w.fn_number};
   const WaitReason now = acked ? reason_of(w.what) : WaitReason::plc_ack;
   if (satisfied || (w.announced && now != w.reason)) {
     if (w.announced) {  // ends the wait, or its reason changes (PLC acknowledged, speed not yet)
-      e.kind = EventKind::wait_end;
-      cy.sink.emit(e);
+      cy.emit(ev::WaitEnd{e});
       w.announced = false;
     }
     if (satisfied) {
@@ -284,13 +261,12 @@ Fault SyncUnit::check(Wait& w, bool& stays, Cycle& cy) noexcept {
       return {};
     }
   }
-  e.kind = EventKind::wait;
-  e.wait_reason = now;
+  e.reason = now;
   w.reason = now;
   if (u && u->axis.status().mode == spindle::SpindleMode::error) return {u->axis.status().error};
   if (w.deadline_s > 0 && cy.t_s >= w.deadline_s && !acked) return {ErrorId::PlcAckTimeout};
   if (!w.announced) {
-    cy.sink.emit(e);
+    cy.emit(e);
     w.announced = true;
   }
   return {};

@@ -11,13 +11,9 @@ namespace nck::app {
 namespace {
 
 kernel::Event block_event(double t_s, std::uint8_t channel, std::uint32_t line, bool has_n, std::int64_t n) {
-  kernel::Event e;
-  e.kind = kernel::EventKind::block;
-  e.t_s = t_s;
-  e.channel = channel;
-  e.line = line;
-  e.has_n = has_n;
-  e.n = n;
+  kernel::Event e{{t_s, channel, {}}, kernel::ev::Block{}};
+  e.at.line = line;
+  if (has_n) e.at.n = n;
   return e;
 }
 

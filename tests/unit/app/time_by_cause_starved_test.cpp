@@ -35,7 +35,7 @@ TEST(TimeByCauseStarved, ALateProducerStarvesTheChannel) {
   const auto tick = [&] {
     rig.k.tick(*in, *out);
     ledger.take(*out, names);
-    for (const kernel::Event& e : out->events) ended = ended || e.kind == kernel::EventKind::end;
+    for (const kernel::Event& e : out->events) ended = ended || e.kind() == kernel::EventKind::end;
   };
   rig.push_block(0, move(1, nc::Motion::linear, 10));  // 10 mm at 100 mm/s: about 0.1 s
   for (int cycle = 0; cycle < 3000; ++cycle) tick();  // the producer is 3 s late

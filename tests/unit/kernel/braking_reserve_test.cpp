@@ -16,6 +16,7 @@
 #include "nck/kernel/braking_reserve.hpp"
 #include "nck/motion/path_profile.hpp"
 #include "test_machine.hpp"
+#include "../seen_events.hpp"
 
 namespace nck::kernel {
 namespace {
@@ -73,8 +74,8 @@ Observed tick_until_end(Rig& r) {
   for (int cycle = 0; cycle < 20'000'000 && !o.ended; ++cycle) {
     r.k.tick(*in, *out);
     for (const Event& e : out->events) {
-      if (e.kind == EventKind::warning && e.id == ErrorId::KernelPrepStarved) ++o.starved_warnings;
-      if (e.kind == EventKind::end) o.ended = true;
+      if (test::diagnosis_id(e) == ErrorId::KernelPrepStarved) ++o.starved_warnings;
+      if (e.kind() == EventKind::end) o.ended = true;
     }
     const ChannelOutput& c = out->channels[0];
     bool moved = false;

@@ -19,6 +19,7 @@
 
 #include "nck/kernel/kernel.hpp"
 #include "test_machine.hpp"
+#include "../seen_events.hpp"
 
 namespace nck::kernel {
 namespace {
@@ -50,11 +51,9 @@ struct Log {
   std::vector<ChannelStatus> status;
   std::vector<bool> speed_reached;  // spindle 0 after each cycle (when there is one)
 
-  std::vector<Event> of(EventKind k) const {
-    std::vector<Event> r;
-    for (const Event& e : events)
-      if (e.kind == k) r.push_back(e);
-    return r;
+  template <class T>
+  std::vector<test::Seen<T>> of() const {
+    return test::seen<T>(events);
   }
   // First cycle in which X has left 0 (-1: never).
   int motion_start() const {
@@ -152,16 +151,17 @@ TEST(ChannelSync, MvsSvsMotionStartsOnlyWithTheAcknowledgement) {
   const Log r = m_function_run(10, sync::MVS_SVS, at(5));
   ASSERT_EQ(r.issued.size(), 1u);
   expect_output(r.issued[0], 0, 10, sync::MVS_SVS);
-  const auto waits = r.of(EventKind::wait), ends = r.of(EventKind::wait_end);
+  const auto waits = r.of<kernel::ev::Wait>();
+  const auto ends = r.of<kernel::ev::WaitEnd>();
   ASSERT_EQ(waits.size(), 1u);
   ASSERT_EQ(ends.size(), 1u);
   EXPECT_EQ(cycle_of(waits[0].t_s), 0);
   EXPECT_EQ(waits[0].fn, plc::TechKind::m);
-  EXPECT_EQ(waits[0].fn_number, 10);
-  EXPECT_EQ(waits[0].wait_reason, WaitReason::plc_ack);
-  EXPECT_EQ(waits[0].line, 1u);
+  EXPECT_EQ(waits[0].number, 10);
+  EXPECT_EQ(waits[0].reason, WaitReason::plc_ack);
+  EXPECT_EQ(waits[0].at.line, 1u);
   EXPECT_EQ(cycle_of(ends[0].t_s), 5);
-  EXPECT_EQ(cycle_of(r.of(EventKind::plc_ack).at(0).t_s), 5);
+  EXPECT_EQ(cycle_of(r.of<kernel::ev::PlcAck>().at(0).t_s), 5);
   for (int i = 0; i < 5; ++i) {
     EXPECT_EQ(r.x[i], 0.0) << "cycle " << i;
     EXPECT_EQ(r.status[i], ChannelStatus::waiting) << "cycle " << i;
@@ -170,7 +170,7 @@ TEST(ChannelSync, MvsSvsMotionStartsOnlyWithTheAcknowledgement) {
   EXPECT_NEAR(r.x[5], kStep_mm, 1e-12);
   EXPECT_EQ(r.status[5], ChannelStatus::running);
   EXPECT_DOUBLE_EQ(r.x[5 + kOneMm - 1], 1.0);
-  EXPECT_EQ(cycle_of(r.of(EventKind::end).at(0).t_s), 5 + kOneMm);
+  EXPECT_EQ(cycle_of(r.of<kernel::ev::End>().at(0).t_s), 5 + kOneMm);
 }
 
 // Without an acknowledgement the MVS_SVS block never moves.
@@ -179,8 +179,8 @@ TEST(ChannelSync, MvsSvsWithoutAcknowledgementNeverMoves) {
   EXPECT_EQ(r.cycles(), 2000);
   EXPECT_EQ(r.motion_start(), -1);
   EXPECT_EQ(r.status.back(), ChannelStatus::waiting);
-  EXPECT_EQ(r.of(EventKind::wait).size(), 1u);  // announced once, not every cycle
-  EXPECT_TRUE(r.of(EventKind::wait_end).empty());
+  EXPECT_EQ(r.of<kernel::ev::Wait>().size(), 1u);  // announced once, not every cycle
+  EXPECT_TRUE(r.of<kernel::ev::WaitEnd>().empty());
 }
 
 // MVS_SNS: output in cycle 0 and the motion runs at once (cycles 0..9).
@@ -193,13 +193,14 @@ TEST(ChannelSync, MvsSnsMovesThenWaitsForTheAcknowledgement) {
   expect_output(r.issued[0], 0, 11, sync::MVS_SNS);
   EXPECT_EQ(r.motion_start(), 0);
   EXPECT_DOUBLE_EQ(r.x[kOneMm - 1], 1.0);
-  const auto waits = r.of(EventKind::wait), ends = r.of(EventKind::wait_end);
+  const auto waits = r.of<kernel::ev::Wait>();
+  const auto ends = r.of<kernel::ev::WaitEnd>();
   ASSERT_EQ(waits.size(), 1u);
   ASSERT_EQ(ends.size(), 1u);
   EXPECT_EQ(cycle_of(waits[0].t_s), kOneMm);
   EXPECT_EQ(cycle_of(ends[0].t_s), 20);
   for (int i = kOneMm; i < 20; ++i) EXPECT_EQ(r.status[i], ChannelStatus::waiting) << "cycle " << i;
-  EXPECT_EQ(cycle_of(r.of(EventKind::end).at(0).t_s), 20);
+  EXPECT_EQ(cycle_of(r.of<kernel::ev::End>().at(0).t_s), 20);
 }
 
 // MVS_SNS acknowledged during the motion (cycle 3): nothing is left to wait
@@ -207,8 +208,8 @@ TEST(ChannelSync, MvsSnsMovesThenWaitsForTheAcknowledgement) {
 TEST(ChannelSync, MvsSnsAcknowledgedDuringTheMotionDoesNotWait) {
   const Log r = m_function_run(11, sync::MVS_SNS, at(3));
   EXPECT_EQ(r.motion_start(), 0);
-  EXPECT_TRUE(r.of(EventKind::wait).empty());
-  EXPECT_EQ(cycle_of(r.of(EventKind::end).at(0).t_s), kOneMm);
+  EXPECT_TRUE(r.of<kernel::ev::Wait>().empty());
+  EXPECT_EQ(cycle_of(r.of<kernel::ev::End>().at(0).t_s), kOneMm);
 }
 
 // MNS_SNS: nothing before the motion (cycles 0..9); the output leaves in the
@@ -222,15 +223,16 @@ TEST(ChannelSync, MnsSnsOutputsAfterTheMotionThenWaits) {
   EXPECT_DOUBLE_EQ(r.x[kOneMm - 1], 1.0);
   EXPECT_LT(r.x[kOneMm - 2], 1.0);
   EXPECT_EQ(r.motion_start(), 0);
-  const auto outs = r.of(EventKind::plc_out);
+  const auto outs = r.of<kernel::ev::PlcOut>();
   ASSERT_EQ(outs.size(), 1u);
   EXPECT_EQ(cycle_of(outs[0].t_s), kOneMm - 1);
-  const auto waits = r.of(EventKind::wait), ends = r.of(EventKind::wait_end);
+  const auto waits = r.of<kernel::ev::Wait>();
+  const auto ends = r.of<kernel::ev::WaitEnd>();
   ASSERT_EQ(waits.size(), 1u);
   ASSERT_EQ(ends.size(), 1u);
   EXPECT_EQ(cycle_of(waits[0].t_s), kOneMm);
   EXPECT_EQ(cycle_of(ends[0].t_s), kOneMm + 1);
-  EXPECT_EQ(cycle_of(r.of(EventKind::end).at(0).t_s), kOneMm + 1);
+  EXPECT_EQ(cycle_of(r.of<kernel::ev::End>().at(0).t_s), kOneMm + 1);
 }
 
 // MOS: output in cycle 0, never acknowledged, never waited for: the block
@@ -246,8 +248,8 @@ TEST(ChannelSync, MosOutputsWithoutWaitingAndNoSynchIsNotOutput) {
   ASSERT_EQ(r.issued.size(), 1u);
   expect_output(r.issued[0], 0, 13, sync::MOS);
   EXPECT_EQ(r.motion_start(), 0);
-  EXPECT_TRUE(r.of(EventKind::wait).empty());
-  EXPECT_EQ(cycle_of(r.of(EventKind::end).at(0).t_s), kOneMm);
+  EXPECT_TRUE(r.of<kernel::ev::Wait>().empty());
+  EXPECT_EQ(cycle_of(r.of<kernel::ev::End>().at(0).t_s), kOneMm);
 }
 
 // MVS_SLM: M15 alone (N1) goes out in cycle 0 and nothing waits there; the
@@ -268,16 +270,17 @@ TEST(ChannelSync, MvsSlmWaitsAtTheNextFeedMoveNotAtARapidMove) {
   expect_output(r.issued[0], 0, 15, sync::MVS_SLM);
   EXPECT_EQ(r.motion_start(), 0);  // the rapid move does not wait
   EXPECT_DOUBLE_EQ(r.x[kOneMm - 1], 1.0);
-  const auto waits = r.of(EventKind::wait), ends = r.of(EventKind::wait_end);
+  const auto waits = r.of<kernel::ev::Wait>();
+  const auto ends = r.of<kernel::ev::WaitEnd>();
   ASSERT_EQ(waits.size(), 1u);
   ASSERT_EQ(ends.size(), 1u);
   EXPECT_EQ(cycle_of(waits[0].t_s), kOneMm);
-  EXPECT_EQ(waits[0].line, 3u);
-  EXPECT_EQ(waits[0].fn_number, 15);
+  EXPECT_EQ(waits[0].at.line, 3u);
+  EXPECT_EQ(waits[0].number, 15);
   EXPECT_EQ(cycle_of(ends[0].t_s), 30);
   for (int i = kOneMm; i < 30; ++i) EXPECT_DOUBLE_EQ(r.x[i], 1.0) << "cycle " << i;
   EXPECT_NEAR(r.x[30], 1.0 + kStep_mm, 1e-12);
-  EXPECT_EQ(cycle_of(r.of(EventKind::end).at(0).t_s), 30 + kOneMm);
+  EXPECT_EQ(cycle_of(r.of<kernel::ev::End>().at(0).t_s), 30 + kOneMm);
 }
 
 // MVS_SLM acknowledged during the rapid move (cycle 4): the feed move N3
@@ -292,9 +295,9 @@ TEST(ChannelSync, MvsSlmAcknowledgedBeforeTheFeedMoveDoesNotWait) {
   rig.push_block(0, move(3, nc::Motion::linear, 2.0));
   rig.push_block(0, end_block(4));
   const Log r = run(rig.k, at(4));
-  EXPECT_TRUE(r.of(EventKind::wait).empty());
+  EXPECT_TRUE(r.of<kernel::ev::Wait>().empty());
   EXPECT_NEAR(r.x[kOneMm], 1.0 + kStep_mm, 1e-12);
-  EXPECT_EQ(cycle_of(r.of(EventKind::end).at(0).t_s), 2 * kOneMm);
+  EXPECT_EQ(cycle_of(r.of<kernel::ev::End>().at(0).t_s), 2 * kOneMm);
 }
 
 // MVS_SLP: M16 (N1) is output in cycle 0; the feed move N2 (cycles 0..9) does
@@ -312,13 +315,14 @@ TEST(ChannelSync, MvsSlpWaitsAtExplicitSynchronisationOnly) {
   rig.push_block(0, end_block(4));
   const Log r = run(rig.k, at(25));
   EXPECT_EQ(r.motion_start(), 0);
-  const auto waits = r.of(EventKind::wait), ends = r.of(EventKind::wait_end);
+  const auto waits = r.of<kernel::ev::Wait>();
+  const auto ends = r.of<kernel::ev::WaitEnd>();
   ASSERT_EQ(waits.size(), 1u);
   ASSERT_EQ(ends.size(), 1u);
   EXPECT_EQ(cycle_of(waits[0].t_s), kOneMm);
-  EXPECT_EQ(waits[0].line, 3u);
+  EXPECT_EQ(waits[0].at.line, 3u);
   EXPECT_EQ(cycle_of(ends[0].t_s), 25);
-  EXPECT_EQ(cycle_of(r.of(EventKind::end).at(0).t_s), 25);
+  EXPECT_EQ(cycle_of(r.of<kernel::ev::End>().at(0).t_s), 25);
 }
 
 // --- spindle functions ----------------------------------------------------
@@ -371,17 +375,18 @@ TEST(ChannelSync, SpindleWaitEndsInTheCycleAfterSpeedReached) {
   for (int i = 0; i < r.cycles() && reached < 0; ++i)
     if (r.speed_reached[static_cast<std::size_t>(i)]) reached = i;
   EXPECT_EQ(reached, kSpeedReachedAfter);
-  const auto waits = r.of(EventKind::wait), ends = r.of(EventKind::wait_end);
+  const auto waits = r.of<kernel::ev::Wait>();
+  const auto ends = r.of<kernel::ev::WaitEnd>();
   ASSERT_EQ(waits.size(), 1u);
   ASSERT_EQ(ends.size(), 1u);
   EXPECT_EQ(cycle_of(waits[0].t_s), 0);
-  EXPECT_EQ(waits[0].wait_reason, WaitReason::speed_reached);
-  EXPECT_EQ(waits[0].spindle, 0);
+  EXPECT_EQ(waits[0].reason, WaitReason::speed_reached);
+  EXPECT_EQ(waits[0].spindle, std::optional<std::int8_t>(0));
   EXPECT_EQ(waits[0].fn, plc::TechKind::m);
-  EXPECT_EQ(waits[0].fn_number, 3);
+  EXPECT_EQ(waits[0].number, 3);
   EXPECT_EQ(cycle_of(ends[0].t_s), kSpeedReachedAfter + 1);
   EXPECT_EQ(r.motion_start(), kSpeedReachedAfter + 1);
-  EXPECT_EQ(cycle_of(r.of(EventKind::end).at(0).t_s), kSpeedReachedAfter + 1 + kOneMm);
+  EXPECT_EQ(cycle_of(r.of<kernel::ev::End>().at(0).t_s), kSpeedReachedAfter + 1 + kOneMm);
 }
 
 // M3 with PLC_INFO is output and waits for the PLC, with m3_prozess_zeit
@@ -406,10 +411,10 @@ TEST(ChannelSync, UnacknowledgedOutputTimesOutAtItsDeadline) {
   EXPECT_EQ(r.issued[0].cycle, kOneMm);
   EXPECT_EQ(r.issued[0].output.number, 3);
   EXPECT_EQ(r.issued[0].output.value, 1000.0);
-  const auto errors = r.of(EventKind::error);
+  const auto errors = r.of<kernel::ev::Error>();
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_EQ(errors[0].id, ErrorId::PlcAckTimeout);
-  EXPECT_EQ(errors[0].line, 2u);
+  EXPECT_EQ(errors[0].at.line, 2u);
   EXPECT_EQ(cycle_of(errors[0].t_s), kOneMm + 5);
   EXPECT_EQ(r.cycles(), kOneMm + 6);  // done after cycle 15
   EXPECT_EQ(r.status[kOneMm + 4], ChannelStatus::waiting);
@@ -423,20 +428,21 @@ TEST(ChannelSync, UnacknowledgedOutputTimesOutAtItsDeadline) {
 // cycle 100, so N2 moves from cycle 101.
 TEST(ChannelSync, AcknowledgedInTimeThenWaitsForTheSpeed) {
   const Log r = timeout_run(after(4));
-  EXPECT_TRUE(r.of(EventKind::error).empty());
-  const auto waits = r.of(EventKind::wait), ends = r.of(EventKind::wait_end);
+  EXPECT_TRUE(r.of<kernel::ev::Error>().empty());
+  const auto waits = r.of<kernel::ev::Wait>();
+  const auto ends = r.of<kernel::ev::WaitEnd>();
   ASSERT_EQ(waits.size(), 2u);
   ASSERT_EQ(ends.size(), 2u);
   EXPECT_EQ(cycle_of(waits[0].t_s), kOneMm);
-  EXPECT_EQ(waits[0].wait_reason, WaitReason::plc_ack);
+  EXPECT_EQ(waits[0].reason, WaitReason::plc_ack);
   EXPECT_EQ(cycle_of(ends[0].t_s), 14);
   EXPECT_EQ(cycle_of(waits[1].t_s), 14);
-  EXPECT_EQ(waits[1].wait_reason, WaitReason::speed_reached);
+  EXPECT_EQ(waits[1].reason, WaitReason::speed_reached);
   const int moves = kOneMm + kSpeedReachedAfter + 1;
   EXPECT_EQ(cycle_of(ends[1].t_s), moves);
   EXPECT_DOUBLE_EQ(r.x[static_cast<std::size_t>(moves - 1)], 1.0);
   EXPECT_NEAR(r.x[static_cast<std::size_t>(moves)], 1.0 + kStep_mm, 1e-12);
-  EXPECT_EQ(r.of(EventKind::end).at(0).end_reason, EndReason::m30);
+  EXPECT_EQ(r.of<kernel::ev::End>().at(0).reason, EndReason::m30);
 }
 
 // --- programmed stops -----------------------------------------------------
@@ -459,7 +465,7 @@ std::vector<std::uint32_t> stop_lines(bool optional_stop_switch) {
   const Log r = run(rig.k, never(), 10, in);
   EXPECT_TRUE(r.issued.empty());  // M0/M1 are not PLC outputs
   std::vector<std::uint32_t> lines;
-  for (const Event& e : r.of(EventKind::stop)) lines.push_back(e.line);
+  for (const auto& e : r.of<kernel::ev::Stop>()) lines.push_back(e.at.line);
   return lines;
 }
 
@@ -513,12 +519,12 @@ TEST(ChannelSync, SixtyFifthOutstandingOutputIsQueueFull) {
   const Log r = queue_run(never());
   ASSERT_EQ(r.issued.size(), 64u);
   EXPECT_EQ(r.issued.back().cycle, 0);
-  const auto errors = r.of(EventKind::error);
+  const auto errors = r.of<kernel::ev::Error>();
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_EQ(errors[0].id, ErrorId::PlcOutputQueueFull);
-  EXPECT_EQ(errors[0].line, 10u);
+  EXPECT_EQ(errors[0].at.line, 10u);
   EXPECT_EQ(cycle_of(errors[0].t_s), 2);
-  EXPECT_EQ(r.of(EventKind::end).at(0).end_reason, EndReason::error);
+  EXPECT_EQ(r.of<kernel::ev::End>().at(0).reason, EndReason::error);
   EXPECT_EQ(r.status.back(), ChannelStatus::aborted);
 }
 
@@ -528,8 +534,8 @@ TEST(ChannelSync, AnAcknowledgementMakesRoomForTheSixtyFifthOutput) {
   ASSERT_EQ(r.issued.size(), 65u);
   EXPECT_EQ(r.issued.back().cycle, 2);
   EXPECT_EQ(r.issued.back().output.number, 100);
-  EXPECT_TRUE(r.of(EventKind::error).empty());
-  EXPECT_EQ(r.of(EventKind::end).at(0).end_reason, EndReason::m30);
+  EXPECT_TRUE(r.of<kernel::ev::Error>().empty());
+  EXPECT_EQ(r.of<kernel::ev::End>().at(0).reason, EndReason::m30);
 }
 
 }  // namespace

@@ -15,11 +15,10 @@ using testing::xyz_machine;
 
 struct RunLog {
   std::vector<Event> events;  // without the program-state changes
-  const Event& first_error() const {
-    static const Event none;
+  kernel::ev::Error first_error() const {
     for (const Event& e : events)
-      if (e.kind == EventKind::error) return e;
-    return none;
+      if (const auto* error = e.get<kernel::ev::Error>()) return *error;
+    return {};
   }
   std::vector<std::array<double, 3>> positions;
   double end_t = 0;
@@ -32,7 +31,7 @@ RunLog run_all(Kernel& k, std::size_t max_cycles = 1'000'000) {
   for (std::size_t i = 0; i < max_cycles && !k.all_channels_done(); ++i) {
     k.tick(in, out);
     for (const Event& e : out.events)
-      if (e.kind != EventKind::state) r.events.push_back(e);
+      if (e.kind() != EventKind::state) r.events.push_back(e);
     r.positions.push_back({out.channels[0].axis_mcs[0], out.channels[0].axis_mcs[1],
                            out.channels[0].axis_mcs[2]});
     r.end_t = out.t_s;
@@ -118,7 +117,7 @@ TEST(Channel, DwellTakesItsTime) {
   rig.push_block(0, end_block(2));
   RunLog r = run_all(k);
   ASSERT_FALSE(r.events.empty());
-  EXPECT_EQ(r.events.back().kind, EventKind::end);
+  EXPECT_EQ(r.events.back().kind(), EventKind::end);
   EXPECT_NEAR(r.events.back().t_s, 0.25, 1e-9);
 }
 
@@ -129,11 +128,11 @@ TEST(Channel, FeedMoveWithoutFeedIsAnErrorAtItsLine) {
   rig.push_block(0, end_block(8));
   RunLog r = run_all(k);
   auto err = std::find_if(r.events.begin(), r.events.end(),
-                          [](const Event& e) { return e.kind == EventKind::error; });
+                          [](const Event& e) { return e.kind() == EventKind::error; });
   ASSERT_NE(err, r.events.end());
-  EXPECT_EQ(err->id, ErrorId::KernelNoFeed);
-  EXPECT_EQ(err->line, 7u);
-  EXPECT_EQ(r.events.back().end_reason, EndReason::error);
+  EXPECT_EQ(err->get<kernel::ev::Error>()->id, ErrorId::KernelNoFeed);
+  EXPECT_EQ(err->at.line, 7u);
+  EXPECT_EQ(r.events.back().get<kernel::ev::End>()->reason, EndReason::error);
   EXPECT_EQ(k.channel_state(0).status, ChannelStatus::aborted);
 }
 
@@ -146,7 +145,7 @@ TEST(Channel, SoftwareLimitIsAnError) {
   RunLog r = run_all(k);
   ASSERT_FALSE(r.events.empty());
   EXPECT_EQ(r.first_error().id, ErrorId::KernelSoftwareLimit);
-  EXPECT_NE(rig.message(r.first_error().message_index).find("X 60"), std::string::npos);
+  EXPECT_NE(rig.message(r.first_error().message.value()).find("X 60"), std::string::npos);
 }
 
 TEST(Channel, CircleWithBadEndPointIsAnError) {
@@ -171,7 +170,7 @@ TEST(Channel, UnsupportedFunctionIsReportedNotIgnored) {
   RunLog r = run_all(k);
   ASSERT_FALSE(r.events.empty());
   EXPECT_EQ(r.first_error().id, ErrorId::KernelNotYetSupported);
-  EXPECT_NE(rig.message(r.first_error().message_index).find("V.G.WZ_AKT.R"), std::string::npos);
+  EXPECT_NE(rig.message(r.first_error().message.value()).find("V.G.WZ_AKT.R"), std::string::npos);
 }
 
 TEST(Channel, FeedholdStopsAndResumes) {
@@ -204,9 +203,10 @@ TEST(Channel, ResetEndsTheProgram) {
   in.channels[0].reset = true;
   k.tick(in, out);
   ASSERT_EQ(out.events.size(), 2u);  // the state change to idle, then the end
-  EXPECT_EQ(out.events[0].kind, EventKind::state);
-  EXPECT_EQ(out.events[0].state_to, ProgramState::idle);
-  EXPECT_EQ(out.events[1].end_reason, EndReason::reset);
+  ASSERT_TRUE(out.events[0].get<kernel::ev::State>());
+  EXPECT_EQ(out.events[0].get<kernel::ev::State>()->to, ProgramState::idle);
+  ASSERT_TRUE(out.events[1].get<kernel::ev::End>());
+  EXPECT_EQ(out.events[1].get<kernel::ev::End>()->reason, EndReason::reset);
 }
 
 TEST(Kernel, TwoChannelsTickSideBySide) {
@@ -247,9 +247,9 @@ TEST(Channel, HomingMoreOrderGroupsThanABlockHoldsIsAnError) {
   rig.push_block(0, b);
   RunLog r = run_all(rig.k);
   ASSERT_FALSE(r.events.empty());
-  EXPECT_EQ(r.events.back().kind, EventKind::end);
+  EXPECT_EQ(r.events.back().kind(), EventKind::end);
   bool error = false;
-  for (const Event& e : r.events) error = error || (e.kind == EventKind::error && e.id == ErrorId::KernelTooManyHomingGroups);
+  for (const Event& e : r.events) error = error || (e.get<kernel::ev::Error>() && e.get<kernel::ev::Error>()->id == ErrorId::KernelTooManyHomingGroups);
   EXPECT_TRUE(error);
 }
 

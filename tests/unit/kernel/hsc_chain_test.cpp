@@ -20,6 +20,7 @@
 
 #include "nck/config/load.hpp"
 #include "nck/sim/dry_run.hpp"
+#include "../seen_events.hpp"
 
 namespace nck::kernel {
 namespace {
@@ -46,8 +47,8 @@ PathRun run_program(const std::string& program, const char* name) {
     created->step(*out);
     bool starts = false;
     for (const Event& e : out->events) {
-      EXPECT_NE(e.kind, EventKind::error) << number(e.id) << " line " << e.line;
-      starts = starts || (e.kind == EventKind::block && e.channel == 1);
+      EXPECT_NE(e.kind(), EventKind::error) << number(test::diagnosis_id(e)) << " line " << e.at.line;
+      starts = starts || (e.kind() == EventKind::block && e.channel == 1);
     }
     r.x.push_back(out->channels[0].axis_mcs[0]);
     r.y.push_back(out->channels[0].axis_mcs[1]);

@@ -11,6 +11,7 @@
 #include "../../../src/kernel/units/jog_unit.hpp"
 #include "nck/motion/path_profile.hpp"
 #include "test_machine.hpp"
+#include "../seen_events.hpp"
 
 namespace nck::kernel {
 namespace {
@@ -58,7 +59,7 @@ struct Rig {
     top_v_ = std::max(top_v_, std::abs(v));
     highest_x_ = std::max(highest_x_, x);
     for (const Event& e : out->events)
-      if (e.kind == EventKind::warning) warnings.push_back(e.id);
+      if (e.kind() == EventKind::warning) warnings.push_back(test::diagnosis_id(e));
     x_ = x;
     v_ = v;
     return x;
@@ -206,9 +207,9 @@ TEST(Jog, RefusedWhileTheProgramMoves) {
       EXPECT_EQ(out->channels[0].program_state, ProgramState::running);
     }
     for (const Event& e : out->events) {
-      if (e.kind == EventKind::warning && e.id == ErrorId::KernelJogRefused) ++refused;
-      if (e.kind == EventKind::end) ended = true;
-      EXPECT_NE(e.kind, EventKind::error);
+      if (test::diagnosis_id(e) == ErrorId::KernelJogRefused) ++refused;
+      if (e.kind() == EventKind::end) ended = true;
+      EXPECT_NE(e.kind(), EventKind::error);
     }
     EXPECT_FALSE(k.channel_jogging(0));
   }

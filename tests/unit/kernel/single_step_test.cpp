@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "test_machine.hpp"
+#include "../seen_events.hpp"
 
 namespace nck::kernel {
 namespace {
@@ -59,12 +60,13 @@ TEST(SingleStep, HoldsOnlyAtBlockEndsReachedAtStandstill) {
     prev_v = v;
     bool held_now = false;
     for (const Event& e : out->events) {
-      if (e.kind == EventKind::end) ended = true;
-      if (e.kind != EventKind::state || e.state_to != ProgramState::hold) continue;
-      EXPECT_EQ(e.state_reason, StateReason::single_step);
+      if (e.kind() == EventKind::end) ended = true;
+      const auto* state = e.get<kernel::ev::State>();
+      if (!state || state->to != ProgramState::hold) continue;
+      EXPECT_EQ(state->reason, StateReason::single_step);
       // at a chord's end point, exactly
       EXPECT_NEAR(std::fmod(x, kChord_mm), 0.0, 1e-9) << "hold at X " << x;
-      EXPECT_NEAR(x, kChord_mm * e.line, 1e-9);
+      EXPECT_NEAR(x, kChord_mm * e.at.line, 1e-9);
       ++holds;
       held_now = true;
     }

@@ -26,6 +26,7 @@
 #include "nck/config/load.hpp"
 #include "nck/kernel/kernel.hpp"
 #include "nck/sim/dry_run.hpp"
+#include "../seen_events.hpp"
 
 namespace nck::kernel {
 namespace {
@@ -143,8 +144,8 @@ void check_profile(const char* slope, double shape, std::uint32_t seed0, bool ac
       rapid.push_back(ch.cause == CycleCause::rapid);
       bool starts = false;
       for (const Event& e : out->events) {
-        if (e.kind == EventKind::block && e.channel == 1) starts = true;
-        ASSERT_NE(e.kind, EventKind::error) << number(e.id) << " line " << e.line << "\n" << prog.text;
+        if (e.kind() == EventKind::block && e.channel == 1) starts = true;
+        ASSERT_NE(e.kind(), EventKind::error) << number(test::diagnosis_id(e)) << " line " << e.at.line << "\n" << prog.text;
       }
       block_start.push_back(starts);
       // At speed: the path moved in the cycle before the block started.

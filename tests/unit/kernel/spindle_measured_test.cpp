@@ -9,6 +9,7 @@
 #include "nck/kernel/kernel.hpp"
 #include "nck/spindle/positioning.hpp"
 #include "test_machine.hpp"
+#include "../seen_events.hpp"
 
 namespace nck::kernel {
 namespace {
@@ -64,9 +65,9 @@ Outcome run(const std::function<double(double set_rpm)>& measure, int cycles) {
     in.spindle_measured[0] = spindle::DriveFeedback{speed_deg_s, pos_deg, true};
     rig.k.tick(in, out);
     for (const Event& e : out.events)
-      if (e.kind == EventKind::speed_reached) {
+      if (e.kind() == EventKind::speed_reached) {
         ++r.speed_reached_events;
-        r.speed_reached_rpm = e.value;
+        r.speed_reached_rpm = e.get<spindle::SpeedReachedEvent>()->act_rpm;
       }
   }
   r.done = rig.k.all_channels_done();
@@ -113,7 +114,7 @@ TEST(SpindleMeasured, NoMeasuredValuesMeansTheSetPointCounts) {
   int events = 0;
   for (int i = 0; i < 2000 && !rig.k.all_channels_done(); ++i) {
     rig.k.tick(in, out);
-    for (const Event& e : out.events) events += e.kind == EventKind::speed_reached;
+    for (const Event& e : out.events) events += e.kind() == EventKind::speed_reached;
     EXPECT_EQ(rig.k.spindle_status(0).act_rpm, rig.k.spindle_status(0).set_rpm);
   }
   EXPECT_EQ(events, 1);

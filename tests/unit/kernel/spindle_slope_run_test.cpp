@@ -23,6 +23,7 @@
 
 #include "nck/config/load.hpp"
 #include "nck/sim/dry_run.hpp"
+#include "../seen_events.hpp"
 
 namespace nck::kernel {
 namespace {
@@ -73,11 +74,11 @@ SlopeRun run_program(int slope_type, const std::string& program = kProgram) {
   for (int cycle = 0; cycle < 100'000 && !created->done(); ++cycle) {
     created->step(*out);
     for (const Event& e : out->events) {
-      EXPECT_NE(e.kind, EventKind::error) << number(e.id) << " line " << e.line;
-      if (e.kind != EventKind::block) continue;
-      if (e.line == kCaxLine) cax = true;
-      if (e.line == kG1Line) record = true;
-      if (e.line == kCaxOffLine) cax = record = false;
+      EXPECT_NE(e.kind(), EventKind::error) << number(test::diagnosis_id(e)) << " line " << e.at.line;
+      if (e.kind() != EventKind::block) continue;
+      if (e.at.line == kCaxLine) cax = true;
+      if (e.at.line == kG1Line) record = true;
+      if (e.at.line == kCaxOffLine) cax = record = false;
     }
     r.s1_deg_s.push_back(out->spindles[0].set_rpm * 6.0);
     r.axis_mode.push_back(cax);

@@ -19,6 +19,7 @@
 #include "nck/config/load.hpp"
 #include "nck/sim/scenario.hpp"
 #include "nck/sim/dry_run.hpp"
+#include "../seen_events.hpp"
 
 // GCC 12 takes the malloc/free inside these replacements for a mismatch
 // with new/delete at inlined call sites: a known false positive.
@@ -94,7 +95,7 @@ std::uint64_t run_counting(const Example& ex, bool prep_thread = false) {
     g_in_tick = true;
     run->cycle(*out);
     g_in_tick = false;
-    for (const Event& e : out->events) EXPECT_NE(e.kind, EventKind::error) << e.line;
+    for (const Event& e : out->events) EXPECT_NE(e.kind(), EventKind::error) << e.at.line;
     if (run->done()) return cycle + 1;
   }
   return 0;
