@@ -46,7 +46,7 @@ class PathTrack {
 };
 
 // The largest position differences between two tracks (docs/decisions.md,
-// "nck diff compares paths"): for each point of A, the nearest point of B's
+// "Run diff"): for each point of A, the nearest point of B's
 // path, searched forward from the last match within a window of arc
 // length; the `top` largest, at most one per NC line of A.
 nlohmann::ordered_json compare_paths(const PathTrack& a, const PathTrack& b, std::size_t top);

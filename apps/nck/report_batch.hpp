@@ -2,8 +2,8 @@
 // The report's cycles between two folds into its plots: each cycle's time,
 // its plot values (one row) and per channel what the backplot and the
 // cause timeline need. The run's thread only writes here; ReportPlots folds
-// whole batches on its own thread (docs/decisions.md, "The report's plots
-// on a thread").
+// whole batches on its own thread (docs/decisions.md, "Performance-driven
+// decisions", the report's plots on a thread).
 #include <array>
 #include <cstddef>
 #include <cstdint>

@@ -4,7 +4,8 @@
 // into batches (ReportBatch); a thread of their own folds them into the
 // plots, in the order they were recorded, so the page is the same as if the
 // run's thread had folded them itself, and the run does not wait for the
-// report's geometry (docs/decisions.md, "The report's plots on a thread").
+// report's geometry (docs/decisions.md, "Performance-driven decisions", the
+// report's plots on a thread).
 #include <array>
 #include <atomic>
 #include <condition_variable>

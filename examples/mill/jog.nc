@@ -1,8 +1,8 @@
 ; Mill example: manual mode (jog.plc). The program holds at M0 and the
 ; operator jogs X and Y; a cycle start lets it go on. The jog stays in the
 ; machine position as a manual offset, as G201 handwheel travel does
-; (docs/decisions.md), so the rest of the program runs shifted by it and
-; #GET MANUAL OFFSETS reads it.
+; (docs/decisions.md, "Measuring, manual mode, jog and handwheel"), so the
+; rest of the program runs shifted by it and #GET MANUAL OFFSETS reads it.
 %jog
 N10 G17 G90 G0 X0 Y0 Z0
 N20 G1 X50 Y10 F3000

@@ -78,7 +78,7 @@ constexpr ParamInfo kTable[] = {
     {"g00_override_mode", "P-CHAN-00181", C, T::choice, 0, 0, 0, 1, "—", "—", "Which override scales G0 blocks: NOT_USED (0) the feed override, MINIMUM_OF_G0_G1 (1) the smaller of feed and rapid override, ACTIVE (2) the rapid override, ACTIVE_EXTENDED (3) as ACTIVE and continuous jog too.", {},
      "NOT_USED MINIMUM_OF_G0_G1 ACTIVE ACTIVE_EXTENDED 0 1 2 3", "NOT_USED"},
     {"exact_stop_after_g00", "P-CHAN-00235", C, T::boolean, 0, 1, 0, 1, "—", "—", "Every G0 block ends with an exact stop (G60)."},
-    {"configuration.interpolator.number_blocks_lah", "P-CHAN-00653", C, T::integer, 10, 500, 120, 1, "blocks", "blocks", "Motion blocks in the velocity look-ahead window; nck takes at most 120 (its command queue must hold every block the window planned with: docs/decisions.md)."},
+    {"configuration.interpolator.number_blocks_lah", "P-CHAN-00653", C, T::integer, 10, 500, 120, 1, "blocks", "blocks", "Motion blocks in the velocity look-ahead window; nck takes at most 120 (its command queue must hold every block the window planned with: docs/decisions.md, Preparation and look-ahead)."},
     {"move_tool_offsets_directly", "P-CHAN-00100", C, T::boolean, 0, 1, 0, 1, "—", "—", "Tool offsets move with the D word (1) or at the next absolute move (0)."},
     {"modal_i_j_k_for_circle", "P-CHAN-00159", C, T::boolean, 0, 1, 0, 1, "—", "—", "Circle centre I/J/K stay modal."},
     {"use_alias_name_in_ax_list", "P-CHAN-00253", C, T::boolean, 0, 1, 0, 1, "—", "—", "Alias names A1..A32 allowed in axis-specific moves."},

@@ -1,7 +1,8 @@
-// The parabolic corner blend (SegmentKind::parabola, docs/decisions.md
-// "Corner blending"): a quadratic Bezier with equal legs, tangent to both
-// blocks, as large as PATH_DEV and the trims allow. Found in a few steps per
-// corner (preparation places one every few blocks of a dense program).
+// The parabolic corner blend (SegmentKind::parabola, docs/decisions.md,
+// "Continuous path and corner blending"): a quadratic Bezier with equal legs,
+// tangent to both blocks, as large as PATH_DEV and the trims allow. Found in a
+// few steps per corner (preparation places one every few blocks of a dense
+// program).
 #include "nck/motion/corner_blend.hpp"
 
 #include <algorithm>

@@ -113,7 +113,7 @@ struct BlockCtx {
 };
 
 // G4 <axis><s>: TF5200's "first main axis" is the channel's first axis
-// (gruppe[0].achse[0]) in every plane, X on a lathe in G18 (docs/decisions.md).
+// (gruppe[0].achse[0]) in every plane, X on a lathe in G18 (docs/decisions.md, "NC decoder").
 inline constexpr int kDwellAxis = 0;
 
 int find_axis(const BlockCtx& b, std::string_view name_upper);

@@ -2,7 +2,8 @@
 // #SET SLOPE PROFIL[n]: the acceleration profile of the path motions after
 // the block (modal; program start and #SLOPE DEFAULT take P-CHAN-00071).
 // nck has the profile type only: the #SLOPE weighting parameters are
-// refused by name (docs/decisions.md), never silently ignored.
+// refused by name (docs/decisions.md, "Jerk-limited slopes, HSC and
+// dynamic weightings"), never silently ignored.
 #include <fmt/format.h>
 
 #include "hash_parse_util.hpp"

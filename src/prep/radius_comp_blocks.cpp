@@ -131,7 +131,7 @@ std::optional<RadiusComp::State> RadiusComp::report(const nc::Block& b) {
 
 // The transition round an outside corner (k: the offset elements leave a
 // gap), in nose-centre space: an arc of the tool radius about the corner
-// under G26; under G25 the elements' tangents extended (decisions.md "G25/G26").
+// under G26; under G25 the elements' tangents extended (decisions.md, "Tool radius compensation").
 // A line element is lengthened itself, an arc gets a line of its own.
 void RadiusComp::outside_corner(Item& last, Item& next, const trc::Corner& k) {
   const Vec2 tip = last.tip;

@@ -114,9 +114,9 @@ struct SourceRef {          // where a record came from, for diagnostics
 namespace decoder_fct {
 inline constexpr std::uint32_t FCT_DEFAULT = 0x00000000;
 inline constexpr std::uint32_t FCT_NO_DISPLAY = 0x00000400;            // accepted, no effect
-inline constexpr std::uint32_t FCT_USE_CACHED_FILES = 0x00000800;      // see docs/decisions.md
+inline constexpr std::uint32_t FCT_USE_CACHED_FILES = 0x00000800;      // docs/decisions.md, "Machine data"
 inline constexpr std::uint32_t FCT_VOL_COMP_COMPUTATION = 0x00001000;  // accepted, no effect
-inline constexpr std::uint32_t FCT_3D_DIST_CTRL = 0x00100000;          // see docs/decisions.md
+inline constexpr std::uint32_t FCT_3D_DIST_CTRL = 0x00100000;          // docs/decisions.md, "Machine data"
 }  // namespace decoder_fct
 
 // Where a drive's position loop is closed (antr.operation_mode, P-AXIS-00320).
@@ -168,7 +168,8 @@ struct AxisConfig {
   bool diameter_prog_rel = false;                 // P-AXIS-00059 (durchm_prog_rel)
   bool fast_from_cam = true;                    // P-AXIS-00064
   std::string feedhold_deceleration_mode = "DEFAULT_DECELERATION";  // P-AXIS-00556
-  // Manual mode (handbetrieb.*; docs/decisions.md "Manual mode: jog"):
+  // Manual mode (handbetrieb.*; docs/decisions.md, "Measuring, manual mode,
+  // jog and handwheel"):
   double jog_speed_mm_s = 16.666;            // P-AXIS-00077 (tipp.geschw[0]): continuous jog
   double jog_increment_speed_mm_s = 16.666;  // P-AXIS-00076 (jog.geschw[0]): incremental jog
   double manual_max_speed_mm_s = 166.666;    // P-AXIS-00213 (hb.vb_max): caps every jog

@@ -19,7 +19,7 @@
 namespace nck::distctrl {
 
 // The values are the order of the TF5200 list (INACTIVE = 0, ACTIVE = 1;
-// the rest is our numbering, docs/decisions.md).
+// the rest is our numbering, docs/decisions.md, "3D distance control").
 enum class State : std::uint8_t { inactive = 0, active = 1, active_const = 2, freeze = 3, turning_off = 4, error = 5 };
 std::string_view state_name(State s) noexcept;
 

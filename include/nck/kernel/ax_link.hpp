@@ -15,8 +15,9 @@
 
 namespace nck::kernel {
 
-// Documented maxima (docs/decisions.md): groups 0..kMaxLinkGroupNr, at most
-// kMaxLinkPairs pairs per group (P-CHAN-00037/38: paar[0..14]).
+// Documented maxima (docs/decisions.md, "Synchronous operation (AX LINK)"):
+// groups 0..kMaxLinkGroupNr, at most kMaxLinkPairs pairs per group
+// (P-CHAN-00037/38: paar[0..14]).
 inline constexpr std::size_t kMaxLinkPairs = 15;
 inline constexpr int kMaxLinkGroupNr = 31;
 

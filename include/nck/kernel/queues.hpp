@@ -7,7 +7,8 @@
 //             (a G100 measuring result, the handwheel offsets at
 //             #GET MANUAL OFFSETS), as typed records.
 // Both are single-producer / single-consumer and lock-free, so preparation
-// may run in a thread of its own (docs/decisions.md, "threading contract").
+// may run in a thread of its own (docs/decisions.md, "Preparation and
+// look-ahead", threading contract).
 #include <cstdint>
 #include <span>
 

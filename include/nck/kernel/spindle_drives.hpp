@@ -3,8 +3,8 @@
 // within the cycle that commands them: a simulated one (nck/sim's
 // SpindleDrives). The kernel steps them where its spindles make their set
 // points and judges the answer in the same cycle, as a drive model inside
-// the kernel did before it moved to nck/sim (docs/decisions.md, "The spindle
-// drive model lives in the simulation").
+// the kernel did before it moved to nck/sim (docs/decisions.md, "Spindle drive
+// model").
 //
 // A real machine attaches nothing: its drives' measured values come with
 // TickInput::spindle_measured, one cycle after the set point they answer.

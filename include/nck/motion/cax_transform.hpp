@@ -3,7 +3,7 @@
 // describes the contour in Cartesian coordinates, the machine moves a radial
 // axis (X) and the spindle as rotary axis C. Pure functions, noexcept and
 // allocation-free: the planner uses them at setup time, the channel every
-// cycle (docs/decisions.md, "C-axis machining").
+// cycle (docs/decisions.md, "C axis").
 //
 // Face (#FACE [X, C]): the programmed point (x, y) on the face, y written
 // under the C name in mm, is the machine point at radius X and angle C:

@@ -1,9 +1,9 @@
 #pragma once
 // Geometric corner blending (G61/G261 with #CONTOUR MODE [DEV PATH_DEV=..],
-// docs/decisions.md "Corner blending"): a circular fillet tangent to both
-// blocks is put in the corner, and both blocks are shortened to its tangent
-// points. Lines stay lines and arcs stay arcs on their own circle, the
-// fillet is an arc: the kernel executes all three exactly, by path length.
+// docs/decisions.md, "Continuous path and corner blending"): a circular fillet
+// tangent to both blocks is put in the corner, and both blocks are shortened to
+// its tangent points. Lines stay lines and arcs stay arcs on their own circle,
+// the fillet is an arc: the kernel executes all three exactly, by path length.
 // Under STEP the corner may get a parabola instead (blend_corner_parabola,
 // corner_parabola.cpp), also run by path length.
 //

@@ -3,10 +3,10 @@
 // where the theoretical tool tip P lies relative to the centre S of the
 // nose radius, in the plane of the longitudinal axis Z (first, "a") and the
 // facing axis X (second, "b"), +Z to the right and +X up as drawn for a
-// tool behind the turning centre (docs/decisions.md "Cutting-edge position").
-// The tool offsets are measured to P, so P is the point that follows the
-// program; with compensation the nose centre S runs on the offset contour
-// and P = S + tip_from_centre().
+// tool behind the turning centre (docs/decisions.md, "Tool radius
+// compensation", cutting-edge position). The tool offsets are measured to P, so
+// P is the point that follows the program; with compensation the nose centre S
+// runs on the offset contour and P = S + tip_from_centre().
 #include <cstdint>
 
 #include "nck/motion/offset_contour.hpp"

@@ -32,8 +32,8 @@ struct PathLimits {
   double a_acc_mm_s2 = 0.0;
   double a_dec_mm_s2 = 0.0;
   // The acceleration profile and, for TRAPEZ/SIN2/HSC, the ramp times in
-  // force: the longest of the axes involved (docs/decisions.md). STEP
-  // ignores them.
+  // force: the longest of the axes involved (docs/decisions.md, "Jerk-limited
+  // slopes, HSC and dynamic weightings"). STEP ignores them.
   SlopeProfile slope = SlopeProfile::step;
   RampTimes tr{};
   bool operator==(const PathLimits&) const = default;

@@ -164,7 +164,8 @@ double discrete_brake_distance(double v_mm_s, double a_mm_s2, double dt_s) noexc
 // v_end > 0 would come to rest (negative: before it). The profile reaches
 // v_end two cycles before the end and holds it there, so the cycle that
 // passes into the next segment, lying on both, does not change the speed as
-// well (docs/decisions.md, corner blending). 0 for v_end = 0. rt
+// well (docs/decisions.md, "Continuous path and corner blending"). 0 for
+// v_end = 0. rt
 double pass_brake_distance(double v_end_mm_s, double a_mm_s2, double dt_s) noexcept;
 // The same for a segment that holds v_end over hold_cycles cycles' travel. rt
 double pass_brake_distance(double v_end_mm_s, double a_mm_s2, double dt_s, double hold_cycles) noexcept;

@@ -33,12 +33,12 @@ enum class ArcError : std::uint8_t {
 // A short English description of the cause, for diagnostics.
 std::string_view describe(ArcError e) noexcept;
 
-// parabola: a corner blend (docs/decisions.md, corner blending), the
-// quadratic Bezier start -> control point -> end in the plane, run at a
-// uniform Bezier parameter per unit of "path length" s: at a constant
-// path speed every axis accelerates constantly. Its length() is the sum of
-// its two (equal) legs, so s is not the arc length: the path speed is the
-// true speed at both ends and up to cos(turn/2) below it inside.
+// parabola: a corner blend (docs/decisions.md, "Continuous path and corner
+// blending"), the quadratic Bezier start -> control point -> end in the plane,
+// run at a uniform Bezier parameter per unit of "path length" s: at a constant
+// path speed every axis accelerates constantly. Its length() is the sum of its
+// two (equal) legs, so s is not the arc length: the path speed is the true
+// speed at both ends and up to cos(turn/2) below it inside.
 enum class SegmentKind : std::uint8_t { line, arc, parabola };
 
 // How far the start and end radius of a centre-programmed arc may differ:

@@ -39,7 +39,7 @@ struct ModalState {
   bool manual_mode = false;             // G201 (true) / G202 (false, initial)
   bool exact_stop = false;              // G360 (true) / G359 (false, initial)
   bool contour = false;                 // G261 (true) / G260 (false, initial): corner blending
-  double contour_dev_mm = 0.01;         // #CONTOUR MODE [DEV PATH_DEV=..] (docs/decisions.md)
+  double contour_dev_mm = 0.01;         // #CONTOUR MODE [DEV PATH_DEV=..] (docs/decisions.md, "Continuous path and corner blending")
   bool trc_arc_corners = false;         // G26 (true) / G25 (false, initial): TRC outside corners
   SlopeProfile slope = SlopeProfile::step;  // #SLOPE; initial: P-CHAN-00071 (DecoderConfig::slope_default)
 

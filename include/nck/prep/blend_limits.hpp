@@ -1,11 +1,11 @@
 #pragma once
 // The path limits of what corner blending puts into a chain (docs/decisions.md,
-// corner blending): a fillet, and the arcs it joins (STEP). Every plane
-// axis must stay within its a_max (P-AXIS-00008, the hard cap of every
-// acceleration) in every cycle, so the vector sum of the along-path and the
-// across-path (centripetal) acceleration is held within the smaller a_max of
-// the two plane axes; the along-path part stays within the feed
-// accelerations, as on a line. Setup side (preparation).
+// "Continuous path and corner blending"): a fillet, and the arcs it joins
+// (STEP). Every plane axis must stay within its a_max (P-AXIS-00008, the hard
+// cap of every acceleration) in every cycle, so the vector sum of the
+// along-path and the across-path (centripetal) acceleration is held within the
+// smaller a_max of the two plane axes; the along-path part stays within the
+// feed accelerations, as on a line. Setup side (preparation).
 #include <span>
 
 #include "nck/motion/limits.hpp"

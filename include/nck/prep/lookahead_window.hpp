@@ -5,21 +5,21 @@
 //
 // Velocity look-ahead: consecutive motions form a chain when nothing between
 // them needs the path at standstill (an output or spindle function, a wait,
-// a dwell, a stop, G60/G360 ...; see docs/decisions.md). Within a chain each
-// transition may be passed at the planner's corner/feed limit, but never so
-// fast that the blocks after it could not brake in time: the end of the
-// window is taken as a stop (nothing later is known), and a backward pass
-// lowers each transition to what the rest of the chain can absorb. Appending
-// a block only ever raises earlier transitions, so a command that has left
-// is never too fast; the pass stops at the first transition that does not
-// change, which keeps the cost per block small.
+// a dwell, a stop, G60/G360 ...; see docs/decisions.md, "Continuous path and
+// corner blending"). Within a chain each transition may be passed at the
+// planner's corner/feed limit, but never so fast that the blocks after it could
+// not brake in time: the end of the window is taken as a stop (nothing later is
+// known), and a backward pass lowers each transition to what the rest of the
+// chain can absorb. Appending a block only ever raises earlier transitions, so
+// a command that has left is never too fast; the pass stops at the first
+// transition that does not change, which keeps the cost per block small.
 //
-// Corner blending (G61/G261, docs/decisions.md): when a motion chains after
-// one whose end may be blended (PlannedCommand::blend_dev_mm), a circular fillet
-// or (STEP, where its corner costs less time) a parabola
-// (motion/corner_blend.hpp) is put between them as a motion command of its
-// own, both neighbours shortened to its tangent points; where none fits,
-// the corner stays sharp with its velocity limit.
+// Corner blending (G61/G261, docs/decisions.md, "Continuous path and corner
+// blending"): when a motion chains after one whose end may be blended
+// (PlannedCommand::blend_dev_mm), a circular fillet or (STEP, where its corner
+// costs less time) a parabola (motion/corner_blend.hpp) is put between them as
+// a motion command of its own, both neighbours shortened to its tangent points;
+// where none fits, the corner stays sharp with its velocity limit.
 //
 // This is also where tool radius compensation will act on a span of
 // upcoming blocks. Setup side: never called from tick().

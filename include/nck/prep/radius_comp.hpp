@@ -1,9 +1,9 @@
 #pragma once
 // Tool radius compensation G40/G41/G42 as a buffering stage between the
-// decoder and the planner (docs/decisions.md "TRC"). It works on decoded
-// blocks in program coordinates of the working plane, before the offset
-// chain: it rewrites the plane-axis words (and circle centres) of each
-// motion block to the tool-centre path and inserts corner arcs, so the
+// decoder and the planner (docs/decisions.md, "Tool radius compensation"). It
+// works on decoded blocks in program coordinates of the working plane, before
+// the offset chain: it rewrites the plane-axis words (and circle centres) of
+// each motion block to the tool-centre path and inserts corner arcs, so the
 // planner plans the compensated path like any programmed one.
 //
 // An element's end depends on the next motion in the plane, so the stage
@@ -45,7 +45,8 @@ class RadiusComp {
   // element before the next one (TF5200 90011 beyond).
   static constexpr std::size_t kMaxHeld = 8;
   // A compensated element leaves only when this many elements after it have
-  // been checked against it for crossings (docs/decisions.md "Bottlenecks").
+  // been checked against it for crossings (docs/decisions.md, "Tool radius
+  // compensation", bottlenecks).
   static constexpr std::size_t kCheckDepth = 8;
 
   RadiusComp(const config::Machine& m, std::size_t channel);

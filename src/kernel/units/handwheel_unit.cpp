@@ -13,7 +13,8 @@ void HandwheelUnit::start(const ManualChange* c) noexcept {
   share_start_ = share_;
 }
 
-// The offset is travelled at a limited speed (docs/decisions.md).
+// The offset is travelled at a limited speed (docs/decisions.md,
+// "Measuring, manual mode, jog and handwheel").
 Fault HandwheelUnit::follow_offsets(Cycle& cy, std::uint32_t manual_axes) noexcept {
   // Until the first G201 every handwheel offset is zero: nothing to follow.
   const double step = kHandwheelSpeed_mm_s * cy.dt_s;

@@ -8,7 +8,8 @@
 //
 // The unit only computes each axis's travel per cycle; the channel adds it
 // to the axis's manual offset (the handwheel unit), so a jog is kept for
-// the program as G201 handwheel travel is (docs/decisions.md).
+// the program as G201 handwheel travel is (docs/decisions.md, "Measuring,
+// manual mode, jog and handwheel").
 #include <array>
 #include <cstdint>
 

@@ -73,7 +73,7 @@ void SpindlePathUnit::limit_path(motion::PathProfile& path, ChannelContext& ctx)
   const spindle::SpindleStatus& st = u->axis.status();
   switch (f.kind) {
     case FeedLinkKind::per_rev:
-      // The spindle's set-point speed of this cycle (docs/decisions.md: a
+      // The spindle's set-point speed of this cycle (docs/decisions.md, "Spindle-path couplings": a
       // ramping spindle takes the feed with it).
       path.set_velocity_limit(link_velocity_mm_s(f.use_programmed ? f.programmed_rpm : st.set_rpm, f.mm_per_rev));
       break;

@@ -216,7 +216,7 @@ bool CaxUnit::trafo_plane(int& a, int& b) const {
   return true;
 }
 
-// Limits of a motion under #FACE / #CYL (docs/decisions.md): the Cartesian
+// Limits of a motion under #FACE / #CYL (docs/decisions.md, "C axis"): the Cartesian
 // C has the radial axis's dynamics (face) or C's scaled to the reference
 // radius (cylinder); on the face the path speed is further limited so that
 // C's angular speed, growing near the centre, stays within C's own.
@@ -274,7 +274,7 @@ PlannedCommand as_part_of(const PlannedCommand& block, const PlannedCommand& pie
 // (the tool stands at the centre, so only C moves); on a lathe
 // (cax_face_id 1), where X stays >= 0, a line through the centre is split
 // there and C turns half a turn between the halves. The mill lets X pass
-// through 0 instead (docs/decisions.md). At most three commands: line to
+// through 0 instead (docs/decisions.md, "C axis"). At most three commands: line to
 // the centre, turn, line from it; the first carries the block's functions.
 void CaxUnit::face_centre_commands(const PlannedCommand& c, PlannedBlock& out, const PlanContext& ctx) {
   const motion::CaxTrafo& t = c.trafo;

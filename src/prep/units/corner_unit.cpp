@@ -1,6 +1,6 @@
 // What the look-ahead needs of each motion block (docs/decisions.md,
-// continuous path): whether it must end at standstill, and how fast the path
-// may pass into it from the motion planned before it.
+// "Continuous path and corner blending"): whether it must end at standstill,
+// and how fast the path may pass into it from the motion planned before it.
 #include <algorithm>
 #include <cmath>
 
@@ -83,7 +83,8 @@ void CornerUnit::note_transition(const nc::Block& b, PlannedCommand& c, bool rap
   c.exact_stop = b.g_nonmodal.has(nc::GCode::g60) || b.modal.exact_stop ||
                  (rapid && channel.exact_stop_after_g00);
   // G61 (this block) or G261 (modal): the look-ahead window may blend the
-  // corner at this feed motion's end (docs/decisions.md, corner blending).
+  // corner at this feed motion's end (docs/decisions.md, "Continuous path and
+  // corner blending").
   const bool blend = b.g_nonmodal.has(nc::GCode::g61) || b.modal.contour;
   c.blend_dev_mm = blend && !rapid && !c.exact_stop && !c.mapped ? b.modal.contour_dev_mm : 0;
   // Under #FACE/#CYL the segment is Cartesian and the machine axes follow

@@ -20,7 +20,7 @@ PlanResult CssUnit::plan(const nc::Block& b, PlannedCommand& c, const PlanContex
     return block_error(ErrorId::KernelCssNoFaceAxis, b, "G96 needs a face axis (achs_mode 0x40, or one named X)");
   const bool new_speed = !on_ || v_m_min_ != m.css_m_min;
   // The radius is the tool tip's: the programmed X plus the zero offsets, i.e.
-  // the machine X less the tool offset (docs/decisions.md). Where the
+  // the machine X less the tool offset (docs/decisions.md, "Spindle-path couplings"). Where the
   // turning centre is in machine X: 0 shifted by the tool offset.
   const auto ux = static_cast<std::size_t>(x);
   const motion::AxisVector& pcs = ctx.planned.pcs;

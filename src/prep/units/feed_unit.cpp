@@ -72,7 +72,8 @@ PlanResult FeedUnit::thread_link(const nc::Block& b, const motion::AxisVector& s
     if (s.offset_deg && s.spindle_index && *s.spindle_index == main_.list_index) thread_offset_deg_ = *s.offset_deg;
   f.start_deg = thread_offset_deg_;
   // A thread chain must not slow down or stop between its blocks: the feed
-  // override does not act on it (P-CHAN-00837, docs/decisions.md).
+  // override does not act on it (P-CHAN-00837, docs/decisions.md,
+  // "Spindle-path couplings").
   f.ignore_override = ctx.channel.thread_ignore_override || ctx.channel.thread_chain;
   return {};
 }

@@ -176,7 +176,7 @@ TEST(CAxis, FaceSpeedNearTheCentreKeepsCWithinItsDynamics) {
   // A line passing the centre at 0.05 mm: C turns 180 deg there, at
   // 1/0.05 rad = 1145.9 deg per mm of path. At F6000 (100 mm/s) C would
   // need 114592 deg/s, more than S1's max_speed_mm_s (72000 deg/s); the path slows
-  // so that C turns at most 45 deg per 1 ms cycle (docs/decisions.md), and
+  // so that C turns at most 45 deg per 1 ms cycle (docs/decisions.md, "C axis"), and
   // the machine point stays on the programmed line.
   const auto dir = temp_dir("cax_near");
   const CliResult r = run_program("near", R"(N10 G90 G0 X0 Y0 Z50

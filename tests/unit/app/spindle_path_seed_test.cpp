@@ -1,6 +1,6 @@
 // The thread-cutting programs of FCT-S1 2.8.7 run end to end; the start
 // angles of the passes are read from the trace (S1.pos). Where the seed's
-// text is inconsistent the reading is in docs/decisions.md: the calls
+// text is inconsistent the reading is in docs/decisions.md, "Spindle-path couplings": the calls
 // `LL longitudinal thread` name the subroutine defined as `%L longit_thread`;
 // repeated N numbers stay. The lathe programs run with their G51 (the
 // lathe's X takes diameters); the tapered thread runs on the mill, which has

@@ -71,7 +71,7 @@ TEST(SpindlePath, ProfileWithG95FeedsSpeedTimesFeedPerRevolution) {
   EXPECT_NEAR(r.block_t(80) - r.block_t(70), 5.625, 0.01);
 }
 
-// Decision (docs/decisions.md): under G95 the path follows the spindle's
+// Decision (docs/decisions.md, "Spindle-path couplings"): under G95 the path follows the spindle's
 // set-point speed of each cycle, also while the spindle still ramps.
 TEST(SpindlePath, G95FollowsTheRampingSpindleEachCycle) {
   const PathRun r = run_text("lathe", "G18 G90\nM3 S400\nG0 X10 Z2\nG95 F0.2 S800 G1 Z-20\nM30\n", "g95ramp");

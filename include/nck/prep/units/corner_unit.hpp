@@ -1,9 +1,9 @@
 #pragma once
-// Continuous path in preparation (docs/decisions.md): what the look-ahead
-// needs of each motion block — whether it must end at standstill, how fast
-// the path may pass into it from the motion planned before it, and which
-// corners may be blended. Owns the last planned motion and each axis's
-// velocity budget for a kink.
+// Continuous path in preparation (docs/decisions.md, "Continuous path and
+// corner blending"): what the look-ahead needs of each motion block — whether
+// it must end at standstill, how fast the path may pass into it from the motion
+// planned before it, and which corners may be blended. Owns the last planned
+// motion and each axis's velocity budget for a kink.
 #include <array>
 
 #include "nck/prep/lookahead_window.hpp"
