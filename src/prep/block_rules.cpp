@@ -101,14 +101,14 @@ PlanResult add_outputs(const nc::Block& b, PlannedCommand& c, const config::Chan
                                    : config::sync::MOS;
     // A channel M function with NO_SYNCH is not output (FCT-S1 2.5).
     if (sync == config::sync::NO_SYNCH) continue;
-    if (!c.outputs.push_back({TechKind::m, m, sync})) return overflow();
+    if (!c.attach_within(kernel::Output{TechKind::m, m, sync}, PlannedCommand::kMaxOutputs)) return overflow();
   }
   for (int h : b.h)
-    if (!c.outputs.push_back({TechKind::h, h, config::sync::MOS})) return overflow();
+    if (!c.attach_within(kernel::Output{TechKind::h, h, config::sync::MOS}, PlannedCommand::kMaxOutputs)) return overflow();
   // #TOOL PREP [basic, ...] is the T word's form (TF5200 #TOOL PREP): the PLC gets the basic number.
   std::optional<std::int64_t> t = b.t;
   if (const auto* td = b.hash ? std::get_if<nc::ToolData>(&*b.hash) : nullptr; td && td->prep) t = td->fields[0];
-  if (t && !c.outputs.push_back({TechKind::t, static_cast<std::int32_t>(*t), config::sync::MOS}))
+  if (t && !c.attach_within(kernel::Output{TechKind::t, static_cast<std::int32_t>(*t), config::sync::MOS}, PlannedCommand::kMaxOutputs))
     return overflow();
   return {};
 }

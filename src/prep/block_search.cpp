@@ -26,8 +26,8 @@ void erase_where(std::vector<T>& v, Pred p) {
 }  // namespace
 
 void SearchCollector::take(const PlannedCommand& c) {
-  for (const kernel::Output& o : c.outputs) take(o);
-  for (const kernel::SpindleAction& a : c.spindle_actions) take(a);
+  c.each<kernel::Output>([&](const kernel::Output& o) { take(o); });
+  c.each<kernel::SpindleAction>([&](const kernel::SpindleAction& a) { take(a); });
 }
 
 // The last T only (a tool change replays once); the last of each M and H number.
@@ -65,16 +65,15 @@ std::vector<PlannedCommand> SearchCollector::commands(const PlannedCommand& like
   std::vector<PlannedCommand> out;
   PlannedCommand c;
   c.kind = CommandKind::nop;
-  c.file_id = like.file_id;
-  c.line = like.line;
-  c.has_n = like.has_n;
-  c.n = like.n;
-  c.emit_block_event = false;
+  c.head.file_id = like.head.file_id;
+  c.head.line = like.head.line;
+  c.head.n = like.head.n;
+  c.head.emit_block_event = false;
   std::size_t o = 0, a = 0;
   while (o < outputs_.size() || a < actions_.size()) {
     PlannedCommand batch = c;
-    while (o < outputs_.size() && batch.outputs.push_back(outputs_[o])) ++o;
-    while (a < actions_.size() && batch.spindle_actions.push_back(actions_[a])) ++a;
+    while (o < outputs_.size() && batch.attach_within(outputs_[o], PlannedCommand::kMaxOutputs)) ++o;
+    while (a < actions_.size() && batch.attach_within(actions_[a], PlannedCommand::kMaxSpindleActions)) ++a;
     out.push_back(batch);
   }
   return out;
@@ -110,8 +109,8 @@ namespace nck::prep {
 PlannedCommand SearchRun::begins() {
   PlannedCommand c;
   c.kind = CommandKind::nop;
-  c.emit_block_event = false;
-  c.restart = kernel::Restart::search_begins;
+  c.head.emit_block_event = false;
+  c.head.restart = kernel::Restart::search_begins;
   return c;
 }
 
@@ -136,25 +135,25 @@ std::expected<std::vector<PlannedBlock>, Diagnostic> SearchRun::restart(PlannedB
                                              "restart at a block before the transformation is switched on"));
     // Only the (rest of the) motion runs for real: its functions were met in search.
     collected_.take(*move);
-    move->outputs.clear();
-    move->spindle_actions.clear();
+    move->detach<kernel::Output>();
+    move->detach<kernel::SpindleAction>();
     const double covered = std::clamp(matcher_.mark().covered_permille, 0.0, 1000.0) / 1000.0;
     if (covered > 0) move->segment = move->segment.remainder(covered * move->segment.length());
     if (!(move->segment.length() > 0)) move->kind = CommandKind::nop;
     target = move->segment.start_point();
-    if (move->mapped) move->map.apply(move->segment.start_point(), target, planner.axis_count());
+    if (const auto* map = move->find<kernel::ProgramMap>())
+      map->map.apply(move->segment.start_point(), target, planner.axis_count());
   }
   PlannedCommand back = planner.return_motion(start_mcs_, target);
   if (!planned.empty()) {
-    back.file_id = planned[0].file_id;
-    back.line = planned[0].line;
-    back.has_n = planned[0].has_n;
-    back.n = planned[0].n;
+    back.head.file_id = planned[0].head.file_id;
+    back.head.line = planned[0].head.line;
+    back.head.n = planned[0].head.n;
   }
-  back.emit_block_event = false;
-  back.restart = matcher_.mark().no_hold_at_restart ? kernel::Restart::returns_no_hold : kernel::Restart::returns;
+  back.head.emit_block_event = false;
+  back.head.restart = matcher_.mark().no_hold_at_restart ? kernel::Restart::returns_no_hold : kernel::Restart::returns;
   for (PlannedCommand& c : collected_.commands(back)) {
-    c.restart = kernel::Restart::search_begins;  // still searching: the PLC gets what was met
+    c.head.restart = kernel::Restart::search_begins;  // still searching: the PLC gets what was met
     PlannedBlock b;
     (void)b.push_back(c);
     out.push_back(b);

@@ -168,7 +168,10 @@ bool ChannelPrep::prepare(const nc::Block& b, kernel::CommandQueue& commands) {
 
 namespace {
 
-void set_trc_event(PlannedCommand& c, const RadiusComp::State& s) { c.trc = kernel::TrcChange{s.mode, s.d, s.radius_mm}; }
+void set_trc_event(PlannedCommand& c, const RadiusComp::State& s) {
+  c.detach<trc::TrcChange>();
+  c.attach(trc::TrcChange{s.mode, s.d, s.radius_mm});
+}
 
 }  // namespace
 
@@ -189,12 +192,12 @@ bool ChannelPrep::plan_out(const nc::Block& block, bool inserted, const std::opt
   if (!planned.empty()) attach_warnings(planned[0]);
   if (!error) {
     if (inserted)
-      for (PlannedCommand& c : planned) c.emit_block_event = false;
+      for (PlannedCommand& c : planned) c.head.emit_block_event = false;
     else if (const auto st = trc_.report(block); st && !planned.empty())
       set_trc_event(planned[0], *st);
     if (record_frames_) {
       const std::uint32_t frame = frame_index_now();
-      for (PlannedCommand& c : planned) c.frame_index = frame;
+      for (PlannedCommand& c : planned) c.head.frame_index = frame;
     }
   }
   if (in_mdi_) mark_mdi(planned);
@@ -233,7 +236,7 @@ void ChannelPrep::search_out(const nc::Block& block, const PlannedBlock& planned
   for (PlannedBlock& b : *restart) {
     if (record_frames_) {
       const std::uint32_t frame = frame_index_now();
-      for (PlannedCommand& c : b) c.frame_index = frame;
+      for (PlannedCommand& c : b) c.head.frame_index = frame;
     }
     if (!b.empty()) attach_warnings(b[0]);
     queue(b, commands);
@@ -352,9 +355,9 @@ void ChannelPrep::start_mdi() {
 void ChannelPrep::finish_mdi(kernel::CommandQueue& commands) {
   PlannedCommand end;
   end.kind = CommandKind::nop;
-  end.emit_block_event = false;
-  end.file_id = decoder_->file_id(nc::kMdiFileName).value_or(0);
-  end.mdi = kernel::Mdi::end;
+  end.head.emit_block_event = false;
+  end.head.file_id = decoder_->file_id(nc::kMdiFileName).value_or(0);
+  end.head.mdi = kernel::Mdi::end;
   PlannedBlock b;
   (void)b.push_back(end);
   attach_warnings(b[0]);
@@ -368,7 +371,7 @@ void ChannelPrep::finish_mdi(kernel::CommandQueue& commands) {
 
 void ChannelPrep::mark_mdi(PlannedBlock& b) const {
   for (PlannedCommand& c : b)
-    if (c.mdi == kernel::Mdi::none) c.mdi = kernel::Mdi::block;
+    if (c.head.mdi == kernel::Mdi::none) c.head.mdi = kernel::Mdi::block;
 }
 
 }  // namespace nck::prep

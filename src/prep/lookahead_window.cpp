@@ -22,8 +22,8 @@ constexpr double kIntoFilletShare = 0.8;
 // output, spindle function, probing, manual mode or feedback. Only then can
 // the path run through its ends.
 bool is_quiet(const PlannedCommand& c) {
-  return c.outputs.empty() && c.spindle_actions.empty() && !c.measure && c.manual_on == 0 &&
-         c.manual_off == 0 && !c.get_manual_offsets && !c.expl_syn;
+  return !c.has<kernel::Output>() && !c.has<kernel::SpindleAction>() && !c.has<kernel::ManualChange>() &&
+         !c.measure && !c.head.expl_syn;
 }
 
 // A block without motion the path may run through (it only writes events).
@@ -31,11 +31,10 @@ bool is_transparent(const PlannedCommand& c) { return c.kind == CommandKind::nop
 
 // An MVS_SLM function: the channel waits for it when the next G1/G2/G3 starts.
 bool waits_at_next_feed_motion(const PlannedCommand& c) {
-  for (const kernel::Output& o : c.outputs)
-    if (kernel::sync_point(o.sync) == SyncPoint::late_motion) return true;
-  for (const kernel::SpindleAction& a : c.spindle_actions)
-    if (a.sync == SyncPoint::late_motion) return true;
-  return false;
+  bool late = false;
+  c.each<kernel::Output>([&](const kernel::Output& o) { late = late || kernel::sync_point(o.sync) == SyncPoint::late_motion; });
+  c.each<kernel::SpindleAction>([&](const kernel::SpindleAction& a) { late = late || a.sync == SyncPoint::late_motion; });
+  return late;
 }
 
 }  // namespace
@@ -50,7 +49,7 @@ bool LookAheadWindow::push(const PlannedBlock& b) {
 }
 
 void LookAheadWindow::append(const PlannedCommand& command) {
-  const bool must_wait = late_wait_pending_ && command.feed_motion;
+  const bool must_wait = late_wait_pending_ && command.head.feed_motion;
   const bool linkable = command.kind == CommandKind::motion && open_motion_ != 0 && open_motion_ - 1 >= head_ &&
                         is_quiet(command) && !must_wait;
   // A fillet goes in first (it chains after the motion before and becomes
@@ -88,7 +87,7 @@ void LookAheadWindow::store(const PlannedCommand& c, bool linkable, double progr
   } else if (!is_transparent(c)) {
     open_motion_ = 0;
   }
-  if (c.feed_motion) late_wait_pending_ = false;  // taken when this block starts
+  if (c.head.feed_motion) late_wait_pending_ = false;  // taken when this block starts
   if (waits_at_next_feed_motion(c)) late_wait_pending_ = true;
 }
 
@@ -238,7 +237,7 @@ std::optional<motion::CornerBlend> LookAheadWindow::corner_blend(const Entry& p,
 // than the sharp corner.
 bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   Entry& p = at(prev);
-  if (axes_.n_axes == 0 || !next.feed_motion || next.mapped || next.trafo.kind != motion::CaxTrafoKind::none ||
+  if (axes_.n_axes == 0 || !next.head.feed_motion || next.has<kernel::ProgramMap>() || next.trafo.kind != motion::CaxTrafoKind::none ||
       next.feed_link.kind != kernel::FeedLinkKind::none)
     return false;
   // Only a corner that slows the path gets a fillet (a kink that passes at
@@ -256,16 +255,15 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   PlannedCommand f;
   f.weights = w;
   f.kind = CommandKind::motion;
-  f.file_id = p.command.file_id;
-  f.line = p.command.line;
-  f.has_n = p.command.has_n;
-  f.n = p.command.n;
-  f.emit_block_event = false;  // a follow-up of the block before
+  f.head.file_id = p.command.head.file_id;
+  f.head.line = p.command.head.line;
+  f.head.n = p.command.head.n;
+  f.head.emit_block_event = false;  // a follow-up of the block before
   f.segment = cb->corner;
   f.limits = blend_limits;
   f.v_cmd_mm_s = std::min(p.command.v_cmd_mm_s, next.v_cmd_mm_s);
   f.css = p.command.css;
-  f.feed_motion = true;
+  f.head.feed_motion = true;
   f.manual_offset_axes = p.command.manual_offset_axes;
   if (!motion::valid(f.limits) || cruise(f) <= next.v_entry_max_mm_s) return false;
   // Every piece must take more than a cycle's travel, or the profile would

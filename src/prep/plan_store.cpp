@@ -7,14 +7,16 @@ namespace nck::prep {
 void add_warnings(PlannedCommand& c, const std::vector<Diagnostic>& warnings, PlanStore& store) {
   for (std::size_t i = 0; i < warnings.size(); ++i) {
     const Diagnostic& w = warnings[i];
-    if (c.warnings.size() + 1 < PlannedCommand::kMaxWarnings || i + 1 == warnings.size()) {
-      if (!c.warnings.push_back({w.id, store.add_message(w.message)})) break;
+    const std::size_t held = c.count<kernel::Warning>();
+    if (held + 1 < PlannedCommand::kMaxWarnings || i + 1 == warnings.size()) {
+      if (!c.attach_within(kernel::Warning{w.id, store.add_message(w.message)}, PlannedCommand::kMaxWarnings)) break;
       continue;
     }
     const std::size_t more = warnings.size() - i;  // this one and the rest
-    (void)c.warnings.push_back({ErrorId::KernelWarningsDropped,
-                                store.add_message(fmt::format("{} more warning(s) of this block, the first: {}",
-                                                              more, w.message))});
+    (void)c.attach_within(kernel::Warning{ErrorId::KernelWarningsDropped,
+                                          store.add_message(fmt::format("{} more warning(s) of this block, the first: {}",
+                                                                        more, w.message))},
+                          PlannedCommand::kMaxWarnings);
     break;
   }
 }

@@ -85,10 +85,9 @@ PlanResult Planner::plan_one(const nc::Block& b, PlannedCommand& c, PlanContext&
   modal_ = b.modal;
   if (auto r = check_supported(b); !r) return std::unexpected(r.error());
   if (auto r = check_spindle_scope(b); !r) return std::unexpected(r.error());
-  c.file_id = b.file_id;
-  c.line = b.line;
-  c.has_n = b.n.has_value();
-  c.n = b.n.value_or(0);
+  c.head.file_id = b.file_id;
+  c.head.line = b.line;
+  c.head.n = b.n;
   if (auto r = add_outputs(b, c, channel_); !r) return std::unexpected(r.error());
   if (auto r = plan_technologies(b, c, ctx); !r) return std::unexpected(r.error());
   return plan_execution(b, c, ctx);
@@ -108,13 +107,13 @@ PlanResult Planner::plan_technologies(const nc::Block& b, PlannedCommand& c, Pla
   if (auto r = dist_.plan(b, c, ctx); !r) return r;
   auto actions = spindles_.plan(couplings_.with_slaves(b, with_slaves_scratch_, channel_));
   if (!actions) return std::unexpected(actions.error());
-  c.spindle_actions = *actions;
+  for (const kernel::SpindleAction& a : *actions) c.attach(a);
   couplings_.end_program(b);
   const PlannedSpindle& main = main_planned();
   if (auto r = feed_.plan_block(b, c, ctx, main); !r) return r;
   const MainSpindle& ms = feed_.main_spindle();
   if (auto r = css_.plan(b, c, ctx, ms, ms.vb_max_rpm(*machine_, channel_, main.gear_stage)); !r) return r;
-  c.expl_syn = b.hash && std::holds_alternative<nc::ExplSyn>(*b.hash);
+  c.head.expl_syn = b.hash && std::holds_alternative<nc::ExplSyn>(*b.hash);
   manual_.plan(b, c, n_axes_);
   return {};
 }
@@ -139,9 +138,9 @@ PlanResult Planner::apply_frames(const nc::Block& b, PlannedCommand& c) {
   add_warnings(c, changes->warnings, store_);
   for (frames::OffsetKind k : changes->kinds) {
     const std::string kind(frames::to_string(k));
-    const bool seen = std::any_of(c.offset_events.begin(), c.offset_events.end(),
-                                  [&](std::uint32_t i) { return store_.offsets[i].kind == kind; });
-    if (!seen) (void)c.offset_events.push_back(store_.add_offset({kind, frames_.values_of(k, true)}));
+    bool seen = false;
+    c.each<frames::OffsetEvent>([&](const frames::OffsetEvent& e) { seen = seen || store_.offsets[e.index].kind == kind; });
+    if (!seen) c.attach(frames::OffsetEvent{store_.add_offset({kind, frames_.values_of(k, true)})});
   }
   // After a change of coordinate system the axes stay where they are: their
   // program position is read anew in the new system.
@@ -153,25 +152,24 @@ PlanResult Planner::apply_frames(const nc::Block& b, PlannedCommand& c) {
 PlanResult Planner::plan_execution(const nc::Block& b, PlannedCommand& c, PlanContext& ctx) {
   if (b.program_end) {
     c.kind = CommandKind::end;
-    c.end_reason = std::find(b.m.begin(), b.m.end(), 2) != b.m.end() ? EndReason::m2 : EndReason::m30;
+    c.step = kernel::End{std::find(b.m.begin(), b.m.end(), 2) != b.m.end() ? EndReason::m2 : EndReason::m30};
     return {};
   }
   if (b.stop || b.optional_stop) {
     c.kind = CommandKind::stop;
-    c.optional_stop = !b.stop;  // M0 and M1 together: M0 wins
+    c.step = kernel::Hold{!b.stop};  // M0 and M1 together: M0 wins
     return {};
   }
   if (b.dwell_s) {
     c.kind = CommandKind::dwell;
-    c.dwell_s = std::max(0.0, *b.dwell_s);
+    c.step = kernel::Dwell{std::max(0.0, *b.dwell_s), std::nullopt};
     return {};
   }
   if (b.dwell_revs) {
     if (!feed_.main_spindle().exists())
       return block_error(ErrorId::KernelLinkNoSpindle, b, "G4 S.. counts main-spindle revolutions: the channel has none");
     c.kind = CommandKind::dwell;
-    c.dwell_revs = std::max(0.0, *b.dwell_revs);
-    c.dwell_spindle = feed_.main_spindle().kernel;
+    c.step = kernel::Dwell{0, kernel::Dwell::Revolutions{std::max(0.0, *b.dwell_revs), feed_.main_spindle().kernel}};
     return {};
   }
   if (b.g_nonmodal.has(nc::GCode::g100)) {
@@ -186,7 +184,7 @@ PlanResult Planner::plan_execution(const nc::Block& b, PlannedCommand& c, PlanCo
   const bool words_are_motion = !b.manual_g && !b.g_nonmodal.has_any(kAxisWordsAreValues);
   const bool circle = b.modal.motion == nc::Motion::cw || b.modal.motion == nc::Motion::ccw;
   if (words_are_motion && (b.has_axis_words() || (circle && (b.ijk[0] || b.ijk[1] || b.ijk[2])))) {
-    c.feed_motion = b.modal.motion != nc::Motion::rapid;
+    c.head.feed_motion = b.modal.motion != nc::Motion::rapid;
     return plan_motion(b, c, ctx);
   }
   // P-CHAN-00100 move_tool_offsets_directly 1: a new tool offset is moved
@@ -283,8 +281,7 @@ PlanResult Planner::plan_arc(const nc::Block& b, PlannedCommand& c, const motion
   if (!seg) return std::unexpected(seg.error());
   c.segment = *seg;
   if (map.pure_translation) return {};
-  c.mapped = true;
-  c.map = map;
+  c.attach(kernel::ProgramMap{map});
   // A rotated circle loads the main axes in turn: every main axis gets the
   // smallest main-axis limit.
   motion::AxisDynamics lo = dyn[0];

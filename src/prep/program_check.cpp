@@ -133,11 +133,12 @@ void ChannelCheck::prepare(const nc::Block& b) {
 
 
 void ChannelCheck::record(const PlannedCommand& c) {
-  const std::string& file = decoder_.file_name(c.file_id);
-  for (const kernel::Warning& w : c.warnings)
-    add(Diagnostic{w.id, Severity::warning, {file, c.line, 0}, message(w.message_index)});
-  if (c.kind == CommandKind::error) {
-    add(Diagnostic{c.error_id, Severity::error, {file, c.line, 0}, message(c.message_index)});
+  const std::string& file = decoder_.file_name(c.head.file_id);
+  c.each<kernel::Warning>([&](const kernel::Warning& w) {
+    add(Diagnostic{w.id, Severity::warning, {file, c.head.line, 0}, message(w.message_index)});
+  });
+  if (const auto* error = std::get_if<kernel::Error>(&c.step); error && c.kind == CommandKind::error) {
+    add(Diagnostic{error->id, Severity::error, {file, c.head.line, 0}, message(error->message_index)});
     return;
   }
   spindle_found_.clear();

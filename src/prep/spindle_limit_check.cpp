@@ -35,7 +35,10 @@ SpindleLimitCheck::Tracked* SpindleLimitCheck::find(std::int8_t kernel) {
 
 void SpindleLimitCheck::check(const PlannedCommand& c, std::vector<Diagnostic>& out) {
   using kernel::SpindleOp;
-  for (const kernel::SpindleAction& a : c.spindle_actions) {
+  for (const kernel::Attachment& attached : c.attachments) {
+    const auto* action = std::get_if<kernel::SpindleAction>(&attached);
+    if (!action) continue;
+    const kernel::SpindleAction& a = *action;
     Tracked* s = find(a.spindle);
     if (!s) continue;
     switch (a.op) {
@@ -53,11 +56,11 @@ void SpindleLimitCheck::check(const PlannedCommand& c, std::vector<Diagnostic>& 
         // Tool limits take effect on the way from standstill into motion (FCT-S1 2.8.5).
         if (!s->rotating && s->pending_tool_max_rpm) s->tool_max_rpm = *std::exchange(s->pending_tool_max_rpm, {});
         s->rotating = a.rpm != 0;
-        if (auto d = speed_check(*s, a.rpm, c.line)) out.push_back(*d);
+        if (auto d = speed_check(*s, a.rpm, c.head.line)) out.push_back(*d);
         break;
       case SpindleOp::speed:
         if (s->rotating)
-          if (auto d = speed_check(*s, a.rpm, c.line)) out.push_back(*d);
+          if (auto d = speed_check(*s, a.rpm, c.head.line)) out.push_back(*d);
         break;
       case SpindleOp::stop:
       case SpindleOp::position:

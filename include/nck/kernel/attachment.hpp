@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <type_traits>
 #include <variant>
 
 #include "nck/core/diagnostic.hpp"
@@ -74,8 +75,14 @@ using distctrl::DistChange;
 using frames::OffsetEvent;
 using trc::TrcChange;
 
-using Attachment = std::variant<Output, SpindleAction, FeedLink, CssLink, StartPoint, ProgramMap,
-                                Warning, OffsetEvent, TrcChange, ManualChange, CaxChange,
-                                LinkCommand, DistChange>;
+// The order of the alternatives is the order in which the channel handles
+// a command's attachments (CommandPacker sorts them so): what is reported
+// as events first (after the block event), then the units' switches, then
+// the outputs and spindle actions in the order they were planned.
+using Attachment = std::variant<Warning, OffsetEvent, TrcChange, CaxChange, LinkCommand, DistChange, FeedLink,
+                                CssLink, ManualChange, Output, SpindleAction, StartPoint, ProgramMap>;
+
+// Attachments cross the real-time queue, maybe in shared memory.
+static_assert(std::is_trivially_copyable_v<Attachment>);
 
 }  // namespace nck::kernel

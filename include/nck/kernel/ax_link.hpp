@@ -11,7 +11,7 @@
 #include <string_view>
 
 #include "nck/core/event_head.hpp"
-#include "nck/core/fixed_vector.hpp"
+#include "nck/core/packed_list.hpp"
 
 namespace nck::kernel {
 
@@ -46,7 +46,7 @@ struct LinkCommand {
   bool enable = false;
   std::int8_t group = -1;
   std::uint32_t payload = 0;
-  FixedVector<AxLinkPair, kMaxLinkPairs> pairs;
+  PackedList<AxLinkPair, kMaxLinkPairs> pairs;
   // disable: bit g = group g off (with the reason "program")
   std::uint32_t disable_mask = 0;
   bool any() const noexcept { return enable || disable_mask != 0; }

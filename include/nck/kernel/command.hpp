@@ -11,6 +11,7 @@
 // queue between preparation and tick() holds these.
 #include <cstdint>
 #include <optional>
+#include <type_traits>
 #include <variant>
 
 #include "nck/core/diagnostic.hpp"
@@ -103,8 +104,9 @@ enum class Restart : std::uint8_t {
 // one after its last that returns the channel to idle.
 enum class Mdi : std::uint8_t { none, block, end };
 
-struct Command {
-  // the block it came from
+// What a command says besides its action: the block it came from, its
+// synchronisation marks, its role in a block search or MDI, its map.
+struct CommandHead {
   std::uint16_t file_id = 0;
   std::uint32_t line = 0;
   std::optional<std::int64_t> n;
@@ -116,6 +118,9 @@ struct Command {
   // PlanStore::frames index of the block's program -> machine map, handed on
   // in the block event (none: not recorded)
   std::optional<std::uint32_t> frame_index;
+};
+
+struct Command : CommandHead {
   std::uint16_t attachments = 0;  // how many attachments precede it in the queue
   Action action{};
 
@@ -126,5 +131,7 @@ struct Command {
 };
 
 static_assert(sizeof(Command) <= 512, "a queued command stays small (docs/performance.md)");
+static_assert(sizeof(Command) == 504, "docs/architecture.md gives the command's size");
+static_assert(std::is_trivially_copyable_v<Command>, "commands cross the real-time queue, maybe in shared memory");
 
 }  // namespace nck::kernel

@@ -73,5 +73,6 @@ static_assert(kind_of<ev::State>() == EventKind::state && kind_of<ev::Error>() =
 
 // Events cross the real-time queues and may sit in shared memory.
 static_assert(std::is_trivially_copyable_v<Event>);
+static_assert(sizeof(Event) == 80, "docs/architecture.md gives the event's size");
 
 }  // namespace nck::kernel

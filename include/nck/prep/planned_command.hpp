@@ -1,28 +1,24 @@
 #pragma once
 // One planned step of a channel as preparation keeps it while it may still
-// change (the look-ahead window decides its end velocity and may blend its
-// corner). Leaving the window it is packed into the kernel's compact
-// PlannedCommand and its attachments (command_packer.hpp).
-#include <array>
+// change: the look-ahead window decides its end velocity and may blend its
+// corner. It holds what the window reads (segment, limits, speeds, blend
+// state), the kernel command's head and, for a step without motion, its
+// action; every technology's data rides along as attachments, in the order
+// the units attached them. Leaving the window it is packed into the
+// kernel's command and its attachments (command_packer.hpp).
+#include <algorithm>
 #include <cstdint>
 #include <optional>
+#include <variant>
+#include <vector>
 
-#include "nck/core/diagnostic.hpp"
-#include "nck/core/fixed_vector.hpp"
-#include "nck/distctrl/controller.hpp"
-#include "nck/frames/offset_chain.hpp"
-#include "nck/kernel/affine_map.hpp"
 #include "nck/kernel/attachment.hpp"
 #include "nck/kernel/command.hpp"
-#include "nck/kernel/ax_link.hpp"
-#include "nck/kernel/event.hpp"
 #include "nck/kernel/feed_link.hpp"
-#include "nck/kernel/spindle_action.hpp"
 #include "nck/motion/cax_transform.hpp"
 #include "nck/motion/limits.hpp"
-#include "nck/prep/weight_scale.hpp"
 #include "nck/motion/segment.hpp"
-#include "nck/nc/modal.hpp"
+#include "nck/prep/weight_scale.hpp"
 
 namespace nck::prep {
 
@@ -34,34 +30,28 @@ using kernel::SpindleAction;
 
 enum class CommandKind : std::uint8_t {
   motion,    // follow `segment` at `v_cmd_mm_s`
-  dwell,     // wait `dwell_s`
-  stop,      // M0 / M1 (`optional_stop`: M1 stops only while the HLI asks)
-  end,       // M2 / M30: program end
-  error,     // raise `error_id` and abort the channel
-  nop,       // a block without motion (only its block event and outputs)
+  dwell,     // `step` is a kernel::Dwell
+  stop,      // M0 / M1: `step` is a kernel::Hold
+  end,       // M2 / M30: `step` is a kernel::End
+  error,     // `step` is a kernel::Error: raise it and abort the channel
+  nop,       // a block without motion (only its block event and attachments)
 };
 
 struct PlannedCommand {
   static constexpr std::size_t kMaxOutputs = kernel::kMaxOutputs;
   static constexpr std::size_t kMaxSpindleActions = kernel::kMaxSpindleActions;
+  static constexpr std::size_t kMaxWarnings = 4;
 
   CommandKind kind = CommandKind::nop;
-  // the block it came from
-  std::uint16_t file_id = 0;
-  std::uint32_t line = 0;
-  bool has_n = false;
-  std::int64_t n = 0;
-  bool emit_block_event = true;  // false for follow-up commands of one block
-  kernel::Restart restart = kernel::Restart::none;  // block search (block_search.hpp)
-  kernel::Mdi mdi = kernel::Mdi::none;              // MDI (channel_prep.hpp)
-  // PlanStore::frames index of the block's program -> machine map, handed on
-  // in the block event (none: not recorded)
-  std::optional<std::uint32_t> frame_index;
+  // The block it came from, its synchronisation marks, restart and MDI role,
+  // and its map's plan-store index: the kernel command's head as it is.
+  kernel::CommandHead head{};
+  // dwell / stop / end / error: what the kernel does (a motion's action is
+  // packed from the fields below)
+  std::variant<kernel::Nop, kernel::Dwell, kernel::Hold, kernel::End, kernel::Error> step{};
   // motion: the segment is in machine coordinates, or in program
-  // coordinates mapped by `map` when a rotation acts (mapped == true)
+  // coordinates mapped by a kernel::ProgramMap attachment when a rotation acts
   motion::Segment segment{};
-  bool mapped = false;
-  kernel::AffineMap map{};
   motion::PathLimits limits{};
   WeightScale weights{};  // the weightings behind `limits` (blend fillets weigh alike)
   double v_cmd_mm_s = 0;
@@ -94,65 +84,60 @@ struct PlannedCommand {
   // may be replaced by a fillet within this distance of the corner point
   // (#CONTOUR MODE PATH_DEV); 0 = none. The look-ahead window builds it.
   double blend_dev_mm = 0;
-  // spindle couplings (feed_link.hpp): a per-cycle limit of the path speed,
-  // the spindle following the path (tapping), and G96 (modal, every block)
+  // Spindle couplings (feed_link.hpp), which the corner rules and the
+  // window read: a per-cycle limit of the path speed, the spindle following
+  // the path (tapping), and G96 (modal, every block; a fillet keeps it).
   FeedLink feed_link{};
   CssLink css{};
-  // dwell: `dwell_s` seconds, or (G4 S..) `dwell_revs` revolutions of
-  // spindle `dwell_spindle` (kernel index), counted as it really turns
-  double dwell_s = 0;
-  double dwell_revs = 0;
-  std::int8_t dwell_spindle = -1;
-  // stop
-  bool optional_stop = false;
-  // end / error
-  EndReason end_reason = EndReason::m30;
-  ErrorId error_id{};
-  std::uint32_t message_index = 0;
-  // PLC outputs of the block and its spindle functions, in execution order
-  FixedVector<Output, kMaxOutputs> outputs;
-  FixedVector<SpindleAction, kMaxSpindleActions> spindle_actions;
-  bool feed_motion = false;  // G1/G2/G3: MVS_SLM functions synchronise here
-  // G201 / G202: axes entering / leaving manual (handwheel) mode, bit j = axis j
-  std::uint32_t manual_on = 0, manual_off = 0;
-  bool get_manual_offsets = false;  // #GET MANUAL OFFSETS: the decoder reads them after this block
+  // #FACE / #CYL: the segment is Cartesian; `trafo` maps every set point to the machine.
+  motion::CaxTrafo trafo{};
+  bool measure = false;  // G100: the motion stops where the probe switches
   // Bit j: the handwheel offset of axis j is in axis j's set point when the
   // block ends (#SUPPRESS OFFSETS and #MCS ON leave it out). A motion block
   // takes it in or out along its path; a block without motion at once.
   std::uint32_t manual_offset_axes = ~0u;
-  // G100: the motion stops where the probe switches
-  bool measure = false;
-  bool expl_syn = false;     // #EXPL SYN: MVS_SLP functions synchronise here
-  // offset events (PlanStore::offsets, at most one per kind) and warnings
-  // raised with the block (beyond kMaxWarnings the last says how many more)
-  FixedVector<std::uint32_t, frames::kOffsetKinds> offset_events;
-  static constexpr std::size_t kMaxWarnings = 4;
-  FixedVector<kernel::Warning, kMaxWarnings> warnings;
-  // C-axis machining (#CAX, #FACE, #CYL). cax on: the spindle `cax_spindle`
-  // (kernel index) becomes channel axis `cax_axis` when the command starts,
-  // and the channel reports its position back (FeedbackKind::c_axis); off:
-  // it is a spindle again. A motion under #FACE / #CYL has its segment in
-  // Cartesian coordinates; `trafo` maps every set point to the machine.
-  enum class CaxOp : std::uint8_t { none, on, off };
-  CaxOp cax = CaxOp::none;
-  std::int8_t cax_spindle = -1;
-  std::int8_t cax_axis = -1;
-  motion::CaxTrafo trafo{};
-  // #ENABLE / #DISABLE AX LINK (ax_link.hpp), done when the block starts
-  kernel::LinkCommand link{};
-  // #DIST CTRL: the switch and its overrides (dist.any()), the tool axis that
-  // carries the offset (plane's third axis) and, with check_sw_limit_switch,
-  // that axis's software limits.
-  distctrl::Switch dist{};
-  std::int8_t dist_axis = -1;
-  // SENSOR_SOURCE (none: keep), and the channel variable it names
-  std::optional<kernel::DistChange::Source> dist_source;
-  std::array<char, 32> dist_var{};
-  bool dist_check_sw = false;
-  double dist_sw_neg_mm = 0, dist_sw_pos_mm = 0;
-  // Tool radius compensation changed with this block (a `trc` event when it
-  // starts): the mode, the D in force and its tool radius.
-  std::optional<kernel::TrcChange> trc;
+  // What the technologies attach to the block (kernel::Attachment): outputs,
+  // spindle actions, warnings, offset events, switches of C axis, links,
+  // distance control, manual mode, TRC, the program map.
+  std::vector<kernel::Attachment> attachments;
+
+  template <class T>
+  void attach(const T& a) { attachments.emplace_back(a); }
+  // Attaches a unless the command has `max` of its kind already (false then).
+  template <class T>
+  bool attach_within(const T& a, std::size_t max) {
+    if (count<T>() >= max) return false;
+    attach(a);
+    return true;
+  }
+  template <class T>
+  void detach() {
+    std::erase_if(attachments, [](const kernel::Attachment& a) { return std::holds_alternative<T>(a); });
+  }
+  // The first attachment of type T, or nullptr.
+  template <class T>
+  const T* find() const noexcept {
+    for (const kernel::Attachment& a : attachments)
+      if (const T* t = std::get_if<T>(&a)) return t;
+    return nullptr;
+  }
+  template <class T>
+  bool has() const noexcept { return find<T>() != nullptr; }
+  template <class T>
+  std::size_t count() const noexcept {
+    return static_cast<std::size_t>(std::count_if(attachments.begin(), attachments.end(),
+                                                  [](const kernel::Attachment& a) { return std::holds_alternative<T>(a); }));
+  }
+  // Calls f(const T&) for each attachment of type T, in order.
+  template <class T, class F>
+  void each(F&& f) const {
+    for (const kernel::Attachment& a : attachments)
+      if (const T* t = std::get_if<T>(&a)) f(*t);
+  }
 };
+
+// The window keeps up to 128 of them and copies them as it plans
+// (docs/architecture.md gives this size; issue 42's bar: at most 1,200 B).
+static_assert(sizeof(PlannedCommand) == 1000);
 
 }  // namespace nck::prep

@@ -98,9 +98,7 @@ PlanResult CaxUnit::plan(const nc::Block& b, PlannedCommand& c, PlanContext& ctx
     name_.clear();  // the program names it by the list's name again
     if (!on_) return {};
     on_ = false;
-    c.cax = PlannedCommand::CaxOp::off;
-    c.cax_spindle = c_spindle_;
-    c.cax_axis = static_cast<std::int8_t>(c_axis_);
+    c.attach(kernel::CaxChange{false, c_spindle_, static_cast<std::int8_t>(c_axis_)});
     return {};
   }
   if (std::holds_alternative<nc::Face>(*b.hash) || std::holds_alternative<nc::Cylinder>(*b.hash))
@@ -126,9 +124,7 @@ PlanResult CaxUnit::plan_cax_on(const nc::Block& b, const nc::CAxis& a, PlannedC
   on_ = true;
   // Also when C-axis mode is on already: the channel answers with C's
   // position, which preparation waits for after every #CAX.
-  c.cax = PlannedCommand::CaxOp::on;
-  c.cax_spindle = c_spindle_;
-  c.cax_axis = static_cast<std::int8_t>(c_axis_);
+  c.attach(kernel::CaxChange{true, c_spindle_, static_cast<std::int8_t>(c_axis_)});
   return {};
 }
 
@@ -253,18 +249,18 @@ PlannedCommand as_part_of(const PlannedCommand& block, const PlannedCommand& pie
   PlannedCommand c = block;
   if (!first) {
     c = PlannedCommand{};
-    c.file_id = block.file_id;
-    c.line = block.line;
-    c.emit_block_event = false;
-    c.feed_motion = block.feed_motion;
+    c.head.file_id = block.head.file_id;
+    c.head.line = block.head.line;
+    c.head.emit_block_event = false;
+    c.head.feed_motion = block.head.feed_motion;
   }
   c.kind = piece.kind;
   c.segment = piece.segment;
   c.limits = piece.limits;
   c.v_cmd_mm_s = piece.v_cmd_mm_s;
   c.trafo = piece.trafo;
-  c.mapped = piece.mapped;
-  c.map = piece.map;
+  c.detach<kernel::ProgramMap>();
+  if (const auto* map = piece.find<kernel::ProgramMap>()) c.attach(*map);
   return c;
 }
 
@@ -280,7 +276,7 @@ void CaxUnit::face_centre_commands(const PlannedCommand& c, PlannedBlock& out, c
   const motion::CaxTrafo& t = c.trafo;
   const auto jx = static_cast<std::size_t>(t.radial), jc = static_cast<std::size_t>(t.c);
   const bool lathe = ctx.channel.cax_face_id == 1;
-  if (c.mapped || c.segment.kind() != motion::SegmentKind::line) {
+  if (c.has<kernel::ProgramMap>() || c.segment.kind() != motion::SegmentKind::line) {
     // An arc never starts at the centre; a rotated contour's points are not
     // machine-Cartesian here: both run as planned.
     (void)out.push_back(c);
@@ -328,9 +324,9 @@ PlannedCommand CaxUnit::face_turn(const PlannedCommand& like, const motion::Axis
   PlannedCommand turn = like;
   turn.kind = CommandKind::motion;
   turn.trafo = motion::CaxTrafo{};
-  turn.mapped = false;
+  turn.detach<kernel::ProgramMap>();
   if (auto s = motion::make_line(a, b, ctx.n_axes)) turn.segment = *s;
-  const AxisDynamicsArray& dyn = ctx.axes.dynamics(!like.feed_motion);
+  const AxisDynamicsArray& dyn = ctx.axes.dynamics(!like.head.feed_motion);
   turn.limits = motion::path_limits(turn.segment, std::span<const motion::AxisDynamics>(dyn.data(), ctx.n_axes));
   turn.v_cmd_mm_s = turn.limits.v_max_mm_s;
   return turn;

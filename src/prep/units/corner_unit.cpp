@@ -46,10 +46,11 @@ BlendAxes CornerUnit::blend_axes(const AxisTable& axes) const {
 motion::AxisVector CornerUnit::machine_tangent(const PlannedCommand& c, bool at_end, std::size_t n_axes) const {
   motion::AxisVector t{};
   c.segment.tangent_at(at_end ? c.segment.length() : 0.0, t);
-  if (!c.mapped) return t;
+  const auto* map = c.find<kernel::ProgramMap>();
+  if (!map) return t;
   motion::AxisVector mapped{}, origin{}, zero{};
-  c.map.apply(t, mapped, n_axes);
-  c.map.apply(zero, origin, n_axes);
+  map->map.apply(t, mapped, n_axes);
+  map->map.apply(zero, origin, n_axes);
   for (std::size_t j = 0; j < n_axes; ++j) mapped[j] -= origin[j];
   return mapped;
 }
@@ -86,7 +87,7 @@ void CornerUnit::note_transition(const nc::Block& b, PlannedCommand& c, bool rap
   // corner at this feed motion's end (docs/decisions.md, "Continuous path and
   // corner blending").
   const bool blend = b.g_nonmodal.has(nc::GCode::g61) || b.modal.contour;
-  c.blend_dev_mm = blend && !rapid && !c.exact_stop && !c.mapped ? b.modal.contour_dev_mm : 0;
+  c.blend_dev_mm = blend && !rapid && !c.exact_stop && !c.has<kernel::ProgramMap>() ? b.modal.contour_dev_mm : 0;
   // Under #FACE/#CYL the segment is Cartesian and the machine axes follow
   // the transformation: its corners are not looked ahead yet. A spindle
   // coupling (G95, G33, G63, G331/G332) sets the path speed each cycle from

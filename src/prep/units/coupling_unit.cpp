@@ -63,8 +63,9 @@ PlanResult CouplingUnit::plan_hash(const nc::Block& b, PlannedCommand& c, PlanCo
     if (!r) return at_block(r.error(), b);
     const int g = en->group.value_or(0);
     LinkPayload payload{g, {}};
-    c.link.enable = true;
-    c.link.group = static_cast<std::int8_t>(g);
+    kernel::LinkCommand link;
+    link.enable = true;
+    link.group = static_cast<std::int8_t>(g);
     const motion::AxisVector& mcs = ctx.planned.mcs;
     for (const LinkPairDef& p : (*r)->pairs) {
       payload.pairs.emplace_back(groups_.member_name(p.slave), groups_.member_name(p.master));
@@ -74,16 +75,21 @@ PlanResult CouplingUnit::plan_hash(const nc::Block& b, PlannedCommand& c, PlanCo
       k.master = static_cast<std::int8_t>(p.master.spindle ? kernel_spindles_[static_cast<std::size_t>(p.master.index)] : p.master.index);
       k.gantry = p.gantry;
       k.ratio = p.ratio;
-      (void)c.link.pairs.push_back(k);
+      (void)link.pairs.push_back(k);
       if (!p.slave.spindle)
         axis_follow_.push_back({g, p.slave.index, p.master.index, mcs[static_cast<std::size_t>(p.slave.index)],
                                 mcs[static_cast<std::size_t>(p.master.index)], p.ratio});
     }
-    c.link.payload = ctx.store.add_link(std::move(payload));
+    link.payload = ctx.store.add_link(std::move(payload));
+    c.attach(link);
   } else if (const auto* d = std::get_if<nc::DisableAxLink>(&h)) {
     auto r = groups_.disable(*d);
     if (!r) return at_block(r.error(), b);
-    c.link.disable_mask = *r;
+    if (*r != 0) {
+      kernel::LinkCommand link;
+      link.disable_mask = *r;
+      c.attach(link);
+    }
     std::erase_if(axis_follow_, [&](const AxisFollow& f) { return ((*r >> f.group) & 1u) != 0; });
   }
   return {};

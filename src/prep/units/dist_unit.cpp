@@ -41,9 +41,9 @@ std::string override_range(const nc::DistCtrl& d) {
 
 }  // namespace
 
-PlanResult DistUnit::plan_source(const nc::Block& b, const nc::DistCtrl& d, PlannedCommand& c) {
+PlanResult DistUnit::plan_source(const nc::Block& b, const nc::DistCtrl& d, distctrl::DistChange& change) {
   if (d.sensor_source) {
-    using Source = kernel::DistChange::Source;
+    using Source = distctrl::DistChange::Source;
     std::optional<Source> source;
     if (*d.sensor_source == "VARIABLE") source = Source::variable;
     else if (*d.sensor_source == "SIMULATION" || *d.sensor_source == "SENSOR") source = Source::machine;
@@ -55,14 +55,14 @@ PlanResult DistUnit::plan_source(const nc::Block& b, const nc::DistCtrl& d, Plan
       return block_error(ErrorId::DistCtrlSourceChange, b,
                          fmt::format("SENSOR_SOURCE={} while distance control is on", *d.sensor_source));
     source_ = *source;
-    c.dist_source = source;
+    change.source = source;
   }
   if (d.sensor_var) {
-    if (d.sensor_var->empty() || d.sensor_var->size() >= c.dist_var.size())
+    if (d.sensor_var->empty() || d.sensor_var->size() >= change.variable.size())
       return block_error(ErrorId::DistCtrlBadVariable, b,
                          "SENSOR_VAR must name a channel variable (up to 31 characters)");
-    std::copy(d.sensor_var->begin(), d.sensor_var->end(), c.dist_var.begin());
-    c.dist_source = source_;
+    std::copy(d.sensor_var->begin(), d.sensor_var->end(), change.variable.begin());
+    change.source = source_;
   }
   return {};
 }
@@ -71,15 +71,16 @@ PlanResult DistUnit::plan(const nc::Block& b, PlannedCommand& c, const PlanConte
   const auto* d = b.hash ? std::get_if<nc::DistCtrl>(&*b.hash) : nullptr;
   if (!d) return {};
   if (std::string why = override_range(*d); !why.empty()) return block_error(ErrorId::DistCtrlOverride, b, why);
-  if (auto r = plan_source(b, *d, c); !r) return r;
-  distctrl::Switch& w = c.dist;
+  distctrl::DistChange change;
+  if (auto r = plan_source(b, *d, change); !r) return r;
+  distctrl::Switch& w = change.sw;
   switch (d->op) {
     case nc::DistCtrlOp::on: w.op = distctrl::Op::on; break;
     case nc::DistCtrlOp::freeze: w.op = distctrl::Op::freeze; break;
     case nc::DistCtrlOp::off: w.op = distctrl::Op::off; break;
     case nc::DistCtrlOp::settings: w.op = distctrl::Op::none; break;
   }
-  if (w.op == distctrl::Op::on && source_ == kernel::DistChange::Source::variable && !d->sensor_var && !var_known_)
+  if (w.op == distctrl::Op::on && source_ == distctrl::DistChange::Source::variable && !d->sensor_var && !var_known_)
     return block_error(ErrorId::DistCtrlBadVariable, b, "SENSOR_SOURCE=VARIABLE needs SENSOR_VAR=<variable>");
   if (d->sensor_var) var_known_ = true;
   w.const_dist = d->const_dist;
@@ -99,12 +100,13 @@ PlanResult DistUnit::plan(const nc::Block& b, PlannedCommand& c, const PlanConte
   if (w.op == distctrl::Op::off) on_ = false;
   // The tool axis of the working plane carries the offset (Z for G17).
   const int tool = plane_axes(b.modal.plane).tool;
-  c.dist_axis = static_cast<std::int8_t>(tool < static_cast<int>(ctx.n_axes) ? tool : -1);
-  c.dist_check_sw = ctx.channel.dist_ctrl.check_sw_limit_switch;
-  if (c.dist_axis >= 0) {
-    c.dist_sw_neg_mm = ctx.axes.sw_limit_neg_mm(static_cast<std::size_t>(tool));
-    c.dist_sw_pos_mm = ctx.axes.sw_limit_pos_mm(static_cast<std::size_t>(tool));
+  change.axis = static_cast<std::int8_t>(tool < static_cast<int>(ctx.n_axes) ? tool : -1);
+  if (ctx.channel.dist_ctrl.check_sw_limit_switch) {
+    const auto j = static_cast<std::size_t>(tool);
+    change.sw_limits_mm = change.axis >= 0 ? std::array<double, 2>{ctx.axes.sw_limit_neg_mm(j), ctx.axes.sw_limit_pos_mm(j)}
+                                           : std::array<double, 2>{0, 0};
   }
+  if (w.any()) c.attach(change);
   return {};
 }
 

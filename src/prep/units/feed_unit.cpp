@@ -44,7 +44,7 @@ PlanResult FeedUnit::plan_block(const nc::Block& b, PlannedCommand& c, const Pla
     a.wait = SpindleWait::in_position;
     a.fn = TechKind::m;
     a.fn_number = 19;
-    if (!c.spindle_actions.push_back(a))
+    if (!c.attach_within(a, PlannedCommand::kMaxSpindleActions))
       return block_error(ErrorId::KernelSpindleTooManyActions, b, "too many spindle actions with G331");
   }
   prev_motion_ = m.motion;

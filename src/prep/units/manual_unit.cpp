@@ -4,14 +4,17 @@
 namespace nck::prep {
 
 void ManualUnit::plan(const nc::Block& b, PlannedCommand& c, std::size_t n_axes) const {
-  c.get_manual_offsets = b.hash && std::holds_alternative<nc::GetManualOffsets>(*b.hash);
-  if (!b.manual_g) return;
-  // With G201/G202 the axis words select the axes.
-  std::uint32_t mask = 0;
-  for (std::size_t j = 0; j < n_axes; ++j)
-    if (b.axes[j]) mask |= 1u << j;
-  if (*b.manual_g == nc::GCode::g201) c.manual_on = mask;
-  else c.manual_off = mask != 0 ? mask : ~0u;  // G202 without axes: all
+  kernel::ManualChange change;
+  change.get_offsets = b.hash && std::holds_alternative<nc::GetManualOffsets>(*b.hash);
+  if (b.manual_g) {
+    // With G201/G202 the axis words select the axes.
+    std::uint32_t mask = 0;
+    for (std::size_t j = 0; j < n_axes; ++j)
+      if (b.axes[j]) mask |= 1u << j;
+    if (*b.manual_g == nc::GCode::g201) change.on = mask;
+    else change.off = mask != 0 ? mask : ~0u;  // G202 without axes: all
+  }
+  if (change.on != 0 || change.off != 0 || change.get_offsets) c.attach(change);
 }
 
 void ManualUnit::moved(const nc::Block& b, frames::SuppressMask mask, const PlanContext& ctx) {

@@ -48,8 +48,7 @@ PlanResult MeasureUnit::apply_offset(const nc::Block& b, PlannedCommand& c, Plan
     }
   }
   if (!done) return done;
-  (void)c.offset_events.push_back(
-      ctx.store.add_offset({"measure", ctx.frames.values_of(frames::OffsetKind::measure, true)}));
+  c.attach(frames::OffsetEvent{ctx.store.add_offset({"measure", ctx.frames.values_of(frames::OffsetKind::measure, true)})});
   return {};
 }
 

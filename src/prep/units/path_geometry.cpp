@@ -158,7 +158,7 @@ std::expected<PlannedBlock, Diagnostic> plan_homing(const nc::Block& b, const Pl
     if (seg && seg->length() > 0) {
       c.kind = CommandKind::motion;
       c.segment = *seg;
-      c.mapped = false;
+      c.detach<kernel::ProgramMap>();
       c.limits = motion::path_limits(c.segment, std::span<const motion::AxisDynamics>(rapid.data(), ctx.n_axes));
       c.v_cmd_mm_s = c.limits.v_max_mm_s;
       c.exact_stop = true;  // each homing group ends at its home position
@@ -166,9 +166,9 @@ std::expected<PlannedBlock, Diagnostic> plan_homing(const nc::Block& b, const Pl
     mcs = target;
     (void)out.push_back(c);
     c = PlannedCommand{};  // the following groups: motion only
-    c.file_id = b.file_id;
-    c.line = b.line;
-    c.emit_block_event = false;
+    c.head.file_id = b.file_id;
+    c.head.line = b.line;
+    c.head.emit_block_event = false;
   }
   for (std::size_t j = 0; j < ctx.n_axes; ++j)
     if (b.axes[j]) ctx.frames.preset_axis(j);

@@ -68,13 +68,15 @@ TEST(CommandPacker, TheKernelJoinsTheSegmentBitForBit) {
   }
 }
 
-TEST(CommandPacker, AttachmentsKeepTheirOrderAndLeaveWithTheirCommand) {
+// Attached in any order, they leave in the order the channel handles them
+// (attachment.hpp: reports, switches, outputs), each kind in planned order.
+TEST(CommandPacker, AttachmentsLeaveInHandlingOrderWithTheirCommand) {
   PlannedCommand c;
   c.kind = CommandKind::nop;
-  (void)c.warnings.push_back({ErrorId::KernelPrepStarved, 7});
-  (void)c.outputs.push_back({plc::TechKind::m, 8, 0, 0});
-  (void)c.outputs.push_back({plc::TechKind::h, 9, 0, 0});
-  c.trc = kernel::TrcChange{nc::RadiusComp::g41, 3, 2.5};
+  c.attach(kernel::Output{plc::TechKind::m, 8, 0, 0});
+  c.attach(trc::TrcChange{trc::RadiusComp::g41, 3, 2.5});
+  c.attach(kernel::Output{plc::TechKind::h, 9, 0, 0});
+  c.attach(kernel::Warning{ErrorId::KernelPrepStarved, 7});
   auto q = std::make_unique<kernel::CommandQueue>();
   CommandPacker p;
   ASSERT_TRUE(p.pack(c, *q));
@@ -82,7 +84,7 @@ TEST(CommandPacker, AttachmentsKeepTheirOrderAndLeaveWithTheirCommand) {
   const kernel::Command& k = q->front();
   ASSERT_EQ(k.attachments, 4);
   EXPECT_TRUE(std::holds_alternative<kernel::Warning>(q->attachment(0)));
-  EXPECT_EQ(std::get<kernel::TrcChange>(q->attachment(1)).mode, nc::RadiusComp::g41);
+  EXPECT_EQ(std::get<kernel::TrcChange>(q->attachment(1)).mode, trc::RadiusComp::g41);
   EXPECT_EQ(std::get<kernel::Output>(q->attachment(2)).number, 8);
   EXPECT_EQ(std::get<kernel::Output>(q->attachment(3)).number, 9);
   q->pop();
@@ -93,7 +95,7 @@ TEST(CommandPacker, AttachmentsKeepTheirOrderAndLeaveWithTheirCommand) {
 
 TEST(CommandPacker, AFullAttachmentRingTakesNothing) {
   PlannedCommand c;
-  for (int i = 0; i < 8; ++i) (void)c.outputs.push_back({plc::TechKind::m, i, 0, 0});
+  for (int i = 0; i < 8; ++i) c.attach(kernel::Output{plc::TechKind::m, i, 0, 0});
   auto q = std::make_unique<kernel::CommandQueue>();
   CommandPacker p;
   std::size_t packed = 0;
@@ -104,6 +106,7 @@ TEST(CommandPacker, AFullAttachmentRingTakesNothing) {
 
 TEST(CommandPacker, ACommandAndItsQueueStaySmall) {
   static_assert(sizeof(kernel::Command) <= 512);
+  static_assert(sizeof(PlannedCommand) <= 1200);
   // docs/performance.md: the queue with its attachment ring, per channel.
   EXPECT_LT(sizeof(kernel::CommandQueue), 217u * 1024u);
 }

@@ -11,6 +11,7 @@
 #include "example_blocks.hpp"
 #include "nck/prep/planner.hpp"
 #include "planner_rig.hpp"
+#include "planned_parts.hpp"
 
 namespace nck::prep {
 namespace {
@@ -26,7 +27,7 @@ struct Rig : testing::PlannerRig {
 // The command planned for program line `line`.
 const PlannedCommand& at_line(const std::vector<PlannedCommand>& cs, std::uint32_t line) {
   for (const PlannedCommand& c : cs)
-    if (c.line == line) return c;
+    if (c.head.line == line) return c;
   static const PlannedCommand kNone;
   ADD_FAILURE() << "nothing planned for line " << line;
   return kNone;
@@ -40,8 +41,8 @@ void expect_ramps(const motion::PathLimits& l, double tr_s, std::uint32_t line) 
 }
 
 void expect_error(const PlannedCommand& c, ErrorId id) {
-  EXPECT_EQ(c.kind, CommandKind::error) << "line " << c.line;
-  EXPECT_EQ(c.error_id, id) << "line " << c.line;
+  EXPECT_EQ(c.kind, CommandKind::error) << "line " << c.head.line;
+  EXPECT_EQ(test::error_of(c).id, id) << "line " << c.head.line;
 }
 
 TEST(DynWeights, G131WeightsTheConfiguredAccelerationNotThePreviousWeighting) {

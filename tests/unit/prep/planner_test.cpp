@@ -16,6 +16,7 @@
 #include "nck/prep/planner.hpp"
 #include "example_blocks.hpp"
 #include "planner_rig.hpp"
+#include "planned_parts.hpp"
 
 namespace nck::prep {
 namespace {
@@ -28,17 +29,17 @@ constexpr double kPi = std::numbers::pi;
 
 // Machine-coordinate end point of a motion command, first three axes.
 void expect_end(const PlannedCommand& c, double x, double y, double z) {
-  ASSERT_EQ(c.kind, CommandKind::motion) << "line " << c.line;
+  ASSERT_EQ(c.kind, CommandKind::motion) << "line " << c.head.line;
   const motion::AxisVector& e = c.segment.end_point();
-  EXPECT_NEAR(e[0], x, 1e-9) << "line " << c.line;
-  EXPECT_NEAR(e[1], y, 1e-9) << "line " << c.line;
-  EXPECT_NEAR(e[2], z, 1e-9) << "line " << c.line;
+  EXPECT_NEAR(e[0], x, 1e-9) << "line " << c.head.line;
+  EXPECT_NEAR(e[1], y, 1e-9) << "line " << c.head.line;
+  EXPECT_NEAR(e[2], z, 1e-9) << "line " << c.head.line;
 }
 
 void expect_error(const PlannedCommand& c, ErrorId id, std::uint32_t line) {
   EXPECT_EQ(c.kind, CommandKind::error);
-  EXPECT_EQ(c.error_id, id);
-  EXPECT_EQ(c.line, line);
+  EXPECT_EQ(test::error_of(c).id, id);
+  EXPECT_EQ(c.head.line, line);
 }
 
 TEST(Planner, RapidMoveAtG53GoesToTheProgrammedMachinePosition) {
@@ -46,12 +47,11 @@ TEST(Planner, RapidMoveAtG53GoesToTheProgrammedMachinePosition) {
   auto c = r.plan("N10 G90 G0 X10 Y20 Z30\nM30\n");
   ASSERT_EQ(c.size(), 2u);
   expect_end(c[0], 10, 20, 30);
-  EXPECT_FALSE(c[0].feed_motion);
-  EXPECT_TRUE(c[0].has_n);
-  EXPECT_EQ(c[0].n, 10);
-  EXPECT_EQ(c[0].line, 1u);
+  EXPECT_FALSE(c[0].head.feed_motion);
+  EXPECT_EQ(c[0].head.n, std::optional<std::int64_t>(10));
+  EXPECT_EQ(c[0].head.line, 1u);
   EXPECT_EQ(c[1].kind, CommandKind::end);
-  EXPECT_EQ(c[1].end_reason, EndReason::m30);
+  EXPECT_EQ(test::end_reason_of(c[1]), EndReason::m30);
 }
 
 TEST(Planner, RapidAlongOneAxisUsesRapidVelocityAndAGrenz) {
@@ -68,7 +68,7 @@ TEST(Planner, RapidAlongOneAxisUsesRapidVelocityAndAGrenz) {
 TEST(Planner, FeedInMmPerMinuteBecomesMmPerSecond) {
   PlannerRig r("mill");
   auto c = r.plan("G1 X100 F1200\nG1 Z-10\nM30\n");
-  EXPECT_TRUE(c[0].feed_motion);
+  EXPECT_TRUE(c[0].head.feed_motion);
   EXPECT_DOUBLE_EQ(c[0].v_cmd_mm_s, 20.0);            // 1200 / 60
   EXPECT_DOUBLE_EQ(c[0].limits.a_acc_mm_s2, 2500.0);  // X accel_mm_s2
   EXPECT_DOUBLE_EQ(c[1].v_cmd_mm_s, 20.0);            // F is modal
@@ -97,7 +97,7 @@ TEST(Planner, FeedMoveWithoutFeedIsError930002) {
   PlannerRig r("mill");
   auto c = r.plan("G0 X1\nG1 X10\nM30\n");
   expect_error(c[1], ErrorId::KernelNoFeed, 2);
-  EXPECT_EQ(static_cast<std::uint32_t>(c[1].error_id), 930002u);
+  EXPECT_EQ(static_cast<std::uint32_t>(test::error_of(c[1]).id), 930002u);
 }
 
 TEST(Planner, IncrementalWordsAddToTheProgrammedPosition) {
@@ -255,7 +255,7 @@ TEST(Planner, EndPointOffTheCircleIsError930004) {
   // Centre (10, 0): start radius 10, end (30, 0) radius 20.
   auto c = r.plan("G0 X0 Y0\nN20 G2 X30 Y0 I10 J0 F600\nM30\n");
   expect_error(c[1], ErrorId::KernelArcEndNotOnCircle, 2);
-  EXPECT_EQ(static_cast<std::uint32_t>(c[1].error_id), 930004u);
+  EXPECT_EQ(static_cast<std::uint32_t>(test::error_of(c[1]).id), 930004u);
 }
 
 TEST(Planner, RadiusSmallerThanHalfTheChordIsError930006) {
@@ -271,10 +271,10 @@ TEST(Planner, HomingSplitsIntoOrderGroups) {
   auto c = r.plan("G0 X10 Y20 Z30\nG74 X1 Y2 Z1\nM30\n");
   ASSERT_EQ(c.size(), 4u);
   expect_end(c[1], 0, 20, 0);
-  EXPECT_TRUE(c[1].emit_block_event);
+  EXPECT_TRUE(c[1].head.emit_block_event);
   expect_end(c[2], 0, 0, 0);
-  EXPECT_FALSE(c[2].emit_block_event);
-  EXPECT_EQ(c[2].line, 2u);
+  EXPECT_FALSE(c[2].head.emit_block_event);
+  EXPECT_EQ(c[2].head.line, 2u);
   // rapid along X and Z together: length sqrt(10^2 + 30^2)
   EXPECT_NEAR(c[1].segment.length(), std::hypot(10.0, 30.0), 1e-9);
   EXPECT_EQ(c[3].kind, CommandKind::end);
@@ -282,18 +282,18 @@ TEST(Planner, HomingSplitsIntoOrderGroups) {
 
 TEST(Planner, M2AndM30EndTheProgramWithTheirReason) {
   PlannerRig a("mill");
-  EXPECT_EQ(a.plan("G0 X1\nM2\n").back().end_reason, EndReason::m2);
+  EXPECT_EQ(test::end_reason_of(a.plan("G0 X1\nM2\n").back()), EndReason::m2);
   PlannerRig b("mill");
   auto c = b.plan("G0 X1\nM30\n");
   EXPECT_EQ(c.back().kind, CommandKind::end);
-  EXPECT_EQ(c.back().end_reason, EndReason::m30);
+  EXPECT_EQ(test::end_reason_of(c.back()), EndReason::m30);
 }
 
 TEST(Planner, DwellInSeconds) {
   PlannerRig r("mill");
   auto c = r.plan("G4 X0.5\nM30\n");
   EXPECT_EQ(c[0].kind, CommandKind::dwell);
-  EXPECT_DOUBLE_EQ(c[0].dwell_s, 0.5);
+  EXPECT_DOUBLE_EQ(std::get<kernel::Dwell>(c[0].step).time_s, 0.5);
 }
 
 TEST(Planner, FunctionsNotExecutedYetAreError930001) {
@@ -301,33 +301,34 @@ TEST(Planner, FunctionsNotExecutedYetAreError930001) {
   // Writing the tool radius V.G.WZ_AKT.R is decoded but not executed.
   auto c = r.plan("G0 X1\nV.G.WZ_AKT.R = 5\nM30\n");
   expect_error(c[1], ErrorId::KernelNotYetSupported, 2);
-  EXPECT_EQ(static_cast<std::uint32_t>(c[1].error_id), 930001u);
-  EXPECT_NE(r.store.messages.at(c[1].message_index).find("V.G.WZ_AKT.R"), std::string::npos);
+  EXPECT_EQ(static_cast<std::uint32_t>(test::error_of(c[1]).id), 930001u);
+  EXPECT_NE(r.store.messages.at(test::error_of(c[1]).message_index).find("V.G.WZ_AKT.R"), std::string::npos);
 }
 
 TEST(Planner, ChannelMFunctionsAreOutputWithTheirSynchronisation) {
   PlannerRig r("mill");
   // channel1.lis: m_synch[8] MOS, m_synch[6] MVS_SVS.
   auto c = r.plan("M8\nM6\nM30\n");
-  ASSERT_EQ(c[0].outputs.size(), 1u);
-  EXPECT_EQ(c[0].outputs[0].fn, TechKind::m);
-  EXPECT_EQ(c[0].outputs[0].number, 8);
-  EXPECT_EQ(c[0].outputs[0].sync, config::sync::MOS);
-  ASSERT_EQ(c[1].outputs.size(), 1u);
-  EXPECT_EQ(c[1].outputs[0].sync, config::sync::MVS_SVS);
+  ASSERT_EQ(test::attached<kernel::Output>(c[0]).size(), 1u);
+  EXPECT_EQ(test::attached<kernel::Output>(c[0])[0].fn, TechKind::m);
+  EXPECT_EQ(test::attached<kernel::Output>(c[0])[0].number, 8);
+  EXPECT_EQ(test::attached<kernel::Output>(c[0])[0].sync, config::sync::MOS);
+  ASSERT_EQ(test::attached<kernel::Output>(c[1]).size(), 1u);
+  EXPECT_EQ(test::attached<kernel::Output>(c[1])[0].sync, config::sync::MVS_SVS);
 }
 
 TEST(Planner, OffsetChangesAreRecordedForTheirEvents) {
   PlannerRig r("mill");
   auto c = r.plan("G54 D1\nM30\n");
-  ASSERT_EQ(c[0].offset_events.size(), 2u);
-  const OffsetPayload& zero = r.store.offsets.at(c[0].offset_events[0]);
+  const auto offsets = test::attached<frames::OffsetEvent>(c[0]);
+  ASSERT_EQ(offsets.size(), 2u);
+  const OffsetPayload& zero = r.store.offsets.at(offsets[0].index);
   EXPECT_EQ(zero.kind, "zero");
   ASSERT_EQ(zero.values.size(), 4u);  // X Y Z and S1 as C axis
   EXPECT_EQ(zero.values[0].first, "X");
   EXPECT_DOUBLE_EQ(zero.values[0].second, 100.0);
   EXPECT_DOUBLE_EQ(zero.values[2].second, -150.0);
-  const OffsetPayload& tool = r.store.offsets.at(c[0].offset_events[1]);
+  const OffsetPayload& tool = r.store.offsets.at(offsets[1].index);
   EXPECT_EQ(tool.kind, "tool");
   EXPECT_DOUBLE_EQ(tool.values[2].second, 100.0);
 }
@@ -383,9 +384,9 @@ TEST(Planner, ArcUnderRotationIsMappedFromProgramCoordinates) {
   // turned 90 deg is MCS (0, 20).
   auto c = r.plan("G0 X0 Y0\n#ROTATION ON [ANGLE=90]\nG3 X20 Y0 I10 J0 F600\nM30\n");
   ASSERT_EQ(c[2].kind, CommandKind::motion);
-  EXPECT_TRUE(c[2].mapped);
+  EXPECT_TRUE(c[2].has<kernel::ProgramMap>());
   motion::AxisVector m{};
-  c[2].map.apply(c[2].segment.end_point(), m, 3);
+  c[2].find<kernel::ProgramMap>()->map.apply(c[2].segment.end_point(), m, 3);
   EXPECT_NEAR(m[0], 0, 1e-9);
   EXPECT_NEAR(m[1], 20, 1e-9);
 }

@@ -4,6 +4,7 @@
 // checked against the ranges of their channel parameters (P-CHAN-00800..00827).
 #include <cstdint>
 
+#include "nck/distctrl/dist_data.hpp"
 #include "nck/prep/units/plan_context.hpp"
 
 namespace nck::prep {
@@ -15,11 +16,11 @@ class DistUnit {
   bool programmed() const { return programmed_; }
 
  private:
-  PlanResult plan_source(const nc::Block& b, const nc::DistCtrl& d, PlannedCommand& c);
+  PlanResult plan_source(const nc::Block& b, const nc::DistCtrl& d, distctrl::DistChange& change);
 
   bool on_ = false;            // ON (or FREEZE) programmed and not OFF since
   bool programmed_ = false;    // ON (or FREEZE) prepared at least once
-  kernel::DistChange::Source source_ = kernel::DistChange::Source::machine;
+  distctrl::DistChange::Source source_ = distctrl::DistChange::Source::machine;
   bool var_known_ = false;     // SENSOR_VAR given
 };
 
