@@ -4,10 +4,10 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include "nck/output/output_writers.hpp"
+#include "nck/run/path_track.hpp"
 #include "final_diff.hpp"
-#include "output_writers.hpp"
-#include "path_track.hpp"
-#include "run_command.hpp"
+#include "nck/run/run_options.hpp"
 
 namespace nck::app {
 namespace {

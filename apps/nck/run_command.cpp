@@ -1,15 +1,15 @@
 // `nck run`: load the machine, decode each channel's program, tick the
 // kernel until every channel ends (or a limit or a signal stops the run), and
 // write events, trace, report and final state, always complete.
-#include "run_command.hpp"
+#include "nck/run/run_options.hpp"
 
 #include <filesystem>
 #include <fmt/format.h>
 
 #include "nck/config/load.hpp"
-#include "output_writers.hpp"
-#include "run_outputs.hpp"
-#include "simulation.hpp"
+#include "nck/output/output_writers.hpp"
+#include "nck/run/run_outputs.hpp"
+#include "nck/run/simulation.hpp"
 
 namespace nck::app {
 namespace {
@@ -88,7 +88,7 @@ int run_simulation(const RunOptions& opt) {
     fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppOutputFile), *open_error);
     return 2;
   }
-  out.report.start(s.machine(), opt, s.run());
+  if (!opt.report.empty()) out.report.start(s.machine(), {opt.machine, opt.plc, opt.programs}, s.run());
   if (opt.ghost) out.report.set_ghost(*opt.ghost);
   s.finish(s.run_to_end());
   return finish_outputs(s);
