@@ -23,7 +23,7 @@
 #include "check_command.hpp"
 #include "commands.hpp"
 #include "diff_command.hpp"
-#include "nck/run/run_options.hpp"
+#include "run_command.hpp"
 #include "serve_command.hpp"
 
 namespace nck::app {

@@ -7,7 +7,7 @@
 #include "nck/output/output_writers.hpp"
 #include "nck/run/path_track.hpp"
 #include "final_diff.hpp"
-#include "nck/run/run_options.hpp"
+#include "run_command.hpp"
 
 namespace nck::app {
 namespace {

@@ -1,7 +1,7 @@
 // `nck run`: load the machine, decode each channel's program, tick the
 // kernel until every channel ends (or a limit or a signal stops the run), and
 // write events, trace, report and final state, always complete.
-#include "nck/run/run_options.hpp"
+#include "run_command.hpp"
 
 #include <filesystem>
 #include <fmt/format.h>

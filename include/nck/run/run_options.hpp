@@ -1,4 +1,6 @@
 #pragma once
+// What one run is asked to do: `nck run`'s options, which the Python
+// module and `nck diff --run` fill in as well.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -42,10 +44,5 @@ struct RunOptions {
   // Python session); `nck run` wants a program or scenario MDI lines.
   bool operator_present = false;
 };
-
-// Exit codes (README): 0 program end reached, 1 aborted by an NC error or a
-// limit, 2 bad usage, machine data or an output that cannot be written,
-// 130/143 interrupted by SIGINT/SIGTERM (every output file complete).
-int run_simulation(const RunOptions& opt);
 
 }  // namespace nck::app
