@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <string_view>
 
-#include "mill_machine.hpp"
+#include "nck/serve/api_message.hpp"
 #include "nck/sim/operator_action.hpp"
-#include "serve/api_message.hpp"
+#include "mill_machine.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const nck::config::Machine* m = nck::fuzz::mill_machine();

@@ -9,9 +9,9 @@
 #include <filesystem>
 
 #include "nck/config/load.hpp"
+#include "nck/output/output_file.hpp"
 #include "nck/prep/program_check.hpp"
-#include "output_file.hpp"
-#include "stop_request.hpp"
+#include "nck/run/stop_request.hpp"
 
 namespace nck::app {
 namespace {

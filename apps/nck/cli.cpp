@@ -1,6 +1,6 @@
 // The nck command line (README, docs/cli.md). Exit codes: 0 ok, 1 errors in the input
 // (NC error, plausibility errors), 2 bad usage or machine data.
-#include "nck/cli.hpp"
+#include "cli.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -14,17 +14,17 @@
 #include <cstring>
 #include <limits>
 
+#include "nck/config/machine.hpp"
+#include "nck/core/diagnostic.hpp"
+#include "nck/core/edit_distance.hpp"
+#include "nck/output/trace_columns.hpp"
+#include "nck/run/start_at.hpp"
+#include "nck/run/stop_request.hpp"
 #include "check_command.hpp"
 #include "commands.hpp"
 #include "diff_command.hpp"
-#include "nck/config/machine.hpp"
-#include "nck/core/edit_distance.hpp"
-#include "nck/core/diagnostic.hpp"
 #include "run_command.hpp"
-#include "serve/serve_command.hpp"
-#include "start_at.hpp"
-#include "stop_request.hpp"
-#include "trace_columns.hpp"
+#include "serve_command.hpp"
 
 namespace nck::app {
 namespace {

@@ -37,6 +37,5 @@ int init_machine(const InitOptions& opt);
 // `lookup` (case-insensitive; exit 1 when none does).
 int print_parameters(const std::string& lookup = "");
 int print_errors(const std::string& lookup = "");
-std::string errors_markdown();
 
 }  // namespace nck::app

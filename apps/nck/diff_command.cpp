@@ -4,9 +4,9 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include "nck/output/output_writers.hpp"
+#include "nck/run/path_track.hpp"
 #include "final_diff.hpp"
-#include "output_writers.hpp"
-#include "path_track.hpp"
 #include "run_command.hpp"
 
 namespace nck::app {

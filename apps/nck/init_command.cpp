@@ -8,9 +8,9 @@
 #include <fstream>
 #include <system_error>
 
-#include "commands.hpp"
-#include "embedded_files.hpp"
 #include "nck/core/diagnostic.hpp"
+#include "nck/report/embedded_files.hpp"
+#include "commands.hpp"
 
 namespace nck::app {
 namespace {

@@ -7,9 +7,9 @@
 #include <fmt/format.h>
 
 #include "nck/config/load.hpp"
-#include "output_writers.hpp"
-#include "run_outputs.hpp"
-#include "simulation.hpp"
+#include "nck/output/output_writers.hpp"
+#include "nck/run/run_outputs.hpp"
+#include "nck/run/simulation.hpp"
 
 namespace nck::app {
 namespace {
@@ -88,7 +88,7 @@ int run_simulation(const RunOptions& opt) {
     fmt::print(stderr, "nck: error {}: {}\n", number(ErrorId::AppOutputFile), *open_error);
     return 2;
   }
-  out.report.start(s.machine(), opt, s.run());
+  if (!opt.report.empty()) out.report.start(s.machine(), {opt.machine, opt.plc, opt.programs}, s.run());
   if (opt.ghost) out.report.set_ghost(*opt.ghost);
   s.finish(s.run_to_end());
   return finish_outputs(s);

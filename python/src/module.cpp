@@ -5,15 +5,15 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
-#include "nck/commands.hpp"
 #include "nck/config/load.hpp"
 #include "nck/config/parameter_registry.hpp"
+#include "nck/core/diagnostic.hpp"
 #include "nck/nc/block_json.hpp"
 #include "nck/nc/decoder.hpp"
 #include "nck/prep/decoder_setup.hpp"
+#include "nck/run/stop_request.hpp"
 #include "py_common.hpp"
 #include "py_machine.hpp"
-#include "nck/stop_request.hpp"
 
 namespace nck::py {
 
@@ -113,5 +113,5 @@ PYBIND11_MODULE(_nck, m) {
         pybind11::arg("max_wall_s"));
   m.def("errors", &py::errors);
   m.def("params", &py::params);
-  m.def("errors_markdown", &nck::app::errors_markdown);
+  m.def("errors_markdown", &nck::errors_markdown);
 }

@@ -8,7 +8,7 @@
 #include <pybind11/pybind11.h>
 
 #include "nck/core/diagnostic.hpp"
-#include "nck/output_writers.hpp"
+#include "nck/output/output_writers.hpp"
 
 namespace nck::py {
 

@@ -7,12 +7,12 @@
 #include <pybind11/stl.h>
 
 #include "nck/config/load.hpp"
+#include "nck/run/simulation.hpp"
+#include "nck/run/start_at.hpp"
+#include "nck/run/stop_request.hpp"
 #include "py_common.hpp"
 #include "py_interrupt.hpp"
 #include "py_run.hpp"
-#include "nck/simulation.hpp"
-#include "nck/start_at.hpp"
-#include "nck/stop_request.hpp"
 
 namespace nck::py {
 namespace {

@@ -8,8 +8,8 @@
 #include <pybind11/pybind11.h>
 
 #include "nck/config/machine.hpp"
-#include "nck/output_writers.hpp"
-#include "nck/run_command.hpp"
+#include "nck/output/output_writers.hpp"
+#include "nck/run/run_options.hpp"
 
 namespace nck::py {
 

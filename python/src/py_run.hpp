@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <pybind11/pybind11.h>
 
-#include "nck/simulation.hpp"
+#include "nck/run/simulation.hpp"
 
 namespace nck::py {
 

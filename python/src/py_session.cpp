@@ -5,11 +5,11 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include "nck/run/simulation.hpp"
 #include "nck/sim/operator_action.hpp"
 #include "py_common.hpp"
 #include "py_interrupt.hpp"
 #include "py_machine.hpp"
-#include "nck/simulation.hpp"
 
 namespace nck::py {
 namespace {

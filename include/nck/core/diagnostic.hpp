@@ -44,6 +44,9 @@ std::span<const ErrorInfo> all_errors();
 // nullptr for an unknown number.
 const ErrorInfo* find_error(ErrorId id);
 constexpr std::uint32_t number(ErrorId id) { return static_cast<std::uint32_t>(id); }
+// docs/errors.md: every ID as a Markdown table (`nck errors`, the Python
+// module's errors_markdown).
+std::string errors_markdown();
 
 struct SourceLoc {
   std::string file;

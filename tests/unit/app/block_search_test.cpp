@@ -4,7 +4,7 @@
 // is the full run's path (positions by arc length, within 1 um).
 #include <gtest/gtest.h>
 
-#include "../../../apps/nck/start_at.hpp"
+#include "nck/run/start_at.hpp"
 #include "cli_helpers.hpp"
 
 namespace nck::app {

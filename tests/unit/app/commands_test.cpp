@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "cli_helpers.hpp"
-#include "nck/commands.hpp"
+#include "nck/core/diagnostic.hpp"
 
 namespace nck::app {
 namespace {

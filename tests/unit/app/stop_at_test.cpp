@@ -3,7 +3,7 @@
 // run at that point.
 #include <gtest/gtest.h>
 
-#include "../../../apps/nck/stop_at.hpp"
+#include "nck/run/stop_at.hpp"
 #include "cli_helpers.hpp"
 
 namespace nck::app {

@@ -1,0 +1,134 @@
+// `nck serve`: load the machine, start the live kernel and the server, print
+// the URL with its token, serve until SIGINT/SIGTERM (or --max-wall).
+#include "serve_command.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "nck/config/load.hpp"
+#include "nck/run/stop_request.hpp"
+#include "nck/serve/access.hpp"
+#include "nck/serve/serve_api.hpp"
+
+namespace nck::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+int bad_options(const std::string& why) {
+  fmt::print(stderr, "nck serve: error {}: {}\n", number(ErrorId::ServeBadOptions), why);
+  return 2;
+}
+
+bool loopback(const std::string& address) {
+  return address == "127.0.0.1" || address == "::1" || address.starts_with("127.");
+}
+
+// The token: --token-file's first line (at least 128 bits: 32 characters),
+// or a fresh random one.
+std::optional<std::string> read_token(const ServeOptions& opt, std::string& why) {
+  if (opt.token_file.empty()) {
+    if (!loopback(opt.bind)) {
+      why = fmt::format("--bind {} reaches beyond this machine: give --token-file FILE with a secret of at least "
+                        "32 characters", opt.bind);
+      return std::nullopt;
+    }
+    return serve::make_token();
+  }
+  std::ifstream in(opt.token_file);
+  std::string token;
+  std::getline(in, token);
+  while (!token.empty() && (token.back() == '\r' || token.back() == ' ')) token.pop_back();
+  const bool printable = std::all_of(token.begin(), token.end(), [](char c) { return c > ' ' && c < 127 && c != ';'; });
+  if (!in.good() && token.empty()) why = fmt::format("--token-file {} cannot be read", opt.token_file);
+  else if (token.size() < 32 || !printable)
+    why = "the token in --token-file must be at least 32 printable characters (128 bits), without spaces or ';'";
+  if (!why.empty()) return std::nullopt;
+  return token;
+}
+
+std::optional<double> speed_of(const std::string& text) {
+  if (text == "max") return 0.0;
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0' || !(v > 0 && v <= 1000)) return std::nullopt;
+  return v;
+}
+
+fs::path uploads_folder(const ServeOptions& opt) {
+  if (!opt.uploads.empty()) return opt.uploads;
+  return fs::temp_directory_path() / fmt::format("nck-serve-{}-uploads", ::getpid());
+}
+
+}  // namespace
+
+int serve_command(const ServeOptions& opt) {
+  const auto speed = speed_of(opt.speed);
+  if (!speed) return bad_options(fmt::format("--speed '{}' is neither a number in (0, 1000] nor 'max'", opt.speed));
+  std::string why;
+  const auto token = read_token(opt, why);
+  if (!token) return bad_options(why);
+  config::LoadResult loaded = config::load_machine(opt.machine);
+  for (const Diagnostic& d : loaded.diagnostics.items()) fmt::print(stderr, "{}\n", format(d));
+  if (!loaded.ok()) return 2;
+  const config::Machine& m = *loaded.machine;
+
+  std::vector<fs::path> roots(opt.folders.begin(), opt.folders.end());
+  for (const fs::path& r : roots)
+    if (std::error_code ec; !fs::is_directory(r, ec)) return bad_options(fmt::format("--programs {} is no folder", r.string()));
+  roots.push_back(opt.machine);
+  // A program named on the command line was chosen by whoever started the
+  // server: its folder may be read too (its subroutines live there).
+  std::vector<std::string> programs;
+  for (const std::string& p : opt.programs) {
+    const fs::path full = fs::absolute(p);
+    roots.push_back(full.parent_path());
+    programs.push_back(full.string());
+  }
+  serve::ProgramFolders folders(roots, uploads_folder(opt), opt.max_program_bytes);
+
+  sim::DryRunOptions first;
+  first.prep_thread = true;
+  auto run = sim::DryRun::create(m, {}, first);
+  if (!run) return bad_options(format(run.error()));
+  auto first_run = std::make_unique<sim::DryRun>(std::move(*run));
+  first_run->start_preparation_thread();
+  serve::LiveKernel kernel(std::move(first_run), *speed);
+  kernel.set_paused(opt.paused);
+  serve::ServeApi api(m, kernel, std::move(folders));
+  for (std::size_t ch = 0; ch < opt.programs.size() && ch < m.channels.size(); ++ch)
+    if (auto d = api.load(ch, programs[ch])) {
+      fmt::print(stderr, "{}\n", format(*d));
+      return 2;
+    }
+
+  serve::HttpLimits limits;
+  limits.max_clients = opt.max_clients;
+  limits.requests_per_s = opt.rate;
+  limits.max_upload_bytes = opt.max_program_bytes;
+  std::optional<serve::HttpServer> server;
+  try {
+    server.emplace(api, opt.bind, opt.port, *token, limits);
+  } catch (const std::exception& e) {
+    return bad_options(fmt::format("cannot listen on {}:{}: {}", opt.bind, opt.port, e.what()));
+  }
+  if (const std::string warning = kernel.start(opt.realtime); !warning.empty()) fmt::print(stderr, "{}\n", warning);
+  if (!loopback(opt.bind))
+    fmt::print(stderr, "nck serve: warning: plain HTTP on {} carries the token in clear; use it on a trusted network only\n",
+               opt.bind);
+  const std::string host = opt.bind.find(':') != std::string::npos ? fmt::format("[{}]", opt.bind) : opt.bind;
+  fmt::print("nck serve: http://{}:{}/?token={}\n", host, server->port(), *token);
+  std::fflush(stdout);
+  const WallClockLimit wall(opt.max_wall_s);
+  server->run(stop_flag());
+  kernel.stop();
+  return 0;
+}
+
+}  // namespace nck::app

@@ -1,0 +1,62 @@
+#pragma once
+// The output files of one `nck run` and the rule that protects the inputs.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "nck/output/output_writers.hpp"
+#include "nck/output/time_by_cause.hpp"
+#include "nck/report/report_writer.hpp"
+#include "nck/run/console.hpp"
+#include "nck/run/run_options.hpp"
+#include "nck/run/run_summary.hpp"
+#include "nck/run/trace_memory.hpp"
+
+namespace nck::app {
+
+// Where a run's results go: the files of `nck run`, or memory (the Python
+// module: events as JSON objects, the trace as columns, stderr kept).
+struct RunOutputs {
+  explicit RunOutputs(bool keep_console = false) : console(keep_console) {}
+  EventWriter events;
+  TraceWriter trace;
+  ReportWriter report;
+  bool keep_events = false;                    // the Python module: into event_list
+  std::vector<nlohmann::ordered_json> event_list;
+  TraceMemory trace_memory;                   // the Python module's trace
+  std::vector<FinalError> errors;
+  std::vector<FinalError> warnings;  // every warning of the run said on stderr (the module's Run.warnings)
+  RunSummary summary;
+  TimeByCause causes;  // every cycle's class, summed (--final, the report, stderr)
+  Console console;     // stderr
+
+  // Events are rendered only when an output wants them.
+  bool wants_events() const { return keep_events || events.is_open() || report.enabled(); }
+  void event(nlohmann::ordered_json&& e, bool is_error) {
+    if (events.is_open() || report.enabled()) event_line(dump_json(e), is_error);
+    if (keep_events) event_list.push_back(std::move(e));
+  }
+  // An event already written as its line (block events: BlockEventText).
+  void event_line(const std::string& line, bool is_error) {
+    events.write_line(line);
+    report.event(line, is_error);
+  }
+};
+
+// An output path that names an input (a program, the --plc file, a file of
+// the machine folder) or another output: the error text (refused with
+// exit 2, as README says). Paths are compared after resolving links and "..".
+std::optional<std::string> output_path_conflict(const RunOptions& opt);
+
+// The outputs whose target is, at the end of the run, a file the run read:
+// a subroutine or cycle the programs called as well as the inputs above,
+// compared by device and inode (links, hard links, other spellings). They
+// are not written (940004); the others are.
+struct OutputsOverInputs {
+  bool events = false, trace = false, final_state = false, report = false;
+  std::vector<std::string> messages;
+  bool any() const { return !messages.empty(); }
+};
+OutputsOverInputs outputs_over_inputs(const RunOptions& opt, const sim::DryRun& run);
+
+}  // namespace nck::app

@@ -1,0 +1,61 @@
+#pragma once
+// nck serve's API (docs/api.md): the page and its files, the state, the
+// machine, the programs one may load, the commands, the stream. Runs in the
+// server thread; reaches the kernel only through LiveKernel.
+#include <array>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "nck/config/machine.hpp"
+#include "nck/serve/http_server.hpp"
+#include "nck/serve/live_kernel.hpp"
+#include "nck/serve/program_folders.hpp"
+#include "nck/serve/snapshot_json.hpp"
+
+namespace nck::app::serve {
+
+struct ApiCommand;
+
+class ServeApi : public ApiHandler {
+ public:
+  ServeApi(const config::Machine& m, LiveKernel& kernel, ProgramFolders folders);
+
+  HttpReply handle(const HttpRequest& r) override;
+  void collect(std::vector<std::string>& frames) override;
+  std::string stream_start() override;
+
+  // A fresh run of the loaded programs (setup side), ready to hand over;
+  // the reason when a program cannot be opened.
+  std::expected<std::unique_ptr<sim::DryRun>, Diagnostic> make_run(const std::optional<prep::SearchMark>& search,
+                                                                   std::size_t search_channel) const;
+  // Loads `program` into channel ch (0-based) and stages the run.
+  std::optional<Diagnostic> load(std::size_t ch, const std::string& program);
+
+ private:
+  HttpReply command(std::string_view body);
+  HttpReply act(const ApiCommand& c);
+  HttpReply mdi(std::size_t ch, const std::string& text);
+  HttpReply operate(const std::string& line);
+  HttpReply pass_on(const sim::ScenarioAction& a);
+  HttpReply start_or_release(std::size_t ch, const sim::ScenarioAction& cycle_start);
+  HttpReply program_text(std::string_view target) const;
+  HttpReply upload(std::string_view target, std::string_view body);
+  std::string state_frame();
+  void drain_events(std::vector<std::string>& frames);
+  void advance();
+
+  const config::Machine& machine_;
+  LiveKernel& kernel_;
+  ProgramFolders folders_;
+  std::vector<std::filesystem::path> programs_;  // per channel: the loaded program (empty: none)
+  std::unique_ptr<sim::DryRun> staged_;          // loaded, waits for cycle start
+  sim::DryRun* serving_ = nullptr;  // the run of generation_ (the kernel's, or the one it just gave back)
+  std::uint64_t generation_ = 1;
+  ChannelFrames frames_{};
+  LiveSnapshot last_{};  // the newest state taken
+};
+
+}  // namespace nck::app::serve

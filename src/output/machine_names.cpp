@@ -1,0 +1,49 @@
+#include "nck/output/machine_names.hpp"
+
+#include "nck/plc/hli.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+namespace nck::app {
+
+std::vector<std::string> path_axis_columns(const config::Machine& m) {
+  std::vector<std::string> cols, used;
+  for (std::size_t c = 0; c < m.channels.size(); ++c) {
+    std::vector<std::string> mine;
+    for (const auto& ax : m.channels[c].axes) {
+      const bool clash = std::find(used.begin(), used.end(), ax.name) != used.end();
+      cols.push_back(clash ? fmt::format("{}.{}", c + 1, ax.name) : ax.name);
+      mine.push_back(ax.name);
+    }
+    used.insert(used.end(), mine.begin(), mine.end());
+  }
+  return cols;
+}
+
+// In the kernel's spindle order (plc::build_spindle_map), so position i is
+// TickOutput::spindles[i].
+std::vector<SpindleName> machine_spindles(const config::Machine& m) {
+  const plc::SpindleMap map = plc::build_spindle_map(m);
+  std::vector<SpindleName> out(map.count);
+  for (std::size_t c = 0; c < m.channels.size(); ++c)
+    for (std::size_t i = 0; i < m.channels[c].spindles.size(); ++i) {
+      const std::int8_t k = map.at(c + 1, static_cast<std::int32_t>(i));
+      if (k < 0 || !out[static_cast<std::size_t>(k)].name.empty()) continue;
+      const config::ChannelSpindle& s = m.channels[c].spindles[i];
+      const bool open_loop =
+          s.axis_index >= 0 && m.axes[static_cast<std::size_t>(s.axis_index)].is_speed_controlled();
+      out[static_cast<std::size_t>(k)] = {s.name, s.log_axis_nr, c, open_loop};
+    }
+  return out;
+}
+
+}  // namespace nck::app
+
+namespace nck::app {
+std::string main_spindle_designation(const config::ChannelConfig& ch) {
+  for (const auto& s : ch.spindles)
+    if (s.log_axis_nr == ch.main_spindle_ax_nr) return s.name;
+  return ch.spindles.empty() ? std::string() : ch.spindles.front().name;
+}
+}  // namespace nck::app

@@ -1,0 +1,217 @@
+#include "nck/serve/api_message.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+namespace nck::app::serve {
+namespace {
+
+using json = nlohmann::json;
+
+// Checks one message against its command's schema; the first problem wins.
+class Reader {
+ public:
+  Reader(const json& j, Diagnostics& diags) : j_(j), diags_(diags) {}
+
+  bool fail(ErrorId id, std::string msg) {
+    if (ok_) diags_.add(id, SourceLoc{"api", 1, 0}, std::move(msg));
+    ok_ = false;
+    return false;
+  }
+  bool ok() const { return ok_; }
+
+  // Every field is one of `allowed` (besides "command" and "channel").
+  void only(std::initializer_list<std::string_view> allowed) {
+    for (const auto& [key, _] : j_.items()) {
+      if (key == "command" || key == "channel") continue;
+      if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
+        fail(ErrorId::ApiUnknownField, fmt::format("'{}' is no field of '{}'", shown(key), command()));
+    }
+  }
+  std::string command() const { return j_.value("command", std::string()); }
+
+  bool boolean(const char* key) {
+    const json* v = field(key);
+    if (!v) return false;
+    if (!v->is_boolean()) return fail(ErrorId::ApiBadValue, fmt::format("'{}' must be true or false", key));
+    return v->get<bool>();
+  }
+  double number(const char* key, double lowest, double highest, bool required = true, double otherwise = 0) {
+    const json* v = required ? field(key) : optional_field(key);
+    if (!v) return otherwise;
+    if (!v->is_number()) return fail(ErrorId::ApiBadValue, fmt::format("'{}' must be a number", key)), otherwise;
+    const double x = v->get<double>();
+    if (!(x >= lowest && x <= highest))
+      return fail(ErrorId::ApiBadValue, fmt::format("'{}' must lie in {}..{}", key, lowest, highest)), otherwise;
+    return x;
+  }
+  std::string text(const char* key, std::size_t max_chars, bool required = true) {
+    const json* v = required ? field(key) : optional_field(key);
+    if (!v) return {};
+    if (!v->is_string()) return fail(ErrorId::ApiBadValue, fmt::format("'{}' must be a string", key)), std::string();
+    std::string s = v->get<std::string>();
+    if (s.size() > max_chars) return fail(ErrorId::ApiBadValue, fmt::format("'{}' is longer than {} characters", key, max_chars)), std::string();
+    if (s.find_first_of("\r\n") != std::string::npos)
+      return fail(ErrorId::ApiBadValue, fmt::format("'{}' must be one line", key)), std::string();
+    return s;
+  }
+  // A name the scenario grammar reads as one word: an axis or a spindle.
+  std::string name(const char* key) {
+    std::string s = text(key, 15);
+    const bool word = !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
+      return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+    });
+    if (ok_ && !word) fail(ErrorId::ApiBadValue, fmt::format("'{}' must be a name of letters and digits", key));
+    return s;
+  }
+  // One of `words`.
+  std::string choice(const char* key, std::initializer_list<std::string_view> words) {
+    std::string s = text(key, 16);
+    if (ok_ && std::find(words.begin(), words.end(), s) == words.end())
+      fail(ErrorId::ApiBadValue, fmt::format("'{}' must be one of: {}", key, fmt::join(words, ", ")));
+    return s;
+  }
+
+ private:
+  const json* field(const char* key) {
+    const json* v = optional_field(key);
+    if (!v && ok_) fail(ErrorId::ApiBadValue, fmt::format("'{}' needs the field '{}'", command(), key));
+    return v;
+  }
+  const json* optional_field(const char* key) const {
+    const auto it = j_.find(key);
+    return it == j_.end() || it->is_null() ? nullptr : &*it;
+  }
+  static std::string shown(const std::string& s) { return s.size() > 40 ? s.substr(0, 40) + "..." : s; }
+
+  const json& j_;
+  Diagnostics& diags_;
+  bool ok_ = true;
+};
+
+std::string percent(double p) { return fmt::format("{}", p); }
+
+// The scenario line of an operator command, or "" when `cmd` is none.
+std::string operator_line(const std::string& cmd, Reader& r) {
+  const auto on_off = [&](const char* word) {
+    r.only({"on"});
+    return fmt::format("{} {}", word, r.boolean("on") ? "on" : "off");
+  };
+  const auto bare = [&](const char* word) {
+    r.only({});
+    return std::string(word);
+  };
+  if (cmd == "cycle_start") return bare("cycle_start");
+  if (cmd == "stop") return bare("stop");
+  if (cmd == "reset") return bare("reset");
+  if (cmd == "feedhold") return on_off("feedhold");
+  if (cmd == "single_step") return on_off("single_step");
+  if (cmd == "optional_stop") return on_off("optional_stop");
+  if (cmd == "skip_mask") {
+    r.only({"mask"});
+    return fmt::format("skip_mask {}", static_cast<std::uint32_t>(r.number("mask", 0, 1023)));
+  }
+  if (cmd == "feed_override" || cmd == "rapid_override") {
+    r.only({"percent"});
+    return cmd + " " + percent(r.number("percent", 0, 200));
+  }
+  if (cmd == "spindle_override") {
+    r.only({"spindle", "percent"});
+    const std::string spindle = r.name("spindle");
+    return fmt::format("spindle_override {} {}", spindle, percent(r.number("percent", 0, 200)));
+  }
+  if (cmd == "mode") {
+    r.only({"mode"});
+    return "mode " + r.choice("mode", {"manual", "automatic"});
+  }
+  if (cmd == "jog") {
+    r.only({"axis", "direction", "speed_mm_min"});
+    const std::string axis = r.name("axis");
+    const std::string dir = r.choice("direction", {"+", "-", "stop"});
+    const double speed = r.number("speed_mm_min", 1e-3, 1e6, false);
+    return speed > 0 && dir != "stop" ? fmt::format("jog {} {} {}", axis, dir, speed) : fmt::format("jog {} {}", axis, dir);
+  }
+  if (cmd == "jog_increment") {
+    r.only({"axis", "direction", "step_mm"});
+    const std::string axis = r.name("axis");
+    const std::string dir = r.choice("direction", {"+", "-"});
+    return fmt::format("jog_increment {} {} {}", axis, dir, r.number("step_mm", 1e-6, 1e4));
+  }
+  if (cmd == "action") {
+    r.only({"line"});
+    return r.text("line", 256);
+  }
+  return {};
+}
+
+bool other_command(const std::string& cmd, Reader& r, ApiCommand& out) {
+  using K = ApiCommand::Kind;
+  if (cmd == "mdi") {
+    r.only({"text"});
+    out.kind = K::mdi;
+    out.text = r.text("text", kMaxMdiChars);
+    if (r.ok() && out.text.find_first_not_of(" \t") == std::string::npos) r.fail(ErrorId::ApiBadValue, "'text' is empty");
+  } else if (cmd == "load") {
+    r.only({"program", "start_at"});
+    out.kind = K::load;
+    out.program = r.text("program", 1024);
+    out.start_at = r.text("start_at", 128, false);
+  } else if (cmd == "pause") {
+    r.only({"on"});
+    out.kind = K::pause;
+    out.on = r.boolean("on");
+  } else if (cmd == "step_cycle") {
+    r.only({});
+    out.kind = K::step_cycle;
+  } else if (cmd == "speed") {
+    r.only({"speed"});
+    out.kind = K::speed;
+    out.speed = r.number("speed", 0, 1000);  // 0: as fast as possible
+  } else {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<ApiCommand> parse_api_command(std::string_view body, std::size_t channels, Diagnostics& diags) {
+  const SourceLoc loc{"api", 1, 0};
+  if (body.size() > kMaxCommandBytes) {
+    diags.add(ErrorId::ApiTooLarge, loc, fmt::format("a command is at most {} bytes", kMaxCommandBytes));
+    return std::nullopt;
+  }
+  const json j = json::parse(body, nullptr, false);
+  if (j.is_discarded() || !j.is_object()) {
+    diags.add(ErrorId::ApiMalformedJson, loc, "the body is not one JSON object");
+    return std::nullopt;
+  }
+  Reader r(j, diags);
+  const auto cmd_it = j.find("command");
+  if (cmd_it == j.end() || !cmd_it->is_string()) {
+    diags.add(ErrorId::ApiBadValue, loc, "'command' (a string) is missing");
+    return std::nullopt;
+  }
+  ApiCommand out;
+  const double channel = r.number("channel", 1, static_cast<double>(std::max<std::size_t>(channels, 1)), false, 1);
+  if (std::floor(channel) != channel) r.fail(ErrorId::ApiBadValue, "'channel' must be a whole number");
+  out.channel = static_cast<std::uint8_t>(channel);
+  const std::string cmd = cmd_it->get<std::string>();
+  if (!other_command(cmd, r, out)) {
+    out.kind = ApiCommand::Kind::action;
+    const std::string line = operator_line(cmd, r);
+    if (line.empty() && r.ok()) {
+      diags.add(ErrorId::ApiUnknownCommand, loc, fmt::format("'{}' is no command (docs/api.md)", cmd.substr(0, 40)));
+      return std::nullopt;
+    }
+    out.line = fmt::format("ch={} {}", out.channel, line);
+  }
+  if (!r.ok()) return std::nullopt;
+  return out;
+}
+
+}  // namespace nck::app::serve

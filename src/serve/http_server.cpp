@@ -1,0 +1,258 @@
+#include "nck/serve/http_server.hpp"
+
+#include <deque>
+#include <optional>
+
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/steady_timer.hpp>
+#include <boost/asio/write.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "nck/core/diagnostic.hpp"
+#include "nck/serve/access.hpp"
+
+namespace nck::app::serve {
+namespace {
+
+namespace asio = boost::asio;
+namespace beast = boost::beast;
+namespace http = beast::http;
+using tcp = asio::ip::tcp;
+
+constexpr std::size_t kMaxHeaderBytes = 8 * 1024;
+constexpr auto kIdleTimeout = std::chrono::seconds(60);
+constexpr auto kWriteTimeout = std::chrono::seconds(10);
+
+}  // namespace
+
+HttpReply error_reply(unsigned status, const Diagnostic& d) {
+  nlohmann::ordered_json j = {{"error", {{"id", number(d.id)}, {"message", d.message}}}};
+  if (const ErrorInfo* info = find_error(d.id)) j["error"]["remedy"] = std::string(info->remedy);
+  // replace, not throw: a message may quote bytes a client sent
+  return HttpReply{status, "application/json", j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace), {}};
+}
+
+HttpReply error_reply(unsigned status, ErrorId id, std::string message) {
+  return error_reply(status, make_diagnostic(id, SourceLoc{"api", 1, 0}, std::move(message)));
+}
+
+struct HttpServer::Impl {
+  class Connection;
+
+  ApiHandler& handler;
+  std::string token;
+  HttpLimits limits;
+  asio::io_context io{1};
+  tcp::acceptor acceptor{io};
+  std::optional<ServerNames> names;
+  std::vector<std::weak_ptr<Connection>> streams;
+  std::size_t clients = 0;
+  asio::steady_timer tick{io};
+  const std::atomic<bool>* stop = nullptr;
+
+  Impl(ApiHandler& h, std::string t, HttpLimits l) : handler(h), token(std::move(t)), limits(l) {}
+  void accept();
+  void on_tick();
+  // The checks every request passes; a refusal, or nothing when it may go on.
+  std::optional<HttpReply> check(const http::request<http::string_body>& req, RequestBudget& budget) const;
+  bool authorized(const http::request<http::string_body>& req) const;
+};
+
+// One client connection: requests one after the other, or a stream.
+class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connection> {
+ public:
+  Connection(Impl& server, tcp::socket socket)
+      : server_(server), stream_(std::move(socket)), budget_(server.limits.requests_per_s) {
+    ++server_.clients;
+  }
+  ~Connection() { --server_.clients; }
+
+  void start() { read_header(); }
+  // One answer, then the connection goes (the client bound holds).
+  void refuse(const HttpReply& r) { reply(r, false); }
+  // A stream frame (shared by every stream client); drops a client that lags.
+  void send(const std::shared_ptr<const std::string>& frame) {
+    if (outbox_.size() >= server_.limits.max_stream_backlog) return close();
+    outbox_.push_back(frame);
+    if (outbox_.size() == 1) write_next();
+  }
+  void close() {
+    beast::error_code ec;
+    stream_.socket().shutdown(tcp::socket::shutdown_both, ec);
+    stream_.close();
+  }
+
+ private:
+  void read_header() {
+    parser_.emplace();
+    parser_->header_limit(kMaxHeaderBytes);
+    stream_.expires_after(kIdleTimeout);
+    http::async_read_header(stream_, buffer_, *parser_,
+                            [self = shared_from_this()](beast::error_code ec, std::size_t) { self->on_header(ec); });
+  }
+  void on_header(beast::error_code ec) {
+    if (ec) return close();
+    const bool upload = parser_->get().target().starts_with("/api/v1/upload");
+    parser_->body_limit(upload ? server_.limits.max_upload_bytes : server_.limits.max_command_bytes);
+    http::async_read(stream_, buffer_, *parser_,
+                     [self = shared_from_this()](beast::error_code e, std::size_t) { self->on_request(e); });
+  }
+  void on_request(beast::error_code ec) {
+    if (ec == http::error::body_limit)
+      return reply(error_reply(413, ErrorId::ApiTooLarge, "the body is larger than this request accepts"), false);
+    if (ec) return close();
+    const http::request<http::string_body>& req = parser_->get();
+    if (auto refused = server_.check(req, budget_)) return reply(*refused, req.keep_alive());
+    if (req.method() == http::verb::get && req.target() == "/api/v1/stream") return start_stream();
+    const HttpRequest r{std::string_view(req.method_string().data(), req.method_string().size()),
+                        std::string_view(req.target().data(), req.target().size()),
+                        std::string_view(req.body().data(), req.body().size())};
+    reply(server_.handler.handle(r), req.keep_alive());
+  }
+  void reply(const HttpReply& r, bool keep_alive) {
+    auto res = std::make_shared<http::response<http::string_body>>(static_cast<http::status>(r.status), 11);
+    res->set(http::field::content_type, r.content_type);
+    res->set(http::field::cache_control, "no-store");
+    res->set("Referrer-Policy", "no-referrer");
+    res->set("X-Content-Type-Options", "nosniff");
+    for (const auto& [k, v] : r.headers) res->set(k, v);
+    res->body() = r.body;
+    res->keep_alive(keep_alive);
+    res->prepare_payload();
+    stream_.expires_after(kWriteTimeout);
+    http::async_write(stream_, *res, [self = shared_from_this(), res](beast::error_code ec, std::size_t) {
+      if (ec || !res->keep_alive()) return self->close();
+      self->read_header();
+    });
+  }
+  // The connection becomes a server-sent-events stream until either side closes it.
+  void start_stream() {
+    server_.streams.push_back(weak_from_this());
+    std::string head =
+        "HTTP/1.1 200 OK\r\nContent-Type: text/event-stream\r\nCache-Control: no-store\r\n"
+        "Referrer-Policy: no-referrer\r\nX-Content-Type-Options: nosniff\r\nConnection: close\r\n\r\n";
+    send(std::make_shared<const std::string>(std::move(head) + server_.handler.stream_start()));
+    watch_for_close();
+  }
+  // A stream client sends nothing more: a read ends only when it goes away.
+  void watch_for_close() {
+    stream_.expires_never();
+    stream_.socket().async_read_some(asio::buffer(sink_), [self = shared_from_this()](beast::error_code ec, std::size_t) {
+      if (ec) return self->close();
+      self->watch_for_close();
+    });
+  }
+  void write_next() {
+    stream_.expires_after(kWriteTimeout);
+    asio::async_write(stream_.socket(), asio::buffer(*outbox_.front()),
+                      [self = shared_from_this()](beast::error_code ec, std::size_t) {
+                        if (ec) return self->close();
+                        self->outbox_.pop_front();
+                        if (!self->outbox_.empty()) self->write_next();
+                      });
+  }
+
+  Impl& server_;
+  beast::tcp_stream stream_;
+  beast::flat_buffer buffer_;
+  std::optional<http::request_parser<http::string_body>> parser_;
+  RequestBudget budget_;
+  std::deque<std::shared_ptr<const std::string>> outbox_;
+  std::array<char, 512> sink_{};
+};
+
+void HttpServer::Impl::accept() {
+  acceptor.async_accept([this](beast::error_code ec, tcp::socket socket) {
+    if (!ec) {
+      auto c = std::make_shared<Connection>(*this, std::move(socket));
+      if (clients > limits.max_clients) {
+        c->refuse(error_reply(503, ErrorId::ApiTooManyClients, "too many clients are connected"));
+      } else {
+        c->start();
+      }
+    }
+    if (acceptor.is_open()) accept();
+  });
+}
+
+bool HttpServer::Impl::authorized(const http::request<http::string_body>& req) const {
+  const auto header = [&](http::field f) {
+    const auto it = req.find(f);
+    return it == req.end() ? std::string_view{} : std::string_view(it->value().data(), it->value().size());
+  };
+  std::string_view given = bearer_token(header(http::field::authorization));
+  if (given.empty()) given = cookie_value(header(http::field::cookie), "nck_token");
+  return same_token(given, token);
+}
+
+std::optional<HttpReply> HttpServer::Impl::check(const http::request<http::string_body>& req,
+                                                  RequestBudget& budget) const {
+  const auto host_it = req.find(http::field::host);
+  const std::string_view host = host_it == req.end() ? std::string_view{} : std::string_view(host_it->value().data(), host_it->value().size());
+  if (!names->host_ok(host)) return error_reply(403, ErrorId::ApiForbiddenOrigin, "the Host header is not this server's");
+  if (const auto o = req.find(http::field::origin); o != req.end()) {
+    const std::string_view origin(o->value().data(), o->value().size());
+    if (origin != fmt::format("http://{}", host))
+      return error_reply(403, ErrorId::ApiForbiddenOrigin, "the Origin header is not this server's");
+  }
+  if (!budget.take(std::chrono::steady_clock::now()))
+    return error_reply(429, ErrorId::ApiRateLimited, fmt::format("more than {} requests per second", limits.requests_per_s));
+  const std::string_view target(req.target().data(), req.target().size());
+  if (target.starts_with("/api/") && !authorized(req))
+    return error_reply(401, ErrorId::ApiUnauthorized, "no valid token: open the URL nck serve printed");
+  // The page's URL token becomes a cookie the scripts cannot read, and leaves the address bar.
+  if (const std::string_view t = query_value(target, "token"); !t.empty()) {
+    if (!same_token(t, token)) return error_reply(401, ErrorId::ApiUnauthorized, "the token in the URL is not this server's");
+    return HttpReply{303, "text/plain", "", {{"Location", "/"},
+                                             {"Set-Cookie", fmt::format("nck_token={}; HttpOnly; SameSite=Strict; Path=/", token)}}};
+  }
+  return std::nullopt;
+}
+
+void HttpServer::Impl::on_tick() {
+  if (stop->load(std::memory_order_acquire)) {
+    beast::error_code ec;
+    acceptor.close(ec);
+    for (auto& w : streams)
+      if (auto c = w.lock()) c->close();
+    io.stop();
+    return;
+  }
+  std::vector<std::string> frames;
+  handler.collect(frames);
+  std::erase_if(streams, [](const std::weak_ptr<Connection>& w) { return w.expired(); });
+  for (std::string& f : frames) {
+    auto shared = std::make_shared<const std::string>(std::move(f));
+    for (auto& w : streams)
+      if (auto c = w.lock()) c->send(shared);
+  }
+  tick.expires_after(limits.stream_period);
+  tick.async_wait([this](beast::error_code) { on_tick(); });
+}
+
+HttpServer::HttpServer(ApiHandler& handler, const std::string& bind_address, std::uint16_t port, std::string token,
+                       HttpLimits limits)
+    : impl_(std::make_unique<Impl>(handler, std::move(token), limits)) {
+  const tcp::endpoint at(asio::ip::make_address(bind_address), port);
+  impl_->acceptor.open(at.protocol());
+  impl_->acceptor.set_option(asio::socket_base::reuse_address(true));
+  impl_->acceptor.bind(at);
+  impl_->acceptor.listen();
+  impl_->names.emplace(bind_address, this->port());
+}
+
+HttpServer::~HttpServer() = default;
+
+std::uint16_t HttpServer::port() const { return impl_->acceptor.local_endpoint().port(); }
+
+void HttpServer::run(const std::atomic<bool>& stop) {
+  impl_->stop = &stop;
+  impl_->accept();
+  impl_->on_tick();
+  impl_->io.run();
+}
+
+}  // namespace nck::app::serve

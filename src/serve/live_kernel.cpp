@@ -1,0 +1,153 @@
+#include "nck/serve/live_kernel.hpp"
+
+#include <pthread.h>
+#include <sched.h>
+#include <sys/mman.h>
+
+#include <cerrno>
+#include <cstring>
+
+#include <fmt/format.h>
+
+namespace nck::app::serve {
+namespace {
+
+// SCHED_FIFO for the calling thread and locked memory, where the system
+// grants them; what was refused, for the one-line warning.
+std::string ask_for_realtime() {
+  std::string refused;
+  sched_param p{};
+  p.sched_priority = 80;
+  if (const int e = pthread_setschedparam(pthread_self(), SCHED_FIFO, &p); e != 0)
+    refused = fmt::format("real-time scheduling (SCHED_FIFO: {})", std::strerror(e));
+  if (mlockall(MCL_CURRENT | MCL_FUTURE) != 0)
+    refused += fmt::format("{}locked memory (mlockall: {})", refused.empty() ? "" : " and ", std::strerror(errno));
+  return refused;
+}
+
+}  // namespace
+
+LiveKernel::LiveKernel(std::unique_ptr<sim::DryRun> first, double speed)
+    : current_(first.release()), clock_(current_.load()->kernel().cycle_time_s()) {
+  clock_.set_speed(speed);
+}
+
+LiveKernel::~LiveKernel() {
+  stop();
+  delete incoming_.exchange(nullptr);
+  delete retired_.exchange(nullptr);
+  delete current_.exchange(nullptr);
+}
+
+std::string LiveKernel::start(bool realtime) {
+  std::string warning;
+  std::atomic<bool> asked{false};
+  thread_ = std::jthread([this, realtime, &warning, &asked](std::stop_token st) {
+    // The kernel thread asks for itself; the answer is read once, below.
+    if (realtime && clock_.speed() > 0) warning = ask_for_realtime();
+    asked.store(true, std::memory_order_release);
+    asked.notify_one();
+    run(st);
+  });
+  asked.wait(false, std::memory_order_acquire);
+  if (!realtime) return {};
+  return warning.empty() ? std::string()
+                         : fmt::format("nck serve: warning: {} not granted; cycles may start late (run as root or "
+                                       "with CAP_SYS_NICE and a memlock limit)", warning);
+}
+
+void LiveKernel::stop() {
+  if (!thread_.joinable()) return;
+  thread_.request_stop();
+  thread_.join();
+}
+
+bool LiveKernel::load(std::unique_ptr<sim::DryRun> next) {
+  sim::DryRun* expected = nullptr;
+  if (!incoming_.compare_exchange_strong(expected, next.get(), std::memory_order_acq_rel)) return false;
+  (void)next.release();  // the kernel owns it now
+  return true;
+}
+
+std::unique_ptr<sim::DryRun> LiveKernel::take_retired() {
+  return std::unique_ptr<sim::DryRun>(retired_.exchange(nullptr, std::memory_order_acq_rel));
+}
+
+void LiveKernel::run(std::stop_token stop) noexcept {
+  clock_.start();
+  while (!stop.stop_requested()) {
+    const std::uint32_t cycles = clock_.wait();
+    take_incoming();
+    sim::DryRun& now = *current_.load(std::memory_order_relaxed);
+    const std::uint64_t steps = steps_.load(std::memory_order_acquire);
+    const bool paused = paused_.load(std::memory_order_acquire);
+    if (paused && steps == steps_done_) {
+      publish(now, *out_);
+      continue;
+    }
+    const std::uint32_t n = paused ? 1 : cycles;
+    if (paused) ++steps_done_;
+    for (std::uint32_t i = 0; i < n && !stop.stop_requested(); ++i) cycle(now);
+    publish(now, *out_);
+  }
+}
+
+// A run the server handed over replaces the current one at a cycle
+// boundary; the old one goes back to the server, which ends its
+// preparation thread and frees it (never the kernel thread).
+void LiveKernel::take_incoming() noexcept {
+  sim::DryRun* next = incoming_.load(std::memory_order_acquire);
+  if (!next || retired_.load(std::memory_order_acquire)) return;  // the last one not yet collected
+  incoming_.store(nullptr, std::memory_order_release);
+  retired_.store(current_.exchange(next, std::memory_order_acq_rel), std::memory_order_release);
+  generation_.fetch_add(1, std::memory_order_acq_rel);
+}
+
+void LiveKernel::cycle(sim::DryRun& run) noexcept {
+  for (; !actions_.empty(); actions_.pop()) (void)run.machine().operate(actions_.front());
+  try {
+    run.prepare_live();  // skip levels and sensors for preparation; rethrows its failure
+  } catch (...) {
+    // Preparation died (out of memory): the kernel runs on with what it has
+    // queued and brakes at its end, as for a late preparation.
+  }
+  run.cycle(*out_);
+  const std::uint64_t generation = generation_.load(std::memory_order_relaxed);
+  for (const kernel::Event& e : out_->events)
+    if (!events_.push(LiveEvent{generation, e})) ++events_lost_;
+}
+
+void LiveKernel::publish(const sim::DryRun& run, const kernel::TickOutput& out) noexcept {
+  LiveSnapshot& s = snapshots_.back();
+  const kernel::Kernel& k = run.kernel();
+  s.generation = generation_.load(std::memory_order_relaxed);
+  s.cycle = k.cycles();
+  s.t_s = k.time_s();
+  s.paused = paused_.load(std::memory_order_relaxed);
+  s.speed = clock_.speed();
+  s.channel_count = k.channel_count();
+  s.spindle_count = k.spindle_count();
+  for (std::size_t ch = 0; ch < s.channel_count && ch < config::kMaxChannels; ++ch) {
+    const kernel::ChannelOutput& o = out.channels[ch];
+    LiveChannel& c = s.channels[ch];
+    c.axis_mcs = o.axis_mcs;
+    c.path_velocity_mm_s = o.path_velocity_mm_s;
+    c.feed_mm_s = o.feed_mm_s;
+    c.distance_to_go_mm = o.distance_to_go_mm;
+    c.program_state = k.program_state(ch);
+    c.cause = o.cause;
+    c.wait_reason = o.wait_reason;
+    c.at = k.channel_state(ch).at;
+    c.hli = run.machine().hli().channel[ch];
+  }
+  s.spindles = out.spindles;
+  s.hli_spindles = out.hli_spindles;
+  for (std::size_t i = 0; i < s.spindle_count && i < s.spindle_override_pct.size(); ++i) {
+    s.spindle_override_pct[i] = run.machine().hli().spindle_control[i].effective_override_percent();
+  }
+  s.lateness = clock_.lateness();
+  s.events_lost = events_lost_;
+  snapshots_.publish();
+}
+
+}  // namespace nck::app::serve

@@ -1,0 +1,303 @@
+#include "nck/serve/serve_api.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "nck/config/parameter_registry.hpp"
+#include "nck/core/utf8.hpp"
+#include "nck/output/output_writers.hpp"
+#include "nck/report/embedded_files.hpp"
+#include "nck/run/start_at.hpp"
+#include "nck/serve/access.hpp"
+#include "nck/serve/api_message.hpp"
+#include "nck/sim/operator_action.hpp"
+
+namespace nck::app::serve {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+HttpReply ok_json(const json& j) { return HttpReply{200, "application/json", dump_json(j), {}}; }
+
+// The page and the files it loads: no token needed, nothing but code in them.
+std::optional<HttpReply> page_file(std::string_view path) {
+  static constexpr std::pair<std::string_view, std::string_view> kFiles[] = {
+      {"/", "hmi.html"},
+      {"/hmi.js", "hmi.js"},
+      {"/hmi.css", "hmi.css"},
+      {"/hmi_ui.js", "hmi_ui.js"},
+      {"/hmi_api.js", "hmi_api.js"},
+      {"/hmi_program.js", "hmi_program.js"},
+      {"/hmi_controls.js", "hmi_controls.js"},
+      {"/hmi_channel.js", "hmi_channel.js"},
+      {"/backplot.js", "backplot.js"},
+      {"/uPlot.iife.min.js", "uPlot.iife.min.js"},
+      {"/uPlot.min.css", "uPlot.min.css"}};
+  for (const auto& [url, name] : kFiles) {
+    if (path != url) continue;
+    const std::string_view type = name.ends_with(".js")    ? "text/javascript; charset=utf-8"
+                                  : name.ends_with(".css") ? "text/css; charset=utf-8"
+                                                           : "text/html; charset=utf-8";
+    HttpReply r{200, std::string(type), std::string(embedded_file(name)), {}};
+    r.headers.emplace_back("Content-Security-Policy",
+                           "default-src 'self'; style-src 'self' 'unsafe-inline'; img-src 'self' data:; "
+                           "frame-ancestors 'none'");
+    return r;
+  }
+  return std::nullopt;
+}
+
+json machine_json(const config::Machine& m) {
+  json channels = json::array();
+  for (const config::ChannelConfig& c : m.channels) {
+    json axes = json::array(), spindles = json::array();
+    for (const auto& a : c.axes) axes.push_back(a.name);
+    for (const auto& s : c.spindles) spindles.push_back(s.name);
+    channels.push_back({{"axes", std::move(axes)}, {"spindles", std::move(spindles)}});
+  }
+  return {{"api", 1}, {"cycle_time_s", m.cycle_time_us * 1e-6}, {"channels", std::move(channels)}};
+}
+
+// Every list key nck accepts (as `nck params`): what the lists may say.
+json parameters_json() {
+  json all = json::array();
+  for (const config::ParamInfo& p : config::all_parameters()) {
+    json j = {{"key", std::string(p.key)}, {"id", std::string(p.id)}, {"meaning", std::string(p.meaning)},
+              {"unit", std::string(p.list_unit)}};
+    if (std::isfinite(p.min)) j["min"] = p.min;
+    if (std::isfinite(p.max)) j["max"] = p.max;
+    all.push_back(std::move(j));
+  }
+  return all;
+}
+
+json errors_json() {
+  json all = json::array();
+  for (const ErrorInfo& e : all_errors())
+    all.push_back({{"id", number(e.id)}, {"name", std::string(e.name)}, {"cause", std::string(e.text)},
+                   {"remedy", std::string(e.remedy)}});
+  return all;
+}
+
+}  // namespace
+
+ServeApi::ServeApi(const config::Machine& m, LiveKernel& kernel, ProgramFolders folders)
+    : machine_(m), kernel_(kernel), folders_(std::move(folders)), programs_(m.channels.size()),
+      serving_(kernel.current()) {}
+
+HttpReply ServeApi::handle(const HttpRequest& r) {
+  const std::string_view path = r.target.substr(0, r.target.find('?'));
+  if (r.method == "GET") {
+    if (auto page = page_file(path)) return *page;
+    if (path == "/api/v1/state") return HttpReply{200, "application/json", state_frame(), {}};
+    if (path == "/api/v1/machine") return ok_json(machine_json(machine_));
+    if (path == "/api/v1/errors") return ok_json(errors_json());
+    if (path == "/api/v1/parameters") return ok_json(parameters_json());
+    if (path == "/api/v1/programs") return ok_json(json{{"programs", folders_.list()}});
+    if (path == "/api/v1/program") return program_text(r.target);
+  }
+  if (r.method == "POST") {
+    if (path == "/api/v1/command") return command(r.body);
+    if (path == "/api/v1/upload") return upload(r.target, r.body);
+  }
+  return error_reply(404, ErrorId::ApiNotFound, fmt::format("no {} {} (docs/api.md)", r.method, path.substr(0, 80)));
+}
+
+HttpReply ServeApi::command(std::string_view body) {
+  Diagnostics diags;
+  const auto c = parse_api_command(body, machine_.channels.size(), diags);
+  if (!c) return error_reply(diags.items().front().id == ErrorId::ApiTooLarge ? 413 : 400, diags.items().front());
+  return act(*c);
+}
+
+HttpReply ServeApi::act(const ApiCommand& c) {
+  using K = ApiCommand::Kind;
+  const std::size_t ch = c.channel - 1u;
+  switch (c.kind) {
+    case K::pause: kernel_.set_paused(c.on); break;
+    case K::step_cycle: kernel_.step_one_cycle(); break;
+    case K::speed: kernel_.set_speed(c.speed); break;
+    case K::load: {
+      if (auto d = load(ch, c.program)) return error_reply(d->id == ErrorId::ApiChannelBusy ? 409 : 400, *d);
+      if (c.start_at.empty()) break;
+      const auto mark = parse_start_at(c.start_at);
+      if (!mark) return error_reply(400, ErrorId::ApiBadValue, "'start_at' is no block-search mark: N<n>[:<pass>][@<program>]");
+      auto run = make_run(*mark, ch);
+      if (!run) return error_reply(400, run.error());
+      staged_ = std::move(*run);
+      break;
+    }
+    case K::mdi: return mdi(ch, c.text);
+    case K::action: return operate(c.line);
+  }
+  return ok_json(json{{"ok", true}});
+}
+
+HttpReply ServeApi::mdi(std::size_t ch, const std::string& text) {
+  if (auto d = serving_->mdi(ch, text, last_.channels[ch].program_state, SourceLoc{"api", 1, 0})) return error_reply(409, *d);
+  return ok_json(json{{"ok", true}});
+}
+
+// A scenario line without its time, as the operator commands become.
+HttpReply ServeApi::operate(const std::string& line) {
+  Diagnostics diags;
+  const auto op = sim::parse_operator_action(line, machine_, diags, "api");
+  if (!op) return error_reply(400, diags.items().front());
+  const std::size_t ch = op->action.channel - 1u;
+  if (op->action.kind == sim::ActionKind::mdi) return mdi(ch, op->mdi_text);
+  if (op->action.kind == sim::ActionKind::cycle_start) return start_or_release(ch, op->action);
+  return pass_on(op->action);
+}
+
+HttpReply ServeApi::pass_on(const sim::ScenarioAction& a) {
+  if (!kernel_.operate(a)) return error_reply(429, ErrorId::PlcOperatorActionsFull, "the kernel has 64 actions waiting");
+  return ok_json(json{{"ok", true}});
+}
+
+// Cycle start: a loaded (or ended) program starts; otherwise the channel's
+// hold is released as the PLC's cycle start does.
+HttpReply ServeApi::start_or_release(std::size_t ch, const sim::ScenarioAction& cycle_start) {
+  const bool free = channel_free(last_.channels[ch].program_state);
+  if (free && !staged_ && !programs_[ch].empty()) {
+    auto run = make_run(std::nullopt, 0);
+    if (!run) return error_reply(400, run.error());
+    staged_ = std::move(*run);
+  }
+  if (free && staged_) {
+    if (!kernel_.load(std::move(staged_))) return error_reply(409, ErrorId::ApiBusy, "the run loaded before is not taken yet");
+    return ok_json(json{{"ok", true}, {"started", true}});
+  }
+  return pass_on(cycle_start);
+}
+
+std::optional<Diagnostic> ServeApi::load(std::size_t ch, const std::string& program) {
+  for (std::size_t i = 0; i < last_.channel_count; ++i)
+    if (!channel_free(last_.channels[i].program_state))
+      return make_diagnostic(ErrorId::ApiChannelBusy, SourceLoc{"api", 1, 0},
+                             fmt::format("channel {} is {}: reset it or wait for its end", i + 1,
+                                         kernel::state_name(last_.channels[i].program_state)));
+  const auto path = folders_.resolve(program);
+  if (!path) return path.error();
+  const std::filesystem::path before = programs_[ch];
+  programs_[ch] = *path;
+  auto run = make_run(std::nullopt, 0);
+  if (!run) {
+    programs_[ch] = before;
+    return run.error();
+  }
+  staged_ = std::move(*run);
+  return std::nullopt;
+}
+
+std::expected<std::unique_ptr<sim::DryRun>, Diagnostic> ServeApi::make_run(
+    const std::optional<prep::SearchMark>& search, std::size_t search_channel) const {
+  sim::DryRunOptions o;
+  o.record_frames = true;  // positions in program coordinates
+  o.record_modal = true;
+  o.prep_thread = true;
+  o.allowed_roots = folders_.roots();
+  o.search = search;
+  o.search_channel = search_channel;
+  for (std::size_t ch = 0; ch < o.skip_masks.size(); ++ch) o.skip_masks[ch] = last_.channels[ch].hli.skip_mask;
+  auto run = sim::DryRun::create(machine_, programs_, o);
+  if (!run) return std::unexpected(run.error());
+  auto live = std::make_unique<sim::DryRun>(std::move(*run));
+  // The operator presses cycle start for every hold (M0, single step,
+  // search); the switches and the override stay as the operator left them
+  // (the skip levels already rule the decoding: DryRunOptions::skip_masks).
+  for (std::size_t ch = 0; ch < machine_.channels.size() && ch < config::kMaxChannels; ++ch) {
+    const plc::ChannelControl& c = last_.channels[ch].hli;
+    const auto on_off = [](bool on) { return on ? "on" : "off"; };
+    for (const std::string& line :
+         {std::string("auto_cycle_start off"), fmt::format("feed_override {}", c.feed_override_percent),
+          fmt::format("rapid_override {}", c.rapid_override_percent),
+          fmt::format("single_step {}", on_off(c.single_step)), fmt::format("optional_stop {}", on_off(c.optional_stop)),
+          fmt::format("mode {}", c.manual_mode ? "manual" : "automatic")}) {
+      Diagnostics ignored;
+      if (auto op = sim::parse_operator_action(fmt::format("ch={} {}", ch + 1, line), machine_, ignored))
+        (void)live->machine().operate(op->action);
+    }
+  }
+  live->start_preparation_thread();
+  return live;
+}
+
+HttpReply ServeApi::program_text(std::string_view target) const {
+  const std::string_view ch_text = query_value(target, "channel");
+  std::size_t ch = ch_text.empty() ? 1 : static_cast<std::size_t>(std::atoi(std::string(ch_text).c_str()));
+  if (ch < 1 || ch > programs_.size()) return error_reply(400, ErrorId::ApiBadValue, "'channel' is no channel of the machine");
+  const std::filesystem::path& p = programs_[ch - 1];
+  json lines = json::array();
+  if (!p.empty()) {
+    std::ifstream in(p, std::ios::binary);
+    std::string line;
+    std::size_t bytes = 0;
+    while (std::getline(in, line) && (bytes += line.size()) <= 2 * 1024 * 1024) lines.push_back(to_utf8(line));
+  }
+  return ok_json(json{{"channel", ch}, {"file", p.filename().string()}, {"path", p.string()}, {"lines", std::move(lines)}});
+}
+
+HttpReply ServeApi::upload(std::string_view target, std::string_view body) {
+  const auto name = folders_.save_upload(query_value(target, "name"), body);
+  if (!name) return error_reply(name.error().id == ErrorId::ApiTooLarge ? 413 : 400, name.error());
+  return ok_json(json{{"ok", true}, {"program", *name}});
+}
+
+// The kernel runs a newer run than the one the server names events with:
+// the old one goes (its preparation thread ends here, never in the kernel).
+void ServeApi::advance() {
+  std::unique_ptr<sim::DryRun> old = kernel_.take_retired();
+  old.reset();
+  serving_ = kernel_.current();
+  ++generation_;
+  frames_ = ChannelFrames{};
+}
+
+void ServeApi::drain_events(std::vector<std::string>& frames) {
+  std::string batch;
+  auto& q = kernel_.events();
+  for (; !q.empty(); q.pop()) {
+    const LiveEvent& le = q.front();
+    if (le.generation > generation_) advance();  // every event of the old run came before
+    const kernel::Event& e = le.event;
+    if (const auto* block = e.get<kernel::ev::Block>(); block && block->frame_index && e.channel >= 1)
+      if (const kernel::AffineMap* f = serving_->frame(*block->frame_index)) {
+        BlockContext& b = frames_[e.channel - 1u];
+        b.frame = *f;
+        if (const nc::ModalState* m = serving_->modal(*block->frame_index)) b.modal = *m;
+      }
+    batch += batch.empty() ? "[" : ",";
+    batch += EventWriter::line(e, RunNames{serving_});
+  }
+  if (!batch.empty()) frames.push_back(fmt::format("event: events\ndata: {}]\n\n", batch));
+}
+
+void ServeApi::collect(std::vector<std::string>& frames) {
+  drain_events(frames);
+  if (!kernel_.take_snapshot()) return;
+  if (kernel_.snapshot().generation > generation_) {
+    drain_events(frames);  // the old run's last events first
+    if (kernel_.snapshot().generation > generation_) advance();
+  }
+  last_ = kernel_.snapshot();
+  frames.push_back(fmt::format("event: state\ndata: {}\n\n", state_frame()));
+}
+
+std::string ServeApi::state_frame() {
+  json j = snapshot_json(last_, machine_, *serving_, frames_);
+  json programs = json::array();
+  for (const auto& p : programs_) programs.push_back(p.empty() ? json() : json(p.filename().string()));
+  j["programs"] = std::move(programs);
+  j["staged"] = staged_ != nullptr;
+  return dump_json(j);
+}
+
+std::string ServeApi::stream_start() {
+  return fmt::format("event: machine\ndata: {}\n\nevent: state\ndata: {}\n\n", dump_json(machine_json(machine_)),
+                     state_frame());
+}
+
+}  // namespace nck::app::serve

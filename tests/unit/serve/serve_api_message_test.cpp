@@ -1,0 +1,153 @@
+// nck serve's command messages, access checks and program folders: every
+// malformed, unknown, mistyped or out-of-range message gets its ID; every
+// good one becomes the scenario line that means the same.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "nck/serve/access.hpp"
+#include "nck/serve/api_message.hpp"
+#include "nck/serve/program_folders.hpp"
+
+namespace nck::app::serve {
+namespace {
+
+std::optional<ApiCommand> parse(std::string_view body, Diagnostics& d) { return parse_api_command(body, 2, d); }
+
+std::string line_of(std::string_view body) {
+  Diagnostics d;
+  auto c = parse(body, d);
+  EXPECT_TRUE(c) << body << ": " << (d.items().empty() ? "" : d.items()[0].message);
+  return c ? c->line : std::string();
+}
+
+ErrorId refused(std::string_view body) {
+  Diagnostics d;
+  EXPECT_FALSE(parse(body, d)) << body;
+  EXPECT_EQ(d.items().size(), 1u) << body;
+  return d.items().empty() ? ErrorId{} : d.items()[0].id;
+}
+
+TEST(ServeApiMessage, OperatorCommandsBecomeScenarioLines) {
+  EXPECT_EQ(line_of(R"({"command":"cycle_start"})"), "ch=1 cycle_start");
+  EXPECT_EQ(line_of(R"({"command":"feedhold","on":true,"channel":2})"), "ch=2 feedhold on");
+  EXPECT_EQ(line_of(R"({"command":"feed_override","percent":80})"), "ch=1 feed_override 80");
+  EXPECT_EQ(line_of(R"({"command":"rapid_override","percent":25})"), "ch=1 rapid_override 25");
+  EXPECT_EQ(line_of(R"({"command":"spindle_override","spindle":"S1","percent":50.5})"), "ch=1 spindle_override S1 50.5");
+  EXPECT_EQ(line_of(R"({"command":"skip_mask","mask":5})"), "ch=1 skip_mask 5");
+  EXPECT_EQ(line_of(R"({"command":"jog","axis":"X","direction":"+","speed_mm_min":600})"), "ch=1 jog X + 600");
+  EXPECT_EQ(line_of(R"({"command":"jog","axis":"X","direction":"stop"})"), "ch=1 jog X stop");
+  EXPECT_EQ(line_of(R"({"command":"jog_increment","axis":"Z","direction":"-","step_mm":0.1})"), "ch=1 jog_increment Z - 0.1");
+  EXPECT_EQ(line_of(R"({"command":"mode","mode":"manual"})"), "ch=1 mode manual");
+  EXPECT_EQ(line_of(R"({"command":"single_step","on":false})"), "ch=1 single_step off");
+  EXPECT_EQ(line_of(R"({"command":"action","line":"optional_stop on"})"), "ch=1 optional_stop on");
+}
+
+TEST(ServeApiMessage, OtherCommandsCarryTheirFields) {
+  Diagnostics d;
+  auto c = parse(R"({"command":"mdi","text":"G0 X10 #comment-free"})", d);
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->kind, ApiCommand::Kind::mdi);
+  EXPECT_EQ(c->text, "G0 X10 #comment-free");  // '#' stays: MDI text is not a scenario line
+  c = parse(R"({"command":"load","program":"contour.nc","start_at":"N100","channel":2})", d);
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->kind, ApiCommand::Kind::load);
+  EXPECT_EQ(c->program, "contour.nc");
+  EXPECT_EQ(c->start_at, "N100");
+  EXPECT_EQ(c->channel, 2);
+  c = parse(R"({"command":"speed","speed":0})", d);
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->speed, 0.0);
+  EXPECT_TRUE(d.items().empty());
+}
+
+TEST(ServeApiMessage, EveryBadMessageHasItsId) {
+  EXPECT_EQ(refused(""), ErrorId::ApiMalformedJson);
+  EXPECT_EQ(refused("{"), ErrorId::ApiMalformedJson);
+  EXPECT_EQ(refused("[1,2]"), ErrorId::ApiMalformedJson);
+  EXPECT_EQ(refused(R"({"cmd":"reset"})"), ErrorId::ApiBadValue);
+  EXPECT_EQ(refused(R"({"command":5})"), ErrorId::ApiBadValue);
+  EXPECT_EQ(refused(R"({"command":"launch"})"), ErrorId::ApiUnknownCommand);
+  EXPECT_EQ(refused(R"({"command":"reset","force":true})"), ErrorId::ApiUnknownField);
+  EXPECT_EQ(refused(R"({"command":"feedhold"})"), ErrorId::ApiBadValue);              // missing
+  EXPECT_EQ(refused(R"({"command":"feedhold","on":"yes"})"), ErrorId::ApiBadValue);   // wrong type
+  EXPECT_EQ(refused(R"({"command":"feed_override","percent":250})"), ErrorId::ApiBadValue);  // range
+  EXPECT_EQ(refused(R"({"command":"feed_override","percent":-1})"), ErrorId::ApiBadValue);
+  EXPECT_EQ(refused(R"({"command":"rapid_override","percent":201})"), ErrorId::ApiBadValue);
+  EXPECT_EQ(refused(R"({"command":"reset","channel":3})"), ErrorId::ApiBadValue);     // the machine has 2
+  EXPECT_EQ(refused(R"({"command":"reset","channel":1.5})"), ErrorId::ApiBadValue);
+  EXPECT_EQ(refused(R"({"command":"reset","channel":"1"})"), ErrorId::ApiBadValue);
+  EXPECT_EQ(refused(R"({"command":"jog","axis":"X + 600 more","direction":"+"})"), ErrorId::ApiBadValue);
+  EXPECT_EQ(refused(R"({"command":"jog","axis":"X","direction":"up"})"), ErrorId::ApiBadValue);
+  EXPECT_EQ(refused(R"({"command":"mdi","text":"G0 X1\nM30"})"), ErrorId::ApiBadValue);
+  EXPECT_EQ(refused(R"({"command":"mdi","text":"   "})"), ErrorId::ApiBadValue);
+  EXPECT_EQ(refused(R"({"command":"mdi","text":")" + std::string(kMaxMdiChars + 1, 'X') + "\"}"), ErrorId::ApiBadValue);
+  EXPECT_EQ(refused(std::string(kMaxCommandBytes + 1, ' ')), ErrorId::ApiTooLarge);
+  EXPECT_EQ(refused(R"({"command":"speed","speed":1e9})"), ErrorId::ApiBadValue);
+}
+
+TEST(ServeAccess, TokensCookiesAndNames) {
+  const std::string t = make_token();
+  EXPECT_EQ(t.size(), 32u);  // 128 bits
+  EXPECT_NE(t, make_token());
+  EXPECT_TRUE(same_token(t, t));
+  EXPECT_FALSE(same_token(t.substr(0, 31), t));
+  EXPECT_FALSE(same_token(t + "0", t));
+  EXPECT_FALSE(same_token("", ""));  // no token is never a token
+  EXPECT_EQ(cookie_value("a=1; nck_token=abc; b=2", "nck_token"), "abc");
+  EXPECT_EQ(cookie_value("xnck_token=abc", "nck_token"), "");
+  EXPECT_EQ(bearer_token("Bearer  abc "), "abc");
+  EXPECT_EQ(bearer_token("Basic abc"), "");
+  EXPECT_EQ(query_value("/?token=abc&x=1", "token"), "abc");
+  EXPECT_EQ(query_value("/?x=1", "token"), "");
+  const ServerNames names("127.0.0.1", 8765);
+  EXPECT_TRUE(names.host_ok("127.0.0.1:8765"));
+  EXPECT_TRUE(names.host_ok("localhost:8765"));
+  EXPECT_FALSE(names.host_ok("evil.example:8765"));  // DNS rebinding
+  EXPECT_FALSE(names.host_ok("127.0.0.1:8766"));
+  EXPECT_FALSE(names.host_ok(""));
+}
+
+TEST(ServeAccess, RequestBudgetRefillsAtItsRate) {
+  RequestBudget b(50);
+  const auto t0 = std::chrono::steady_clock::now();
+  int taken = 0;
+  for (int i = 0; i < 200; ++i) taken += b.take(t0);
+  EXPECT_EQ(taken, 50);  // a burst of the rate, then nothing
+  EXPECT_FALSE(b.take(t0 + std::chrono::milliseconds(10)));
+  EXPECT_TRUE(b.take(t0 + std::chrono::milliseconds(30)));  // 1.5 tokens came back
+}
+
+TEST(ServeProgramFolders, NamesResolveInsideTheFoldersOnly) {
+  namespace fs = std::filesystem;
+  const fs::path base = fs::temp_directory_path() / "nck_serve_folders_test";
+  fs::remove_all(base);
+  fs::create_directories(base / "progs" / "sub");
+  fs::create_directories(base / "outside");
+  std::ofstream(base / "progs" / "a.nc") << "G0 X1\nM30\n";
+  std::ofstream(base / "progs" / "sub" / "b.nc") << "M30\n";
+  std::ofstream(base / "outside" / "secret.nc") << "M30\n";
+  std::ofstream(base / "progs" / "big.nc") << std::string(2000, 'X');
+  fs::create_symlink(base / "outside" / "secret.nc", base / "progs" / "link.nc");
+  const ProgramFolders f({base / "progs"}, base / "uploads", 1000);
+  EXPECT_TRUE(f.resolve("a.nc"));
+  EXPECT_TRUE(f.resolve("sub/b.nc"));
+  EXPECT_TRUE(f.resolve((base / "progs" / "a.nc").string()));
+  for (const char* bad : {"../outside/secret.nc", "sub/../../outside/secret.nc", "link.nc", "big.nc", "missing.nc", ""})
+    EXPECT_EQ(f.resolve(bad).error().id, ErrorId::ApiProgramNotAllowed) << bad;
+  EXPECT_FALSE(f.resolve((base / "outside" / "secret.nc").string()));
+  const auto listed = f.list();
+  EXPECT_NE(std::find(listed.begin(), listed.end(), "sub/b.nc"), listed.end());
+  EXPECT_EQ(std::find(listed.begin(), listed.end(), "link.nc"), listed.end());
+  EXPECT_TRUE(f.save_upload("up.nc", "M30\n"));
+  EXPECT_TRUE(f.resolve("up.nc"));
+  EXPECT_FALSE(f.save_upload("../up.nc", "M30\n"));
+  EXPECT_FALSE(f.save_upload(".hidden", "M30\n"));
+  EXPECT_EQ(f.save_upload("large.nc", std::string(1001, 'X')).error().id, ErrorId::ApiTooLarge);
+  fs::remove_all(base);
+}
+
+}  // namespace
+}  // namespace nck::app::serve
