@@ -287,19 +287,19 @@ std::string ReportWriter::lines_json(const std::vector<LineRef>& lines_used) con
 
 // Coupling periods from the link events: an "on" opens one, the "off" of
 // the same channel and group closes it.
-void ReportWriter::note_link(const std::string& json_line) {
-  const json j = json::parse(json_line, nullptr, false);
-  if (!j.is_object()) return;
-  const int ch = j.value("ch", 0), group = j.value("group", 0);
-  if (j.value("on", false)) {
+void ReportWriter::note_link(const kernel::Event& e, const kernel::LinkEvent& link, const RunNames& names) {
+  const int ch = e.channel, group = link.group;
+  if (link.on) {
+    json pairs = json::array();
+    for (const auto& [slave, master] : names.link(link.payload).pairs) pairs.push_back(json::array({slave, master}));
     if (links_.size() < kMaxListed)
-      links_.push_back({ch, group, j.value("pairs", json::array()).dump(), j.value("t", 0.0), -1, ""});
+      links_.push_back({ch, group, pairs.dump(-1, ' ', false, json::error_handler_t::replace), e.t_s, -1, ""});
     return;
   }
   for (LinkPeriod& p : links_)
     if (p.ch == ch && p.group == group && p.off_s < 0) {
-      p.off_s = j.value("t", 0.0);
-      p.reason = j.value("reason", "");
+      p.off_s = e.t_s;
+      p.reason = kernel::link_reason_name(link.reason);
     }
 }
 

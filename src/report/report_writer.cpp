@@ -17,9 +17,6 @@
 namespace nck::app {
 namespace {
 
-using json = nlohmann::ordered_json;
-
-
 // The G words of one NC line that the backplot needs: motion G0..G3 and
 // plane G17..G19 (comments in parentheses and after ';' skipped). The
 // report reads the program text for this because events do not carry the
@@ -48,19 +45,6 @@ void scan_g_words(const std::string& text, int& motion, int& plane) {
     if (number >= 17 && number <= 19) plane = number;
   }
 }
-
-// The "ev" of an event line: its value is a name without escapes, and the
-// key comes before any string value (time and channel are numbers), so the
-// first match is the key. Found once instead of searching the whole line
-// for each kind (an event line per block of the run).
-std::string_view event_kind(std::string_view json_line) {
-  constexpr std::string_view key = "\"ev\":\"";
-  const std::size_t from = json_line.find(key);
-  if (from == std::string_view::npos) return {};
-  const std::size_t begin = from + key.size(), end = json_line.find('"', begin);
-  return end == std::string_view::npos ? std::string_view() : json_line.substr(begin, end - begin);
-}
-
 }  // namespace
 
 void ReportWriter::start(const config::Machine& m, const ReportInputs& inputs, sim::DryRun& run) {
@@ -188,7 +172,7 @@ void ReportWriter::take(const kernel::Event& e, const RunNames& names) {
   const std::size_t c = e.channel - 1u;
   Channel& ch = channels_[c];
   auto spindle_name = [&](std::optional<std::int8_t> s) {
-    const json j = names.spindle(s);
+    const nlohmann::ordered_json j = names.spindle(s);
     return j.is_string() ? j.get<std::string>() : std::string();
   };
   if (e.get<kernel::ev::Block>()) take_block(ch, c, e, names);
@@ -409,29 +393,24 @@ void ReportWriter::watch_plc(double t_s, const RunNames& names) {
   }
 }
 
-void ReportWriter::event(const std::string& json_line, bool is_error) {
+void ReportWriter::event(const kernel::Event& e, const std::string& json_line, const RunNames& names) {
   if (!enabled_) return;
-  const std::string_view kind = event_kind(json_line);
-  if (kind == "link") note_link(json_line);
-  const bool block = kind == "block";
+  if (const auto* link = e.get<kernel::LinkEvent>()) note_link(e, *link, names);
+  const bool block = e.kind() == kernel::EventKind::block;
   if (block ? table_blocks_++ < kMaxTableBlocks : events_.size() - std::min(table_blocks_, kMaxTableBlocks) < kMaxTableEvents)
     events_.push_back(json_line);
   else
     ++events_dropped_;
   if (block) return;
-  const bool warning = kind == "warning";
-  if (is_error || warning) {
+  const bool error = e.kind() == kernel::EventKind::error;
+  if (error || e.kind() == kernel::EventKind::warning) {
     if (diagnostics_.size() < kMaxListed) diagnostics_.push_back(json_line);
-    ++(is_error ? errors_ : warnings_);
-    const json j = json::parse(json_line, nullptr, false);
-    if (j.is_object() && j.contains("file") && j["file"].is_string()) file_index(j["file"].get<std::string>());
+    ++(error ? errors_ : warnings_);
+    file_index(names.file(e.channel_index(), e.at.file_id));
   }
-  if (kind == "end") {
-    const json j = json::parse(json_line, nullptr, false);
-    if (j.is_object() && j.contains("reason") && j["reason"].is_string()) {
-      const std::string r = j["reason"].get<std::string>();
-      if (end_reason_.find(r) == std::string::npos) end_reason_ += (end_reason_.empty() ? "" : ", ") + r;
-    }
+  if (const auto* end = e.get<kernel::ev::End>()) {
+    const std::string r = kernel::end_name(end->reason);
+    if (end_reason_.find(r) == std::string::npos) end_reason_ += (end_reason_.empty() ? "" : ", ") + r;
   }
 }
 

@@ -150,7 +150,7 @@ void Simulation::report_dropped_events(const kernel::TickOutput& o) {
   const std::string text = fmt::format("{} event(s) of the cycle at {} s were not recorded", o.events_dropped, o.t_s);
   out_.console.line(fmt::format("nck: warning {}: {}", number(ErrorId::KernelEventsDropped), text));
   out_.warnings.push_back(FinalError{number(ErrorId::KernelEventsDropped), 0, 0, std::string(), text});
-  if (out_.wants_events()) out_.event(EventWriter::object(e, names_), false);
+  if (out_.wants_events()) out_.event(e, names_);
 }
 
 // Operator actions the channel could not take (an MDI line while a program
@@ -163,7 +163,7 @@ void Simulation::report_refusals(const kernel::TickOutput& o) {
     out_.warnings.push_back(FinalError{number(d.id), channel, d.loc.line, d.loc.file, d.message});
     if (!out_.wants_events()) continue;
     const kernel::Event e{{o.t_s, channel, {}}, kernel::ev::Warning{{d.id, {}, {}}}};
-    out_.event(EventWriter::object(e, names_), false);
+    out_.event(e, names_);
   }
 }
 
@@ -181,8 +181,8 @@ void Simulation::record_events(const kernel::TickOutput& o) {
   for (const kernel::Event& e : o.events) {
     out_.summary.take(e);
     if (out_.wants_events()) {
-      if (e.kind() == kernel::EventKind::block && !out_.keep_events) out_.event_line(block_text_.line(e, names_), false);
-      else out_.event(EventWriter::object(e, names_), e.kind() == kernel::EventKind::error);
+      if (e.kind() == kernel::EventKind::block && !out_.keep_events) out_.event_line(e, block_text_.line(e, names_), names_);
+      else out_.event(e, names_);
     }
     if (const auto* end = e.get<kernel::ev::End>(); end && end->reason == kernel::EndReason::reset) report_reset(e);
     const auto* error = e.get<kernel::ev::Error>();
@@ -242,8 +242,8 @@ void Simulation::end_unfinished_channels(kernel::EndReason reason) {
     if (st.status == kernel::ChannelStatus::ended || st.status == kernel::ChannelStatus::aborted) continue;
     const EventHead head{run_->time_s(), static_cast<std::uint8_t>(ch + 1), st.at};
     const kernel::ev::State state{st.program_state, kernel::ProgramState::ended, state_reason_of(reason)};
-    out_.event(EventWriter::object(kernel::Event{head, state}, names_), false);
-    out_.event(EventWriter::object(kernel::Event{head, kernel::ev::End{reason}}, names_), false);
+    out_.event(kernel::Event{head, state}, names_);
+    out_.event(kernel::Event{head, kernel::ev::End{reason}}, names_);
   }
   using R = kernel::EndReason;
   if (reason == R::max_time)

@@ -53,8 +53,9 @@ class ReportWriter {
   void start(const config::Machine& m, const ReportInputs& inputs, sim::DryRun& run);
   // Once per cycle, after its events went to event().
   void sample(std::uint64_t cycle, const kernel::TickOutput& out, const RunNames& names);
-  // One line of the event log (the JSON text of an event).
-  void event(const std::string& json_line, bool is_error);
+  // One event of the log: its type says what it is, its JSON line goes
+  // into the page's event table as it is.
+  void event(const kernel::Event& e, const std::string& json_line, const RunNames& names);
   // The error text when it cannot be written (the cycles not yet folded in
   // are folded first).
   std::optional<std::string> write(const std::string& path, double end_s, int exit_code);
@@ -150,7 +151,7 @@ class ReportWriter {
     double on_s = 0, off_s = -1;  // -1: still enabled at the end
     std::string reason;           // why it ended
   };
-  void note_link(const std::string& json_line);
+  void note_link(const kernel::Event& e, const kernel::LinkEvent& link, const RunNames& names);
   std::string link_table() const;
 
   bool enabled_ = false;

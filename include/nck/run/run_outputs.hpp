@@ -32,14 +32,15 @@ struct RunOutputs {
 
   // Events are rendered only when an output wants them.
   bool wants_events() const { return keep_events || events.is_open() || report.enabled(); }
-  void event(nlohmann::ordered_json&& e, bool is_error) {
-    if (events.is_open() || report.enabled()) event_line(dump_json(e), is_error);
-    if (keep_events) event_list.push_back(std::move(e));
+  void event(const kernel::Event& e, const RunNames& names) {
+    nlohmann::ordered_json j = EventWriter::object(e, names);
+    if (events.is_open() || report.enabled()) event_line(e, dump_json(j), names);
+    if (keep_events) event_list.push_back(std::move(j));
   }
   // An event already written as its line (block events: BlockEventText).
-  void event_line(const std::string& line, bool is_error) {
+  void event_line(const kernel::Event& e, const std::string& line, const RunNames& names) {
     events.write_line(line);
-    report.event(line, is_error);
+    report.event(e, line, names);
   }
 };
 
