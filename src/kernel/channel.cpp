@@ -47,7 +47,7 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
   ax_links_.follow(path_.position());
   cax_.follow(dt_s, path_.position(), ctx);
   (void)fail(handwheel_.follow(cy, in.manual_mode ? manual_axes(in) : 0u), cy);
-  (void)fail(dist_.run(path_.position(), done(), cy), cy);
+  (void)fail(technologies_.follow(path_.position(), done(), cy), cy);
   write_output(out);
 }
 
@@ -84,7 +84,7 @@ void Channel::write_output(ChannelOutput& out) const noexcept {
   const motion::AxisVector& pos = path_.position();
   const motion::AxisVector& manual = handwheel_.in_force_mm();
   for (std::size_t j = 0; j < n_axes_; ++j) out.axis_mcs[j] = pos[j] + manual[j];
-  dist_.output(out, n_axes_);
+  technologies_.output(out, n_axes_);
   out.path_velocity_mm_s = path_.velocity_mm_s();
   out.status = status_;
   out.program_state = state_;
@@ -99,7 +99,7 @@ motion::AxisVector Channel::machine_position() const noexcept {
   motion::AxisVector m = path_.position();
   const motion::AxisVector& manual = handwheel_.in_force_mm();
   for (std::size_t j = 0; j < n_axes_; ++j) m[j] += manual[j];
-  dist_.add_offset(m, n_axes_);
+  technologies_.add_offset(m, n_axes_);
   return m;
 }
 
@@ -150,7 +150,6 @@ struct BlockAttachments {
   const ProgramMap* map = nullptr;
   const CaxChange* cax = nullptr;
   const LinkCommand* link = nullptr;
-  const DistChange* dist = nullptr;
   const FeedLink* feed = nullptr;
   const CssLink* css = nullptr;
   const ManualChange* manual = nullptr;
@@ -162,6 +161,7 @@ struct BlockAttachments {
 struct AttachmentSorter {
   BlockAttachments& parts;
   SyncUnit& sync;
+  ChannelTechnologies& technologies;
   Cycle& cy;
 
   void operator()(const Warning& w) const noexcept {
@@ -177,10 +177,12 @@ struct AttachmentSorter {
   void operator()(const ProgramMap& x) const noexcept { parts.map = &x; }
   void operator()(const CaxChange& x) const noexcept { parts.cax = &x; }
   void operator()(const LinkCommand& x) const noexcept { parts.link = &x; }
-  void operator()(const DistChange& x) const noexcept { parts.dist = &x; }
   void operator()(const FeedLink& x) const noexcept { parts.feed = &x; }
   void operator()(const CssLink& x) const noexcept { parts.css = &x; }
   void operator()(const ManualChange& x) const noexcept { parts.manual = &x; }
+  template <class A>
+    requires ChannelTechnologies::takes<A>
+  void operator()(const A& x) const noexcept { technologies.note(x); }
 };
 
 }  // namespace
@@ -196,7 +198,8 @@ void Channel::start(Cycle& cy) noexcept {
   }
   BlockAttachments parts;
   sync_.start_block(current_);
-  const AttachmentSorter sort{parts, sync_, cy};
+  technologies_.begin_block();
+  const AttachmentSorter sort{parts, sync_, technologies_, cy};
   for (std::size_t i = 0; i < current_.attachments; ++i) std::visit(sort, commands_->attachment(i));
   path_.start_block(current_, parts.start, parts.map);
   hold_.start_block(current_, cy.in.stop_at);
@@ -207,7 +210,7 @@ void Channel::start(Cycle& cy) noexcept {
   // Each unit takes its part of the block; a fault ends the program.
   if (parts.cax && fail(cax_.start(*parts.cax, path_.position(), cy), cy)) return;
   if (parts.link && fail(ax_links_.start(*parts.link, path_.position(), cy), cy)) return;
-  if (parts.dist && fail(dist_.start(*parts.dist, cy), cy)) return;
+  if (fail(technologies_.start(cy), cy)) return;
   spindle_path_.start(parts.feed, parts.css, cy.machine);
   handwheel_.start(parts.manual);
   (void)fail(sync_.issue_all(SyncPoint::before, cy), cy);
@@ -306,10 +309,10 @@ bool Channel::waits_done(SyncPoint phase, Cycle& cy) noexcept {
 
 // After the post waits: the block is done.
 void Channel::end_block(Cycle& cy) noexcept {
-  // Program end switches distance control off: the block ends once the
-  // offset has been travelled out (TURNING_OFF).
+  // Program end switches the technologies off (distance control): the block
+  // ends once their offsets have been travelled out (TURNING_OFF).
   const End* end = current_.as<End>();
-  if (end && dist_.wind_down()) return;
+  if (end && technologies_.wind_down()) return;
   active_ = false;
   if (current_.mdi == Mdi::end) {
     finish_mdi(cy);
@@ -446,7 +449,7 @@ void Channel::end_program(EndReason reason, Cycle& cy) noexcept {
   hold_.reset();
   sync_.clear();
   cax_.end(cy.machine);
-  dist_.end(reason, cy);
+  technologies_.end(reason, cy);
   spindle_path_.end(cy.machine);
   end_spindles(reason, cy);
   const auto [state, why] = state_after(reason);

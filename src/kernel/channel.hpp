@@ -21,17 +21,16 @@
 #include <utility>
 #include <vector>
 
-#include "nck/distctrl/controller.hpp"
 #include "nck/kernel/command.hpp"
 #include "nck/kernel/queues.hpp"
 #include "nck/kernel/tick_io.hpp"
 #include "nck/plc/hli.hpp"
 #include "plc_outputs.hpp"
 #include "spindle_unit.hpp"
+#include "technologies.hpp"
 #include "units/axis_link_unit.hpp"
 #include "units/cax_unit.hpp"
 #include "units/cycle.hpp"
-#include "units/dist_unit.hpp"
 #include "units/dwell_unit.hpp"
 #include "units/handwheel_unit.hpp"
 #include "units/hold_unit.hpp"
@@ -91,10 +90,9 @@ class Channel {
   void for_each_link(F&& f) const {
     ax_links_.for_each(std::forward<F>(f));
   }
-  // setup: 3D distance control's settings (dist_ctrl[0]) and cycle time.
-  void set_dist_ctrl(const distctrl::Settings& s, double dt_s) noexcept { dist_.setup(s, dt_s); }
-  distctrl::State dist_state() const noexcept { return dist_.state(); }
-  double dist_offset_mm() const noexcept { return dist_.offset_mm(); }
+  // setup: the technologies with a home of their own (technologies.hpp).
+  void setup_technologies(const config::ChannelConfig& channel, double dt_s) { technologies_.setup(channel, dt_s); }
+  const ChannelTechnologies& technologies() const noexcept { return technologies_; }
 
  private:
   enum class Phase : std::uint8_t { pre_wait, body, post_wait };
@@ -161,7 +159,7 @@ class Channel {
   SyncUnit sync_;              // outputs and waits before / after the body
   CaxUnit cax_;                // #CAX, #FACE / #CYL set points
   AxisLinkUnit ax_links_;      // #ENABLE / #DISABLE AX LINK
-  DistUnit dist_;              // #DIST CTRL
+  ChannelTechnologies technologies_;  // #DIST CTRL ... (technologies.hpp)
   SpindlePathUnit spindle_path_;  // G95, G33, G63 / G331, G96
   HandwheelUnit handwheel_;    // G201 / G202, manual offsets
   PathUnit path_;              // profile, set point, continuous path

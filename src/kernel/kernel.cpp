@@ -91,7 +91,7 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
     channels_.back()->set_preserve_links(ch.preserve_coupling_after_prog_end);
     channels_.back()->set_single_step_mode(ch.single_step_mode);
     channels_.back()->set_rapid_override_mode(ch.rapid_override_mode);
-    channels_.back()->set_dist_ctrl(distctrl::settings_from(ch.dist_ctrl), cycle_s_);
+    channels_.back()->setup_technologies(ch, cycle_s_);
     for (std::size_t j = 0; j < ch.axes.size() && j < kMaxAxes; ++j)
       channels_.back()->set_jog_axis(j, jog_settings(*machine_, ch.axes[j]));
     if (ch.c_axis >= 0)
@@ -127,10 +127,11 @@ std::vector<std::uint32_t> Kernel::active_links(std::size_t ch) const {
 
 ChannelState Kernel::channel_state(std::size_t ch) const {
   const Channel& c = *channels_.at(ch);
+  const DistUnit& dist = c.technologies().get<DistUnit>();
   return ChannelState{c.position(),      c.manual_offsets(),
                       c.machine_position(), c.status(),
                       c.program_state(), c.at(),
-                      c.dist_state(), c.dist_offset_mm()};
+                      dist.state(), dist.offset_mm()};
 }
 
 void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {

@@ -83,21 +83,10 @@ struct HashJson {
     j["kinds"] = k;
   }
   void operator()(const GetManualOffsets&) {}
-  void operator()(const DistCtrl& d) {
-    j["mode"] = d.const_dist ? "CONST_DIST" : "SURFACE";
-    put(j, "set_pos_mm", d.set_pos_mm);
-    put(j, "set_dist_mm", d.set_dist_mm);
-    put(j, "kp", d.kp);
-    put(j, "i_tn", d.i_tn);
-    put(j, "d_tv", d.d_tv);
-    put(j, "filter_type", d.filter_type);
-    put(j, "n_cycles", d.n_cycles);
-    put(j, "order", d.order);
-    put(j, "fg_f0", d.fg_f0);
-    put(j, "smooth_fact", d.smooth_fact);
-    put(j, "kalman_sigma", d.kalman_sigma);
-    put(j, "sensor_source", d.sensor_source);
-    put(j, "sensor_var", d.sensor_var);
+  // a technology's command: its write_json, beside its syntax
+  template <class Command>
+  void operator()(const Command& c) {
+    write_json(j, c);
   }
 };
 

@@ -28,10 +28,10 @@ struct NameOf {
   std::string operator()(const Tlc& c) const { return c.on ? "#TLC ON" : "#TLC OFF"; }
   std::string operator()(const SuppressOffsets&) const { return "#SUPPRESS OFFSETS"; }
   std::string operator()(const GetManualOffsets&) const { return "#GET MANUAL OFFSETS"; }
-  std::string operator()(const DistCtrl& d) const {
-    static constexpr const char* ops[] = {"ON", "FREEZE", "OFF", ""};
-    std::string op = ops[static_cast<int>(d.op)];
-    return op.empty() ? "#DIST CTRL" : "#DIST CTRL " + op;
+  // a technology's command names itself, beside its syntax
+  template <class Command>
+  std::string operator()(const Command& c) const {
+    return command_name(c);
   }
 };
 }  // namespace

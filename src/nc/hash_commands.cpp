@@ -2,7 +2,8 @@
 // hash_commands.hpp (docs/nc-language.md, "# commands"). Execution is the kernel's.
 // This file holds the keyword table, the shared argument helpers and the
 // small families; couplings are in hash_links.cpp, the offset chain in
-// hash_cs.cpp, #DIST CTRL in dist_ctrl_syntax.cpp.
+// hash_cs.cpp; a technology in a home of its own brings its command's
+// keywords and parser (#DIST CTRL: src/distctrl/nc/dist_ctrl_syntax.cpp).
 #include "nck/nc/hash_commands.hpp"
 
 #include <array>
@@ -259,8 +260,6 @@ bool parse_get_manual_offsets(HashCtx& h) {
   return true;
 }
 
-bool parse_dist_ctrl_cmd(HashCtx& h) { return parse_dist_ctrl(h.c, h.b, h.pos, h.cmd); }
-
 // #TIME is a dwell: a word of the block, not a # command of its own.
 bool parse_time(HashCtx& h) {
   h.yields_command = false;
@@ -309,7 +308,6 @@ constexpr HashEntry kHashCommands[] = {
     {{"TLC"}, parse_tlc},
     {{"SUPPRESS", "OFFSETS"}, parse_suppress_offsets},
     {{"GET", "MANUAL", "OFFSETS"}, parse_get_manual_offsets},
-    {{"DIST", "CTRL"}, parse_dist_ctrl_cmd},
     {{"TIME"}, parse_time},
     {{"CONTOUR", "MODE"}, parse_contour_mode},
     {{"MSG"}, parse_ignored},
@@ -335,6 +333,27 @@ std::string unsupported_hash(Cursor c) {
   return "";
 }
 
+// A technology's command (one with kKeywords, in a home of its own) when
+// its keywords follow; *parsed false after a diagnostic. Tried after the
+// table, in HashCommand's order.
+template <std::size_t I = 0>
+bool technology_command(HashCtx& h, bool& parsed) {
+  if constexpr (I == std::variant_size_v<HashCommand>) {
+    return false;
+  } else {
+    using Command = std::variant_alternative_t<I, HashCommand>;
+    if constexpr (requires { Command::kKeywords; }) {
+      if (keywords(h.c, Command::kKeywords)) {
+        Command cmd;
+        parsed = parse_hash_command(h, cmd);
+        h.cmd = std::move(cmd);
+        return true;
+      }
+    }
+    return technology_command<I + 1>(h, parsed);
+  }
+}
+
 }  // namespace
 
 bool parse_hash(Cursor& c, BlockCtx& b, Words& w, bool& exclusive) {
@@ -342,14 +361,20 @@ bool parse_hash(Cursor& c, BlockCtx& b, Words& w, bool& exclusive) {
   ++c.pos;
   w.hash_pos = static_cast<std::uint32_t>(pos);
   exclusive = true;
+  const auto take = [&](HashCtx& h) {
+    exclusive = h.exclusive;
+    if (h.yields_command) w.hash = std::move(h.cmd);
+    return true;
+  };
   for (const HashEntry& e : kHashCommands) {
     if (!keywords(c, e.words)) continue;
     HashCtx h{c, b, w, pos};
     if (!e.parse(h)) return false;
-    exclusive = h.exclusive;
-    if (h.yields_command) w.hash = std::move(h.cmd);
-    return true;
+    return take(h);
   }
+  HashCtx tech{c, b, w, pos};
+  bool parsed = false;
+  if (technology_command(tech, parsed)) return parsed && take(tech);
   if (std::string fn = unsupported_hash(c); !fn.empty())
     return b.x.err.fail(ErrorId::NcUnsupported, pos, fmt::format("{} is an ISG function nck does not support", fn));
   std::string name = to_upper(c.read_ident());

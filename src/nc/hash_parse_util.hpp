@@ -78,7 +78,7 @@ bool parse_contour_mode(HashCtx& h);
 // slope_syntax.cpp: #SLOPE [TYPE=..] / #SLOPE DEFAULT, #SET SLOPE PROFIL[n]
 bool parse_slope(HashCtx& h);
 bool parse_set_slope_profil(HashCtx& h);
-// dist_ctrl_syntax.cpp: #DIST CTRL
-bool parse_dist_ctrl(Cursor& c, BlockCtx& b, std::size_t pos, HashCommand& out);
+// A technology's command declares its parse_hash_command
+// beside its type, in its own home (src/<tech>/nc/).
 
 }  // namespace nck::nc::detail

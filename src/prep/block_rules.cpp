@@ -15,26 +15,6 @@ bool is_fixed_m(int m) {
   }
 }
 
-// # commands this version executes: the offset chain's, #EXPL SYN,
-// #MAIN SPINDLE (whose name mapping the decoder does) and the technology
-// units' (couplings, C axis and transformations, distance control, manual offsets).
-bool is_executed_command(const nc::HashCommand& h) {
-  if (std::holds_alternative<nc::ExplSyn>(h) || std::holds_alternative<nc::MainSpindle>(h) ||
-      std::holds_alternative<nc::GetManualOffsets>(h) || std::holds_alternative<nc::DistCtrl>(h))
-    return true;
-  if (std::holds_alternative<nc::SetAxLink>(h) || std::holds_alternative<nc::EnableAxLink>(h) ||
-      std::holds_alternative<nc::DisableAxLink>(h))
-    return true;  // units/coupling_unit.cpp
-  if (std::holds_alternative<nc::CAxis>(h) || std::holds_alternative<nc::Face>(h) ||
-      std::holds_alternative<nc::Cylinder>(h))
-    return true;  // units/cax_unit.cpp
-  return std::holds_alternative<nc::CoordSystem>(h) || std::holds_alternative<nc::Ecs>(h) ||
-         std::holds_alternative<nc::Mcs>(h) || std::holds_alternative<nc::Rotation>(h) ||
-         std::holds_alternative<nc::PSet>(h) || std::holds_alternative<nc::PReset>(h) ||
-         std::holds_alternative<nc::Tlc>(h) || std::holds_alternative<nc::SuppressOffsets>(h) ||
-         std::holds_alternative<nc::ToolData>(h);
-}
-
 // The non-modal G functions this version executes.
 constexpr nc::GCodeSet kExecutedNonModal{nc::GCode::g4,   nc::GCode::g60,  nc::GCode::g61,  nc::GCode::g74,  nc::GCode::g92,  nc::GCode::g100,
                                          nc::GCode::g101, nc::GCode::g102, nc::GCode::g112, nc::GCode::g130,
@@ -43,9 +23,8 @@ constexpr nc::GCodeSet kExecutedNonModal{nc::GCode::g4,   nc::GCode::g60,  nc::G
                                          nc::GCode::g196};
 
 // Names what the block asks for that this version does not execute yet, or "".
+// (Every # command the decoder yields is executed: it rejects the others.)
 std::string unsupported(const nc::Block& b) {
-  if (b.hash && !is_executed_command(*b.hash))
-    return fmt::format("{} is not executed yet", nc::hash_command_name(*b.hash));
   for (nc::GCode g : b.g_nonmodal)
     if (!kExecutedNonModal.has(g)) return fmt::format("G{} is not executed yet", nc::g_number(g));
   for (const nc::VariableWrite& w : b.kernel_writes)

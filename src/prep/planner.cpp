@@ -104,7 +104,7 @@ PlanResult Planner::plan_technologies(const nc::Block& b, PlannedCommand& c, Pla
   if (auto r = cax_.check(b, ctx); !r) return r;
   if (auto r = cax_.plan(b, c, ctx); !r) return r;
   if (auto r = couplings_.plan(b, c, ctx); !r) return r;
-  if (auto r = dist_.plan(b, c, ctx); !r) return r;
+  if (auto r = technologies_.plan(b, c, ctx); !r) return r;
   auto actions = spindles_.plan(couplings_.with_slaves(b, with_slaves_scratch_, channel_));
   if (!actions) return std::unexpected(actions.error());
   for (const kernel::SpindleAction& a : *actions) c.attach(a);

@@ -58,7 +58,8 @@ void DryRun::prepare_now() {
     // kernel takes the first #DIST CTRL ON (planned by a call that progressed).
     const ChannelQueues& q = queues_[ch];
     const bool channel_done = kernel_->channel_done(ch);
-    if (preps_[ch].feed(*q.commands, *q.feedback, channel_done) && preps_[ch].planner().dist_ctrl_programmed())
+    const bool progressed = preps_[ch].feed(*q.commands, *q.feedback, channel_done);
+    if (progressed && preps_[ch].planner().technologies().get<prep::DistUnit>().programmed())
       sim_->switch_sensor_on(ch);
   }
 }

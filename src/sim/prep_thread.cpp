@@ -50,7 +50,8 @@ void PrepThread::passes(std::stop_token stop) {
       const bool done = done_[ch].load(std::memory_order_acquire);
       preps_[ch].set_skip_mask(skip_masks_[ch].load(std::memory_order_acquire));
       progress = preps_[ch].feed(kernel_.commands(ch), kernel_.feedback(ch), done) || progress;
-      if (preps_[ch].planner().dist_ctrl_programmed()) sensor_[ch].store(true, std::memory_order_release);
+      if (preps_[ch].planner().technologies().get<prep::DistUnit>().programmed())
+        sensor_[ch].store(true, std::memory_order_release);
     }
     if (progress) continue;
     for (std::size_t ch = 0; ch < n; ++ch) {

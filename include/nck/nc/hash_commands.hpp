@@ -2,12 +2,18 @@
 // Typed # commands (docs/nc-language.md, "# commands"). The decoder checks their
 // syntax and arguments; their execution belongs to the kernel.
 // Lengths are in program units (mm or inch), angles in degrees.
+// A technology in a home of its own defines its command there (e.g.
+// nck/distctrl/dist_command.hpp) with its keywords (kKeywords) and, found by
+// the type, parse_hash_command, command_name and write_json: adding it to
+// HashCommand is its only registration in the decoder.
 #include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <variant>
 #include <vector>
+
+#include "nck/distctrl/dist_command.hpp"
 
 namespace nck::nc {
 
@@ -83,20 +89,6 @@ struct SuppressOffsets {
   bool all = true;  // no option list given
 };
 struct GetManualOffsets {};
-
-// --- 3D distance control (channel_params_distctrl seed) --------------------
-enum class DistCtrlOp : std::uint8_t { on, freeze, off, settings };
-struct DistCtrl {
-  DistCtrlOp op = DistCtrlOp::on;
-  bool const_dist = false;  // CONST_DIST mode (SURFACE otherwise)
-  bool dryrun = false, wait = false, no_move = false;
-  std::optional<double> set_pos_mm, set_dist_mm;
-  std::optional<double> kp, i_tn, d_tv;
-  std::optional<std::string> filter_type;  // MOVING_AVERAGE LOWPASS KALMAN_MA EXPO_MEAN KALMAN_EXPO
-  std::optional<int> n_cycles, order;
-  std::optional<double> fg_f0, smooth_fact, kalman_sigma;
-  std::optional<std::string> sensor_source, sensor_var;
-};
 
 using HashCommand =
     std::variant<SetAxLink, EnableAxLink, DisableAxLink, MainSpindle, CAxis, Face, Cylinder,

@@ -20,6 +20,7 @@
 #include "nck/prep/lookahead_window.hpp"
 #include "nck/prep/plan_store.hpp"
 #include "nck/prep/spindle_planner.hpp"
+#include "nck/prep/technologies.hpp"
 #include "nck/prep/units/axis_table.hpp"
 #include "nck/prep/units/cax_unit.hpp"
 #include "nck/prep/units/corner_unit.hpp"
@@ -27,7 +28,6 @@
 #include "nck/prep/units/css_unit.hpp"
 #include "nck/prep/units/diameter_unit.hpp"
 #include "nck/prep/units/dyn_weights.hpp"
-#include "nck/prep/units/dist_unit.hpp"
 #include "nck/prep/units/feed_unit.hpp"
 #include "nck/prep/units/manual_unit.hpp"
 #include "nck/prep/units/measure_unit.hpp"
@@ -59,8 +59,8 @@ class Planner final : public nc::KernelStateReader {
   BlendAxes blend_axes() const { return corner_.blend_axes(axes_); }
   std::size_t axis_count() const { return n_axes_; }
   const ChannelFrames& frames() const { return frames_; }
-  // #DIST CTRL ON/FREEZE has been prepared in this run (the sensor is needed from now on).
-  bool dist_ctrl_programmed() const { return dist_.programmed(); }
+  // The technologies with a home of their own (technologies.hpp).
+  const PrepTechnologies& technologies() const { return technologies_; }
   // Where the machine axes stand when everything planned so far has run.
   const motion::AxisVector& planned_mcs() const { return planned_.mcs; }
   // The programmed position (program coordinates, radii) after everything
@@ -123,7 +123,7 @@ class Planner final : public nc::KernelStateReader {
   ManualUnit manual_;
   CouplingUnit couplings_;
   nc::Block with_slaves_scratch_;  // a block with its coupled spindles' commands (kept: built rarely)
-  DistUnit dist_;
+  PrepTechnologies technologies_;
 };
 
 }  // namespace nck::prep

@@ -1,5 +1,5 @@
-// #DIST CTRL in preparation; see dist_unit.hpp.
-#include "nck/prep/units/dist_unit.hpp"
+// #DIST CTRL in preparation; see nck/distctrl/prep_unit.hpp.
+#include "nck/distctrl/prep_unit.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>

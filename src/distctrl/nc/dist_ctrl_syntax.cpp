@@ -1,20 +1,28 @@
-// #DIST CTRL: 3D distance control switch with its keyword overrides
-// (docs/nc-language.md, "3D distance control"). The decoder tracks the mode
-// to report 310024/310025.
+// #DIST CTRL in the decoder: the switch with its keyword overrides
+// (docs/nc-language.md, "3D distance control"), its name and its JSON form.
+// The decoder tracks the mode to report 310024/310025 (modal_apply.cpp).
 #include <cmath>
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
-#include "hash_parse_util.hpp"
+#include "nc/hash_parse_util.hpp"
 
-namespace nck::nc::detail {
+namespace nck::nc {
 
-bool parse_dist_ctrl(Cursor& c, BlockCtx& b, std::size_t pos, HashCommand& out) {
+using detail::args_error;
+using detail::eval_value;
+using detail::keywords;
+using detail::to_upper;
+
+bool parse_hash_command(detail::HashCtx& h, DistCtrl& d) {
+  detail::Cursor& c = h.c;
+  detail::BlockCtx& b = h.b;
+  const std::size_t pos = h.pos;
   if (!b.cfg.dist_ctrl_available)
     return b.x.err.fail(ErrorId::NcDistCtrlNotEnabled, pos,
                         "3D distance control is not enabled in this start mode: add FCT_3D_DIST_CTRL to "
                         "configuration.decoder.function, or to fct_enable[i] whose fct_condition[i] is the "
                         "start mode (nck run: ISG_STANDARD)");
-  DistCtrl d;
   d.op = DistCtrlOp::settings;
   if (keywords(c, {"WAIT"})) d.wait = true;
   if (keywords(c, {"ON"})) d.op = DistCtrlOp::on;
@@ -85,8 +93,37 @@ bool parse_dist_ctrl(Cursor& c, BlockCtx& b, std::size_t pos, HashCommand& out) 
       return b.x.err.fail(ErrorId::NcDistCtrlNoSetPos, pos,
                           "surface mode needs the surface position: #DIST CTRL ON [SURFACE SET_POS=..]");
   }
-  out = std::move(d);
   return true;
 }
 
-}  // namespace nck::nc::detail
+std::string command_name(const DistCtrl& d) {
+  static constexpr const char* kOps[] = {"ON", "FREEZE", "OFF", ""};
+  const std::string op = kOps[static_cast<int>(d.op)];
+  return op.empty() ? "#DIST CTRL" : "#DIST CTRL " + op;
+}
+
+namespace {
+template <class T>
+void put(nlohmann::json& j, const char* key, const std::optional<T>& v) {
+  if (v) j[key] = *v;
+}
+}  // namespace
+
+void write_json(nlohmann::json& j, const DistCtrl& d) {
+  j["mode"] = d.const_dist ? "CONST_DIST" : "SURFACE";
+  put(j, "set_pos_mm", d.set_pos_mm);
+  put(j, "set_dist_mm", d.set_dist_mm);
+  put(j, "kp", d.kp);
+  put(j, "i_tn", d.i_tn);
+  put(j, "d_tv", d.d_tv);
+  put(j, "filter_type", d.filter_type);
+  put(j, "n_cycles", d.n_cycles);
+  put(j, "order", d.order);
+  put(j, "fg_f0", d.fg_f0);
+  put(j, "smooth_fact", d.smooth_fact);
+  put(j, "kalman_sigma", d.kalman_sigma);
+  put(j, "sensor_source", d.sensor_source);
+  put(j, "sensor_var", d.sensor_var);
+}
+
+}  // namespace nck::nc

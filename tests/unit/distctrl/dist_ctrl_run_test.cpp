@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "cli_helpers.hpp"
+#include "../app/cli_helpers.hpp"
 
 namespace nck::app::testing {
 namespace {

@@ -1,3 +1,4 @@
+// #DIST CTRL in the channel; see dist_unit.hpp.
 #include "dist_unit.hpp"
 
 namespace nck::kernel {

@@ -8,21 +8,26 @@
 #include <array>
 #include <cstdint>
 
+#include "nck/config/machine.hpp"
 #include "nck/distctrl/controller.hpp"
 #include "nck/kernel/attachment.hpp"
-#include "cycle.hpp"
+#include "kernel/units/cycle.hpp"
 
 namespace nck::kernel {
 
+// A technology of the channel (kernel/technology_units.hpp names its hooks).
 class DistUnit {
  public:
+  using Takes = DistChange;
   // setup: the channel's settings (dist_ctrl[0]) and cycle time.
-  void setup(const distctrl::Settings& s, double dt_s) noexcept { ctrl_.setup(s, dt_s); }
+  void setup(const config::ChannelConfig& channel, double dt_s) noexcept {
+    ctrl_.setup(distctrl::settings_from(channel.dist_ctrl), dt_s);
+  }
   // #DIST CTRL at the start of a block. rt
   Fault start(const DistChange& c, Cycle& cy) noexcept;
   // Every cycle, after the path: the offset for the program set point
   // pos_mm (nothing once the channel is done). rt
-  Fault run(const motion::AxisVector& pos_mm, bool channel_done, Cycle& cy) noexcept {
+  Fault follow(const motion::AxisVector& pos_mm, bool channel_done, Cycle& cy) noexcept {
     // Inline: off (most programs, most cycles) only a state change is news.
     if (!channel_done && ctrl_.engaged() && axis_ >= 0) return step(pos_mm, cy);
     if (ctrl_.state() != reported_) note_state(cy);
