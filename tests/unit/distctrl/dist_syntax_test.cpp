@@ -8,30 +8,24 @@
 namespace nck::nc::test {
 namespace {
 
-const DistCtrl& dist(const Decoded& d, std::size_t i) {
-  EXPECT_LT(i, d.blocks.size()) << dump(d);
-  EXPECT_TRUE(d.blocks.at(i).hash.has_value());
-  return std::get<DistCtrl>(*d.blocks.at(i).hash);
-}
-
 TEST(DistCtrlSyntax, SwitchesAndOverrides) {
   auto d = decode("#DIST CTRL ON [SURFACE SET_POS=100 KP=2 I_TN=0.5 D_TV=0.1 FILTER_TYPE=LOWPASS ORDER=2 FG_F0=50]\n"
                   "#DIST CTRL FREEZE\n#DIST CTRL ON [CONST_DIST SET_DIST=1.5 FILTER_TYPE=MOVING_AVERAGE N_CYCLES=8]\n"
                   "#DIST CTRL OFF\n#DIST CTRL ON [SMOOTH_FACT=0.5 FILTER_TYPE=EXPO_MEAN KALMAN_SIGMA=2]\nM30\n");
   ASSERT_EQ(d.errors(), 0u) << dump(d);
-  const auto& a = dist(d, 0);
+  const auto& a = cmd<DistCtrl>(d, 0);
   EXPECT_EQ(a.op, DistCtrlOp::on);
   EXPECT_FALSE(a.const_dist);
   EXPECT_DOUBLE_EQ(*a.set_pos_mm, 100);
   EXPECT_DOUBLE_EQ(*a.kp, 2);
   EXPECT_EQ(*a.filter_type, "LOWPASS");
   EXPECT_EQ(*a.order, 2);
-  EXPECT_EQ(dist(d, 1).op, DistCtrlOp::freeze);
-  const auto& c = dist(d, 2);
+  EXPECT_EQ(cmd<DistCtrl>(d, 1).op, DistCtrlOp::freeze);
+  const auto& c = cmd<DistCtrl>(d, 2);
   EXPECT_TRUE(c.const_dist);
   EXPECT_EQ(*c.n_cycles, 8);
-  EXPECT_EQ(dist(d, 3).op, DistCtrlOp::off);
-  EXPECT_DOUBLE_EQ(*dist(d, 4).smooth_fact, 0.5);  // SET_POS known from before
+  EXPECT_EQ(cmd<DistCtrl>(d, 3).op, DistCtrlOp::off);
+  EXPECT_DOUBLE_EQ(*cmd<DistCtrl>(d, 4).smooth_fact, 0.5);  // SET_POS known from before
   EXPECT_EQ(number(ErrorId::NcDistCtrlNoSetPos), 310024u);
   EXPECT_TRUE(decode("#DIST CTRL ON\n").has(ErrorId::NcDistCtrlNoSetPos));
   EXPECT_TRUE(decode("#DIST CTRL ON [SET_POS=1]\n#DIST CTRL ON [CONST_DIST SET_DIST=1]\n")
@@ -52,7 +46,7 @@ TEST(DistCtrlSyntax, NameAndJson) {
   EXPECT_EQ(hash_command_name(*d.blocks[2].hash), "#DIST CTRL OFF");
   EXPECT_EQ(hash_command_name(*d.blocks[3].hash), "#DIST CTRL");
   nlohmann::json j;
-  write_json(j, dist(d, 0));
+  write_json(j, cmd<DistCtrl>(d, 0));
   EXPECT_EQ(j["mode"], "CONST_DIST");
   EXPECT_DOUBLE_EQ(j["set_dist_mm"].get<double>(), 1.5);
   EXPECT_DOUBLE_EQ(j["kp"].get<double>(), 2);

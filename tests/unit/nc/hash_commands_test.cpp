@@ -4,13 +4,6 @@
 namespace nck::nc::test {
 namespace {
 
-template <class T>
-const T& cmd(const Decoded& d, std::size_t i) {
-  EXPECT_LT(i, d.blocks.size()) << dump(d);
-  EXPECT_TRUE(d.blocks.at(i).hash.has_value());
-  return std::get<T>(*d.blocks.at(i).hash);
-}
-
 TEST(NcHash, Couplings) {
   auto d = decode("N10 #SET AX LINK[1, S2=S, S3=S]\nN20 #ENABLE AX LINK[1]\n#DISABLE AX LINK\n"
                   "#AX LINK[2, S2=S]\n#AX LINK ON[2]\n#AX LINK OFF\n#AX LINK NBR[1, 11=6, 17=6]\n"

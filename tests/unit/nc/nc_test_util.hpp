@@ -95,4 +95,12 @@ inline std::vector<double> xs(const Decoded& d) {
   return r;
 }
 
+// Block i's # command, which must be a T.
+template <class T>
+const T& cmd(const Decoded& d, std::size_t i) {
+  EXPECT_LT(i, d.blocks.size()) << dump(d);
+  EXPECT_TRUE(d.blocks.at(i).hash.has_value());
+  return std::get<T>(*d.blocks.at(i).hash);
+}
+
 }  // namespace nck::nc::test
