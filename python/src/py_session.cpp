@@ -122,7 +122,7 @@ class Session {
     op.action.channel = static_cast<std::uint8_t>(std::clamp<std::int64_t>(ch, 0, 255));
     op.action.payload = payload;
     Diagnostics ds;
-    run(sim::check_operator_action(std::move(op), sim_->machine(), ds, "python", sim::Notation::general), ds);
+    run(sim::check_operator_action(std::move(op), sim_->machine(), ds, "python", sim::Quoting::python), ds);
   }
 
   void skip_mask(std::int64_t ch, std::int64_t mask) {
@@ -257,6 +257,9 @@ void Session::submit_mdi(int channel, const std::string& text) {
   std::string_view t = std::string_view(text).substr(0, text.find('#'));
   t.remove_prefix(std::min(t.size(), t.find_first_not_of(kBlanks)));
   t = t.substr(0, t.find_last_not_of(kBlanks) + 1);
+  if (t.empty())
+    refuse(fmt::format("ch={} mdi {}", channel, text), ErrorId::PlcScenarioMissingArgument,
+           fmt::format("missing {}", sim::words::kMissingMdiText));
   operate(channel, sim::act::Mdi{}, std::string(t));
 }
 

@@ -17,11 +17,11 @@ struct Problem {
   std::string message;
 };
 
-std::string shown(double v, Notation n) { return n == Notation::general ? fmt::format("{:g}", v) : fmt::format("{}", v); }
+std::string shown(double v, Quoting q) { return q == Quoting::python ? fmt::format("{:g}", v) : fmt::format("{}", v); }
 
 // The payload's values as the scenario parser would take its words, in the
 // order a line writes them.
-std::optional<Problem> value_problem(const ActionPayload& payload, Notation n) {
+std::optional<Problem> value_problem(const ActionPayload& payload, Quoting q) {
   return std::visit(
       [&](const auto& p) -> std::optional<Problem> {
         using T = std::decay_t<decltype(p)>;
@@ -32,16 +32,16 @@ std::optional<Problem> value_problem(const ActionPayload& payload, Notation n) {
           if (!words::valid_axis_name(p.axis.view()))
             return Problem{ErrorId::PlcScenarioBadNumber, words::not_an_axis(detail::printable(p.axis.view()))};
         if constexpr (requires { p.percent; })
-          if (!words::valid_percent(p.percent)) return Problem{ErrorId::PlcScenarioBadNumber, words::not_a_percent(shown(p.percent, n))};
+          if (!words::valid_percent(p.percent)) return Problem{ErrorId::PlcScenarioBadNumber, words::not_a_percent(shown(p.percent, q))};
         if constexpr (std::is_same_v<T, act::SkipMask>)
           if (p.mask > words::kAllSkipLevels)
             return Problem{ErrorId::PlcScenarioBadNumber,
-                           words::not_a_skip_mask(n == Notation::general ? fmt::format("{:#x}", p.mask) : fmt::format("{}", p.mask))};
+                           words::not_a_skip_mask(q == Quoting::python ? fmt::format("{:#x}", p.mask) : fmt::format("{}", p.mask))};
         if constexpr (std::is_same_v<T, act::Jog>)
           if (p.direction != 0 && p.speed_mm_min < 0)
-            return Problem{ErrorId::PlcScenarioBadJog, words::not_a_jog_speed(shown(p.speed_mm_min, n))};
+            return Problem{ErrorId::PlcScenarioBadJog, words::not_a_jog_speed(shown(p.speed_mm_min, q))};
         if constexpr (std::is_same_v<T, act::JogIncrement>)
-          if (!(p.step_mm > 0)) return Problem{ErrorId::PlcScenarioBadJog, words::not_a_jog_step(shown(p.step_mm, n))};
+          if (!(p.step_mm > 0)) return Problem{ErrorId::PlcScenarioBadJog, words::not_a_jog_step(shown(p.step_mm, q))};
         return std::nullopt;
       },
       payload);
@@ -50,20 +50,20 @@ std::optional<Problem> value_problem(const ActionPayload& payload, Notation n) {
 std::string_view on_off(bool on) { return on ? "on" : "off"; }
 
 // The words after the action's name in its scenario line.
-std::string operator_words(const OperatorAction& op, Notation n) {
+std::string operator_words(const OperatorAction& op, Quoting q) {
   return std::visit(
       [&](const auto& p) -> std::string {
         using T = std::decay_t<decltype(p)>;
-        if constexpr (std::is_same_v<T, act::SpindleOverride>) return fmt::format(" {} {}", p.spindle.view(), shown(p.percent, n));
-        else if constexpr (requires { p.percent; }) return " " + shown(p.percent, n);
+        if constexpr (std::is_same_v<T, act::SpindleOverride>) return fmt::format(" {} {}", p.spindle.view(), shown(p.percent, q));
+        else if constexpr (requires { p.percent; }) return " " + shown(p.percent, q);
         else if constexpr (std::is_same_v<T, act::SkipMask>)
-          return n == Notation::general ? fmt::format(" {:#x}", p.mask) : fmt::format(" {}", p.mask);
+          return q == Quoting::python ? fmt::format(" {:#x}", p.mask) : fmt::format(" {}", p.mask);
         else if constexpr (std::is_same_v<T, act::Mode>) return p.manual ? " manual" : " automatic";
         else if constexpr (std::is_same_v<T, act::Jog>)
           return fmt::format(" {} {}{}", p.axis.view(), p.direction > 0 ? "+" : p.direction < 0 ? "-" : "stop",
-                             p.direction != 0 && p.speed_mm_min > 0 ? " " + shown(p.speed_mm_min, n) : "");
+                             p.direction != 0 && p.speed_mm_min > 0 ? " " + shown(p.speed_mm_min, q) : "");
         else if constexpr (std::is_same_v<T, act::JogIncrement>)
-          return fmt::format(" {} {} {}", p.axis.view(), p.direction < 0 ? "-" : "+", shown(p.step_mm, n));
+          return fmt::format(" {} {} {}", p.axis.view(), p.direction < 0 ? "-" : "+", shown(p.step_mm, q));
         else if constexpr (std::is_same_v<T, act::Mdi>) return " " + op.mdi_text;
         else if constexpr (requires { p.spindle; p.on; }) return fmt::format(" {} {}", p.spindle.view(), on_off(p.on));
         else if constexpr (requires { p.on; }) return fmt::format(" {}", on_off(p.on));
@@ -75,11 +75,12 @@ std::string operator_words(const OperatorAction& op, Notation n) {
 
 }  // namespace
 
-std::string operator_line(const OperatorAction& op, Notation n) {
-  // The API has always written the spindle override under its longer name.
-  const std::string_view name =
-      op.action.kind() == ActionKind::spindle_override ? "spindle_override" : action_name(op.action.kind());
-  return fmt::format("ch={} {}{}", op.action.channel, name, operator_words(op, n));
+std::string operator_line(const OperatorAction& op, Quoting q) {
+  if (op.action.kind() == ActionKind::spindle_override) {  // the two surfaces have always written it apart
+    if (q == Quoting::python) return fmt::format("override{}", operator_words(op, q));
+    return fmt::format("ch={} spindle_override{}", op.action.channel, operator_words(op, q));
+  }
+  return fmt::format("ch={} {}{}", op.action.channel, action_name(op.action.kind()), operator_words(op, q));
 }
 
 std::string operator_action_shown(std::string_view word) { return detail::printable(word); }
@@ -91,21 +92,21 @@ Diagnostic operator_action_refused(std::string_view line, ErrorId id, std::strin
 }
 
 std::optional<OperatorAction> check_operator_action(OperatorAction op, const config::Machine& m, Diagnostics& diags,
-                                                    const std::string& source, Notation n) {
+                                                    const std::string& source, Quoting q) {
   if (op.action.kind() == ActionKind::block_search) {
     diags.add(ErrorId::PlcOperatorActionNotLive, SourceLoc{source, 1, 0},
               "block_search starts a run: it is no action on a running kernel");
     return std::nullopt;
   }
   const auto refuse = [&](ErrorId id, std::string_view message) {
-    diags.add(operator_action_refused(operator_line(op, n), id, message, source));
+    diags.add(operator_action_refused(operator_line(op, q), id, message, source));
     return std::nullopt;
   };
   if (!words::valid_channel_number(op.action.channel))
     return refuse(ErrorId::PlcScenarioBadChannel, words::not_a_channel(fmt::format("{}", op.action.channel)));
   if (op.action.kind() == ActionKind::mdi && op.mdi_text.empty())
     return refuse(ErrorId::PlcScenarioMissingArgument, fmt::format("missing {}", words::kMissingMdiText));
-  if (const auto p = value_problem(op.action.payload, n)) return refuse(p->id, p->message);
+  if (const auto p = value_problem(op.action.payload, q)) return refuse(p->id, p->message);
   Diagnostics found;
   if (!resolve_action(op.action, m, plc::build_spindle_map(m), source, found))
     return refuse(found.items().front().id, found.items().front().message);

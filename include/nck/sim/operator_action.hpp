@@ -21,10 +21,11 @@ struct OperatorAction {
   std::string mdi_text;   // action.kind() == mdi: the NC block, for preparation
 };
 
-// How a surface's users write numbers, to quote an action back to them:
-// JSON's shortest form (80, 50.5) or the Python session's six significant
-// digits (printf's %g).
-enum class Notation : std::uint8_t { shortest, general };
+// How a refusal quotes an action: as the surface's users have always seen
+// it. api: numbers in their shortest form (80, 50.5); python: six
+// significant digits (printf's %g), a skip mask in hex, and the spindle
+// override as "override S1 50" (channel 1, no channel prefix).
+enum class Quoting : std::uint8_t { api, python };
 
 // setup side: the action's values checked as the scenario grammar checks a
 // line's words, its names resolved against the machine (resolve_action).
@@ -32,11 +33,11 @@ enum class Notation : std::uint8_t { shortest, general };
 // quoting the action as its scenario line (operator_line), `source` naming
 // where it came from. block_search is refused: it belongs to a run's start.
 std::optional<OperatorAction> check_operator_action(OperatorAction op, const config::Machine& m, Diagnostics& diags,
-                                                    const std::string& source, Notation n = Notation::shortest);
+                                                    const std::string& source, Quoting q = Quoting::api);
 
 // The scenario line without its time that means the same as op
 // ("ch=2 jog X + 600"): how messages quote an operator's action.
-std::string operator_line(const OperatorAction& op, Notation n);
+std::string operator_line(const OperatorAction& op, Quoting q);
 
 // The refusal of an operator action as check_operator_action words it:
 // `line` quoted, the scenario grammar's message and ID after it.

@@ -30,7 +30,7 @@ std::string line_of(std::string_view body) {
   if (!c) return {};
   if (c->kind == ApiCommand::Kind::action_line) return c->line;
   EXPECT_EQ(c->kind, ApiCommand::Kind::action) << body;
-  return sim::operator_line(sim::OperatorAction{c->action, {}}, sim::Notation::shortest);
+  return sim::operator_line(sim::OperatorAction{c->action, {}}, sim::Quoting::api);
 }
 
 ErrorId refused(std::string_view body) {

@@ -71,7 +71,7 @@ TEST(OperatorAction, TypedActionsAreCheckedAsTheirLines) {
   auto op = checked(make_action(2, o), d);
   ASSERT_TRUE(op);
   EXPECT_EQ(op->action.get<act::SpindleOverride>()->spindle.hli, 2);
-  EXPECT_EQ(operator_line(*op, Notation::shortest), "ch=2 spindle_override S3 50");
+  EXPECT_EQ(operator_line(*op, Quoting::api), "ch=2 spindle_override S3 50");
   act::Jog j;
   j.axis.name = {'Q'};
   j.direction = 1;
