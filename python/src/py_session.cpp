@@ -63,7 +63,8 @@ class Session {
     }
     sim_ = std::move(*created);
     // The operator presses cycle start: a hold (M0, single step, stop) waits for it.
-    for (std::size_t ch = 1; ch <= m.data.channels.size(); ++ch) operate(static_cast<std::int64_t>(ch), sim::act::AutoCycleStart{false});
+    for (std::size_t ch = 1; ch <= m.data.channels.size(); ++ch)
+      operate(static_cast<std::int64_t>(ch), sim::act::AutoCycleStart{false});
   }
 
   void step(std::int64_t cycles) {
@@ -144,7 +145,8 @@ class Session {
   }
 
   void jog(std::int64_t ch, const std::string& axis, const std::string& direction, std::optional<double> speed_mm_min) {
-    const std::string line = fmt::format("ch={} jog {} {}{}", ch, axis, direction, speed_mm_min ? fmt::format(" {:g}", *speed_mm_min) : "");
+    const std::string speed = speed_mm_min ? fmt::format(" {:g}", *speed_mm_min) : "";
+    const std::string line = fmt::format("ch={} jog {} {}{}", ch, axis, direction, speed);
     sim::act::Jog j;
     if (!fits(axis, j.axis.name)) refuse(line, ErrorId::PlcScenarioBadNumber, sim::words::not_an_axis(shown(axis)));
     const std::optional<std::int8_t> d = sim::jog_direction_word(direction, true);
@@ -172,7 +174,8 @@ class Session {
 
   void mode(std::int64_t ch, const std::string& name) {
     const std::optional<bool> manual = sim::manual_mode_word(name);
-    if (!manual) refuse(fmt::format("ch={} mode {}", ch, name), ErrorId::PlcScenarioBadMode, sim::words::not_a_mode(shown(name)));
+    if (!manual)
+      refuse(fmt::format("ch={} mode {}", ch, name), ErrorId::PlcScenarioBadMode, sim::words::not_a_mode(shown(name)));
     operate(ch, sim::act::Mode{*manual});
   }
 

@@ -1,8 +1,8 @@
 #include "nck/serve/api_message.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <initializer_list>
 
 #include <fmt/format.h>
@@ -223,13 +223,12 @@ std::optional<ApiCommand> parse_api_command(std::string_view body, std::size_t c
   if (!other_command(cmd, r, out)) {
     const std::optional<sim::ActionPayload> payload = operator_payload(cmd, r);
     if (!payload) {
-      if (r.ok()) diags.add(ErrorId::ApiUnknownCommand, loc, fmt::format("'{}' is no command (docs/api.md)", cmd.substr(0, 40)));
+      if (r.ok())  // else the Reader's problem is the answer
+        diags.add(ErrorId::ApiUnknownCommand, loc, fmt::format("'{}' is no command (docs/api.md)", cmd.substr(0, 40)));
       return std::nullopt;
     }
     out.kind = ApiCommand::Kind::action;
-    out.action = sim::ScenarioAction{};
-    out.action.channel = out.channel;
-    out.action.payload = *payload;
+    out.action = sim::make_action(out.channel, *payload);
   }
   if (!r.ok()) return std::nullopt;
   return out;

@@ -132,7 +132,8 @@ HttpReply ServeApi::act(const ApiCommand& c) {
       break;
     }
     case K::mdi: return mdi(ch, c.text);
-    case K::action: return operate(sim::check_operator_action(sim::OperatorAction{c.action, {}}, machine_, diags, "api"), diags);
+    case K::action:
+      return operate(sim::check_operator_action(sim::OperatorAction{c.action, {}}, machine_, diags, "api"), diags);
     case K::action_line: return operate(sim::parse_operator_action(c.line, machine_, diags, "api"), diags);
   }
   return ok_json(json{{"ok", true}});
@@ -212,10 +213,11 @@ std::expected<std::unique_ptr<sim::DryRun>, Diagnostic> ServeApi::make_run(
     const plc::ChannelControl& c = last_.channels[ch].hli;
     const auto n = static_cast<std::uint8_t>(ch + 1);
     for (const sim::ScenarioAction& a :
-         {sim::make_action(n, sim::act::AutoCycleStart{false}), sim::make_action(n, sim::act::FeedOverride{c.feed_override_percent}),
+         {sim::make_action(n, sim::act::AutoCycleStart{false}),
+          sim::make_action(n, sim::act::FeedOverride{c.feed_override_percent}),
           sim::make_action(n, sim::act::RapidOverride{c.rapid_override_percent}),
-          sim::make_action(n, sim::act::SingleStep{c.single_step}), sim::make_action(n, sim::act::OptionalStop{c.optional_stop}),
-          sim::make_action(n, sim::act::Mode{c.manual_mode})})
+          sim::make_action(n, sim::act::SingleStep{c.single_step}),
+          sim::make_action(n, sim::act::OptionalStop{c.optional_stop}), sim::make_action(n, sim::act::Mode{c.manual_mode})})
       (void)live->machine().operate(a);
   }
   live->start_preparation_thread();

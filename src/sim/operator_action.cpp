@@ -18,6 +18,9 @@ struct Problem {
 };
 
 std::string shown(double v, Quoting q) { return q == Quoting::python ? fmt::format("{:g}", v) : fmt::format("{}", v); }
+std::string shown(std::uint32_t mask, Quoting q) {
+  return q == Quoting::python ? fmt::format("{:#x}", mask) : fmt::format("{}", mask);
+}
 
 // The payload's values as the scenario parser would take its words, in the
 // order a line writes them.
@@ -32,11 +35,11 @@ std::optional<Problem> value_problem(const ActionPayload& payload, Quoting q) {
           if (!words::valid_axis_name(p.axis.view()))
             return Problem{ErrorId::PlcScenarioBadNumber, words::not_an_axis(detail::printable(p.axis.view()))};
         if constexpr (requires { p.percent; })
-          if (!words::valid_percent(p.percent)) return Problem{ErrorId::PlcScenarioBadNumber, words::not_a_percent(shown(p.percent, q))};
+          if (!words::valid_percent(p.percent))
+            return Problem{ErrorId::PlcScenarioBadNumber, words::not_a_percent(shown(p.percent, q))};
         if constexpr (std::is_same_v<T, act::SkipMask>)
           if (p.mask > words::kAllSkipLevels)
-            return Problem{ErrorId::PlcScenarioBadNumber,
-                           words::not_a_skip_mask(q == Quoting::python ? fmt::format("{:#x}", p.mask) : fmt::format("{}", p.mask))};
+            return Problem{ErrorId::PlcScenarioBadNumber, words::not_a_skip_mask(shown(p.mask, q))};
         if constexpr (std::is_same_v<T, act::Jog>)
           if (p.direction != 0 && p.speed_mm_min < 0)
             return Problem{ErrorId::PlcScenarioBadJog, words::not_a_jog_speed(shown(p.speed_mm_min, q))};
@@ -54,10 +57,11 @@ std::string operator_words(const OperatorAction& op, Quoting q) {
   return std::visit(
       [&](const auto& p) -> std::string {
         using T = std::decay_t<decltype(p)>;
-        if constexpr (std::is_same_v<T, act::SpindleOverride>) return fmt::format(" {} {}", p.spindle.view(), shown(p.percent, q));
+        if constexpr (std::is_same_v<T, act::SpindleOverride>)
+          return fmt::format(" {} {}", p.spindle.view(), shown(p.percent, q));
         else if constexpr (requires { p.percent; }) return " " + shown(p.percent, q);
         else if constexpr (std::is_same_v<T, act::SkipMask>)
-          return q == Quoting::python ? fmt::format(" {:#x}", p.mask) : fmt::format(" {}", p.mask);
+          return " " + shown(p.mask, q);
         else if constexpr (std::is_same_v<T, act::Mode>) return p.manual ? " manual" : " automatic";
         else if constexpr (std::is_same_v<T, act::Jog>)
           return fmt::format(" {} {}{}", p.axis.view(), p.direction > 0 ? "+" : p.direction < 0 ? "-" : "stop",

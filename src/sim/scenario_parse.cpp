@@ -221,7 +221,8 @@ bool LineParser::parse_args(ScenarioAction& a) {
                            std::is_same_v<T, act::SingleStep>)
           return take_switch(p.on);
         else if constexpr (std::is_same_v<T, act::SpindleReset>) return take_spindle(p.spindle);
-        else if constexpr (std::is_same_v<T, act::SpindleCmd>) return take_spindle(p.spindle) && take_spindle_cmd(a.channel, p);
+        else if constexpr (std::is_same_v<T, act::SpindleCmd>)
+          return take_spindle(p.spindle) && take_spindle_cmd(a.channel, p);
         else if constexpr (std::is_same_v<T, act::Handwheel>) return take_handwheel(p);
         else if constexpr (std::is_same_v<T, act::Variable>) return take_variable(p);
         else if constexpr (std::is_same_v<T, act::SkipMask>) return take_skip_mask(p.mask);
@@ -263,7 +264,8 @@ bool LineParser::take_jog_direction(std::int8_t& direction, bool stop_allowed) {
   if (!need(stop_allowed ? "+, - or stop" : "+ or -")) return false;
   const Token& t = toks_[next_++];
   const std::optional<std::int8_t> d = jog_direction_word(t.text, stop_allowed);
-  if (!d) return fail(ErrorId::PlcScenarioBadJog, t.column, words::not_a_jog_direction(detail::printable(t.text), stop_allowed));
+  if (!d)
+    return fail(ErrorId::PlcScenarioBadJog, t.column, words::not_a_jog_direction(detail::printable(t.text), stop_allowed));
   direction = *d;
   return true;
 }
