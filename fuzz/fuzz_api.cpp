@@ -1,7 +1,8 @@
 // libFuzzer target: any bytes as the body of nck serve's POST /api/v1/command,
 // the whole path up to the kernel: the message checked against its schema,
-// then (an operator command) its scenario line read and resolved against the
-// milling example's machine, as the server does.
+// then (an operator command) its typed action checked and resolved against
+// the milling example's machine, as the server does (a typed "action" line:
+// read by the scenario parser).
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -16,6 +17,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   nck::Diagnostics diags;
   const auto c = nck::app::serve::parse_api_command(std::string_view(reinterpret_cast<const char*>(data), size),
                                                     m->channels.size(), diags);
-  if (c && c->kind == nck::app::serve::ApiCommand::Kind::action) (void)nck::sim::parse_operator_action(c->line, *m, diags);
+  using Kind = nck::app::serve::ApiCommand::Kind;
+  if (c && c->kind == Kind::action) (void)nck::sim::check_operator_action({c->action, {}}, *m, diags, "api");
+  if (c && c->kind == Kind::action_line) (void)nck::sim::parse_operator_action(c->line, *m, diags);
   return 0;
 }

@@ -6,23 +6,22 @@ from ._errors import ArgumentError
 from ._machine import _programs, _whole
 
 
-def _on_off(on):
-    return "on" if on else "off"
-
-
 def _number(value, name):
+    """The value as the session takes it: six significant digits (the
+    precision it has always had)."""
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise ArgumentError(f"{name} must be a number, not {value!r}", 940201)
-    return f"{value:g}"
+    return float(f"{value:g}")
 
 
 class Session:
     """A live session: the machine runs only when stepped, and in between
     the operator acts as on the machine's panel.
 
-    Every operation is one line of the --plc scenario grammar without its
-    time (docs/plc-scenario.md), the very layer ``nck serve`` uses;
-    ``action(line)`` takes any such line. ``ch`` selects the channel (1..).
+    Every operation is the typed action a line of the --plc scenario grammar
+    builds (docs/plc-scenario.md), checked by the very code ``nck serve``
+    uses; ``action(line)`` takes any such line as text. ``ch`` selects the
+    channel (1..).
 
     Unlike ``nck run``, the simulated operator does not press cycle start by
     itself ("auto_cycle_start off"): after M0/M1, single step, ``stop()`` or
@@ -80,37 +79,34 @@ class Session:
         (docs/plc-scenario.md); ActionError when malformed or refused."""
         self._s.action(line)
 
-    def _line(self, ch, text):
-        self._s.action(f"ch={_whole(ch, 'ch', 1)} {text}")
-
     def cycle_start(self, ch=1):
         """Cycle start: releases a hold (M0/M1, single step, stop), or starts
         the program again after a reset."""
-        self._line(ch, "cycle_start")
+        self._s.cycle_start(_whole(ch, "ch", 1))
 
     def hold(self, on=True, ch=1):
         """Feedhold on (the path brakes and waits) or off."""
-        self._line(ch, f"feedhold {_on_off(on)}")
+        self._s.feedhold(_whole(ch, "ch", 1), bool(on))
 
     def stop(self, ch=1):
         """NC stop: the path brakes and the channel holds until cycle_start()."""
-        self._line(ch, "stop")
+        self._s.stop(_whole(ch, "ch", 1))
 
     def reset(self, ch=1):
         """Channel reset: the program ends (reason reset)."""
-        self._line(ch, "reset")
+        self._s.reset(_whole(ch, "ch", 1))
 
     def single_step(self, on=True, ch=1):
         """Single-step mode: the channel holds at every block end."""
-        self._line(ch, f"single_step {_on_off(on)}")
+        self._s.single_step(_whole(ch, "ch", 1), bool(on))
 
     def optional_stop(self, on=True, ch=1):
         """The optional-stop switch: M1 holds while on."""
-        self._line(ch, f"optional_stop {_on_off(on)}")
+        self._s.optional_stop(_whole(ch, "ch", 1), bool(on))
 
     def skip(self, mask, ch=1):
         """Active block-skip levels as a bit mask (bit 0: /1 ...)."""
-        self._line(ch, f"skip_mask {_whole(mask, 'mask'):#x}")
+        self._s.skip_mask(_whole(ch, "ch", 1), _whole(mask, "mask"))
 
     def override(self, feed=None, rapid=None, spindle=None, ch=1):
         """Overrides in %: feed (the channel's), rapid (the channel's G0
@@ -118,13 +114,13 @@ class Session:
         says — with NOT_USED, the default, G0 takes the feed override),
         spindle (a value for S1, or a dict {"S2": 80})."""
         if feed is not None:
-            self._line(ch, f"feed_override {_number(feed, 'feed')}")
+            self._s.feed_override(_whole(ch, "ch", 1), _number(feed, "feed"))
         if rapid is not None:
-            self._line(ch, f"rapid_override {_number(rapid, 'rapid')}")
+            self._s.rapid_override(_whole(ch, "ch", 1), _number(rapid, "rapid"))
         if spindle is not None:
             spindles = spindle if isinstance(spindle, dict) else {"S1": spindle}
             for name, value in spindles.items():
-                self._s.action(f"override {name} {_number(value, 'spindle')}")
+                self._s.spindle_override(str(name), _number(value, "spindle"))
 
     def mdi(self, text, ch=1):
         """Runs one NC block typed by the operator (the channel must not be
@@ -135,17 +131,16 @@ class Session:
     def jog(self, axis, direction, speed=None, ch=1):
         """Jogs an axis (mode manual): direction "+", "-" or "stop"; speed
         in mm/min (the axis's jog speed when None)."""
-        words = f"jog {axis} {direction}" + ("" if speed is None else f" {_number(speed, 'speed')}")
-        self._line(ch, words)
+        self._s.jog(_whole(ch, "ch", 1), str(axis), str(direction),
+                    None if speed is None else _number(speed, "speed"))
 
     def jog_increment(self, axis, step, ch=1):
         """Moves an axis by `step` mm (signed), mode manual."""
-        sign = "-" if step < 0 else "+"
-        self._line(ch, f"jog_increment {axis} {sign} {_number(abs(step), 'step')}")
+        self._s.jog_increment(_whole(ch, "ch", 1), str(axis), _number(step, "step"))
 
     def mode(self, name, ch=1):
         """"manual" (jogging) or "automatic"."""
-        self._line(ch, f"mode {name}")
+        self._s.mode(_whole(ch, "ch", 1), str(name))
 
     # -- reading -----------------------------------------------------------
     def state(self):

@@ -1,11 +1,16 @@
 // A live session (nck.Session wraps it): the machine runs cycle by cycle
-// when asked, and the operator's actions reach it as one line of the --plc
-// scenario grammar (sim::parse_operator_action, DryRun::operate): the same
-// layer as a scenario file and nck serve, no second implementation.
+// when asked, and each operator call builds the typed action a --plc
+// scenario line builds, checked and resolved by the same code as nck
+// serve's (sim::check_operator_action, DryRun::operate). Only action(line),
+// a line the user typed, goes through the scenario parser.
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
 #include "nck/run/simulation.hpp"
+#include "nck/sim/action_words.hpp"
 #include "nck/sim/operator_action.hpp"
 #include "py_common.hpp"
 #include "py_interrupt.hpp"
@@ -58,7 +63,8 @@ class Session {
     }
     sim_ = std::move(*created);
     // The operator presses cycle start: a hold (M0, single step, stop) waits for it.
-    for (std::size_t ch = 1; ch <= m.data.channels.size(); ++ch) action(fmt::format("ch={} auto_cycle_start off", ch));
+    for (std::size_t ch = 1; ch <= m.data.channels.size(); ++ch)
+      operate(static_cast<std::int64_t>(ch), sim::act::AutoCycleStart{false});
   }
 
   void step(std::int64_t cycles) {
@@ -104,19 +110,80 @@ class Session {
     return false;
   }
 
-  // One operator line ("feed_override 80", "ch=2 feedhold on", "mdi G0 X10").
+  // One operator line the user typed ("feed_override 80", "ch=2 feedhold on", "mdi G0 X10").
   void action(const std::string& line) {
     Diagnostics ds;
-    const std::optional<sim::OperatorAction> op = sim::parse_operator_action(line, sim_->machine(), ds, "python");
-    if (!op) throw NckError{"ActionError", ds.items()};
-    if (std::optional<Diagnostic> refused = sim_->run().operate(*op)) throw NckError{"ActionError", {*refused}};
+    run(sim::parse_operator_action(line, sim_->machine(), ds, "python"), ds);
+  }
+
+  // A typed operator action for channel ch (1-based), checked as a scenario line.
+  void operate(std::int64_t ch, const sim::ActionPayload& payload, std::string mdi_text = {}) {
+    // Beyond 255 the channel is as wrong as at 255 (kMaxChannels is far below).
+    sim::OperatorAction op{sim::ScenarioAction{}, std::move(mdi_text)};
+    op.action.channel = static_cast<std::uint8_t>(std::clamp<std::int64_t>(ch, 0, 255));
+    op.action.payload = payload;
+    Diagnostics ds;
+    run(sim::check_operator_action(std::move(op), sim_->machine(), ds, "python", sim::Quoting::python), ds);
+  }
+
+  void skip_mask(std::int64_t ch, std::int64_t mask) {
+    if (mask > static_cast<std::int64_t>(sim::words::kAllSkipLevels))
+      refuse(fmt::format("ch={} skip_mask {:#x}", ch, mask), ErrorId::PlcScenarioBadNumber,
+             sim::words::not_a_skip_mask(fmt::format("{:#x}", mask)));
+    operate(ch, sim::act::SkipMask{static_cast<std::uint32_t>(mask)});
+  }
+
+  // The spindle override of channel 1's spindle `name` (the session has
+  // always addressed channel 1 here).
+  void spindle_override(const std::string& name, double percent) {
+    sim::act::SpindleOverride o;
+    if (!fits(name, o.spindle.name))
+      refuse(fmt::format("override {} {:g}", name, percent), ErrorId::PlcScenarioBadSpindleName,
+             sim::words::not_a_spindle(shown(name)));
+    o.percent = percent;
+    operate(1, o);
+  }
+
+  void jog(std::int64_t ch, const std::string& axis, const std::string& direction, std::optional<double> speed_mm_min) {
+    const std::string speed = speed_mm_min ? fmt::format(" {:g}", *speed_mm_min) : "";
+    const std::string line = fmt::format("ch={} jog {} {}{}", ch, axis, direction, speed);
+    sim::act::Jog j;
+    if (!fits(axis, j.axis.name)) refuse(line, ErrorId::PlcScenarioBadNumber, sim::words::not_an_axis(shown(axis)));
+    const std::optional<std::int8_t> d = sim::jog_direction_word(direction, true);
+    if (!d) refuse(line, ErrorId::PlcScenarioBadJog, sim::words::not_a_jog_direction(shown(direction), true));
+    j.direction = *d;
+    if (speed_mm_min && j.direction == 0)  // a released key has no speed
+      refuse(line, ErrorId::PlcScenarioExtraArgument,
+             fmt::format("'{:g}' is one word too many for 'jog'; remove it or start a comment with #", *speed_mm_min));
+    if (speed_mm_min && !(*speed_mm_min > 0))
+      refuse(line, ErrorId::PlcScenarioBadJog, sim::words::not_a_jog_speed(fmt::format("{:g}", *speed_mm_min)));
+    j.speed_mm_min = speed_mm_min.value_or(0);
+    operate(ch, j);
+  }
+
+  // A signed step: its sign is the direction.
+  void jog_increment(std::int64_t ch, const std::string& axis, double step_mm) {
+    sim::act::JogIncrement j;
+    j.direction = step_mm < 0 ? -1 : 1;
+    j.step_mm = std::abs(step_mm);
+    if (!fits(axis, j.axis.name))
+      refuse(fmt::format("ch={} jog_increment {} {} {:g}", ch, axis, j.direction < 0 ? "-" : "+", j.step_mm),
+             ErrorId::PlcScenarioBadNumber, sim::words::not_an_axis(shown(axis)));
+    operate(ch, j);
+  }
+
+  void mode(std::int64_t ch, const std::string& name) {
+    const std::optional<bool> manual = sim::manual_mode_word(name);
+    if (!manual)
+      refuse(fmt::format("ch={} mode {}", ch, name), ErrorId::PlcScenarioBadMode, sim::words::not_a_mode(shown(name)));
+    operate(ch, sim::act::Mode{*manual});
   }
 
   // MDI text runs at once: one cycle decodes it, and an error in it raises
   // ProgramError (the session stays usable).
   void mdi(const std::string& text, int channel) {
     auto& events = sim_->outputs().event_list;
-    action(fmt::format("ch={} mdi {}", channel, text));
+    submit_mdi(channel, text);
     const std::size_t seen = events.size();
     step(1);
     for (std::size_t k = seen; k < events.size(); ++k) {
@@ -162,9 +229,42 @@ class Session {
   std::vector<std::string> messages() { return sim_->outputs().console.take(); }
 
  private:
+  void run(const std::optional<sim::OperatorAction>& op, const Diagnostics& ds) {
+    if (!op) throw NckError{"ActionError", ds.items()};
+    if (std::optional<Diagnostic> refused = sim_->run().operate(*op)) throw NckError{"ActionError", {*refused}};
+  }
+  [[noreturn]] static void refuse(std::string_view line, ErrorId id, std::string_view message) {
+    throw NckError{"ActionError", {sim::operator_action_refused(line, id, message, "python")}};
+  }
+  static std::string shown(std::string_view word) { return sim::operator_action_shown(word); }
+  // A name the action can hold (at most 15 characters), copied into it.
+  template <std::size_t N>
+  static bool fits(const std::string& name, std::array<char, N>& to) {
+    if (name.size() >= N) return false;
+    std::copy(name.begin(), name.end(), to.begin());
+    return true;
+  }
+  void submit_mdi(int channel, const std::string& text);
+
   const Machine* machine_;  // kept alive by the Python Session (keep_alive)
   std::unique_ptr<app::Simulation> sim_;
 };
+
+// The session's MDI text as it has always been taken (a scenario line's
+// rest): one line, a '#' ends it, the blanks around it dropped.
+void Session::submit_mdi(int channel, const std::string& text) {
+  if (text.find_first_of("\r\n") != std::string::npos)
+    throw NckError{"ActionError", {make_diagnostic(ErrorId::PlcOperatorActionBad, SourceLoc{"python", 1, 0},
+                                                   "an operator action is one line")}};
+  constexpr std::string_view kBlanks = " \t\v\f";
+  std::string_view t = std::string_view(text).substr(0, text.find('#'));
+  t.remove_prefix(std::min(t.size(), t.find_first_not_of(kBlanks)));
+  t = t.substr(0, t.find_last_not_of(kBlanks) + 1);
+  if (t.empty())
+    refuse(fmt::format("ch={} mdi {}", channel, text), ErrorId::PlcScenarioMissingArgument,
+           fmt::format("missing {}", sim::words::kMissingMdiText));
+  operate(channel, sim::act::Mdi{}, std::string(t));
+}
 
 // The --final document's positions, spindles and HLI, with each channel's
 // program state, block, path velocity and wait of the last cycle.
@@ -213,6 +313,24 @@ void bind_session(pyb::module_& m) {
       .def("step", &Session::step, pyb::arg("cycles"))
       .def("run_until", &Session::run_until, pyb::arg("until"), pyb::arg("max_cycles"))
       .def("action", &Session::action, pyb::arg("line"))
+      .def("cycle_start", [](Session& s, std::int64_t ch) { s.operate(ch, sim::act::CycleStart{}); }, pyb::arg("ch"))
+      .def("stop", [](Session& s, std::int64_t ch) { s.operate(ch, sim::act::Stop{}); }, pyb::arg("ch"))
+      .def("reset", [](Session& s, std::int64_t ch) { s.operate(ch, sim::act::Reset{}); }, pyb::arg("ch"))
+      .def("feedhold", [](Session& s, std::int64_t ch, bool on) { s.operate(ch, sim::act::Feedhold{on}); },
+           pyb::arg("ch"), pyb::arg("on"))
+      .def("single_step", [](Session& s, std::int64_t ch, bool on) { s.operate(ch, sim::act::SingleStep{on}); },
+           pyb::arg("ch"), pyb::arg("on"))
+      .def("optional_stop", [](Session& s, std::int64_t ch, bool on) { s.operate(ch, sim::act::OptionalStop{on}); },
+           pyb::arg("ch"), pyb::arg("on"))
+      .def("feed_override", [](Session& s, std::int64_t ch, double pct) { s.operate(ch, sim::act::FeedOverride{pct}); },
+           pyb::arg("ch"), pyb::arg("percent"))
+      .def("rapid_override", [](Session& s, std::int64_t ch, double pct) { s.operate(ch, sim::act::RapidOverride{pct}); },
+           pyb::arg("ch"), pyb::arg("percent"))
+      .def("spindle_override", &Session::spindle_override, pyb::arg("spindle"), pyb::arg("percent"))
+      .def("skip_mask", &Session::skip_mask, pyb::arg("ch"), pyb::arg("mask"))
+      .def("jog", &Session::jog, pyb::arg("ch"), pyb::arg("axis"), pyb::arg("direction"), pyb::arg("speed_mm_min"))
+      .def("jog_increment", &Session::jog_increment, pyb::arg("ch"), pyb::arg("axis"), pyb::arg("step_mm"))
+      .def("mode", &Session::mode, pyb::arg("ch"), pyb::arg("name"))
       .def("mdi", &Session::mdi, pyb::arg("text"), pyb::arg("channel"))
       .def("events", &Session::take_events)
       .def("state", &Session::state)

@@ -1,6 +1,7 @@
 #include "nck/serve/api_message.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <initializer_list>
 
@@ -93,59 +94,70 @@ class Reader {
   bool ok_ = true;
 };
 
-std::string percent(double p) { return fmt::format("{}", p); }
+// A name the Reader checked (at most 15 characters) as an action stores it.
+std::array<char, plc::kSpindleNameChars> fixed_name(const std::string& s) {
+  std::array<char, plc::kSpindleNameChars> out{};
+  std::copy_n(s.begin(), std::min(s.size(), out.size() - 1), out.begin());
+  return out;
+}
 
-// The scenario line of an operator command, or "" when `cmd` is none.
-std::string operator_line(const std::string& cmd, Reader& r) {
-  const auto on_off = [&](const char* word) {
+std::int8_t direction_of(const std::string& word) { return word == "+" ? 1 : word == "-" ? -1 : 0; }
+
+// The typed action of an operator command, or nothing when `cmd` is none.
+std::optional<sim::ActionPayload> operator_payload(const std::string& cmd, Reader& r) {
+  using namespace sim::act;
+  const auto on = [&] {
     r.only({"on"});
-    return fmt::format("{} {}", word, r.boolean("on") ? "on" : "off");
+    return r.boolean("on");
   };
-  const auto bare = [&](const char* word) {
+  const auto bare = [&](auto payload) {
     r.only({});
-    return std::string(word);
+    return sim::ActionPayload(payload);
   };
-  if (cmd == "cycle_start") return bare("cycle_start");
-  if (cmd == "stop") return bare("stop");
-  if (cmd == "reset") return bare("reset");
-  if (cmd == "feedhold") return on_off("feedhold");
-  if (cmd == "single_step") return on_off("single_step");
-  if (cmd == "optional_stop") return on_off("optional_stop");
+  if (cmd == "cycle_start") return bare(CycleStart{});
+  if (cmd == "stop") return bare(Stop{});
+  if (cmd == "reset") return bare(Reset{});
+  if (cmd == "feedhold") return Feedhold{on()};
+  if (cmd == "single_step") return SingleStep{on()};
+  if (cmd == "optional_stop") return OptionalStop{on()};
   if (cmd == "skip_mask") {
     r.only({"mask"});
-    return fmt::format("skip_mask {}", static_cast<std::uint32_t>(r.number("mask", 0, 1023)));
+    return SkipMask{static_cast<std::uint32_t>(r.number("mask", 0, 1023))};
   }
   if (cmd == "feed_override" || cmd == "rapid_override") {
     r.only({"percent"});
-    return cmd + " " + percent(r.number("percent", 0, 200));
+    const double percent = r.number("percent", 0, 200);
+    return cmd == "feed_override" ? sim::ActionPayload(FeedOverride{percent}) : sim::ActionPayload(RapidOverride{percent});
   }
   if (cmd == "spindle_override") {
     r.only({"spindle", "percent"});
-    const std::string spindle = r.name("spindle");
-    return fmt::format("spindle_override {} {}", spindle, percent(r.number("percent", 0, 200)));
+    SpindleOverride o;
+    o.spindle.name = fixed_name(r.name("spindle"));
+    o.percent = r.number("percent", 0, 200);
+    return o;
   }
   if (cmd == "mode") {
     r.only({"mode"});
-    return "mode " + r.choice("mode", {"manual", "automatic"});
+    return Mode{r.choice("mode", {"manual", "automatic"}) == "manual"};
   }
   if (cmd == "jog") {
     r.only({"axis", "direction", "speed_mm_min"});
-    const std::string axis = r.name("axis");
-    const std::string dir = r.choice("direction", {"+", "-", "stop"});
+    Jog j;
+    j.axis.name = fixed_name(r.name("axis"));
+    j.direction = direction_of(r.choice("direction", {"+", "-", "stop"}));
     const double speed = r.number("speed_mm_min", 1e-3, 1e6, false);
-    return speed > 0 && dir != "stop" ? fmt::format("jog {} {} {}", axis, dir, speed) : fmt::format("jog {} {}", axis, dir);
+    if (j.direction != 0) j.speed_mm_min = speed;  // 0: the axis's jog speed
+    return j;
   }
   if (cmd == "jog_increment") {
     r.only({"axis", "direction", "step_mm"});
-    const std::string axis = r.name("axis");
-    const std::string dir = r.choice("direction", {"+", "-"});
-    return fmt::format("jog_increment {} {} {}", axis, dir, r.number("step_mm", 1e-6, 1e4));
+    JogIncrement j;
+    j.axis.name = fixed_name(r.name("axis"));
+    j.direction = direction_of(r.choice("direction", {"+", "-"}));
+    j.step_mm = r.number("step_mm", 1e-6, 1e4);
+    return j;
   }
-  if (cmd == "action") {
-    r.only({"line"});
-    return r.text("line", 256);
-  }
-  return {};
+  return std::nullopt;
 }
 
 bool other_command(const std::string& cmd, Reader& r, ApiCommand& out) {
@@ -164,6 +176,13 @@ bool other_command(const std::string& cmd, Reader& r, ApiCommand& out) {
     r.only({"on"});
     out.kind = K::pause;
     out.on = r.boolean("on");
+  } else if (cmd == "action") {
+    r.only({"line"});
+    out.kind = K::action_line;
+    const std::string line = r.text("line", 256);
+    // An empty line has always been refused as no command at all.
+    if (line.empty() && r.ok()) return false;
+    out.line = fmt::format("ch={} {}", out.channel, line);  // the channel field, as the grammar writes it
   } else if (cmd == "step_cycle") {
     r.only({});
     out.kind = K::step_cycle;
@@ -202,13 +221,14 @@ std::optional<ApiCommand> parse_api_command(std::string_view body, std::size_t c
   out.channel = static_cast<std::uint8_t>(channel);
   const std::string cmd = cmd_it->get<std::string>();
   if (!other_command(cmd, r, out)) {
-    out.kind = ApiCommand::Kind::action;
-    const std::string line = operator_line(cmd, r);
-    if (line.empty() && r.ok()) {
-      diags.add(ErrorId::ApiUnknownCommand, loc, fmt::format("'{}' is no command (docs/api.md)", cmd.substr(0, 40)));
+    const std::optional<sim::ActionPayload> payload = operator_payload(cmd, r);
+    if (!payload) {
+      if (r.ok())  // else the Reader's problem is the answer
+        diags.add(ErrorId::ApiUnknownCommand, loc, fmt::format("'{}' is no command (docs/api.md)", cmd.substr(0, 40)));
       return std::nullopt;
     }
-    out.line = fmt::format("ch={} {}", out.channel, line);
+    out.kind = ApiCommand::Kind::action;
+    out.action = sim::make_action(out.channel, *payload);
   }
   if (!r.ok()) return std::nullopt;
   return out;

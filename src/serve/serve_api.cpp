@@ -115,6 +115,7 @@ HttpReply ServeApi::command(std::string_view body) {
 
 HttpReply ServeApi::act(const ApiCommand& c) {
   using K = ApiCommand::Kind;
+  Diagnostics diags;
   const std::size_t ch = c.channel - 1u;
   switch (c.kind) {
     case K::pause: kernel_.set_paused(c.on); break;
@@ -131,7 +132,9 @@ HttpReply ServeApi::act(const ApiCommand& c) {
       break;
     }
     case K::mdi: return mdi(ch, c.text);
-    case K::action: return operate(c.line);
+    case K::action:
+      return operate(sim::check_operator_action(sim::OperatorAction{c.action, {}}, machine_, diags, "api"), diags);
+    case K::action_line: return operate(sim::parse_operator_action(c.line, machine_, diags, "api"), diags);
   }
   return ok_json(json{{"ok", true}});
 }
@@ -141,14 +144,12 @@ HttpReply ServeApi::mdi(std::size_t ch, const std::string& text) {
   return ok_json(json{{"ok", true}});
 }
 
-// A scenario line without its time, as the operator commands become.
-HttpReply ServeApi::operate(const std::string& line) {
-  Diagnostics diags;
-  const auto op = sim::parse_operator_action(line, machine_, diags, "api");
+// An operator action checked and resolved against the machine (or the reason in diags).
+HttpReply ServeApi::operate(const std::optional<sim::OperatorAction>& op, const Diagnostics& diags) {
   if (!op) return error_reply(400, diags.items().front());
   const std::size_t ch = op->action.channel - 1u;
-  if (op->action.kind == sim::ActionKind::mdi) return mdi(ch, op->mdi_text);
-  if (op->action.kind == sim::ActionKind::cycle_start) return start_or_release(ch, op->action);
+  if (op->action.kind() == sim::ActionKind::mdi) return mdi(ch, op->mdi_text);
+  if (op->action.kind() == sim::ActionKind::cycle_start) return start_or_release(ch, op->action);
   return pass_on(op->action);
 }
 
@@ -210,16 +211,14 @@ std::expected<std::unique_ptr<sim::DryRun>, Diagnostic> ServeApi::make_run(
   // (the skip levels already rule the decoding: DryRunOptions::skip_masks).
   for (std::size_t ch = 0; ch < machine_.channels.size() && ch < config::kMaxChannels; ++ch) {
     const plc::ChannelControl& c = last_.channels[ch].hli;
-    const auto on_off = [](bool on) { return on ? "on" : "off"; };
-    for (const std::string& line :
-         {std::string("auto_cycle_start off"), fmt::format("feed_override {}", c.feed_override_percent),
-          fmt::format("rapid_override {}", c.rapid_override_percent),
-          fmt::format("single_step {}", on_off(c.single_step)), fmt::format("optional_stop {}", on_off(c.optional_stop)),
-          fmt::format("mode {}", c.manual_mode ? "manual" : "automatic")}) {
-      Diagnostics ignored;
-      if (auto op = sim::parse_operator_action(fmt::format("ch={} {}", ch + 1, line), machine_, ignored))
-        (void)live->machine().operate(op->action);
-    }
+    const auto n = static_cast<std::uint8_t>(ch + 1);
+    for (const sim::ScenarioAction& a :
+         {sim::make_action(n, sim::act::AutoCycleStart{false}),
+          sim::make_action(n, sim::act::FeedOverride{c.feed_override_percent}),
+          sim::make_action(n, sim::act::RapidOverride{c.rapid_override_percent}),
+          sim::make_action(n, sim::act::SingleStep{c.single_step}),
+          sim::make_action(n, sim::act::OptionalStop{c.optional_stop}), sim::make_action(n, sim::act::Mode{c.manual_mode})})
+      (void)live->machine().operate(a);
   }
   live->start_preparation_thread();
   return live;

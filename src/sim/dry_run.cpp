@@ -143,7 +143,7 @@ std::optional<Diagnostic> DryRun::mdi(std::size_t ch, const std::string& text, k
 
 std::optional<Diagnostic> DryRun::operate(const OperatorAction& op) {
   const SourceLoc loc{"operator", 1, 0};
-  if (op.action.kind == ActionKind::mdi) {
+  if (op.action.kind() == ActionKind::mdi) {
     if (op.action.channel < 1 || op.action.channel > preps_.size())
       return make_diagnostic(ErrorId::PlcOperatorActionBad, loc, fmt::format("no channel {}", op.action.channel));
     const std::size_t ch = op.action.channel - 1u;
@@ -151,7 +151,7 @@ std::optional<Diagnostic> DryRun::operate(const OperatorAction& op) {
   }
   if (sim_->operate(op.action)) return std::nullopt;
   return make_diagnostic(ErrorId::PlcOperatorActionsFull, loc,
-                         fmt::format("'{}' dropped: 32 actions already wait for the next cycle", action_name(op.action.kind)));
+                         fmt::format("'{}' dropped: 32 actions already wait for the next cycle", action_name(op.action.kind())));
 }
 
 bool DryRun::held_for_good() const noexcept {

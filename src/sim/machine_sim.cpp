@@ -35,11 +35,11 @@ void MachineSim::load_scenario(const sim::Scenario& scenario) {
   // which runs ahead of the first cycle, sees them from the first block.
   jog_lines_left_ = 0;
   for (const sim::ScenarioAction& a : scenario.actions) {
-    if (a.kind == sim::ActionKind::jog || a.kind == sim::ActionKind::jog_increment) ++jog_lines_left_;
-    if (a.kind != sim::ActionKind::skip_mask) continue;
+    if (a.kind() == sim::ActionKind::jog || a.kind() == sim::ActionKind::jog_increment) ++jog_lines_left_;
+    const auto* skip = a.get<act::SkipMask>();
+    if (!skip) continue;
     skip_levels_used_ = true;
-    if (a.t_s <= 0 && a.channel >= 1 && a.channel <= channels_)
-      hli_.channel[a.channel - 1u].skip_mask = static_cast<std::uint32_t>(a.value);
+    if (a.t_s <= 0 && a.channel >= 1 && a.channel <= channels_) hli_.channel[a.channel - 1u].skip_mask = skip->mask;
   }
 }
 
@@ -56,7 +56,7 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
     jogs_given_ = false;
   }
   for (const sim::ScenarioAction& a : player_.due(t_s)) {
-    const bool jog = a.kind == sim::ActionKind::jog || a.kind == sim::ActionKind::jog_increment;
+    const bool jog = a.kind() == sim::ActionKind::jog || a.kind() == sim::ActionKind::jog_increment;
     if (jog && jog_lines_left_ > 0) --jog_lines_left_;  // counts the timed lines only
     apply(a, in);
   }
@@ -124,93 +124,121 @@ void MachineSim::write_channel_state(kernel::ProgramState st, plc::ChannelState&
                                                              : BS::inactive;
 }
 
+namespace {
+
+// The payload of an action whose kind() was checked.
+template <class T>
+const T& as(const sim::ScenarioAction& a) noexcept {
+  return *a.get<T>();
+}
+
+}  // namespace
+
 // One scenario action: the PLC writes its HLI controls, falls silent,
 // passes an external spindle command on, or a handwheel is turned.
 void MachineSim::apply(const sim::ScenarioAction& a, kernel::TickInput& in) noexcept {
+  using K = sim::ActionKind;
   const std::size_t c = a.channel >= 1 && a.channel <= channels_ ? a.channel - 1u : 0u;
   plc::ChannelControl& ch = hli_.channel[c];
-  switch (a.kind) {
-    case sim::ActionKind::feed_override: ch.feed_override_percent = a.value; return;
-    case sim::ActionKind::rapid_override: ch.rapid_override_percent = a.value; return;
-    case sim::ActionKind::feedhold: ch.feedhold = a.on; return;
-    case sim::ActionKind::reset: ch.reset = true; return;
-    case sim::ActionKind::optional_stop: ch.optional_stop = a.on; return;
-    case sim::ActionKind::cycle_start: ch.cycle_start = true; return;
-    case sim::ActionKind::stop: ch.stop = true; return;
-    case sim::ActionKind::auto_cycle_start: auto_cycle_start_[c] = a.on; return;
-    case sim::ActionKind::single_step: ch.single_step = a.on; return;
-    case sim::ActionKind::skip_mask:  // from now on preparation reads the levels
-      ch.skip_mask = static_cast<std::uint32_t>(a.value);
+  switch (a.kind()) {
+    case K::feed_override: ch.feed_override_percent = as<act::FeedOverride>(a).percent; return;
+    case K::rapid_override: ch.rapid_override_percent = as<act::RapidOverride>(a).percent; return;
+    case K::feedhold: ch.feedhold = as<act::Feedhold>(a).on; return;
+    case K::reset: ch.reset = true; return;
+    case K::optional_stop: ch.optional_stop = as<act::OptionalStop>(a).on; return;
+    case K::cycle_start: ch.cycle_start = true; return;
+    case K::stop: ch.stop = true; return;
+    case K::auto_cycle_start: auto_cycle_start_[c] = as<act::AutoCycleStart>(a).on; return;
+    case K::single_step: ch.single_step = as<act::SingleStep>(a).on; return;
+    case K::skip_mask:  // from now on preparation reads the levels
+      ch.skip_mask = as<act::SkipMask>(a).mask;
       skip_levels_used_ = true;
       return;
-    case sim::ActionKind::silent: plc_.set_silent(a.on); return;
-    case sim::ActionKind::mdi:  // beyond 64 lines due in one cycle: dropped (docs/plc-scenario.md)
-      (void)mdi_requests_.push_back(MdiRequest{a.line, a.channel, static_cast<std::uint32_t>(a.value)});
+    case K::silent: plc_.set_silent(as<act::Silent>(a).on); return;
+    case K::mdi:  // beyond 64 lines due in one cycle: dropped (docs/plc-scenario.md)
+      (void)mdi_requests_.push_back(MdiRequest{a.line, a.channel, as<act::Mdi>(a).text});
       return;
-    case sim::ActionKind::block_search: return;  // taken at setup (DryRunOptions::search)
-    case sim::ActionKind::handwheel:
-      if (a.axis >= 0) in.channels[c].handwheel_mm[static_cast<std::size_t>(a.axis)] += a.value;
+    case K::block_search: return;  // taken at setup (DryRunOptions::search)
+    case K::handwheel: {
+      const act::Handwheel& h = as<act::Handwheel>(a);
+      if (h.axis.index >= 0) in.channels[c].handwheel_mm[static_cast<std::size_t>(h.axis.index)] += h.distance_mm;
       handwheel_turned_ = true;
       return;
-    case sim::ActionKind::jog:
-    case sim::ActionKind::jog_increment: apply_jog(a, in.channels[c]); return;
-    case sim::ActionKind::mode: ch.manual_mode = a.on; return;
-    case sim::ActionKind::variable: {
-      auto& vars = in.channels[c].variables;
-      for (kernel::ChannelVariable& v : vars)
-        if (v.name == a.var_name) {
-          v.value = a.value;
-          return;
-        }
-      (void)vars.push_back(kernel::ChannelVariable{a.var_name, a.value});  // beyond 16: ignored
-      return;
     }
-    case sim::ActionKind::spindle_cmd:
-      if (!in.ext_commands.push_back(a.cmd)) ++in.ext_commands_lost;
-      return;
-    case sim::ActionKind::spindle_stop_at_end:
-      if (!a.has_spindle()) {  // every spindle of the channel
-        for (std::int32_t i = 0; i < static_cast<std::int32_t>(config::kMaxSpindles); ++i) {
-          const std::int8_t h = map_.at(a.channel, i);
-          if (h >= 0 && static_cast<std::size_t>(h) < spindles_)
-            hli_.spindle_control[static_cast<std::size_t>(h)].stop_at_program_end = a.on;
-        }
-        return;
-      }
-      apply_to_spindle(a);
+    case K::jog: push_jog(jog_request(as<act::Jog>(a)), in.channels[c]); return;
+    case K::jog_increment: push_jog(jog_request(as<act::JogIncrement>(a)), in.channels[c]); return;
+    case K::mode: ch.manual_mode = as<act::Mode>(a).manual; return;
+    case K::variable: set_variable(as<act::Variable>(a), in.channels[c]); return;
+    case K::spindle_cmd:
+      if (!in.ext_commands.push_back(as<act::SpindleCmd>(a).cmd)) ++in.ext_commands_lost;
       return;
     default: apply_to_spindle(a); return;
   }
 }
 
+void MachineSim::set_variable(const act::Variable& v, kernel::ChannelInput& in) noexcept {
+  for (kernel::ChannelVariable& known : in.variables)
+    if (known.name == v.name) {
+      known.value = v.value;
+      return;
+    }
+  (void)in.variables.push_back(kernel::ChannelVariable{v.name, v.value});  // beyond 16: ignored
+}
+
 // A jog line: the operator presses (or releases) a jog key.
-void MachineSim::apply_jog(const sim::ScenarioAction& a, kernel::ChannelInput& in) noexcept {
-  using Kind = kernel::JogRequest::Kind;
+kernel::JogRequest MachineSim::jog_request(const act::Jog& j) noexcept {
   kernel::JogRequest r;
-  r.axis = a.axis;
-  r.direction = a.direction < 0 ? std::int8_t{-1} : std::int8_t{1};
-  if (a.kind == sim::ActionKind::jog_increment) {
-    r.kind = Kind::increment;
-    r.step_mm = a.value;
-  } else {
-    r.kind = a.direction == 0 ? Kind::stop : Kind::continuous;
-    r.speed_mm_s = a.value;
-  }
+  r.axis = j.axis.index;
+  r.direction = j.direction < 0 ? std::int8_t{-1} : std::int8_t{1};
+  r.kind = j.direction == 0 ? kernel::JogRequest::Kind::stop : kernel::JogRequest::Kind::continuous;
+  r.speed_mm_s = j.speed_mm_min / 60.0;  // 0: the axis's jog speed
+  return r;
+}
+
+kernel::JogRequest MachineSim::jog_request(const act::JogIncrement& j) noexcept {
+  kernel::JogRequest r;
+  r.axis = j.axis.index;
+  r.direction = j.direction < 0 ? std::int8_t{-1} : std::int8_t{1};
+  r.kind = kernel::JogRequest::Kind::increment;
+  r.step_mm = j.step_mm;
+  return r;
+}
+
+void MachineSim::push_jog(const kernel::JogRequest& r, kernel::ChannelInput& in) noexcept {
   (void)in.jogs.push_back(r);  // more than kMaxJogRequestsPerTick at one time: the rest is lost
   jogs_given_ = true;
 }
 
+plc::SpindleControl* MachineSim::spindle_control(const act::SpindleRef& s) noexcept {
+  if (s.hli < 0 || static_cast<std::size_t>(s.hli) >= spindles_) return nullptr;
+  return &hli_.spindle_control[static_cast<std::size_t>(s.hli)];
+}
+
+// The actions on one spindle's HLI controls (spindle_stop_at_end without a
+// spindle: on every spindle of the channel).
 void MachineSim::apply_to_spindle(const sim::ScenarioAction& a) noexcept {
-  if (a.hli_spindle < 0 || static_cast<std::size_t>(a.hli_spindle) >= spindles_) return;
-  plc::SpindleControl& sc = hli_.spindle_control[static_cast<std::size_t>(a.hli_spindle)];
-  switch (a.kind) {
-    case sim::ActionKind::spindle_override: sc.override_percent = a.value; sc.override_valid = true; return;
-    case sim::ActionKind::override_valid: sc.override_valid = a.on; return;
-    case sim::ActionKind::spindle_feedhold: sc.feedhold = a.on; return;
-    case sim::ActionKind::spindle_stop_at_end: sc.stop_at_program_end = a.on; return;
-    case sim::ActionKind::spindle_reset: sc.reset = true; return;
-    default: return;
+  if (const auto* stop = a.get<act::SpindleStopAtEnd>(); stop && !stop->spindle.given()) {
+    for (std::int32_t i = 0; i < static_cast<std::int32_t>(config::kMaxSpindles); ++i) {
+      const std::int8_t h = map_.at(a.channel, i);
+      if (h >= 0 && static_cast<std::size_t>(h) < spindles_)
+        hli_.spindle_control[static_cast<std::size_t>(h)].stop_at_program_end = stop->on;
+    }
+    return;
   }
+  std::visit(
+      [&](const auto& p) {
+        using T = std::decay_t<decltype(p)>;
+        if constexpr (requires { p.spindle; } && !std::is_same_v<T, act::SpindleCmd>) {
+          plc::SpindleControl* sc = spindle_control(p.spindle);
+          if (!sc) return;
+          if constexpr (std::is_same_v<T, act::SpindleOverride>) sc->override_percent = p.percent, sc->override_valid = true;
+          else if constexpr (std::is_same_v<T, act::OverrideValid>) sc->override_valid = p.on;
+          else if constexpr (std::is_same_v<T, act::SpindleFeedhold>) sc->feedhold = p.on;
+          else if constexpr (std::is_same_v<T, act::SpindleStopAtEnd>) sc->stop_at_program_end = p.on;
+          else if constexpr (std::is_same_v<T, act::SpindleReset>) sc->reset = true;
+        }
+      },
+      a.payload);
 }
 
 }  // namespace nck::sim

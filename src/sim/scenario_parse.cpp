@@ -4,11 +4,16 @@
 #include <charconv>
 #include <cmath>
 #include <optional>
+#include <type_traits>
+#include <utility>
+#include <variant>
 
 #include <fmt/format.h>
 
 #include "nck/core/edit_distance.hpp"
+#include "nck/sim/operator_action.hpp"
 #include "nck/sim/scenario.hpp"
+#include "nck/sim/action_words.hpp"
 #include "scenario_text.hpp"
 
 namespace nck::sim {
@@ -78,21 +83,21 @@ class LineParser {
   bool parse_action(ScenarioAction& a);
   bool parse_args(ScenarioAction& a);
   bool need(std::string_view what);
-  bool take_spindle(ScenarioAction& a);
+  bool take_spindle(act::SpindleRef& spindle);
   bool take_switch(bool& on);
   bool take_percent(double& pct);
-  bool take_spindle_cmd(ScenarioAction& a);
-  bool take_handwheel(ScenarioAction& a);
-  bool take_axis(ScenarioAction& a);
-  bool take_jog(ScenarioAction& a);
-  bool take_jog_increment(ScenarioAction& a);
-  bool take_jog_direction(ScenarioAction& a, bool stop_allowed);
-  bool take_mode(ScenarioAction& a);
-  bool take_variable(ScenarioAction& a);
-  bool take_skip_mask(double& mask);
-  bool take_block_search(ScenarioAction& a);
+  bool take_spindle_cmd(std::uint8_t channel, act::SpindleCmd& c);
+  bool take_handwheel(act::Handwheel& h);
+  bool take_axis(act::AxisRef& axis);
+  bool take_jog(act::Jog& j);
+  bool take_jog_increment(act::JogIncrement& j);
+  bool take_jog_direction(std::int8_t& direction, bool stop_allowed);
+  bool take_mode(act::Mode& m);
+  bool take_variable(act::Variable& v);
+  bool take_skip_mask(std::uint32_t& mask);
+  bool take_block_search(const ScenarioAction& a, act::BlockSearch& b);
   bool take_mdi_text();
-  bool take_search_mark(ScenarioAction& a);
+  bool take_search_mark(act::BlockSearch& b);
   bool take_whole(std::string_view what, std::int64_t lowest, std::int64_t& value);
   bool take_keyword_value(std::string_view key, double& value, bool& seen);
 
@@ -111,7 +116,7 @@ std::optional<ScenarioAction> LineParser::parse() {
   if (!at_end()) {
     fail(ErrorId::PlcScenarioExtraArgument, toks_[next_].column,
          fmt::format("'{}' is one word too many for '{}'; remove it or start a comment with #",
-                     detail::printable(toks_[next_].text), action_name(a.kind)));
+                     detail::printable(toks_[next_].text), action_name(a.kind())));
     return {};
   }
   return a;
@@ -167,10 +172,8 @@ bool LineParser::parse_channel(ScenarioAction& a) {
     return true;  // no channel prefix: channel 1
   }
   auto v = detail::to_number(num_text);
-  if (!v || *v < 1 || *v > static_cast<double>(config::kMaxChannels) || *v != std::floor(*v))
-    return fail(ErrorId::PlcScenarioBadChannel, column,
-                fmt::format("'{}' is not a channel number; write a whole number 1..{}",
-                            detail::printable(num_text), config::kMaxChannels));
+  if (!v || !words::valid_channel_number(*v))
+    return fail(ErrorId::PlcScenarioBadChannel, column, words::not_a_channel(detail::printable(num_text)));
   a.channel = static_cast<std::uint8_t>(*v);
   return true;
 }
@@ -180,7 +183,7 @@ bool LineParser::parse_action(ScenarioAction& a) {
   const Token& t = toks_[next_++];
   for (const auto& s : kActions) {
     if (iequals(t.text, s.word)) {
-      a.kind = s.kind;
+      a.payload = payload_of(s.kind);
       return true;
     }
   }
@@ -201,163 +204,132 @@ bool LineParser::need(std::string_view what) {
               fmt::format("missing {}", what));
 }
 
+// The payload parse_action chose, filled in from the line's words.
 bool LineParser::parse_args(ScenarioAction& a) {
-  switch (a.kind) {
-    case ActionKind::spindle_override:
-      return take_spindle(a) && take_percent(a.value);
-    case ActionKind::feed_override:
-    case ActionKind::rapid_override:
-      return take_percent(a.value);
-    case ActionKind::override_valid:
-    case ActionKind::spindle_feedhold:
-      return take_spindle(a) && take_switch(a.on);
-    case ActionKind::spindle_stop_at_end:
-      if (!take_switch(a.on)) return false;
-      return at_end() || take_spindle(a);  // optional spindle
-    case ActionKind::feedhold:
-    case ActionKind::optional_stop:
-    case ActionKind::silent:
-    case ActionKind::auto_cycle_start:
-    case ActionKind::single_step:
-      return take_switch(a.on);
-    case ActionKind::reset:
-    case ActionKind::stop:
-    case ActionKind::cycle_start:
-      return true;
-    case ActionKind::spindle_reset:
-      return take_spindle(a);
-    case ActionKind::spindle_cmd:
-      return take_spindle(a) && take_spindle_cmd(a);
-    case ActionKind::handwheel:
-      return take_handwheel(a);
-    case ActionKind::variable:
-      return take_variable(a);
-    case ActionKind::skip_mask:
-      return take_skip_mask(a.value);
-    case ActionKind::block_search:
-      return take_block_search(a);
-    case ActionKind::mdi:
-      return take_mdi_text();
-    case ActionKind::jog:
-      return take_jog(a);
-    case ActionKind::jog_increment:
-      return take_jog_increment(a);
-    case ActionKind::mode:
-      return take_mode(a);
-  }
-  return true;
+  return std::visit(
+      [&](auto& p) {
+        using T = std::decay_t<decltype(p)>;
+        if constexpr (std::is_same_v<T, act::SpindleOverride>) return take_spindle(p.spindle) && take_percent(p.percent);
+        else if constexpr (std::is_same_v<T, act::FeedOverride> || std::is_same_v<T, act::RapidOverride>)
+          return take_percent(p.percent);
+        else if constexpr (std::is_same_v<T, act::OverrideValid> || std::is_same_v<T, act::SpindleFeedhold>)
+          return take_spindle(p.spindle) && take_switch(p.on);
+        else if constexpr (std::is_same_v<T, act::SpindleStopAtEnd>)
+          return take_switch(p.on) && (at_end() || take_spindle(p.spindle));  // optional spindle
+        else if constexpr (std::is_same_v<T, act::Feedhold> || std::is_same_v<T, act::OptionalStop> ||
+                           std::is_same_v<T, act::Silent> || std::is_same_v<T, act::AutoCycleStart> ||
+                           std::is_same_v<T, act::SingleStep>)
+          return take_switch(p.on);
+        else if constexpr (std::is_same_v<T, act::SpindleReset>) return take_spindle(p.spindle);
+        else if constexpr (std::is_same_v<T, act::SpindleCmd>)
+          return take_spindle(p.spindle) && take_spindle_cmd(a.channel, p);
+        else if constexpr (std::is_same_v<T, act::Handwheel>) return take_handwheel(p);
+        else if constexpr (std::is_same_v<T, act::Variable>) return take_variable(p);
+        else if constexpr (std::is_same_v<T, act::SkipMask>) return take_skip_mask(p.mask);
+        else if constexpr (std::is_same_v<T, act::BlockSearch>) return take_block_search(a, p);
+        else if constexpr (std::is_same_v<T, act::Mdi>) return take_mdi_text();
+        else if constexpr (std::is_same_v<T, act::Jog>) return take_jog(p);
+        else if constexpr (std::is_same_v<T, act::JogIncrement>) return take_jog_increment(p);
+        else if constexpr (std::is_same_v<T, act::Mode>) return take_mode(p);
+        else return true;  // reset, stop, cycle_start: no arguments
+      },
+      a.payload);
 }
 
 // A path axis name as the channel knows it (checked against the machine later).
-bool LineParser::take_axis(ScenarioAction& a) {
+bool LineParser::take_axis(act::AxisRef& axis) {
   if (!need("the axis name (e.g. X)")) return false;
-  const Token& axis = toks_[next_++];
-  if (axis.text.empty() || axis.text.size() >= a.axis_name.size() ||
-      !std::isalpha(static_cast<unsigned char>(axis.text[0])))
-    return fail(ErrorId::PlcScenarioBadNumber, axis.column,
-                fmt::format("'{}' is not an axis name; write e.g. X", detail::printable(axis.text)));
-  std::copy(axis.text.begin(), axis.text.end(), a.axis_name.begin());
-  a.axis_name[axis.text.size()] = '\0';
+  const Token& t = toks_[next_++];
+  if (!words::valid_axis_name(t.text))
+    return fail(ErrorId::PlcScenarioBadNumber, t.column, words::not_an_axis(detail::printable(t.text)));
+  words::copy_name(t.text, axis.name);
   return true;
 }
 
 // handwheel <axis> <mm>: the axis name as the channel knows it, the distance signed.
-bool LineParser::take_handwheel(ScenarioAction& a) {
-  if (!take_axis(a)) return false;
+bool LineParser::take_handwheel(act::Handwheel& h) {
+  if (!take_axis(h.axis)) return false;
   if (!need("the handwheel distance in mm")) return false;
   const Token& t = toks_[next_++];
   auto v = detail::to_number(t.text);
   if (!v)
     return fail(ErrorId::PlcScenarioBadNumber, t.column,
                 fmt::format("'{}' is not a distance; write mm, e.g. 0.5", detail::printable(t.text)));
-  a.value = *v;
+  h.distance_mm = *v;
   return true;
 }
 
 // + or - (or stop, where allowed): the jog's direction.
-bool LineParser::take_jog_direction(ScenarioAction& a, bool stop_allowed) {
+bool LineParser::take_jog_direction(std::int8_t& direction, bool stop_allowed) {
   if (!need(stop_allowed ? "+, - or stop" : "+ or -")) return false;
   const Token& t = toks_[next_++];
-  if (t.text == "+") a.direction = 1;
-  else if (t.text == "-") a.direction = -1;
-  else if (stop_allowed && iequals(t.text, "stop")) a.direction = 0;
-  else
-    return fail(ErrorId::PlcScenarioBadJog, t.column,
-                fmt::format("'{}' is not a jog direction; write {}", detail::printable(t.text),
-                            stop_allowed ? "+, - or stop" : "+ or -"));
+  const std::optional<std::int8_t> d = jog_direction_word(t.text, stop_allowed);
+  if (!d)
+    return fail(ErrorId::PlcScenarioBadJog, t.column, words::not_a_jog_direction(detail::printable(t.text), stop_allowed));
+  direction = *d;
   return true;
 }
 
 // jog <axis> +|- [speed mm/min] | jog <axis> stop: a continuous jog starts
-// (until its stop line) or is released. The speed is kept in mm/s.
-bool LineParser::take_jog(ScenarioAction& a) {
-  if (!take_axis(a) || !take_jog_direction(a, true)) return false;
-  if (at_end() || a.direction == 0) return true;
+// (until its stop line) or is released.
+bool LineParser::take_jog(act::Jog& j) {
+  if (!take_axis(j.axis) || !take_jog_direction(j.direction, true)) return false;
+  if (at_end() || j.direction == 0) return true;
   const Token& t = toks_[next_++];
   auto v = detail::to_number(t.text);
-  if (!v || *v <= 0)
-    return fail(ErrorId::PlcScenarioBadJog, t.column,
-                fmt::format("'{}' is not a jog speed; write mm/min > 0, e.g. 600", detail::printable(t.text)));
-  a.value = *v / 60.0;
+  if (!v || *v <= 0) return fail(ErrorId::PlcScenarioBadJog, t.column, words::not_a_jog_speed(detail::printable(t.text)));
+  j.speed_mm_min = *v;
   return true;
 }
 
 // jog_increment <axis> +|- <step mm>: one step per line.
-bool LineParser::take_jog_increment(ScenarioAction& a) {
-  if (!take_axis(a) || !take_jog_direction(a, false)) return false;
+bool LineParser::take_jog_increment(act::JogIncrement& j) {
+  if (!take_axis(j.axis) || !take_jog_direction(j.direction, false)) return false;
   if (!need("the step in mm (e.g. 0.1)")) return false;
   const Token& t = toks_[next_++];
   auto v = detail::to_number(t.text);
-  if (!v || *v <= 0)
-    return fail(ErrorId::PlcScenarioBadJog, t.column,
-                fmt::format("'{}' is not a jog step; write mm > 0, e.g. 0.1", detail::printable(t.text)));
-  a.value = *v;
+  if (!v || *v <= 0) return fail(ErrorId::PlcScenarioBadJog, t.column, words::not_a_jog_step(detail::printable(t.text)));
+  j.step_mm = *v;
   return true;
 }
 
-// mode manual|automatic: on = manual.
-bool LineParser::take_mode(ScenarioAction& a) {
+// mode manual|automatic.
+bool LineParser::take_mode(act::Mode& m) {
   if (!need("manual or automatic")) return false;
   const Token& t = toks_[next_++];
-  if (iequals(t.text, "manual")) a.on = true;
-  else if (iequals(t.text, "automatic")) a.on = false;
-  else
-    return fail(ErrorId::PlcScenarioBadMode, t.column,
-                fmt::format("'{}' is not a mode; write manual or automatic", detail::printable(t.text)));
+  const std::optional<bool> manual = manual_mode_word(t.text);
+  if (!manual) return fail(ErrorId::PlcScenarioBadMode, t.column, words::not_a_mode(detail::printable(t.text)));
+  m.manual = *manual;
   return true;
 }
 
 // variable <name> <value>: a channel variable (e.g. the distance sensor's
 // value for SENSOR_SOURCE=VARIABLE), matched by name, case-insensitively.
-bool LineParser::take_variable(ScenarioAction& a) {
+bool LineParser::take_variable(act::Variable& var) {
   if (!need("the variable name (e.g. V.E.GAP)")) return false;
   const Token& name = toks_[next_++];
-  if (name.text.empty() || name.text.size() >= a.var_name.size())
+  if (name.text.empty() || name.text.size() >= var.name.size())
     return fail(ErrorId::PlcScenarioBadNumber, name.column,
                 fmt::format("'{}' is not a variable name (1 to {} characters)", detail::printable(name.text),
-                            a.var_name.size() - 1));
+                            var.name.size() - 1));
   for (std::size_t i = 0; i < name.text.size(); ++i)
-    a.var_name[i] = static_cast<char>(std::toupper(static_cast<unsigned char>(name.text[i])));
+    var.name[i] = static_cast<char>(std::toupper(static_cast<unsigned char>(name.text[i])));
   if (!need("the variable's value")) return false;
   const Token& t = toks_[next_++];
   auto v = detail::to_number(t.text);
   if (!v)
     return fail(ErrorId::PlcScenarioBadNumber, t.column,
                 fmt::format("'{}' is not a number", detail::printable(t.text)));
-  a.value = *v;
+  var.value = *v;
   return true;
 }
 
-bool LineParser::take_spindle(ScenarioAction& a) {
+bool LineParser::take_spindle(act::SpindleRef& spindle) {
   if (!need("the spindle name (e.g. S1)")) return false;
   const Token& t = toks_[next_++];
   if (!detail::valid_spindle_name(t.text))
-    return fail(ErrorId::PlcScenarioBadSpindleName, t.column,
-                fmt::format("'{}' is not a spindle name; write S or S followed by letters, digits "
-                            "or _ (at most {} characters), e.g. S1",
-                            detail::printable(t.text), plc::kSpindleNameChars - 1));
-  std::copy(t.text.begin(), t.text.end(), a.spindle_name.begin());
-  a.spindle_name[t.text.size()] = '\0';
+    return fail(ErrorId::PlcScenarioBadSpindleName, t.column, words::not_a_spindle(detail::printable(t.text)));
+  words::copy_name(t.text, spindle.name);
   return true;
 }
 
@@ -380,33 +352,29 @@ bool LineParser::take_percent(double& pct) {
   if (!need("the percentage (0..200)")) return false;
   const Token& t = toks_[next_++];
   auto v = detail::to_number(t.text);
-  if (!v || *v < 0 || *v > kMaxOverridePercent)
-    return fail(ErrorId::PlcScenarioBadNumber, t.column,
-                fmt::format("'{}' is not an override; write a percentage from 0 to {}",
-                            detail::printable(t.text), kMaxOverridePercent));
+  if (!v || !words::valid_percent(*v))
+    return fail(ErrorId::PlcScenarioBadNumber, t.column, words::not_a_percent(detail::printable(t.text)));
   pct = *v;
   return true;
 }
 
 // skip_mask <mask>: levels /1../10 as bits 0..9, decimal or 0x hexadecimal.
-bool LineParser::take_skip_mask(double& mask) {
+bool LineParser::take_skip_mask(std::uint32_t& mask) {
   if (!need("the skip mask (e.g. 0x5 for /1 and /3)")) return false;
   const Token& t = toks_[next_++];
   std::uint32_t v = 0;
   const bool hex = t.text.size() > 2 && t.text[0] == '0' && (t.text[1] == 'x' || t.text[1] == 'X');
   const std::string_view digits = hex ? t.text.substr(2) : t.text;
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v, hex ? 16 : 10);
-  if (ec != std::errc{} || end != digits.data() + digits.size() || digits.empty() || v > 0x3FF)
-    return fail(ErrorId::PlcScenarioBadNumber, t.column,
-                fmt::format("'{}' is not a skip mask; write 0 to 1023 (0x3FF): bit 0 = /1 ... bit 9 = /10",
-                            detail::printable(t.text)));
+  if (ec != std::errc{} || end != digits.data() + digits.size() || digits.empty() || v > words::kAllSkipLevels)
+    return fail(ErrorId::PlcScenarioBadNumber, t.column, words::not_a_skip_mask(detail::printable(t.text)));
   mask = v;
   return true;
 }
 
 // mdi <NC block>: the rest of the line (a '#' starts the scenario's comment).
 bool LineParser::take_mdi_text() {
-  if (!need("the NC block to run (e.g. G1 X10 F1000)")) return false;
+  if (!need(words::kMissingMdiText)) return false;
   const char* first = toks_[next_].text.data();
   const Token& last = toks_.back();
   mdi_text_.assign(first, static_cast<std::size_t>(last.text.data() + last.text.size() - first));
@@ -428,29 +396,29 @@ bool LineParser::take_whole(std::string_view what, std::int64_t lowest, std::int
 // block_search N<n> | block <K> | offset <bytes> [pass <P>] [covered <per
 // mille>] [program <name>] [no_hold]: the run starts with a block search
 // (TF5200 types 4, 3, 1); only at time 0, where the program starts.
-bool LineParser::take_block_search(ScenarioAction& a) {
+bool LineParser::take_block_search(const ScenarioAction& a, act::BlockSearch& b) {
   if (a.t_s != 0 || a.trigger)
     return fail(ErrorId::PlcScenarioBlockSearch, toks_[0].column,
                 "block_search starts the program with a block search: give it at time 0");
-  if (!take_search_mark(a)) return false;
+  if (!take_search_mark(b)) return false;
   while (!at_end()) {
     const Token& k = toks_[next_++];
     std::int64_t v = 0;
     if (iequals(k.text, "pass")) {
       if (!take_whole("a pass count >= 1", 1, v)) return false;
-      a.search_pass = static_cast<std::uint32_t>(std::min<std::int64_t>(v, UINT32_MAX));
+      b.pass = static_cast<std::uint32_t>(std::min<std::int64_t>(v, UINT32_MAX));
     } else if (iequals(k.text, "covered")) {
       if (!take_whole("a covered share in per mille (0..1000)", 0, v)) return false;
       if (v > 1000) return fail(ErrorId::PlcScenarioBlockSearch, k.column, "covered is per mille: 0..1000");
-      a.covered_permille = static_cast<double>(v);
+      b.covered_permille = static_cast<double>(v);
     } else if (iequals(k.text, "program")) {
       if (!need("the program name")) return false;
       const Token& p = toks_[next_++];
-      if (p.text.size() >= a.program.size())
+      if (p.text.size() >= b.program.size())
         return fail(ErrorId::PlcScenarioBlockSearch, p.column, "the program name is too long");
-      std::copy(p.text.begin(), p.text.end(), a.program.begin());
+      words::copy_name(p.text, b.program);
     } else if (iequals(k.text, "no_hold")) {
-      a.on = true;
+      b.no_hold_at_restart = true;
     } else {
       return fail(ErrorId::PlcScenarioBlockSearch, k.column,
                   fmt::format("'{}' is no block_search option: pass, covered, program or no_hold",
@@ -460,34 +428,34 @@ bool LineParser::take_block_search(ScenarioAction& a) {
   return true;
 }
 
-bool LineParser::take_search_mark(ScenarioAction& a) {
+bool LineParser::take_search_mark(act::BlockSearch& b) {
   if (!need("the restart mark: N<n>, block <K> or offset <bytes>")) return false;
   const Token& t = toks_[next_];
   std::int64_t v = 0;
   if (t.text.size() > 1 && (t.text[0] == 'N' || t.text[0] == 'n') && std::isdigit(static_cast<unsigned char>(t.text[1]))) {
-    a.search_kind = prep::SearchMark::Kind::block_number;
+    b.mark_kind = prep::SearchMark::Kind::block_number;
     std::int64_t n = 0;
     const auto [end, ec] = std::from_chars(t.text.data() + 1, t.text.data() + t.text.size(), n);
     if (ec != std::errc{} || end != t.text.data() + t.text.size())
       return fail(ErrorId::PlcScenarioBlockSearch, t.column,
                   fmt::format("'{}' is not a block number; write e.g. N100", detail::printable(t.text)));
     ++next_;
-    a.value = static_cast<double>(n);
+    b.mark_value = n;
     return true;
   }
   ++next_;
   if (iequals(t.text, "block")) {
-    a.search_kind = prep::SearchMark::Kind::block_counter;
+    b.mark_kind = prep::SearchMark::Kind::block_counter;
     if (!take_whole("a block counter >= 1", 1, v)) return false;
   } else if (iequals(t.text, "offset")) {
-    a.search_kind = prep::SearchMark::Kind::file_offset;
+    b.mark_kind = prep::SearchMark::Kind::file_offset;
     if (!take_whole("a byte offset >= 0", 0, v)) return false;
   } else {
     return fail(ErrorId::PlcScenarioBlockSearch, t.column,
                 fmt::format("'{}' is no restart mark; write N<n>, block <K> or offset <bytes>",
                             detail::printable(t.text)));
   }
-  a.value = static_cast<double>(v);
+  b.mark_value = v;
   return true;
 }
 
@@ -516,10 +484,10 @@ bool LineParser::take_keyword_value(std::string_view key, double& value, bool& s
   return true;
 }
 
-bool LineParser::take_spindle_cmd(ScenarioAction& a) {
-  plc::ExtSpindleCommand& c = a.cmd;
-  c.channel = a.channel;
-  c.spindle_name = a.spindle_name;
+bool LineParser::take_spindle_cmd(std::uint8_t channel, act::SpindleCmd& sc) {
+  plc::ExtSpindleCommand& c = sc.cmd;
+  c.channel = channel;
+  c.spindle_name = sc.spindle.name;
   bool have_fn = false;
   while (!at_end()) {
     const Token& t = toks_[next_];
@@ -562,15 +530,16 @@ std::string_view action_name(ActionKind k) noexcept {
 
 std::optional<ScenarioSearch> block_search_of(const Scenario& sc) {
   for (const ScenarioAction& a : sc.actions) {
-    if (a.kind != ActionKind::block_search) continue;
+    const auto* b = a.get<act::BlockSearch>();
+    if (!b) continue;
     ScenarioSearch s;
     s.channel = a.channel >= 1 ? a.channel - 1u : 0u;
-    s.mark.kind = a.search_kind;
-    s.mark.value = static_cast<std::int64_t>(a.value);
-    s.mark.pass = a.search_pass;
-    s.mark.covered_permille = a.covered_permille;
-    s.mark.program = std::string(a.program.data());
-    s.mark.no_hold_at_restart = a.on;
+    s.mark.kind = b->mark_kind;
+    s.mark.value = b->mark_value;
+    s.mark.pass = b->pass;
+    s.mark.covered_permille = b->covered_permille;
+    s.mark.program = std::string(b->program.data());
+    s.mark.no_hold_at_restart = b->no_hold_at_restart;
     return s;
   }
   return std::nullopt;
@@ -598,8 +567,8 @@ Scenario parse_scenario(std::string_view text, std::string file, Diagnostics& di
     LineParser parser(toks, sc.file, line_no, diags);
     auto a = parser.parse();
     if (!a) continue;
-    if (a->kind == ActionKind::mdi) {
-      a->value = static_cast<double>(sc.texts.size());
+    if (auto* mdi = a->get<act::Mdi>()) {
+      mdi->text = static_cast<std::uint32_t>(sc.texts.size());
       sc.texts.push_back(parser.mdi_text());
     }
     if (a->trigger) {  // waits for its program state: no place in the timeline
@@ -611,7 +580,7 @@ Scenario parse_scenario(std::string_view text, std::string file, Diagnostics& di
                 fmt::format("time {} s comes after {} s; the action is sorted in by its time",
                             a->t_s, last_t_s));
     last_t_s = std::max(last_t_s, a->t_s);
-    if (a->kind == ActionKind::block_search && block_search_of(sc)) {
+    if (a->kind() == ActionKind::block_search && block_search_of(sc)) {
       diags.add(ErrorId::PlcScenarioBlockSearch, SourceLoc{sc.file, line_no, 1},
                 "a second block_search line; a run has one block search");
       continue;

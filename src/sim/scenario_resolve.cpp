@@ -1,5 +1,6 @@
 // A scenario's channel, spindle and axis names resolved against the machine (setup).
 #include <algorithm>
+#include <type_traits>
 
 #include <fmt/format.h>
 
@@ -8,17 +9,6 @@
 
 namespace nck::sim {
 namespace {
-
-bool needs_spindle(ActionKind k) {
-  switch (k) {
-    case ActionKind::spindle_override:
-    case ActionKind::override_valid:
-    case ActionKind::spindle_feedhold:
-    case ActionKind::spindle_reset:
-    case ActionKind::spindle_cmd: return true;
-    default: return false;
-  }
-}
 
 // Index of the named spindle in the channel, or plc::kNoSpindle. The exact
 // designation wins; otherwise the channel's main-spindle name addresses the
@@ -32,46 +22,67 @@ std::int8_t find_spindle(const config::ChannelConfig& ch, std::string_view name)
   return plc::kNoSpindle;
 }
 
-// false when the action must be dropped.
-bool resolve_one(ScenarioAction& a, const config::Machine& m, const plc::SpindleMap& map,
-                 const std::string& file, Diagnostics& diags) {
+bool resolve_axis(act::AxisRef& axis, const ScenarioAction& a, const config::ChannelConfig& ch,
+                  const std::string& file, Diagnostics& diags) {
+  for (std::size_t j = 0; j < ch.axes.size(); ++j)
+    if (detail::iequals(ch.axes[j].name, axis.view())) axis.index = static_cast<std::int8_t>(j);
+  if (axis.index >= 0) return true;
+  diags.add(ErrorId::PlcScenarioUnknownAxis, SourceLoc{file, a.line, 0},
+            fmt::format("channel {} has no path axis '{}'", a.channel, axis.view()));
+  return false;
+}
+
+// A spindle named, or none where the action allows none (spindle_stop_at_end).
+bool resolve_spindle(act::SpindleRef& spindle, const ScenarioAction& a, const config::ChannelConfig& ch,
+                     const plc::SpindleMap& map, const std::string& file, Diagnostics& diags) {
+  if (!spindle.given()) return a.kind() == ActionKind::spindle_stop_at_end;
+  spindle.index = find_spindle(ch, spindle.view());
+  if (spindle.index == plc::kNoSpindle) {
+    std::string known;
+    for (const auto& s : ch.spindles) known += (known.empty() ? "" : ", ") + s.name;
+    diags.add(ErrorId::PlcScenarioUnknownSpindle, SourceLoc{file, a.line, 0},
+              fmt::format("channel {} has no spindle '{}' (it has: {})", a.channel, spindle.view(),
+                          known.empty() ? "none" : known));
+    return false;
+  }
+  spindle.hli = map.at(a.channel, spindle.index);
+  return true;
+}
+
+}  // namespace
+
+bool resolve_action(ScenarioAction& a, const config::Machine& m, const plc::SpindleMap& map,
+                    const std::string& file, Diagnostics& diags) {
   if (a.channel < 1 || a.channel > m.channels.size()) {
     diags.add(ErrorId::PlcScenarioBadChannel, SourceLoc{file, a.line, 0},
               fmt::format("channel {} does not exist; the machine has {} channel(s)", a.channel,
                           m.channels.size()));
     return false;
   }
-  const auto& ch = m.channels[a.channel - 1];
-  if (a.kind == ActionKind::handwheel || a.kind == ActionKind::jog || a.kind == ActionKind::jog_increment) {
-    const std::string_view name(a.axis_name.data());
-    for (std::size_t j = 0; j < ch.axes.size(); ++j)
-      if (detail::iequals(ch.axes[j].name, name)) a.axis = static_cast<std::int8_t>(j);
-    if (a.axis >= 0) return true;
-    diags.add(ErrorId::PlcScenarioUnknownAxis, SourceLoc{file, a.line, 0},
-              fmt::format("channel {} has no path axis '{}'", a.channel, name));
-    return false;
-  }
-  if (!a.has_spindle()) return !needs_spindle(a.kind);
-  a.spindle = find_spindle(ch, a.spindle_view());
-  if (a.spindle == plc::kNoSpindle) {
-    std::string known;
-    for (const auto& s : ch.spindles) known += (known.empty() ? "" : ", ") + s.name;
-    diags.add(ErrorId::PlcScenarioUnknownSpindle, SourceLoc{file, a.line, 0},
-              fmt::format("channel {} has no spindle '{}' (it has: {})", a.channel,
-                          a.spindle_view(), known.empty() ? "none" : known));
-    return false;
-  }
-  a.hli_spindle = map.at(a.channel, a.spindle);
-  a.cmd.spindle = a.spindle;
-  a.cmd.channel = a.channel;
-  return true;
+  const config::ChannelConfig& ch = m.channels[a.channel - 1];
+  const ScenarioAction& head = a;
+  return std::visit(
+      [&](auto& p) {
+        if constexpr (requires { p.axis; }) {
+          return resolve_axis(p.axis, head, ch, file, diags);
+        } else if constexpr (requires { p.spindle; }) {
+          if (!resolve_spindle(p.spindle, head, ch, map, file, diags)) return false;
+          if constexpr (requires { p.cmd; }) {
+            p.cmd.spindle = p.spindle.index;
+            p.cmd.channel = head.channel;
+          }
+          return true;
+        } else {
+          return true;
+        }
+      },
+      a.payload);
 }
-
-}  // namespace
 
 void resolve_spindles(Scenario& sc, const config::Machine& m, const plc::SpindleMap& map,
                       Diagnostics& diags) {
-  const auto unresolved = [&](ScenarioAction& a) { return !resolve_one(a, m, map, sc.file, diags); };
+  const plc::SpindleMap& spindles = map;
+  const auto unresolved = [&](ScenarioAction& a) { return !resolve_action(a, m, spindles, sc.file, diags); };
   std::erase_if(sc.actions, unresolved);
   std::erase_if(sc.triggered, unresolved);
 }

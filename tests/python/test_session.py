@@ -172,3 +172,33 @@ def test_rapid_override_slows_g0_only(mill, program):
         return s.state()["channels"][0]["path_velocity_mm_s"]
     assert velocity("G0 X500\nM30\n", 50) == pytest.approx(velocity("G0 X500\nM30\n", 100) / 2, rel=1e-3)
     assert velocity("G1 X500 F3000\nM30\n", 50) == pytest.approx(50, rel=1e-3)
+
+
+# Each call builds its typed action; refused, it says what its scenario line
+# (read by action(line)) says, word for word.
+@pytest.mark.parametrize("call, line", [
+    (lambda s: s.override(feed=300), "ch=1 feed_override 300"),
+    (lambda s: s.override(feed=1e6), "ch=1 feed_override 1e+06"),
+    (lambda s: s.override(spindle={"S9": 50}), "override S9 50"),
+    (lambda s: s.override(spindle={"X1": 50}), "override X1 50"),
+    (lambda s: s.hold(True, ch=3), "ch=3 feedhold on"),
+    (lambda s: s.hold(True, ch=99), "ch=99 feedhold on"),
+    (lambda s: s.skip(0x400), "ch=1 skip_mask 0x400"),
+    (lambda s: s.jog("Q", "+", 600), "ch=1 jog Q + 600"),
+    (lambda s: s.jog("X", "up"), "ch=1 jog X up"),
+    (lambda s: s.jog("1X", "+"), "ch=1 jog 1X +"),
+    (lambda s: s.jog("X", "+", 0), "ch=1 jog X + 0"),
+    (lambda s: s.jog("X", "stop", 600), "ch=1 jog X stop 600"),
+    (lambda s: s.jog("ABCDEFGHIJKLMNOPQ", "+"), "ch=1 jog ABCDEFGHIJKLMNOPQ +"),
+    (lambda s: s.jog_increment("X", 0), "ch=1 jog_increment X + 0"),
+    (lambda s: s.jog_increment("Q", -0.5), "ch=1 jog_increment Q - 0.5"),
+    (lambda s: s.mode("fast"), "ch=1 mode fast"),
+    (lambda s: s.mdi("# only"), "ch=1 mdi # only"),
+    (lambda s: s.mdi("G0 X1", ch=3), "ch=3 mdi G0 X1"),
+])
+def test_a_refused_call_says_what_its_scenario_line_says(mill, call, line):
+    with pytest.raises(nck.ActionError) as typed:
+        call(mill.session())
+    with pytest.raises(nck.ActionError) as text:
+        mill.session().action(line)
+    assert (typed.value.id, str(typed.value)) == (text.value.id, str(text.value))

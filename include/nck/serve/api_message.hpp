@@ -2,9 +2,10 @@
 // The API's command messages (POST /api/v1/command, docs/api.md): one JSON
 // object whose "command" picks the schema; every field is checked for its
 // name, type and range before anything acts. An operator command becomes
-// the --plc scenario line that means the same ("ch=2 feed_override 80"),
-// so the server, the Python session and scenario files share one grammar
-// and one implementation (sim::parse_operator_action).
+// the typed action a --plc scenario line builds (sim::ScenarioAction), its
+// names resolved later by the same code as a scenario file's
+// (sim::check_operator_action): the server, the Python session and
+// scenario files share one action and one set of checks.
 //
 // Plain data and no std::expected: the libFuzzer target compiles this file
 // with clang 14.
@@ -14,12 +15,14 @@
 #include <string_view>
 
 #include "nck/core/diagnostic.hpp"
+#include "nck/sim/scenario_action.hpp"
 
 namespace nck::app::serve {
 
 struct ApiCommand {
   enum class Kind : std::uint8_t {
-    action,      // an operator action: `line` (a scenario line without time)
+    action,       // an operator action: `action` (typed; spindle and axis names not yet resolved)
+    action_line,  // a scenario line without time the user typed ("action"): `line`, the channel in front
     mdi,         // NC text for the channel (`text`)
     load,        // a program for the channel (`program`, optional `start_at`)
     pause,       // the kernel's cycles stop (`on`) or go on
@@ -28,6 +31,7 @@ struct ApiCommand {
   };
   Kind kind = Kind::action;
   std::uint8_t channel = 1;  // 1-based
+  sim::ScenarioAction action;
   std::string line;
   std::string text;
   std::string program;

@@ -14,6 +14,7 @@
 #include "nck/serve/live_kernel.hpp"
 #include "nck/serve/program_folders.hpp"
 #include "nck/serve/snapshot_json.hpp"
+#include "nck/sim/operator_action.hpp"
 
 namespace nck::app::serve {
 
@@ -38,7 +39,7 @@ class ServeApi : public ApiHandler {
   HttpReply command(std::string_view body);
   HttpReply act(const ApiCommand& c);
   HttpReply mdi(std::size_t ch, const std::string& text);
-  HttpReply operate(const std::string& line);
+  HttpReply operate(const std::optional<sim::OperatorAction>& op, const Diagnostics& diags);
   HttpReply pass_on(const sim::ScenarioAction& a);
   HttpReply start_or_release(std::size_t ch, const sim::ScenarioAction& cycle_start);
   HttpReply program_text(std::string_view target) const;

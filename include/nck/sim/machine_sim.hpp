@@ -90,7 +90,7 @@ class MachineSim {
   // next read() after the scenario's: false when 32 already wait. MDI text
   // goes to preparation instead (DryRun::operate). rt
   bool operate(const sim::ScenarioAction& a) noexcept {
-    return a.kind != sim::ActionKind::mdi && operator_actions_.push_back(a);
+    return a.kind() != sim::ActionKind::mdi && operator_actions_.push_back(a);
   }
   // The scenario has jog lines still to come: a run goes on after its
   // program end until they have acted (jogging an ended channel).
@@ -99,8 +99,12 @@ class MachineSim {
  private:
   void apply(const sim::ScenarioAction& a, kernel::TickInput& in) noexcept;
   void apply_to_spindle(const sim::ScenarioAction& a) noexcept;
+  plc::SpindleControl* spindle_control(const act::SpindleRef& s) noexcept;  // nullptr: no HLI spindle
+  static void set_variable(const act::Variable& v, kernel::ChannelInput& in) noexcept;
+  static kernel::JogRequest jog_request(const act::Jog& j) noexcept;
+  static kernel::JogRequest jog_request(const act::JogIncrement& j) noexcept;
+  void push_jog(const kernel::JogRequest& r, kernel::ChannelInput& in) noexcept;
   static void write_channel_state(kernel::ProgramState st, plc::ChannelState& hli) noexcept;
-  void apply_jog(const sim::ScenarioAction& a, kernel::ChannelInput& in) noexcept;
 
   PlcSim plc_;
   SpindleDrives drives_;

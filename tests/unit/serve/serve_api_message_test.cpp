@@ -1,6 +1,6 @@
 // nck serve's command messages, access checks and program folders: every
 // malformed, unknown, mistyped or out-of-range message gets its ID; every
-// good one becomes the scenario line that means the same.
+// good one becomes the typed action its scenario line builds.
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -10,17 +10,27 @@
 #include "nck/serve/access.hpp"
 #include "nck/serve/api_message.hpp"
 #include "nck/serve/program_folders.hpp"
+#include "nck/sim/operator_action.hpp"
 
 namespace nck::app::serve {
 namespace {
 
 std::optional<ApiCommand> parse(std::string_view body, Diagnostics& d) { return parse_api_command(body, 2, d); }
 
-std::string line_of(std::string_view body) {
+std::optional<ApiCommand> good(std::string_view body) {
   Diagnostics d;
   auto c = parse(body, d);
   EXPECT_TRUE(c) << body << ": " << (d.items().empty() ? "" : d.items()[0].message);
-  return c ? c->line : std::string();
+  return c;
+}
+
+// The scenario line the command's typed action means (as refusals quote it).
+std::string line_of(std::string_view body) {
+  const auto c = good(body);
+  if (!c) return {};
+  if (c->kind == ApiCommand::Kind::action_line) return c->line;
+  EXPECT_EQ(c->kind, ApiCommand::Kind::action) << body;
+  return sim::operator_line(sim::OperatorAction{c->action, {}}, sim::Quoting::api);
 }
 
 ErrorId refused(std::string_view body) {
@@ -30,7 +40,26 @@ ErrorId refused(std::string_view body) {
   return d.items().empty() ? ErrorId{} : d.items()[0].id;
 }
 
-TEST(ServeApiMessage, OperatorCommandsBecomeScenarioLines) {
+TEST(ServeApiMessage, OperatorCommandsBecomeTypedActions) {
+  auto c = good(R"({"command":"jog","axis":"X","direction":"+","speed_mm_min":600,"channel":2})");
+  ASSERT_TRUE(c);
+  ASSERT_EQ(c->action.kind(), sim::ActionKind::jog);
+  EXPECT_EQ(c->action.channel, 2);
+  EXPECT_EQ(c->action.get<sim::act::Jog>()->axis.view(), "X");
+  EXPECT_EQ(c->action.get<sim::act::Jog>()->direction, 1);
+  EXPECT_DOUBLE_EQ(c->action.get<sim::act::Jog>()->speed_mm_min, 600);
+  c = good(R"({"command":"jog","axis":"X","direction":"stop","speed_mm_min":600})");
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->action.get<sim::act::Jog>()->speed_mm_min, 0);  // a released key has no speed
+  c = good(R"({"command":"feed_override","percent":80})");
+  ASSERT_TRUE(c);
+  EXPECT_DOUBLE_EQ(c->action.get<sim::act::FeedOverride>()->percent, 80);
+  c = good(R"({"command":"mode","mode":"manual"})");
+  ASSERT_TRUE(c);
+  EXPECT_TRUE(c->action.get<sim::act::Mode>()->manual);
+}
+
+TEST(ServeApiMessage, OperatorCommandsMeanTheirScenarioLines) {
   EXPECT_EQ(line_of(R"({"command":"cycle_start"})"), "ch=1 cycle_start");
   EXPECT_EQ(line_of(R"({"command":"feedhold","on":true,"channel":2})"), "ch=2 feedhold on");
   EXPECT_EQ(line_of(R"({"command":"feed_override","percent":80})"), "ch=1 feed_override 80");
@@ -70,6 +99,8 @@ TEST(ServeApiMessage, EveryBadMessageHasItsId) {
   EXPECT_EQ(refused(R"({"cmd":"reset"})"), ErrorId::ApiBadValue);
   EXPECT_EQ(refused(R"({"command":5})"), ErrorId::ApiBadValue);
   EXPECT_EQ(refused(R"({"command":"launch"})"), ErrorId::ApiUnknownCommand);
+  EXPECT_EQ(refused(R"({"command":"action","line":""})"), ErrorId::ApiUnknownCommand);
+  EXPECT_EQ(refused(R"({"command":"launch","channel":9})"), ErrorId::ApiBadValue);  // the first problem only
   EXPECT_EQ(refused(R"({"command":"reset","force":true})"), ErrorId::ApiUnknownField);
   EXPECT_EQ(refused(R"({"command":"feedhold"})"), ErrorId::ApiBadValue);              // missing
   EXPECT_EQ(refused(R"({"command":"feedhold","on":"yes"})"), ErrorId::ApiBadValue);   // wrong type

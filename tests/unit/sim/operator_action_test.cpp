@@ -26,15 +26,15 @@ TEST(OperatorAction, ReadsAScenarioLineWithoutItsTime) {
   Diagnostics d;
   auto op = parse("feed_override 80", d);
   ASSERT_TRUE(op) << d.items().at(0).message;
-  EXPECT_EQ(op->action.kind, ActionKind::feed_override);
-  EXPECT_DOUBLE_EQ(op->action.value, 80);
+  EXPECT_EQ(op->action.kind(), ActionKind::feed_override);
+  EXPECT_DOUBLE_EQ(op->action.get<act::FeedOverride>()->percent, 80);
   op = parse("ch=2 override S3 50", d);
   ASSERT_TRUE(op);
   EXPECT_EQ(op->action.channel, 2);
-  EXPECT_EQ(op->action.hli_spindle, 2);  // resolved against the machine
+  EXPECT_EQ(op->action.get<act::SpindleOverride>()->spindle.hli, 2);  // resolved against the machine
   op = parse("mdi G0 X10 F1000", d);
   ASSERT_TRUE(op);
-  EXPECT_EQ(op->action.kind, ActionKind::mdi);
+  EXPECT_EQ(op->action.kind(), ActionKind::mdi);
   EXPECT_EQ(op->mdi_text, "G0 X10 F1000");
   EXPECT_TRUE(d.items().empty());
 }
@@ -55,6 +55,42 @@ TEST(OperatorAction, RefusesWhatIsNoLiveActionWithItsId) {
   EXPECT_EQ(refused("feed_override 80\n1 reset"), ErrorId::PlcOperatorActionBad);
   EXPECT_EQ(refused(""), ErrorId::PlcOperatorActionBad);
   EXPECT_EQ(refused("launch rockets"), ErrorId::PlcOperatorActionBad);
+}
+
+// A typed action (nck serve, the Python session) is checked and resolved
+// as its scenario line would be, and refused with the same words.
+TEST(OperatorAction, TypedActionsAreCheckedAsTheirLines) {
+  static const config::Machine m = testing::machine();
+  const auto checked = [&](const ScenarioAction& a, Diagnostics& d) {
+    return check_operator_action(OperatorAction{a, {}}, m, d, "api");
+  };
+  act::SpindleOverride o;
+  o.spindle.name = {'S', '3'};
+  o.percent = 50;
+  Diagnostics d;
+  auto op = checked(make_action(2, o), d);
+  ASSERT_TRUE(op);
+  EXPECT_EQ(op->action.get<act::SpindleOverride>()->spindle.hli, 2);
+  EXPECT_EQ(operator_line(*op, Quoting::api), "ch=2 spindle_override S3 50");
+  act::Jog j;
+  j.axis.name = {'Q'};
+  j.direction = 1;
+  j.speed_mm_min = 600;
+  Diagnostics refused;
+  EXPECT_FALSE(checked(make_action(1, j), refused));
+  Diagnostics same;
+  EXPECT_FALSE(parse_operator_action("ch=1 jog Q + 600", m, same, "api"));
+  ASSERT_EQ(refused.items().size(), 1u);
+  EXPECT_EQ(refused.items()[0].id, ErrorId::PlcOperatorActionBad);
+  EXPECT_EQ(refused.items()[0].message, same.items().at(0).message);
+  o.spindle.name = {'X', '1'};
+  Diagnostics bad_name, bad_line;
+  EXPECT_FALSE(checked(make_action(1, o), bad_name));
+  EXPECT_FALSE(parse_operator_action("ch=1 spindle_override X1 50", m, bad_line, "api"));
+  EXPECT_EQ(bad_name.items().at(0).message, bad_line.items().at(0).message);
+  Diagnostics search;
+  EXPECT_FALSE(checked(make_action(1, act::BlockSearch{}), search));
+  EXPECT_EQ(search.items().at(0).id, ErrorId::PlcOperatorActionNotLive);
 }
 
 // A dry run of examples/mill/contour.nc operated by hand.

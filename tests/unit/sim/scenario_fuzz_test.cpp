@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "scenario_parse_helpers.hpp"
+
 #include "nck/sim/scenario.hpp"
 #include "nck/sim/machine_sim.hpp"
 
@@ -42,9 +44,11 @@ void check_invariants(const Scenario& sc, const Diagnostics& d) {
     ASSERT_GE(a.channel, 1);
     ASSERT_LE(a.channel, config::kMaxChannels);
     ASSERT_GE(a.line, 1u);
-    ASSERT_EQ(a.spindle_name.back(), '\0');
-    ASSERT_GE(a.value, 0);
-    ASSERT_LE(a.value, kMaxOverridePercent);
+    ASSERT_EQ(testing::spindle_of(a).name.back(), '\0');
+    if (std::visit([](const auto& p) { return requires { p.percent; }; }, a.payload)) {
+      ASSERT_GE(testing::percent_of(a), 0);
+      ASSERT_LE(testing::percent_of(a), kMaxOverridePercent);
+    }
   }
   for (const auto& di : d.items()) {
     ASSERT_GE(number(di.id), 960000u);
@@ -72,7 +76,7 @@ void run(std::string_view text) {
   machine.read(std::numeric_limits<double>::infinity(), *in);
   // Every spindle command arrives or is counted as lost.
   std::size_t commands = 0;
-  for (const auto& a : sc.actions) commands += a.kind == ActionKind::spindle_cmd && a.spindle >= 0;
+  for (const auto& a : sc.actions) commands += a.kind() == ActionKind::spindle_cmd && testing::spindle_of(a).index >= 0;
   ASSERT_EQ(in->ext_commands.size() + in->ext_commands_lost, commands);
 }
 

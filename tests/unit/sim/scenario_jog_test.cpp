@@ -14,27 +14,27 @@ using namespace testing;
 
 TEST(ScenarioJog, ContinuousJogStartAndStop) {
   auto a = one("1.5 jog X + 600");
-  EXPECT_EQ(a.kind, ActionKind::jog);
-  EXPECT_EQ(std::string(a.axis_name.data()), "X");
-  EXPECT_EQ(a.direction, 1);
-  EXPECT_DOUBLE_EQ(a.value, 10.0);  // 600 mm/min in mm/s
-  a = one("2 JOG y -");
-  EXPECT_EQ(a.direction, -1);
-  EXPECT_DOUBLE_EQ(a.value, 0.0);  // the axis's P-AXIS-00077
-  a = one("3 jog X stop   # released");
-  EXPECT_EQ(a.direction, 0);
+  EXPECT_EQ(a.kind(), ActionKind::jog);
+  auto j = payload<act::Jog>(a);
+  EXPECT_EQ(j.axis.view(), "X");
+  EXPECT_EQ(j.direction, 1);
+  EXPECT_DOUBLE_EQ(j.speed_mm_min, 600.0);
+  j = payload<act::Jog>(one("2 JOG y -"));
+  EXPECT_EQ(j.direction, -1);
+  EXPECT_DOUBLE_EQ(j.speed_mm_min, 0.0);  // the axis's P-AXIS-00077
+  EXPECT_EQ(payload<act::Jog>(one("3 jog X stop   # released")).direction, 0);
   EXPECT_EQ(action_name(ActionKind::jog), "jog");
 }
 
 TEST(ScenarioJog, IncrementAndMode) {
   auto a = one("0 ch=1 jog_increment Z - 0.25");
-  EXPECT_EQ(a.kind, ActionKind::jog_increment);
-  EXPECT_EQ(a.direction, -1);
-  EXPECT_DOUBLE_EQ(a.value, 0.25);
+  EXPECT_EQ(a.kind(), ActionKind::jog_increment);
+  EXPECT_EQ(payload<act::JogIncrement>(a).direction, -1);
+  EXPECT_DOUBLE_EQ(payload<act::JogIncrement>(a).step_mm, 0.25);
   a = one("0 mode manual");
-  EXPECT_EQ(a.kind, ActionKind::mode);
-  EXPECT_TRUE(a.on);
-  EXPECT_FALSE(one("4 mode Automatic").on);
+  EXPECT_EQ(a.kind(), ActionKind::mode);
+  EXPECT_TRUE(payload<act::Mode>(a).manual);
+  EXPECT_FALSE(payload<act::Mode>(one("4 mode Automatic")).manual);
 }
 
 TEST(ScenarioJog, BadLinesHaveIdFileAndLine) {

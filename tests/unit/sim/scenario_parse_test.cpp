@@ -13,88 +13,88 @@ using namespace testing;
 
 TEST(ScenarioParse, SpecExamples) {
   auto a = one("0.5 override S1 50");
-  EXPECT_EQ(a.kind, ActionKind::spindle_override);
+  EXPECT_EQ(a.kind(), ActionKind::spindle_override);
   EXPECT_DOUBLE_EQ(a.t_s, 0.5);
-  EXPECT_EQ(a.spindle_view(), "S1");
-  EXPECT_DOUBLE_EQ(a.value, 50);
+  EXPECT_EQ(spindle_of(a).view(), "S1");
+  EXPECT_DOUBLE_EQ(percent_of(a), 50);
   EXPECT_EQ(a.channel, 1);
   EXPECT_EQ(a.line, 1u);
 
   a = one("1.0 feed_override 80");
-  EXPECT_EQ(a.kind, ActionKind::feed_override);
-  EXPECT_DOUBLE_EQ(a.value, 80);
-  EXPECT_FALSE(a.has_spindle());
+  EXPECT_EQ(a.kind(), ActionKind::feed_override);
+  EXPECT_DOUBLE_EQ(percent_of(a), 80);
+  EXPECT_FALSE(spindle_of(a).given());
 
   a = one("1.1 rapid_override 25");
-  EXPECT_EQ(a.kind, ActionKind::rapid_override);
-  EXPECT_DOUBLE_EQ(a.value, 25);
+  EXPECT_EQ(a.kind(), ActionKind::rapid_override);
+  EXPECT_DOUBLE_EQ(percent_of(a), 25);
 
   a = one("1.2 feedhold on");
-  EXPECT_EQ(a.kind, ActionKind::feedhold);
-  EXPECT_TRUE(a.on);
+  EXPECT_EQ(a.kind(), ActionKind::feedhold);
+  EXPECT_TRUE(on_of(a));
 
   a = one("2.0 spindle_stop_at_end on");
-  EXPECT_EQ(a.kind, ActionKind::spindle_stop_at_end);
-  EXPECT_TRUE(a.on);
-  EXPECT_FALSE(a.has_spindle());
+  EXPECT_EQ(a.kind(), ActionKind::spindle_stop_at_end);
+  EXPECT_TRUE(on_of(a));
+  EXPECT_FALSE(spindle_of(a).given());
 
   a = one("2.5 reset");
-  EXPECT_EQ(a.kind, ActionKind::reset);
+  EXPECT_EQ(a.kind(), ActionKind::reset);
   EXPECT_DOUBLE_EQ(a.t_s, 2.5);
 
   a = one("3.0 spindle_cmd S2 M3 REV500");
-  EXPECT_EQ(a.kind, ActionKind::spindle_cmd);
-  EXPECT_EQ(a.spindle_view(), "S2");
-  EXPECT_EQ(a.cmd.fn, plc::ExtFunction::m3);
-  EXPECT_TRUE(a.cmd.has_rev);
-  EXPECT_DOUBLE_EQ(a.cmd.rev_rpm, 500);
-  EXPECT_FALSE(a.cmd.has_pos);
-  EXPECT_EQ(std::string_view(a.cmd.spindle_name.data()), "S2");
+  EXPECT_EQ(a.kind(), ActionKind::spindle_cmd);
+  EXPECT_EQ(spindle_of(a).view(), "S2");
+  EXPECT_EQ(cmd_of(a).fn, plc::ExtFunction::m3);
+  EXPECT_TRUE(cmd_of(a).has_rev);
+  EXPECT_DOUBLE_EQ(cmd_of(a).rev_rpm, 500);
+  EXPECT_FALSE(cmd_of(a).has_pos);
+  EXPECT_EQ(std::string_view(cmd_of(a).spindle_name.data()), "S2");
 }
 
 TEST(ScenarioParse, EveryOtherAction) {
   auto a = one("0 spindle_override S3 120.5");
-  EXPECT_EQ(a.kind, ActionKind::spindle_override);
-  EXPECT_DOUBLE_EQ(a.value, 120.5);
+  EXPECT_EQ(a.kind(), ActionKind::spindle_override);
+  EXPECT_DOUBLE_EQ(percent_of(a), 120.5);
   a = one("0 override_valid S1 off");
-  EXPECT_EQ(a.kind, ActionKind::override_valid);
-  EXPECT_FALSE(a.on);
+  EXPECT_EQ(a.kind(), ActionKind::override_valid);
+  EXPECT_FALSE(on_of(a));
   a = one("0 feedhold off");
-  EXPECT_FALSE(a.on);
+  EXPECT_FALSE(on_of(a));
   a = one("0 spindle_feedhold S1 1");
-  EXPECT_EQ(a.kind, ActionKind::spindle_feedhold);
-  EXPECT_TRUE(a.on);
+  EXPECT_EQ(a.kind(), ActionKind::spindle_feedhold);
+  EXPECT_TRUE(on_of(a));
   a = one("0 spindle_stop_at_end off S2");
-  EXPECT_EQ(a.spindle_view(), "S2");
-  EXPECT_FALSE(a.on);
+  EXPECT_EQ(spindle_of(a).view(), "S2");
+  EXPECT_FALSE(on_of(a));
   a = one("0 spindle_reset S1");
-  EXPECT_EQ(a.kind, ActionKind::spindle_reset);
+  EXPECT_EQ(a.kind(), ActionKind::spindle_reset);
   a = one("0 optional_stop on");
-  EXPECT_EQ(a.kind, ActionKind::optional_stop);
-  EXPECT_TRUE(a.on);
+  EXPECT_EQ(a.kind(), ActionKind::optional_stop);
+  EXPECT_TRUE(on_of(a));
   a = one("4 silent on");
-  EXPECT_EQ(a.kind, ActionKind::silent);
-  EXPECT_TRUE(a.on);
+  EXPECT_EQ(a.kind(), ActionKind::silent);
+  EXPECT_TRUE(on_of(a));
   a = one("5 silent 0");
-  EXPECT_FALSE(a.on);
+  EXPECT_FALSE(on_of(a));
 }
 
 TEST(ScenarioParse, SpindleCommandForms) {
   auto a = one("1 spindle_cmd S1 M19 REV=200 POS=90.5");
-  EXPECT_EQ(a.cmd.fn, plc::ExtFunction::m19);
-  EXPECT_DOUBLE_EQ(a.cmd.rev_rpm, 200);
-  EXPECT_TRUE(a.cmd.has_pos);
-  EXPECT_DOUBLE_EQ(a.cmd.pos_deg, 90.5);
+  EXPECT_EQ(cmd_of(a).fn, plc::ExtFunction::m19);
+  EXPECT_DOUBLE_EQ(cmd_of(a).rev_rpm, 200);
+  EXPECT_TRUE(cmd_of(a).has_pos);
+  EXPECT_DOUBLE_EQ(cmd_of(a).pos_deg, 90.5);
   a = one("1 spindle_cmd S1 POS 45 M19");  // any order, value as the next word
-  EXPECT_DOUBLE_EQ(a.cmd.pos_deg, 45);
-  EXPECT_FALSE(a.cmd.has_rev);
+  EXPECT_DOUBLE_EQ(cmd_of(a).pos_deg, 45);
+  EXPECT_FALSE(cmd_of(a).has_rev);
   a = one("1 spindle_cmd s1 m04 rev1500");
-  EXPECT_EQ(a.cmd.fn, plc::ExtFunction::m4);
-  EXPECT_DOUBLE_EQ(a.cmd.rev_rpm, 1500);
+  EXPECT_EQ(cmd_of(a).fn, plc::ExtFunction::m4);
+  EXPECT_DOUBLE_EQ(cmd_of(a).rev_rpm, 1500);
   a = one("1 spindle_cmd S1 M05");
-  EXPECT_EQ(a.cmd.fn, plc::ExtFunction::m5);
+  EXPECT_EQ(cmd_of(a).fn, plc::ExtFunction::m5);
   a = one("1 spindle_cmd S1 M19 POS-30");
-  EXPECT_DOUBLE_EQ(a.cmd.pos_deg, -30);
+  EXPECT_DOUBLE_EQ(cmd_of(a).pos_deg, -30);
 }
 
 TEST(ScenarioParse, ChannelPrefixes) {
@@ -102,7 +102,7 @@ TEST(ScenarioParse, ChannelPrefixes) {
   EXPECT_EQ(a.channel, 2);
   a = one("1 channel 3 spindle_cmd S1 M3 REV100");
   EXPECT_EQ(a.channel, 3);
-  EXPECT_EQ(a.cmd.channel, 3);
+  EXPECT_EQ(cmd_of(a).channel, 3);
   a = one("1 CH=12 reset");
   EXPECT_EQ(a.channel, 12);
 }
@@ -117,9 +117,9 @@ TEST(ScenarioParse, CommentsBlankLinesAndCase) {
   ASSERT_EQ(p.diags.items().size(), 1u);  // 0.1 s after 0.5 s
   EXPECT_EQ(p.diags.items()[0].id, ErrorId::PlcScenarioTimeBackwards);
   ASSERT_EQ(p.sc.actions.size(), 2u);
-  EXPECT_EQ(p.sc.actions[0].kind, ActionKind::feed_override);  // sorted: 0.1 s first
+  EXPECT_EQ(p.sc.actions[0].kind(), ActionKind::feed_override);  // sorted: 0.1 s first
   EXPECT_EQ(p.sc.actions[0].line, 5u);
-  EXPECT_DOUBLE_EQ(p.sc.actions[0].value, 75);
+  EXPECT_DOUBLE_EQ(percent_of(p.sc.actions[0]), 75);
   EXPECT_EQ(p.sc.actions[1].line, 4u);
   EXPECT_EQ(p.sc.file, "s.plc");
 }
@@ -134,9 +134,9 @@ TEST(ScenarioParse, TimeGoingBackwardsIsSortedWithAWarning) {
   ASSERT_EQ(p.sc.actions.size(), 3u);
   // Stable: equal times keep the file order.
   EXPECT_EQ(p.sc.actions[0].line, 2u);
-  EXPECT_TRUE(p.sc.actions[0].on);
+  EXPECT_TRUE(on_of(p.sc.actions[0]));
   EXPECT_EQ(p.sc.actions[1].line, 3u);
-  EXPECT_EQ(p.sc.actions[2].kind, ActionKind::reset);
+  EXPECT_EQ(p.sc.actions[2].kind(), ActionKind::reset);
 }
 
 TEST(ScenarioParse, BadTime) {
@@ -237,15 +237,16 @@ TEST(ScenarioParse, ActionNames) {
 // Issue 27: block search from the scenario, at time 0 only, once.
 TEST(ScenarioParse, BlockSearch) {
   auto a = one("0 block_search N100 pass 2 covered 400 program sub.nc no_hold");
-  EXPECT_EQ(a.kind, ActionKind::block_search);
-  EXPECT_EQ(a.search_kind, prep::SearchMark::Kind::block_number);
-  EXPECT_DOUBLE_EQ(a.value, 100);
-  EXPECT_EQ(a.search_pass, 2u);
-  EXPECT_DOUBLE_EQ(a.covered_permille, 400);
-  EXPECT_STREQ(a.program.data(), "sub.nc");
-  EXPECT_TRUE(a.on);
-  EXPECT_EQ(one("0 block_search block 17").search_kind, prep::SearchMark::Kind::block_counter);
-  EXPECT_EQ(one("0 block_search offset 0").search_kind, prep::SearchMark::Kind::file_offset);
+  EXPECT_EQ(a.kind(), ActionKind::block_search);
+  const auto b = payload<act::BlockSearch>(a);
+  EXPECT_EQ(b.mark_kind, prep::SearchMark::Kind::block_number);
+  EXPECT_EQ(b.mark_value, 100);
+  EXPECT_EQ(b.pass, 2u);
+  EXPECT_DOUBLE_EQ(b.covered_permille, 400);
+  EXPECT_STREQ(b.program.data(), "sub.nc");
+  EXPECT_TRUE(b.no_hold_at_restart);
+  EXPECT_EQ(payload<act::BlockSearch>(one("0 block_search block 17")).mark_kind, prep::SearchMark::Kind::block_counter);
+  EXPECT_EQ(payload<act::BlockSearch>(one("0 block_search offset 0")).mark_kind, prep::SearchMark::Kind::file_offset);
   const auto p = parse("0 ch=2 block_search N5 covered 1000");
   const auto s = block_search_of(p.sc);
   ASSERT_TRUE(s);
@@ -271,10 +272,10 @@ TEST(ScenarioParse, MdiText) {
   const auto p = parse("0 mdi G1 X10  Y5 F1000   # comment\n1 ch=1 mdi G0 Z5\n");
   ASSERT_TRUE(p.diags.empty());
   ASSERT_EQ(p.sc.actions.size(), 2u);
-  EXPECT_EQ(p.sc.actions[0].kind, ActionKind::mdi);
+  EXPECT_EQ(p.sc.actions[0].kind(), ActionKind::mdi);
   ASSERT_EQ(p.sc.texts.size(), 2u);
-  EXPECT_EQ(p.sc.texts[static_cast<std::size_t>(p.sc.actions[0].value)], "G1 X10  Y5 F1000");
-  EXPECT_EQ(p.sc.texts[static_cast<std::size_t>(p.sc.actions[1].value)], "G0 Z5");
+  EXPECT_EQ(p.sc.texts[payload<act::Mdi>(p.sc.actions[0]).text], "G1 X10  Y5 F1000");
+  EXPECT_EQ(p.sc.texts[payload<act::Mdi>(p.sc.actions[1]).text], "G0 Z5");
   EXPECT_EQ(bad("0 mdi").id, ErrorId::PlcScenarioMissingArgument);
 }
 
@@ -327,9 +328,9 @@ namespace {
 // variable <name> <value>: a channel variable (SENSOR_SOURCE=VARIABLE reads it).
 TEST(ScenarioParse, ChannelVariable) {
   auto a = one("0.25 variable v.e.gap -1.5");
-  EXPECT_EQ(a.kind, ActionKind::variable);
-  EXPECT_EQ(std::string(a.var_name.data()), "V.E.GAP");  // names are case-insensitive
-  EXPECT_DOUBLE_EQ(a.value, -1.5);
+  EXPECT_EQ(a.kind(), ActionKind::variable);
+  EXPECT_EQ(std::string(payload<act::Variable>(a).name.data()), "V.E.GAP");  // names are case-insensitive
+  EXPECT_DOUBLE_EQ(payload<act::Variable>(a).value, -1.5);
   EXPECT_EQ(bad("0 variable V.E.GAP").id, ErrorId::PlcScenarioMissingArgument);
   EXPECT_EQ(bad("0 variable V.E.GAP x").id, ErrorId::PlcScenarioBadNumber);
   EXPECT_EQ(bad("0 variable " + std::string(40, 'A') + " 1").id, ErrorId::PlcScenarioBadNumber);
@@ -338,12 +339,12 @@ TEST(ScenarioParse, ChannelVariable) {
 // Issue 27: the operator's single step switch and the HLI skip levels.
 TEST(ScenarioParse, SingleStepAndSkipMask) {
   auto a = one("0 single_step on");
-  EXPECT_EQ(a.kind, ActionKind::single_step);
-  EXPECT_TRUE(a.on);
+  EXPECT_EQ(a.kind(), ActionKind::single_step);
+  EXPECT_TRUE(on_of(a));
   a = one("1.5 skip_mask 0x5");
-  EXPECT_EQ(a.kind, ActionKind::skip_mask);
-  EXPECT_DOUBLE_EQ(a.value, 5);
-  EXPECT_DOUBLE_EQ(one("0 skip_mask 1023").value, 1023);
+  EXPECT_EQ(a.kind(), ActionKind::skip_mask);
+  EXPECT_EQ(payload<act::SkipMask>(a).mask, 5u);
+  EXPECT_EQ(payload<act::SkipMask>(one("0 skip_mask 1023")).mask, 1023u);
   for (const char* text : {"0 skip_mask 1024", "0 skip_mask 0x400", "0 skip_mask -1", "0 skip_mask 0x", "0 skip_mask 1.5",
                            "0 skip_mask five"}) {
     const Diagnostic d = bad(text);

@@ -20,7 +20,7 @@ TEST(ScenarioPlayer, YieldsDueActionsOnceAtTheirCycle) {
   std::vector<std::pair<int, ActionKind>> log;
   for (int k = 0; k <= 12; ++k) {
     for (const auto& a : p.due(k * 0.001)) {
-      log.emplace_back(k, a.kind);
+      log.emplace_back(k, a.kind());
       ++seen;
     }
   }
