@@ -33,16 +33,15 @@ const char* status_name(kernel::ChannelStatus s) {
 
 // What run_until waits for; unset fields match nothing.
 struct Until {
-  std::optional<std::int64_t> n;     // a block numbered N<n> starts
-  std::optional<std::uint32_t> line; // a block of this main-program line starts
-  std::optional<std::string> event;  // the first event of this "ev" kind
-  std::optional<double> time_s;      // simulated time reached
-  bool matches(const nlohmann::ordered_json& e) const {
-    const std::string& ev = e["ev"].get_ref<const std::string&>();
-    if (event && ev == *event) return true;
-    if (ev != "block") return false;
-    if (n && e["n"].is_number_integer() && e["n"].get<std::int64_t>() == *n) return true;
-    return line && e["line"].get<std::uint32_t>() == *line;
+  std::optional<std::int64_t> n;            // a block numbered N<n> starts
+  std::optional<std::uint32_t> line;        // a block of this main-program line starts
+  std::optional<kernel::EventKind> event;   // the first event of this kind
+  std::optional<double> time_s;             // simulated time reached
+  bool matches(const kernel::Event& e) const {
+    if (event && e.kind() == *event) return true;
+    if (e.kind() != kernel::EventKind::block) return false;
+    if (n && e.at.n == *n) return true;
+    return line && e.at.line == *line;
   }
 };
 
@@ -98,7 +97,7 @@ class Session {
   }
 
   bool cycles_until(const Until& u, std::int64_t max_cycles, const std::atomic<bool>& pressed) {
-    auto& events = sim_->outputs().event_list;
+    const auto& events = sim_->outputs().typed_list;
     for (std::int64_t i = 0; i < max_cycles && !pressed.load(std::memory_order_relaxed); ++i) {
       const std::size_t seen = events.size();
       sim_->cycle();
@@ -182,16 +181,16 @@ class Session {
   // MDI text runs at once: one cycle decodes it, and an error in it raises
   // ProgramError (the session stays usable).
   void mdi(const std::string& text, int channel) {
-    auto& events = sim_->outputs().event_list;
+    const auto& events = sim_->outputs().typed_list;
     submit_mdi(channel, text);
     const std::size_t seen = events.size();
     step(1);
     for (std::size_t k = seen; k < events.size(); ++k) {
-      const nlohmann::ordered_json& e = events[k];
-      if (e["ev"] != "error" || e.value("ch", 0) != channel) continue;
-      throw NckError{"ProgramError",
-                     {make_diagnostic(static_cast<ErrorId>(e["id"].get<std::uint32_t>()),
-                                      SourceLoc{"mdi", 1, 0}, e["msg"].get<std::string>())}};
+      const kernel::Event& e = events[k];
+      const auto* error = e.get<kernel::ev::Error>();
+      if (!error || e.channel != channel) continue;
+      throw NckError{"ProgramError", {make_diagnostic(error->id, SourceLoc{"mdi", 1, 0},
+                                                      sim_->names().text(error->id, error->message))}};
     }
   }
 
@@ -200,6 +199,7 @@ class Session {
     pyb::list out(events.size());
     for (std::size_t i = 0; i < events.size(); ++i) out[i] = to_python(events[i]);
     events.clear();
+    sim_->outputs().typed_list.clear();
     return out;
   }
 
@@ -301,10 +301,11 @@ void bind_session(pyb::module_& m) {
   pyb::class_<Until>(m, "_Until")
       .def(pyb::init([](std::optional<std::int64_t> n, std::optional<std::uint32_t> line,
                         std::optional<std::string> event, std::optional<double> time_s) {
-             if (event && !app::event_kind_from(*event))
+             const std::optional<kernel::EventKind> kind = event ? app::event_kind_from(*event) : std::nullopt;
+             if (event && !kind)
                raise("ArgumentError", ErrorId::AppBadArgument,
                      fmt::format("'{}' is no event kind (docs/outputs.md: block, wait, error, end, state ...)", *event));
-             return Until{n, line, event, time_s};
+             return Until{n, line, kind, time_s};
            }),
            pyb::arg("n"), pyb::arg("line"), pyb::arg("event"), pyb::arg("time_s"));
   pyb::class_<Session>(m, "_Session")

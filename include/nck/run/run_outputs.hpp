@@ -23,6 +23,7 @@ struct RunOutputs {
   ReportWriter report;
   bool keep_events = false;                    // the Python module: into event_list
   std::vector<nlohmann::ordered_json> event_list;
+  std::vector<kernel::Event> typed_list;       // the same events typed (a session matches kinds on them)
   TraceMemory trace_memory;                   // the Python module's trace
   std::vector<FinalError> errors;
   std::vector<FinalError> warnings;  // every warning of the run said on stderr (the module's Run.warnings)
@@ -35,7 +36,10 @@ struct RunOutputs {
   void event(const kernel::Event& e, const RunNames& names) {
     nlohmann::ordered_json j = EventWriter::object(e, names);
     if (events.is_open() || report.enabled()) event_line(e, dump_json(j), names);
-    if (keep_events) event_list.push_back(std::move(j));
+    if (keep_events) {
+      event_list.push_back(std::move(j));
+      typed_list.push_back(e);
+    }
   }
   // An event already written as its line (block events: BlockEventText).
   void event_line(const kernel::Event& e, const std::string& line, const RunNames& names) {
