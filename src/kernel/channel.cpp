@@ -164,11 +164,7 @@ struct AttachmentSorter {
   ChannelTechnologies& technologies;
   Cycle& cy;
 
-  void operator()(const Warning& w) const noexcept {
-    ev::Warning e{{w.id, {}, {}}};
-    if (w.message_index != kNoMessage) e.message = w.message_index;
-    cy.emit(e);
-  }
+  void operator()(const Warning& w) const noexcept { cy.emit(w); }
   void operator()(const OffsetEvent& o) const noexcept { cy.emit(o); }
   void operator()(const TrcChange& t) const noexcept { cy.emit(t); }
   void operator()(const Output& o) const noexcept { sync.take(o); }
@@ -204,7 +200,7 @@ void Channel::start(Cycle& cy) noexcept {
   path_.start_block(current_, parts.start, parts.map);
   hold_.start_block(current_, cy.in.stop_at);
   if (const Error* e = current_.as<Error>()) {
-    raise(e->id, e->message_index, cy);
+    raise(e->id, e->message, cy);
     return;
   }
   // Each unit takes its part of the block; a fault ends the program.
@@ -485,16 +481,14 @@ bool Channel::fail(const Fault& f, Cycle& cy) noexcept {
   if (!f.any()) return false;
   if (done()) return true;
   if (f.reported) end_program(EndReason::error, cy);  // the unit emitted the error event
-  else raise(f.id, kNoMessage, cy);
+  else raise(f.id, std::nullopt, cy);
   return true;
 }
 
-void Channel::raise(ErrorId id, std::uint32_t message, Cycle& cy) noexcept {
+void Channel::raise(ErrorId id, std::optional<std::uint32_t> message, Cycle& cy) noexcept {
   // The state changes first, so that the error stays right before its end.
   set_state(ProgramState::error, StateReason::error, cy);
-  ev::Error e{{id, {}, {}}};
-  if (message != kNoMessage) e.message = message;
-  cy.emit(e);
+  cy.emit(ev::Error{{id, message, {}}});
   end_program(EndReason::error, cy);
 }
 

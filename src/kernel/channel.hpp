@@ -122,7 +122,7 @@ class Channel {
   // Raises what a unit reported (nothing once the channel is done); true
   // when it was a fault.
   bool fail(const Fault& f, Cycle& cy) noexcept;
-  void raise(ErrorId id, std::uint32_t message, Cycle& cy) noexcept;
+  void raise(ErrorId id, std::optional<std::uint32_t> message, Cycle& cy) noexcept;
   // Enters program state `to` (a `state` event when it changes).
   void set_state(ProgramState to, StateReason why, Cycle& cy) noexcept;
   // MDI: the operator's text wakes a channel that is done; its end or an

@@ -61,7 +61,7 @@ class ChannelCheck {
   void add(Diagnostic d);
   void to_window(const PlannedBlock& planned, bool flush);
   void release(bool flush);
-  std::string message(std::uint32_t index) const;
+  std::string message(std::optional<std::uint32_t> index) const;
 
   PlanStore store_;  // before the planner, which keeps a reference to it
   Planner planner_;
@@ -135,10 +135,10 @@ void ChannelCheck::prepare(const nc::Block& b) {
 void ChannelCheck::record(const PlannedCommand& c) {
   const std::string& file = decoder_.file_name(c.head.file_id);
   c.each<kernel::Warning>([&](const kernel::Warning& w) {
-    add(Diagnostic{w.id, Severity::warning, {file, c.head.line, 0}, message(w.message_index)});
+    add(Diagnostic{w.id, Severity::warning, {file, c.head.line, 0}, message(w.message)});
   });
   if (const auto* error = std::get_if<kernel::Error>(&c.step); error && c.kind == CommandKind::error) {
-    add(Diagnostic{error->id, Severity::error, {file, c.head.line, 0}, message(error->message_index)});
+    add(Diagnostic{error->id, Severity::error, {file, c.head.line, 0}, message(error->message)});
     return;
   }
   spindle_found_.clear();
@@ -168,8 +168,8 @@ void ChannelCheck::release(bool flush) {
   }
 }
 
-std::string ChannelCheck::message(std::uint32_t index) const {
-  return index < store_.messages.size() ? store_.messages[index] : std::string();
+std::string ChannelCheck::message(std::optional<std::uint32_t> index) const {
+  return index && *index < store_.messages.size() ? store_.messages[*index] : std::string();
 }
 
 }  // namespace

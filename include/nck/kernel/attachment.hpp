@@ -50,11 +50,9 @@ struct ProgramMap {
   AffineMap map{};
 };
 
-// A warning raised with the block.
-struct Warning {
-  ErrorId id{};
-  std::uint32_t message_index = kNoMessage;  // Kernel::message(); kNoMessage: the ID's table text
-};
+// A warning raised with the block: the event it is reported as, right
+// after the block event.
+using Warning = ev::Warning;
 
 // G201 / G202: axes entering / leaving manual (handwheel) mode (bit j =
 // axis j); #GET MANUAL OFFSETS: preparation reads the offsets after it.

@@ -84,7 +84,7 @@ struct End {
 // Raise `id` and abort the channel.
 struct Error {
   ErrorId id{};
-  std::uint32_t message_index = kNoMessage;  // Kernel::message(), kNoMessage: the ID's text
+  std::optional<std::uint32_t> message;  // Kernel::message() index; none: the ID's table text
 };
 
 // A block without motion: its block event, attachments and waits only.

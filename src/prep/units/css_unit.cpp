@@ -33,10 +33,11 @@ PlanResult CssUnit::plan(const nc::Block& b, PlannedCommand& c, const PlanContex
   const double r_mm = ctx.planned.mcs[ux] - tool_mm;
   if (new_speed && kernel::css_limited(m.css_m_min, r_mm, m.max_speed_rpm, vb_max_rpm))
     (void)c.attach_within(
-        kernel::Warning{ErrorId::KernelCssStartLimited,
-         ctx.store.add_message(fmt::format("G96 S{}: at radius {:.3f} mm the start speed is limited to {:.1f} rpm",
-                                           m.css_m_min, r_mm,
-                                           kernel::css_speed_rpm(m.css_m_min, r_mm, m.max_speed_rpm, vb_max_rpm)))},
+        kernel::Warning{{ErrorId::KernelCssStartLimited,
+                         ctx.store.add_message(fmt::format(
+                             "G96 S{}: at radius {:.3f} mm the start speed is limited to {:.1f} rpm", m.css_m_min,
+                             r_mm, kernel::css_speed_rpm(m.css_m_min, r_mm, m.max_speed_rpm, vb_max_rpm))),
+                         {}}},
         PlannedCommand::kMaxWarnings);
   return {};
 }

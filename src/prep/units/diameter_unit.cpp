@@ -48,10 +48,11 @@ PlanResult DiameterUnit::check_switch(const nc::Block& b, PlannedCommand& c, con
   const std::uint32_t bit = 1u << in_plane;
   if (b.modal.diameter && !((abs_axes_ | rel_axes_) & bit))
     (void)c.attach_within(
-        kernel::Warning{ErrorId::KernelDiameterNotConfigured,
-         ctx.store.add_message(fmt::format("G51: {} has neither kenngr.durchm_prog_abs nor durchm_prog_rel; "
-                                           "its positions stay radii",
-                                           ctx.channel.axes[static_cast<std::size_t>(in_plane)].name))},
+        kernel::Warning{{ErrorId::KernelDiameterNotConfigured,
+                         ctx.store.add_message(fmt::format("G51: {} has neither kenngr.durchm_prog_abs nor "
+                                                           "durchm_prog_rel; its positions stay radii",
+                                                           ctx.channel.axes[static_cast<std::size_t>(in_plane)].name)),
+                         {}}},
         PlannedCommand::kMaxWarnings);
   return {};
 }

@@ -76,7 +76,7 @@ TEST(CommandPacker, AttachmentsLeaveInHandlingOrderWithTheirCommand) {
   c.attach(kernel::Output{plc::TechKind::m, 8, 0, 0});
   c.attach(trc::TrcChange{trc::RadiusComp::g41, 3, 2.5});
   c.attach(kernel::Output{plc::TechKind::h, 9, 0, 0});
-  c.attach(kernel::Warning{ErrorId::KernelPrepStarved, 7});
+  c.attach(kernel::Warning{{ErrorId::KernelPrepStarved, 7, {}}});
   auto q = std::make_unique<kernel::CommandQueue>();
   CommandPacker p;
   ASSERT_TRUE(p.pack(c, *q));

@@ -302,7 +302,7 @@ TEST(Planner, FunctionsNotExecutedYetAreError930001) {
   auto c = r.plan("G0 X1\nV.G.WZ_AKT.R = 5\nM30\n");
   expect_error(c[1], ErrorId::KernelNotYetSupported, 2);
   EXPECT_EQ(static_cast<std::uint32_t>(test::error_of(c[1]).id), 930001u);
-  EXPECT_NE(r.store.messages.at(test::error_of(c[1]).message_index).find("V.G.WZ_AKT.R"), std::string::npos);
+  EXPECT_NE(r.store.messages.at(*test::error_of(c[1]).message).find("V.G.WZ_AKT.R"), std::string::npos);
 }
 
 TEST(Planner, ChannelMFunctionsAreOutputWithTheirSynchronisation) {
