@@ -2,7 +2,8 @@
 // The channel's technologies that live in a home of their own
 // (docs/architecture.md, "Adding a technology"), listed in technologies.hpp.
 // The channel calls them together at fixed points of the cycle, in the
-// order of the list; a unit names the attachment it takes and has only the
+// order of the list; a unit names the attachment it takes (each its own
+// kind: a block's attachment of that kind is noted for it) and has only the
 // hooks it needs:
 //   using Takes = <its kernel::Attachment alternative>;
 //   void setup(const config::ChannelConfig&, double dt_s)      setup
@@ -33,8 +34,6 @@ class TechnologyUnits {
   template <class A>
   static constexpr bool takes = (std::is_same_v<A, typename Units::Takes> || ...);
 
-  template <class U>
-  U& get() noexcept { return std::get<U>(units_); }
   template <class U>
   const U& get() const noexcept { return std::get<U>(units_); }
 
