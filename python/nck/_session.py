@@ -112,7 +112,7 @@ class Session:
         """Overrides in %: feed (the channel's), rapid (the channel's G0
         override; it acts as the machine's g00_override_mode, P-CHAN-00181,
         says — with NOT_USED, the default, G0 takes the feed override),
-        spindle (a value for S1, or a dict {"S2": 80})."""
+        spindle (a value for S1, or a dict {"S2": 80}), all of channel ch."""
         if feed is not None:
             self._s.feed_override(_whole(ch, "ch", 1), _number(feed, "feed"))
         if rapid is not None:
@@ -120,7 +120,7 @@ class Session:
         if spindle is not None:
             spindles = spindle if isinstance(spindle, dict) else {"S1": spindle}
             for name, value in spindles.items():
-                self._s.spindle_override(str(name), _number(value, "spindle"))
+                self._s.spindle_override(_whole(ch, "ch", 1), str(name), _number(value, "spindle"))
 
     def mdi(self, text, ch=1):
         """Runs one NC block typed by the operator (the channel must not be

@@ -132,15 +132,15 @@ class Session {
     operate(ch, sim::act::SkipMask{static_cast<std::uint32_t>(mask)});
   }
 
-  // The spindle override of channel 1's spindle `name` (the session has
-  // always addressed channel 1 here).
-  void spindle_override(const std::string& name, double percent) {
+  // The spindle override of channel ch's spindle `name` (the refusal quotes
+  // the line without the channel, as it always has).
+  void spindle_override(std::int64_t ch, const std::string& name, double percent) {
     sim::act::SpindleOverride o;
     if (!fits(name, o.spindle.name))
       refuse(fmt::format("override {} {:g}", name, percent), ErrorId::PlcScenarioBadSpindleName,
              sim::words::not_a_spindle(shown(name)));
     o.percent = percent;
-    operate(1, o);
+    operate(ch, o);
   }
 
   void jog(std::int64_t ch, const std::string& axis, const std::string& direction, std::optional<double> speed_mm_min) {
@@ -327,7 +327,8 @@ void bind_session(pyb::module_& m) {
            pyb::arg("ch"), pyb::arg("percent"))
       .def("rapid_override", [](Session& s, std::int64_t ch, double pct) { s.operate(ch, sim::act::RapidOverride{pct}); },
            pyb::arg("ch"), pyb::arg("percent"))
-      .def("spindle_override", &Session::spindle_override, pyb::arg("spindle"), pyb::arg("percent"))
+      .def("spindle_override", &Session::spindle_override, pyb::arg("ch"), pyb::arg("spindle"),
+           pyb::arg("percent"))
       .def("skip_mask", &Session::skip_mask, pyb::arg("ch"), pyb::arg("mask"))
       .def("jog", &Session::jog, pyb::arg("ch"), pyb::arg("axis"), pyb::arg("direction"), pyb::arg("speed_mm_min"))
       .def("jog_increment", &Session::jog_increment, pyb::arg("ch"), pyb::arg("axis"), pyb::arg("step_mm"))

@@ -202,3 +202,11 @@ def test_a_refused_call_says_what_its_scenario_line_says(mill, call, line):
     with pytest.raises(nck.ActionError) as text:
         mill.session().action(line)
     assert (typed.value.id, str(typed.value)) == (text.value.id, str(text.value))
+
+
+def test_a_spindle_override_acts_in_its_channel():
+    # examples/two-channel: channel 1 has S1, S2, S3; channel 2 has no S3
+    s = nck.Machine(EXAMPLES / "two-channel").session()
+    s.override(spindle={"S3": 50}, ch=1)
+    with pytest.raises(nck.ActionError, match="channel 2 has no spindle 'S3'"):
+        s.override(spindle={"S3": 50}, ch=2)
