@@ -5,6 +5,7 @@
 // a line the user typed, goes through the scenario parser.
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 
 #include <fmt/format.h>
 #include <pybind11/stl.h>
@@ -246,9 +247,49 @@ class Session {
   }
   void submit_mdi(int channel, const std::string& text);
 
+ public:
+  // The session for one Python caller (locked()): a caller that finds it
+  // busy waits without holding the GIL, which the busy one needs back.
+  std::unique_lock<std::mutex> hold() {
+    std::unique_lock<std::mutex> lock(busy_, std::try_to_lock);
+    if (!lock.owns_lock()) {
+      pyb::gil_scoped_release no_gil;
+      lock.lock();
+    }
+    return lock;
+  }
+
+ private:
   const Machine* machine_;  // kept alive by the Python Session (keep_alive)
   std::unique_ptr<app::Simulation> sim_;
+  std::mutex busy_;
 };
+
+// One Python caller in a session at a time: step and run_until release the
+// GIL, so a second thread could enter the same session mid-cycle (two
+// threads stepping one session corrupted memory). Every bound call takes
+// the session first; calls within the session (mdi's step) do not.
+template <class R, class... A>
+auto locked(R (Session::*method)(A...)) {
+  return [method](Session& s, A... args) -> R {
+    const auto session = s.hold();
+    return (s.*method)(std::forward<A>(args)...);
+  };
+}
+template <class R, class... A>
+auto locked(R (Session::*method)(A...) const) {
+  return [method](Session& s, A... args) -> R {
+    const auto session = s.hold();
+    return (s.*method)(std::forward<A>(args)...);
+  };
+}
+template <class R, class... A>
+auto locked(R (*call)(Session&, A...)) {
+  return [call](Session& s, A... args) -> R {
+    const auto session = s.hold();
+    return call(s, std::forward<A>(args)...);
+  };
+}
 
 // The session's MDI text as it has always been taken (a scenario line's
 // rest): one line, a '#' ends it, the blanks around it dropped.
@@ -311,35 +352,42 @@ void bind_session(pyb::module_& m) {
   pyb::class_<Session>(m, "_Session")
       .def(pyb::init<const Machine&, std::vector<std::string>, std::string>(), pyb::arg("machine"),
            pyb::arg("programs"), pyb::arg("plc"), pyb::keep_alive<1, 2>())
-      .def("step", &Session::step, pyb::arg("cycles"))
-      .def("run_until", &Session::run_until, pyb::arg("until"), pyb::arg("max_cycles"))
-      .def("action", &Session::action, pyb::arg("line"))
-      .def("cycle_start", [](Session& s, std::int64_t ch) { s.operate(ch, sim::act::CycleStart{}); }, pyb::arg("ch"))
-      .def("stop", [](Session& s, std::int64_t ch) { s.operate(ch, sim::act::Stop{}); }, pyb::arg("ch"))
-      .def("reset", [](Session& s, std::int64_t ch) { s.operate(ch, sim::act::Reset{}); }, pyb::arg("ch"))
-      .def("feedhold", [](Session& s, std::int64_t ch, bool on) { s.operate(ch, sim::act::Feedhold{on}); },
+      .def("step", locked(&Session::step), pyb::arg("cycles"))
+      .def("run_until", locked(&Session::run_until), pyb::arg("until"), pyb::arg("max_cycles"))
+      .def("action", locked(&Session::action), pyb::arg("line"))
+      .def("cycle_start", locked(+[](Session& s, std::int64_t ch) { s.operate(ch, sim::act::CycleStart{}); }),
+           pyb::arg("ch"))
+      .def("stop", locked(+[](Session& s, std::int64_t ch) { s.operate(ch, sim::act::Stop{}); }), pyb::arg("ch"))
+      .def("reset", locked(+[](Session& s, std::int64_t ch) { s.operate(ch, sim::act::Reset{}); }),
+           pyb::arg("ch"))
+      .def("feedhold", locked(+[](Session& s, std::int64_t ch, bool on) { s.operate(ch, sim::act::Feedhold{on}); }),
            pyb::arg("ch"), pyb::arg("on"))
-      .def("single_step", [](Session& s, std::int64_t ch, bool on) { s.operate(ch, sim::act::SingleStep{on}); },
+      .def("single_step",
+           locked(+[](Session& s, std::int64_t ch, bool on) { s.operate(ch, sim::act::SingleStep{on}); }),
            pyb::arg("ch"), pyb::arg("on"))
-      .def("optional_stop", [](Session& s, std::int64_t ch, bool on) { s.operate(ch, sim::act::OptionalStop{on}); },
+      .def("optional_stop",
+           locked(+[](Session& s, std::int64_t ch, bool on) { s.operate(ch, sim::act::OptionalStop{on}); }),
            pyb::arg("ch"), pyb::arg("on"))
-      .def("feed_override", [](Session& s, std::int64_t ch, double pct) { s.operate(ch, sim::act::FeedOverride{pct}); },
+      .def("feed_override",
+           locked(+[](Session& s, std::int64_t ch, double pct) { s.operate(ch, sim::act::FeedOverride{pct}); }),
            pyb::arg("ch"), pyb::arg("percent"))
-      .def("rapid_override", [](Session& s, std::int64_t ch, double pct) { s.operate(ch, sim::act::RapidOverride{pct}); },
+      .def("rapid_override",
+           locked(+[](Session& s, std::int64_t ch, double pct) { s.operate(ch, sim::act::RapidOverride{pct}); }),
            pyb::arg("ch"), pyb::arg("percent"))
-      .def("spindle_override", &Session::spindle_override, pyb::arg("ch"), pyb::arg("spindle"),
+      .def("spindle_override", locked(&Session::spindle_override), pyb::arg("ch"), pyb::arg("spindle"),
            pyb::arg("percent"))
-      .def("skip_mask", &Session::skip_mask, pyb::arg("ch"), pyb::arg("mask"))
-      .def("jog", &Session::jog, pyb::arg("ch"), pyb::arg("axis"), pyb::arg("direction"), pyb::arg("speed_mm_min"))
-      .def("jog_increment", &Session::jog_increment, pyb::arg("ch"), pyb::arg("axis"), pyb::arg("step_mm"))
-      .def("mode", &Session::mode, pyb::arg("ch"), pyb::arg("name"))
-      .def("mdi", &Session::mdi, pyb::arg("text"), pyb::arg("channel"))
-      .def("events", &Session::take_events)
-      .def("state", &Session::state)
-      .def("errors", &Session::errors)
-      .def("messages", &Session::messages)
-      .def_property_readonly("time_s", &Session::time_s)
-      .def_property_readonly("cycles", &Session::cycles);
+      .def("skip_mask", locked(&Session::skip_mask), pyb::arg("ch"), pyb::arg("mask"))
+      .def("jog", locked(&Session::jog), pyb::arg("ch"), pyb::arg("axis"), pyb::arg("direction"),
+           pyb::arg("speed_mm_min"))
+      .def("jog_increment", locked(&Session::jog_increment), pyb::arg("ch"), pyb::arg("axis"), pyb::arg("step_mm"))
+      .def("mode", locked(&Session::mode), pyb::arg("ch"), pyb::arg("name"))
+      .def("mdi", locked(&Session::mdi), pyb::arg("text"), pyb::arg("channel"))
+      .def("events", locked(&Session::take_events))
+      .def("state", locked(&Session::state))
+      .def("errors", locked(&Session::errors))
+      .def("messages", locked(&Session::messages))
+      .def_property_readonly("time_s", locked(&Session::time_s))
+      .def_property_readonly("cycles", locked(&Session::cycles));
 }
 
 }  // namespace nck::py

@@ -1,4 +1,6 @@
 """Session: stepping, operating and reading a running machine."""
+import threading
+
 import pytest
 
 import nck
@@ -210,3 +212,26 @@ def test_a_spindle_override_acts_in_its_channel():
     s.override(spindle={"S3": 50}, ch=1)
     with pytest.raises(nck.ActionError, match="channel 2 has no spindle 'S3'"):
         s.override(spindle={"S3": 50}, ch=2)
+
+
+def test_threads_sharing_a_session_take_turns(mill):
+    # step() releases the GIL: four threads stepping one session and one
+    # reading it take turns (they corrupted memory when they did not)
+    s = mill.session(EXAMPLES / "mill" / "contour.nc")
+
+    def stepper():
+        for _ in range(100):
+            s.step(200)
+
+    def reader():
+        for _ in range(400):
+            s.events()
+            s.state()
+            assert s.cycles <= 4 * 100 * 200
+
+    threads = [threading.Thread(target=stepper) for _ in range(4)] + [threading.Thread(target=reader)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert s.cycles == 4 * 100 * 200
