@@ -1,6 +1,7 @@
 """Machine.run: the same run as `nck run`, in memory."""
 import json
 import subprocess
+import threading
 
 import numpy as np
 import pytest
@@ -132,3 +133,20 @@ def test_start_at_runs_a_block_search(mill):
     assert searched.final["channels"][0]["axes"] == full.final["channels"][0]["axes"]
     with pytest.raises(nck.ArgumentError):
         mill.run(prog, start_at="N")
+
+
+def test_threads_may_share_a_machine(mill):
+    # each run has its own simulation over the machine's data, which no run
+    # changes: four at once give the run alone's events
+    alone = mill.run(EXAMPLES / "mill" / "contour.nc").events
+    runs = [None] * 4
+
+    def run(i):
+        runs[i] = mill.run(EXAMPLES / "mill" / "contour.nc").events
+
+    threads = [threading.Thread(target=run, args=(i,)) for i in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert all(r == alone for r in runs)
