@@ -24,7 +24,7 @@ struct OperatorAction {
 // How a refusal quotes an action: as the surface's users have always seen
 // it. api: numbers in their shortest form (80, 50.5); python: six
 // significant digits (printf's %g), a skip mask in hex, and the spindle
-// override as "override S1 50" (channel 1, no channel prefix).
+// override as "override S1 50" (no channel prefix, whatever its channel).
 enum class Quoting : std::uint8_t { api, python };
 
 // setup side: the action's values checked as the scenario grammar checks a
