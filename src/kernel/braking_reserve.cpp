@@ -53,6 +53,10 @@ double reserve_end_speed(const Motion& current, const CommandQueue& queued, doub
   if (jerk_limited(current.limits.slope)) return jerk_reserve_end_speed(current, queued, dt_s, first);
   double a_mm_s2 = current.limits.a_dec_mm_s2;  // the gentlest deceleration of the chain
   double length_mm = 0.0;                       // queued path to stop within
+  // Braking across its end, the path passes on no faster than its staircase allows there.
+  const double passing = current.brake_beyond_mm > 0.0
+                             ? std::min(planned, motion::discrete_brake_velocity(current.brake_beyond_mm, a_mm_s2, dt_s))
+                             : planned;
   const std::size_t n = queued.size();
   for (std::size_t i = first; i < n; ++i) {
     const Command& c = queued.at(i);
@@ -64,7 +68,7 @@ double reserve_end_speed(const Motion& current, const CommandQueue& queued, doub
     a_mm_s2 = std::min(a_mm_s2, m->limits.a_dec_mm_s2);
     // A planned stop within the queue: the planner's own braking holds.
     if (!(m->v_end_mm_s > 0.0)) return planned;
-    if (motion::discrete_brake_distance(planned, a_mm_s2, dt_s) <= length_mm) return planned;
+    if (motion::discrete_brake_distance(passing, a_mm_s2, dt_s) <= length_mm) return planned;
   }
   return std::min(planned, motion::discrete_brake_velocity(length_mm, a_mm_s2, dt_s));
 }

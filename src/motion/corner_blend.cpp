@@ -88,8 +88,8 @@ std::optional<Fillet> fillet_at(const Curve& in, const Curve& out, V2 corner, bo
 
 }  // namespace
 
-std::optional<CornerBlend> blend_corner(const Segment& a, const Segment& b, double path_dev_mm,
-                                        double max_trim_a_mm, double max_trim_b_mm) noexcept {
+std::optional<CornerBlend> blend_corner(const Segment& a, const Segment& b, const BlendBounds& bounds) noexcept {
+  const double path_dev_mm = bounds.path_dev_mm;
   const auto c = corner_between(a, b, path_dev_mm);
   if (!c) return std::nullopt;
   const Curve &in = c->in, &out = c->out;
@@ -101,8 +101,8 @@ std::optional<CornerBlend> blend_corner(const Segment& a, const Segment& b, doub
   auto ok = [&](double r) -> std::optional<Fillet> {
     auto fl = fillet_at(in, out, corner, left, r);
     if (!fl || fl->deviation > path_dev_mm || fl->deviation < -kTiny) return std::nullopt;
-    if (!(fl->trim1 > kTiny && fl->trim1 <= max_trim_a_mm)) return std::nullopt;
-    if (!(fl->trim2 > kTiny && fl->trim2 <= max_trim_b_mm)) return std::nullopt;
+    if (!(fl->trim1 > kTiny && fl->trim1 <= bounds.max_trim_a_mm)) return std::nullopt;
+    if (!(fl->trim2 > kTiny && fl->trim2 <= bounds.max_trim_b_mm)) return std::nullopt;
     if (!(fl->sweep > 0 && fl->sweep < std::numbers::pi)) return std::nullopt;
     return fl;
   };
@@ -120,6 +120,8 @@ std::optional<CornerBlend> blend_corner(const Segment& a, const Segment& b, doub
     const double mid = (lo + hi) / 2;
     (ok(mid) ? lo : hi) = mid;
   }
+  // A smaller radius deviates less and trims less: it passes too.
+  if (bounds.size_share < 1) lo *= bounds.size_share;
   std::optional<Fillet> fl;
   if (lo > 0) fl = ok(lo);
   if (!fl) return std::nullopt;

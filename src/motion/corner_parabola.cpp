@@ -115,8 +115,8 @@ std::optional<Bezier> parabola_at(const Curve& in, const Curve& out, V2 corner, 
 
 }  // namespace
 
-std::optional<CornerBlend> blend_corner_parabola(const Segment& a, const Segment& b, double path_dev_mm,
-                                                 double max_trim_a_mm, double max_trim_b_mm) noexcept {
+std::optional<CornerBlend> blend_corner_parabola(const Segment& a, const Segment& b, const BlendBounds& bounds) noexcept {
+  const double path_dev_mm = bounds.path_dev_mm, max_trim_a_mm = bounds.max_trim_a_mm, max_trim_b_mm = bounds.max_trim_b_mm;
   const auto c = corner_between(a, b, path_dev_mm);
   if (!c || (c->in.arc && c->out.arc)) return std::nullopt;  // arc-arc: the fillet
   const Curve &in = c->in, &out = c->out;
@@ -149,15 +149,18 @@ std::optional<CornerBlend> blend_corner_parabola(const Segment& a, const Segment
     tau_last = tau, miss_last = miss, tau = next;
   }
   std::optional<Bezier> z = ok(tau);
-  if (!z) z = ok(tau * (1 - 1e-9));
+  if (!z) z = ok(tau *= 1 - 1e-9);
   if (!z) {  // a trim bound, or steps that did not settle: bisection below
     double lo = 0, up = tau;
     for (int i = 0; i < 50; ++i) {
       const double mid = (lo + up) / 2;
       (ok(mid) ? lo : up) = mid;
     }
+    tau = lo;
     if (lo > 0) z = ok(lo);
   }
+  // A shorter leg deviates less and trims less: it passes too.
+  if (z && bounds.size_share < 1) z = ok(tau * bounds.size_share);
   if (!z) return std::nullopt;
 
   const auto sides = trimmed_blocks(a, b, *c, z->p0, z->p2);

@@ -89,6 +89,7 @@ bool PathProfile::start(double length_mm, double v_cmd_mm_s, const PathLimits& l
   v_limit_mm_s_ = -1.0;
   override_ignored_ = false;
   into_fillet_ = false;
+  through_mm_ = 0.0;
   if (!std::isfinite(length_mm) || length_mm < 0.0) {
     length_mm_ = s_mm_ = 0.0;
     finished_ = true;
@@ -150,6 +151,12 @@ void PathProfile::pass_into_fillet() noexcept {
   beyond_dt_s_ = 0.0;  // the braking curve's end point moves a cycle on
 }
 
+void PathProfile::brake_through(double beyond_mm) noexcept {
+  if (jerk_ || !(beyond_mm > 0.0) || !std::isfinite(beyond_mm)) return;
+  through_mm_ = beyond_mm;
+  beyond_dt_s_ = 0.0;  // the braking curve's end point moves
+}
+
 void PathProfile::pass_first_step(double a_mm_s2) noexcept {
   if (!(a_mm_s2 >= 0.0)) return;  // NaN: ignored
   first_acc_mm_s2_ = first_dec_mm_s2_ = a_mm_s2;
@@ -207,21 +214,27 @@ ProfileSample PathProfile::step(double dt_s, double override_factor) noexcept {
   if (std::abs(v - goal) <= 1e-12 * std::max(1.0, goal)) v = goal;
   // Braking curve: to standstill at the end, or (passing on) to v_end where
   // the hold begins, which is the curve to standstill at a point beyond it.
+  const double a = limits_.a_dec_mm_s2;
+  // Far from the end a braking curve is not reached: it lies above
+  // sqrt(2 a d) - a dt / 2, so the staircase is skipped there.
+  const auto brake_towards = [&](double rest_mm) {
+    const double v_safe = v + 1.5 * a * dt_s;
+    if (v_safe * v_safe <= 2.0 * a * rest_mm) return;
+    const double v_brake = discrete_brake_velocity(rest_mm, a, dt_s);
+    braking = braking || v_brake < v;
+    v = std::min(v, v_brake);
+  };
   if (!holding) {
-    const double a = limits_.a_dec_mm_s2;
     if (dt_s != beyond_dt_s_) {  // once per segment and cycle time
       beyond_mm_ = pass_brake_distance(v_end_mm_s_, a, dt_s, hold_cycles);
       beyond_dt_s_ = dt_s;
     }
-    // Far from the end the braking curve is not reached: it lies above
-    // sqrt(2 a d) - a dt / 2, so the staircase is skipped there.
-    const double rest_mm = left_mm + beyond_mm_, v_safe = v + 1.5 * a * dt_s;
-    if (v_safe * v_safe > 2.0 * a * rest_mm) {
-      const double v_brake = discrete_brake_velocity(rest_mm, a, dt_s);
-      braking = v_brake < v;
-      v = std::min(v, v_brake);
-    }
+    brake_towards(left_mm + beyond_mm_);
   }
+  // Braking across the end: the staircase of the segments after it as well
+  // (v_end is then the ceiling its corner sets).
+  const bool through = through_mm_ > 0.0;
+  if (through) brake_towards(left_mm + through_mm_);
   v = std::max(v, 0.0);
 
   // The cycle that passes into the next segment lies on both (a fillet's
@@ -229,8 +242,11 @@ ProfileSample PathProfile::step(double dt_s, double override_factor) noexcept {
   // takes the speed to pass at instead (the fillet's first part turns by at
   // most half its centripetal acceleration in it, and the window gave this
   // segment no acceleration beyond what that leaves of a_max).
-  if (v_end_mm_s_ > 0.0 && v_prev > 0.0 && v * dt_s >= left_mm - kSnapMm)
-    v = into_fillet_ ? std::clamp(std::min(target, v_end_mm_s_), v_prev - a_dec * dt_s, v_prev) : v_prev;
+  // Braking across the end, it may go on braking in it.
+  if (v_end_mm_s_ > 0.0 && v_prev > 0.0 && v * dt_s >= left_mm - kSnapMm) {
+    if (through) v = std::min(v, v_prev);
+    else v = into_fillet_ ? std::clamp(std::min(target, v_end_mm_s_), v_prev - a_dec * dt_s, v_prev) : v_prev;
+  }
   const double move_mm = v * dt_s;
   if (move_mm >= left_mm - kSnapMm) {
     // Stopping at the end: report the speed that covers exactly what was left.

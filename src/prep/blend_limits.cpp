@@ -112,11 +112,15 @@ double parabola_pass_acceleration(const motion::Segment& parabola, const motion:
   return std::isfinite(a) ? std::max(a - extra, 0.0) : 0.0;
 }
 
-motion::PathLimits fillet_limits(const motion::Segment& fillet, const BlendDynamics& d) {
+motion::PathLimits fillet_limits(const motion::Segment& fillet, const BlendDynamics& d, double feed_mm_s) {
   const PlaneBudget p = plane_budget(fillet, d);
-  const double a_t = std::min(kFilletTangentialShare * p.a_feed_mm_s2, p.a_cap_mm_s2);
-  const double a_n = along_beside(p.a_cap_mm_s2, a_t);
   const double r = std::min(fillet.radius_start(), fillet.radius_end());
+  const double a_share = std::min(kFilletTangentialShare * p.a_feed_mm_s2, p.a_cap_mm_s2);
+  // 1 % above the feed: rounding must not leave the fillet a hair slower
+  const double v_mm_s = 1.01 * feed_mm_s;
+  const double a_beside_feed = std::min(p.a_feed_mm_s2, along_beside(p.a_cap_mm_s2, v_mm_s * v_mm_s / r));
+  const double a_t = std::max(a_share, a_beside_feed);
+  const double a_n = along_beside(p.a_cap_mm_s2, a_t);
   motion::PathLimits l;
   l.v_max_mm_s = std::min(p.v_max_mm_s, std::sqrt(a_n * r));
   l.a_acc_mm_s2 = l.a_dec_mm_s2 = a_t;

@@ -37,6 +37,42 @@ bool waits_at_next_feed_motion(const PlannedCommand& c) {
   return late;
 }
 
+// A blend made smaller for the feed keeps this much speed in hand.
+constexpr double kFeedMargin = 1.02;
+// ... and takes at least this many cycles at the feed (every piece of a
+// blended corner must take more than two: LookAheadWindow::blend).
+constexpr double kMinBlendCycles = 3;
+// Blocks without motion between two motions that may still be blended.
+constexpr std::size_t kMaxLiftedBlocks = 4;
+// What a blend leaves of each block it trims, in cycles of its travel.
+constexpr double kKeepCycles = 2.5;
+
+// The blend make(share) builds at a share of its largest size, as small as
+// still lets the path pass at feed_mm_s (a blend's speed grows with the
+// square root of its size under STEP, with the 2/3 power under the jerk
+// rule: the 1.5th power of the speed ratio is enough for both, and the
+// result is checked): it deviates less and leaves its blocks room for
+// their other corners. The largest where no smaller one is as fast.
+// `limits`: the returned blend's, from limits_of(its segment).
+template <class Make, class LimitsOf>
+std::optional<motion::CornerBlend> sized_for_feed(Make make, LimitsOf limits_of, double feed_mm_s, double cycle_s,
+                                                  motion::PathLimits& limits) {
+  auto largest = make(1.0);
+  if (!largest) return largest;
+  limits = limits_of(largest->corner);
+  const double v_largest = limits.v_max_mm_s;
+  if (!(v_largest > kFeedMargin * feed_mm_s)) return largest;
+  const double share = std::max(std::pow(kFeedMargin * feed_mm_s / v_largest, 1.5),
+                                kMinBlendCycles * cycle_s * feed_mm_s / largest->corner.length());
+  if (share >= 0.9) return largest;
+  auto sized = make(share);
+  if (!sized) return largest;
+  const motion::PathLimits l = limits_of(sized->corner);
+  if (l.v_max_mm_s < feed_mm_s) return largest;
+  limits = l;
+  return sized;
+}
+
 }  // namespace
 
 LookAheadWindow::LookAheadWindow(std::size_t depth, double cycle_s)
@@ -54,21 +90,35 @@ void LookAheadWindow::append(const PlannedCommand& command) {
                         is_quiet(command) && !must_wait;
   // A fillet goes in first (it chains after the motion before and becomes
   // the open motion that c chains after); it also links a corner so sharp
-  // that the velocity look-ahead stops there (entry limit 0). Only right
-  // after the motion: a block without motion in between keeps its place at
-  // the corner (its events are not moved behind a fillet). Only then is the
-  // command copied (3.4 KB) to be changed.
-  if (linkable && open_motion_ == tail_ && at(open_motion_ - 1).command.blend_dev_mm > 0) {
+  // that the velocity look-ahead stops there (entry limit 0). Only then is
+  // the command copied (3.4 KB) to be changed.
+  if (linkable && at(open_motion_ - 1).command.blend_dev_mm > 0 && tail_ - open_motion_ <= kMaxLiftedBlocks) {
     PlannedCommand c = command;
-    (void)blend(open_motion_ - 1, c);
-    store(c, linkable, command.segment.length());
+    blend_across(c);
+    store(c, linkable);
   } else {
-    store(command, linkable, command.segment.length());
+    store(command, linkable);
   }
 }
 
-// Command c (as blended) enters the window; `programmed_mm`: its length as programmed.
-void LookAheadWindow::store(const PlannedCommand& c, bool linkable, double programmed_mm) {
+// Blends the corner between the open motion and c. Blocks without motion
+// between them (an F word alone, a comment's block, an assignment: CAM
+// posts write one before every move) do not stop it: they are lifted out
+// and put back after the fillet, whose end is where they then take effect.
+void LookAheadWindow::blend_across(PlannedCommand& c) {
+  FixedVector<PlannedCommand, kMaxLiftedBlocks> lifted;
+  for (std::uint64_t seq = open_motion_; seq < tail_; ++seq) (void)lifted.push_back(at(seq).command);
+  const std::uint64_t tail = tail_;
+  tail_ = open_motion_;
+  if (!blend(open_motion_ - 1, c)) {
+    tail_ = tail;  // nothing changed: they stay where they were
+    return;
+  }
+  for (const PlannedCommand& n : lifted) store(n, false);
+}
+
+// Command c (as blended) enters the window.
+void LookAheadWindow::store(const PlannedCommand& c, bool linkable) {
   const bool chained = linkable && c.v_entry_max_mm_s > 0;
   const std::uint64_t seq = tail_++;
   Entry& e = at(seq);
@@ -76,14 +126,15 @@ void LookAheadWindow::store(const PlannedCommand& c, bool linkable, double progr
   e.command.v_end_mm_s = 0;
   e.prev_motion = 0;
   e.end_cap_mm_s = 0;
-  e.programmed_mm = programmed_mm;
+  e.stairs = Staircase{};
   if (c.kind == CommandKind::motion) {
+    const std::uint64_t open = open_motion_;
+    open_motion_ = is_quiet(c) && !c.exact_stop ? seq + 1 : 0;
     if (chained) {
-      at(open_motion_ - 1).end_cap_mm_s = c.v_entry_max_mm_s;
-      e.prev_motion = open_motion_;
+      at(open - 1).end_cap_mm_s = c.v_entry_max_mm_s;
+      e.prev_motion = open;
       raise_chain(seq);
     }
-    open_motion_ = is_quiet(c) && !c.exact_stop ? seq + 1 : 0;
   } else if (!is_transparent(c)) {
     open_motion_ = 0;
   }
@@ -91,42 +142,42 @@ void LookAheadWindow::store(const PlannedCommand& c, bool linkable, double progr
   if (waits_at_next_feed_motion(c)) late_wait_pending_ = true;
 }
 
-// The motion `next` joined the chain (or its end velocity rose): the motions
-// before it may now end faster, as far as `next` can still brake from them.
-void LookAheadWindow::raise_chain(std::uint64_t next) {
+// The last motion `seq` joined the chain (or changed): the motions before it
+// may now end faster, as far as it can still brake from them, and brake
+// across their ends where that is faster (braking_staircase.hpp).
+void LookAheadWindow::raise_chain(std::uint64_t seq) {
+  settle(seq, nullptr);
   for (;;) {
-    const Entry& n = at(next);
+    const Entry& n = at(seq);
     if (n.prev_motion == 0 || n.prev_motion - 1 < head_) return;  // none, or it has left
     const std::uint64_t m = n.prev_motion - 1;
     Entry& e = at(m);
-    const double v = std::min(e.end_cap_mm_s, entry_limit(n.command));
-    if (v == e.command.v_end_mm_s) return;  // nothing changes further back
-    e.command.v_end_mm_s = v;
-    next = m;
+    const Staircase was = e.stairs;
+    e.command.v_end_mm_s = std::min(e.end_cap_mm_s, n.stairs.entry_mm_s);
+    settle(m, &n.stairs);
+    if (e.stairs == was) return;  // nothing changes further back
+    seq = m;
   }
 }
 
-// The fastest entry into c from which it still ends at its v_end. The
-// profile starts c at the distance the block before ran past its end (up to
-// one cycle of travel) and may pass into c up to one braking step faster
-// than planned; the margins keep its braking within a_dec nonetheless.
-double LookAheadWindow::entry_limit(const PlannedCommand& c) const {
-  const double length = c.segment.length(), a = c.limits.a_dec_mm_s2;
-  // A jerk-limited profile passes a transition at its planned speed with
-  // acceleration 0 and carries the exact time: no margins.
-  if (jerk_limited(c.limits.slope) && motion::valid(motion::jerk_limits(c.limits)))
-    return motion::jerk_entry_velocity(length, c.v_end_mm_s, motion::jerk_limits(c.limits));
-  const double v = motion::entry_velocity_limit(length, c.v_end_mm_s, a, cycle_s_);
-  const double shorter = std::max(length - v * cycle_s_, 0.0);
-  return std::max(motion::entry_velocity_limit(shorter, c.v_end_mm_s, a, cycle_s_) - a * cycle_s_, 0.0);
+// A motion that a released one brakes across into keeps braking across,
+// along a staircase nowhere lower than the one it had (the released one
+// follows that): a new one only where it covers the old.
+void LookAheadWindow::settle(std::uint64_t seq, const Staircase* next) {
+  Entry& e = at(seq);
+  const Staircase s = prep::settle(e.command, seq, e.end_cap_mm_s, next, cycle_s_);
+  const bool kept = seq < fixed_end_ && e.stairs.through;
+  if (!kept || (s.through && s.covers(e.stairs))) e.stairs = s;
 }
+
+double LookAheadWindow::entry_limit(const PlannedCommand& c) const { return holding_entry_limit(c, cycle_s_); }
 
 // Under a jerk-limited slope a fillet also keeps the contour's jerk within
 // what path_limits allows an arc (motion/limits.hpp): the lower speed and
 // tangential acceleration of the two, the ramp times of the blocks.
 motion::PathLimits LookAheadWindow::jerk_fillet_limits(const motion::Segment& fillet, const BlendDynamics& d,
-                                                       const motion::PathLimits& before) {
-  motion::PathLimits l = fillet_limits(fillet, d);
+                                                       const motion::PathLimits& before, double feed_mm_s) {
+  motion::PathLimits l = fillet_limits(fillet, d, feed_mm_s);
   if (!jerk_limited(before.slope)) return l;
   const motion::PathLimits arc = motion::path_limits(fillet, d.feed, before.slope);
   l.v_max_mm_s = std::min(l.v_max_mm_s, arc.v_max_mm_s);
@@ -137,21 +188,27 @@ motion::PathLimits LookAheadWindow::jerk_fillet_limits(const motion::Segment& fi
   return l;
 }
 
-// Whether replacing the command at `seq` by `changed` keeps every released
-// command able to brake: follows the lowered end velocities back along the
-// chain until they stop changing (the normal case: at once), and fails when
-// they would reach a command that has left the window.
-bool LookAheadWindow::lowering_is_safe(std::uint64_t seq, PlannedCommand changed) const {
+// Whether replacing the command at `seq` by one whose staircase is
+// `changed` keeps every released command able to brake: follows the lowered
+// staircases back along the chain (settled as raise_chain would) until they
+// are no lower (the normal case: at once), and fails when they would reach
+// a command that has left the window (or one that such a command brakes
+// across into).
+bool LookAheadWindow::lowering_is_safe(std::uint64_t seq, Staircase changed) const {
   for (;;) {
     const Entry& e = at(seq);
-    const double limit = entry_limit(changed);
-    if (limit >= entry_limit(e.command) - 1e-9 || e.prev_motion == 0) return true;
+    if (e.prev_motion == 0) return true;
     const std::uint64_t m = e.prev_motion - 1;
-    if (m < head_) return false;
-    const double v = std::min(at(m).end_cap_mm_s, limit);
-    if (v >= at(m).command.v_end_mm_s) return true;
-    changed = at(m).command;
-    changed.v_end_mm_s = v;
+    const Entry& before = at(m);
+    // One before it that holds its end speed reads only the entry limit; one
+    // that brakes across it follows its whole staircase.
+    const bool no_lower = changed.entry_mm_s >= e.stairs.entry_mm_s - 1e-9 &&
+                          (!before.stairs.through || changed.covers(e.stairs));
+    if (no_lower) return true;
+    if (m < first_open()) return false;
+    PlannedCommand c = before.command;
+    c.v_end_mm_s = std::min(before.end_cap_mm_s, changed.entry_mm_s);
+    changed = prep::settle(c, m, before.end_cap_mm_s, &changed, cycle_s_);
     seq = m;
   }
 }
@@ -210,21 +267,32 @@ double LookAheadWindow::corner_cost(const motion::CornerBlend& cb, const motion:
 }
 
 // The blend of the corner between p and next: the fillet, or (both under
-// STEP) the parabola where its corner costs less time (corner_cost); each
-// block keeps at least 10 % of its programmed length. `limits`: the chosen
-// blend's path limits.
+// STEP) the parabola where its corner costs less time (corner_cost), each
+// sized for the feed (sized_for_feed). A block is shared between its two
+// corners: this one may take p's end up to what p's start left of it, and
+// next's start up to half of next, each keeping kKeepCycles of travel.
+// `limits`: the chosen blend's path limits.
 std::optional<motion::CornerBlend> LookAheadWindow::corner_blend(const Entry& p, const PlannedCommand& next,
                                                                  const BlendDynamics& dyn, motion::PathLimits& limits) const {
-  const double trim_a = 0.45 * p.programmed_mm, trim_b = 0.45 * next.segment.length();
-  auto cb = motion::blend_corner(p.command.segment, next.segment, p.command.blend_dev_mm, trim_a, trim_b);
-  if (cb) limits = jerk_fillet_limits(cb->corner, dyn, p.command.limits);
+  const double feed = std::min(cruise(p.command), cruise(next));
+  const double trim_a = p.command.segment.length() - kKeepCycles * cycle_s_ * cruise(p.command);
+  const double trim_b = 0.5 * (next.segment.length() - kKeepCycles * cycle_s_ * cruise(next));
+  if (!(trim_a > 0 && trim_b > 0)) return std::nullopt;
+  const auto bounds = [&](double share) { return motion::BlendBounds{p.command.blend_dev_mm, trim_a, trim_b, share}; };
+  // Sized with the fillet's least share for speeding up and braking, run
+  // with what its turn at the feed leaves (fillet_limits).
+  auto cb = sized_for_feed([&](double share) { return motion::blend_corner(p.command.segment, next.segment, bounds(share)); },
+                           [&](const motion::Segment& f) { return jerk_fillet_limits(f, dyn, p.command.limits, 0.0); },
+                           feed, cycle_s_, limits);
+  if (cb) limits = jerk_fillet_limits(cb->corner, dyn, p.command.limits, feed);
   // STEP only: a parabola's axes change their acceleration at its ends by
   // up to a_max (no jerk limit could hold there).
   if (p.command.limits.slope != SlopeProfile::step || next.limits.slope != SlopeProfile::step) return cb;
-  const auto cb_parabola =
-      motion::blend_corner_parabola(p.command.segment, next.segment, p.command.blend_dev_mm, trim_a, trim_b);
+  motion::PathLimits l{};
+  const auto cb_parabola = sized_for_feed(
+      [&](double share) { return motion::blend_corner_parabola(p.command.segment, next.segment, bounds(share)); },
+      [&](const motion::Segment& z) { return parabola_limits(z, dyn); }, feed, cycle_s_, l);
   if (!cb_parabola) return cb;
-  const motion::PathLimits l = parabola_limits(cb_parabola->corner, dyn);
   if (cb && corner_cost(*cb, limits, p.command, next) <= corner_cost(*cb_parabola, l, p.command, next)) return cb;
   limits = l;
   return cb_parabola;
@@ -307,9 +375,11 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   // is slower than a stop is far): fine inside the window, where the chain
   // is planned again, but not for a command already released.
   after.v_end_mm_s = 0;
-  f.v_end_mm_s = std::min(after.v_entry_max_mm_s, entry_limit(after));
-  before.v_end_mm_s = std::min(f.v_entry_max_mm_s, entry_limit(f));
-  if (!lowering_is_safe(prev, before)) return false;
+  const Staircase after_stairs = prep::settle(after, tail_ + 1, 0, nullptr, cycle_s_);
+  f.v_end_mm_s = std::min(after.v_entry_max_mm_s, after_stairs.entry_mm_s);
+  const Staircase f_stairs = prep::settle(f, tail_, after.v_entry_max_mm_s, &after_stairs, cycle_s_);
+  before.v_end_mm_s = std::min(f.v_entry_max_mm_s, f_stairs.entry_mm_s);
+  if (!lowering_is_safe(prev, prep::settle(before, prev, f.v_entry_max_mm_s, &f_stairs, cycle_s_))) return false;
 
   p.command.segment = cb->before;
   p.command.limits = before.limits;
@@ -325,10 +395,9 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   e.command = f;
   e.prev_motion = prev + 1;
   e.end_cap_mm_s = 0;
-  e.programmed_mm = cb->corner.length();
   p.end_cap_mm_s = f.v_entry_max_mm_s;
-  raise_chain(seq);
   open_motion_ = seq + 1;
+  raise_chain(seq);
   ++stats_.blends;
   stats_.parabolas += parabola ? 1 : 0;
   stats_.shortfall_mm += cb->shortfall_mm;
@@ -350,8 +419,15 @@ bool LookAheadWindow::passes_at_cruise(std::uint64_t seq) const {
 bool LookAheadWindow::release(kernel::CommandQueue& q, bool flush) {
   const std::size_t keep = flush ? 0 : depth_;
   while (size() > keep) {
-    at(head_).command.passes_at_cruise = passes_at_cruise(head_);
-    if (!packer_.pack(at(head_).command, q)) return false;
+    Entry& e = at(head_);
+    e.command.passes_at_cruise = passes_at_cruise(head_);
+    if (e.stairs.through) {  // the kernel follows the staircase, which must stay as it is
+      e.command.brake_beyond_mm = e.stairs.across_mm;
+      e.command.limits.a_dec_mm_s2 = e.stairs.a_mm_s2;
+      e.command.v_end_mm_s = e.end_cap_mm_s;  // the ceiling: the staircase sets the speed below it
+      fixed_end_ = std::max(fixed_end_, e.stairs.reference + 1);
+    }
+    if (!packer_.pack(e.command, q)) return false;
     ++head_;
   }
   return true;

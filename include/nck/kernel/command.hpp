@@ -10,6 +10,7 @@
 // Plain fixed-size data, at most 512 bytes (a static_assert holds it): the
 // queue between preparation and tick() holds these.
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <type_traits>
 #include <variant>
@@ -33,8 +34,15 @@ struct Motion {
   double v_end_mm_s = 0;
   // Starting from an exact stop right after moving, the first step's
   // acceleration (the planner's limit for a sharp turn or a reversal);
-  // none: the block's own acceleration.
-  std::optional<double> start_a_mm_s2;
+  // infinite: the block's own acceleration.
+  double start_a_mm_s2 = std::numeric_limits<double>::infinity();
+  // STEP: > 0 when the path brakes across this block's end rather than
+  // passing it at v_end_mm_s: it follows the braking staircase (a_dec of
+  // `limits`) to standstill at this distance past its end, which the
+  // motions after it continue (PathProfile::brake_through; the look-ahead
+  // window's "through" motions). v_end_mm_s is then the least speed it
+  // passes on with.
+  double brake_beyond_mm = 0;
   // #FACE / #CYL: the segment is Cartesian; every set point is mapped.
   motion::CaxTrafo trafo{};
   bool measure = false;      // G100: the motion stops where the probe switches

@@ -18,6 +18,17 @@
 
 namespace nck::motion {
 
+// How large a blend may be.
+struct BlendBounds {
+  double path_dev_mm = 0;    // largest distance of the programmed corner from the blend
+  double max_trim_a_mm = 0;  // path length the blend may take off the end of the block before
+  double max_trim_b_mm = 0;  // and off the start of the block after
+  // The share of the largest blend within those bounds to make (its radius,
+  // or its parabola's leg; 0 < share <= 1): a smaller blend deviates less
+  // and leaves its blocks room for their other corners.
+  double size_share = 1.0;
+};
+
 struct CornerBlend {
   Segment before;         // the block before, ending at the blend's first tangent point
   Segment corner;         // the blend in the corner: a fillet (arc) or a parabola
@@ -31,11 +42,9 @@ struct CornerBlend {
 // Blends the corner between a (ending at the corner) and b (starting there).
 // Both must lie in one plane of two axes (a line moving only in the two
 // axes, an arc without helix or extra turns, every other axis standing); the
-// corner must be a real turn (not collinear, not a reversal). max_trim_*_mm
-// bound how much of a's end and b's start the blend may take (path length).
-// nullopt when no fillet fits: the caller keeps the sharp corner.
-std::optional<CornerBlend> blend_corner(const Segment& a, const Segment& b, double path_dev_mm,
-                                        double max_trim_a_mm, double max_trim_b_mm) noexcept;
+// corner must be a real turn (not collinear, not a reversal). nullopt when
+// no fillet fits: the caller keeps the sharp corner.
+std::optional<CornerBlend> blend_corner(const Segment& a, const Segment& b, const BlendBounds& bounds) noexcept;
 
 // The same corner with a parabola instead of the fillet (SegmentKind::parabola,
 // STEP's blend): a quadratic Bezier with equal legs, tangent to both blocks,
@@ -44,7 +53,6 @@ std::optional<CornerBlend> blend_corner(const Segment& a, const Segment& b, doub
 // it and the trims within their bounds; between lines it has the closed
 // form leg = 4 path_dev / |t_out - t_in|. Line-line, line-arc and arc-line
 // corners only (nullopt otherwise, or when none fits); radius_mm is the leg.
-std::optional<CornerBlend> blend_corner_parabola(const Segment& a, const Segment& b, double path_dev_mm,
-                                                 double max_trim_a_mm, double max_trim_b_mm) noexcept;
+std::optional<CornerBlend> blend_corner_parabola(const Segment& a, const Segment& b, const BlendBounds& bounds) noexcept;
 
 }  // namespace nck::motion

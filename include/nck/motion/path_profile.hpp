@@ -85,6 +85,13 @@ class PathProfile {
   // the cycle that crosses into it, not a cycle before (kHoldCycles 1
   // instead of 2). Set after start(). rt
   void pass_into_fillet() noexcept;
+  // STEP: the path brakes across the segment's end: besides passing it at
+  // no more than v_end (then a ceiling, the corner's), it follows the
+  // braking staircase to standstill beyond_mm past the end, which the
+  // segments after it continue; the crossing cycle may brake, never speed
+  // up. The look-ahead window guarantees the segments after it can follow.
+  // 0: none. Set after start(). rt
+  void brake_through(double beyond_mm) noexcept;
   // Changes the speed at the segment's end while it runs (the kernel's
   // braking reserve: 0 while no successor is queued, the planned v_end once
   // one is). Raising it is always possible; lowering it is only safe while
@@ -138,6 +145,7 @@ class PathProfile {
   double beyond_mm_ = 0.0, beyond_dt_s_ = 0.0;  // pass_brake_distance for that cycle time
   bool override_ignored_ = false;
   bool into_fillet_ = false;  // pass_into_fillet()
+  double through_mm_ = 0.0;   // brake_through(), 0: none
   // Jerk-limited slopes: the plan (relative to s = plan_s0_mm_ at its start),
   // the time in it, the acceleration now, and what it was planned for.
   bool jerk_ = false;

@@ -19,9 +19,12 @@ struct BlendDynamics {
 };
 
 // A fillet is meant to be run through at one speed: speeding up or braking
-// on it gets 25 % of the plane axes' feed acceleration, the turn the rest of
-// a_max (v <= sqrt(a_n r)).
-motion::PathLimits fillet_limits(const motion::Segment& fillet, const BlendDynamics& d);
+// on it gets at least 25 % of the plane axes' feed acceleration, and as
+// much more (up to the feed acceleration) as its turn at feed_mm_s leaves
+// of a_max; the turn gets the rest (v <= sqrt(a_n r), never below the feed
+// where the 25 % let it pass at the feed). The path brakes across a chain
+// of fillets with their gentlest deceleration.
+motion::PathLimits fillet_limits(const motion::Segment& fillet, const BlendDynamics& d, double feed_mm_s);
 
 // An arc next to a fillet: at its top speed l.v_max_mm_s (which no
 // override exceeds) its centripetal acceleration a_n = v^2/r leaves

@@ -10,19 +10,25 @@
 // planner's corner/feed limit, but never so fast that the blocks after it could
 // not brake in time: the end of the window is taken as a stop (nothing later is
 // known), and a backward pass lowers each transition to what the rest of the
-// chain can absorb. Appending a block only ever raises earlier transitions, so
-// a command that has left is never too fast; the pass stops at the first
-// transition that does not change, which keeps the cost per block small.
+// chain can absorb. Under STEP a motion may brake across its end along the
+// staircase of the motions after it instead of holding its end speed
+// (braking_staircase.hpp). Appending a block only ever raises earlier
+// transitions, so a command that has left is never too fast; the pass stops
+// at the first motion whose staircase does not change, which keeps the cost
+// per block small.
 //
 // Corner blending (G61/G261, docs/decisions.md, "Continuous path and corner
 // blending"): when a motion chains after one whose end may be blended
 // (PlannedCommand::blend_dev_mm), a circular fillet or (STEP, where its corner
-// costs less time) a parabola (motion/corner_blend.hpp) is put between them as
-// a motion command of its own, both neighbours shortened to its tangent points;
+// costs less time) a parabola (motion/corner_blend.hpp), as small as lets the
+// path pass at the feed, is put between them as a motion command of its own,
+// both neighbours shortened to its tangent points (each block shared between
+// its two corners; blocks without motion between them are moved after it);
 // where none fits, the corner stays sharp with its velocity limit.
 //
 // This is also where tool radius compensation will act on a span of
 // upcoming blocks. Setup side: never called from tick().
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -34,6 +40,7 @@
 #include "nck/motion/corner_blend.hpp"
 #include "nck/motion/limits.hpp"
 #include "nck/prep/blend_limits.hpp"
+#include "nck/prep/braking_staircase.hpp"
 #include "nck/prep/command_packer.hpp"
 #include "nck/prep/planned_command.hpp"
 
@@ -90,13 +97,18 @@ class LookAheadWindow {
     PlannedCommand command;
     std::uint64_t prev_motion = 0;  // sequence number + 1 of the motion chained before, 0 = none
     double end_cap_mm_s = 0;        // corner/feed limit at its end while chained, else 0
-    double programmed_mm = 0;       // its length before any blend shortened it
+    Staircase stairs{};             // how it brakes (motions)
   };
   Entry& at(std::uint64_t seq) { return ring_[seq % ring_.size()]; }
   const Entry& at(std::uint64_t seq) const { return ring_[seq % ring_.size()]; }
   void append(const PlannedCommand& c);
-  void store(const PlannedCommand& c, bool linkable, double programmed_mm);
-  void raise_chain(std::uint64_t next);
+  void store(const PlannedCommand& c, bool linkable);
+  void raise_chain(std::uint64_t seq);
+  void settle(std::uint64_t seq, const Staircase* next);
+  // The first command whose staircase may still be lowered: none that has
+  // left, nor one that a command which has left brakes across into.
+  std::uint64_t first_open() const { return std::max(head_, fixed_end_); }
+  void blend_across(PlannedCommand& c);
   double entry_limit(const PlannedCommand& c) const;
   bool passes_at_cruise(std::uint64_t seq) const;
   bool blend(std::uint64_t prev, PlannedCommand& next);
@@ -105,8 +117,8 @@ class LookAheadWindow {
   double corner_cost(const motion::CornerBlend& cb, const motion::PathLimits& l, const PlannedCommand& before,
                      const PlannedCommand& after) const;
   static motion::PathLimits jerk_fillet_limits(const motion::Segment& fillet, const BlendDynamics& d,
-                                               const motion::PathLimits& before);
-  bool lowering_is_safe(std::uint64_t seq, PlannedCommand changed) const;
+                                               const motion::PathLimits& before, double feed_mm_s);
+  bool lowering_is_safe(std::uint64_t seq, Staircase changed) const;
   double cruise(const PlannedCommand& c) const;
   double tangent_cap(const PlannedCommand& from, const PlannedCommand& to, const BlendAxes& ax) const;
   static WeightScale both(const WeightScale& a, const WeightScale& b);
@@ -114,6 +126,7 @@ class LookAheadWindow {
 
   std::vector<Entry> ring_;
   std::uint64_t head_ = 0, tail_ = 0;  // sequence numbers: [head_, tail_) are in the window
+  std::uint64_t fixed_end_ = 0;  // before it, staircases are only raised (first_open)
   std::size_t depth_;
   double cycle_s_;
   std::uint64_t open_motion_ = 0;  // sequence number + 1 of a motion whose end may still blend

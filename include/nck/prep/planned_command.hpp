@@ -8,6 +8,7 @@
 // kernel's command and its attachments (command_packer.hpp).
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <variant>
 #include <vector>
@@ -78,8 +79,11 @@ struct PlannedCommand {
   // acceleration (0: one cycle at standstill). The last step into the stop
   // and the first out of it fall into consecutive cycles; the planner takes
   // the largest at which no axis changes its velocity by more than
-  // a_max * dt between them. None: the block's own a_acc.
-  std::optional<double> start_a_mm_s2;
+  // a_max * dt between them. Infinite: the block's own a_acc.
+  double start_a_mm_s2 = std::numeric_limits<double>::infinity();
+  // The look-ahead window's braking across its end
+  // (kernel::Motion::brake_beyond_mm; STEP only), set when it leaves.
+  double brake_beyond_mm = 0;
   // Corner blending (G61/G261): the corner at the end of this feed motion
   // may be replaced by a fillet within this distance of the corner point
   // (#CONTOUR MODE PATH_DEV); 0 = none. The look-ahead window builds it.

@@ -30,6 +30,7 @@ void PathUnit::start_motion(const Motion& m, const CommandQueue& queued, double 
   if (hsc_chained_) reserve_ = hsc_open_;
   profile_.start(segment_.length(), m.v_cmd_mm_s, m.limits, hsc_chained_ ? m.v_end_mm_s : v_end, h.chain);
   if (m.into_fillet) profile_.pass_into_fillet();
+  profile_.brake_through(m.brake_beyond_mm);
 }
 
 void PathUnit::note_chain(const HscChain& h) noexcept {
@@ -41,13 +42,13 @@ void PathUnit::note_chain(const HscChain& h) noexcept {
 bool PathUnit::carry_on(const Motion& m) noexcept {
   if (passing_) {
     passing_ = false;
-    if (m.after_fillet && m.start_a_mm_s2) profile_.pass_first_step(*m.start_a_mm_s2);
+    if (m.after_fillet) profile_.pass_first_step(m.start_a_mm_s2);
     velocity_ = profile_.v();
     return true;
   }
   // Right after an exact stop the first step may be gentler
   // (Motion::start_a_mm_s2: a sharp turn or a reversal).
-  if (moved_last_cycle_ && m.start_a_mm_s2) profile_.limit_first_step(*m.start_a_mm_s2);
+  if (moved_last_cycle_) profile_.limit_first_step(m.start_a_mm_s2);
   return false;
 }
 

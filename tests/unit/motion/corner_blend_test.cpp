@@ -44,7 +44,7 @@ void expect_joined(const CornerBlend& cb) {
 
 TEST(CornerBlend, RightAngleOfLinesByHand) {
   const Segment a = line(p3(0, 0), p3(10, 0)), b = line(p3(10, 0), p3(10, 10));
-  const auto cb = blend_corner(a, b, 0.05, 5, 5);
+  const auto cb = blend_corner(a, b, {0.05, 5, 5});
   ASSERT_TRUE(cb);
   // Deviation = r (sqrt 2 - 1) at a right angle: r = 0.05 / 0.41421 = 0.120711 mm.
   const double r = 0.05 / (std::sqrt(2.0) - 1);
@@ -64,7 +64,7 @@ TEST(CornerBlend, RightAngleOfLinesByHand) {
 
 TEST(CornerBlend, TrimLimitCapsTheRadius) {
   const Segment a = line(p3(0, 0), p3(10, 0)), b = line(p3(10, 0), p3(10, -10));
-  const auto cb = blend_corner(a, b, 1.0, 0.1, 5);  // at most 0.1 mm off a
+  const auto cb = blend_corner(a, b, {1.0, 0.1, 5});  // at most 0.1 mm off a
   ASSERT_TRUE(cb);
   EXPECT_NEAR(cb->radius_mm, 0.1, 1e-9);
   EXPECT_NEAR(cb->deviation_mm, 0.1 * (std::sqrt(2.0) - 1), 1e-9);
@@ -77,7 +77,7 @@ TEST(CornerBlend, TrimLimitCapsTheRadius) {
 TEST(CornerBlend, LineIntoSemicircleTouchesItFromOutside) {
   const double R = 0.25;
   const Segment a = line(p3(-0.5, 0), p3(0, 0)), b = arc(p3(0, 0), p3(2 * R, 0), R, 0, false);
-  const auto cb = blend_corner(a, b, 0.01, 0.225, 0.45 * b.length());
+  const auto cb = blend_corner(a, b, {0.01, 0.225, 0.45 * b.length()});
   ASSERT_TRUE(cb);
   const double r = cb->radius_mm, fx = cb->corner.center_a(), fy = cb->corner.center_b();
   EXPECT_NEAR(fy, r, 1e-9);                             // tangent to the line y = 0
@@ -97,9 +97,9 @@ TEST(CornerBlend, ArcToArcStaysWithinTheDeviation) {
   // Two quarter circles meeting at a right angle.
   const Segment a = arc(p3(0, 0), p3(5, 5), 5, 0, false);   // cw, at (5,5) heading +X
   const Segment b = arc(p3(5, 5), p3(10, 0), 5, 0, false);  // continues: tangent, no corner
-  EXPECT_FALSE(blend_corner(a, b, 0.02, 1, 1));            // tangent: nothing to blend
+  EXPECT_FALSE(blend_corner(a, b, {0.02, 1, 1}));            // tangent: nothing to blend
   const Segment c = arc(p3(5, 5), p3(10, 0), 10, 5, true);  // ccw, heading -Y: a right turn
-  const auto cb = blend_corner(a, c, 0.02, 1, 1);
+  const auto cb = blend_corner(a, c, {0.02, 1, 1});
   ASSERT_TRUE(cb);
   expect_joined(*cb);
   EXPECT_NEAR(cb->deviation_mm, 0.02, 1e-9);
@@ -108,14 +108,14 @@ TEST(CornerBlend, ArcToArcStaysWithinTheDeviation) {
 
 TEST(CornerBlend, NoFilletWhereNoneBelongs) {
   const Segment a = line(p3(0, 0), p3(10, 0));
-  EXPECT_FALSE(blend_corner(a, line(p3(10, 0), p3(20, 0)), 0.05, 5, 5));   // collinear
-  EXPECT_FALSE(blend_corner(a, line(p3(10, 0), p3(0, 0)), 0.05, 5, 5));    // reversal
-  EXPECT_FALSE(blend_corner(a, line(p3(10, 0), p3(10, 5, 5)), 0.05, 5, 5)); // corner in space
-  EXPECT_FALSE(blend_corner(a, line(p3(10, 0), p3(10, 10)), 0.0, 5, 5));   // no tolerance
-  EXPECT_FALSE(blend_corner(a, line(p3(10, 0), p3(10, 10)), 0.05, 0, 5));  // nothing may be trimmed
+  EXPECT_FALSE(blend_corner(a, line(p3(10, 0), p3(20, 0)), {0.05, 5, 5}));   // collinear
+  EXPECT_FALSE(blend_corner(a, line(p3(10, 0), p3(0, 0)), {0.05, 5, 5}));    // reversal
+  EXPECT_FALSE(blend_corner(a, line(p3(10, 0), p3(10, 5, 5)), {0.05, 5, 5})); // corner in space
+  EXPECT_FALSE(blend_corner(a, line(p3(10, 0), p3(10, 10)), {0.0, 5, 5}));   // no tolerance
+  EXPECT_FALSE(blend_corner(a, line(p3(10, 0), p3(10, 10)), {0.05, 0, 5}));  // nothing may be trimmed
   // A helix after the corner: its Z moves.
   const Segment helix = *make_arc_center(p3(10, 0), p3(10, 10, 2), 3, 0, 1, 10, 5, true);
-  EXPECT_FALSE(blend_corner(a, helix, 0.05, 5, 5));
+  EXPECT_FALSE(blend_corner(a, helix, {0.05, 5, 5}));
 }
 
 // Two ccw arcs with a gentle right kink (from a random program that broke
@@ -125,7 +125,7 @@ TEST(CornerBlend, NoFilletWhereNoneBelongs) {
 TEST(CornerBlend, GentleKinkBetweenArcsKeepsAFiniteExactFillet) {
   const Segment a = arc(p3(-9.634, 9.988), p3(20.840, 22.069), 5.603, 16.0285, true);
   const Segment b = arc(p3(20.840, 22.069), p3(-29.138, 8.678), -4.149, 15.3735, true);
-  const auto cb = blend_corner(a, b, 0.05, 0.45 * a.length(), 0.45 * b.length());
+  const auto cb = blend_corner(a, b, {0.05, 0.45 * a.length(), 0.45 * b.length()});
   ASSERT_TRUE(cb);
   EXPECT_LE(cb->radius_mm, 1e4);
   EXPECT_GT(cb->radius_mm, 1e3);

@@ -36,7 +36,7 @@ void expect_joined(const CornerBlend& cb) {
 
 TEST(CornerParabola, RightAngleBetweenLinesHasTheClosedForm) {
   const Segment a = line(p3(0, 0), p3(1, 0)), b = line(p3(1, 0), p3(1, 1));
-  const auto cb = blend_corner_parabola(a, b, 0.01, 0.45, 0.45);
+  const auto cb = blend_corner_parabola(a, b, {0.01, 0.45, 0.45});
   ASSERT_TRUE(cb);
   ASSERT_EQ(cb->corner.kind(), SegmentKind::parabola);
   // leg = 4 PATH_DEV / |t_out - t_in| = 0.04 / sqrt 2; the control point is the corner.
@@ -64,7 +64,7 @@ TEST(CornerParabola, RightAngleBetweenLinesHasTheClosedForm) {
 // axes accelerate constantly, X braking to 0 while Y speeds up from 0.
 TEST(CornerParabola, UniformPathSpeedGivesEveryAxisAConstantAcceleration) {
   const Segment a = line(p3(0, 0), p3(1, 0)), b = line(p3(1, 0), p3(1, 1));
-  const auto cb = blend_corner_parabola(a, b, 0.01, 0.45, 0.45);
+  const auto cb = blend_corner_parabola(a, b, {0.01, 0.45, 0.45});
   ASSERT_TRUE(cb);
   const Segment& z = cb->corner;
   const double h = z.length() / 40, len2 = z.length() * z.length();
@@ -96,7 +96,7 @@ TEST(CornerParabola, LineArcAndArcLineAreTangentOnTheCircleAndWithinPathDev) {
   const Segment semi = arc(p3(2, 0), p3(2.5, 0), 2.25, 0, false);
   const Segment next = line(p3(2.5, 0), p3(4.5, 0));
   for (const auto& [a, b] : {std::pair{chord, semi}, std::pair{semi, next}}) {
-    const auto cb = blend_corner_parabola(a, b, 0.01, 0.45 * a.length(), 0.45 * b.length());
+    const auto cb = blend_corner_parabola(a, b, {0.01, 0.45 * a.length(), 0.45 * b.length()});
     ASSERT_TRUE(cb);
     EXPECT_EQ(cb->corner.kind(), SegmentKind::parabola);
     expect_joined(*cb);
@@ -117,7 +117,7 @@ TEST(CornerParabola, LineArcAndArcLineAreTangentOnTheCircleAndWithinPathDev) {
 
 TEST(CornerParabola, RemainderIsTheSameCurveAndSpeedLaw) {
   const Segment a = line(p3(0, 0, 1), p3(1, 0, 1)), b = line(p3(1, 0, 1), p3(1.5, 0.8, 1));
-  const auto cb = blend_corner_parabola(a, b, 0.02, 0.45, 0.45);
+  const auto cb = blend_corner_parabola(a, b, {0.02, 0.45, 0.45});
   ASSERT_TRUE(cb);
   const double s0 = 0.3 * cb->corner.length();
   const Segment rest = cb->corner.remainder(s0);
@@ -137,7 +137,7 @@ TEST(CornerParabola, RemainderIsTheSameCurveAndSpeedLaw) {
 // joined again it is the same parabola, bit for bit.
 TEST(CornerParabola, TailAndJoinedKeepItBitForBit) {
   const Segment a = line(p3(0, 0), p3(1, 0)), b = line(p3(1, 0), p3(1, 1));
-  const auto cb = blend_corner_parabola(a, b, 0.01, 0.45, 0.45);
+  const auto cb = blend_corner_parabola(a, b, {0.01, 0.45, 0.45});
   ASSERT_TRUE(cb);
   const Segment back = Segment::joined(cb->corner.start_point(), cb->corner.tail());
   EXPECT_EQ(back.kind(), SegmentKind::parabola);
@@ -151,10 +151,10 @@ TEST(CornerParabola, TailAndJoinedKeepItBitForBit) {
 
 TEST(CornerParabola, NoneBetweenTwoArcsOrAtAReversal) {
   const Segment a1 = arc(p3(0, 0), p3(1, 1), 1, 0, true), a2 = arc(p3(1, 1), p3(2, 0), 1, 0, true);
-  EXPECT_FALSE(blend_corner_parabola(a1, arc(p3(1, 1), p3(0, 2), 0, 1, false), 0.01, 0.5, 0.5));
+  EXPECT_FALSE(blend_corner_parabola(a1, arc(p3(1, 1), p3(0, 2), 0, 1, false), {0.01, 0.5, 0.5}));
   (void)a2;
   const Segment there = line(p3(0, 0), p3(1, 0)), back = line(p3(1, 0), p3(0, 0));
-  EXPECT_FALSE(blend_corner_parabola(there, back, 0.01, 0.45, 0.45));
+  EXPECT_FALSE(blend_corner_parabola(there, back, {0.01, 0.45, 0.45}));
 }
 
 }  // namespace

@@ -284,5 +284,32 @@ TEST(PathProfile, PassIntoFilletBrakesInTheCrossingCycle) {
   EXPECT_GT(faster, 0u);
 }
 
+// Braking across the end (issue 43): besides the ceiling v_end (20), the
+// profile follows the staircase to standstill 0.2 mm past the end, so it
+// passes on slower than the ceiling, and no step brakes beyond a_dec; the
+// crossing cycle brakes on rather than holding. Without it, it passes at
+// the ceiling.
+TEST(PathProfile, BrakeThroughFollowsTheStaircaseAcrossTheEnd) {
+  const PathLimits l{100.0, 500.0, 500.0};
+  PathProfile across, plain;
+  ASSERT_TRUE(across.start(10.0, 80.0, l, 20.0));
+  across.brake_through(0.2);
+  ASSERT_TRUE(plain.start(10.0, 80.0, l, 20.0));
+  const Trace r = run_checked(across, 1.0, 100000), q = run_checked(plain, 1.0, 100000);
+  ASSERT_TRUE(r.finished && q.finished);
+  // The crossing cycle starts within one cycle's travel of the end, where the
+  // staircase allows about 14 mm/s; it brakes on rather than holding.
+  EXPECT_LE(across.v(), discrete_brake_velocity(0.2 + across.v() * kDt, 500.0, kDt) + 1e-9);
+  EXPECT_GT(across.v(), discrete_brake_velocity(0.2, 500.0, kDt) - 2 * 500.0 * kDt);
+  EXPECT_NEAR(plain.v(), 20.0, 500.0 * kDt);
+  // A staircase beyond the ceiling's reach changes nothing.
+  PathProfile far;
+  ASSERT_TRUE(far.start(10.0, 80.0, l, 20.0));
+  far.brake_through(100.0);
+  const Trace f = run_checked(far, 1.0, 100000);
+  EXPECT_EQ(f.steps, q.steps);
+  EXPECT_DOUBLE_EQ(far.v(), plain.v());
+}
+
 }  // namespace
 }  // namespace nck::motion

@@ -11,6 +11,7 @@
 
 #include "example_blocks.hpp"
 #include "nck/motion/junction.hpp"
+#include "nck/motion/path_profile.hpp"
 #include "nck/prep/lookahead_window.hpp"
 #include "nck/prep/planner.hpp"
 
@@ -45,12 +46,17 @@ struct Rig {
     drain();
     return out;
   }
-  // v_end of the motion commands, in order.
+  // The fastest the path may pass each motion command's end, in order: its
+  // v_end, or (braking across it) the staircase's speed there if lower.
   std::vector<double> ends(const std::string& text) {
     std::vector<double> v;
     for (const kernel::Command& c : run(text))
-      if (const auto* m = c.as<kernel::Motion>()) v.push_back(m->v_end_mm_s);
+      if (const auto* m = c.as<kernel::Motion>()) v.push_back(passing(*m));
     return v;
+  }
+  static double passing(const kernel::Motion& m) {
+    if (!(m.brake_beyond_mm > 0)) return m.v_end_mm_s;
+    return std::min(m.v_end_mm_s, motion::discrete_brake_velocity(m.brake_beyond_mm, m.limits.a_dec_mm_s2, 0.001));
   }
 
   const config::Machine& machine;
@@ -93,6 +99,31 @@ TEST(LookAhead, ShortBlocksAtTheEndLowerTheTransitionsBeforeThem) {
   EXPECT_LT(v[0], motion::entry_velocity_limit(0.03, 0, a, dt) + 1e-9);
   EXPECT_GT(v[0], 0.0);
   EXPECT_LT(v[0], 50.0);
+}
+
+// Blocks of two cycles' travel (0.1 mm at F3000 = 50 mm/s): holding every
+// end speed would cost each block its margins (one cycle's travel, one
+// braking step) and cap the path near 25 mm/s; braking across their ends
+// (braking_staircase.hpp) lets every transition pass at the feed, and only
+// the motions within braking distance of the stop brake across towards it.
+TEST(LookAhead, ShortChordsBrakeAcrossTheirEndsAndRunAtFeed) {
+  std::string program = "N1 G1 X0 F3000\n";
+  for (int i = 1; i <= 200; ++i) program += "X" + std::to_string(0.1 * i) + "\n";
+  program += "M30\n";
+  Rig r;
+  std::vector<const kernel::Motion*> motions;
+  const std::vector<kernel::Command> commands = r.run(program);
+  for (const kernel::Command& c : commands)
+    if (const auto* m = c.as<kernel::Motion>()) motions.push_back(m);
+  ASSERT_EQ(motions.size(), 200u);
+  for (std::size_t i = 0; i + 1 < motions.size(); ++i) {
+    EXPECT_DOUBLE_EQ(motions[i]->v_end_mm_s, 50.0) << i;
+    EXPECT_GT(motions[i]->brake_beyond_mm, 0.0) << i;
+  }
+  EXPECT_EQ(motions.back()->v_end_mm_s, 0.0);
+  // Far from the stop the staircase lies beyond the window's end; near it,
+  // it ends where the last block stops.
+  EXPECT_NEAR(motions[198]->brake_beyond_mm, 0.1, 1e-9);
 }
 
 TEST(LookAhead, LowerFeedIsReachedBeforeItsBlockAndHigherAfter) {

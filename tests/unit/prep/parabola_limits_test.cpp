@@ -34,7 +34,7 @@ struct Mill {
 motion::CornerBlend corner(double x0, double y0, double x1, double y1, double x2, double y2, double dev) {
   const motion::Segment a = *motion::make_line(p3(x0, y0), p3(x1, y1), 3);
   const motion::Segment b = *motion::make_line(p3(x1, y1), p3(x2, y2), 3);
-  return *motion::blend_corner_parabola(a, b, dev, 0.45 * a.length(), 0.45 * b.length());
+  return *motion::blend_corner_parabola(a, b, {dev, 0.45 * a.length(), 0.45 * b.length()});
 }
 
 TEST(ParabolaLimits, RightAngleAlongTheAxesEntersAtTheClosedForm) {
