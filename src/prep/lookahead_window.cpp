@@ -134,6 +134,8 @@ void LookAheadWindow::store(const PlannedCommand& c, bool linkable) {
       at(open - 1).end_cap_mm_s = c.v_entry_max_mm_s;
       e.prev_motion = open;
       raise_chain(seq);
+    } else if (linkable) {
+      at(open - 1).command.corner_stop = true;  // only the corner stops the path there
     }
   } else if (!is_transparent(c)) {
     open_motion_ = 0;

@@ -45,24 +45,27 @@ struct Motion {
   double brake_beyond_mm = 0;
   // #FACE / #CYL: the segment is Cartesian; every set point is mapped.
   motion::CaxTrafo trafo{};
-  bool measure = false;      // G100: the motion stops where the probe switches
+  bool measure : 1 = false;  // G100: the motion stops where the probe switches
   // The transition at its end may be passed at the full speed of both
   // motions: the corner and feed rules do not lower it below the slower
   // one's cruise (the planned v_end_mm_s may still be lower, for the
   // braking of the blocks after it). HSC runs its chains across such
-  // transitions. (A flag in the padding here: Command stays at 504 bytes;
+  // transitions. (Flags of one bit here: Command stays at 504 bytes;
   // at 512, the queue's entries fell on the same cache sets.)
-  bool passes_at_cruise = false;
+  bool passes_at_cruise : 1 = false;
   // It follows a fillet (corner blending) and passes in from it: then
   // start_a_mm_s2 is also the first step's acceleration when passing in
   // (what the rest of the fillet's turn in that step leaves of a_max; the
-  // fillet's own, lower, would apply otherwise). Padding too.
-  bool after_fillet = false;
+  // fillet's own, lower, would apply otherwise).
+  bool after_fillet : 1 = false;
   // A fillet follows and the path passes into it: the speed to pass at is
   // reached in the crossing cycle (PathProfile::pass_into_fillet; the
   // window keeps this motion's accelerations within what the fillet's
-  // first part leaves of a_max). Padding too.
-  bool into_fillet = false;
+  // first part leaves of a_max).
+  bool into_fillet : 1 = false;
+  // The path stops at its end only because the corner into the next
+  // motion lets no speed pass (time by cause: "corner", not acceleration).
+  bool corner_stop : 1 = false;
   // Bit j: axis j's handwheel offset is in its set point when the motion
   // ends (#SUPPRESS OFFSETS and #MCS ON leave it out); taken in or out
   // along the path.

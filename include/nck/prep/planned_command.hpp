@@ -75,6 +75,9 @@ struct PlannedCommand {
   // A fillet follows: it reaches the speed to pass at in the crossing
   // cycle (kernel::Motion::into_fillet; STEP only).
   bool into_fillet = false;
+  // It stops at its end only for the sharp corner into the next motion
+  // (kernel::Motion::corner_stop; the look-ahead window sets it).
+  bool corner_stop = false;
   // Starting from an exact stop right after moving, the first step's
   // acceleration (0: one cycle at standstill). The last step into the stop
   // and the first out of it fall into consecutive cycles; the planner takes

@@ -87,7 +87,7 @@ bool PathUnit::end_at_standstill(double dt_s) noexcept {
 
 void PathUnit::reset() noexcept {
   velocity_ = 0;
-  passing_ = reserve_ = starved_ = false;
+  passing_ = reserve_ = starved_ = out_of_corner_stop_ = false;
   hsc_chained_ = hsc_open_ = false;
   profile_.reset();
   // The next motion starts where the path stands, not at the end of a block
@@ -149,18 +149,19 @@ CycleCause PathUnit::classify(const Motion& m, const motion::ProfileSample& st, 
   const double v_max = profile_.limits().v_max_mm_s;
   const double tol = 1e-9 * std::max(1.0, cmd);
   if (profile_.override_ignored()) ovr = 1.0;
-  if (st.braking) return profile_.end_velocity() > 0 ? CycleCause::corner : CycleCause::braking;
+  if (st.braking) return profile_.end_velocity() > 0 || m.corner_stop ? CycleCause::corner : CycleCause::braking;
   if (v >= std::min(cmd, v_max) - tol && v > 0) return v_max < cmd - tol ? CycleCause::axis_velocity : CycleCause::feed;
   if (v >= std::min(cmd * ovr, v_max) - tol && v > 0) return CycleCause::override_;
   if (rising) {
-    if (ramp_ == CycleCause::none) ramp_ = last == CycleCause::corner && v_prev > 0 ? CycleCause::corner
-                                                                                 : CycleCause::accelerating;
+    const bool out_of_corner = out_of_corner_stop_ || (last == CycleCause::corner && v_prev > 0);
+    if (ramp_ == CycleCause::none) ramp_ = out_of_corner ? CycleCause::corner : CycleCause::accelerating;
     return ramp_;
   }
   // Holding the end speed over the last cycles before passing on.
   const double v_end = profile_.end_velocity();
   if (v_end > 0 && v <= v_end + tol) return CycleCause::corner;
   if (v == 0 && limit == 0) return CycleCause::wait;  // the coupling holds the path (spindle at rest)
+  if (v == 0 && out_of_corner_stop_) return CycleCause::corner;  // a cycle at rest in the corner
   return ovr < 1 ? CycleCause::override_ : CycleCause::braking;
 }
 

@@ -92,6 +92,7 @@ class PathUnit {
   bool moved_this_cycle_ = false, moved_last_cycle_ = false;  // the path advanced in this / the last cycle
   CycleCause cause_ = CycleCause::transition;
   CycleCause ramp_ = CycleCause::none;  // a speed-up under way: from standstill or out of a corner
+  bool out_of_corner_stop_ = false;     // the last motion stopped for its corner (Motion::corner_stop)
   // HSC: the motion starts a chain; it reaches the end of the queue (looked
   // at again when the queue grows, from queue size hsc_seen_ on).
   bool hsc_chained_ = false, hsc_open_ = false;
@@ -115,6 +116,7 @@ inline motion::ProfileSample PathUnit::step(const Motion& m, const CommandQueue&
   moved_this_cycle_ = st.v_mm_s > 0;
   velocity_ = st.v_mm_s;
   cause_ = classify(m, st, v_prev, ovr, cy);
+  if (st.finished || st.v_mm_s > 0) out_of_corner_stop_ = st.finished && m.corner_stop;
   return st;
 }
 

@@ -86,6 +86,15 @@ TEST(TimeByCause, Corner) {
   expect_dominant(run_program("corner", p), 20, "corner");
 }
 
+// A square of 4 mm sides at 100 mm/s on the mill: each 90° corner lets no
+// speed through, so the path stops there; braking into those stops and
+// speeding up out of them is "corner" (issue 43), as for a corner passed
+// at speed — not "acceleration", which an exact stop the program asks for
+// stays (ShortBlocksAreAccelerationLimitedNamingTheAxis).
+TEST(TimeByCause, StopAtASharpCornerIsCorner) {
+  expect_dominant(run_program("corner_stop", "G90 G0 X0 Y0 Z0\nG1 X4 F6000\nY4\nX0\nY0\nM30\n"), 3, "corner");
+}
+
 // The classes of every channel add up to its time; the last one to end
 // ran for the run's whole time.
 void expect_sums(const json& final, const std::string& what) {
