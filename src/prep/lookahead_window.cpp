@@ -172,8 +172,6 @@ void LookAheadWindow::settle(std::uint64_t seq, const Staircase* next) {
   if (!kept || (s.through && s.covers(e.stairs))) e.stairs = s;
 }
 
-double LookAheadWindow::entry_limit(const PlannedCommand& c) const { return holding_entry_limit(c, cycle_s_); }
-
 // Under a jerk-limited slope a fillet also keeps the contour's jerk within
 // what path_limits allows an arc (motion/limits.hpp): the lower speed and
 // tangential acceleration of the two, the ramp times of the blocks.

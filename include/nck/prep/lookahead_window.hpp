@@ -109,7 +109,6 @@ class LookAheadWindow {
   // left, nor one that a command which has left brakes across into.
   std::uint64_t first_open() const { return std::max(head_, fixed_end_); }
   void blend_across(PlannedCommand& c);
-  double entry_limit(const PlannedCommand& c) const;
   bool passes_at_cruise(std::uint64_t seq) const;
   bool blend(std::uint64_t prev, PlannedCommand& next);
   std::optional<motion::CornerBlend> corner_blend(const Entry& p, const PlannedCommand& next, const BlendDynamics& dyn,
