@@ -15,6 +15,7 @@
 #include "nck/run/stop_request.hpp"
 #include "nck/serve/access.hpp"
 #include "nck/serve/serve_api.hpp"
+#include "nck/serve/speed_range.hpp"
 
 namespace nck::app {
 namespace {
@@ -54,10 +55,10 @@ std::optional<std::string> read_token(const ServeOptions& opt, std::string& why)
 }
 
 std::optional<double> speed_of(const std::string& text) {
-  if (text == "max") return 0.0;
+  if (text == "max") return serve::kSpeedMax;
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0' || !(v > 0 && v <= 1000)) return std::nullopt;
+  if (end == text.c_str() || *end != '\0' || v == serve::kSpeedMax || !serve::speed_allowed(v)) return std::nullopt;
   return v;
 }
 
@@ -70,7 +71,9 @@ fs::path uploads_folder(const ServeOptions& opt) {
 
 int serve_command(const ServeOptions& opt) {
   const auto speed = speed_of(opt.speed);
-  if (!speed) return bad_options(fmt::format("--speed '{}' is neither a number in (0, 1000] nor 'max'", opt.speed));
+  if (!speed)
+    return bad_options(fmt::format("--speed '{}' is neither a number in {}..{} nor 'max'", opt.speed, serve::kMinSpeed,
+                                   serve::kMaxSpeed));
   std::string why;
   const auto token = read_token(opt, why);
   if (!token) return bad_options(why);

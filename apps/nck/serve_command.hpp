@@ -24,7 +24,8 @@ struct ServeOptions {
   double max_wall_s = 0;               // stop after this many seconds (tests, benchmarks)
 };
 
-// 0 after a stop signal or --max-wall, 2 when it cannot start.
+// 0 after --max-wall, 2 when it cannot start; after SIGINT/SIGTERM main_cli
+// makes it 130/143 (docs/api.md).
 int serve_command(const ServeOptions& opt);
 
 }  // namespace nck::app

@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "nck/serve/speed_range.hpp"
+
 namespace nck::app::serve {
 namespace {
 
@@ -48,6 +50,16 @@ class Reader {
     const double x = v->get<double>();
     if (!(x >= lowest && x <= highest))
       return fail(ErrorId::ApiBadValue, fmt::format("'{}' must lie in {}..{}", key, lowest, highest)), otherwise;
+    return x;
+  }
+  // A speed: "max" or 0 (as fast as possible), or kMinSpeed..kMaxSpeed.
+  double speed(const char* key) {
+    const json* v = field(key);
+    if (v && v->is_string() && v->get<std::string>() == "max") return kSpeedMax;
+    const double x = number(key, kSpeedMax, kMaxSpeed, true, 1);
+    if (ok_ && !speed_allowed(x))
+      fail(ErrorId::ApiBadValue, fmt::format("'{}' must be 0 or \"max\" (as fast as possible) or lie in {}..{}", key,
+                                             kMinSpeed, kMaxSpeed));
     return x;
   }
   std::string text(const char* key, std::size_t max_chars, bool required = true) {
@@ -189,7 +201,7 @@ bool other_command(const std::string& cmd, Reader& r, ApiCommand& out) {
   } else if (cmd == "speed") {
     r.only({"speed"});
     out.kind = K::speed;
-    out.speed = r.number("speed", 0, 1000);  // 0: as fast as possible
+    out.speed = r.speed("speed");
   } else {
     return false;
   }

@@ -119,6 +119,18 @@ TEST(ServeApiMessage, EveryBadMessageHasItsId) {
   EXPECT_EQ(refused(R"({"command":"speed","speed":1e9})"), ErrorId::ApiBadValue);
 }
 
+// issue 45, item 3: 1e-5 was accepted and froze the kernel (100 s per cycle).
+TEST(ServeApiMessage, TheSpeedRange) {
+  for (const char* body : {R"({"command":"speed","speed":1e-5})", R"({"command":"speed","speed":1e-300})",
+                           R"({"command":"speed","speed":0.00099})", R"({"command":"speed","speed":10001})",
+                           R"({"command":"speed","speed":-1})", R"({"command":"speed","speed":"fast"})"})
+    EXPECT_EQ(refused(body), ErrorId::ApiBadValue) << body;
+  EXPECT_EQ(good(R"({"command":"speed","speed":0.001})")->speed, 1e-3);
+  EXPECT_EQ(good(R"({"command":"speed","speed":10000})")->speed, 1e4);
+  EXPECT_EQ(good(R"({"command":"speed","speed":0})")->speed, 0.0);  // as fast as possible
+  EXPECT_EQ(good(R"({"command":"speed","speed":"max"})")->speed, 0.0);
+}
+
 TEST(ServeAccess, TokensCookiesAndNames) {
   const std::string t = make_token();
   EXPECT_EQ(t.size(), 32u);  // 128 bits
