@@ -96,9 +96,7 @@ int serve_command(const ServeOptions& opt) {
   }
   serve::ProgramFolders folders(roots, uploads_folder(opt), opt.max_program_bytes);
 
-  sim::DryRunOptions first;
-  first.prep_thread = true;
-  auto run = sim::DryRun::create(m, {}, first);
+  auto run = sim::DryRun::create(m, {}, serve::served_run_options(folders));
   if (!run) return bad_options(format(run.error()));
   auto first_run = std::make_unique<sim::DryRun>(std::move(*run));
   first_run->start_preparation_thread();

@@ -84,6 +84,15 @@ json errors_json() {
 
 }  // namespace
 
+sim::DryRunOptions served_run_options(const ProgramFolders& folders) {
+  sim::DryRunOptions o;
+  o.record_frames = true;  // positions in program coordinates
+  o.record_modal = true;
+  o.prep_thread = true;
+  o.allowed_roots = folders.roots();
+  return o;
+}
+
 ServeApi::ServeApi(const config::Machine& m, LiveKernel& kernel, ProgramFolders folders)
     : machine_(m), kernel_(kernel), folders_(std::move(folders)), programs_(m.channels.size()),
       serving_(kernel.current()) {}
@@ -195,11 +204,7 @@ std::optional<Diagnostic> ServeApi::load(std::size_t ch, const std::string& prog
 
 std::expected<std::unique_ptr<sim::DryRun>, Diagnostic> ServeApi::make_run(
     const std::optional<prep::SearchMark>& search, std::size_t search_channel) const {
-  sim::DryRunOptions o;
-  o.record_frames = true;  // positions in program coordinates
-  o.record_modal = true;
-  o.prep_thread = true;
-  o.allowed_roots = folders_.roots();
+  sim::DryRunOptions o = served_run_options(folders_);
   o.search = search;
   o.search_channel = search_channel;
   for (std::size_t ch = 0; ch < o.skip_masks.size(); ++ch) o.skip_masks[ch] = last_.channels[ch].hli.skip_mask;

@@ -4,7 +4,7 @@
 import fs from "node:fs";
 import path from "node:path";
 
-import { check, command, errorId, finish, request, runServe, sleep, startServer, state, stopServer,
+import { check, command, errorId, finish, readStream, request, runServe, sleep, startServer, state, stopServer,
          testArgs } from "./serve_client.mjs";
 
 const { nck, src, out } = testArgs("serve-hardening-out");
@@ -29,8 +29,35 @@ async function slowSpeeds() {
         `${JSON.stringify(ended)} after ${Date.now() - t0} ms`);
 }
 
+// Item 5: before the first load, MDI `L FILE` opened any file and its
+// diagnostics quoted the file's words.
+async function firstRunConfinement() {
+  const outside = path.join(out, "outside");
+  fs.mkdirSync(outside, { recursive: true });
+  const secret = path.join(outside, "secret.nc");
+  fs.writeFileSync(secret, "API_KEY=hunter2\n");
+  fs.mkdirSync(path.join(out, "cli"), { recursive: true });
+  fs.writeFileSync(path.join(out, "cli", "main.nc"), "G0 X1\nM30\n");
+  for (const [what, programs] of [["a fresh server", []], ["a server with a program named", [path.join(out, "cli", "main.nc")]]]) {
+    const s = await serve(programs);
+    try {
+      const stream = readStream(s, 1500);
+      await sleep(200);
+      const r = await command(s, { command: "mdi", text: `L ${secret}` });
+      const seen = (await stream).text;
+      check(`${what}: MDI L outside the folders -> 920120`, r.status !== 200 || seen.includes('"id":920120'),
+            `${r.status} ${seen.slice(-300)}`);
+      check(`${what}: no word of the file in any answer or event`, !/API_KEY|hunter2/.test(seen + r.body),
+            seen.slice(-300));
+    } finally {
+      await stopServer(s);
+    }
+  }
+}
+
 async function main() {
   await slowSpeeds();
+  await firstRunConfinement();
   finish();
 }
 main().catch((e) => { console.error(e); process.exit(1); });

@@ -20,6 +20,12 @@ namespace nck::app::serve {
 
 struct ApiCommand;
 
+// The options every served run is made with — the first one, made before
+// the API, too: preparation in its thread, block maps and modal states for
+// the state, and the folders every file a program or MDI opens must lie in
+// (an empty list would let the first run's MDI open any file).
+sim::DryRunOptions served_run_options(const ProgramFolders& folders);
+
 class ServeApi : public ApiHandler {
  public:
   ServeApi(const config::Machine& m, LiveKernel& kernel, ProgramFolders folders);
