@@ -2,8 +2,6 @@
 // the URL with its token, serve until SIGINT/SIGTERM (or --max-wall).
 #include "serve_command.hpp"
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -16,6 +14,7 @@
 #include "nck/serve/access.hpp"
 #include "nck/serve/serve_api.hpp"
 #include "nck/serve/speed_range.hpp"
+#include "nck/serve/uploads_folder.hpp"
 
 namespace nck::app {
 namespace {
@@ -62,9 +61,13 @@ std::optional<double> speed_of(const std::string& text) {
   return v;
 }
 
-fs::path uploads_folder(const ServeOptions& opt) {
-  if (!opt.uploads.empty()) return opt.uploads;
-  return fs::temp_directory_path() / fmt::format("nck-serve-{}-uploads", ::getpid());
+// --uploads, or a new private folder (removed at the end). `guarded`: the
+// folders it may neither be nor contain (besides the machine's cycle paths).
+std::expected<serve::UploadsFolder, Diagnostic> uploads_folder(const ServeOptions& opt, const config::Machine& m,
+                                                               std::vector<fs::path> guarded) {
+  if (opt.uploads.empty()) return serve::UploadsFolder::create_private();
+  guarded.insert(guarded.end(), m.cycle_paths.begin(), m.cycle_paths.end());
+  return serve::UploadsFolder::named(opt.uploads, guarded);
 }
 
 }  // namespace
@@ -94,7 +97,12 @@ int serve_command(const ServeOptions& opt) {
     roots.push_back(full.parent_path());
     programs.push_back(full.string());
   }
-  serve::ProgramFolders folders(roots, uploads_folder(opt), opt.max_program_bytes);
+  const auto uploads = uploads_folder(opt, m, roots);
+  if (!uploads) {
+    fmt::print(stderr, "{}\n", format(uploads.error()));
+    return 2;
+  }
+  serve::ProgramFolders folders(roots, uploads->path(), opt.max_program_bytes);
 
   auto run = sim::DryRun::create(m, {}, serve::served_run_options(folders));
   if (!run) return bad_options(format(run.error()));

@@ -183,12 +183,17 @@ HttpReply ServeApi::start_or_release(std::size_t ch, const sim::ScenarioAction& 
   return pass_on(cycle_start);
 }
 
-std::optional<Diagnostic> ServeApi::load(std::size_t ch, const std::string& program) {
+std::optional<std::size_t> ServeApi::busy_channel() const {
   for (std::size_t i = 0; i < last_.channel_count; ++i)
-    if (!channel_free(last_.channels[i].program_state))
-      return make_diagnostic(ErrorId::ApiChannelBusy, SourceLoc{"api", 1, 0},
-                             fmt::format("channel {} is {}: reset it or wait for its end", i + 1,
-                                         kernel::state_name(last_.channels[i].program_state)));
+    if (!channel_free(last_.channels[i].program_state)) return i;
+  return std::nullopt;
+}
+
+std::optional<Diagnostic> ServeApi::load(std::size_t ch, const std::string& program) {
+  if (const auto busy = busy_channel())
+    return make_diagnostic(ErrorId::ApiChannelBusy, SourceLoc{"api", 1, 0},
+                           fmt::format("channel {} is {}: reset it or wait for its end", *busy + 1,
+                                       kernel::state_name(last_.channels[*busy].program_state)));
   const auto path = folders_.resolve(program);
   if (!path) return path.error();
   const std::filesystem::path before = programs_[ch];
@@ -245,7 +250,14 @@ HttpReply ServeApi::program_text(std::string_view target) const {
 }
 
 HttpReply ServeApi::upload(std::string_view target, std::string_view body) {
-  const auto name = folders_.save_upload(query_value(target, "name"), body);
+  const std::string_view wanted = query_value(target, "name");
+  // A running program opens its subroutines when it calls them, and a
+  // restart reads the program again: while one runs, nothing it may read is
+  // replaced (new names are stored).
+  if (const auto busy = busy_channel(); busy && folders_.upload_exists(wanted))
+    return error_reply(409, ErrorId::ApiUploadReplacesRunning,
+                       fmt::format("channel {} runs a program: '{}' is not replaced meanwhile", *busy + 1, wanted));
+  const auto name = folders_.save_upload(wanted, body);
   if (!name) return error_reply(name.error().id == ErrorId::ApiTooLarge ? 413 : 400, name.error());
   return ok_json(json{{"ok", true}, {"program", *name}});
 }

@@ -55,9 +55,59 @@ async function firstRunConfinement() {
   }
 }
 
+// Item 6: the default uploads folder was /tmp/nck-serve-<pid>-uploads,
+// predictable, reused and never removed.
+async function privateUploads() {
+  const s = await serve([]);
+  let folder = "";
+  try {
+    const up = await request(s, "POST", "/api/v1/upload?name=job.nc", { body: "G0 X1\nM30\n" });
+    const load = await command(s, { command: "load", program: "job.nc" });
+    const program = JSON.parse((await request(s, "GET", "/api/v1/program?channel=1")).body);
+    folder = path.dirname(program.path ?? "");
+    check("an upload is stored and loaded", up.status === 200 && load.status === 200, up.body + load.body);
+    check("the uploads folder's name is not the pid's", !folder.includes(String(s.proc.pid)) && /nck-serve-uploads-/.test(folder),
+          folder);
+    check("the uploads folder is private (0700)", (fs.statSync(folder).mode & 0o777) === 0o700);
+  } finally {
+    await stopServer(s);
+  }
+  check("the uploads folder is removed at the end", folder !== "" && !fs.existsSync(folder), folder);
+}
+
+// Item 7: --uploads could name the machine folder (an upload replaced
+// startup.lis) or /proc/self.
+async function guardedUploads() {
+  const programs = path.join(out, "programs");
+  fs.mkdirSync(programs, { recursive: true });
+  for (const dir of ["examples/mill", "examples", "/proc/self", "/", programs]) {
+    const r = await runServe(nck, src, ["examples/mill", "--port", "0", "--no-realtime", "--programs", programs, "--uploads", dir], 3000);
+    check(`--uploads ${dir} is refused (exit 2, 940321)`, r.code === 2 && r.stderr.includes("940321"), `${r.code} ${r.signal} ${r.stderr}`);
+  }
+  const s = await serve(["--uploads", path.join(out, "uploads")]);
+  try {
+    const slow = "G1 X100 F10\nM30\n";  // ten minutes of feed
+    await request(s, "POST", "/api/v1/upload?name=slow.nc", { body: slow });
+    await command(s, { command: "load", program: "slow.nc" });
+    await command(s, { command: "cycle_start" });
+    await sleep(300);
+    const replace = await request(s, "POST", "/api/v1/upload?name=slow.nc", { body: "M30\n" });
+    check("while a program runs an upload replaces no file (409, 940313)", replace.status === 409 && errorId(replace) === 940313,
+          `${replace.status} ${replace.body}`);
+    check("the running program's file is unchanged", fs.readFileSync(path.join(out, "uploads", "slow.nc"), "utf8") === slow);
+    const other = await request(s, "POST", "/api/v1/upload?name=next.nc", { body: "M30\n" });
+    check("a new name is stored meanwhile", other.status === 200, other.body);
+  } finally {
+    await stopServer(s);
+  }
+  check("a named uploads folder stays", fs.existsSync(path.join(out, "uploads", "next.nc")));
+}
+
 async function main() {
   await slowSpeeds();
   await firstRunConfinement();
+  await privateUploads();
+  await guardedUploads();
   finish();
 }
 main().catch((e) => { console.error(e); process.exit(1); });

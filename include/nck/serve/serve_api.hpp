@@ -50,6 +50,8 @@ class ServeApi : public ApiHandler {
   HttpReply start_or_release(std::size_t ch, const sim::ScenarioAction& cycle_start);
   HttpReply program_text(std::string_view target) const;
   HttpReply upload(std::string_view target, std::string_view body);
+  // A channel that runs a program (not idle, ended or failed), if any.
+  std::optional<std::size_t> busy_channel() const;
   std::string state_frame();
   void drain_events(std::vector<std::string>& frames);
   void advance();

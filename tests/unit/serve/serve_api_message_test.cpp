@@ -174,6 +174,7 @@ TEST(ServeProgramFolders, NamesResolveInsideTheFoldersOnly) {
   std::ofstream(base / "outside" / "secret.nc") << "M30\n";
   std::ofstream(base / "progs" / "big.nc") << std::string(2000, 'X');
   fs::create_symlink(base / "outside" / "secret.nc", base / "progs" / "link.nc");
+  fs::create_directories(base / "uploads");
   const ProgramFolders f({base / "progs"}, base / "uploads", 1000);
   EXPECT_TRUE(f.resolve("a.nc"));
   EXPECT_TRUE(f.resolve("sub/b.nc"));
