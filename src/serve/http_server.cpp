@@ -25,6 +25,10 @@ using tcp = asio::ip::tcp;
 constexpr std::size_t kMaxHeaderBytes = 8 * 1024;
 constexpr auto kIdleTimeout = std::chrono::seconds(60);
 constexpr auto kWriteTimeout = std::chrono::seconds(10);
+// After a refusal sent before the body was read, the body still coming is
+// read and dropped for this long: a close with unread data resets the
+// connection, and the client would lose the answer while still sending.
+constexpr auto kDrainTimeout = std::chrono::seconds(2);
 
 }  // namespace
 
@@ -72,7 +76,7 @@ class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connect
 
   void start() { read_header(); }
   // One answer, then the connection goes (the client bound holds).
-  void refuse(const HttpReply& r) { reply(r, false); }
+  void refuse(const HttpReply& r) { reply(r, After::close); }
   // A stream frame (shared by every stream client); drops a client that lags.
   void send(const std::shared_ptr<const std::string>& frame) {
     if (outbox_.size() >= server_.limits.max_stream_backlog) return close();
@@ -86,33 +90,52 @@ class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connect
   }
 
  private:
+  // What follows an answer: the next request, the end, or the end after
+  // the unread body (drain).
+  enum class After : std::uint8_t { next_request, close, drain_and_close };
+
   void read_header() {
     parser_.emplace();
     parser_->header_limit(kMaxHeaderBytes);
+    // Beast checks a Content-Length against the body limit while it reads
+    // the header: its default (1 MiB) dropped larger uploads before
+    // on_header could raise it. The request's own limit is set there.
+    parser_->body_limit(server_.limits.largest_body());
     stream_.expires_after(kIdleTimeout);
     http::async_read_header(stream_, buffer_, *parser_,
                             [self = shared_from_this()](beast::error_code ec, std::size_t) { self->on_header(ec); });
   }
   void on_header(beast::error_code ec) {
+    if (ec == http::error::header_limit)
+      return reply(error_reply(431, ErrorId::ApiHeadersTooLarge,
+                               fmt::format("the headers are larger than {} bytes", kMaxHeaderBytes)),
+                   After::drain_and_close);
+    if (ec == http::error::body_limit || ec == http::error::bad_content_length) return too_large();
     if (ec) return close();
     const bool upload = parser_->get().target().starts_with("/api/v1/upload");
-    parser_->body_limit(upload ? server_.limits.max_upload_bytes : server_.limits.max_command_bytes);
+    const std::size_t limit = upload ? server_.limits.max_upload_bytes : server_.limits.max_command_bytes;
+    if (const auto length = parser_->content_length(); length && *length > limit) return too_large();
+    parser_->body_limit(limit);  // a chunked body is counted as it comes
     http::async_read(stream_, buffer_, *parser_,
                      [self = shared_from_this()](beast::error_code e, std::size_t) { self->on_request(e); });
   }
+  void too_large() {
+    reply(error_reply(413, ErrorId::ApiTooLarge, "the body is larger than this request accepts (docs/api.md)"),
+          After::drain_and_close);
+  }
   void on_request(beast::error_code ec) {
-    if (ec == http::error::body_limit)
-      return reply(error_reply(413, ErrorId::ApiTooLarge, "the body is larger than this request accepts"), false);
+    if (ec == http::error::body_limit) return too_large();
     if (ec) return close();
     const http::request<http::string_body>& req = parser_->get();
-    if (auto refused = server_.check(req, budget_)) return reply(*refused, req.keep_alive());
+    const After after = req.keep_alive() ? After::next_request : After::close;
+    if (auto refused = server_.check(req, budget_)) return reply(*refused, after);
     if (req.method() == http::verb::get && req.target() == "/api/v1/stream") return start_stream();
     const HttpRequest r{std::string_view(req.method_string().data(), req.method_string().size()),
                         std::string_view(req.target().data(), req.target().size()),
                         std::string_view(req.body().data(), req.body().size())};
-    reply(server_.handler.handle(r), req.keep_alive());
+    reply(server_.handler.handle(r), after);
   }
-  void reply(const HttpReply& r, bool keep_alive) {
+  void reply(const HttpReply& r, After after) {
     auto res = std::make_shared<http::response<http::string_body>>(static_cast<http::status>(r.status), 11);
     res->set(http::field::content_type, r.content_type);
     res->set(http::field::cache_control, "no-store");
@@ -120,12 +143,27 @@ class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connect
     res->set("X-Content-Type-Options", "nosniff");
     for (const auto& [k, v] : r.headers) res->set(k, v);
     res->body() = r.body;
-    res->keep_alive(keep_alive);
+    res->keep_alive(after == After::next_request);
     res->prepare_payload();
     stream_.expires_after(kWriteTimeout);
-    http::async_write(stream_, *res, [self = shared_from_this(), res](beast::error_code ec, std::size_t) {
-      if (ec || !res->keep_alive()) return self->close();
+    http::async_write(stream_, *res, [self = shared_from_this(), res, after](beast::error_code ec, std::size_t) {
+      if (ec || after == After::close) return self->close();
+      if (after == After::drain_and_close) return self->drain();
       self->read_header();
+    });
+  }
+  // The answer is out: the client's unread body is read and dropped until
+  // it closes or kDrainTimeout ends.
+  void drain() {
+    beast::error_code ec;
+    stream_.socket().shutdown(tcp::socket::shutdown_send, ec);
+    stream_.expires_after(kDrainTimeout);
+    drain_some();
+  }
+  void drain_some() {
+    stream_.async_read_some(asio::buffer(sink_), [self = shared_from_this()](beast::error_code ec, std::size_t) {
+      if (ec) return self->close();
+      self->drain_some();
     });
   }
   // The connection becomes a server-sent-events stream until either side closes it.

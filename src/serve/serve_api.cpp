@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 
 #include <fmt/format.h>
 
@@ -13,6 +12,7 @@
 #include "nck/run/start_at.hpp"
 #include "nck/serve/access.hpp"
 #include "nck/serve/api_message.hpp"
+#include "nck/serve/program_page.hpp"
 #include "nck/sim/operator_action.hpp"
 
 namespace nck::app::serve {
@@ -238,15 +238,10 @@ HttpReply ServeApi::program_text(std::string_view target) const {
   const std::string_view ch_text = query_value(target, "channel");
   std::size_t ch = ch_text.empty() ? 1 : static_cast<std::size_t>(std::atoi(std::string(ch_text).c_str()));
   if (ch < 1 || ch > programs_.size()) return error_reply(400, ErrorId::ApiBadValue, "'channel' is no channel of the machine");
-  const std::filesystem::path& p = programs_[ch - 1];
-  json lines = json::array();
-  if (!p.empty()) {
-    std::ifstream in(p, std::ios::binary);
-    std::string line;
-    std::size_t bytes = 0;
-    while (std::getline(in, line) && (bytes += line.size()) <= 2 * 1024 * 1024) lines.push_back(to_utf8(line));
-  }
-  return ok_json(json{{"channel", ch}, {"file", p.filename().string()}, {"path", p.string()}, {"lines", std::move(lines)}});
+  const std::string_view from_text = query_value(target, "from");
+  const long long from = from_text.empty() ? 1 : std::atoll(std::string(from_text).c_str());
+  if (from < 1) return error_reply(400, ErrorId::ApiBadValue, "'from' is a line number from 1 on");
+  return HttpReply{200, "application/json", program_page(ch, programs_[ch - 1], static_cast<std::size_t>(from)), {}};
 }
 
 HttpReply ServeApi::upload(std::string_view target, std::string_view body) {

@@ -103,11 +103,47 @@ async function guardedUploads() {
   check("a named uploads folder stays", fs.existsSync(path.join(out, "uploads", "next.nc")));
 }
 
+// Item 8: Beast's default body limit (1 MiB) dropped larger uploads
+// without a reply whatever --max-program said; too large headers and
+// Content-Lengths closed the connection without 431/413; the program's
+// text was bounded by its lines' bytes, not by the answer's.
+async function requestLimits() {
+  const maxProgram = 3 * 1024 * 1024;
+  const s = await serve(["--max-program", String(maxProgram)]);
+  try {
+    const fits = await request(s, "POST", "/api/v1/upload?name=big.nc", { body: ";".repeat(maxProgram) });
+    check("an upload of --max-program bytes (3 MiB) is stored", fits.status === 200, `${fits.status} ${fits.body.slice(0, 200)}`);
+    const over = await request(s, "POST", "/api/v1/upload?name=over.nc", { body: ";".repeat(maxProgram + 1) });
+    check("one byte more -> 413 with 940306", over.status === 413 && errorId(over) === 940306, `${over.status} ${over.body.slice(0, 200)}`);
+    const bigCommand = await request(s, "POST", "/api/v1/command", { body: " ".repeat(2 * 1024 * 1024) });
+    check("a 2 MiB command -> 413 with 940306", bigCommand.status === 413 && errorId(bigCommand) === 940306, `${bigCommand.status}`);
+    const huge = await request(s, "POST", "/api/v1/upload?name=huge.nc",
+                               { headers: { "Content-Length": "99999999999" } });
+    check("a Content-Length beyond every limit -> 413", huge.status === 413 && errorId(huge) === 940306, `${huge.status} ${huge.body}`);
+    const headers = await request(s, "GET", "/api/v1/state", { headers: { "X-Padding": "x".repeat(10 * 1024) } });
+    check("headers over 8 KiB -> 431 with 940314", headers.status === 431 && errorId(headers) === 940314, `${headers.status} ${headers.body}`);
+    const lower = await request(s, "GET", "/api/v1/state", { headers: { Authorization: `bearer ${s.token}` } });
+    check("Authorization: bearer (lower case) is accepted", lower.status === 200, `${lower.status}`);
+    const empty = await request(s, "POST", "/api/v1/upload?name=empty-lines.nc", { body: "\n".repeat(maxProgram) });
+    const load = await command(s, { command: "load", program: "empty-lines.nc" });
+    const page = await request(s, "GET", "/api/v1/program?channel=1");
+    const j = JSON.parse(page.body || "{}");
+    check("3 MiB of empty lines: the program's answer is at most 2 MiB and names the next page",
+          empty.status === 200 && load.status === 200 && page.body.length <= 2 * 1024 * 1024 + 4096 && j.next_line > 1,
+          `${page.status} ${page.body.length} bytes, next_line ${j.next_line}`);
+    const next = JSON.parse((await request(s, "GET", `/api/v1/program?channel=1&from=${j.next_line}`)).body || "{}");
+    check("the next page starts where the first ended", next.first_line === j.next_line && next.lines?.length > 0);
+  } finally {
+    await stopServer(s);
+  }
+}
+
 async function main() {
   await slowSpeeds();
   await firstRunConfinement();
   await privateUploads();
   await guardedUploads();
+  await requestLimits();
   finish();
 }
 main().catch((e) => { console.error(e); process.exit(1); });

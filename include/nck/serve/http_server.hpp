@@ -6,6 +6,7 @@
 // turns a connection into a server-sent-events stream that gets, every
 // `stream_period`, the frames the handler collects. Nothing a client sends
 // reaches the kernel but through the handler.
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -26,6 +27,7 @@ struct HttpLimits {
   std::size_t max_upload_bytes = 4 * 1024 * 1024;  // POST /api/v1/upload
   std::size_t max_stream_backlog = 64;   // frames a slow stream client may owe before it is dropped
   std::chrono::milliseconds stream_period{25};  // 40 snapshots per second
+  std::size_t largest_body() const { return std::max(max_command_bytes, max_upload_bytes); }
 };
 
 struct HttpRequest {
