@@ -119,6 +119,8 @@ int serve_command(const ServeOptions& opt) {
 
   serve::HttpLimits limits;
   limits.max_clients = opt.max_clients;
+  limits.max_anonymous_per_address = opt.max_anonymous;
+  limits.header_timeout = std::chrono::milliseconds(static_cast<std::int64_t>(opt.header_timeout_s * 1000));
   limits.requests_per_s = opt.rate;
   limits.max_upload_bytes = opt.max_program_bytes;
   std::optional<serve::HttpServer> server;

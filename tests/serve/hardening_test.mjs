@@ -2,6 +2,7 @@
 // 127.0.0.1: each section is one defect of the issue, checked the way it
 // was found. Usage: node tests/serve/hardening_test.mjs --nck BIN --source DIR --out DIR
 import fs from "node:fs";
+import net from "node:net";
 import path from "node:path";
 
 import { check, command, errorId, finish, readStream, request, runServe, sleep, startServer, state, stopServer,
@@ -138,12 +139,51 @@ async function requestLimits() {
   }
 }
 
+// Item 4: seven sockets that sent nothing took every slot of
+// --max-clients 8 (beside the HMI's stream) before any token was checked;
+// the operator's stop got 503 for 60 s.
+async function idleSockets() {
+  const s = await serve(["--max-clients", "8", "--header-timeout", "1.5"]);
+  const sockets = [];
+  try {
+    const stream = readStream(s, 3500);  // the HMI's connection, with the token
+    await sleep(200);
+    const closedAfter = [];
+    for (let i = 0; i < 7; ++i) {
+      const t0 = Date.now();
+      const sock = net.connect(s.port, "127.0.0.1");
+      sock.on("error", () => {});
+      sock.on("close", () => closedAfter.push(Date.now() - t0));
+      sock.answer = "";
+      sock.on("data", (d) => (sock.answer += d));  // reads what comes, so that the server's close is seen
+      sockets.push(sock);
+    }
+    await sleep(300);  // older than the grace in which a browser's connections are not evicted
+    const t0 = Date.now();
+    const stop = await command(s, { command: "stop" });
+    check("seven silent sockets and a stream: the operator's stop is served at once", stop.status === 200 && Date.now() - t0 < 1000,
+          `${stop.status} ${stop.body} after ${Date.now() - t0} ms`);
+    await sleep(2000);
+    check("the silent sockets are closed after the header timeout (1.5 s)", closedAfter.length === 7 &&
+          closedAfter.every((ms) => ms < 2600), closedAfter.join());
+    // the oldest made room (503, 940316: over 4 per address); the rest timed out (408, 940315)
+    check("each silent socket got 503 (940316) or 408 (940315)", sockets.every((x) =>
+          (x.answer.includes("503") && x.answer.includes('"id":940316')) || (x.answer.includes("408") && x.answer.includes('"id":940315'))) &&
+          sockets.some((x) => x.answer.includes("408")), sockets.map((x) => x.answer.split("\r\n")[0]).join());
+    check("the stream with the token stays", (await stream).status === 200);
+  } finally {
+    sockets.forEach((x) => x.destroy());
+    await stopServer(s);
+  }
+}
+
 async function main() {
   await slowSpeeds();
   await firstRunConfinement();
   await privateUploads();
   await guardedUploads();
   await requestLimits();
+  await idleSockets();
   finish();
 }
 main().catch((e) => { console.error(e); process.exit(1); });

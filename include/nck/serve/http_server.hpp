@@ -21,7 +21,9 @@
 namespace nck::app::serve {
 
 struct HttpLimits {
-  std::size_t max_clients = 8;
+  std::size_t max_clients = 8;           // beyond: the oldest connection without a token yet goes, else 503
+  std::size_t max_anonymous_per_address = 4;  // connections without a token yet, per address (the oldest goes)
+  std::chrono::milliseconds header_timeout{5000};  // a connection's complete request, until one had the token
   double requests_per_s = 50;            // per connection; beyond: 429
   std::size_t max_command_bytes = 64 * 1024;
   std::size_t max_upload_bytes = 4 * 1024 * 1024;  // POST /api/v1/upload
