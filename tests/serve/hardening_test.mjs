@@ -173,7 +173,8 @@ async function idleSockets() {
     check("the stream with the token stays", (await stream).status === 200);
   } finally {
     sockets.forEach((x) => x.destroy());
-    await stopServer(s);
+    const ended = await stopServer(s, "SIGINT");
+    check("SIGINT ends the server with exit 130 (docs/api.md)", ended?.code === 130, JSON.stringify(ended));
   }
 }
 
