@@ -315,6 +315,12 @@ int main_cli(int argc, char** argv) {
   servec->add_flag("--paused", serve.paused, "start with the kernel's cycles paused (step them from the API)");
   servec->add_option("--max-clients", serve.max_clients, "connections served at once (default 8)")
       ->check(number_at_least(1, true));
+  servec->add_option("--max-anonymous", serve.max_anonymous,
+                     "connections per address that have sent no token yet (default 4)")
+      ->check(number_at_least(1, true));
+  servec->add_option("--header-timeout", serve.header_timeout_s,
+                     "seconds a connection has for a complete request until one had the token (default 5)")
+      ->check(number_at_least(0.1, false));
   servec->add_option("--rate", serve.rate, "requests per second per connection (default 50)")
       ->check(number_at_least(1, false));
   servec->add_option("--max-program", serve.max_program_bytes, "largest program file in bytes (default 4 MiB)")

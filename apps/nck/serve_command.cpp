@@ -2,8 +2,6 @@
 // the URL with its token, serve until SIGINT/SIGTERM (or --max-wall).
 #include "serve_command.hpp"
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +13,8 @@
 #include "nck/run/stop_request.hpp"
 #include "nck/serve/access.hpp"
 #include "nck/serve/serve_api.hpp"
+#include "nck/serve/speed_range.hpp"
+#include "nck/serve/uploads_folder.hpp"
 
 namespace nck::app {
 namespace {
@@ -54,23 +54,29 @@ std::optional<std::string> read_token(const ServeOptions& opt, std::string& why)
 }
 
 std::optional<double> speed_of(const std::string& text) {
-  if (text == "max") return 0.0;
+  if (text == "max") return serve::kSpeedMax;
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0' || !(v > 0 && v <= 1000)) return std::nullopt;
+  if (end == text.c_str() || *end != '\0' || v == serve::kSpeedMax || !serve::speed_allowed(v)) return std::nullopt;
   return v;
 }
 
-fs::path uploads_folder(const ServeOptions& opt) {
-  if (!opt.uploads.empty()) return opt.uploads;
-  return fs::temp_directory_path() / fmt::format("nck-serve-{}-uploads", ::getpid());
+// --uploads, or a new private folder (removed at the end). `guarded`: the
+// folders it may neither be nor contain (besides the machine's cycle paths).
+std::expected<serve::UploadsFolder, Diagnostic> uploads_folder(const ServeOptions& opt, const config::Machine& m,
+                                                               std::vector<fs::path> guarded) {
+  if (opt.uploads.empty()) return serve::UploadsFolder::create_private();
+  guarded.insert(guarded.end(), m.cycle_paths.begin(), m.cycle_paths.end());
+  return serve::UploadsFolder::named(opt.uploads, guarded);
 }
 
 }  // namespace
 
 int serve_command(const ServeOptions& opt) {
   const auto speed = speed_of(opt.speed);
-  if (!speed) return bad_options(fmt::format("--speed '{}' is neither a number in (0, 1000] nor 'max'", opt.speed));
+  if (!speed)
+    return bad_options(fmt::format("--speed '{}' is neither a number in {}..{} nor 'max'", opt.speed, serve::kMinSpeed,
+                                   serve::kMaxSpeed));
   std::string why;
   const auto token = read_token(opt, why);
   if (!token) return bad_options(why);
@@ -91,11 +97,14 @@ int serve_command(const ServeOptions& opt) {
     roots.push_back(full.parent_path());
     programs.push_back(full.string());
   }
-  serve::ProgramFolders folders(roots, uploads_folder(opt), opt.max_program_bytes);
+  const auto uploads = uploads_folder(opt, m, roots);
+  if (!uploads) {
+    fmt::print(stderr, "{}\n", format(uploads.error()));
+    return 2;
+  }
+  serve::ProgramFolders folders(roots, uploads->path(), opt.max_program_bytes);
 
-  sim::DryRunOptions first;
-  first.prep_thread = true;
-  auto run = sim::DryRun::create(m, {}, first);
+  auto run = sim::DryRun::create(m, {}, serve::served_run_options(folders));
   if (!run) return bad_options(format(run.error()));
   auto first_run = std::make_unique<sim::DryRun>(std::move(*run));
   first_run->start_preparation_thread();
@@ -110,6 +119,8 @@ int serve_command(const ServeOptions& opt) {
 
   serve::HttpLimits limits;
   limits.max_clients = opt.max_clients;
+  limits.max_anonymous_per_address = opt.max_anonymous;
+  limits.header_timeout = std::chrono::milliseconds(static_cast<std::int64_t>(opt.header_timeout_s * 1000));
   limits.requests_per_s = opt.rate;
   limits.max_upload_bytes = opt.max_program_bytes;
   std::optional<serve::HttpServer> server;

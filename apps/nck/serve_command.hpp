@@ -18,13 +18,16 @@ struct ServeOptions {
   std::string speed = "1";             // simulated seconds per wall second, or "max"
   bool realtime = true;                // ask for SCHED_FIFO and locked memory
   bool paused = false;
-  std::size_t max_clients = 8;
+  std::size_t max_clients = 8;        // the last one kept for a request with the token
+  std::size_t max_anonymous = 4;       // connections without a token yet, per address
+  double header_timeout_s = 5;         // a complete request, until one brought the token
   double rate = 50;                    // requests per second per client
   std::size_t max_program_bytes = 4 * 1024 * 1024;
   double max_wall_s = 0;               // stop after this many seconds (tests, benchmarks)
 };
 
-// 0 after a stop signal or --max-wall, 2 when it cannot start.
+// 0 after --max-wall, 2 when it cannot start; after SIGINT/SIGTERM main_cli
+// makes it 130/143 (docs/api.md).
 int serve_command(const ServeOptions& opt);
 
 }  // namespace nck::app

@@ -49,8 +49,12 @@ std::string_view cookie_value(std::string_view cookie_header, std::string_view n
 }
 
 std::string_view bearer_token(std::string_view authorization) noexcept {
-  constexpr std::string_view kBearer = "Bearer ";
-  return authorization.starts_with(kBearer) ? trim(authorization.substr(kBearer.size())) : std::string_view{};
+  // The scheme is case-insensitive (RFC 9110, 11.1): "bearer" too.
+  constexpr std::string_view kBearer = "bearer ";
+  if (authorization.size() < kBearer.size()) return {};
+  for (std::size_t i = 0; i < kBearer.size(); ++i)
+    if ((authorization[i] | 0x20) != kBearer[i]) return {};  // ' ' | 0x20 is ' '
+  return trim(authorization.substr(kBearer.size()));
 }
 
 std::string_view query_value(std::string_view target, std::string_view name) noexcept {

@@ -4,9 +4,13 @@
 #include <array>
 #include <cmath>
 #include <initializer_list>
+#include <memory>
+#include <vector>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
+
+#include "nck/serve/speed_range.hpp"
 
 namespace nck::app::serve {
 namespace {
@@ -48,6 +52,22 @@ class Reader {
     const double x = v->get<double>();
     if (!(x >= lowest && x <= highest))
       return fail(ErrorId::ApiBadValue, fmt::format("'{}' must lie in {}..{}", key, lowest, highest)), otherwise;
+    return x;
+  }
+  // A speed: "max" or 0 (as fast as possible), or kMinSpeed..kMaxSpeed.
+  double speed(const char* key) {
+    const json* v = field(key);
+    if (v && v->is_string() && v->get<std::string>() == "max") return kSpeedMax;
+    const double x = number(key, kSpeedMax, kMaxSpeed, true, 1);
+    if (ok_ && !speed_allowed(x))
+      fail(ErrorId::ApiBadValue, fmt::format("'{}' must be 0 or \"max\" (as fast as possible) or lie in {}..{}", key,
+                                             kMinSpeed, kMaxSpeed));
+    return x;
+  }
+  // A whole number in lowest..highest (1.5 was taken as 1).
+  double whole(const char* key, double lowest, double highest, bool required = true, double otherwise = 0) {
+    const double x = number(key, lowest, highest, required, otherwise);
+    if (ok_ && std::floor(x) != x) fail(ErrorId::ApiBadValue, fmt::format("'{}' must be a whole number", key));
     return x;
   }
   std::string text(const char* key, std::size_t max_chars, bool required = true) {
@@ -94,6 +114,23 @@ class Reader {
   bool ok_ = true;
 };
 
+// A parser callback that notes the first key an object has twice in
+// `found` (the parser keeps the last silently: {"mask":1,"mask":512}).
+json::parser_callback_t duplicate_key_finder(std::string& found) {
+  auto open = std::make_shared<std::vector<std::vector<std::string>>>();  // the keys of each open object
+  return [open, &found](int, json::parse_event_t event, json& parsed) {
+    if (event == json::parse_event_t::object_start) open->emplace_back();
+    else if (event == json::parse_event_t::object_end && !open->empty()) open->pop_back();
+    else if (event == json::parse_event_t::key && !open->empty()) {
+      const std::string key = parsed.get<std::string>();
+      std::vector<std::string>& keys = open->back();
+      if (found.empty() && std::find(keys.begin(), keys.end(), key) != keys.end()) found = key;
+      keys.push_back(key);
+    }
+    return true;
+  };
+}
+
 // A name the Reader checked (at most 15 characters) as an action stores it.
 std::array<char, plc::kSpindleNameChars> fixed_name(const std::string& s) {
   std::array<char, plc::kSpindleNameChars> out{};
@@ -122,7 +159,7 @@ std::optional<sim::ActionPayload> operator_payload(const std::string& cmd, Reade
   if (cmd == "optional_stop") return OptionalStop{on()};
   if (cmd == "skip_mask") {
     r.only({"mask"});
-    return SkipMask{static_cast<std::uint32_t>(r.number("mask", 0, 1023))};
+    return SkipMask{static_cast<std::uint32_t>(r.whole("mask", 0, 1023))};
   }
   if (cmd == "feed_override" || cmd == "rapid_override") {
     r.only({"percent"});
@@ -189,7 +226,7 @@ bool other_command(const std::string& cmd, Reader& r, ApiCommand& out) {
   } else if (cmd == "speed") {
     r.only({"speed"});
     out.kind = K::speed;
-    out.speed = r.number("speed", 0, 1000);  // 0: as fast as possible
+    out.speed = r.speed("speed");
   } else {
     return false;
   }
@@ -204,9 +241,14 @@ std::optional<ApiCommand> parse_api_command(std::string_view body, std::size_t c
     diags.add(ErrorId::ApiTooLarge, loc, fmt::format("a command is at most {} bytes", kMaxCommandBytes));
     return std::nullopt;
   }
-  const json j = json::parse(body, nullptr, false);
+  std::string duplicate;
+  const json j = json::parse(body, duplicate_key_finder(duplicate), false);
   if (j.is_discarded() || !j.is_object()) {
     diags.add(ErrorId::ApiMalformedJson, loc, "the body is not one JSON object");
+    return std::nullopt;
+  }
+  if (!duplicate.empty()) {
+    diags.add(ErrorId::ApiMalformedJson, loc, fmt::format("the key '{}' appears twice in one object", duplicate.substr(0, 40)));
     return std::nullopt;
   }
   Reader r(j, diags);
@@ -216,8 +258,7 @@ std::optional<ApiCommand> parse_api_command(std::string_view body, std::size_t c
     return std::nullopt;
   }
   ApiCommand out;
-  const double channel = r.number("channel", 1, static_cast<double>(std::max<std::size_t>(channels, 1)), false, 1);
-  if (std::floor(channel) != channel) r.fail(ErrorId::ApiBadValue, "'channel' must be a whole number");
+  const double channel = r.whole("channel", 1, static_cast<double>(std::max<std::size_t>(channels, 1)), false, 1);
   out.channel = static_cast<std::uint8_t>(channel);
   const std::string cmd = cmd_it->get<std::string>();
   if (!other_command(cmd, r, out)) {

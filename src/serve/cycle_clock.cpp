@@ -21,21 +21,28 @@ std::int64_t now_ns() {
 
 }  // namespace
 
-void CycleClock::start() noexcept { deadline_ = from_ns(now_ns()); }
+void CycleClock::start() noexcept {
+  deadline_ = from_ns(now_ns());
+  wakes_seen_ = wake_requests_.load(std::memory_order_acquire);  // the setup's (a speed, a pause) are read anyway
+}
 
 std::uint32_t CycleClock::wait() noexcept {
   const double speed = speed_.load(std::memory_order_acquire);
   if (!(speed > 0)) {
     deadline_ = from_ns(now_ns());
+    wakes_seen_ = wake_requests_.load(std::memory_order_acquire);  // every cycle looks at its actions
     return kMaxSpeedBatch;
   }
-  // cycles per wake-up and the wall time they take at this speed
-  const double period_ns = static_cast<double>(cycle_ns_) / speed;
+  // cycles per wake-up and the wall time they take at this speed (held to
+  // the range: 1e-300 overflowed the deadline and ran flat out)
+  const double period_ns = static_cast<double>(cycle_ns_) / std::clamp(speed, kMinSpeed, kMaxSpeed);
   const auto batch = static_cast<std::uint32_t>(std::clamp(std::ceil(kMinWakeNs / period_ns), 1.0, 1e6));
   const auto step_ns = static_cast<std::int64_t>(period_ns * batch);
   std::int64_t next = to_ns(deadline_) + step_ns;
   deadline_ = from_ns(next);
-  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &deadline_, nullptr) == EINTR) {
+  if (!sleep_until(next)) {
+    deadline_ = from_ns(now_ns());
+    return 1;
   }
   const std::int64_t late_ns = now_ns() - next;
   record(late_ns);
@@ -43,6 +50,25 @@ std::uint32_t CycleClock::wait() noexcept {
   // make the kernel race to catch up: the deadlines start again from now.
   if (late_ns > kNsPerS) deadline_ = from_ns(now_ns());
   return batch;
+}
+
+bool CycleClock::sleep_until(std::int64_t deadline_ns) noexcept {
+  for (;;) {
+    const std::int64_t now = now_ns();
+    if (now >= deadline_ns) return true;
+    // The last stretch is slept whole (EINTR: the loop looks again).
+    const bool last = deadline_ns - now <= kMaxSleepNs;
+    const timespec until = from_ns(last ? deadline_ns : now + kMaxSleepNs);
+    clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &until, nullptr);
+    if (last) continue;
+    // A request made while the kernel was busy counts too: it may be an
+    // action pushed after the cycle took its queue.
+    const std::uint64_t requests = wake_requests_.load(std::memory_order_acquire);
+    if (requests != wakes_seen_) {
+      wakes_seen_ = requests;
+      return false;
+    }
+  }
 }
 
 void CycleClock::record(std::int64_t late_ns) noexcept {

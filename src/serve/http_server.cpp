@@ -1,6 +1,7 @@
 #include "nck/serve/http_server.hpp"
 
 #include <deque>
+#include <map>
 #include <optional>
 
 #include <boost/asio/ip/tcp.hpp>
@@ -25,6 +26,13 @@ using tcp = asio::ip::tcp;
 constexpr std::size_t kMaxHeaderBytes = 8 * 1024;
 constexpr auto kIdleTimeout = std::chrono::seconds(60);
 constexpr auto kWriteTimeout = std::chrono::seconds(10);
+// After a refusal sent before the body was read, the body still coming is
+// read and dropped for this long: a close with unread data resets the
+// connection, and the client would lose the answer while still sending.
+constexpr auto kDrainTimeout = std::chrono::seconds(2);
+// A connection younger than this is not evicted: a browser opens several
+// at once, and each is without a token until its request has been read.
+constexpr auto kEvictionGrace = std::chrono::milliseconds(250);
 
 }  // namespace
 
@@ -49,16 +57,23 @@ struct HttpServer::Impl {
   tcp::acceptor acceptor{io};
   std::optional<ServerNames> names;
   std::vector<std::weak_ptr<Connection>> streams;
-  std::size_t clients = 0;
+  std::size_t clients = 0;      // every connection (each one counted by its constructor)
+  std::deque<std::weak_ptr<Connection>> arrivals;  // oldest first: whom to evict
+  std::map<std::string, std::size_t> anonymous;  // per address: connections without a valid token yet
   asio::steady_timer tick{io};
   const std::atomic<bool>* stop = nullptr;
 
   Impl(ApiHandler& h, std::string t, HttpLimits l) : handler(h), token(std::move(t)), limits(l) {}
   void accept();
+  void admit(const std::shared_ptr<Connection>& c);
+  // Closes the oldest connection without a token (of `address`, or any); false when there is none.
+  bool evict_anonymous(const std::shared_ptr<Connection>& newcomer, const std::string* address, ErrorId why);
   void on_tick();
   // The checks every request passes; a refusal, or nothing when it may go on.
   std::optional<HttpReply> check(const http::request<http::string_body>& req, RequestBudget& budget) const;
   bool authorized(const http::request<http::string_body>& req) const;
+  // The request carries this server's token (header, cookie or the page's URL).
+  bool has_token(const http::request<http::string_body>& req) const;
 };
 
 // One client connection: requests one after the other, or a stream.
@@ -66,13 +81,29 @@ class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connect
  public:
   Connection(Impl& server, tcp::socket socket)
       : server_(server), stream_(std::move(socket)), budget_(server.limits.requests_per_s) {
+    beast::error_code ec;
+    address_ = stream_.socket().remote_endpoint(ec).address().to_string();
     ++server_.clients;
+    ++server_.anonymous[address_];
   }
-  ~Connection() { --server_.clients; }
+  ~Connection() { leave(); }
 
   void start() { read_header(); }
+  const std::string& address() const { return address_; }
+  bool anonymous() const { return !authenticated_ && counted_; }
+  bool young(std::chrono::steady_clock::time_point now) const { return now - born_ < kEvictionGrace; }
+  // Closed to make room for a newer connection: it brought no token in its
+  // time. It gets the reason unless it is sending an answer.
+  void evict(ErrorId why) {
+    leave();
+    if (writing_) return close();
+    reply(error_reply(503, why, why == ErrorId::ApiTooManyFromAddress
+                                    ? "this address holds too many connections without the token: the oldest goes"
+                                    : "too many clients are connected: one without the token makes room"),
+          After::close);
+  }
   // One answer, then the connection goes (the client bound holds).
-  void refuse(const HttpReply& r) { reply(r, false); }
+  void refuse(const HttpReply& r) { reply(r, After::close); }
   // A stream frame (shared by every stream client); drops a client that lags.
   void send(const std::shared_ptr<const std::string>& frame) {
     if (outbox_.size() >= server_.limits.max_stream_backlog) return close();
@@ -86,33 +117,77 @@ class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connect
   }
 
  private:
+  // What follows an answer: the next request, the end, or the end after
+  // the unread body (drain).
+  enum class After : std::uint8_t { next_request, close, drain_and_close };
+
   void read_header() {
     parser_.emplace();
     parser_->header_limit(kMaxHeaderBytes);
+    // Beast checks a Content-Length against the body limit while it reads
+    // the header: its default (1 MiB) dropped larger uploads before
+    // on_header could raise it. The request's own limit is set there.
+    parser_->body_limit(server_.limits.largest_body());
     stream_.expires_after(kIdleTimeout);
+    if (!authenticated_) watch_header_time();
     http::async_read_header(stream_, buffer_, *parser_,
                             [self = shared_from_this()](beast::error_code ec, std::size_t) { self->on_header(ec); });
   }
+  // Until a request brought the token, a connection that sends nothing
+  // holds a slot only the header timeout (seven silent sockets locked the
+  // operator out for 60 s). A timer of its own, not the stream's timeout:
+  // that one closes the socket, and the 408 would not get out.
+  void watch_header_time() {
+    header_timer_.expires_after(server_.limits.header_timeout);
+    header_timer_.async_wait([weak = weak_from_this()](beast::error_code ec) {
+      const auto self = weak.lock();
+      if (ec || !self) return;
+      self->header_late_ = true;
+      beast::error_code ignored;
+      self->stream_.socket().cancel(ignored);  // the read ends with operation_aborted
+    });
+  }
   void on_header(beast::error_code ec) {
+    if (header_late_) return request_timeout();
+    if (ec == http::error::header_limit)
+      return reply(error_reply(431, ErrorId::ApiHeadersTooLarge,
+                               fmt::format("the headers are larger than {} bytes", kMaxHeaderBytes)),
+                   After::drain_and_close);
+    if (ec == http::error::body_limit || ec == http::error::bad_content_length) return too_large();
     if (ec) return close();
     const bool upload = parser_->get().target().starts_with("/api/v1/upload");
-    parser_->body_limit(upload ? server_.limits.max_upload_bytes : server_.limits.max_command_bytes);
+    const std::size_t limit = upload ? server_.limits.max_upload_bytes : server_.limits.max_command_bytes;
+    if (const auto length = parser_->content_length(); length && *length > limit) return too_large();
+    parser_->body_limit(limit);  // a chunked body is counted as it comes
     http::async_read(stream_, buffer_, *parser_,
                      [self = shared_from_this()](beast::error_code e, std::size_t) { self->on_request(e); });
   }
+  void too_large() {
+    reply(error_reply(413, ErrorId::ApiTooLarge, "the body is larger than this request accepts (docs/api.md)"),
+          After::drain_and_close);
+  }
+  void request_timeout() {
+    reply(error_reply(408, ErrorId::ApiRequestTimeout, "no complete request with the token in time"), After::close);
+  }
   void on_request(beast::error_code ec) {
-    if (ec == http::error::body_limit)
-      return reply(error_reply(413, ErrorId::ApiTooLarge, "the body is larger than this request accepts"), false);
+    header_timer_.cancel();  // the whole request came (or failed) in time
+    if (header_late_) return request_timeout();
+    if (ec == http::error::body_limit) return too_large();
     if (ec) return close();
     const http::request<http::string_body>& req = parser_->get();
-    if (auto refused = server_.check(req, budget_)) return reply(*refused, req.keep_alive());
+    const After after = req.keep_alive() ? After::next_request : After::close;
+    if (!authenticated_ && counted_ && server_.has_token(req)) {
+      forget_anonymous();
+      authenticated_ = true;
+    }
+    if (auto refused = server_.check(req, budget_)) return reply(*refused, after);
     if (req.method() == http::verb::get && req.target() == "/api/v1/stream") return start_stream();
     const HttpRequest r{std::string_view(req.method_string().data(), req.method_string().size()),
                         std::string_view(req.target().data(), req.target().size()),
                         std::string_view(req.body().data(), req.body().size())};
-    reply(server_.handler.handle(r), req.keep_alive());
+    reply(server_.handler.handle(r), after);
   }
-  void reply(const HttpReply& r, bool keep_alive) {
+  void reply(const HttpReply& r, After after) {
     auto res = std::make_shared<http::response<http::string_body>>(static_cast<http::status>(r.status), 11);
     res->set(http::field::content_type, r.content_type);
     res->set(http::field::cache_control, "no-store");
@@ -120,12 +195,29 @@ class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connect
     res->set("X-Content-Type-Options", "nosniff");
     for (const auto& [k, v] : r.headers) res->set(k, v);
     res->body() = r.body;
-    res->keep_alive(keep_alive);
+    res->keep_alive(after == After::next_request);
     res->prepare_payload();
     stream_.expires_after(kWriteTimeout);
-    http::async_write(stream_, *res, [self = shared_from_this(), res](beast::error_code ec, std::size_t) {
-      if (ec || !res->keep_alive()) return self->close();
+    writing_ = true;
+    http::async_write(stream_, *res, [self = shared_from_this(), res, after](beast::error_code ec, std::size_t) {
+      self->writing_ = false;
+      if (ec || after == After::close) return self->close();
+      if (after == After::drain_and_close) return self->drain();
       self->read_header();
+    });
+  }
+  // The answer is out: the client's unread body is read and dropped until
+  // it closes or kDrainTimeout ends.
+  void drain() {
+    beast::error_code ec;
+    stream_.socket().shutdown(tcp::socket::shutdown_send, ec);
+    stream_.expires_after(kDrainTimeout);
+    drain_some();
+  }
+  void drain_some() {
+    stream_.async_read_some(asio::buffer(sink_), [self = shared_from_this()](beast::error_code ec, std::size_t) {
+      if (ec) return self->close();
+      self->drain_some();
     });
   }
   // The connection becomes a server-sent-events stream until either side closes it.
@@ -155,8 +247,27 @@ class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connect
                       });
   }
 
+  // The server's counts without this connection (once).
+  void leave() {
+    if (!counted_) return;
+    if (!authenticated_) forget_anonymous();
+    --server_.clients;
+    counted_ = false;
+  }
+  void forget_anonymous() {
+    if (const auto it = server_.anonymous.find(address_); it != server_.anonymous.end() && --it->second == 0)
+      server_.anonymous.erase(it);
+  }
+
   Impl& server_;
+  std::string address_;
+  bool authenticated_ = false;  // a request brought the token
+  bool counted_ = true;         // in the server's counts (until evicted or gone)
+  bool writing_ = false;        // an answer is on its way
+  std::chrono::steady_clock::time_point born_ = std::chrono::steady_clock::now();
+  bool header_late_ = false;    // the header timeout ended the read
   beast::tcp_stream stream_;
+  asio::steady_timer header_timer_{stream_.get_executor()};  // after stream_: made from it
   beast::flat_buffer buffer_;
   std::optional<http::request_parser<http::string_body>> parser_;
   RequestBudget budget_;
@@ -168,14 +279,44 @@ void HttpServer::Impl::accept() {
   acceptor.async_accept([this](beast::error_code ec, tcp::socket socket) {
     if (!ec) {
       auto c = std::make_shared<Connection>(*this, std::move(socket));
-      if (clients > limits.max_clients) {
-        c->refuse(error_reply(503, ErrorId::ApiTooManyClients, "too many clients are connected"));
-      } else {
-        c->start();
-      }
+      admit(c);
     }
     if (acceptor.is_open()) accept();
   });
+}
+
+// A connection that has brought no token yet (and is older than
+// kEvictionGrace) yields its slot to a newer one: silent sockets (held at
+// most the header timeout anyway) never lock the operator out. Per address
+// at most max_anonymous_per_address of them; past the client bound the
+// oldest anonymous one goes, and only when none can go is the newcomer
+// refused.
+void HttpServer::Impl::admit(const std::shared_ptr<Connection>& c) {
+  std::erase_if(arrivals, [](const std::weak_ptr<Connection>& w) { return w.expired(); });
+  arrivals.push_back(c);
+  if (anonymous[c->address()] > limits.max_anonymous_per_address)
+    (void)evict_anonymous(c, &c->address(), ErrorId::ApiTooManyFromAddress);
+  if (clients > limits.max_clients && !evict_anonymous(c, nullptr, ErrorId::ApiTooManyClients))
+    return c->refuse(error_reply(503, ErrorId::ApiTooManyClients, "too many clients are connected"));
+  c->start();
+}
+
+bool HttpServer::Impl::evict_anonymous(const std::shared_ptr<Connection>& newcomer, const std::string* address,
+                                       ErrorId why) {
+  const auto now = std::chrono::steady_clock::now();
+  for (const std::weak_ptr<Connection>& w : arrivals) {
+    const auto old = w.lock();
+    if (!old || old == newcomer || !old->anonymous() || old->young(now) || (address && old->address() != *address))
+      continue;
+    old->evict(why);
+    return true;
+  }
+  return false;
+}
+
+bool HttpServer::Impl::has_token(const http::request<http::string_body>& req) const {
+  const std::string_view target(req.target().data(), req.target().size());
+  return authorized(req) || same_token(query_value(target, "token"), token);
 }
 
 bool HttpServer::Impl::authorized(const http::request<http::string_body>& req) const {

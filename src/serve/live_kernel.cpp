@@ -59,6 +59,7 @@ std::string LiveKernel::start(bool realtime) {
 void LiveKernel::stop() {
   if (!thread_.joinable()) return;
   thread_.request_stop();
+  clock_.wake();  // a wait for a distant deadline ends now, not at the deadline
   thread_.join();
 }
 
@@ -66,6 +67,7 @@ bool LiveKernel::load(std::unique_ptr<sim::DryRun> next) {
   sim::DryRun* expected = nullptr;
   if (!incoming_.compare_exchange_strong(expected, next.get(), std::memory_order_acq_rel)) return false;
   (void)next.release();  // the kernel owns it now
+  clock_.wake();
   return true;
 }
 

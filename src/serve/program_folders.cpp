@@ -1,11 +1,11 @@
 #include "nck/serve/program_folders.hpp"
 
 #include <algorithm>
-#include <fstream>
 
 #include <fmt/format.h>
 
 #include "nck/core/path_within.hpp"
+#include "nck/serve/uploads_folder.hpp"
 
 namespace nck::app::serve {
 namespace fs = std::filesystem;
@@ -43,8 +43,6 @@ bool looks_like_program(const fs::path& p) {
 
 ProgramFolders::ProgramFolders(std::vector<fs::path> roots, fs::path uploads, std::uintmax_t max_bytes)
     : max_bytes_(max_bytes) {
-  std::error_code ec;
-  fs::create_directories(uploads, ec);
   uploads_ = canonical_or_empty(uploads);
   roots.push_back(uploads_);
   for (const fs::path& r : roots)
@@ -93,17 +91,14 @@ std::expected<std::string, Diagnostic> ProgramFolders::save_upload(std::string_v
   if (text.size() > max_bytes_)
     return std::unexpected(make_diagnostic(ErrorId::ApiTooLarge, SourceLoc{std::string(name), 0, 0},
                                            fmt::format("a program is at most {} bytes", max_bytes_)));
-  const fs::path target = uploads_ / std::string(name);
-  const fs::path part = uploads_ / (std::string(name) + ".part");
-  {
-    std::ofstream out(part, std::ios::binary | std::ios::trunc);
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    if (!out) return std::unexpected(refused(name, "the uploads folder cannot be written"));
-  }
-  std::error_code ec;
-  fs::rename(part, target, ec);  // a reader never sees half a program
-  if (ec) return std::unexpected(refused(name, "the uploads folder cannot be written"));
+  if (uploads_.empty() || !write_replacing(uploads_, name, text))
+    return std::unexpected(refused(name, "the uploads folder cannot be written"));
   return std::string(name);
+}
+
+bool ProgramFolders::upload_exists(std::string_view name) const {
+  std::error_code ec;
+  return plain_name(name) && !uploads_.empty() && fs::exists(fs::symlink_status(uploads_ / std::string(name), ec));
 }
 
 }  // namespace nck::app::serve

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 
 #include <fmt/format.h>
 
@@ -13,6 +12,7 @@
 #include "nck/run/start_at.hpp"
 #include "nck/serve/access.hpp"
 #include "nck/serve/api_message.hpp"
+#include "nck/serve/program_page.hpp"
 #include "nck/sim/operator_action.hpp"
 
 namespace nck::app::serve {
@@ -83,6 +83,15 @@ json errors_json() {
 }
 
 }  // namespace
+
+sim::DryRunOptions served_run_options(const ProgramFolders& folders) {
+  sim::DryRunOptions o;
+  o.record_frames = true;  // positions in program coordinates
+  o.record_modal = true;
+  o.prep_thread = true;
+  o.allowed_roots = folders.roots();
+  return o;
+}
 
 ServeApi::ServeApi(const config::Machine& m, LiveKernel& kernel, ProgramFolders folders)
     : machine_(m), kernel_(kernel), folders_(std::move(folders)), programs_(m.channels.size()),
@@ -174,12 +183,17 @@ HttpReply ServeApi::start_or_release(std::size_t ch, const sim::ScenarioAction& 
   return pass_on(cycle_start);
 }
 
-std::optional<Diagnostic> ServeApi::load(std::size_t ch, const std::string& program) {
+std::optional<std::size_t> ServeApi::busy_channel() const {
   for (std::size_t i = 0; i < last_.channel_count; ++i)
-    if (!channel_free(last_.channels[i].program_state))
-      return make_diagnostic(ErrorId::ApiChannelBusy, SourceLoc{"api", 1, 0},
-                             fmt::format("channel {} is {}: reset it or wait for its end", i + 1,
-                                         kernel::state_name(last_.channels[i].program_state)));
+    if (!channel_free(last_.channels[i].program_state)) return i;
+  return std::nullopt;
+}
+
+std::optional<Diagnostic> ServeApi::load(std::size_t ch, const std::string& program) {
+  if (const auto busy = busy_channel())
+    return make_diagnostic(ErrorId::ApiChannelBusy, SourceLoc{"api", 1, 0},
+                           fmt::format("channel {} is {}: reset it or wait for its end", *busy + 1,
+                                       kernel::state_name(last_.channels[*busy].program_state)));
   const auto path = folders_.resolve(program);
   if (!path) return path.error();
   const std::filesystem::path before = programs_[ch];
@@ -195,11 +209,7 @@ std::optional<Diagnostic> ServeApi::load(std::size_t ch, const std::string& prog
 
 std::expected<std::unique_ptr<sim::DryRun>, Diagnostic> ServeApi::make_run(
     const std::optional<prep::SearchMark>& search, std::size_t search_channel) const {
-  sim::DryRunOptions o;
-  o.record_frames = true;  // positions in program coordinates
-  o.record_modal = true;
-  o.prep_thread = true;
-  o.allowed_roots = folders_.roots();
+  sim::DryRunOptions o = served_run_options(folders_);
   o.search = search;
   o.search_channel = search_channel;
   for (std::size_t ch = 0; ch < o.skip_masks.size(); ++ch) o.skip_masks[ch] = last_.channels[ch].hli.skip_mask;
@@ -228,19 +238,21 @@ HttpReply ServeApi::program_text(std::string_view target) const {
   const std::string_view ch_text = query_value(target, "channel");
   std::size_t ch = ch_text.empty() ? 1 : static_cast<std::size_t>(std::atoi(std::string(ch_text).c_str()));
   if (ch < 1 || ch > programs_.size()) return error_reply(400, ErrorId::ApiBadValue, "'channel' is no channel of the machine");
-  const std::filesystem::path& p = programs_[ch - 1];
-  json lines = json::array();
-  if (!p.empty()) {
-    std::ifstream in(p, std::ios::binary);
-    std::string line;
-    std::size_t bytes = 0;
-    while (std::getline(in, line) && (bytes += line.size()) <= 2 * 1024 * 1024) lines.push_back(to_utf8(line));
-  }
-  return ok_json(json{{"channel", ch}, {"file", p.filename().string()}, {"path", p.string()}, {"lines", std::move(lines)}});
+  const std::string_view from_text = query_value(target, "from");
+  const long long from = from_text.empty() ? 1 : std::atoll(std::string(from_text).c_str());
+  if (from < 1) return error_reply(400, ErrorId::ApiBadValue, "'from' is a line number from 1 on");
+  return HttpReply{200, "application/json", program_page(ch, programs_[ch - 1], static_cast<std::size_t>(from)), {}};
 }
 
 HttpReply ServeApi::upload(std::string_view target, std::string_view body) {
-  const auto name = folders_.save_upload(query_value(target, "name"), body);
+  const std::string_view wanted = query_value(target, "name");
+  // A running program opens its subroutines when it calls them, and a
+  // restart reads the program again: while one runs, nothing it may read is
+  // replaced (new names are stored).
+  if (const auto busy = busy_channel(); busy && folders_.upload_exists(wanted))
+    return error_reply(409, ErrorId::ApiUploadReplacesRunning,
+                       fmt::format("channel {} runs a program: '{}' is not replaced meanwhile", *busy + 1, wanted));
+  const auto name = folders_.save_upload(wanted, body);
   if (!name) return error_reply(name.error().id == ErrorId::ApiTooLarge ? 413 : 400, name.error());
   return ok_json(json{{"ok", true}, {"program", *name}});
 }

@@ -1,77 +1,22 @@
 // nck serve's API and its defences, through the real server on 127.0.0.1
 // (docs/api.md). Usage: node tests/serve/api_test.mjs --nck BIN --source DIR --out DIR
 // Starts its own servers on free ports (--port 0) and stops them.
-import { spawn } from "node:child_process";
 import fs from "node:fs";
 import http from "node:http";
 import path from "node:path";
 
-const args = Object.fromEntries(process.argv.slice(2).reduce((acc, a, i, all) => {
-  if (a.startsWith("--")) acc.push([a.slice(2), all[i + 1] ?? "1"]);
-  return acc;
-}, []));
-const nck = path.resolve(args.nck), src = path.resolve(args.source || "."), out = path.resolve(args.out || "serve-test-out");
-fs.rmSync(out, { recursive: true, force: true });
-fs.mkdirSync(out, { recursive: true });
-let failures = 0;
-const check = (name, cond, detail = "") => {
-  if (cond) console.log(`ok   ${name}`);
-  else { failures++; console.error(`FAIL ${name} ${detail}`); }
-};
-const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
+import { check, command as commandTo, errorId, finish, readStream, request as requestTo, sleep, startServer as start,
+         state, testArgs } from "./serve_client.mjs";
 
-// A server; resolves with {port, token, proc} once it printed its URL.
-function startServer(extra) {
-  return new Promise((resolve, reject) => {
-    const proc = spawn(nck, ["serve", "examples/mill", "--port", "0", "--no-realtime", ...extra], { cwd: src });
-    let text = "";
-    proc.stderr.on("data", (d) => process.stderr.write(d));
-    proc.stdout.on("data", (d) => {
-      text += d;
-      const m = text.match(/http:\/\/127\.0\.0\.1:(\d+)\/\?token=([0-9a-f]+)/);
-      if (m) resolve({ port: Number(m[1]), token: m[2], proc });
-    });
-    proc.on("exit", (code) => reject(new Error(`nck serve exited ${code} before its URL`)));
-  });
-}
+const { nck, src, out } = testArgs("serve-test-out");
+const startServer = (extra) => start(nck, src, extra);
 
 let agent = new http.Agent({ keepAlive: true, maxSockets: 1 });
 // The keep-alive connection counts as a client: closed between the phases.
 const freshAgent = () => { agent.destroy(); agent = new http.Agent({ keepAlive: true, maxSockets: 1 }); };
-// One request; resolves with {status, headers, body} (body "" on a reset connection).
-function request(s, method, target, { body, headers = {}, token = true, host, useAgent = false } = {}) {
-  return new Promise((resolve) => {
-    const h = host === "" ? { ...headers } : { Host: host ?? `127.0.0.1:${s.port}`, ...headers };
-    if (token) h.Authorization = `Bearer ${s.token}`;
-    if (body !== undefined) h["Content-Length"] = Buffer.byteLength(body);
-    const req = http.request({ host: "127.0.0.1", port: s.port, method, path: target, headers: h,
-                               setHost: false, agent: useAgent ? agent : false }, (res) => {
-      let data = "";
-      res.on("data", (c) => (data += c));
-      res.on("end", () => resolve({ status: res.statusCode, headers: res.headers, body: data }));
-      res.on("error", () => resolve({ status: res.statusCode, headers: res.headers, body: data }));
-    });
-    req.on("error", (e) => resolve({ status: 0, headers: {}, body: String(e) }));
-    if (body !== undefined) req.write(body);
-    req.end();
-  });
-}
-const command = (s, obj, opts = {}) => request(s, "POST", "/api/v1/command", { body: JSON.stringify(obj), ...opts });
-const state = async (s) => JSON.parse((await request(s, "GET", "/api/v1/state")).body);
-const errorId = (r) => { try { return JSON.parse(r.body).error.id; } catch { return null; } };
-
-// Reads a stream for `ms`; resolves with its text.
-function readStream(s, ms) {
-  return new Promise((resolve) => {
-    let text = "";
-    const req = http.get({ host: "127.0.0.1", port: s.port, path: "/api/v1/stream", agent: false,
-                           headers: { Host: `127.0.0.1:${s.port}`, Authorization: `Bearer ${s.token}` } }, (res) => {
-      res.on("data", (c) => (text += c));
-      setTimeout(() => { req.destroy(); resolve({ status: res.statusCode, text }); }, ms);
-    });
-    req.on("error", () => resolve({ status: 0, text }));
-  });
-}
+const withAgent = ({ useAgent = false, ...opts }) => ({ ...opts, agent: useAgent ? agent : false });
+const request = (s, method, target, opts = {}) => requestTo(s, method, target, withAgent(opts));
+const command = (s, obj, opts = {}) => commandTo(s, obj, withAgent(opts));
 
 async function authentication(s) {
   const endpoints = [["GET", "/api/v1/state"], ["GET", "/api/v1/machine"], ["GET", "/api/v1/errors"], ["GET", "/api/v1/parameters"],
@@ -218,7 +163,6 @@ async function main() {
     fast.proc.kill("SIGTERM");
   }
   agent.destroy();
-  console.log(failures ? `${failures} check(s) failed` : "all checks passed");
-  process.exit(failures ? 1 : 0);
+  finish();
 }
 main().catch((e) => { console.error(e); process.exit(1); });

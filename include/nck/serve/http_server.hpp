@@ -6,6 +6,7 @@
 // turns a connection into a server-sent-events stream that gets, every
 // `stream_period`, the frames the handler collects. Nothing a client sends
 // reaches the kernel but through the handler.
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -20,12 +21,15 @@
 namespace nck::app::serve {
 
 struct HttpLimits {
-  std::size_t max_clients = 8;
+  std::size_t max_clients = 8;           // beyond: the oldest connection without a token yet goes, else 503
+  std::size_t max_anonymous_per_address = 4;  // connections without a token yet, per address (the oldest goes)
+  std::chrono::milliseconds header_timeout{5000};  // a connection's complete request, until one had the token
   double requests_per_s = 50;            // per connection; beyond: 429
   std::size_t max_command_bytes = 64 * 1024;
   std::size_t max_upload_bytes = 4 * 1024 * 1024;  // POST /api/v1/upload
   std::size_t max_stream_backlog = 64;   // frames a slow stream client may owe before it is dropped
   std::chrono::milliseconds stream_period{25};  // 40 snapshots per second
+  std::size_t largest_body() const { return std::max(max_command_bytes, max_upload_bytes); }
 };
 
 struct HttpRequest {

@@ -55,15 +55,25 @@ class LiveKernel {
   sim::DryRun* current() const noexcept { return current_.load(std::memory_order_acquire); }
   std::unique_ptr<sim::DryRun> take_retired();
   // An operator action for the next cycle; false when the queue is full.
-  bool operate(const sim::ScenarioAction& a) noexcept { return actions_.push(a); }
+  bool operate(const sim::ScenarioAction& a) noexcept {
+    const bool queued = actions_.push(a);
+    clock_.wake();  // a slow speed's cycle is seconds away: the action is not
+    return queued;
+  }
   // The newest state, if one was published since the last call.
   bool take_snapshot() noexcept { return snapshots_.take(); }
   const LiveSnapshot& snapshot() const noexcept { return snapshots_.front(); }
   // Events in the order the kernel emitted them.
   SpscQueue<LiveEvent, kEventSlots>& events() noexcept { return events_; }
 
-  void set_paused(bool on) noexcept { paused_.store(on, std::memory_order_release); }
-  void step_one_cycle() noexcept { steps_.fetch_add(1, std::memory_order_acq_rel); }
+  void set_paused(bool on) noexcept {
+    paused_.store(on, std::memory_order_release);
+    clock_.wake();
+  }
+  void step_one_cycle() noexcept {
+    steps_.fetch_add(1, std::memory_order_acq_rel);
+    clock_.wake();
+  }
   // Simulated seconds per wall second; 0 runs as fast as the machine can.
   void set_speed(double speed) noexcept { clock_.set_speed(speed); }
 

@@ -18,8 +18,8 @@ namespace nck::app::serve {
 
 class ProgramFolders {
  public:
-  // roots: --programs folders first, then the machine folder; uploads: a
-  // folder of the server's own (created when missing).
+  // roots: --programs folders first, then the machine folder; uploads: the
+  // folder of the server's own (UploadsFolder: it exists).
   ProgramFolders(std::vector<std::filesystem::path> roots, std::filesystem::path uploads, std::uintmax_t max_bytes);
 
   // The program `name` names (relative to a folder, or absolute inside one).
@@ -28,8 +28,10 @@ class ProgramFolders {
   // wins), at most 1,000; lists, scenarios and notes (.lis .plc .md ...) left out.
   std::vector<std::string> list() const;
   // Stores an uploaded program under `name` (letters, digits, . _ -) in the
-  // uploads folder; its name for resolve().
+  // uploads folder (write_replacing: never through a link); its name for resolve().
   std::expected<std::string, Diagnostic> save_upload(std::string_view name, std::string_view text) const;
+  // The uploads folder holds a file `name` (an upload would replace it).
+  bool upload_exists(std::string_view name) const;
   // Every folder, canonical: what the decoder may open.
   const std::vector<std::filesystem::path>& roots() const { return roots_; }
   std::uintmax_t max_bytes() const { return max_bytes_; }

@@ -20,6 +20,12 @@ namespace nck::app::serve {
 
 struct ApiCommand;
 
+// The options every served run is made with — the first one, made before
+// the API, too: preparation in its thread, block maps and modal states for
+// the state, and the folders every file a program or MDI opens must lie in
+// (an empty list would let the first run's MDI open any file).
+sim::DryRunOptions served_run_options(const ProgramFolders& folders);
+
 class ServeApi : public ApiHandler {
  public:
   ServeApi(const config::Machine& m, LiveKernel& kernel, ProgramFolders folders);
@@ -44,6 +50,8 @@ class ServeApi : public ApiHandler {
   HttpReply start_or_release(std::size_t ch, const sim::ScenarioAction& cycle_start);
   HttpReply program_text(std::string_view target) const;
   HttpReply upload(std::string_view target, std::string_view body);
+  // A channel that runs a program (not idle, ended or failed), if any.
+  std::optional<std::size_t> busy_channel() const;
   std::string state_frame();
   void drain_events(std::vector<std::string>& frames);
   void advance();

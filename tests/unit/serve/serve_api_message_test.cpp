@@ -119,6 +119,29 @@ TEST(ServeApiMessage, EveryBadMessageHasItsId) {
   EXPECT_EQ(refused(R"({"command":"speed","speed":1e9})"), ErrorId::ApiBadValue);
 }
 
+// issue 45, item 3: 1e-5 was accepted and froze the kernel (100 s per cycle).
+TEST(ServeApiMessage, TheSpeedRange) {
+  for (const char* body : {R"({"command":"speed","speed":1e-5})", R"({"command":"speed","speed":1e-300})",
+                           R"({"command":"speed","speed":0.00099})", R"({"command":"speed","speed":10001})",
+                           R"({"command":"speed","speed":-1})", R"({"command":"speed","speed":"fast"})"})
+    EXPECT_EQ(refused(body), ErrorId::ApiBadValue) << body;
+  EXPECT_EQ(good(R"({"command":"speed","speed":0.001})")->speed, 1e-3);
+  EXPECT_EQ(good(R"({"command":"speed","speed":10000})")->speed, 1e4);
+  EXPECT_EQ(good(R"({"command":"speed","speed":0})")->speed, 0.0);  // as fast as possible
+  EXPECT_EQ(good(R"({"command":"speed","speed":"max"})")->speed, 0.0);
+}
+
+// issue 45: a fractional mask was cut to a whole one, and a key given twice
+// was taken as the last one silently.
+TEST(ServeApiMessage, WholeNumbersAndKeysOnce) {
+  EXPECT_EQ(refused(R"({"command":"skip_mask","mask":1.5})"), ErrorId::ApiBadValue);
+  EXPECT_EQ(line_of(R"({"command":"skip_mask","mask":3.0})"), "ch=1 skip_mask 3");
+  EXPECT_EQ(refused(R"({"command":"skip_mask","mask":1,"mask":512})"), ErrorId::ApiMalformedJson);
+  EXPECT_EQ(refused(R"({"command":"reset","command":"cycle_start"})"), ErrorId::ApiMalformedJson);
+  EXPECT_EQ(refused(R"({"command":"reset","x":{"a":1,"a":2}})"), ErrorId::ApiMalformedJson);
+  EXPECT_TRUE(good(R"({"command":"mdi","text":"G0 X1","channel":1})"));  // the same key in two objects is no duplicate
+}
+
 TEST(ServeAccess, TokensCookiesAndNames) {
   const std::string t = make_token();
   EXPECT_EQ(t.size(), 32u);  // 128 bits
@@ -131,6 +154,10 @@ TEST(ServeAccess, TokensCookiesAndNames) {
   EXPECT_EQ(cookie_value("xnck_token=abc", "nck_token"), "");
   EXPECT_EQ(bearer_token("Bearer  abc "), "abc");
   EXPECT_EQ(bearer_token("Basic abc"), "");
+  EXPECT_EQ(bearer_token("bearer abc"), "abc");  // the scheme is case-insensitive (RFC 9110)
+  EXPECT_EQ(bearer_token("BEARER abc"), "abc");
+  EXPECT_EQ(bearer_token("Bearerabc"), "");
+  EXPECT_EQ(bearer_token("bearer"), "");
   EXPECT_EQ(query_value("/?token=abc&x=1", "token"), "abc");
   EXPECT_EQ(query_value("/?x=1", "token"), "");
   const ServerNames names("127.0.0.1", 8765);
@@ -162,6 +189,7 @@ TEST(ServeProgramFolders, NamesResolveInsideTheFoldersOnly) {
   std::ofstream(base / "outside" / "secret.nc") << "M30\n";
   std::ofstream(base / "progs" / "big.nc") << std::string(2000, 'X');
   fs::create_symlink(base / "outside" / "secret.nc", base / "progs" / "link.nc");
+  fs::create_directories(base / "uploads");
   const ProgramFolders f({base / "progs"}, base / "uploads", 1000);
   EXPECT_TRUE(f.resolve("a.nc"));
   EXPECT_TRUE(f.resolve("sub/b.nc"));
