@@ -28,19 +28,17 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
     cy.emit(ev::Warning{{ErrorId::KernelCycleStartInError, {}, {}}});  // an operator action the state does not allow
   }
   if (done()) take_mdi();
+  if (in.reset && state_ == ProgramState::error) clear_error(cy);
   cause_ = done() ? CycleCause::none : CycleCause::transition;
   if (!done()) follow_stop(cy);
+  if (!done()) follow_reset(cy);
   if (!done()) {
-    if (in.reset) {
-      end_program(EndReason::reset, cy);
-    } else {
-      run_blocks(cy);
-      if (!done()) spindle_path_.follow_css(path_.position(), handwheel_.in_force_mm(), ctx);
-      if (!done()) {
-        // Running while a block's motion or dwell runs; waiting for a
-        // synchronisation or for blocks otherwise.
-        status_ = active_ && phase_ == Phase::body ? ChannelStatus::running : ChannelStatus::waiting;
-      }
+    run_blocks(cy);
+    if (!done()) spindle_path_.follow_css(path_.position(), handwheel_.in_force_mm(), ctx);
+    if (!done()) {
+      // Running while a block's motion or dwell runs; waiting for a
+      // synchronisation or for blocks otherwise.
+      status_ = active_ && phase_ == Phase::body ? ChannelStatus::running : ChannelStatus::waiting;
     }
   }
   if (jog_.moving()) move_jogged(cy);
@@ -55,6 +53,10 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
 void Channel::run_blocks(Cycle& cy) noexcept {
   for (;;) {
     if (!active_) {
+      if (resetting_ && !continues_braking()) {
+        end_program(EndReason::reset, cy);
+        break;
+      }
       if (state_ == ProgramState::hold) {
         if (manual_blocks_program(cy.in) || !hold_.released(cy.in)) {
           cause_ = CycleCause::hold;
@@ -356,6 +358,36 @@ void Channel::follow_stop(Cycle& cy) noexcept {
   cy.stopped = stopped_;
 }
 
+// A reset brakes the path along its path with the deceleration in force,
+// as a feedhold does, and ends the program once the path stands. The
+// spindles brake with their own ramps from the reset on (a thread's path
+// follows its spindle down); a spindle tracking a tap follows the path and
+// stops with it, so the tap is never torn. rt
+void Channel::follow_reset(Cycle& cy) noexcept {
+  if (cy.in.reset && !resetting_) {
+    resetting_ = true;
+    end_spindles(EndReason::reset, cy, spindle_path_.tap_spindle());
+  }
+  // A thread's path is not braked on its own: it follows its spindle down.
+  cy.resetting = resetting_ && !spindle_path_.threading();
+  if (resetting_ && !path_.moving()) end_program(EndReason::reset, cy);
+}
+
+// Between blocks while a reset brakes: the path still moving runs on into
+// the next motion (a transparent block passes as always).
+bool Channel::continues_braking() const noexcept {
+  if (!path_.moving() || commands_->empty()) return false;
+  const Command& next = commands_->front();
+  return next.is<Motion>() || next.is<Nop>();
+}
+
+// A reset after an error: the channel is idle again, ready for MDI or a
+// start, and its spindles leave their error states. rt
+void Channel::clear_error(Cycle& cy) noexcept {
+  end_spindles(EndReason::reset, cy);
+  set_state(ProgramState::idle, StateReason::reset, cy);
+}
+
 // MDI is done: the channel is idle again, ready for more.
 void Channel::finish_mdi(Cycle& cy) noexcept {
   set_state(ProgramState::idle, StateReason::mdi, cy);
@@ -431,7 +463,7 @@ void Channel::end_program(EndReason reason, Cycle& cy) noexcept {
     return;
   }
   ax_links_.end(reason, cy);
-  stopped_ = false;
+  stopped_ = resetting_ = false;
   const bool ok = reason == EndReason::m30 || reason == EndReason::m2;
   status_ = ok ? ChannelStatus::ended : ChannelStatus::aborted;
   active_ = false;
@@ -455,13 +487,13 @@ void Channel::end_program(EndReason reason, Cycle& cy) noexcept {
 
 // Program end keeps an endless rotation unless the HLI asks to stop it; a
 // reset or an abort stops the channel's spindles (unless P-AXIS-00455).
-void Channel::end_spindles(EndReason reason, Cycle& cy) noexcept {
+void Channel::end_spindles(EndReason reason, Cycle& cy, std::int8_t keep) noexcept {
   const bool ok = reason == EndReason::m30 || reason == EndReason::m2;
   const ChannelContext& ctx = cy.machine;
   for (std::int8_t s : spindles_) {
     if (s < 0 || static_cast<std::size_t>(s) >= ctx.spindle_count) continue;
     SpindleUnit& u = ctx.spindles[s];
-    if (u.channel != number_) continue;
+    if (u.channel != number_ || s == keep) continue;
     if (reason == EndReason::reset) {
       u.axis.reset();
     } else if (!ok) {

@@ -118,7 +118,8 @@ class Channel {
   std::uint32_t manual_axes(const ChannelInput& in) const noexcept;
   // the program
   void end_program(EndReason reason, Cycle& cy) noexcept;
-  void end_spindles(EndReason reason, Cycle& cy) noexcept;
+  // keep: a spindle that follows the path and stops with it (-1 none).
+  void end_spindles(EndReason reason, Cycle& cy, std::int8_t keep = -1) noexcept;
   // Raises what a unit reported (nothing once the channel is done); true
   // when it was a fault.
   bool fail(const Fault& f, Cycle& cy) noexcept;
@@ -129,6 +130,11 @@ class Channel {
   // error returns the channel to idle.
   void take_mdi() noexcept;
   void follow_stop(Cycle& cy) noexcept;
+  // A reset brakes the path, then ends the program; one after an error
+  // leaves the error state.
+  void follow_reset(Cycle& cy) noexcept;
+  void clear_error(Cycle& cy) noexcept;
+  bool continues_braking() const noexcept;
   void finish_mdi(Cycle& cy) noexcept;
   void fail_mdi(Cycle& cy) noexcept;
   // Block search's restart commands: the states they enter and leave.
@@ -151,6 +157,7 @@ class Channel {
   Command current_{};
   bool dropping_mdi_ = false;  // an MDI text failed: its commands left are dropped
   bool stopped_ = false;       // NC stop: held until cycle start
+  bool resetting_ = false;     // a reset brakes the path: the program ends at standstill
   // What this cycle went to (time by cause), set where the cycle stops.
   CycleCause cause_ = CycleCause::none;
   WaitReason wait_reason_ = WaitReason::plc_ack;

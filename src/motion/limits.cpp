@@ -70,8 +70,15 @@ void add_arc_plane(PathLimits& out, const Segment& seg, std::span<const AxisDyna
 }  // namespace
 
 JerkLimits jerk_limits(const PathLimits& l) noexcept {
-  return JerkLimits{l.a_acc_mm_s2, l.a_dec_mm_s2, l.tr.acc_up_s, l.tr.acc_down_s,
-                    l.tr.dec_up_s,   l.tr.dec_down_s, l.slope == SlopeProfile::sin2};
+  RampTimes t = l.tr;
+  if (l.slope == SlopeProfile::hsc) {
+    // HSC: the longest of the (weighted) ramp times is always in force
+    // (TF5200 P-CHAN-00071), in every phase.
+    const double longest_s = std::max({t.acc_up_s, t.acc_down_s, t.dec_up_s, t.dec_down_s});
+    t = RampTimes{longest_s, longest_s, longest_s, longest_s};
+  }
+  return JerkLimits{l.a_acc_mm_s2, l.a_dec_mm_s2, t.acc_up_s, t.acc_down_s,
+                    t.dec_up_s,    t.dec_down_s,  l.slope == SlopeProfile::sin2};
 }
 
 RampTimes longest(const RampTimes& a, const RampTimes& b) noexcept {

@@ -43,19 +43,29 @@ void PathProfile::start_jerk(double carry_mm, bool passing) noexcept {
 
 // A new plan from the state now over what is left of the segment (HSC:
 // of the chain).
-void PathProfile::replan_jerk(double target_mm_s) noexcept {
+void PathProfile::replan_jerk(double target_mm_s, bool may_keep) noexcept {
   const bool chain = chained();
   const JerkLimits l = jerk_limits(chain ? chain_.limits : limits_);
   const double length_mm = chain ? chain_.length_mm : length_mm_;
   const double v_end = chain ? std::min(chain_.v_end_mm_s, target_mm_s) : v_end_mm_s_;
   const Kinematics now{0.0, v_mm_s_, a_mm_s2_};
+  // Past the end only with a successor to go on braking in.
+  JerkPlan next;
+  const BlockPlanKind kind = plan_block(next, now, length_mm - s_mm_, target_mm_s, v_end, l, v_end > 0.0);
+  // A new target that a plan from here could only meet past the end: the
+  // plan in force meets the end speed (a plan that "just fits" cannot
+  // always be planned again from its own later states), and passing the
+  // end faster would break the corner's or the fillet's speed (an
+  // acceleration jump at a kink). It stays; the next segment takes the new
+  // target (a feedhold brakes on there, an override step rises there).
+  plan_target_mm_s_ = target_mm_s;
+  if (may_keep && !chain && kind == BlockPlanKind::overrun && plan_kind_ != BlockPlanKind::overrun) return;
+  plan_ = next;
+  plan_kind_ = kind;
   plan_s0_mm_ = s_mm_;
   t_s_ = 0.0;
-  plan_target_mm_s_ = target_mm_s;
   plan_end_mm_s_ = v_end_mm_s_;
   chain_changed_ = false;
-  // Past the end only with a successor to go on braking in.
-  plan_kind_ = plan_block(plan_, now, length_mm - s_mm_, target_mm_s, v_end, l, v_end > 0.0);
 }
 
 void PathProfile::set_chain(const PathChain& chain) noexcept {
@@ -82,7 +92,8 @@ ProfileSample PathProfile::step_jerk(double dt_s, double override_factor) noexce
   last_override_ = override_factor;
   const double target = target_velocity(override_factor);
   const bool chain_due = chain_changed_ && t_s_ + kChainReplanAheadS >= plan_.braking_from_s();
-  if (target != plan_target_mm_s_ || v_end_mm_s_ != plan_end_mm_s_ || chain_due) replan_jerk(target);
+  if (v_end_mm_s_ != plan_end_mm_s_ || chain_due) replan_jerk(target);
+  else if (target != plan_target_mm_s_) replan_jerk(target, true);
   const double t1 = t_s_ + dt_s;
   const Kinematics k = plan_.at(t1);
   const double s1 = plan_s0_mm_ + k.s_mm;

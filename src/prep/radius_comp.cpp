@@ -181,6 +181,20 @@ void RadiusComp::fail(const nc::Block& b, ErrorId id, std::string why, std::vect
   fail(b, block_error(id, b, std::move(why)).error(), out);
 }
 
+// b waits behind the last element, whose end needs the next motion in the
+// plane. A block that only repeats where the plane axes stand counts like one
+// without plane axes (TF5200 90011: blocks without motion data for the
+// compensation), so what waits is bounded whatever the program.
+void RadiusComp::hold(const nc::Block& b, std::vector<TrcOut>& out) {
+  if (queue_.back().held.size() >= kMaxHeld)
+    return fail(b, ErrorId::KernelTrcTooManyHeld,
+                fmt::format("more than {} blocks without motion in the plane follow each other under tool "
+                            "radius compensation",
+                            kMaxHeld),
+                out);
+  queue_.back().held.push_back(b);
+}
+
 void RadiusComp::push(const nc::Block& b, const Planner& planner, std::vector<TrcOut>& out) {
   planner_ = &planner;
   if (passes_through(b)) {
@@ -198,14 +212,7 @@ void RadiusComp::push(const nc::Block& b, const Planner& planner, std::vector<Tr
       out.push_back(TrcOut::of(b));
       return;
     }
-    if (queue_.back().held.size() >= kMaxHeld)
-      return fail(b, ErrorId::KernelTrcTooManyHeld,
-                  fmt::format("more than {} blocks without motion in the plane follow each other under tool "
-                              "radius compensation",
-                              kMaxHeld),
-                  out);
-    queue_.back().held.push_back(b);
-    return;
+    return hold(b, out);
   }
   if (queue_.empty())
     if (auto r = select_plane(b, planner); !r) return fail(b, r.error(), out);
@@ -216,9 +223,8 @@ void RadiusComp::push(const nc::Block& b, const Planner& planner, std::vector<Tr
     nc::Block still = b;
     still.axes[static_cast<std::size_t>(ax_a_)].reset();
     still.axes[static_cast<std::size_t>(ax_b_)].reset();
-    if (queue_.empty()) out.push_back(TrcOut::of(still));
-    else queue_.back().held.push_back(still);
-    return;
+    if (queue_.empty()) return out.push_back(TrcOut::of(still));
+    return hold(still, out);
   }
   Item item;
   item.block = b;

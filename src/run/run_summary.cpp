@@ -20,7 +20,7 @@ void RunSummary::take(const kernel::Event& e) {
     case K::error: ++errors_; break;
     case K::warning: ++warnings_; break;
     case K::end:
-      if (e.get<kernel::ev::End>()->reason == kernel::EndReason::reset) ++resets_, ++errors_;
+      if (e.get<kernel::ev::End>()->reason == kernel::EndReason::reset) ++resets_;
       break;
     case K::wait: {
       // A channel waiting for two spindles at once waits once: the time

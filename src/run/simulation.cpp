@@ -72,6 +72,14 @@ bool any_channel_aborted(const sim::DryRun& run) {
   return false;
 }
 
+// A channel an error ended (and no reset cleared since): a reset alone is
+// an operator's action, not a failure.
+bool any_channel_failed(const sim::DryRun& run) {
+  for (std::size_t ch = 0; ch < run.kernel().channel_count(); ++ch)
+    if (run.kernel().channel_state(ch).program_state == kernel::ProgramState::error) return true;
+  return false;
+}
+
 Diagnostics one(Diagnostic d) {
   Diagnostics ds;
   ds.add(std::move(d));
@@ -167,15 +175,6 @@ void Simulation::report_refusals(const kernel::TickOutput& o) {
   }
 }
 
-// A reset from the --plc scenario ends the program with exit 1: say so with an ID.
-void Simulation::report_reset(const kernel::Event& e) {
-  const std::string text = fmt::format("the PLC scenario reset channel {} at {} s, before its program end",
-                                       e.channel, e.t_s);
-  progress_.clear();
-  out_.console.line(fmt::format("nck: error {}: {}", number(ErrorId::AppChannelReset), text));
-  out_.errors.push_back(FinalError{number(ErrorId::AppChannelReset), e.channel, 0, std::string(), text});
-}
-
 void Simulation::record_events(const kernel::TickOutput& o) {
   progress_.take(o);
   for (const kernel::Event& e : o.events) {
@@ -184,7 +183,6 @@ void Simulation::record_events(const kernel::TickOutput& o) {
       if (e.kind() == kernel::EventKind::block && !out_.keep_events) out_.event_line(e, block_text_.line(e, names_), names_);
       else out_.event(e, names_);
     }
-    if (const auto* end = e.get<kernel::ev::End>(); end && end->reason == kernel::EndReason::reset) report_reset(e);
     const auto* error = e.get<kernel::ev::Error>();
     const auto* warning = e.get<kernel::ev::Warning>();
     if (!error && !warning) continue;
@@ -282,8 +280,8 @@ void Simulation::finish(std::optional<kernel::EndReason> stopped) {
 int Simulation::exit_code() const {
   int code = 0;
   if (stopped_ == kernel::EndReason::interrupted) code = signal_exit_code();
-  else if (stopped_ == kernel::EndReason::stop_at) code = any_channel_aborted(*run_) ? 1 : 0;  // as asked for
-  else code = stopped_ || any_channel_aborted(*run_) ? 1 : 0;
+  else if (stopped_ == kernel::EndReason::stop_at) code = any_channel_failed(*run_) ? 1 : 0;  // as asked for
+  else code = stopped_ || any_channel_failed(*run_) ? 1 : 0;
   if (code == 0 && !out_.errors.empty()) code = 1;  // an MDI error ends no channel, but the run found one
   return code;
 }

@@ -111,8 +111,12 @@ bool DryRun::done() const noexcept {
     if (kernel_->channel_jogging(ch)) return false;
   if (sim_->jog_pending()) return false;
   if (!sim_->runs_mdi()) return true;
+  // Between two MDI texts the channel is done while the next one's
+  // commands wait in its queue: they run before the run ends.
   for (std::size_t ch = 0; ch < preps_.size(); ++ch)
-    if (preps_[ch].mdi_used() && (preps_[ch].mdi_pending() || !kernel_->channel_done(ch))) return false;
+    if (preps_[ch].mdi_used() &&
+        (preps_[ch].mdi_pending() || !kernel_->channel_done(ch) || !kernel_->commands(ch).empty()))
+      return false;
   return !sim_->scenario_pending() && sim_->mdi_requests().empty();
 }
 

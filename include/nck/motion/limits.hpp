@@ -42,7 +42,8 @@ struct PathLimits {
 // All three finite and > 0.
 bool valid(const PathLimits& l) noexcept;
 
-// The jerk-limited profile's view of l (SIN2: sin^2 ramps).
+// The jerk-limited profile's view of l (SIN2: sin^2 ramps; HSC: the
+// longest ramp time in every phase).
 JerkLimits jerk_limits(const PathLimits& l) noexcept;
 
 // Ramp times taken elementwise as the longer of a and b.

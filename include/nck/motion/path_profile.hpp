@@ -122,7 +122,8 @@ class PathProfile {
   double target_velocity(double override_factor) const noexcept;
   // The jerk-limited twins of start() and step() (path_profile_jerk.cpp).
   void start_jerk(double carry_mm, bool passing) noexcept;
-  void replan_jerk(double target_mm_s) noexcept;
+  // may_keep: only the target changed (an override step, a feedhold, a reset).
+  void replan_jerk(double target_mm_s, bool may_keep = false) noexcept;
   ProfileSample step_jerk(double dt_s, double override_factor) noexcept;
   ProfileSample finish_jerk(double t_end_s, double t1_s) noexcept;
   // HSC: this segment's end lies inside a chain (start() and set_chain()

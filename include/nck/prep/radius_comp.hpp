@@ -109,6 +109,7 @@ class RadiusComp {
   std::expected<Element, Diagnostic> element_of(const nc::Block& b, const Planner& planner) const;
   double offset_of(const nc::Block& b) const;
   std::expected<Vec2, Diagnostic> tip_of(const nc::Block& b) const;
+  void hold(const nc::Block& b, std::vector<TrcOut>& out);
   bool close_last(Item& next, std::vector<TrcOut>& out);
   bool check_last(std::vector<TrcOut>& out);
   bool check_crossings(std::vector<TrcOut>& out);

@@ -70,7 +70,6 @@ class Simulation {
   void record_events(const kernel::TickOutput& o);
   void report_dropped_events(const kernel::TickOutput& o);
   void report_refusals(const kernel::TickOutput& o);
-  void report_reset(const kernel::Event& e);
   void end_unfinished_channels(kernel::EndReason reason);
   void report_trace_full();
 

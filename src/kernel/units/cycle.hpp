@@ -56,6 +56,7 @@ struct Cycle {
   std::size_t n_axes = 0;
   std::span<const std::int8_t> spindles;  // kernel index per channel spindle
   bool stopped = false;                    // NC stop in force: the path is held as by feedhold
+  bool resetting = false;                  // a reset brakes the path as a feedhold does, then ends the program
 
   // Emits an event at the block the channel stands at. rt
   void emit(const EventPayload& p) const noexcept { sink.emit(Event{{t_s, channel, block_ref(block)}, p}); }

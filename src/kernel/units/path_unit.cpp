@@ -140,6 +140,7 @@ CycleCause PathUnit::classify(const Motion& m, const motion::ProfileSample& st, 
   const double v = st.v_mm_s;
   const bool rising = v > v_prev;
   if (!rising) ramp_ = CycleCause::none;
+  if (cy.resetting) return CycleCause::braking;  // a reset: braking towards its end
   if (cy.stopped) return CycleCause::hold;  // NC stop: the channel holds
   if (cy.in.feedhold) return CycleCause::feedhold;
   if (reserve_ && st.braking) return CycleCause::starved;

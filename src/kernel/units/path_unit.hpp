@@ -41,6 +41,8 @@ class PathUnit {
   bool carry_on(const Motion& m) noexcept;
   // The last motion ended at speed: the next block takes over this cycle.
   bool passing() const noexcept { return passing_; }
+  // The path moves, or ended its last motion at speed.
+  bool moving() const noexcept { return velocity_ > 0 || passing_; }
   // One cycle of motion c (the couplings limited the profile before). rt
   motion::ProfileSample step(const Motion& m, const CommandQueue& queued, Cycle& cy) noexcept;
   // Motion c reached its end (its end point placed). rt
@@ -100,7 +102,7 @@ class PathUnit {
 };
 
 inline double PathUnit::override_factor(const Motion& m, const Cycle& cy) const noexcept {
-  if (cy.in.feedhold || cy.stopped) return 0.0;
+  if (cy.in.feedhold || cy.stopped || cy.resetting) return 0.0;
   const bool rapid = !cy.block.feed_motion && !m.measure;  // G0 (a G100 run moves at F)
   if (!rapid) return std::clamp(cy.in.feed_override_pct, 0.0, 100.0) / 100.0;
   return rapid_override_factor(rapid_mode_, cy.in.feed_override_pct, cy.in.rapid_override_pct);

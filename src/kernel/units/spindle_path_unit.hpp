@@ -29,6 +29,10 @@ class SpindlePathUnit {
                   ChannelContext& ctx) noexcept;
   // Program end: no tracking spindle, no G96. rt
   void end(ChannelContext& ctx) noexcept;
+  // The spindle tracking the path (G63, G331, G332), -1 none. rt
+  std::int8_t tap_spindle() const noexcept { return tap_spindle_; }
+  // G33: the path follows the spindle's actual speed on the pitch. rt
+  bool threading() const noexcept { return link_.kind == FeedLinkKind::thread; }
 
  private:
   void release_tap_spindle(ChannelContext& ctx) noexcept;

@@ -67,6 +67,23 @@ TEST(Mdi, ASessionRunsThreeBlocksWithTheModalStateCarriedOn) {
   EXPECT_GE(starts[2], 1.0);  // the third was typed at 1 s
 }
 
+// Lines typed together, or while the text before still moves, queue and run
+// in order; the run ends when the queue is empty (issue 44, item 5: the run
+// ended after the first text, and the others were dropped without a word).
+TEST(Mdi, LinesTypedTogetherOrDuringAMoveAllRunInOrder) {
+  const MdiRun r = run_mdi("queue", "0.0 mdi G90 G1 X10 F600\n0.0 mdi G1 Y10\n0.5 mdi G1 Z-5\n");
+  ASSERT_EQ(r.result.exit_code, 0) << r.result.output;
+  EXPECT_DOUBLE_EQ(axis(r, "X"), 10);
+  EXPECT_DOUBLE_EQ(axis(r, "Y"), 10);
+  EXPECT_DOUBLE_EQ(axis(r, "Z"), -5);
+  std::vector<double> starts;
+  for (const nlohmann::json& e : r.events)
+    if (e["ev"] == "block") starts.push_back(e["t"].get<double>());
+  ASSERT_EQ(starts.size(), 3u) << r.result.output;
+  EXPECT_GE(starts[1], 1.0);  // X10 at 10 mm/s takes 1 s: Y10 waits for it
+  EXPECT_GE(starts[2], 2.0);
+}
+
 // An error in MDI (a circle without centre, an unknown G code) is reported,
 // the channel goes back to idle and the next text runs; the run exits 1.
 TEST(Mdi, AnErrorEndsItsTextNotTheSession) {

@@ -135,6 +135,29 @@ TEST(Trc, FunctionsNotAllowedWhileTrcIsSelected) {
   }
 }
 
+// A block that repeats where the plane axes stand has no motion data for
+// the compensation: like a block without plane axes it waits behind the last
+// element, and a ninth in a row is 90011 (issue 45: 20,000 of them held
+// 14 KB each and the run slowed faster than linearly).
+TEST(Trc, RepeatedEndPointsCountAsBlocksWithoutPlaneMotion) {
+  auto program = [](int repeats) {
+    std::string text = "N10 G17 G90 D1\nN20 G0 X-10 Y-10\nN30 G41 G1 X0 Y0 F600\nN40 Y40\n";
+    for (int i = 0; i < repeats; ++i) text += "Y40\n";
+    return text + "X60\nG40 G1 X80 Y80\nM30\n";
+  };
+  const TrcRun eight = run_text("mill", "trc-repeat-8", program(8));
+  ASSERT_EQ(eight.cli.exit_code, 0) << eight.cli.output;
+  expect_points(eight, "X", "Y", {{40, -5, 0}});  // N40 runs +Y with the tool on its left
+  ASSERT_FALSE(eight.rows.empty());
+  EXPECT_NEAR(eight.rows.back()[col(eight, "X")], 80, 1e-9);
+  EXPECT_NEAR(eight.rows.back()[col(eight, "Y")], 80, 1e-9);
+  const TrcRun nine = run_text("mill", "trc-repeat-9", program(9));
+  EXPECT_EQ(nine.cli.exit_code, 1) << nine.cli.output;
+  ASSERT_EQ(nine.errors.size(), 1u) << nine.cli.output;
+  EXPECT_EQ(nine.errors[0]["id"], 90011);
+  EXPECT_EQ(nine.errors[0]["line"], 13);  // the ninth repeat
+}
+
 TEST(Trc, SelectionInACircleAndRadiusChangeInACircleAreErrors) {
   const TrcRun sel = run_text("mill", "trc-sel-arc", "N10 G17 G90 D1\nN20 G0 X0 Y0\nN30 G41 G2 X20 Y0 R10 F600\nN40 M30\n");
   ASSERT_EQ(sel.errors.size(), 1u) << sel.cli.output;

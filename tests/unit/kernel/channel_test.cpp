@@ -193,20 +193,29 @@ TEST(Channel, FeedholdStopsAndResumes) {
   EXPECT_DOUBLE_EQ(out.channels[0].axis_mcs[0], 100.0);
 }
 
-TEST(Channel, ResetEndsTheProgram) {
+TEST(Channel, ResetBrakesThenEndsTheProgram) {
   KernelRig rig(xyz_machine());
   Kernel& k = rig.k;
   rig.push_block(0, move(1, nc::Motion::linear, 100.0));
   TickInput in;
   TickOutput out;
-  k.tick(in, out);
+  for (int i = 0; i < 50; ++i) k.tick(in, out);
+  const double x_at_reset = out.channels[0].axis_mcs[0];
   in.channels[0].reset = true;
   k.tick(in, out);
+  in.channels[0].reset = false;
+  // The path brakes: the reset's cycle still moves, and nothing ends yet.
+  EXPECT_GT(out.channels[0].axis_mcs[0], x_at_reset);
+  EXPECT_FALSE(k.all_channels_done());
+  int cycles = 1;
+  for (; cycles < 1000 && !k.all_channels_done(); ++cycles) k.tick(in, out);
+  EXPECT_GT(cycles, 2);
   ASSERT_EQ(out.events.size(), 2u);  // the state change to idle, then the end
   ASSERT_TRUE(out.events[0].get<kernel::ev::State>());
   EXPECT_EQ(out.events[0].get<kernel::ev::State>()->to, ProgramState::idle);
   ASSERT_TRUE(out.events[1].get<kernel::ev::End>());
   EXPECT_EQ(out.events[1].get<kernel::ev::End>()->reason, EndReason::reset);
+  EXPECT_LT(out.channels[0].axis_mcs[0], 100.0);
 }
 
 TEST(Kernel, TwoChannelsTickSideBySide) {
