@@ -354,7 +354,7 @@ Outcome Decoder::Impl::run_words(Cursor& c, std::optional<std::int64_t> n, Block
     if (!content) return do_return();
     return_pending = true;
   }
-  return content ? Outcome::block : Outcome::nothing;
+  return content || cfg.every_block ? Outcome::block : Outcome::nothing;
 }
 
 // ---------------------------------------------------------------- public API

@@ -31,6 +31,10 @@ struct DecoderConfig {
   std::string main_spindle = "S1";         // which configured spindle is the main one
   SlopeProfile slope_default = SlopeProfile::step;  // P-CHAN-00071: at program start and #SLOPE DEFAULT
   std::uint32_t skip_mask = 0;             // active block-skip levels (/1 = bit 0 ... /10 = bit 9; "/" = bit 0)
+  // P-CHAN-00015 = 1 (single step after every block): a block without
+  // functions (only assignments, or only its N) is handed out too, so it
+  // gets its block event and single step holds after it.
+  bool every_block = false;
   bool use_cached_files = false;           // FCT_USE_CACHED_FILES
   std::uint32_t max_cache_number = 0;
   std::uint32_t max_cache_size_kb = 0;
