@@ -27,6 +27,8 @@ void Words::clear() {
   hash_pos = 0;
   assigns.clear();
   word_count = 0;
+  axis_dims = 0;
+  axis_repeat_mask = 0;
 }
 
 int find_axis(const BlockCtx& b, std::string_view name_upper) {
@@ -86,6 +88,9 @@ std::optional<GCode> valued_g(std::string_view name_upper) {
   return std::nullopt;
 }
 
+// As many digits as a block number written out may have (15, decoder.cpp).
+constexpr double kMaxBlockNumber = 999'999'999'999'999.0;
+
 bool integer_code(double v, int& code) {
   double r = std::round(v);
   if (std::fabs(v - r) > 1e-9 || r < 0 || r > 1e6) return false;
@@ -130,13 +135,7 @@ bool parse_letter_word(Cursor& c, BlockCtx& b, Words& w) {
     if (ax < 0) ax = find_alias(b, name);
     c.pos = e;
     double v = 0;
-    if (ax >= 0) {
-      if (!word_value(c, b, v, name[0])) return false;
-      if (w.axes[ax])
-        return b.x.err.fail(ErrorId::NcDuplicateWord, pos, fmt::format("axis {} is programmed twice", name));
-      w.set_axis(static_cast<std::size_t>(ax), v, pos);
-      return true;
-    }
+    if (ax >= 0) return word_value(c, b, v, name[0]) && add_axis_word(b, w, ax, v, pos, name);
     if (const std::optional<GCode> g = valued_g(name)) {
       if (!word_value(c, b, v, 'G')) return false;
       if (!w.g.push_back(GWord{*g, static_cast<std::uint32_t>(pos), v}))
@@ -151,20 +150,16 @@ bool parse_letter_word(Cursor& c, BlockCtx& b, Words& w) {
   std::string one(1, a);
   int ax = find_axis(b, one);
   double v = 0;
-  if (ax >= 0) {
-    if (!word_value(c, b, v, a)) return false;
-    if (w.axes[ax])
-      return b.x.err.fail(ErrorId::NcDuplicateWord, pos, fmt::format("axis {} is programmed twice", a));
-    w.set_axis(static_cast<std::size_t>(ax), v, pos);
-    return true;
-  }
+  if (ax >= 0) return word_value(c, b, v, a) && add_axis_word(b, w, ax, v, pos, one);
   switch (a) {
     case 'N': {
       if (!word_value(c, b, v, a)) return false;
-      int code = 0;
-      if (!integer_code(v, code))
-        return b.x.err.fail(ErrorId::NcBadValue, pos, "block number N must be an integer >= 0");
-      if (!set_once(w.n, static_cast<std::int64_t>(code), pos, b, a)) return false;
+      // TF5200 "NC block numbers": a computed number is rounded to an integer.
+      const double number = std::round(v);
+      if (!(number >= 0 && number <= kMaxBlockNumber))
+        return b.x.err.fail(ErrorId::NcBadValue, pos,
+                            fmt::format("block number N{} is not a number from 0 to {}", v, kMaxBlockNumber));
+      if (!set_once(w.n, static_cast<std::int64_t>(number), pos, b, a)) return false;
       c.match(':');  // "N20:" marks a jump label
       return true;
     }

@@ -57,6 +57,11 @@ struct DecoderConfig {
   int max_zero_offset_index = 96;             // highest G159 index (zero-offset groups 0..96)
   bool dist_ctrl_available = true;            // FCT_3D_DIST_CTRL (else #DIST CTRL -> 310015)
   bool continue_after_error = false;          // lint mode: skip a bad block and go on
+  // P-CHAN-00116: G90/G91 in one block act on the positions after them
+  // (axis_dimensions.cpp); P-CHAN-00148 (only with 00116): an axis may be
+  // programmed several times in one block, else TF5200 20203.
+  bool multi_dimension_in_block = false;
+  bool multi_axes_in_block = false;
   std::size_t max_block_chars = 4000;         // docs/nc-language.md (TF5200's limit)
   // Cycle search path after the program's folder: the machine's
   // cycle_path[i] folders (startup.lis), then --cycles DIR.
