@@ -87,6 +87,11 @@ class KernelStateReader {
 
 inline constexpr const char* kMdiFileName = "MDI";
 
+// The ISG functions the decoder refuses by name (920052) rather than as
+// unknown: G functions ("G5", "G80 … G89") and # functions ("#RT CYCLE",
+// "#MC_…"); docs/nc-language.md lists each.
+std::vector<std::string> refused_isg_functions();
+
 class Decoder {
  public:
   // stopped: DecoderConfig::stop was set; decoding ends here, without a
