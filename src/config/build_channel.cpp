@@ -145,6 +145,16 @@ void check_alias_names(const ParamList& l, ChannelConfig& c, Diagnostics& d) {
   }
 }
 
+// P-CHAN-00148 is evaluated only with P-CHAN-00116: alone it is taken as 0
+// (TF5200 warning 21404, start-up goes on).
+void check_multi_axes(const ParamList& l, ChannelConfig& c, Diagnostics& d) {
+  if (!c.multi_axes_in_block || c.multi_dimension_in_block) return;
+  d.add(ErrorId::ConfigMultiAxesWithoutMultiDimension, l.loc("multi_axes_in_block"),
+        "multi_axes_in_block 1 needs multi_dimension_in_block 1; multi_axes_in_block is taken as 0, so an axis "
+        "programmed twice in a block stays error 20203");
+  c.multi_axes_in_block = false;
+}
+
 void check_main_spindle(const ParamList& l, const ChannelConfig& c, Diagnostics& d) {
   if (l.has("spdl_anzahl") && l.u32("spdl_anzahl", 0) != c.spindles.size())
     d.add(ErrorId::ConfigSpindleCount, l.loc("spdl_anzahl"),
@@ -251,6 +261,8 @@ void read_switches(const ParamList& l, ChannelConfig& c) {
   c.main_spindle_gear_change = l.flag("main_spindle_gear_change", false);
   c.default_ax_name_of_spindle = l.text("default_ax_name_of_spindle", "");
   c.use_alias_names = l.flag("use_alias_name_in_ax_list", false);
+  c.multi_dimension_in_block = l.flag("multi_dimension_in_block", false);
+  c.multi_axes_in_block = l.flag("multi_axes_in_block", false);
   c.cax_face_id = l.u32("cax_face_id", 0);
   for (std::size_t i = 0; i < c.trafo_ids.size(); ++i) c.trafo_ids[i] = l.u32(fmt::format("trafo[{}].id", i), 0);
   c.move_tool_offsets_directly = l.flag("move_tool_offsets_directly", false);
@@ -295,6 +307,7 @@ ChannelConfig build_channel(const ParamList& l, std::uint32_t number, Diagnostic
   check_names_and_numbers(l, c, d);
   check_main_spindle(l, c, d);
   check_alias_names(l, c, d);
+  check_multi_axes(l, c, d);
   warn_no_synch(l, c, d);
   check_dist_ctrl(l, c, d);
   return c;

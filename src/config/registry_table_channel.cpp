@@ -81,6 +81,8 @@ constexpr ParamInfo kTable[] = {
     {"configuration.interpolator.number_blocks_lah", "P-CHAN-00653", C, T::integer, 10, 500, 120, 1, "blocks", "blocks", "Motion blocks in the velocity look-ahead window; nck takes at most 120 (its command queue must hold every block the window planned with: docs/decisions.md, Preparation and look-ahead)."},
     {"move_tool_offsets_directly", "P-CHAN-00100", C, T::boolean, 0, 1, 0, 1, "—", "—", "Tool offsets move with the D word (1) or at the next absolute move (0)."},
     {"modal_i_j_k_for_circle", "P-CHAN-00159", C, T::boolean, 0, 1, 0, 1, "—", "—", "Circle centre I/J/K stay modal."},
+    {"multi_dimension_in_block", "P-CHAN-00116", C, T::boolean, 0, 1, 0, 1, "—", "—", "G90 and G91 in one block, each acting on the positions after it; nck takes them when all positions of the block get one dimension (else 920052)."},
+    {"multi_axes_in_block", "P-CHAN-00148", C, T::boolean, 0, 1, 0, 1, "—", "—", "An axis several times in one block (needs multi_dimension_in_block, else 21404): under G90 the last value counts, under G91 they add up; without it 20203."},
     {"use_alias_name_in_ax_list", "P-CHAN-00253", C, T::boolean, 0, 1, 0, 1, "—", "—", "Alias names A1..A32 allowed in axis-specific moves."},
     {"display_diameter_pos", "P-CHAN-00256", C, T::boolean, 0, 1, 0, 1, "—", "—", "HLI shows PCS positions as diameter under G51."},
     {"trafo[].id", "P-CHAN-00262", C, T::integer, 1, kU16, 0, 1, "—", "—", "Kinematic ID of transformation slot i: #FACE needs 13 (cax_face_id 1) or 14 (cax_face_id 2), #CYL 15.", {10}},

@@ -27,6 +27,31 @@ constexpr ErrorInfo kErrors[] = {
 #undef NCK_ERROR
 };
 
+// Other numbers an entry is known by: nck's own before it took the TF5200
+// number, or ISG's number for the same fault in another variant of the
+// function. docs/errors.md names them in the cause, so `nck errors <number>`
+// finds the entry.
+struct ErrorAlias {
+  ErrorId id;
+  std::uint32_t number;
+  std::string_view meaning;
+};
+constexpr ErrorAlias kAliases[] = {
+    {ErrorId::NcBadSkipLevel, 920012, "nck's own ID before issue 44"},
+    {ErrorId::NcSlopeType, 920200, "nck's own ID before issue 44"},
+    {ErrorId::NcAxisTwice, 920008, "nck's ID for it before issue 44, which other words programmed twice keep"},
+    {ErrorId::DistCtrlSensorAbove, 70330, "ISG's ID with axis-specific distance control, P-CHAN-00808"},
+    {ErrorId::DistCtrlSensorBelow, 70576, "ISG's ID with axis-specific distance control, P-CHAN-00808"},
+};
+
+// The cause with the entry's aliases: "...; also 920012 (nck's own ID ...)".
+std::string cause_with_aliases(const ErrorInfo& e) {
+  std::string out(e.text);
+  for (const ErrorAlias& a : kAliases)
+    if (a.id == e.id) out += fmt::format("; also {} ({})", a.number, a.meaning);
+  return out;
+}
+
 }  // namespace
 
 std::span<const ErrorInfo> all_errors() { return kErrors; }
@@ -46,7 +71,8 @@ std::string errors_markdown() {
       "| ID | severity | name | cause | remedy |\n|---|---|---|---|---|\n";
   for (const ErrorInfo& e : all_errors())
     out += fmt::format("| {} | {} | {} | {} | {} |\n", number(e.id),
-                       e.severity == Severity::error ? "error" : "warning", e.name, e.text, e.remedy);
+                       e.severity == Severity::error ? "error" : "warning", e.name, cause_with_aliases(e),
+                       e.remedy);
   return out;
 }
 

@@ -49,6 +49,7 @@ bool check_groups(const Words& w, BlockCtx& b) {
   for (std::size_t i = 0; i < w.g.size(); ++i) {
     auto gi = g_group(w.g[i].code);
     if (*gi == GGroup::nonmodal) continue;
+    if (*gi == GGroup::dim && b.cfg.multi_dimension_in_block) continue;  // P-CHAN-00116: check_dimensions
     for (std::size_t j = i + 1; j < w.g.size(); ++j)
       if (g_group(w.g[j].code) == gi)
         return fail(b, ErrorId::NcModalConflict, w.g[j].pos,
@@ -227,7 +228,8 @@ bool check_exact_stop(const Words& w, BlockCtx& b) {
 }
 
 bool check_words(const Words& w, BlockCtx& b, const ModalState& modal) {
-  if (!check_groups(w, b) || !check_exact_stop(w, b) || !check_weightings(w, b)) return false;
+  if (!check_groups(w, b) || !check_dimensions(w, b, modal) || !check_exact_stop(w, b) || !check_weightings(w, b))
+    return false;
   ModalState after = preview_modal(w, modal);
   return check_dwell(w, b, modal) && check_spindle_m(w, b, after) && check_values(w, b, modal, after);
 }

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "block_words.hpp"
+#include "isg_refusals.hpp"
 
 namespace nck::nc::detail {
 
@@ -27,6 +28,8 @@ void Words::clear() {
   hash_pos = 0;
   assigns.clear();
   word_count = 0;
+  axis_dims = 0;
+  axis_repeat_mask = 0;
 }
 
 int find_axis(const BlockCtx& b, std::string_view name_upper) {
@@ -63,19 +66,6 @@ bool set_once(At<T>& slot, T v, std::size_t pos, BlockCtx& b, char addr) {
   return true;
 }
 
-// G functions of the ISG manual that nck does not have (tangential TRC,
-// acceleration/deceleration, TRC feeds, corner deceleration, mirroring,
-// TRC transitions, polynomial contouring, contour rotation, implicit
-// subroutine calls, software limits, splines, arcs in space ...): named as
-// not supported instead of "unknown".
-bool isg_g_function(int code) {
-  static constexpr int kCodes[] = {5,  8,  9,  10, 11, 12, 13, 20,  21,  22,  23,
-                                   66, 68, 69, 98, 99, 150, 151, 163, 164, 165, 303};
-  for (int c : kCodes)
-    if (c == code) return true;
-  return (code >= 80 && code <= 89) || (code >= 800 && code <= 839);
-}
-
 // The G functions written G<n>=<value>: G159 (zero offset) and the group
 // weightings G131/G133/G134/G233 (percent).
 std::optional<GCode> valued_g(std::string_view name_upper) {
@@ -86,11 +76,26 @@ std::optional<GCode> valued_g(std::string_view name_upper) {
   return std::nullopt;
 }
 
+// As many digits as a block number written out may have (15, decoder.cpp).
+constexpr double kMaxBlockNumber = 999'999'999'999'999.0;
+
 bool integer_code(double v, int& code) {
   double r = std::round(v);
   if (std::fabs(v - r) > 1e-9 || r < 0 || r > 1e6) return false;
   code = static_cast<int>(r);
   return true;
+}
+
+// A G number nck has no G function for: an ISG function it does not have
+// (920052), or unknown (920005); an ISO/Fanuc meaning gets its ISG remedy.
+bool unknown_g(BlockCtx& b, int code, std::size_t pos) {
+  const std::optional<std::string_view> iso = iso_g_remedy(code);
+  if (isg_g_function(code))
+    return b.x.err.fail(ErrorId::NcUnsupported, pos,
+                        fmt::format("G{} is an ISG function nck does not support{}{}", code, iso ? "; " : "",
+                                    iso.value_or("")));
+  return b.x.err.fail(ErrorId::NcUnknownGCode, pos,
+                      iso ? std::string(*iso) : fmt::format("G{} is unknown to nck; see docs/nc-language.md", code));
 }
 
 bool parse_assignment(Cursor& c, BlockCtx& b, Words& w) {
@@ -130,13 +135,7 @@ bool parse_letter_word(Cursor& c, BlockCtx& b, Words& w) {
     if (ax < 0) ax = find_alias(b, name);
     c.pos = e;
     double v = 0;
-    if (ax >= 0) {
-      if (!word_value(c, b, v, name[0])) return false;
-      if (w.axes[ax])
-        return b.x.err.fail(ErrorId::NcDuplicateWord, pos, fmt::format("axis {} is programmed twice", name));
-      w.set_axis(static_cast<std::size_t>(ax), v, pos);
-      return true;
-    }
+    if (ax >= 0) return word_value(c, b, v, name[0]) && add_axis_word(b, w, ax, v, pos, name);
     if (const std::optional<GCode> g = valued_g(name)) {
       if (!word_value(c, b, v, 'G')) return false;
       if (!w.g.push_back(GWord{*g, static_cast<std::uint32_t>(pos), v}))
@@ -151,20 +150,16 @@ bool parse_letter_word(Cursor& c, BlockCtx& b, Words& w) {
   std::string one(1, a);
   int ax = find_axis(b, one);
   double v = 0;
-  if (ax >= 0) {
-    if (!word_value(c, b, v, a)) return false;
-    if (w.axes[ax])
-      return b.x.err.fail(ErrorId::NcDuplicateWord, pos, fmt::format("axis {} is programmed twice", a));
-    w.set_axis(static_cast<std::size_t>(ax), v, pos);
-    return true;
-  }
+  if (ax >= 0) return word_value(c, b, v, a) && add_axis_word(b, w, ax, v, pos, one);
   switch (a) {
     case 'N': {
       if (!word_value(c, b, v, a)) return false;
-      int code = 0;
-      if (!integer_code(v, code))
-        return b.x.err.fail(ErrorId::NcBadValue, pos, "block number N must be an integer >= 0");
-      if (!set_once(w.n, static_cast<std::int64_t>(code), pos, b, a)) return false;
+      // TF5200 "NC block numbers": a computed number is rounded to an integer.
+      const double number = std::round(v);
+      if (!(number >= 0 && number <= kMaxBlockNumber))
+        return b.x.err.fail(ErrorId::NcBadValue, pos,
+                            fmt::format("block number N{} is not a number from 0 to {}", v, kMaxBlockNumber));
+      if (!set_once(w.n, static_cast<std::int64_t>(number), pos, b, a)) return false;
       c.match(':');  // "N20:" marks a jump label
       return true;
     }
@@ -174,12 +169,7 @@ bool parse_letter_word(Cursor& c, BlockCtx& b, Words& w) {
       if (!integer_code(v, code))
         return b.x.err.fail(ErrorId::NcUnknownGCode, pos, fmt::format("G{} is not a G code", v));
       const std::optional<GCode> g = to_gcode(code);
-      if (!g && isg_g_function(code))
-        return b.x.err.fail(ErrorId::NcUnsupported, pos,
-                            fmt::format("G{} is an ISG function nck does not support", code));
-      if (!g)
-        return b.x.err.fail(ErrorId::NcUnknownGCode, pos,
-                            fmt::format("G{} is unknown to nck; see docs/nc-language.md", code));
+      if (!g) return unknown_g(b, code, pos);
       if (group_weight(*g))
         return b.x.err.fail(ErrorId::NcDynWeighting, pos,
                             fmt::format("G{0} takes its weighting as G{0}=<percent>", code));
@@ -208,6 +198,9 @@ bool parse_letter_word(Cursor& c, BlockCtx& b, Words& w) {
       ++w.word_count;
       return set_once(*slot, v, pos, b, a);
     }
+    case 'O':
+      if (is_digit(c.peek())) return b.x.err.fail(ErrorId::NcUnknownWord, pos, iso_program_number(Cursor{c.s, pos}));
+      [[fallthrough]];
     default:
       return b.x.err.fail(ErrorId::NcUnknownWord, pos,
                           fmt::format("'{}' is not a word of the NC language or a configured axis", a));

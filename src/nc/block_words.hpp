@@ -67,11 +67,19 @@ struct Words {
   std::uint32_t hash_pos = 0;
   std::vector<Assignment> assigns;
   int word_count = 0;  // words other than N and the # command itself
+  // P-CHAN-00116/00148 (axis_dimensions.cpp): the dimensions the axis words
+  // got from the G90/G91 before them in the block (bits kDim*, with the
+  // first word of each), the axes programmed more than once and their sums.
+  std::uint8_t axis_dims = 0;
+  std::array<std::uint32_t, 3> axis_dim_pos{};
+  std::uint32_t axis_repeat_mask = 0;
+  std::array<double, kMaxAxes> axis_sum{};
 
   void clear();
   // Axis word j with value v at column pos (one word of the block).
   void set_axis(std::size_t j, double v, std::size_t pos) {
     axes[j] = v;
+    axis_sum[j] = v;
     axis_pos[j] = static_cast<std::uint32_t>(pos);
     axis_mask |= 1u << j;
     ++axis_count;
@@ -121,6 +129,15 @@ int find_axis(const BlockCtx& b, std::string_view name_upper);
 int find_alias(const BlockCtx& b, std::string_view name_upper);
 
 bool parse_words(Cursor& c, BlockCtx& b, Words& w);
+// axis_dimensions.cpp. Axis word `j` (named `name` as written) with value
+// v at column pos, for every form of axis word (X.., X2=.., A1=.., @X..): a
+// second word for the same axis is 20203 unless P-CHAN-00148 allows it.
+bool add_axis_word(BlockCtx& b, Words& w, int j, double v, std::size_t pos, std::string_view name);
+// Under P-CHAN-00116 every axis word must get the dimension the block ends
+// with (nck's Block has one per block); `before` is the modal state before.
+bool check_dimensions(const Words& w, BlockCtx& b, const ModalState& before);
+// A repeated axis's value: the last under G90, the sum under G91.
+void resolve_repeated_axes(Words& w, bool absolute);
 // A cycle's @ word (cycle_words.cpp): @P<n>=.., @X/@Y/@Z, @I/@J/@K, @S.
 bool parse_cycle_word(Cursor& c, BlockCtx& b, Words& w);
 // Spindle words: at 'S' (DIN or S..[ ]).

@@ -154,7 +154,7 @@ Outcome Decoder::Impl::start_cycle(const CycleTarget& t, std::size_t at) {
   } else {
     if (!open_frame(t.path, true, f))
       return report(open_error(ErrorId::NcFileUnreadable), at, fmt::format("cannot read the cycle '{}'", t.path.string()));
-    if (const Section* m = f.index->main()) f.reader->seek(m->body);
+    if (enter_program(f, at) == Outcome::error) return Outcome::error;
   }
   f.file_id = t.file_id;
   f.start = f.reader->next_pos();

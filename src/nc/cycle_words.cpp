@@ -36,12 +36,7 @@ bool main_axis_word(Cursor& c, BlockCtx& b, Words& w, std::size_t pos, int k, ch
                         fmt::format("@{} is main axis {} in G{}, which this channel does not have", what,
                                     kMainAxisNames[m], static_cast<int>(b.plane)));
   double v = 0;
-  if (!at_value(c, b, v, what)) return false;
-  if (w.axes[j])
-    return b.x.err.fail(ErrorId::NcDuplicateWord, pos,
-                        fmt::format("axis {} is programmed twice (@{})", kMainAxisNames[m], what));
-  w.set_axis(static_cast<std::size_t>(j), v, pos);
-  return true;
+  return at_value(c, b, v, what) && add_axis_word(b, w, j, v, pos, fmt::format("@{}", what));
 }
 
 // @I/@J/@K: the centre coordinate that belongs to @X/@Y/@Z.

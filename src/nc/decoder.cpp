@@ -236,7 +236,7 @@ Outcome Decoder::Impl::process_block(Block& out) {
   }
   c.skip_blanks();
   if (c.at_end()) return Outcome::nothing;
-  if (c.peek() == '%') return end_of_section();
+  if (c.peek() == '%') return frames.size() > 1 ? end_of_section() : header_in_main_program(c.pos);
   if (c.peek() == '/') {  // block skip: "/" = level 1, "/1" ... "/10"
     std::size_t at = c.pos++;
     int level = 0;

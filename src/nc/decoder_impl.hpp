@@ -156,7 +156,12 @@ struct Decoder::Impl {
   // subroutines and cycles are read from memory on every call.
   void keep_text_for_local_calls(detail::Frame& f);
   detail::Outcome call(detail::Cursor& c, bool local);
+  // A called file's frame: to where its program starts (error 920053 when
+  // the file holds only local subroutines).
+  detail::Outcome enter_program(detail::Frame& f, std::size_t at);
   detail::Outcome end_of_section();
+  // A % line at the main program's level, before M30/M2: TF5200 20193.
+  detail::Outcome header_in_main_program(std::size_t pos);
   detail::Outcome do_return();
   std::string unclosed_message(std::string_view section) const;
   // cycle_call.cpp: `c` at CYCLE after L / LL

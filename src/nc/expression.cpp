@@ -3,6 +3,8 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "isg_refusals.hpp"
+
 namespace nck::nc::detail {
 
 namespace {
@@ -141,7 +143,9 @@ bool call_function(std::string_view name, const double* a, int n, std::size_t po
     out = std::fmod(a[0], a[1]);
   } else if (up == "MIN") { if (!need(2)) return false; out = std::fmin(a[0], a[1]); }
   else if (up == "MAX") { if (!need(2)) return false; out = std::fmax(a[0], a[1]); }
-  else {
+  else if (isg_expression_function(up)) {
+    return fail(x, ErrorId::NcUnsupported, pos, fmt::format("{} is an ISG function nck does not support", up));
+  } else {
     return fail(x, ErrorId::NcUnknownFunction, pos, fmt::format("unknown function {}", name));
   }
   return true;

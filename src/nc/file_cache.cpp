@@ -12,6 +12,12 @@ const Section* ProgramIndex::main() const {
   return nullptr;
 }
 
+std::optional<SourcePos> ProgramIndex::program_start() const {
+  if (first_code || sections.empty()) return SourcePos{};
+  if (const Section* m = main()) return m->body;
+  return std::nullopt;
+}
+
 const Section* ProgramIndex::local(const std::string& name_upper) const {
   for (const auto& s : sections)
     if (s.local && s.name == name_upper) return &s;
@@ -75,10 +81,15 @@ ProgramIndex scan_sections(SourceReader& r, std::size_t max_chars) {
       in_comment = true;
       continue;
     }
-    std::size_t p = t.find_first_not_of(" \t");
-    if (p == std::string::npos || t[p] != '%') continue;
+    Cursor c{t, 0};
+    c.skip_blanks();
+    if (c.at_end()) continue;
+    if (c.peek() != '%') {
+      if (idx.sections.empty() && !idx.first_code) idx.first_code = r.block_pos();
+      continue;
+    }
     Section s;
-    parse_header(t, s.local, s.name);
+    parse_header(c.s.substr(c.pos), s.local, s.name);
     s.header = r.block_pos();
     s.body = r.next_pos();
     idx.sections.push_back(std::move(s));

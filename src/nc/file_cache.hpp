@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <list>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,19 +25,29 @@ struct Section {
 
 struct ProgramIndex {
   std::vector<Section> sections;
+  // The first block outside comments when no % header comes before it: the
+  // file is then an unnamed main program from its first line (TF5200,
+  // diagnosis 20193: the main program starts at the first character outside
+  // comments that is neither a blank nor '%').
+  std::optional<SourcePos> first_code;
   const Section* main() const;
   const Section* local(const std::string& name_upper) const;
+  // Where the file's program starts: its first line when code comes before
+  // any header (or there is no header at all), else after the first %name;
+  // nullopt when the file holds only %L local subroutines.
+  std::optional<SourcePos> program_start() const;
 };
 
 // A "#COMMENT BEGIN" / "#COMMENT END" block (which = "BEGIN" / "END"; an
 // N number may precede it): the position after the phrase, or npos.
 std::size_t comment_phrase_end(std::string_view block, std::string_view which);
 
-// Scans a reader from its current position to the end for section headers
-// (a % line inside #COMMENT BEGIN .. END is no header).
 // The whole file of `size` bytes, or nullptr when it cannot be read.
 std::shared_ptr<const std::string> read_text(const std::filesystem::path& p, std::uintmax_t size);
 
+// Scans a reader from its current position to the end for section headers
+// and the first code before them (a % line inside #COMMENT BEGIN .. END is
+// no header; a ( ) comment may stand before the %, as the decoder reads it).
 ProgramIndex scan_sections(SourceReader& r, std::size_t max_chars);
 // Name of a "%L name" / "%name" header (comments stripped, upper case).
 bool parse_header(std::string_view text, bool& local, std::string& name);

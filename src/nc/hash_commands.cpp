@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "hash_parse_util.hpp"
+#include "isg_refusals.hpp"
 #include "nck/core/axis_name.hpp"
 
 namespace nck::nc {
@@ -171,7 +172,8 @@ bool parse_face(HashCtx& h) {
   if (c.match_keyword("OFF")) {
     f.on = false;
   } else {
-    if (c.peek_keyword("2ROT")) return b.x.err.fail(ErrorId::NcUnsupported, c.pos, "#FACE 2ROT is not supported");
+    if (c.peek_keyword("2ROT"))
+      return b.x.err.fail(ErrorId::NcUnsupported, c.pos, "#FACE 2ROT is an ISG function nck does not support");
     std::vector<std::string> names;
     if (!named_list(c, b, names, 2)) return false;
     if (names.size() != 2) return args_error(b, h.pos, "#FACE needs [<1st axis>, <2nd axis>]");
@@ -211,6 +213,8 @@ bool parse_cyl(HashCtx& h) {
   Cylinder y;
   h.c.skip_spaces();
   if (h.c.match_keyword("OFF")) y.on = false;
+  else if (h.c.peek_keyword("2ROT"))
+    return h.b.x.err.fail(ErrorId::NcUnsupported, h.c.pos, "#CYL 2ROT is an ISG function nck does not support");
   else if (!cylinder_args(h.c, h.b, h.pos, y)) return false;
   h.cmd = y;
   return true;
@@ -314,25 +318,6 @@ constexpr HashEntry kHashCommands[] = {
     {{"FLUSH"}, parse_ignored},
 };
 
-// Real ISG # functions nck does not have: named as such, never "unknown".
-// `c` after the '#'; returns "#RT CYCLE", "#MC_MOVEPATH" ... or "".
-std::string unsupported_hash(Cursor c) {
-  static constexpr std::array<std::string_view, 2> kPhrases[] = {
-      {"RT", "CYCLE"}, {"WAIT", "SYN"}, {"SIGNAL", "SYN"}, {"HSC", ""},
-        {"TRAFO", ""},   {"CHANNEL", "INIT"}, {"FILE", "NAME"}, {"RETAIN", "CYCLE"}};
-  c.skip_spaces();
-  if ((upper(c.peek()) == 'M' && upper(c.peek(1)) == 'C' && c.peek(2) == '_'))
-    return "#" + to_upper(c.read_ident());
-  for (const auto& p : kPhrases) {
-    Cursor k = c;
-    if (!k.match_keyword(p[0])) continue;
-    k.skip_spaces();
-    if (!p[1].empty() && !k.match_keyword(p[1])) continue;
-    return p[1].empty() ? fmt::format("#{}", p[0]) : fmt::format("#{} {}", p[0], p[1]);
-  }
-  return "";
-}
-
 // A technology's command (one with kKeywords, in a home of its own) when
 // its keywords follow; *parsed false after a diagnostic. Tried after the
 // table, in HashCommand's order.
@@ -366,6 +351,9 @@ bool parse_hash(Cursor& c, BlockCtx& b, Words& w, bool& exclusive) {
     if (h.yields_command) w.hash = std::move(h.cmd);
     return true;
   };
+  // Before the table: an ISG function may start like one nck has (#TOOL ORI).
+  if (std::string fn = unsupported_hash(c); !fn.empty())
+    return b.x.err.fail(ErrorId::NcUnsupported, pos, fmt::format("{} is an ISG function nck does not support", fn));
   for (const HashEntry& e : kHashCommands) {
     if (!keywords(c, e.words)) continue;
     HashCtx h{c, b, w, pos};
@@ -375,8 +363,6 @@ bool parse_hash(Cursor& c, BlockCtx& b, Words& w, bool& exclusive) {
   HashCtx tech{c, b, w, pos};
   bool parsed = false;
   if (technology_command(tech, parsed)) return parsed && take(tech);
-  if (std::string fn = unsupported_hash(c); !fn.empty())
-    return b.x.err.fail(ErrorId::NcUnsupported, pos, fmt::format("{} is an ISG function nck does not support", fn));
   std::string name = to_upper(c.read_ident());
   return b.x.err.fail(ErrorId::NcUnknownHashCommand, pos, fmt::format("#{} is not a # command nck knows", name));
 }

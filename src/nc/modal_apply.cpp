@@ -156,6 +156,7 @@ bool apply_words(Words& w, BlockCtx& b, ModalState& modal, Block& out) {
     if (g_group(g.code) == GGroup::zero) out.zero_offset_programmed = true;
     if (const auto gw = group_weight(g.code)) out.group_weight_pct[static_cast<std::size_t>(*gw)] = g.value;
   }
+  resolve_repeated_axes(w, modal.absolute);
   if (modal.inch) {  // from here on every length is in mm
     words_to_mm(w, modal);
     kernel_writes_to_mm(out.kernel_writes);

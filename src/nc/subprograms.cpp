@@ -30,6 +30,23 @@ bool inside_roots(const std::filesystem::path& p, const std::vector<std::filesys
   return false;
 }
 
+// The sections of a file that has no main program, for 920053.
+std::string no_main_program(const ProgramIndex& idx) {
+  std::string names;
+  for (const Section& s : idx.sections) names += fmt::format("{}%L {} (line {})", names.empty() ? "" : ", ", s.name, s.header.line);
+  return fmt::format("the file holds only local subroutines, {}, and no main program; add it after them, headed "
+                     "%name, or write its blocks without a header",
+                     names);
+}
+
+// "%MAIN", "%L SUB" or "%" as the header line names it.
+std::string header_label(std::string_view text) {
+  bool local = false;
+  std::string name;
+  parse_header(text, local, name);
+  return fmt::format("%{}{}", local ? "L " : "", name);
+}
+
 }  // namespace
 
 bool Decoder::Impl::open_frame(const std::filesystem::path& p, bool cached, Frame& f, bool main) {
@@ -88,7 +105,14 @@ bool Decoder::Impl::open_main(const std::filesystem::path& p) {
     fatal = true;
     return false;
   }
-  if (const Section* m = f.index->main()) f.reader->seek(m->body);
+  const std::optional<SourcePos> start = f.index->program_start();
+  if (!start) {
+    diags.push_back(make_diagnostic(ErrorId::NcNoMainProgram, SourceLoc{p.string(), f.index->sections[0].header.line, 1},
+                                    no_main_program(*f.index)));
+    fatal = true;
+    return false;
+  }
+  f.reader->seek(*start);
   f.start = f.reader->next_pos();
   frames.push_back(std::move(f));
   return true;
@@ -158,11 +182,18 @@ Outcome Decoder::Impl::call(Cursor& c, bool local) {
       return report(open_error(ErrorId::NcSubroutineNotFound), at,
                     fmt::format("subroutine file '{}' not found (looked for {})", name, p.string()));
     f.file_id = file_id(p.string());
-    if (const Section* m = f.index->main()) f.reader->seek(m->body);
+    if (enter_program(f, at) == Outcome::error) return Outcome::error;
   }
   f.start = f.reader->next_pos();
   frames.push_back(std::move(f));
   vars.push_scope();
+  return Outcome::nothing;
+}
+
+Outcome Decoder::Impl::enter_program(Frame& f, std::size_t at) {
+  const std::optional<SourcePos> start = f.index->program_start();
+  if (!start) return report(ErrorId::NcNoMainProgram, at, fmt::format("{}: {}", f.path.string(), no_main_program(*f.index)));
+  f.reader->seek(*start);
   return Outcome::nothing;
 }
 
@@ -182,6 +213,27 @@ Outcome Decoder::Impl::do_return() {
 std::string Decoder::Impl::unclosed_message(std::string_view section) const {
   return fmt::format("the $ structure opened at line {} is not closed before the end of the {}",
                      frames.back().ctl.back().start.line, section);
+}
+
+// TF5200 20193: once the main program has started, % lines may not follow
+// before its end; the file's structure is wrong, so decoding stops (lint
+// would otherwise read the next section's blocks as the main program's).
+Outcome Decoder::Impl::header_in_main_program(std::size_t pos) {
+  const Frame& f = frames.back();
+  const std::string header = header_label(std::string_view(f.reader->text()).substr(pos));
+  std::string started;
+  if (mdi) started = "the MDI blocks";
+  else if (f.index->first_code)
+    started = fmt::format("the unnamed main program that line {} started (its first block outside comments; only "
+                          "comments may stand before the first %)",
+                          f.index->first_code->line);
+  else if (const Section* m = f.index->main())
+    started = fmt::format("the main program %{} of line {} before its M30/M2", m->name, m->header.line);
+  return report(ErrorId::NcPercentInMainProgram, pos,
+                fmt::format("{} inside {}: local subroutines (%L) go before the main program, and a % may follow "
+                            "only after its M30",
+                            header, started),
+                true);
 }
 
 // A % header or the end of the file ends the running program or subroutine.

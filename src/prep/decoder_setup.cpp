@@ -34,6 +34,8 @@ nc::DecoderConfig decoder_config(const config::Machine& m, std::size_t ch) {
   d.main_spindle_name = c.main_spindle_name.empty() ? "S" : c.main_spindle_name;
   d.slope_default = c.slope_profile;
   d.every_block = c.single_step_mode == 1;
+  d.multi_dimension_in_block = c.multi_dimension_in_block;
+  d.multi_axes_in_block = c.multi_axes_in_block;
   // The one place machine data switches decoder functions on or off.
   // P-CHAN-00507/00508: only the functions of the run's start mode.
   const std::uint32_t fct = c.decoder_functions();

@@ -310,6 +310,8 @@ struct ChannelConfig {
   // --start-mode); fct_enable[i] acts only when fct_condition[i] names it.
   std::string start_mode = "ISG_STANDARD";
   bool use_alias_names = false;                 // P-CHAN-00253 (0 after warning 22016)
+  bool multi_dimension_in_block = false;        // P-CHAN-00116
+  bool multi_axes_in_block = false;             // P-CHAN-00148 (0 after warning 21404)
   // P-CHAN-00500 with the P-CHAN-00507 entries whose condition is the start mode.
   std::uint32_t decoder_functions() const;
   bool dist_ctrl_enabled() const { return (decoder_functions() & decoder_fct::FCT_3D_DIST_CTRL) != 0; }

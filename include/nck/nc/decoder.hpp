@@ -61,6 +61,11 @@ struct DecoderConfig {
   int max_zero_offset_index = 96;             // highest G159 index (zero-offset groups 0..96)
   bool dist_ctrl_available = true;            // FCT_3D_DIST_CTRL (else #DIST CTRL -> 310015)
   bool continue_after_error = false;          // lint mode: skip a bad block and go on
+  // P-CHAN-00116: G90/G91 in one block act on the positions after them
+  // (axis_dimensions.cpp); P-CHAN-00148 (only with 00116): an axis may be
+  // programmed several times in one block, else TF5200 20203.
+  bool multi_dimension_in_block = false;
+  bool multi_axes_in_block = false;
   std::size_t max_block_chars = 4000;         // docs/nc-language.md (TF5200's limit)
   // Cycle search path after the program's folder: the machine's
   // cycle_path[i] folders (startup.lis), then --cycles DIR.
@@ -85,6 +90,11 @@ class KernelStateReader {
 };
 
 inline constexpr const char* kMdiFileName = "MDI";
+
+// The ISG functions the decoder refuses by name (920052) rather than as
+// unknown: G functions ("G5", "G80 … G89") and # functions ("#RT CYCLE",
+// "#MC_…"); docs/nc-language.md lists each.
+std::vector<std::string> refused_isg_functions();
 
 class Decoder {
  public:

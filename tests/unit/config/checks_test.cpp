@@ -260,5 +260,19 @@ TEST(Checks, DefaultAxisNameOfSpindle) {
   expect_one(g, g.load(), {ErrorId::ConfigAxisName, "ch.lis", 7});
 }
 
+// P-CHAN-00148 needs P-CHAN-00116: alone it is taken as 0 (TF5200 21404).
+TEST(Checks, MultiAxesNeedsMultiDimension) {
+  MachineFolder f;
+  f.append("ch.lis", "multi_axes_in_block 1\n");
+  auto r = f.load();
+  expect_one(f, r, {ErrorId::ConfigMultiAxesWithoutMultiDimension, "ch.lis", 7});
+  EXPECT_FALSE(r.machine->channels[0].multi_axes_in_block);
+  MachineFolder g;
+  g.append("ch.lis", "multi_axes_in_block 1\nmulti_dimension_in_block 1\n");
+  auto both = g.load();
+  EXPECT_TRUE(both.diagnostics.empty()) << dump(both.diagnostics);
+  EXPECT_TRUE(both.machine->channels[0].multi_axes_in_block);
+}
+
 }  // namespace
 }  // namespace nck::config

@@ -75,11 +75,16 @@ TEST_F(NcIsgSamples, VariablesSample) {
   auto cfg = default_config();
   cfg.continue_after_error = true;
   auto d = decode_file(samples() / "variables_test.nc", cfg);
-  // The ":" main-block marks and #VAR pass; the German prose line 23 inside
-  // the first program ("Zur besseren ...") is read as Z with a bad value.
-  ASSERT_FALSE(d.diags.empty());
-  EXPECT_EQ(d.diags[0].id, ErrorId::NcUnknownFunction) << dump(d);
-  EXPECT_EQ(d.diags[0].loc.line, 23u);
+  // The German title on line 1 ("Anlegen von Variablen ...") is the first
+  // block outside comments: it starts an unnamed main program (TF5200
+  // 20193), an unknown word here (A is no axis of the test channel), and
+  // %test_var_def_1 on line 3 then stands inside that program (20193,
+  // which stops decoding).
+  ASSERT_EQ(d.diags.size(), 2u) << dump(d);
+  EXPECT_EQ(d.diags[0].id, ErrorId::NcUnknownWord) << dump(d);
+  EXPECT_EQ(d.diags[0].loc.line, 1u);
+  EXPECT_EQ(d.diags[1].id, ErrorId::NcPercentInMainProgram) << dump(d);
+  EXPECT_EQ(d.diags[1].loc.line, 3u);
 }
 
 }  // namespace

@@ -187,7 +187,8 @@ TEST(NcWords, ToolWords) {
   EXPECT_EQ(d.blocks[1].modal.d, 3);
   EXPECT_TRUE(decode("D1.5\n").has(ErrorId::NcBadToolNumber));
   EXPECT_TRUE(decode("F-5\n").has(ErrorId::NcNegativeFeed));
-  EXPECT_TRUE(decode("X1 X2\n").has(ErrorId::NcDuplicateWord));
+  EXPECT_TRUE(decode("X1 X2\n").has(ErrorId::NcAxisTwice));
+  EXPECT_TRUE(decode("F1 F2\n").has(ErrorId::NcDuplicateWord));
 }
 
 TEST(NcWords, ThreadAndTapping) {
