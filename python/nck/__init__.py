@@ -10,14 +10,17 @@ The same library ``nck run`` uses, in this process (no subprocess):
 
 docs/python.md documents the API with examples.
 """
-from . import _nck
-from ._errors import ActionError, ArgumentError, ConfigError, Error, ProgramError
+from . import _args, _nck
+from ._errors import ActionError, ArgumentError, ConfigError, Error, ProgramError, SessionBusy
 from ._machine import Machine, Run
 from ._session import Session
 from ._batch import batch
 
-__all__ = ["Machine", "Run", "Session", "batch", "parse", "errors", "params",
-           "Error", "ConfigError", "ProgramError", "ActionError", "ArgumentError"]
+#: The events' kinds ("ev"), by the code ``Run.event_records["ev"]`` holds.
+EVENT_KINDS = _nck.EVENT_KINDS
+
+__all__ = ["Machine", "Run", "Session", "batch", "parse", "errors", "params", "EVENT_KINDS",
+           "Error", "ConfigError", "ProgramError", "ActionError", "ArgumentError", "SessionBusy"]
 
 
 def parse(program, machine=None, channel=1, max_wall=None):
@@ -26,18 +29,25 @@ def parse(program, machine=None, channel=1, max_wall=None):
 
     Args:
         program: the NC program's path.
-        machine: an ``nck.Machine`` whose axis and spindle names to use
-            (default: X Y Z A B C U V W, S1 S2 S3).
+        machine: an ``nck.Machine``, or a machine folder's path, whose axis
+            and spindle names to use (default: X Y Z A B C U V W, S1 S2 S3).
         channel: the machine's channel (1..).
         max_wall: wall-clock limit, s (None: none); reaching it is an error.
+
+    Ctrl-C stops the decoder at its next block and raises KeyboardInterrupt.
 
     Raises:
         ProgramError: the file does not exist, or has errors (``.diagnostics``
             lists every one: decoding goes on past a bad block).
+        ConfigError: the machine folder cannot be loaded.
+        ArgumentError: an argument nck cannot use (940201).
     """
-    import os
-    m = machine._m if machine is not None else None
-    return _nck.parse(os.fspath(program), m, int(channel), float(max_wall or 0))
+    path = _args.path(program, "program")
+    if machine is not None and not isinstance(machine, Machine):
+        machine = Machine(_args.path(machine, "machine"))
+    ch = _args.whole(channel, "channel", 1)  # the core says when the machine has no such channel
+    wall = _args.optional_positive(max_wall, "max_wall")
+    return _nck.parse(path, machine._m if machine is not None else None, ch, wall)
 
 
 def errors():

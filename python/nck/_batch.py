@@ -77,19 +77,40 @@ def batch(jobs, scheduler=None, workers=None):
     if isinstance(scheduler, concurrent.futures.Executor):  # a pool kept by the caller (bench/)
         return list(scheduler.map(run_job, jobs))
     if scheduler is None:
-        import multiprocessing
-        # spawn: a forked child would inherit the parent's threads' state
-        with concurrent.futures.ProcessPoolExecutor(max_workers=workers or os.cpu_count(),
-                                                    mp_context=multiprocessing.get_context("spawn")) as pool:
-            return list(pool.map(run_job, jobs))
+        return _on_local_processes(jobs, workers)
     from distributed import Client
     client = scheduler if isinstance(scheduler, Client) else Client(scheduler)
+    futures = []
     try:
         futures = client.map(run_job, jobs, pure=False)
         return client.gather(futures)
+    except BaseException:  # Ctrl-C too: the cluster should not go on with them
+        client.cancel(futures)
+        raise
     finally:
         if client is not scheduler:
             client.close()
+
+
+def _on_local_processes(jobs, workers):
+    import concurrent.futures
+    import multiprocessing
+    # spawn: a forked child would inherit the parent's threads' state
+    pool = concurrent.futures.ProcessPoolExecutor(max_workers=workers or os.cpu_count(),
+                                                  mp_context=multiprocessing.get_context("spawn"))
+    try:
+        return list(pool.map(run_job, jobs))
+    except BaseException:
+        # Ctrl-C (or a job's exception): the pool's own shutdown waits for
+        # every running job, a long run's minutes (50 s in the stress test);
+        # the queued ones are cancelled and the workers ended instead.
+        processes = list((getattr(pool, "_processes", None) or {}).values())  # shutdown forgets them
+        pool.shutdown(wait=False, cancel_futures=True)
+        for process in processes:
+            process.terminate()
+        raise
+    finally:
+        pool.shutdown(wait=True)
 
 
 def write_csv(rows, path):

@@ -56,3 +56,10 @@ class ActionError(Error):
 
 class ArgumentError(Error, ValueError):
     """An argument nck cannot use (a negative cycle count, a bad stop_at mark)."""
+
+
+class SessionBusy(Error, RuntimeError):
+    """A Session called from inside one of its own calls, in the same thread
+    (a ``__del__``, a gc callback or a signal handler that ran meanwhile):
+    waiting for its turn would never end (940203). Threads sharing a
+    session never see it: they take turns."""

@@ -1,25 +1,5 @@
 """nck.Machine and nck.Run: load a machine folder, run NC programs on it."""
-import os
-
-from . import _nck
-from ._errors import ArgumentError
-
-
-def _programs(program):
-    """One path, or a list of paths (program i runs in channel i+1)."""
-    if program is None:
-        return []
-    if isinstance(program, (str, os.PathLike)):
-        return [os.fspath(program)]
-    return [os.fspath(p) for p in program]
-
-
-def _whole(value, name, lowest=0):
-    if value is None:
-        return None
-    if isinstance(value, bool) or not isinstance(value, int) or value < lowest:
-        raise ArgumentError(f"{name} must be a whole number >= {lowest}, not {value!r}", 940201)
-    return value
+from . import _args, _nck
 
 
 class Run:
@@ -34,7 +14,13 @@ class Run:
         errors: the errors, dicts with id, ch, line, file, msg.
         warnings: the warnings (also those of the machine data), same dicts.
         events: list of dicts, one per event, the --events JSONL schema
-            (docs/outputs.md).
+            (docs/outputs.md); made from the compact form when first read.
+        event_records: the same events as a numpy structured array, 22
+            bytes each: t (float64, s), ch (uint8), ev (uint8, the index
+            of its kind in ``nck.EVENT_KINDS``), line (uint32), n (int64,
+            -1: no N number); ``event(i)`` is row i's dict.
+        event_bytes: the memory the kept events take (their compact form,
+            which ``max_events_mb`` bounds).
         final: dict, the --final JSON document.
         trace: dict of numpy float64 arrays, one per --trace CSV column
             ("t", "X", "S1.rpm" ...), full precision; None unless the run was
@@ -51,9 +37,16 @@ class Run:
     errors = property(lambda self: self._r.errors)
     warnings = property(lambda self: self._r.warnings)
     events = property(lambda self: self._r.events)
+    event_records = property(lambda self: self._r.event_records)
+    event_bytes = property(lambda self: self._r.event_bytes)
     final = property(lambda self: self._r.final)
     trace = property(lambda self: self._r.trace)
     messages = property(lambda self: list(self._r.messages))
+
+    def event(self, i):
+        """Event i (negative: from the end) as its dict, without making
+        the dicts of all of them (``events``)."""
+        return self._r.event(_args.whole(i, "i", -_args.LARGEST))
 
     def summary(self):
         """The one-line summary ``nck run`` ends with: end reason, cycle
@@ -81,7 +74,7 @@ class Machine:
     def __init__(self, path):
         """Loads and checks the machine folder `path` (ConfigError when it
         cannot be used; warnings are in ``.warnings``)."""
-        self._m = _nck._Machine(os.fspath(path))
+        self._m = _nck._Machine(_args.path(path, "path"))
 
     @property
     def path(self):
@@ -99,7 +92,7 @@ class Machine:
         return self._m.warnings
 
     def run(self, program, plc=None, start_at=None, stop_at=None, trace_every=None, max_time=86400.0,
-            max_wall=None, max_trace_mb=512, events=True):
+            max_wall=None, max_trace_mb=512, events=True, max_events_mb=256):
         """Runs a program to its end, as ``nck run MACHINE PROGRAM`` does,
         in this process, and returns a ``Run``.
 
@@ -121,6 +114,11 @@ class Machine:
             events: False keeps no events (``Run.events`` is []): less
                 memory and time for a long program whose events you do
                 not read.
+            max_events_mb: the memory limit of the kept events (their
+                compact form, about 80-200 bytes each); reaching it ends the
+                run ("max_events", error 940204) rather than exhaust memory.
+                ``Run.events``' dicts take several times more when read;
+                ``Run.event_records`` 22 bytes per event.
 
         Raises:
             ProgramError: the program does not exist, or the run cannot start.
@@ -129,12 +127,16 @@ class Machine:
         An NC error while running does not raise: ``Run.exit`` is 1 and
         ``Run.errors`` lists it.
         """
-        every = _whole(trace_every, "trace_every", 1) or 0
-        result = self._m.run(_programs(program), os.fspath(plc) if plc else "", start_at, stop_at, every,
-                             float(max_time), float(max_wall or 0), float(max_trace_mb), bool(events))
+        result = self._m.run(_args.paths(program, "program"), _args.optional_path(plc, "plc"),
+                             _args.text(start_at, "start_at", optional=True),
+                             _args.text(stop_at, "stop_at", optional=True),
+                             _args.whole(trace_every, "trace_every", 1, optional=True) or 0, _args.positive(max_time, "max_time"),
+                             _args.optional_positive(max_wall, "max_wall"),
+                             _args.positive(max_trace_mb, "max_trace_mb"), bool(events),
+                             _args.positive(max_events_mb, "max_events_mb"))
         return Run(result)
 
-    def session(self, program=None, plc=None):
+    def session(self, program=None, plc=None, max_events_mb=256):
         """Opens a live ``Session`` on this machine: nothing runs until you
         step it; see ``nck.Session``.
 
@@ -142,9 +144,13 @@ class Machine:
             program: the program (or a list, one per channel); None: the
                 channels wait for MDI and jogging.
             plc: a --plc scenario that runs alongside.
+            max_events_mb: the memory limit of the events waiting for
+                ``Session.events()``; past it the oldest half is dropped
+                and a warning event 940205 says so (a ring: the session
+                goes on).
         """
         from ._session import Session
-        return Session(self, program, plc)
+        return Session(self, program, plc, max_events_mb)
 
     def __repr__(self):
         return f"<nck.Machine {self.path!r} channels={self.channels}>"

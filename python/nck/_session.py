@@ -1,17 +1,13 @@
 """nck.Session: a machine running cycle by cycle, operated from Python."""
-import os
-
-from . import _nck
+from . import _args, _nck
+from ._args import whole as _whole
 from ._errors import ArgumentError
-from ._machine import _programs, _whole
 
 
 def _number(value, name):
     """The value as the session takes it: six significant digits (the
     precision it has always had)."""
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise ArgumentError(f"{name} must be a number, not {value!r}", 940201)
-    return float(f"{value:g}")
+    return float(f"{_args.number(value, name):g}")
 
 
 class Session:
@@ -29,8 +25,11 @@ class Session:
     given here starts running at the first step.
 
     An NC error ends the program (see ``errors()``, ``events()``), not the
-    session: MDI, jogging and reset still work. Use a session from one
-    thread at a time.
+    session: MDI, jogging and reset still work. Threads may share a
+    session: its calls take turns (one that finds it busy waits, without
+    the GIL; Ctrl-C ends the wait). A call from inside one of its own calls
+    (a ``__del__`` or gc callback in the same thread) raises
+    ``SessionBusy``.
 
     Example::
 
@@ -41,9 +40,10 @@ class Session:
         print(s.state()["channels"][0]["axes"]["X"]["mcs"])
     """
 
-    def __init__(self, machine, program=None, plc=None):
+    def __init__(self, machine, program=None, plc=None, max_events_mb=256):
         self._machine = machine
-        self._s = _nck._Session(machine._m, _programs(program), os.fspath(plc) if plc else "")
+        self._s = _nck._Session(machine._m, _args.paths(program, "program"), _args.optional_path(plc, "plc"),
+                                _args.positive(max_events_mb, "max_events_mb"))
 
     # -- running -----------------------------------------------------------
     def step(self, cycles=1):
@@ -69,15 +69,17 @@ class Session:
             block = int(block[1:])
         if block is None and line is None and event is None and time_s is None:
             raise ArgumentError("run_until needs block, line, event or time_s", 940201)
-        until = _nck._Until(_whole(block, "block"), _whole(line, "line"), event,
-                            None if time_s is None else float(time_s))
+        until = _nck._Until(_whole(block, "block", optional=True),
+                            _whole(line, "line", 0, 2**32 - 1, optional=True),
+                            _args.text(event, "event", optional=True),
+                            None if time_s is None else _args.number(time_s, "time_s"))
         return self._s.run_until(until, _whole(max_cycles, "max_cycles"))
 
     # -- the operator ------------------------------------------------------
     def action(self, line):
         """Any operator line of the scenario grammar, e.g. "ch=2 feedhold on"
         (docs/plc-scenario.md); ActionError when malformed or refused."""
-        self._s.action(line)
+        self._s.action(_args.text(line, "line"))
 
     def cycle_start(self, ch=1):
         """Cycle start: releases a hold (M0/M1, single step, stop), or starts
@@ -126,7 +128,7 @@ class Session:
         """Runs one NC block typed by the operator (the channel must not be
         running a program). One cycle runs to decode it; an error in the
         text raises ProgramError, and the session stays usable."""
-        self._s.mdi(text, _whole(ch, "ch", 1))
+        self._s.mdi(_args.text(text, "text"), _whole(ch, "ch", 1))
 
     def jog(self, axis, direction, speed=None, ch=1):
         """Jogs an axis (mode manual): direction "+", "-" or "stop"; speed
@@ -150,7 +152,9 @@ class Session:
         return self._s.state()
 
     def events(self):
-        """The events (dicts of the JSONL schema) since the last call."""
+        """The events (dicts of the JSONL schema) since the last call. At
+        most ``max_events_mb`` of them wait: past it the oldest half goes
+        and a ``warning`` event 940205 says so."""
         return self._s.events()
 
     def errors(self):

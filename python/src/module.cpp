@@ -13,6 +13,7 @@
 #include "nck/prep/decoder_setup.hpp"
 #include "nck/run/stop_request.hpp"
 #include "py_common.hpp"
+#include "py_interrupt.hpp"
 #include "py_machine.hpp"
 
 namespace nck::py {
@@ -24,7 +25,9 @@ namespace {
 
 // nck parse --json: the blocks as dicts; errors raise ProgramError with
 // every diagnostic (decoding goes on past a bad block, as nck parse does).
+// Ctrl-C stops the decoder at its next block (KeyboardInterrupt).
 pyb::list parse(const std::string& program, const Machine* machine, std::size_t channel, double max_wall_s) {
+  if (max_wall_s != 0) check_positive(max_wall_s, "max_wall");
   nc::DecoderConfig cfg;
   cfg.axis_names = {"X", "Y", "Z", "A", "B", "C", "U", "V", "W"};
   cfg.spindle_names = {"S1", "S2", "S3"};
@@ -42,6 +45,7 @@ pyb::list parse(const std::string& program, const Machine* machine, std::size_t 
   cfg.stop = &stop;
   std::vector<nlohmann::json> blocks;
   std::vector<Diagnostic> diagnostics;
+  const CtrlC ctrl_c(stop);
   {
     pyb::gil_scoped_release no_gil;
     const app::WallClockLimit wall(max_wall_s, &stop);
@@ -58,6 +62,7 @@ pyb::list parse(const std::string& program, const Machine* machine, std::size_t 
       diagnostics.push_back(make_diagnostic(ErrorId::AppWallTimeLimit, {program, 0, 0},
                                             fmt::format("max_wall {} s reached after {} block(s)", max_wall_s, blocks.size())));
   }
+  ctrl_c.raise_if_pressed();
   NckError failed{"ProgramError", {}};
   for (const Diagnostic& d : diagnostics)
     if (d.severity == Severity::error) failed.diagnostics.push_back(d);

@@ -1,5 +1,6 @@
 #include "py_machine.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -29,12 +30,14 @@ prep::SearchMark start_mark(const std::string& text) {
   return *m;
 }
 
+}  // namespace
+
 void check_positive(double v, const char* name) {
   if (!(v > 0) || !std::isfinite(v))
     raise("ArgumentError", ErrorId::AppBadArgument, fmt::format("{} must be a positive number, not {}", name, v));
 }
 
-}  // namespace
+std::uint64_t mb_bytes(double mb) { return static_cast<std::uint64_t>(std::min(mb * 1024 * 1024, 0x1p62)); }
 
 app::RunOptions Machine::options(const RunArgs& a) const {
   app::RunOptions o;
@@ -60,6 +63,7 @@ app::RunOptions Machine::options(const RunArgs& a) const {
   check_positive(a.max_time_s, "max_time");
   if (a.max_wall_s != 0) check_positive(a.max_wall_s, "max_wall");
   check_positive(a.max_trace_mb, "max_trace_mb");
+  check_positive(a.max_events_mb, "max_events_mb");
   o.max_time_s = a.max_time_s;
   o.max_wall_s = a.max_wall_s;
   o.trace_every = a.trace_every;
@@ -97,9 +101,8 @@ RunResult run(const Machine& m, const RunArgs& args) {
   auto created = app::Simulation::create(m.data, opt, app::Simulation::Host::embedded);
   if (!created) raise_setup(created.error());
   app::Simulation& s = **created;
-  const std::uint64_t max_bytes = static_cast<std::uint64_t>(args.max_trace_mb * 1024 * 1024);
-  s.outputs().keep_events = args.keep_events;
-  if (args.trace_every > 0) s.outputs().trace_memory.start(s.machine(), args.trace_every, max_bytes);
+  if (args.keep_events) s.outputs().event_memory.start(mb_bytes(args.max_events_mb), app::EventMemory::Full::end_run);
+  if (args.trace_every > 0) s.outputs().trace_memory.start(s.machine(), args.trace_every, mb_bytes(args.max_trace_mb));
   for (std::size_t i = 0; i < m.warnings.size(); ++i) s.outputs().summary.warning();
   const CtrlC ctrl_c(*s.own_stop_flag());  // ends the run as a wall-clock limit would
   {
@@ -134,12 +137,13 @@ void bind_machine(pyb::module_& mod) {
           "run",
           [](const Machine& m, std::vector<std::string> programs, std::string plc, std::optional<std::string> start_at,
              std::optional<std::string> stop_at, std::uint64_t trace_every, double max_time_s, double max_wall_s,
-             double max_trace_mb, bool keep_events) {
+             double max_trace_mb, bool keep_events, double max_events_mb) {
             return run(m, RunArgs{std::move(programs), std::move(plc), std::move(start_at), std::move(stop_at),
-                                  trace_every, max_time_s, max_wall_s, max_trace_mb, keep_events});
+                                  trace_every, max_time_s, max_wall_s, max_trace_mb, keep_events, max_events_mb});
           },
           pyb::arg("programs"), pyb::arg("plc"), pyb::arg("start_at"), pyb::arg("stop_at"), pyb::arg("trace_every"),
-          pyb::arg("max_time_s"), pyb::arg("max_wall_s"), pyb::arg("max_trace_mb"), pyb::arg("keep_events"));
+          pyb::arg("max_time_s"), pyb::arg("max_wall_s"), pyb::arg("max_trace_mb"), pyb::arg("keep_events"),
+          pyb::arg("max_events_mb"));
 }
 
 }  // namespace nck::py

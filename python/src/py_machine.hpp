@@ -22,7 +22,11 @@ struct RunArgs {
   double max_wall_s = 0;
   double max_trace_mb = 512;
   bool keep_events = true;  // false: Run.events stays empty (a batch needs none)
+  double max_events_mb = 256;
 };
+
+// A bound in MB (as the API takes it) in bytes.
+std::uint64_t mb_bytes(double mb);
 
 struct Machine {
   std::string path;
@@ -35,5 +39,7 @@ struct Machine {
 
 Machine load(const std::string& path);
 void bind_machine(pybind11::module_& m);
+// A value the API takes only positive and finite (ArgumentError 940201 otherwise).
+void check_positive(double v, const char* name);
 
 }  // namespace nck::py

@@ -5,7 +5,6 @@
 // a line the user typed, goes through the scenario parser.
 #include <algorithm>
 #include <cmath>
-#include <mutex>
 
 #include <fmt/format.h>
 #include <pybind11/stl.h>
@@ -16,6 +15,8 @@
 #include "py_common.hpp"
 #include "py_interrupt.hpp"
 #include "py_machine.hpp"
+#include "py_run.hpp"
+#include "py_turns.hpp"
 
 namespace nck::py {
 namespace {
@@ -38,17 +39,20 @@ struct Until {
   std::optional<std::uint32_t> line;        // a block of this main-program line starts
   std::optional<kernel::EventKind> event;   // the first event of this kind
   std::optional<double> time_s;             // simulated time reached
-  bool matches(const kernel::Event& e) const {
-    if (event && e.kind() == *event) return true;
-    if (e.kind() != kernel::EventKind::block) return false;
-    if (n && e.at.n == *n) return true;
-    return line && e.at.line == *line;
+  bool matches(const app::EventRecord& e) const {
+    const auto kind = static_cast<kernel::EventKind>(e.kind);
+    if (event && kind == *event) return true;
+    if (kind != kernel::EventKind::block) return false;
+    if (n && e.n == *n) return true;
+    return line && e.line == *line;
   }
 };
 
 class Session {
  public:
-  Session(const Machine& m, std::vector<std::string> programs, std::string plc) : machine_(&m) {
+  Session(const Machine& m, std::vector<std::string> programs, std::string plc, double max_events_mb)
+      : machine_(&m) {
+    check_positive(max_events_mb, "max_events_mb");
     RunArgs args;
     args.programs = std::move(programs);
     args.plc = std::move(plc);
@@ -62,6 +66,8 @@ class Session {
       throw e;
     }
     sim_ = std::move(*created);
+    // Events wait for events(); past the bound the oldest go (a ring), not the session.
+    sim_->outputs().event_memory.start(mb_bytes(max_events_mb), app::EventMemory::Full::drop_oldest);
     // The operator presses cycle start: a hold (M0, single step, stop) waits for it.
     for (std::size_t ch = 1; ch <= m.data.channels.size(); ++ch)
       operate(static_cast<std::int64_t>(ch), sim::act::AutoCycleStart{false});
@@ -98,12 +104,13 @@ class Session {
   }
 
   bool cycles_until(const Until& u, std::int64_t max_cycles, const std::atomic<bool>& pressed) {
-    const auto& events = sim_->outputs().typed_list;
+    const app::EventMemory& events = sim_->outputs().event_memory;
     for (std::int64_t i = 0; i < max_cycles && !pressed.load(std::memory_order_relaxed); ++i) {
-      const std::size_t seen = events.size();
+      const std::uint64_t seen = events.total();
       sim_->cycle();
-      for (std::size_t k = seen; k < events.size(); ++k)
-        if (u.matches(events[k])) return true;
+      // counted from the run's first event: a full memory drops its oldest within the cycle
+      for (std::uint64_t k = std::max(seen, events.first()); k < events.total(); ++k)
+        if (u.matches(events.records[k - events.first()])) return true;
       if (u.time_s && sim_->run().time_s() >= *u.time_s) return true;
       if (waits_for_operator()) return false;
     }
@@ -180,27 +187,24 @@ class Session {
   }
 
   // MDI text runs at once: one cycle decodes it, and an error in it raises
-  // ProgramError (the session stays usable).
-  void mdi(const std::string& text, int channel) {
-    const auto& events = sim_->outputs().typed_list;
+  // ProgramError (the session stays usable). The run's error list has each
+  // NC error with its text, kept or not as an event.
+  void mdi(const std::string& text, std::int64_t channel) {
+    const std::vector<app::FinalError>& errors = sim_->outputs().errors;
     submit_mdi(channel, text);
-    const std::size_t seen = events.size();
+    const std::size_t seen = errors.size();
     step(1);
-    for (std::size_t k = seen; k < events.size(); ++k) {
-      const kernel::Event& e = events[k];
-      const auto* error = e.get<kernel::ev::Error>();
-      if (!error || e.channel != channel) continue;
-      throw NckError{"ProgramError", {make_diagnostic(error->id, SourceLoc{"mdi", 1, 0},
-                                                      sim_->names().text(error->id, error->message))}};
+    for (std::size_t k = seen; k < errors.size(); ++k) {
+      const app::FinalError& e = errors[k];
+      if (static_cast<std::int64_t>(e.channel) != channel || e.id == number(ErrorId::AppChannelReset)) continue;  // a scenario's reset is none
+      throw NckError{"ProgramError", {make_diagnostic(static_cast<ErrorId>(e.id), SourceLoc{"mdi", 1, 0}, e.msg)}};
     }
   }
 
   pyb::list take_events() {
-    auto& events = sim_->outputs().event_list;
-    pyb::list out(events.size());
-    for (std::size_t i = 0; i < events.size(); ++i) out[i] = to_python(events[i]);
+    app::EventMemory& events = sim_->outputs().event_memory;
+    pyb::list out = event_dicts(events);
     events.clear();
-    sim_->outputs().typed_list.clear();
     return out;
   }
 
@@ -245,24 +249,16 @@ class Session {
     std::copy(name.begin(), name.end(), to.begin());
     return true;
   }
-  void submit_mdi(int channel, const std::string& text);
+  void submit_mdi(std::int64_t channel, const std::string& text);
 
  public:
-  // The session for one Python caller (locked()): a caller that finds it
-  // busy waits without holding the GIL, which the busy one needs back.
-  std::unique_lock<std::mutex> hold() {
-    std::unique_lock<std::mutex> lock(busy_, std::try_to_lock);
-    if (!lock.owns_lock()) {
-      pyb::gil_scoped_release no_gil;
-      lock.lock();
-    }
-    return lock;
-  }
+  // The session for one Python caller (locked(), py_turns.hpp).
+  Turns::Turn hold() { return turns_.take(); }
 
  private:
   const Machine* machine_;  // kept alive by the Python Session (keep_alive)
   std::unique_ptr<app::Simulation> sim_;
-  std::mutex busy_;
+  Turns turns_;
 };
 
 // One Python caller in a session at a time: step and run_until release the
@@ -293,7 +289,7 @@ auto locked(R (*call)(Session&, A...)) {
 
 // The session's MDI text as it has always been taken (a scenario line's
 // rest): one line, a '#' ends it, the blanks around it dropped.
-void Session::submit_mdi(int channel, const std::string& text) {
+void Session::submit_mdi(std::int64_t channel, const std::string& text) {
   if (text.find_first_of("\r\n") != std::string::npos)
     throw NckError{"ActionError", {make_diagnostic(ErrorId::PlcOperatorActionBad, SourceLoc{"python", 1, 0},
                                                    "an operator action is one line")}};
@@ -350,8 +346,8 @@ void bind_session(pyb::module_& m) {
            }),
            pyb::arg("n"), pyb::arg("line"), pyb::arg("event"), pyb::arg("time_s"));
   pyb::class_<Session>(m, "_Session")
-      .def(pyb::init<const Machine&, std::vector<std::string>, std::string>(), pyb::arg("machine"),
-           pyb::arg("programs"), pyb::arg("plc"), pyb::keep_alive<1, 2>())
+      .def(pyb::init<const Machine&, std::vector<std::string>, std::string, double>(), pyb::arg("machine"),
+           pyb::arg("programs"), pyb::arg("plc"), pyb::arg("max_events_mb"), pyb::keep_alive<1, 2>())
       .def("step", locked(&Session::step), pyb::arg("cycles"))
       .def("run_until", locked(&Session::run_until), pyb::arg("until"), pyb::arg("max_cycles"))
       .def("action", locked(&Session::action), pyb::arg("line"))

@@ -451,6 +451,7 @@ std::pair<ProgramState, StateReason> state_after(EndReason r) noexcept {
     case EndReason::hold: return {ProgramState::ended, StateReason::hold};
     case EndReason::stop_at: return {ProgramState::ended, StateReason::stop_at};
     case EndReason::max_trace: return {ProgramState::ended, StateReason::max_trace};
+    case EndReason::max_events: return {ProgramState::ended, StateReason::max_events};
   }
   return {ProgramState::ended, StateReason::m30};
 }

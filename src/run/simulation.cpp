@@ -62,6 +62,7 @@ kernel::StateReason state_reason_of(kernel::EndReason r) {
     case R::hold: return kernel::StateReason::hold;
     case R::stop_at: return kernel::StateReason::stop_at;
     case R::max_trace: return kernel::StateReason::max_trace;
+    case R::max_events: return kernel::StateReason::max_events;
     default: return kernel::StateReason::error;
   }
 }
@@ -97,9 +98,7 @@ Simulation::Simulation(const RunOptions& opt, Host host)
     : opt_(opt),
       out_(host == Host::embedded),
       progress_(opt.progress && host == Host::cli, opt.programs),
-      stop_(host == Host::cli ? &stop_flag() : &own_stop_) {
-  out_.keep_events = host == Host::embedded;
-}
+      stop_(host == Host::cli ? &stop_flag() : &own_stop_) {}
 
 Simulation::~Simulation() = default;
 
@@ -180,7 +179,7 @@ void Simulation::record_events(const kernel::TickOutput& o) {
   for (const kernel::Event& e : o.events) {
     out_.summary.take(e);
     if (out_.wants_events()) {
-      if (e.kind() == kernel::EventKind::block && !out_.keep_events) out_.event_line(e, block_text_.line(e, names_), names_);
+      if (e.kind() == kernel::EventKind::block) out_.event_line(e, block_text_.line(e, names_), names_);
       else out_.event(e, names_);
     }
     const auto* error = e.get<kernel::ev::Error>();
@@ -212,6 +211,15 @@ void Simulation::cycle() {
   if (!out_.trace_memory.write(index, o)) trace_full_ = true;
   out_.report.sample(index, o, names_);
   if (stop_at_ && stop_at_->reached(o)) stop_at_reached_ = true;
+  if (out_.event_memory.take_dropped() > 0) report_events_dropped(o);
+}
+
+// A session's events reached their bound and the oldest went: a warning
+// event says so where they went missing. Only the event, no stderr line or
+// warnings entry: those lists would grow with every drop.
+void Simulation::report_events_dropped(const kernel::TickOutput& o) {
+  const kernel::Event e{{o.t_s, 0, {}}, kernel::ev::Warning{{ErrorId::AppEventsDropped, {}, {}}}};
+  out_.event(e, names_);
 }
 
 std::optional<kernel::EndReason> Simulation::run_to_end() {
@@ -221,6 +229,7 @@ std::optional<kernel::EndReason> Simulation::run_to_end() {
     const double t_s = run_->time_s();
     cycle();
     if (trace_full_) return kernel::EndReason::max_trace;
+    if (out_.event_memory.full()) return kernel::EndReason::max_events;
     if (stop_at_reached_) return kernel::EndReason::stop_at;
     if (run_->done()) return std::nullopt;
     if (stop_->load(std::memory_order_relaxed))
@@ -258,19 +267,22 @@ void Simulation::end_unfinished_channels(kernel::EndReason reason) {
   else if (reason == R::interrupted)
     out_.console.line(fmt::format("nck: interrupted at {} s (simulated); the output files are complete", run_->time_s()));
   else if (reason == R::max_trace)
-    report_trace_full();
+    report_memory_full(ErrorId::AppTraceMemoryLimit, "trace", out_.trace_memory.max_bytes());
+  else if (reason == R::max_events)
+    report_memory_full(ErrorId::AppEventMemoryLimit, "events", out_.event_memory.max_bytes());
 }
 
-// The memory limit of the trace kept in memory ended the run: an error with its ID.
-void Simulation::report_trace_full() {
-  const std::string text = fmt::format("the trace in memory reached its limit of {} bytes at {} s; the run ended there",
-                                       out_.trace_memory.max_bytes(), run_->time_s());
-  out_.console.line(fmt::format("nck: error {}: {}", number(ErrorId::AppTraceMemoryLimit), text));
-  out_.errors.push_back(FinalError{number(ErrorId::AppTraceMemoryLimit), 0, 0, std::string(), text});
+// The memory limit of the trace or the events kept in memory ended the run: an error with its ID.
+void Simulation::report_memory_full(ErrorId id, const char* what, std::uint64_t max_bytes) {
+  const std::string text = fmt::format("the {} kept in memory reached the limit of {} bytes at {} s; the run ended there",
+                                       what, max_bytes, run_->time_s());
+  out_.console.line(fmt::format("nck: error {}: {}", number(id), text));
+  out_.errors.push_back(FinalError{number(id), 0, 0, std::string(), text});
 }
 
 void Simulation::finish(std::optional<kernel::EndReason> stopped) {
   stopped_ = stopped;
+  out_.event_memory.lift_bound();  // the closing state and end events of a run that hit it
   progress_.clear();
   run_->stop_preparation();  // what is read below belongs to preparation
   if (stopped) end_unfinished_channels(*stopped);

@@ -14,9 +14,9 @@ namespace nck::kernel {
 
 // hold: the run ended while a channel held and nothing could release it (nck run)
 // stop_at: the run ended at its stop-at mark (nck run --stop-at)
-// max_trace: the Python trace's memory limit
+// max_trace, max_events: the Python trace's / events' memory limit
 enum class EndReason : std::uint8_t { m30, m2, error, reset, max_time, max_wall, interrupted, hold, stop_at,
-                                      max_trace };
+                                      max_trace, max_events };
 
 constexpr const char* end_name(EndReason r) noexcept {
   switch (r) {
@@ -30,6 +30,7 @@ constexpr const char* end_name(EndReason r) noexcept {
     case EndReason::hold: return "hold";
     case EndReason::stop_at: return "stop_at";
     case EndReason::max_trace: return "max_trace";
+    case EndReason::max_events: return "max_events";
   }
   return "error";
 }

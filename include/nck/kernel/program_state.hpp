@@ -35,6 +35,7 @@ enum class StateReason : std::uint8_t {
   mdi,           // MDI text began or was done
   stop,          // NC stop: the operator stopped the program
   max_trace,     // the Python module's trace reached its memory limit (max_trace_mb)
+  max_events,    // the Python module's events reached their memory limit (max_events_mb)
 };
 
 constexpr std::string_view state_name(ProgramState s) noexcept {
@@ -70,6 +71,7 @@ constexpr std::string_view state_reason_name(StateReason r) noexcept {
     case StateReason::mdi: return "mdi";
     case StateReason::stop: return "stop";
     case StateReason::max_trace: return "max_trace";
+    case StateReason::max_events: return "max_events";
   }
   return "start";
 }

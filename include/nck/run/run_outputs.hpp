@@ -8,6 +8,7 @@
 #include "nck/output/time_by_cause.hpp"
 #include "nck/report/report_writer.hpp"
 #include "nck/run/console.hpp"
+#include "nck/run/event_memory.hpp"
 #include "nck/run/run_options.hpp"
 #include "nck/run/run_summary.hpp"
 #include "nck/run/trace_memory.hpp"
@@ -15,16 +16,14 @@
 namespace nck::app {
 
 // Where a run's results go: the files of `nck run`, or memory (the Python
-// module: events as JSON objects, the trace as columns, stderr kept).
+// module: events as their JSON lines, the trace as columns, stderr kept).
 struct RunOutputs {
   explicit RunOutputs(bool keep_console = false) : console(keep_console) {}
   EventWriter events;
   TraceWriter trace;
   ReportWriter report;
-  bool keep_events = false;                    // the Python module: into event_list
-  std::vector<nlohmann::ordered_json> event_list;
-  std::vector<kernel::Event> typed_list;       // the same events typed (a session matches kinds on them)
-  TraceMemory trace_memory;                   // the Python module's trace
+  EventMemory event_memory;    // the Python module's events (off unless started)
+  TraceMemory trace_memory;    // the Python module's trace
   std::vector<FinalError> errors;
   std::vector<FinalError> warnings;  // every warning of the run said on stderr (the module's Run.warnings)
   RunSummary summary;
@@ -32,19 +31,13 @@ struct RunOutputs {
   Console console;     // stderr
 
   // Events are rendered only when an output wants them.
-  bool wants_events() const { return keep_events || events.is_open() || report.enabled(); }
-  void event(const kernel::Event& e, const RunNames& names) {
-    nlohmann::ordered_json j = EventWriter::object(e, names);
-    if (events.is_open() || report.enabled()) event_line(e, dump_json(j), names);
-    if (keep_events) {
-      event_list.push_back(std::move(j));
-      typed_list.push_back(e);
-    }
-  }
+  bool wants_events() const { return event_memory.enabled() || events.is_open() || report.enabled(); }
+  void event(const kernel::Event& e, const RunNames& names) { event_line(e, dump_json(EventWriter::object(e, names)), names); }
   // An event already written as its line (block events: BlockEventText).
   void event_line(const kernel::Event& e, const std::string& line, const RunNames& names) {
     events.write_line(line);
     report.event(e, line, names);
+    event_memory.add(e, line);
   }
 };
 

@@ -25,7 +25,8 @@ class Simulation {
  public:
   // Who runs it: `nck run` (stderr printed, the process's stop flag, which
   // signals raise) or a library user in a longer-lived process (the Python
-  // module: stderr's lines and the events kept, a stop flag of the run's own).
+  // module: stderr's lines kept, a stop flag of the run's own; it keeps the
+  // events by starting outputs().event_memory).
   enum class Host : std::uint8_t { cli, embedded };
   // setup: the run `opt` asks for on machine `m` (opt.machine and its files
   // are not read again). The error: why it cannot run (exit 2); print
@@ -70,8 +71,9 @@ class Simulation {
   void record_events(const kernel::TickOutput& o);
   void report_dropped_events(const kernel::TickOutput& o);
   void report_refusals(const kernel::TickOutput& o);
+  void report_events_dropped(const kernel::TickOutput& o);
   void end_unfinished_channels(kernel::EndReason reason);
-  void report_trace_full();
+  void report_memory_full(ErrorId id, const char* what, std::uint64_t max_bytes);
 
   RunOptions opt_;
   std::unique_ptr<config::Machine> machine_;
