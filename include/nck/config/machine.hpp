@@ -29,6 +29,8 @@ enum class AxisKind : std::uint8_t { translatory = 1, rotary = 2, spindle = 4 };
 // Synchronisation type bits (FCT-S1 §2.5).
 namespace sync {
 inline constexpr std::uint32_t NO_SYNCH = 0x0;
+// No m_synch entry (P-CHAN-00041 default): the M function is unknown.
+inline constexpr std::uint32_t NOT_VALID = 0xFFFFFFFF;
 inline constexpr std::uint32_t MOS = 0x1;
 inline constexpr std::uint32_t MVS_SVS = 0x2;
 inline constexpr std::uint32_t MVS_SNS = 0x4;
@@ -286,7 +288,7 @@ struct ChannelConfig {
   // motion blocks, 0 also after blocks with functions, 1 after every block
   std::int8_t single_step_mode = 0;
   std::uint32_t lookahead_blocks = 120;         // P-CHAN-00653 configuration.interpolator.number_blocks_lah
-  std::array<std::uint32_t, 1000> m_synch{};    // P-CHAN-00041, per M number
+  std::array<std::uint32_t, 1000> m_synch{};    // P-CHAN-00041, per M number (lists: NOT_VALID where unset)
   std::uint32_t decoder_function = 0;           // configuration.decoder.function bits
   std::uint32_t max_cache_number = 0;           // configuration.decoder.max_cache_number
   std::uint32_t max_cache_size_kb = 0;          // configuration.decoder.max_cache_size
