@@ -271,6 +271,7 @@ void read_switches(const ParamList& l, ChannelConfig& c) {
   c.single_step_mode = static_cast<std::int8_t>(l.num("einzelschrittmodus", 0));
   c.rapid_override_mode = rapid_override_mode_from(l.text("g00_override_mode", "0")).value_or(RapidOverrideMode::not_used);
   c.lookahead_blocks = l.u32("configuration.interpolator.number_blocks_lah", c.lookahead_blocks);
+  c.m_synch.fill(sync::NOT_VALID);  // P-CHAN-00041 default: an M function the list does not name is unknown
   for (auto n : l.indices("m_synch[")) c.m_synch[n] = l.u32(fmt::format("m_synch[{}]", n), 0);
   c.decoder_function = l.u32("configuration.decoder.function", 0);
   c.max_cache_number = l.u32("configuration.decoder.max_cache_number", 4);

@@ -32,6 +32,27 @@ std::string unsupported(const nc::Block& b) {
   return {};
 }
 
+std::uint32_t m_sync(const config::ChannelConfig& channel, int m) {
+  return m >= 0 && static_cast<std::size_t>(m) < channel.m_synch.size() ? channel.m_synch[static_cast<std::size_t>(m)]
+                                                                         : config::sync::NOT_VALID;
+}
+
+PlanResult undefined_m(const nc::Block& b, int m) {
+  return block_error(ErrorId::KernelMFunctionUndefined, b,
+                     fmt::format("M{} is not defined: the channel list has no m_synch[{}] (P-CHAN-00041)", m, m));
+}
+
+// Every M function of the block, in channel or spindle syntax, is one the
+// channel defines (TF5200: an unknown M function aborts decoding).
+PlanResult check_m_defined(const nc::Block& b, const config::ChannelConfig& channel) {
+  for (int m : b.m)
+    if (!is_fixed_m(m) && m_sync(channel, m) == config::sync::NOT_VALID) return undefined_m(b, m);
+  for (const nc::SpindleCommand& s : b.spindles)
+    for (int m : s.user_m)
+      if (m_sync(channel, m) == config::sync::NOT_VALID) return undefined_m(b, m);
+  return {};
+}
+
 }  // namespace
 
 PlanResult check_supported(const nc::Block& b) {
@@ -73,11 +94,10 @@ PlanResult check_plc_spindles(const nc::Block& b, const config::ChannelConfig& c
 
 PlanResult add_outputs(const nc::Block& b, PlannedCommand& c, const config::ChannelConfig& channel) {
   auto overflow = [&] { return block_error(ErrorId::KernelQueueOverflow, b, "more than 8 PLC outputs in one block"); };
+  if (auto r = check_m_defined(b, channel); !r) return r;
   for (int m : b.m) {
     if (is_fixed_m(m)) continue;
-    const std::uint32_t sync = m >= 0 && static_cast<std::size_t>(m) < channel.m_synch.size()
-                                   ? channel.m_synch[static_cast<std::size_t>(m)]
-                                   : config::sync::MOS;
+    const std::uint32_t sync = m_sync(channel, m);
     // A channel M function with NO_SYNCH is not output (FCT-S1 2.5).
     if (sync == config::sync::NO_SYNCH) continue;
     if (!c.attach_within(kernel::Output{TechKind::m, m, sync}, PlannedCommand::kMaxOutputs)) return overflow();

@@ -68,7 +68,8 @@ std::expected<void, Diagnostic> SpindlePlanner::plan_gear(Step& s, std::optional
   };
   // Gear changes exist only for the main spindle in DIN syntax and only when
   // enabled; otherwise M40..M45 are free M functions (FCT-S1 §3.2.1, P-CHAN-00052),
-  // synchronised by their m_synch[n] like any other (NO_SYNCH: no output).
+  // synchronised by their m_synch[n] like any other (NO_SYNCH: no output;
+  // no entry: an unknown M function).
   if (!c.din || !channel_->main_spindle_gear_change) {
     if (!c.gear_stage) return {};
     SpindleAction a;
@@ -77,6 +78,11 @@ std::expected<void, Diagnostic> SpindlePlanner::plan_gear(Step& s, std::optional
     a.fn = TechKind::m;
     a.fn_number = 39 + *c.gear_stage;
     a.sync_bits = channel_->m_synch[static_cast<std::size_t>(a.fn_number)];
+    if (a.sync_bits == config::sync::NOT_VALID)
+      return fail(ErrorId::KernelMFunctionUndefined,
+                  fmt::format("M{} is a free M function (gear change is off) and not defined: the channel list has "
+                              "no m_synch[{}] (P-CHAN-00041)",
+                              a.fn_number, a.fn_number));
     const std::optional<SyncPoint> point = sync_point(a.sync_bits);
     if (!point) return {};
     a.sync = *point;

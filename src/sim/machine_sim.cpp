@@ -25,6 +25,7 @@ MachineSim::MachineSim(const config::Machine& m)
   for (std::size_t ch = 0; ch < channels_; ++ch) {
     probes_[ch] = make_probe(m, ch);
     sensors_[ch] = DistanceSensor(m.sim, m.channels[ch], m.cycle_time_us * 1e-6);
+    if (!m.channels[ch].main_spindle_gear_change) plc_.set_free_gear_functions(static_cast<std::uint8_t>(ch + 1));
   }
 }
 

@@ -36,6 +36,15 @@ PlcSim::PlcSim(const config::SimConfig& sim) {
   gear_delay_s_ = non_negative(sim.gear_change_time_s);
 }
 
+void PlcSim::set_free_gear_functions(std::uint8_t ch) noexcept {
+  if (ch >= 1 && ch <= free_gear_.size()) free_gear_[ch - 1] = true;
+}
+
+bool PlcSim::shifts_gear(const TechOutput& out) const noexcept {
+  const bool free = out.channel >= 1 && out.channel <= free_gear_.size() && free_gear_[out.channel - 1];
+  return is_gear_function(out) && !free;
+}
+
 double PlcSim::ack_delay_s(const TechOutput& out) const noexcept {
   switch (out.kind) {
     case TechKind::s: return spindle_delay_s_;
@@ -48,7 +57,7 @@ double PlcSim::ack_delay_s(const TechOutput& out) const noexcept {
   if (out.number >= 0 && static_cast<std::size_t>(out.number) < kMaxMNumber &&
       m_delay_s_[static_cast<std::size_t>(out.number)] >= 0)
     return m_delay_s_[static_cast<std::size_t>(out.number)];
-  if (is_gear_function(out)) return gear_delay_s_;
+  if (shifts_gear(out)) return gear_delay_s_;
   if (out.number == 6) return tool_delay_s_;
   if (is_spindle_m(out.number) && out.spindle != kNoSpindle) return spindle_delay_s_;
   return default_delay_s_;
@@ -83,7 +92,7 @@ void PlcSim::tick(double now_s) noexcept {
 }
 
 void PlcSim::on_ack(const Slot& s) noexcept {
-  if (!is_gear_function(s.output) || !spindle_in_range(s.output.channel, s.output.spindle)) return;
+  if (!shifts_gear(s.output) || !spindle_in_range(s.output.channel, s.output.spindle)) return;
   gear_[s.output.channel - 1][static_cast<std::size_t>(s.output.spindle)] =
       static_cast<std::uint8_t>(s.output.number - 39);
 }
@@ -147,7 +156,7 @@ std::uint8_t PlcSim::gear_stage(std::uint8_t ch, std::int8_t spindle) const noex
 
 bool PlcSim::gear_changing(std::uint8_t ch, std::int8_t spindle) const noexcept {
   return std::any_of(slots_.begin(), slots_.end(), [&](const Slot& s) {
-    return s.handle != kNoHandle && !s.acked && is_gear_function(s.output) &&
+    return s.handle != kNoHandle && !s.acked && shifts_gear(s.output) &&
            s.output.channel == ch && s.output.spindle == spindle;
   });
 }

@@ -33,6 +33,9 @@ class PlcSim {
 
   // setup
   explicit PlcSim(const config::SimConfig& sim);
+  // setup: channel ch (1-based) shifts no gears (main_spindle_gear_change
+  // 0): its M40..M45 are free M functions, acknowledged as any other.
+  void set_free_gear_functions(std::uint8_t ch) noexcept;
 
   // rt: hands output h to the PLC at time now_s (the cycle start). False
   // when kCapacity outputs are already waiting or h is kNoHandle (the kernel
@@ -82,12 +85,14 @@ class PlcSim {
   Slot* find(OutputHandle h) noexcept;
   const Slot* find(OutputHandle h) const noexcept;
   void on_ack(const Slot& s) noexcept;
+  bool shifts_gear(const TechOutput& out) const noexcept;
   void free_slot(Slot& s) noexcept;
 
   std::array<Slot, kCapacity> slots_{};
   std::array<double, kMaxMNumber> m_delay_s_{};  // < 0: not configured
   double default_delay_s_ = 0, spindle_delay_s_ = 0, tool_delay_s_ = 0, gear_delay_s_ = 0;
   std::array<std::array<std::uint8_t, config::kMaxSpindles>, plc::kMaxHliChannels> gear_{};
+  std::array<bool, plc::kMaxHliChannels> free_gear_{};  // per channel: M40..M45 are free
   bool silent_ = false;
   // Slots in use and of those acknowledged: the cyclic calls skip the scan
   // of all kCapacity slots when there is nothing to do.
