@@ -27,7 +27,7 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
   if (in.cycle_start && state_ == ProgramState::error && !in.reset) {
     cy.emit(ev::Warning{{ErrorId::KernelCycleStartInError, {}, {}}});  // an operator action the state does not allow
   }
-  if (done()) take_mdi();
+  if (done()) take_mdi(cy);
   if (in.reset && state_ == ProgramState::error) clear_error(cy);
   cause_ = done() ? CycleCause::none : CycleCause::transition;
   if (!done()) follow_stop(cy);
@@ -335,9 +335,19 @@ void Channel::stop_program(const Hold& hold, Cycle& cy) noexcept {
 
 // A channel that is done (program end, reset, MDI done or failed) takes
 // the operator's MDI text; what is left of a failed one is dropped, and of
-// a program a reset or an error ended. rt
-void Channel::take_mdi() noexcept {
-  while (!commands_->empty() && commands_->front().mdi == Mdi::none) commands_->pop();
+// a program a reset or an error ended, and every MDI command planned before
+// preparation knew where that end left the path. rt
+void Channel::take_mdi(Cycle& cy) noexcept {
+  bool discarded = false;
+  while (!commands_->empty() &&
+         (commands_->front().mdi == Mdi::none || commands_->front().stops_taken != stops_sent_)) {
+    discarded = discarded || commands_->front().mdi != Mdi::none;
+    commands_->pop();
+  }
+  if (discarded && discard_reported_ != stops_sent_) {
+    discard_reported_ = stops_sent_;
+    cy.emit(ev::Warning{{ErrorId::KernelMdiDiscarded, {}, {}}});
+  }
   while (dropping_mdi_ && !commands_->empty()) {
     dropping_mdi_ = commands_->front().mdi != Mdi::end;
     commands_->pop();
@@ -473,7 +483,8 @@ void Channel::end_program(EndReason reason, Cycle& cy) noexcept {
     Feedback f;
     f.kind = FeedbackKind::stopped;
     f.path_mcs_mm = path_.position();
-    (void)cy.send(f);  // full: a record still waits, and preparation drops the program anyway
+    // full: a record still waits, and preparation drops the program anyway
+    if (cy.send(f)) ++stops_sent_;
   }
   hold_.reset();
   sync_.clear();

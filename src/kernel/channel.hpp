@@ -128,7 +128,7 @@ class Channel {
   void set_state(ProgramState to, StateReason why, Cycle& cy) noexcept;
   // MDI: the operator's text wakes a channel that is done; its end or an
   // error returns the channel to idle.
-  void take_mdi() noexcept;
+  void take_mdi(Cycle& cy) noexcept;
   void follow_stop(Cycle& cy) noexcept;
   // A reset brakes the path, then ends the program; one after an error
   // leaves the error state.
@@ -156,6 +156,9 @@ class Channel {
   Phase phase_ = Phase::pre_wait;
   Command current_{};
   bool dropping_mdi_ = false;  // an MDI text failed: its commands left are dropped
+  // Early program ends whose `stopped` feedback went to preparation, and the
+  // last of them whose dropped MDI commands were reported (CommandHead::stops_taken).
+  std::uint8_t stops_sent_ = 0, discard_reported_ = 0;
   bool stopped_ = false;       // NC stop: held until cycle start
   bool resetting_ = false;     // a reset brakes the path: the program ends at standstill
   // What this cycle went to (time by cause), set where the cycle stops.

@@ -58,7 +58,7 @@ bool ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& fe
   // A call that did nothing does nothing again until the kernel has taken a
   // command or sent feedback, or the channel ended.
   if (idle(commands, feedback, channel_done)) return false;
-  if (channel_done && !in_mdi_) take_stop(feedback);
+  if (channel_done) take_stop(feedback);
   if (!in_mdi_ && done() && mdi_pending()) start_mdi();
   const std::uint64_t before = decoded_ + window_.released();
   feed_blocks(commands, feedback, channel_done);
@@ -75,14 +75,21 @@ void ChannelPrep::take_stop(kernel::FeedbackQueue& feedback) {
   bool stopped = false;
   for (std::size_t i = 0; i < feedback.size(); ++i) stopped = stopped || feedback.at(i).kind == kernel::FeedbackKind::stopped;
   if (!stopped) return;
-  for (; !feedback.empty(); feedback.pop())  // records before the stop belong to the dropped program
-    if (feedback.front().kind == kernel::FeedbackKind::stopped) take_feedback(feedback.front(), *planner_, *decoder_);
+  for (; !feedback.empty(); feedback.pop()) {  // records before the stop belong to the dropped program
+    if (feedback.front().kind != kernel::FeedbackKind::stopped) continue;
+    take_feedback(feedback.front(), *planner_, *decoder_);
+    ++stops_taken_;  // what is planned from now on starts where the path stopped
+  }
   window_.drop_all();
   backlog_.clear();
   search_.reset();
   flushing_ = awaiting_feedback_ = false;
   done_ = true;
   idle_.reset();
+  if (in_mdi_) {   // a reset ended the text in progress: the kernel drops what it has of it
+    in_mdi_ = false;
+    mdi_->pending.fetch_sub(1, std::memory_order_release);
+  }
 }
 
 void ChannelPrep::feed_blocks(kernel::CommandQueue& commands, kernel::FeedbackQueue& feedback,
@@ -358,6 +365,7 @@ void ChannelPrep::finish_mdi(kernel::CommandQueue& commands) {
   end.head.emit_block_event = false;
   end.head.file_id = decoder_->file_id(nc::kMdiFileName).value_or(0);
   end.head.mdi = kernel::Mdi::end;
+  end.head.stops_taken = stops_taken_;
   PlannedBlock b;
   (void)b.push_back(end);
   attach_warnings(b[0]);
@@ -370,8 +378,18 @@ void ChannelPrep::finish_mdi(kernel::CommandQueue& commands) {
 }
 
 void ChannelPrep::mark_mdi(PlannedBlock& b) const {
-  for (PlannedCommand& c : b)
+  for (PlannedCommand& c : b) {
     if (c.head.mdi == kernel::Mdi::none) c.head.mdi = kernel::Mdi::block;
+    c.head.stops_taken = stops_taken_;
+  }
+}
+
+std::size_t ChannelPrep::discard_mdi() {
+  const std::lock_guard lock(mdi_->mutex);
+  const std::size_t n = mdi_->texts.size();
+  mdi_->texts.clear();
+  mdi_->pending.fetch_sub(n, std::memory_order_release);
+  return n;
 }
 
 }  // namespace nck::prep

@@ -44,6 +44,7 @@ DryRun& DryRun::operator=(DryRun&&) noexcept = default;
 constexpr std::size_t kQueuedAhead = kernel::kMaxLookAheadDepth;
 
 void DryRun::prepare_now() {
+  take_resets();
   if (!sim_->mdi_requests().empty()) submit_mdi();
   if (threaded_) {
     feed_preparation_thread();
@@ -73,6 +74,7 @@ void DryRun::start_preparation_thread() {
 
 void DryRun::prepare_live() {
   if (!prep_thread_) return;
+  take_resets();
   if (!sim_->mdi_requests().empty()) submit_mdi();
   feed_preparation_thread();
   prep_thread_->rethrow_failure();
@@ -95,6 +97,8 @@ void DryRun::switch_sensors_on() {
 void DryRun::cycle(kernel::TickOutput& out) noexcept {
   sim_->read(kernel_->time_s(), *in_);
   kernel_->tick(*in_, out);
+  for (std::size_t ch = 0; ch < preps_.size() && ch < reset_seen_.size(); ++ch)
+    reset_seen_[ch] = reset_seen_[ch] || in_->channels[ch].reset;
   sim_->write(out);
   if (prep_thread_) prep_thread_->cycle_done();
 }
@@ -120,6 +124,20 @@ bool DryRun::done() const noexcept {
   return !sim_->scenario_pending() && sim_->mdi_requests().empty();
 }
 
+void DryRun::take_resets() {
+  for (std::size_t ch = 0; ch < preps_.size() && ch < reset_seen_.size(); ++ch) {
+    if (!reset_seen_[ch]) continue;
+    reset_seen_[ch] = false;
+    braking_[ch] = !kernel_->channel_done(ch);
+    if (const std::size_t n = preps_[ch].discard_mdi(); n > 0)
+      refusals_.push_back(Refusal{static_cast<std::uint8_t>(ch + 1),
+                                  make_diagnostic(ErrorId::KernelMdiDiscarded, SourceLoc{"operator", 1, 0},
+                                                  fmt::format("a reset of channel {} discarded {} MDI text(s) "
+                                                              "typed before it that had not run",
+                                                              ch + 1, n))});
+  }
+}
+
 void DryRun::submit_mdi() {
   for (const MachineSim::MdiRequest& r : sim_->mdi_requests()) {
     if (r.channel < 1 || r.channel > preps_.size()) continue;
@@ -134,6 +152,10 @@ void DryRun::submit_mdi() {
 // or while it runs the MDI text before (the texts queue up).
 std::optional<Diagnostic> DryRun::mdi(std::size_t ch, const std::string& text, kernel::ProgramState st,
                                       const SourceLoc& loc) {
+  braking_[ch] = braking_[ch] && !kernel_->channel_done(ch);
+  if (braking_[ch])
+    return make_diagnostic(ErrorId::KernelMdiRefused, loc,
+                           fmt::format("MDI '{}' refused: channel {} brakes after a reset", text, ch + 1));
   const bool idle = st == kernel::ProgramState::idle || st == kernel::ProgramState::ended;
   // MDI was only ever taken once the program was over: running now is MDI.
   const bool in_mdi = preps_[ch].mdi_pending() || (preps_[ch].mdi_used() && st == kernel::ProgramState::running);

@@ -84,6 +84,10 @@ class ChannelPrep {
   // text ends with a command that returns the channel to idle; an error
   // ends its text, never the channel.
   void submit_mdi(std::string text);
+  // Any thread: a reset drops the texts submitted before it that preparation
+  // has not begun (the one it prepares ends when it takes the kernel's stop).
+  // Returns how many.
+  std::size_t discard_mdi();
   // MDI text submitted and not yet all handed over (any thread).
   bool mdi_pending() const { return mdi_->pending.load(std::memory_order_acquire) > 0; }
   // Some MDI text was submitted in this run.
@@ -152,6 +156,9 @@ class ChannelPrep {
   };
   std::unique_ptr<MdiInbox> mdi_ = std::make_unique<MdiInbox>();
   bool in_mdi_ = false;
+  // The kernel's `stopped` records taken: stamped on every MDI command
+  // (kernel::CommandHead::stops_taken).
+  std::uint8_t stops_taken_ = 0;
   // The window must empty into the queue (program end, an error, a block
   // whose feedback later blocks need) before anything else is decoded.
   bool flushing_ = false;

@@ -104,7 +104,8 @@ class DryRun {
   // types MDI) no MDI text is still to come or to run.
   bool done() const noexcept;
   // MDI lines the scenario typed while their channel could not take them
-  // (930710), since the last call; the caller reports them.
+  // (930710) or that a reset discarded (930712), since the last call; the
+  // caller reports them.
   struct Refusal {
     std::uint8_t channel = 1;
     Diagnostic diagnostic;
@@ -167,6 +168,8 @@ class DryRun {
   // instruction cache across cycles and the decoder's across blocks.
   bool quiet() const noexcept {
     if (!sim_->mdi_requests().empty() || sim_->skip_levels_used()) return false;
+    for (bool r : reset_seen_)
+      if (r) return false;
     for (std::size_t ch = 0; ch < queues_.size(); ++ch) {
       const ChannelQueues& q = queues_[ch];
       const bool ahead = q.commands->size() > kernel::kMaxLookAheadDepth && q.feedback->empty();
@@ -177,6 +180,11 @@ class DryRun {
   std::unique_ptr<kernel::TickInput> in_;
   bool threaded_ = false;
   std::vector<Refusal> refusals_;
+  // Per channel: the kernel took a reset in the last cycle (set by cycle(),
+  // taken by take_resets()); the channel brakes after a reset until done.
+  std::array<bool, config::kMaxChannels> reset_seen_{}, braking_{};
+  // setup side: a reset drops the MDI texts typed before it.
+  void take_resets();
   // setup side: hands the MDI lines that came due to preparation.
   void submit_mdi();
   void feed_preparation_thread();

@@ -5,6 +5,7 @@
 // error leaves the error state.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "spindle_path_helpers.hpp"
@@ -136,6 +137,49 @@ TEST(Reset, AfterAnErrorTheChannelIsIdleAndMdiRuns) {
   const std::vector<std::string> want = {"running/start", "error/error", "idle/reset", "running/mdi", "idle/mdi"};
   EXPECT_EQ(states, want) << r.cli.output;
   EXPECT_NEAR(r.rows.back().at("X"), 20.0, 1e-9);
+}
+
+// The largest step of column `col` from one trace row to the next (mm).
+double max_step(const PathRun& r, const std::string& col) {
+  double worst = 0;
+  for (std::size_t i = 1; i < r.rows.size(); ++i)
+    worst = std::max(worst, std::abs(r.rows[i].at(col) - r.rows[i - 1].at(col)));
+  return worst;
+}
+
+std::vector<long> warning_ids(const PathRun& r) {
+  std::vector<long> ids;
+  for (const nlohmann::json& e : r.of("warning")) ids.push_back(e["id"].get<long>());
+  return ids;
+}
+
+TEST(Reset, DropsTheMdiTypedBeforeItAndPlansTheNextFromWhereThePathStands) {
+  // X moves at 50 mm/s when the reset comes at 0.5 s; Y40 was typed before
+  // it (prepared from X100, where the first text would have ended), Z-1 in
+  // the reset's cycle (the path still brakes), Y5 once the channel is idle.
+  // Before, Y40 ran from X100: the path jumped 80 mm in one cycle.
+  const PlcRun plc = run_with_plc("mill", "N10 G90 G0 X0 Y0 Z0
+N20 M30
+",
+                                 "0.1 mdi G90 G1 X100 F3000
+0.1 mdi G1 Y40
+0.5 reset
+0.5 mdi G1 Z-1
+"
+                                 "1.0 mdi G90 G1 Y5 F3000
+",
+                                 "reset_mdi");
+  const PathRun& r = plc.run;
+  EXPECT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  for (const char* axis : {"X", "Y", "Z"}) EXPECT_LE(max_step(r, axis), 50.0 * kDt + 1e-6) << axis;
+  const std::vector<long> warnings = warning_ids(r);
+  EXPECT_NE(std::find(warnings.begin(), warnings.end(), 930712), warnings.end()) << r.cli.output;  // Y40 dropped
+  EXPECT_NE(std::find(warnings.begin(), warnings.end(), 930710), warnings.end()) << r.cli.output;  // Z-1 refused
+  const Row& last = r.rows.back();
+  EXPECT_GT(last.at("X"), 18.0);  // 0.4 s at 50 mm/s, braked within 0.5 mm
+  EXPECT_LT(last.at("X"), 21.0);
+  EXPECT_NEAR(last.at("Y"), 5.0, 1e-9);
+  EXPECT_NEAR(last.at("Z"), 0.0, 1e-9);
 }
 
 }  // namespace
