@@ -484,7 +484,7 @@ void Channel::end_program(EndReason reason, Cycle& cy) noexcept {
     f.kind = FeedbackKind::stopped;
     f.path_mcs_mm = path_.position();
     // full: a record still waits, and preparation drops the program anyway
-    if (cy.send(f)) ++stops_sent_;
+    if (!cy.send(f).any()) ++stops_sent_;
   }
   hold_.reset();
   sync_.clear();

@@ -8,7 +8,7 @@
 #include "cli_helpers.hpp"
 #include "spindle_path_helpers.hpp"
 
-namespace nck::app {
+namespace nck::app::testing {
 namespace {
 
 using nlohmann::json;
@@ -32,7 +32,7 @@ TEST(MDefined, AnUndefinedMFunctionStopsTheProgramAtItsBlock) {
 
 TEST(MDefined, AnEntryDefinesItAndTheFixedFunctionsNeedNone) {
   const auto machine = patched_example("mill", "m_defined", "channel1.lis", "m_synch[7] MOS").dir;
-  const PathRun r = run_text(machine.string(), "%m\nN10 G1 X10 F3000 M7\nN20 M0\nN30 M1\nN40 M17\nN50 M30\n",
+  const PathRun r = run_text(machine.string(), "%m\nN10 G1 X10 F3000 M7\nN20 M0\nN30 M1\nN40 M30\n",
                              "m_defined_run");
   EXPECT_EQ(r.cli.exit_code, 0) << r.cli.output;
   const json* out = first_event(r, "plc_out");
@@ -41,7 +41,7 @@ TEST(MDefined, AnEntryDefinesItAndTheFixedFunctionsNeedNone) {
 }
 
 TEST(MDefined, AnUndefinedMInSpindleSyntaxIsRefusedToo) {
-  const PathRun r = run_text("mill", "%m\nN10 S1[M=63]\nN20 M30\n", "m_undefined_spindle");
+  const PathRun r = run_text("mill", "%m\nN10 S[M=63]\nN20 M30\n", "m_undefined_spindle");
   EXPECT_NE(r.cli.output.find("930020"), std::string::npos) << r.cli.output;
 }
 
@@ -59,4 +59,4 @@ TEST(MDefined, FreeGearFunctionsNeedAnEntryAndTakeNoGearTime) {
 }
 
 }  // namespace
-}  // namespace nck::app
+}  // namespace nck::app::testing

@@ -158,16 +158,9 @@ TEST(Reset, DropsTheMdiTypedBeforeItAndPlansTheNextFromWhereThePathStands) {
   // it (prepared from X100, where the first text would have ended), Z-1 in
   // the reset's cycle (the path still brakes), Y5 once the channel is idle.
   // Before, Y40 ran from X100: the path jumped 80 mm in one cycle.
-  const PlcRun plc = run_with_plc("mill", "N10 G90 G0 X0 Y0 Z0
-N20 M30
-",
-                                 "0.1 mdi G90 G1 X100 F3000
-0.1 mdi G1 Y40
-0.5 reset
-0.5 mdi G1 Z-1
-"
-                                 "1.0 mdi G90 G1 Y5 F3000
-",
+  const PlcRun plc = run_with_plc("mill", "N10 G90 G0 X0 Y0 Z0\nN20 M30\n",
+                                 "0.1 mdi G90 G1 X100 F3000\n0.1 mdi G1 Y40\n0.5 reset\n0.5 mdi G1 Z-1\n"
+                                 "1.0 mdi G90 G1 Y5 F3000\n",
                                  "reset_mdi");
   const PathRun& r = plc.run;
   EXPECT_EQ(r.cli.exit_code, 0) << r.cli.output;
