@@ -172,6 +172,8 @@ json to_json(const Block& b, const Decoder& d) {
   }
   if (!b.m.empty()) j["m"] = b.m;
   if (!b.h.empty()) j["h"] = b.h;
+  for (const auto& [key, values] : {std::pair{"m_values", &b.m_values}, std::pair{"h_values", &b.h_values}})
+    for (const FunctionValue& v : *values) j[key][std::to_string(v.number)] = v.value;
   put(j, "T", b.t);
   put(j, "D", b.d);
   put(j, "dwell_s", b.dwell_s);

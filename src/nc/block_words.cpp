@@ -76,6 +76,31 @@ std::optional<GCode> valued_g(std::string_view name_upper) {
   return std::nullopt;
 }
 
+bool all_digits(std::string_view s) {
+  if (s.empty()) return false;
+  for (char ch : s)
+    if (!is_digit(ch)) return false;
+  return true;
+}
+
+// M<n>=<value> / H<n>=<value> (TF5200 "M/H functions with additional
+// information"): an integer, written out or computed, that the PLC gets
+// with the function. `c` stands before the '='.
+bool function_with_value(Cursor& c, BlockCtx& b, Words& w, const std::string& name, std::size_t pos) {
+  double v = 0;
+  if (!word_value(c, b, v, name[0])) return false;
+  if (v != std::round(v) || !(std::abs(v) <= 2147483647.0))
+    return b.x.err.fail(ErrorId::NcBadMFunction, pos,
+                        fmt::format("{}={:g}: the additional value must be an integer (32 bits)", name, v));
+  const double code = std::stod(name.substr(1));
+  if (code > 1e9) return b.x.err.fail(ErrorId::NcBadMFunction, pos, fmt::format("{} is malformed", name));
+  auto& list = name[0] == 'M' ? w.m : w.h;
+  if (!list.push_back(MWord{static_cast<int>(code), static_cast<std::uint32_t>(pos), static_cast<std::int32_t>(v)}))
+    return b.x.err.fail(ErrorId::NcBadMFunction, pos, "too many M/H functions in one block");
+  ++w.word_count;
+  return true;
+}
+
 // As many digits as a block number written out may have (15, decoder.cpp).
 constexpr double kMaxBlockNumber = 999'999'999'999'999.0;
 
@@ -136,6 +161,8 @@ bool parse_letter_word(Cursor& c, BlockCtx& b, Words& w) {
     c.pos = e;
     double v = 0;
     if (ax >= 0) return word_value(c, b, v, name[0]) && add_axis_word(b, w, ax, v, pos, name);
+    if ((name[0] == 'M' || name[0] == 'H') && all_digits(std::string_view(name).substr(1)))
+      return function_with_value(c, b, w, name, pos);
     if (const std::optional<GCode> g = valued_g(name)) {
       if (!word_value(c, b, v, 'G')) return false;
       if (!w.g.push_back(GWord{*g, static_cast<std::uint32_t>(pos), v}))

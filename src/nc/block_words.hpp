@@ -28,6 +28,7 @@ struct GWord {
 struct MWord {
   int code = 0;
   std::uint32_t pos = 0;
+  std::optional<std::int32_t> value;  // M52=-345: the additional value for the PLC
 };
 template <class T>
 struct At {  // a value and where it was written

@@ -212,11 +212,15 @@ bool apply_words(Words& w, BlockCtx& b, ModalState& modal, Block& out) {
     bool spindle = c == 3 || c == 4 || c == 5 || c == 19 || (c >= 40 && c <= 45);
     if (c == 17 || c == 29 || spindle) continue;
     out.m.push_back(c);
+    if (mw.value) out.m_values.push_back(FunctionValue{c, *mw.value});
     if (c == 0) out.stop = true;
     if (c == 1) out.optional_stop = true;
     if (c == 2 || c == 30) out.program_end = true;
   }
-  for (const auto& hw : w.h) out.h.push_back(hw.code);
+  for (const auto& hw : w.h) {
+    out.h.push_back(hw.code);
+    if (hw.value) out.h_values.push_back(FunctionValue{hw.code, *hw.value});
+  }
   if (auto sc = main_din(w, b, modal, out)) out.spindles.push_back(std::move(*sc));
   for (auto& sc : w.brackets) out.spindles.push_back(std::move(sc));
   for (auto& sc : out.spindles) sc.spindle_index = spindle_index(b.cfg, sc);

@@ -100,10 +100,13 @@ PlanResult add_outputs(const nc::Block& b, PlannedCommand& c, const config::Chan
     const std::uint32_t sync = m_sync(channel, m);
     // A channel M function with NO_SYNCH is not output (FCT-S1 2.5).
     if (sync == config::sync::NO_SYNCH) continue;
-    if (!c.attach_within(kernel::Output{TechKind::m, m, sync}, PlannedCommand::kMaxOutputs)) return overflow();
+    if (!c.attach_within(kernel::Output{TechKind::m, m, sync, 0, nc::value_of(b.m_values, m)}, PlannedCommand::kMaxOutputs))
+      return overflow();
   }
   for (int h : b.h)
-    if (!c.attach_within(kernel::Output{TechKind::h, h, config::sync::MOS}, PlannedCommand::kMaxOutputs)) return overflow();
+    if (!c.attach_within(kernel::Output{TechKind::h, h, config::sync::MOS, 0, nc::value_of(b.h_values, h)},
+                         PlannedCommand::kMaxOutputs))
+      return overflow();
   // #TOOL PREP [basic, ...] is the T word's form (TF5200 #TOOL PREP): the PLC gets the basic number.
   std::optional<std::int64_t> t = b.t;
   if (const auto* td = b.hash ? std::get_if<nc::ToolData>(&*b.hash) : nullptr; td && td->prep) t = td->fields[0];

@@ -36,6 +36,7 @@ struct Output {
   std::int32_t number = 0;
   std::uint32_t sync = 0;
   double ack_timeout_s = 0;  // 0 = none
+  std::optional<std::int32_t> value;  // M52=-345: the additional value the PLC gets
 };
 
 // The motion starts here, not where the motion before it ended (a changed

@@ -48,6 +48,7 @@ struct PlcOut {
   std::optional<std::int8_t> spindle;  // kernel spindle index
   double s_rpm = 0;                    // S: the programmed speed
   std::uint32_t sync = 0;              // synchronisation bits (config::sync)
+  std::optional<std::int32_t> add_value;  // M/H: the additional value (M52=-345)
 };
 
 // The PLC acknowledged a function.
@@ -72,7 +73,7 @@ template <class Json, class Names>
 void write_json(Json& j, const PlcOut& e, const EventHead&, const Names& names) {
   j["fn"] = plc::function_name(e.fn, e.number);
   j["spindle"] = names.spindle(e.spindle);
-  j["value"] = e.fn == plc::TechKind::s ? Json(e.s_rpm) : Json(nullptr);
+  j["value"] = e.fn == plc::TechKind::s ? Json(e.s_rpm) : e.add_value ? Json(*e.add_value) : Json(nullptr);
   j["sync"] = plc::sync_name(e.sync);
 }
 

@@ -26,6 +26,18 @@ struct VariableWrite {
   double value = 0;
 };
 
+// The additional value of an M or H function (TF5200 "M/H functions with
+// additional information"): the PLC gets it with the function.
+struct FunctionValue {
+  int number = 0;
+  std::int32_t value = 0;
+};
+inline std::optional<std::int32_t> value_of(const std::vector<FunctionValue>& values, int number) {
+  for (const FunctionValue& v : values)
+    if (v.number == number) return v.value;
+  return std::nullopt;
+}
+
 // Index into Block::group_weight_pct.
 enum class GroupWeight : std::uint8_t { g131, g133, g134, g233 };
 constexpr std::optional<GroupWeight> group_weight(GCode g) noexcept {
@@ -67,6 +79,8 @@ struct Block {
   // (M3 M4 M5 M19 M40..M45, in spindles[]) and M17/M29 (handled here).
   std::vector<int> m;
   std::vector<int> h;            // H functions
+  // Additional values (M52=-345, H10=P1) of the M and H functions above.
+  std::vector<FunctionValue> m_values, h_values;
   std::optional<std::int64_t> t; // T word
   std::optional<std::int64_t> d; // D word
   std::optional<double> dwell_s; // G4 X.. / G4 .. / #TIME ..  (seconds)

@@ -103,7 +103,7 @@ struct TechOutput {
   std::int32_t number = 0;          // M3 -> 3, T5 -> 5; S: 0
   std::uint8_t channel = 1;         // 1-based
   std::int8_t spindle = kNoSpindle; // index into the channel's spindles, or none
-  double value = 0;                 // S: rpm; M19: position (deg); else 0
+  double value = 0;                 // S: rpm; M19: position (deg); M/H: additional value (M52=-345); else 0
   std::uint32_t sync = 0;           // synchronisation bits (config::sync)
 };
 

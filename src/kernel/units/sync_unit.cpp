@@ -184,13 +184,14 @@ Fault SyncUnit::issue_output(const Output& o, Cycle& cy) noexcept {
   t.number = o.number;
   t.channel = cy.channel;
   t.sync = o.sync;
+  t.value = o.value.value_or(0);
   Wait w;
   w.fn = o.fn;
   w.fn_number = o.number;
   w.deadline_s = o.ack_timeout_s > 0 ? cy.t_s + o.ack_timeout_s : 0;
   w.handle = cy.machine.plc ? cy.machine.plc->submit(t, cy.sink) : plc::kNoHandle;
   if (w.handle == plc::kNoHandle) return {ErrorId::PlcOutputQueueFull};
-  cy.emit(ev::PlcOut{o.fn, o.number, std::nullopt, 0, o.sync});
+  cy.emit(ev::PlcOut{o.fn, o.number, std::nullopt, 0, o.sync, o.value});
   if (!add_wait(w, sync_point(o.sync).value_or(SyncPoint::none))) return {ErrorId::KernelWaitOverflow};
   return {};
 }

@@ -5,6 +5,8 @@
 // acknowledged like any other, without the gear-change time.
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include "cli_helpers.hpp"
 #include "spindle_path_helpers.hpp"
 
@@ -56,6 +58,25 @@ TEST(MDefined, FreeGearFunctionsNeedAnEntryAndTakeNoGearTime) {
   ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
   const double waited_s = r.line_t(3) - r.line_t(2);
   EXPECT_NEAR(waited_s, 0.010, 0.0025) << "acknowledged after plc_ack_delay_ms, not gear_change_time_ms";
+}
+
+// Issue 44 item 9 (TF5200 "M/H functions with additional information"): the
+// value travels with the function to the PLC, in the plc_out event.
+TEST(MDefined, AnAdditionalValueTravelsWithItsFunctionToThePlc) {
+  const auto machine = patched_example("mill", "m_value", "channel1.lis", "m_synch[52] MOS").dir;
+  const PathRun r =
+      run_text(machine.string(), "%m\nN10 P2 = 345\nN20 M52=-345 H10=P2\nN30 M8\nN40 M30\n", "m_value_run");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  std::map<std::string, json> out;
+  for (const json& e : r.events)
+    if (e["ev"] == "plc_out") out[e["fn"].get<std::string>()] = e["value"];
+  ASSERT_EQ(out.count("M52"), 1u);
+  EXPECT_EQ(out["M52"], -345);
+  EXPECT_EQ(out["H10"], 345);
+  EXPECT_TRUE(out["M8"].is_null());  // no value programmed: none given
+
+  const PathRun spindle = run_text("mill", "%m\nN10 S1000 M3=5\nN20 M30\n", "m_value_spindle");
+  EXPECT_NE(spindle.cli.output.find("920121"), std::string::npos) << spindle.cli.output;
 }
 
 }  // namespace

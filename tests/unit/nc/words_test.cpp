@@ -179,6 +179,25 @@ TEST(NcWords, MFunctionsAndStops) {
   EXPECT_TRUE(decode("M-3\n").has(ErrorId::NcBadMFunction));
 }
 
+// TF5200 "M/H functions with additional information": M52=-345, a computed
+// value, H as well; M30 may carry one; spindle M functions may not.
+TEST(NcWords, MAndHFunctionsWithAdditionalValues) {
+  auto d = decode("P2 = 345\nN10 M52=-345 M54 H10=P2\nN20 M63 = -P2 H7=[2*3]\nM30=1\n");
+  ASSERT_EQ(d.blocks.size(), 3u) << dump(d);  // the assignment alone makes no block
+  EXPECT_EQ(d.errors(), 0u) << dump(d);
+  const Block& b = d.blocks[0];
+  EXPECT_EQ(b.m, (std::vector<int>{52, 54}));
+  EXPECT_EQ(value_of(b.m_values, 52), -345);
+  EXPECT_EQ(value_of(b.m_values, 54), std::nullopt);
+  EXPECT_EQ(value_of(b.h_values, 10), 345);
+  EXPECT_EQ(value_of(d.blocks[1].m_values, 63), -345);
+  EXPECT_EQ(value_of(d.blocks[1].h_values, 7), 6);
+  EXPECT_TRUE(d.blocks[2].program_end);
+  for (const char* spindle : {"M3=5\n", "M19=1\n", "M41=2\n", "S100 M5=0\n"})
+    EXPECT_TRUE(decode(spindle).has(ErrorId::NcMValueNotAllowed)) << spindle;
+  EXPECT_TRUE(decode("M52=1.5\n").has(ErrorId::NcBadMFunction));
+}
+
 TEST(NcWords, ToolWords) {
   auto d = decode("T5 D3\nM30\n");
   ASSERT_EQ(d.blocks.size(), 2u);
