@@ -61,6 +61,7 @@ void read_gear(const ParamList& l, std::size_t g, GearStage& s, Diagnostics& d) 
   s.tr_min_s = l.num(k("dynamik.tr_min"), s.tr_min_s);
   s.a_w_max_mm_s2 = l.num(k("dynamik.a_w_max"), s.a_w_max_mm_s2);
   s.tr_w_min_s = l.num(k("dynamik.tr_w_min"), s.tr_w_min_s);
+  s.a_trans_weight = l.num(k("dynamik.a_trans_weight"), s.a_trans_weight);
   s.multi_gain_z = l.u32(k("multi_gain_z"), s.multi_gain_z);
   s.multi_gain_n = l.u32(k("multi_gain_n"), s.multi_gain_n);
   s.modulo_error_incr = static_cast<std::int32_t>(l.num(k("modulo_fehler"), 0));

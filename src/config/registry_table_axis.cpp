@@ -76,6 +76,7 @@ constexpr ParamInfo kTable[] = {
     {"getriebe[].dynamik.tr_min", "P-AXIS-00201", A, T::integer, 0, kU32, 10000, 1e-6, "µs", "s", "Smallest ramp time the drive allows: the lower bound of P-AXIS-00195…00198 and 00200.", {6}},
     {"getriebe[].dynamik.a_w_max", "P-AXIS-00292", A, T::integer, 0, 100000000, 0, 1, kAcc, kAccI, "Highest acceleration a weighting G130/G131 may give a_beschl/a_brems (max(a_beschl, a_brems) … a_max); 0 or absent: a_max.", {6}},
     {"getriebe[].dynamik.tr_w_min", "P-AXIS-00293", A, T::integer, 0, kU32, 0, 1e-6, "µs", "s", "Shortest feed ramp time a weighting G132/G133 may give (tr_min … the shortest of P-AXIS-00195…00198); below tr_min: tr_min.", {6}},
+    {"getriebe[].dynamik.a_trans_weight", "P-AXIS-00013", A, T::integer, 0, 1000, 0, 1e-3, "0.1 %", "factor", "TRAPEZ/SIN2/HSC: the acceleration a kink may cause for one cycle, as a share of a_beschl/a_brems; 0: cycle time / ramp time (the jerk stays within a / tr). 1000 lets a kink jump by a (the jerk exceeds its bound).", {6}},
     {"getriebe[].dynamik.a_max", "P-AXIS-00008", A, T::integer, 1, 100000000, 1000, 1, kAcc, kAccI, "Upper limit of every acceleration of the axis.", {6}},
     {"getriebe[].dynamik.a_emergency", "P-AXIS-00003", A, T::integer, 0, 200000000, 0, 1, kAcc, kAccI, "Emergency-stop braking (≤ 2·a_max); 0 = a_max.", {6}},
     {"getriebe[].dynamik.vb_max", "P-AXIS-00212", A, T::integer, 1, 2000000000, 200000, 1e-3, kVel, kVelI, "Velocity limit (10000 rpm = 60000000).", {6}},

@@ -95,6 +95,10 @@ struct GearStage {
   // G132/G133 not below tr_w_min (and never below tr_min).
   double a_w_max_mm_s2 = 0;     // P-AXIS-00292 dynamik.a_w_max
   double tr_w_min_s = 0;        // P-AXIS-00293 dynamik.tr_w_min
+  // P-AXIS-00013 dynamik.a_trans_weight (list 0.1 %): the acceleration a kink
+  // may cause under a jerk-limited slope, as a factor of a; 0: a times cycle
+  // time / ramp time (the jerk stays within a / tr).
+  double a_trans_weight = 0;
   double weighted_a_max() const { return a_w_max_mm_s2 > 0 ? a_w_max_mm_s2 : a_max; }
   double weighted_tr_min_s() const { return tr_w_min_s > tr_min_s ? tr_w_min_s : tr_min_s; }
   std::uint32_t multi_gain_z = 2000, multi_gain_n = 1;  // P-AXIS-00129/00128

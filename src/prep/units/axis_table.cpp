@@ -36,6 +36,7 @@ AxisTable::AxisTable(const config::Machine& machine, const config::ChannelConfig
     feed_dyn_[j] = feed_dynamics(g);
     rapid_dyn_[j] = rapid_dynamics(g);
     accel_cap_mm_s2_[j] = g.a_max;
+    trans_weight_[j] = g.a_trans_weight;
     weight_limits_[j] = weight_limits_of(g);
     sw_neg_mm_[j] = ax.sw_limit_neg;
     sw_pos_mm_[j] = ax.sw_limit_pos;

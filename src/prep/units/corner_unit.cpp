@@ -9,35 +9,51 @@
 
 namespace nck::prep {
 
-// setup: each axis's velocity budget for a kink. Along the path an axis
-// already accelerates with up to max(a_acc, a_dec) of the block's mode; a
-// kink may add only what is left of a_max, spent within one cycle.
 namespace {
 
-std::array<double, kMaxAxes> kink_budgets(const AxisTable& axes, const AxisDynamicsArray& dyn, double dt_s) {
-  std::array<double, kMaxAxes> dv{};
-  for (std::size_t j = 0; j < axes.count(); ++j)
-    dv[j] = std::max(axes.accel_cap_mm_s2(j) - std::max(dyn[j].a_acc_mm_s2, dyn[j].a_dec_mm_s2), 0.0) * dt_s;
-  return dv;
+// A kink under a jerk-limited slope (TF5200 P-AXIS-00013 a_trans_weight):
+// its velocity step, taken within one cycle, is an acceleration for that
+// cycle of at most a * weight; the default weight (0) is cycle time / ramp
+// time, so that the acceleration's step stays within the jerk a / tr (the
+// smallest of the axis's: the smaller a over the longest ramp time, as HSC
+// uses in every phase).
+double jerk_limited_kink_dv(const motion::AxisDynamics& d, double weight, double dt_s) {
+  if (weight > 0) return std::max(d.a_acc_mm_s2, d.a_dec_mm_s2) * weight * dt_s;
+  const motion::RampTimes& t = d.tr;
+  const double tr_s = std::max({t.acc_up_s, t.acc_down_s, t.dec_up_s, t.dec_down_s});
+  return std::min(d.a_acc_mm_s2, d.a_dec_mm_s2) / tr_s * dt_s * dt_s;
 }
 
 }  // namespace
 
+// setup: each axis's velocity budget for a kink. Along the path an axis
+// already accelerates with up to max(a_acc, a_dec) of the block's mode; a
+// kink may add only what is left of a_max, spent within one cycle, and
+// under a jerk-limited slope no more than its jerk allows.
+CornerUnit::KinkBudgets CornerUnit::kink_budgets(const AxisTable& axes, const AxisDynamicsArray& dyn, double dt_s) {
+  KinkBudgets dv;
+  for (std::size_t j = 0; j < axes.count(); ++j) {
+    dv.step_mm_s[j] = std::max(axes.accel_cap_mm_s2(j) - std::max(dyn[j].a_acc_mm_s2, dyn[j].a_dec_mm_s2), 0.0) * dt_s;
+    dv.jerk_limited_mm_s[j] = std::min(dv.step_mm_s[j], jerk_limited_kink_dv(dyn[j], axes.trans_weight(j), dt_s));
+  }
+  return dv;
+}
+
 CornerUnit::CornerUnit(const AxisTable& axes, std::uint32_t cycle_time_us) {
   cycle_s_ = cycle_time_us * 1e-6;
-  dv_feed_mm_s_ = kink_budgets(axes, axes.dynamics(false), cycle_s_);
-  dv_rapid_mm_s_ = kink_budgets(axes, axes.dynamics(true), cycle_s_);
+  feed_ = kink_budgets(axes, axes.dynamics(false), cycle_s_);
+  rapid_ = kink_budgets(axes, axes.dynamics(true), cycle_s_);
 }
 
 void CornerUnit::set_feed_dynamics(const AxisTable& axes, const AxisDynamicsArray& feed) {
-  dv_feed_mm_s_ = kink_budgets(axes, feed, cycle_s_);
+  feed_ = kink_budgets(axes, feed, cycle_s_);
 }
 
 BlendAxes CornerUnit::blend_axes(const AxisTable& axes) const {
   BlendAxes a;
   a.n_axes = axes.count();
   a.feed_dyn = axes.feed();
-  a.corner_dv_mm_s = dv_feed_mm_s_;
+  a.corner_dv_mm_s = feed_.step_mm_s;
   for (std::size_t j = 0; j < a.n_axes; ++j) a.a_max_mm_s2[j] = axes.accel_cap_mm_s2(j);
   return a;
 }
@@ -104,7 +120,9 @@ void CornerUnit::note_transition(const nc::Block& b, PlannedCommand& c, bool rap
   // from standstill, the block after the last one from standstill too.
   if (last_.valid && last_.thread != thread_chain) last_.valid = false;
   c.feed_link.chained = thread_chain && last_.valid;
-  const auto& dv = rapid ? dv_rapid_mm_s_ : dv_feed_mm_s_;
+  const KinkBudgets& budgets = rapid ? rapid_ : feed_;
+  const bool jerk = jerk_limited(b.modal.slope);
+  const auto& dv = jerk ? budgets.jerk_limited_mm_s : budgets.step_mm_s;
   const double cruise_mm_s = std::min(c.v_cmd_mm_s, c.limits.v_max_mm_s);
   c.start_a_mm_s2 = start_acceleration(c, ctx);
   if (last_.valid) {
@@ -112,9 +130,13 @@ void CornerUnit::note_transition(const nc::Block& b, PlannedCommand& c, bool rap
     for (std::size_t j = 0; j < ctx.n_axes; ++j) budget[j] = std::min(dv[j], last_.corner_dv[j]);
     c.v_entry_max_mm_s = motion::transition_velocity(
         last_.tangent, machine_tangent(c, false, ctx.n_axes), std::span<const double>(budget.data(), ctx.n_axes),
-        last_.a_dec_mm_s2 * cycle_s_, last_.cruise_mm_s, cruise_mm_s);
+        last_.braking_step_mm_s, last_.cruise_mm_s, cruise_mm_s);
   }
-  last_ = {true, machine_tangent(c, true, ctx.n_axes), dv, cruise_mm_s, c.limits.a_dec_mm_s2, thread_chain};
+  // STEP brakes in whole steps of a_dec * dt and may cross the transition
+  // one step faster than planned; a jerk-limited slope ends its braking with
+  // the deceleration ramped down to 0, at the planned speed.
+  const double braking_step_mm_s = jerk ? 0.0 : c.limits.a_dec_mm_s2 * cycle_s_;
+  last_ = {true, machine_tangent(c, true, ctx.n_axes), dv, cruise_mm_s, c.limits.a_dec_mm_s2, braking_step_mm_s, thread_chain};
 }
 
 }  // namespace nck::prep

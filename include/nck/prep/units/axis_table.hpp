@@ -38,6 +38,8 @@ class AxisTable {
   double sw_limit_neg_mm(std::size_t j) const { return sw_neg_mm_[j]; }
   double sw_limit_pos_mm(std::size_t j) const { return sw_pos_mm_[j]; }
   double accel_cap_mm_s2(std::size_t j) const { return accel_cap_mm_s2_[j]; }
+  // P-AXIS-00013 a_trans_weight as a factor (0: cycle time / ramp time).
+  double trans_weight(std::size_t j) const { return trans_weight_[j]; }
   double home_pos_mm(std::size_t j) const { return home_pos_mm_[j]; }
   const WeightLimits& weight_limits(std::size_t j) const { return weight_limits_[j]; }
   // Bit j: axis j is a face-turning axis (kenngr.achs_mode 0x40).
@@ -50,6 +52,7 @@ class AxisTable {
   AxisDynamicsArray feed_dyn_{}, rapid_dyn_{};
   AxisArray sw_neg_mm_{}, sw_pos_mm_{};
   AxisArray accel_cap_mm_s2_{};  // hard cap of every acceleration (a_max)
+  AxisArray trans_weight_{};     // P-AXIS-00013
   AxisArray home_pos_mm_{};      // where G74 homes the axis (reference_pos)
   std::array<WeightLimits, kMaxAxes> weight_limits_{};
   std::uint32_t face_axes_ = 0;

@@ -36,12 +36,19 @@ class CornerUnit {
     std::array<double, kMaxAxes> corner_dv{};
     double cruise_mm_s = 0;
     double a_dec_mm_s2 = 0;  // along its path
+    double braking_step_mm_s = 0;  // how much faster than planned it may reach its end
     bool thread = false;     // a G33 block of a thread chain (P-CHAN-00837)
   };
   LastMotion last_{};
   double cycle_s_ = 0.001;
-  // Velocity change a kink may cause per axis within one cycle (feed / G0).
-  std::array<double, kMaxAxes> dv_feed_mm_s_{}, dv_rapid_mm_s_{};
+  // Velocity change a kink may cause per axis within one cycle: under STEP
+  // what is left of a_max, under a jerk-limited slope no more than its jerk
+  // (or P-AXIS-00013) allows either.
+  struct KinkBudgets {
+    std::array<double, kMaxAxes> step_mm_s{}, jerk_limited_mm_s{};
+  };
+  static KinkBudgets kink_budgets(const AxisTable& axes, const AxisDynamicsArray& dyn, double dt_s);
+  KinkBudgets feed_{}, rapid_{};
 };
 
 }  // namespace nck::prep

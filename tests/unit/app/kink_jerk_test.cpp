@@ -1,0 +1,94 @@
+// Kinks under a jerk-limited slope through `nck run` (issue 44, item 2;
+// TF5200 P-AXIS-00013 a_trans_weight): X and Y with a_beschl = a_brems =
+// 1,000 mm/s^2, a_max 5,000 and 200 ms ramps under TRAPEZ: a / tr = 5,000
+// mm/s^3. Before, a 90 deg corner at F15000 changed each axis's
+// acceleration by about 2,450 mm/s^2 within one cycle (2.4e6 mm/s^3).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
+#include "spindle_path_helpers.hpp"
+
+namespace nck::app::testing {
+namespace {
+
+// The trace prints 1e-6 mm: a third difference carries up to 4e-6 mm of
+// rounding, 4,000 mm/s^3 at 1 ms; a second difference 2e-6 mm, 2 mm/s^2.
+constexpr double kJerkRoundingMmS3 = 4000;
+constexpr double kAccelRoundingMmS2 = 2;
+
+const char* const kAxisLines =
+    "getriebe[0].slope_profil.a_beschl 1000\ngetriebe[0].slope_profil.a_brems 1000\n"
+    "getriebe[0].dynamik.a_max 5000\ngetriebe[0].slope_profil.tr_beschl_ab 200000\n"
+    "getriebe[0].slope_profil.tr_beschl_zu 200000\ngetriebe[0].slope_profil.tr_brems_ab 200000\n"
+    "getriebe[0].slope_profil.tr_brems_zu 200000";
+
+// Appends lines before the Ende of one list of a machine folder.
+void patch_list(const std::filesystem::path& file, const std::string& lines) {
+  std::string text = read_file(file);
+  text.insert(text.rfind("Ende"), lines + "\n");
+  std::ofstream(file) << text;
+}
+
+std::filesystem::path kink_machine(const std::string& name, const std::string& extra) {
+  const auto dir = patched_example("mill", name, "x.lis", std::string(kAxisLines) + extra).dir;
+  patch_list(dir / "y.lis", std::string(kAxisLines) + extra);
+  return dir;
+}
+
+double difference(const PathRun& r, const std::string& col, std::size_t i, int order) {
+  const auto p = [&](std::size_t k) { return r.rows[k].at(col); };
+  if (order == 2) return (p(i) - 2 * p(i - 1) + p(i - 2)) / (kDt * kDt);
+  return (p(i) - 3 * p(i - 1) + 3 * p(i - 2) - p(i - 3)) / (kDt * kDt * kDt);
+}
+
+// The largest |difference| of the given order of X and Y over rows [from, to).
+double largest(const PathRun& r, int order, std::size_t from = 3, std::size_t to = SIZE_MAX) {
+  double worst = 0;
+  for (std::size_t i = std::max<std::size_t>(from, 3); i < std::min(to, r.rows.size()); ++i)
+    for (const char* axis : {"X", "Y"}) worst = std::max(worst, std::abs(difference(r, axis, i, order)));
+  return worst;
+}
+
+// The first row at which the path stands at (x, y) exactly.
+std::size_t row_at(const PathRun& r, double x, double y) {
+  for (std::size_t i = 0; i < r.rows.size(); ++i)
+    if (r.rows[i].at("X") == x && r.rows[i].at("Y") == y) return i;
+  return SIZE_MAX;
+}
+
+constexpr const char* kCornerAndReversal =
+    "%kink\nN10 #SLOPE [TYPE=TRAPEZ]\nN20 G90 G1 X250 F15000\nN30 Y100\nN40 X0\nN50 X250\nN60 M30\n";
+
+TEST(KinkJerk, ByDefaultCornersAndReversalsKeepTheJerkOfTheSlope) {
+  const PathRun r = run_text(kink_machine("kink_default", "").string(), kCornerAndReversal, "kink_default_run");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  EXPECT_LE(largest(r, 3), 1000 / 0.2 + kJerkRoundingMmS3);
+  // every programmed end point of the unblended blocks is reached exactly
+  EXPECT_NE(row_at(r, 250, 0), SIZE_MAX);
+  EXPECT_NE(row_at(r, 250, 100), SIZE_MAX);
+  EXPECT_NE(row_at(r, 0, 100), SIZE_MAX);
+  EXPECT_NEAR(r.rows.back().at("X"), 250, 1e-9);
+}
+
+// a_trans_weight 500 (50 %): a kink may step each axis's acceleration by
+// 50 % of a_beschl, 500 mm/s^2, within one cycle.
+TEST(KinkJerk, ATransitionWeightLetsTheKinkStepTheAccelerationByItsShare) {
+  const PathRun weighted =
+      run_text(kink_machine("kink_weighted", "\ngetriebe[0].dynamik.a_trans_weight 500").string(), kCornerAndReversal,
+               "kink_weighted_run");
+  ASSERT_EQ(weighted.cli.exit_code, 0) << weighted.cli.output;
+  const std::size_t corner = row_at(weighted, 250, 0);
+  ASSERT_NE(corner, SIZE_MAX);
+  const double kink_a = largest(weighted, 2, corner - 3, corner + 4);
+  EXPECT_LE(kink_a, 500 + kAccelRoundingMmS2);
+  EXPECT_GE(kink_a, 250.0) << "the weight, not the slope's jerk, sets the corner speed";
+  // and the corner is passed sooner than with the jerk bound
+  const PathRun plain = run_text(kink_machine("kink_plain", "").string(), kCornerAndReversal, "kink_plain_run");
+  EXPECT_LT(weighted.rows.size(), plain.rows.size());
+}
+
+}  // namespace
+}  // namespace nck::app::testing
