@@ -9,7 +9,11 @@ steps, NC stop and cycle start, single step, MDI after a reset or the end,
 jogs after the end. Every cycle of the trace is checked:
   |v| <= dynamik.vb_max and |a| <= dynamik.a_max of each axis.
 The 6-decimal trace adds up to 2e-6 mm of rounding to a second difference
-(2 mm/s^2 at 1 ms); the bound allows 3 mm/s^2 and 1e-3 mm/s.
+(2 mm/s^2 at 1 ms); the bound allows 3 mm/s^2 and 1e-3 mm/s. With --jerk,
+a program under a jerk-limited slope (TRAPEZ, SIN2, HSC) also keeps every
+axis's jerk within pi/2 a_max / tr_min (the drive's bound; SIN2's peak
+is pi/2 times its mean), with 4,000 mm/s^3 for the rounding of a third
+difference.
 
   limits_property.py NCK SOURCE_DIR [--cases N] [--seed S] [--minutes M]
 
@@ -29,16 +33,20 @@ AXES = ("X", "Y", "Z")
 DT_S = 0.001
 A_TOL_MM_S2 = 3.0
 V_TOL_MM_S = 1e-3
+J_TOL_MM_S3 = 4000.0
 
 
 def axis_limits(machine):
-    """(vb_max mm/s, a_max mm/s^2) of X, Y, Z from the example's axis lists."""
+    """(vb_max mm/s, a_max mm/s^2, jerk bound mm/s^3) of X, Y, Z from the example's axis lists."""
     limits = {}
     for axis in AXES:
         text = (machine / f"{axis.lower()}.lis").read_text()
         vb = re.search(r"getriebe\[0\]\.dynamik\.vb_max\s+(\d+)", text)
         a = re.search(r"getriebe\[0\]\.dynamik\.a_max\s+(\d+)", text)
-        limits[axis] = (int(vb.group(1)) / 1000.0, float(a.group(1)))
+        tr_min = re.search(r"getriebe\[0\]\.dynamik\.tr_min\s+(\d+)", text)
+        tr_min_s = int(tr_min.group(1)) * 1e-6 if tr_min else 0.01  # P-AXIS-00201 default 10 ms
+        a_max = float(a.group(1))
+        limits[axis] = (int(vb.group(1)) / 1000.0, a_max, math.pi / 2 * a_max / tr_min_s)
     return limits
 
 
@@ -114,11 +122,11 @@ def trace_rows(path):
     return [[float(cells[cols[n]]) for n in ("t",) + AXES] for cells in (l.split(",") for l in lines[1:])]
 
 
-def violation(rows, limits):
+def violation(rows, limits, jerk):
     """The first cycle that breaks a limit, as text, or None."""
     for i in range(1, len(rows)):
         for k, axis in enumerate(AXES, start=1):
-            vb, a_max = limits[axis]
+            vb, a_max, j_max = limits[axis]
             v = (rows[i][k] - rows[i - 1][k]) / DT_S
             if abs(v) > vb + V_TOL_MM_S:
                 return f"t={rows[i][0]:.3f} {axis} v={v:.3f} mm/s > {vb}"
@@ -126,10 +134,14 @@ def violation(rows, limits):
                 a = (rows[i][k] - 2 * rows[i - 1][k] + rows[i - 2][k]) / DT_S**2
                 if abs(a) > a_max + A_TOL_MM_S2:
                     return f"t={rows[i][0]:.3f} {axis} a={a:.1f} mm/s^2 > {a_max}"
+            if jerk and i >= 3:
+                j = (rows[i][k] - 3 * rows[i - 1][k] + 3 * rows[i - 2][k] - rows[i - 3][k]) / DT_S**3
+                if abs(j) > j_max + J_TOL_MM_S3:
+                    return f"t={rows[i][0]:.3f} {axis} j={j:.0f} mm/s^3 > {j_max:.0f}"
     return None
 
 
-def check_one(nck, machine, limits, prog_text, plc_text, work):
+def check_one(nck, machine, limits, prog_text, plc_text, work, jerk):
     (work / "p.nc").write_text(prog_text)
     (work / "s.plc").write_text(plc_text)
     trace = work / "t.csv"
@@ -138,7 +150,7 @@ def check_one(nck, machine, limits, prog_text, plc_text, work):
     if done.returncode not in (0, 1):
         return f"exit {done.returncode}: {done.stderr[-500:]}", 0
     rows = trace_rows(trace)
-    return violation(rows, limits), len(rows)
+    return violation(rows, limits, jerk and "TYPE=STEP" not in prog_text), len(rows)
 
 
 def main():
@@ -148,6 +160,7 @@ def main():
     ap.add_argument("--cases", type=int, default=30)
     ap.add_argument("--seed", type=int, default=44)
     ap.add_argument("--minutes", type=float, default=0)
+    ap.add_argument("--jerk", action="store_true", help="check the jerk under jerk-limited slopes too")
     a = ap.parse_args()
     machine = pathlib.Path(a.source) / "examples" / "mill"
     limits = axis_limits(machine)
@@ -158,7 +171,7 @@ def main():
         work = pathlib.Path(tmp)
         while (cases < a.cases) if a.minutes == 0 else (time.monotonic() - started < a.minutes * 60):
             prog_text, plc_text = program(rng), scenario(rng)
-            bad, n = check_one(a.nck, machine, limits, prog_text, plc_text, work)
+            bad, n = check_one(a.nck, machine, limits, prog_text, plc_text, work, a.jerk)
             cases += 1
             cycles += n
             if bad:
