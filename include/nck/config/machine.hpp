@@ -29,8 +29,6 @@ enum class AxisKind : std::uint8_t { translatory = 1, rotary = 2, spindle = 4 };
 // Synchronisation type bits (FCT-S1 §2.5).
 namespace sync {
 inline constexpr std::uint32_t NO_SYNCH = 0x0;
-// No m_synch entry (P-CHAN-00041 default): the M function is unknown.
-inline constexpr std::uint32_t NOT_VALID = 0xFFFFFFFF;
 inline constexpr std::uint32_t MOS = 0x1;
 inline constexpr std::uint32_t MVS_SVS = 0x2;
 inline constexpr std::uint32_t MVS_SNS = 0x4;
@@ -47,7 +45,7 @@ inline constexpr std::uint32_t FWD_SYNCH = 0x800000;
 inline constexpr std::uint32_t MEP_SVS = 0x1000000;
 inline constexpr std::uint32_t MET_SVS = 0x2000000;
 inline constexpr std::uint32_t FAW_SYNCH = 0x10000000;
-inline constexpr std::uint32_t NOT_VALID = 0x80000000;
+inline constexpr std::uint32_t NOT_VALID = 0x80000000;  // also: no m_synch entry (P-CHAN-00041 default)
 }  // namespace sync
 
 // Characteristic acceleration curve of a spindle gear stage (P-AXIS-00202...).
