@@ -126,6 +126,11 @@ struct CommandHead {
   bool expl_syn = false;         // #EXPL SYN: MVS_SLP functions synchronise here
   Restart restart = Restart::none;
   Mdi mdi = Mdi::none;
+  // How many early program ends (reset, error: the kernel's `stopped`
+  // feedback) preparation had taken when it planned this. The kernel drops
+  // a command planned before its latest such end: it would start where the
+  // path no longer stands.
+  std::uint8_t stops_taken = 0;
   // PlanStore::frames index of the block's program -> machine map, handed on
   // in the block event (none: not recorded)
   std::optional<std::uint32_t> frame_index;
