@@ -85,7 +85,8 @@ int stopped_exit_code(const WallClockLimit& wall, const CheckOptions& opt) {
 }  // namespace
 
 int check_command(const CheckOptions& opt) {
-  config::LoadResult loaded = config::load_machine(opt.machine);
+  const config::LoadOptions load{opt.strict_keys ? config::KeyPolicy::strict : config::KeyPolicy::lenient};
+  config::LoadResult loaded = config::load_machine(opt.machine, load);
   std::vector<Found> found;
   for (const Diagnostic& d : loaded.diagnostics.items()) {
     if (!opt.json) fmt::print(stderr, "{}\n", format(d));
