@@ -114,6 +114,7 @@ LoadResult load_machine_unguarded(const std::filesystem::path& folder, const Loa
     if (const ParamValue* v = st.find(fmt::format("cycle_path[{}]", i)); v && !v->text.empty())
       m.cycle_paths.push_back(f.resolve(v->text));
   detail::check_machine(m, axis_lists, channel_lists, r.diagnostics);
+  if (options.capability_warnings) detail::check_capabilities(m, axis_lists, r.diagnostics);
   detail::add_c_axes(m);
   r.machine = std::move(m);
   return r;

@@ -16,6 +16,10 @@ struct LoadResult {
 
 struct LoadOptions {
   KeyPolicy keys = KeyPolicy::lenient;  // --strict: every unknown key is an error (910032)
+  // `nck check`: also warn of what the machine cannot do whatever a program
+  // asks, e.g. a spindle that cannot position or home (70252). The run
+  // reports such a thing when a program asks for it.
+  bool capability_warnings = false;
 };
 
 // Reads startup.lis in `folder` and every list it names, converts units,

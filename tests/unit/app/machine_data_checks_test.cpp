@@ -1,7 +1,8 @@
-// What `nck check` finds in machine data before a run (issue 44 item 14):
-// the ranges the TF5200 pages give (tool speed and acceleration ≥ 1, the
-// gear-change position inside the software limits) and the parameters that
-// are read but act on nothing in simulation.
+// What `nck check` finds in machine data before a run (issue 44 items 14,
+// 15): the ranges the TF5200 pages give (tool speed and acceleration ≥ 1,
+// the gear-change position inside the software limits), the parameters
+// that are read but act on nothing in simulation, and a spindle that cannot
+// position or home.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -65,6 +66,36 @@ TEST(MachineDataRanges, ParametersWithoutEffectInSimulationSaySo) {
     EXPECT_NE(p.output.find("accepted, no effect in simulation"), std::string::npos) << id << "\n" << p.output;
   }
   EXPECT_NE(read_file(root() + "/docs/parameters.md").find("SERCOS drives: above this speed"), std::string::npos);
+}
+
+// The mill's S2 is speed-controlled without feedback (s2.lis): no program
+// can position or home it. Without programs `nck check` says so, as a
+// warning at its operation mode; with a program, the check gives the run's
+// error 70252 where the program asks for either.
+TEST(SpindleCapabilities, ASpindleThatCannotPositionIsReportedBeforeTheRun) {
+  const CliResult machine = run_nck("check " + mill());
+  EXPECT_EQ(machine.exit_code, 0) << machine.output;
+  EXPECT_NE(machine.output.find("s2.lis:10: warning 70252: spindle S2 of channel 1 is speed-controlled without "
+                                "position feedback (antr.operation_mode OPEN_POSITION_LOOP_MODE)"),
+            std::string::npos)
+      << machine.output;
+  EXPECT_NE(machine.output.find("0 error(s), 1 warning(s)"), std::string::npos) << machine.output;
+  // The lathe's spindle is position-controlled: nothing to say.
+  EXPECT_EQ(run_nck("check " + root() + "/examples/lathe").output.find("70252"), std::string::npos);
+
+  const auto dir = temp_dir("sensorless_check");
+  for (const std::string block : {"S2[M19 REV100 POS10]", "S2[G74]"}) {
+    const std::string prog = write(dir / "p.nc", "N10 G0 X0\nN20 " + block + "\nN30 M30\n").string();
+    const CliResult check = run_nck("check " + mill() + " " + prog);
+    EXPECT_EQ(check.exit_code, 1) << block << "\n" << check.output;
+    EXPECT_NE(check.output.find(prog + ":2: error 70252"), std::string::npos) << block << "\n" << check.output;
+    const CliResult run = run_nck("run " + mill() + " " + prog + " --no-progress");
+    EXPECT_EQ(run.exit_code, 1) << run.output;
+    EXPECT_NE(run.output.find(prog + ":2: error 70252"), std::string::npos) << block << "\n" << run.output;
+  }
+  // S1 (position-controlled) may position.
+  const std::string s1 = write(dir / "s1.nc", "N10 S[M19 REV100 POS10]\nN20 G74 S1\nN30 M30\n").string();
+  EXPECT_EQ(run_nck("check " + mill() + " " + s1).exit_code, 0);
 }
 
 }  // namespace
