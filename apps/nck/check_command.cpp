@@ -85,7 +85,11 @@ int stopped_exit_code(const WallClockLimit& wall, const CheckOptions& opt) {
 }  // namespace
 
 int check_command(const CheckOptions& opt) {
-  config::LoadResult loaded = config::load_machine(opt.machine);
+  // Without programs the check says what no program can ask of the machine;
+  // with them, each program's check finds where one asks (70252).
+  const config::LoadOptions load{opt.strict_keys ? config::KeyPolicy::strict : config::KeyPolicy::lenient,
+                                 opt.programs.empty()};
+  config::LoadResult loaded = config::load_machine(opt.machine, load);
   std::vector<Found> found;
   for (const Diagnostic& d : loaded.diagnostics.items()) {
     if (!opt.json) fmt::print(stderr, "{}\n", format(d));

@@ -14,6 +14,7 @@ struct CheckOptions {
   std::vector<std::string> cycles;    // --cycles DIR: searched after startup.lis cycle_path[i]
   std::uint32_t clamp_index = 0;      // clamp-offset group (pzv_grp) at program start
   double max_wall_s = 0;              // wall-clock seconds (0 = no limit)
+  bool strict_keys = false;           // --strict: every unknown list key is an error (910032)
 };
 
 // Exit codes: 0 no errors (warnings allowed), 1 errors found (or --max-wall

@@ -103,6 +103,10 @@ std::string did_you_mean(const CLI::App& app, int argc, char** argv) {
   return {};
 }
 
+constexpr const char* kStrictHelp =
+    "every unknown list key is an error (910032), not only a misspelt one (910031); without it a key nck does "
+    "not model is warning 910002";
+
 // A number option's check, with messages a user reads at a glance ("must be
 // >= 1", "'abc' is not a number") instead of CLI11's range of doubles.
 CLI::Validator number_at_least(double min, bool whole) {
@@ -204,6 +208,7 @@ int main_cli(int argc, char** argv) {
       ->check(number_at_least(0, true));
   check->add_option("--max-wall", checko.max_wall_s, "wall-clock limit in seconds")
       ->check(number_at_least(0.001, false));
+  check->add_flag("--strict", checko.strict_keys, kStrictHelp);
   check->footer(
       "Diagnostics go to stderr (FILE:LINE: error|warning ID: text), or with --json to stdout. Exit 0: no "
       "errors (warnings allowed), 1: errors found, 2: bad usage (docs/cli.md).");
@@ -247,6 +252,7 @@ int main_cli(int argc, char** argv) {
   add_block_search_options(*runc, run);
   runc->add_option("--cycles", run.cycles, "search DIR for L CYCLE files (after the machine's cycle_path[i]); repeat")
       ->allow_extra_args(false);
+  runc->add_flag("--strict", run.strict_keys, kStrictHelp);
   runc->footer(
       "FILE - writes that output to stdout (one output at a time); diagnostics and the progress line stay on "
       "stderr.");

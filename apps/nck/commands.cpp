@@ -13,6 +13,7 @@
 
 #include <filesystem>
 #include <initializer_list>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -135,9 +136,11 @@ std::vector<std::string> cells(const std::string& row) {
 }
 
 // The table rows of a generated markdown page in which one of the columns
-// `searched` contains `lookup` (case-insensitive), under the page's header.
+// `searched` contains `lookup` (case-insensitive), or whose first cell is
+// one of `also`, under the page's header.
 int print_matching_rows(const std::string& markdown, const std::string& lookup,
-                        std::initializer_list<std::size_t> searched, const char* what) {
+                        std::initializer_list<std::size_t> searched, const char* what,
+                        const std::set<std::string>& also = {}) {
   if (lookup.empty()) {
     (void)write_stdout(markdown);
     return 0;
@@ -152,6 +155,10 @@ int print_matching_rows(const std::string& markdown, const std::string& lookup,
     if (is_header && header.empty()) header = lines[i] + "\n" + lines[i + 1] + "\n";
     if (is_header || !lines[i].starts_with("| ")) continue;
     const std::vector<std::string> row = cells(lines[i]);
+    if (!row.empty() && also.contains(row[0])) {
+      rows += lines[i] + "\n";
+      continue;
+    }
     for (std::size_t c : searched)
       if (c < row.size() && lower(row[c]).find(needle) != std::string::npos) {
         rows += lines[i] + "\n";
@@ -166,10 +173,22 @@ int print_matching_rows(const std::string& markdown, const std::string& lookup,
   return 0;
 }
 
+// The key cells ("`spindel[i].log_achs_nr`") of the parameters whose
+// accepted seed spellings or short forms contain `lookup` (log_achs_no).
+std::set<std::string> keys_spelt_like(const std::string& lookup) {
+  std::set<std::string> out;
+  const std::string needle = lower(lookup);
+  for (const config::ParamInfo& p : config::all_parameters())
+    for (const std::string& alias : config::alias_patterns(p))
+      if (lower(config::display_key(alias)).find(needle) != std::string::npos)
+        out.insert("`" + config::display_key(p.key) + "`");
+  return out;
+}
+
 }  // namespace
 
 int print_parameters(const std::string& lookup) {
-  return print_matching_rows(config::parameters_markdown(), lookup, {0, 1}, "list key");
+  return print_matching_rows(config::parameters_markdown(), lookup, {0, 1}, "list key", keys_spelt_like(lookup));
 }
 
 // By ID, name or a word of its description ("940004", "OutputPath",

@@ -67,7 +67,8 @@ int run_simulation(const RunOptions& opt) {
       return 2;
     }
   }
-  config::LoadResult loaded = config::load_machine(opt.machine);
+  config::LoadResult loaded = config::load_machine(
+      opt.machine, {opt.strict_keys ? config::KeyPolicy::strict : config::KeyPolicy::lenient});
   if (!print_load_diagnostics(loaded)) return 2;
   auto created = Simulation::create(std::move(*loaded.machine), opt);
   if (!created) {

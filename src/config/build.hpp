@@ -22,6 +22,11 @@ struct ChannelLists {
 void check_machine(Machine& m, const std::vector<ParamList>& axis_lists,
                    const std::vector<ChannelLists>& channel_lists, Diagnostics& diags);
 
+// `nck check` only (LoadOptions::capability_warnings): what a program cannot
+// ask of the machine, as warnings, e.g. 70252 for a spindle that cannot
+// position or home. Run after check_machine (it needs the axis links).
+void check_capabilities(const Machine& m, const std::vector<ParamList>& axis_lists, Diagnostics& diags);
+
 // After the checks: the main spindle that can become a C axis joins the
 // channel's axes under default_ax_name_of_spindle (ChannelConfig::c_axis).
 void add_c_axes(Machine& m);

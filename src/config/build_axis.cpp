@@ -133,6 +133,21 @@ void check_weight_limits(const ParamList& l, std::size_t g, const GearStage& s, 
   }
 }
 
+// P-AXIS-00078's range: strictly between the software limits (P-AXIS-00177
+// < getr_schalt_pos < P-AXIS-00178), where the position is given: the
+// default 0 of a stage that never shifts is never approached.
+void check_gear_change_position(const ParamList& l, const AxisConfig& a, std::size_t g, Diagnostics& d) {
+  const std::string key = gkey(g, "getr_schalt_pos");
+  const ParamValue* at = l.find(key);
+  const double pos = a.gears[g].gear_change_pos_deg;
+  if (!at || (pos > a.sw_limit_neg && pos < a.sw_limit_pos)) return;
+  const std::size_t unit_part = a.kind == AxisKind::translatory ? 0 : 1;
+  d.add(ErrorId::ConfigCrossRange, at->loc,
+        fmt::format("{} must lie strictly between {} and {}", listed(l, key, pos, unit_part),
+                    listed(l, "kenngr.swe_neg", a.sw_limit_neg, unit_part),
+                    listed(l, "kenngr.swe_pos", a.sw_limit_pos, unit_part)));
+}
+
 // Parameter relations of one gear stage (ranges that name another parameter).
 void check_gear(const ParamList& l, const AxisConfig& a, std::size_t g, Diagnostics& d) {
   const GearStage& s = a.gears[g];
@@ -150,6 +165,7 @@ void check_gear(const ParamList& l, const AxisConfig& a, std::size_t g, Diagnost
                 fmt::format("{} must not exceed {}", show(key, v), show(amax, s.a_max)), d);
   check_ramp_times(l, g, s, d);
   check_weight_limits(l, g, s, d);
+  check_gear_change_position(l, a, g, d);
   cross_check(l, k("dynamik.a_emergency"), amax, s.a_emergency <= 2 * s.a_max,
               fmt::format("{} must not exceed 2 x {}", k("dynamik.a_emergency"), amax), d);
   if (a.is_modulo())

@@ -3,8 +3,10 @@
 #include <cctype>
 #include <fmt/format.h>
 #include <map>
+#include <set>
 
 #include "build.hpp"
+#include "nck/config/drive_feedback.hpp"
 
 namespace nck::config::detail {
 namespace {
@@ -138,6 +140,23 @@ bool check_no_gaps(const std::vector<std::uint32_t>& indices, SourceLoc where, s
     return false;
   }
   return true;
+}
+
+void check_capabilities(const Machine& m, const std::vector<ParamList>& axis_lists, Diagnostics& d) {
+  std::set<int> reported;  // a spindle known to two channels: once
+  for (const ChannelConfig& c : m.channels)
+    for (const ChannelSpindle& s : c.spindles) {
+      if (s.axis_index < 0 || s.plc_control || !reported.insert(s.axis_index).second) continue;
+      const auto axis = static_cast<std::size_t>(s.axis_index);
+      if (!m.axes[axis].is_spindle() || knows_position(m.axes[axis])) continue;
+      const ParamList& l = axis_lists[axis];
+      // A warning here, the run's error 70252 where a program asks (docs/decisions.md).
+      d.add(Diagnostic{ErrorId::SpindleSensorlessPositioning, Severity::warning, l.loc("antr.operation_mode"),
+                       fmt::format("spindle {} of channel {} is speed-controlled without position feedback "
+                                   "(antr.operation_mode {}): it cannot position (M19) or home (G74), and a "
+                                   "program that asks for either stops with error 70252",
+                                   s.name, c.number, l.text("antr.operation_mode", "DRIVE_DEFAULT"))});
+    }
 }
 
 void check_machine(Machine& m, const std::vector<ParamList>& axis_lists,

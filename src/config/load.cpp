@@ -11,6 +11,7 @@ namespace {
 
 struct Folder {
   std::filesystem::path dir;
+  KeyPolicy keys = KeyPolicy::lenient;  // how its lists' unknown keys are reported
   // A path from a list, relative to the machine folder; '\' from ISG/Windows lists accepted.
   std::filesystem::path resolve(std::string rel) const {
     std::replace(rel.begin(), rel.end(), '\\', '/');
@@ -27,7 +28,7 @@ std::optional<ParamList> read_named(const Folder& f, const ParamList& startup, c
   auto path = f.resolve(v->text);
   auto text = read_list_file(path, path.string(), d, v->loc);
   if (!text) return std::nullopt;
-  return ParamList::parse(*text, kind, d);
+  return ParamList::parse(*text, kind, d, f.keys);
 }
 
 void check_count(const ParamList& startup, std::string_view count_key, std::size_t found,
@@ -92,13 +93,13 @@ void load_channels(const Folder& f, const ParamList& st, Machine& m, std::vector
   }
 }
 
-LoadResult load_machine_unguarded(const std::filesystem::path& folder) {
+LoadResult load_machine_unguarded(const std::filesystem::path& folder, const LoadOptions& options) {
   LoadResult r;
-  Folder f{folder};
+  Folder f{folder, options.keys};
   auto startup_path = (folder / "startup.lis").lexically_normal();
   auto text = read_list_file(startup_path, startup_path.string(), r.diagnostics);
   if (!text) return r;
-  ParamList st = ParamList::parse(*text, ListKind::startup, r.diagnostics);
+  ParamList st = ParamList::parse(*text, ListKind::startup, r.diagnostics, f.keys);
 
   Machine m;
   m.folder = folder;
@@ -113,6 +114,7 @@ LoadResult load_machine_unguarded(const std::filesystem::path& folder) {
     if (const ParamValue* v = st.find(fmt::format("cycle_path[{}]", i)); v && !v->text.empty())
       m.cycle_paths.push_back(f.resolve(v->text));
   detail::check_machine(m, axis_lists, channel_lists, r.diagnostics);
+  if (options.capability_warnings) detail::check_capabilities(m, axis_lists, r.diagnostics);
   detail::add_c_axes(m);
   r.machine = std::move(m);
   return r;
@@ -120,10 +122,10 @@ LoadResult load_machine_unguarded(const std::filesystem::path& folder) {
 
 }  // namespace
 
-LoadResult load_machine(const std::filesystem::path& folder) {
+LoadResult load_machine(const std::filesystem::path& folder, const LoadOptions& options) {
   // Bad input never throws; this only guards against resource exhaustion.
   try {
-    return load_machine_unguarded(folder);
+    return load_machine_unguarded(folder, options);
   } catch (const std::exception& e) {
     LoadResult r;
     r.diagnostics.add(ErrorId::ConfigFileUnreadable, SourceLoc{folder.string(), 0, 0},

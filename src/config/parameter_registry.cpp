@@ -1,5 +1,5 @@
-// Lookups over the parameter table: by key, by ID, nearest key, aliases and
-// symbolic constants.
+// Lookups over the parameter table: by key, by ID, nearest key and symbolic
+// constants (the accepted other spellings: key_aliases.cpp).
 #include <algorithm>
 #include <cctype>
 #include <vector>
@@ -54,45 +54,6 @@ const std::vector<ParamInfo>& table() {
   return all;
 }
 
-bool replace_prefix(std::string& s, std::string_view from, std::string_view to) {
-  if (s.rfind(from, 0) != 0) return false;
-  s = std::string(to) + s.substr(from.size());
-  return true;
-}
-
-bool replace_part(std::string& s, std::string_view from, std::string_view to) {
-  auto pos = s.find(from);
-  if (pos == std::string::npos) return false;
-  s.replace(pos, from.size(), to);
-  return true;
-}
-
-// The seed misspellings accepted with warning 910005 (docs/parameters.md).
-bool rewrite_misspelling(ListKind list, std::string& k) {
-  bool changed = false;
-  switch (list) {
-    case ListKind::channel:
-      changed |= replace_prefix(k, "spindle[", "spindel[");
-      if (k.rfind("spindel[", 0) == 0) changed |= replace_part(k, ".log_achs_no", ".log_achs_nr");
-      changed |= replace_prefix(k, "koppelgruppe[", "synchro_data.koppel_gruppe[");
-      changed |= replace_prefix(k, "koppel_gruppe[", "synchro_data.koppel_gruppe[");
-      break;
-    case ListKind::axis:
-      changed |= replace_part(k, ".mulit_gain_n", ".multi_gain_n");
-      changed |= replace_prefix(k, "beschl_kennlinie.", "getriebe[0].beschl_kennlinie.");
-      break;
-    case ListKind::zero:
-      if (k.rfind("np_grp[", 0) == 0) changed |= replace_part(k, ".versatz", ".versch");
-      break;
-    case ListKind::startup:
-      changed |= replace_prefix(k, "wrkz_data[", "werkz_data[");
-      break;
-    default:
-      break;
-  }
-  return changed;
-}
-
 }  // namespace
 
 std::span<const ParamInfo> all_parameters() { return table(); }
@@ -131,20 +92,6 @@ std::string_view list_name(ListKind list) {
     case ListKind::sim: return "sim";
   }
   return "?";
-}
-
-std::optional<KeyRewrite> rewrite_alias(ListKind list, std::string_view key) {
-  std::string k(key);
-  if (rewrite_misspelling(list, k)) {
-    if (find_parameter(list, detail::split_key(k).pattern)) return KeyRewrite{k, true};
-    return std::nullopt;
-  }
-  // The seeds' short axis forms (achs_typ, drive_type, axis_mode ...) without "kenngr.".
-  if (list == ListKind::axis && k.find('.') == std::string::npos) {
-    std::string full = "kenngr." + k;
-    if (find_parameter(list, detail::split_key(full).pattern)) return KeyRewrite{full, false};
-  }
-  return std::nullopt;
 }
 
 std::optional<std::uint32_t> symbol_value(ParamType type, std::string_view name) {

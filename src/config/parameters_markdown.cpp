@@ -13,19 +13,6 @@ std::string number(double v) {
   return fmt::format("{}", v);
 }
 
-// "spindel[].range_table[].max_speed" -> "spindel[i].range_table[j].max_speed"
-std::string display_key(std::string_view pattern) {
-  static constexpr char kLetters[] = {'i', 'j', 'k'};
-  std::string out;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < pattern.size(); ++i) {
-    out.push_back(pattern[i]);
-    if (pattern[i] == '[' && i + 1 < pattern.size() && pattern[i + 1] == ']')
-      out.push_back(kLetters[n++ % 3]);
-  }
-  return out;
-}
-
 std::string range_text(const ParamInfo& p) {
   switch (p.type) {
     case ParamType::boolean: return "0/1";
@@ -78,6 +65,18 @@ std::string_view list_title(ListKind l) {
 
 }  // namespace
 
+std::string display_key(std::string_view pattern) {
+  static constexpr char kLetters[] = {'i', 'j', 'k'};
+  std::string out;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < pattern.size(); ++i) {
+    out.push_back(pattern[i]);
+    if (pattern[i] == '[' && i + 1 < pattern.size() && pattern[i + 1] == ']')
+      out.push_back(kLetters[n++ % 3]);
+  }
+  return out;
+}
+
 std::string parameters_markdown() {
   std::string out =
       "# Parameters\n\n"
@@ -87,13 +86,17 @@ std::string parameters_markdown() {
       "  (0.1 µm → mm, 0.0001° → deg, µm/s → mm/s, 0.001°/s → deg/s, µs → s).\n"
       "- Where the list unit depends on the axis type it reads `translatory · rotary/spindle`.\n"
       "- Keys are matched case-insensitively; `i`, `j` are the `[n]` indices.\n"
-      "- Unknown keys give warning 910002, wrong types 910003, values out of range 910004.\n"
-      "- Seed spellings accepted with warning 910005: `spindle[i].…`, `…log_achs_no`,\n"
-      "  `koppelgruppe[i]…`, `mulit_gain_n`, `beschl_kennlinie.*` without `getriebe[i].`,\n"
-      "  `np_grp[i].achse[j].versatz`, `wrkz_data[i]`. Accepted silently: `achs_typ`,\n"
-      "  `antr_typ`, `achs_mode` … without `kenngr.`.\n"
+      "- A misspelt key (within edit distance 2 of a key below or of its seed spelling) is error\n"
+      "  910031; any other unknown key is warning 910002 and has no effect (error 910032 under\n"
+      "  `--strict`). Wrong types give 910003, values out of range 910004.\n"
+      "- Seed spellings accepted with warning 910005 (`nck params` finds a key by them too): " +
+      alias_summary() +
+      ".\n"
+      "  Accepted silently: the `kenngr.*` keys without `kenngr.` (`achs_typ`, `antr_typ` …).\n"
       "- A value written as another parameter's ID (`P-AXIS-00212.0`) takes that parameter's\n"
-      "  value from the same list and indices (its default when not given).\n";
+      "  value from the same list and indices (its default when not given).\n"
+      "- \"Accepted, no effect in simulation\": read and range-checked, but what it sets is a\n"
+      "  drive or fieldbus matter the simulation does not model.\n";
   for (ListKind l : {ListKind::startup, ListKind::channel, ListKind::axis, ListKind::tool,
                      ListKind::zero, ListKind::clamp, ListKind::sim}) {
     out += fmt::format("\n## {}\n\n", list_title(l));

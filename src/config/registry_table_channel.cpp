@@ -111,7 +111,7 @@ constexpr ParamInfo kTable[] = {
     {"dist_ctrl[].min_pos", "P-CHAN-00807", C, T::integer, kS32Min, kS32 - 1, -50000, 1e-4, "0.1 µm", "mm", "Lower sensor limit (negative allowed, as its default).", {1}},
     {"dist_ctrl[].tolerance", "P-CHAN-00808", C, T::integer, 0, kS32 - 1, 0, 1e-4, "0.1 µm", "mm", "Safety band inside the sensor limits (310019/310020).", {1}},
     {"dist_ctrl[].check_sw_limit_switch", "P-CHAN-00809", C, T::boolean, 0, 1, 0, 1, "—", "—", "Include the correction in software-limit checks.", {1}},
-    {"dist_ctrl[].mode_dist_use_both_encoder", "P-CHAN-00810", C, T::boolean, 0, 1, 0, 1, "—", "—", "Couple distance sensor and motor encoder.", {1}},
+    {"dist_ctrl[].mode_dist_use_both_encoder", "P-CHAN-00810", C, T::boolean, 0, 1, 0, 1, "—", "—", "Couple distance sensor and motor encoder (accepted, no effect in simulation).", {1}},
     {"dist_ctrl[].use_adaptive_acceleration", "P-CHAN-00811", C, T::boolean, 0, 1, 0, 1, "—", "—", "Acceleration grows with the distance error (a_min..a_max).", {1}},
     {"dist_ctrl[].a_min", "P-CHAN-00812", C, T::integer, 1, kU32, 500, 1, "mm/s²", "mm/s²", "Acceleration at small errors (adaptive mode).", {1}},
     {"dist_ctrl[].dist_error_a_min", "P-CHAN-00813", C, T::integer, 0, kU32 - 1, 1000, 1e-4, "0.1 µm", "mm", "Error up to which a_min applies.", {1}},

@@ -23,8 +23,8 @@ constexpr ParamInfo kTable[] = {
     {"wz[].tool_fixed", "P-TOOL-00010", W, T::boolean, 0, 1, 0, 1, "—", "—", "Offsets act in machine-axis directions.", {1000}},
     {"wz[].log_ax_nr_spdl", "P-TOOL-00012", W, T::integer, 0, kU16, 0, 1, "—", "—", "Spindle that takes this tool's dynamic limits (0 = none).", {1000}},
     {"wz[].vb_min", "P-TOOL-00013", W, T::real, 0, 2000000000, 0, 1.0 / 6000.0, "0.001°/s", "rpm", "Lowest tool speed (endless rotation).", {1000}},
-    {"wz[].vb_max", "P-TOOL-00014", W, T::real, 0, 2000000000, 1, 1.0 / 6000.0, "0.001°/s", "rpm", "Highest tool speed.", {1000}},
-    {"wz[].a_max", "P-TOOL-00015", W, T::real, 0, 1000000000, 1, 1, "°/s²", "deg/s²", "Highest spindle acceleration with this tool.", {1000}},
+    {"wz[].vb_max", "P-TOOL-00014", W, T::real, 1, 2000000000, 1, 1.0 / 6000.0, "0.001°/s", "rpm", "Highest tool speed.", {1000}},
+    {"wz[].a_max", "P-TOOL-00015", W, T::real, 1, 1000000000, 1, 1, "°/s²", "deg/s²", "Highest spindle acceleration with this tool.", {1000}},
     // ---- zero-offset list ------------------------------------------------------
     {"g53_verfuegbar", "P-ZERO-00001", Z, T::boolean, 0, 1, 0, 1, "—", "—", "Group 0 (G53) is a usable offset instead of 'no offset'."},
     {"default_index", "P-ZERO-00002", Z, T::integer, 0, 96, 0, 1, "—", "—", "Group active after start (0 = G53, 1 = G54 ...)."},

@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "nck/config/drive_feedback.hpp"
+
 namespace nck::prep {
 
 SpindleLimitCheck::SpindleLimitCheck(const config::Machine& m, std::size_t ch,
@@ -62,12 +64,24 @@ void SpindleLimitCheck::check(const PlannedCommand& c, std::vector<Diagnostic>& 
         if (s->rotating)
           if (auto d = speed_check(*s, a.rpm, c.head.line)) out.push_back(*d);
         break;
-      case SpindleOp::stop:
-      case SpindleOp::position:
-      case SpindleOp::home: s->rotating = false; break;
+      case SpindleOp::stop: s->rotating = false; break;
+      case SpindleOp::position:  // M19, S.POS, G331's start
+      case SpindleOp::home:      // G74
+        s->rotating = false;
+        if (auto d = position_check(*s, a.op, c.head.line)) out.push_back(*d);
+        break;
       default: break;
     }
   }
+}
+
+// SpindleAxis::position / home refuse a spindle that does not know its position.
+std::optional<Diagnostic> SpindleLimitCheck::position_check(const Tracked& s, kernel::SpindleOp op,
+                                                            std::uint32_t line) const {
+  if (!s.axis || config::knows_position(*s.axis)) return std::nullopt;
+  return make_diagnostic(ErrorId::SpindleSensorlessPositioning, {"", line, 0},
+                         fmt::format("{} cannot {}: it is speed-controlled without position feedback", s.channel->name,
+                                     op == kernel::SpindleOp::home ? "home (G74)" : "position (M19)"));
 }
 
 std::optional<Diagnostic> SpindleLimitCheck::speed_check(const Tracked& s, double rpm, std::uint32_t line) const {

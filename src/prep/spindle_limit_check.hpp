@@ -5,7 +5,8 @@
 // warns 950007 when it does. Without a kernel, the check follows the
 // spindle actions of the planned commands — gear stage, tool data, rotation
 // — and gives the same warning, with the speed and the maximum, at the block
-// that commands the speed.
+// that commands the speed. A spindle that cannot position (config::
+// knows_position) is error 70252 at an M19 or G74, as in the run.
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -37,6 +38,7 @@ class SpindleLimitCheck {
   };
   Tracked* find(std::int8_t kernel);
   std::optional<Diagnostic> speed_check(const Tracked& s, double rpm, std::uint32_t line) const;
+  std::optional<Diagnostic> position_check(const Tracked& s, kernel::SpindleOp op, std::uint32_t line) const;
 
   std::vector<Tracked> spindles_;
 };

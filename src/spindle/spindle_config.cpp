@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "nck/config/drive_feedback.hpp"
+
 namespace nck::spindle {
 
 GearConfig GearConfig::from(const config::GearStage& g) noexcept {
@@ -66,10 +68,7 @@ SpindleConfig SpindleConfig::from(const config::AxisConfig* axis, const config::
   c.speed_reached_tolerance_permille = axis->speed_reached_tolerance_permille;
   c.keep_running_on_reset = axis->no_stop_by_channel_reset;
   c.open_loop = axis->is_speed_controlled();
-  // Of the open-loop modes only the one with position feedback knows where
-  // the spindle is; the others (and the seed's sensorless example) cannot
-  // position or home.
-  c.can_position = !c.open_loop || axis->drive_mode == config::DriveMode::open_loop_pos_feedback;
+  c.can_position = config::knows_position(*axis);
   // Neither position nor speed feedback: the speed acknowledgement comes
   // from the interpolator's own command value (FCT-S1 2.2.4, case 3).
   c.sensorless = c.open_loop && !c.can_position && axis->drive_mode != config::DriveMode::open_loop_vel_feedback;

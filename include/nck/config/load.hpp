@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "nck/config/machine.hpp"
+#include "nck/config/parameter_registry.hpp"
 #include "nck/core/diagnostic.hpp"
 
 namespace nck::config {
@@ -13,8 +14,16 @@ struct LoadResult {
   bool ok() const { return machine.has_value() && !diagnostics.has_errors(); }
 };
 
+struct LoadOptions {
+  KeyPolicy keys = KeyPolicy::lenient;  // --strict: every unknown key is an error (910032)
+  // `nck check`: also warn of what the machine cannot do whatever a program
+  // asks, e.g. a spindle that cannot position or home (70252). The run
+  // reports such a thing when a program asks for it.
+  bool capability_warnings = false;
+};
+
 // Reads startup.lis in `folder` and every list it names, converts units,
 // runs all plausibility checks (docs/errors.md). Never throws on bad input.
-LoadResult load_machine(const std::filesystem::path& folder);
+LoadResult load_machine(const std::filesystem::path& folder, const LoadOptions& options = {});
 
 }  // namespace nck::config

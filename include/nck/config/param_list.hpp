@@ -33,8 +33,10 @@ class ParamList {
   ParamList() = default;
   ParamList(ListKind kind, std::string file) : kind_(kind), file_(std::move(file)) {}
 
-  // Checks every line of `text` against the registry for `kind`.
-  static ParamList parse(const ListText& text, ListKind kind, Diagnostics& diags);
+  // Checks every line of `text` against the registry for `kind`; `keys`:
+  // how a key that is neither known nor misspelt is reported.
+  static ParamList parse(const ListText& text, ListKind kind, Diagnostics& diags,
+                         KeyPolicy keys = KeyPolicy::lenient);
 
   // Entries of `defaults` that this list does not set are taken over.
   void take_defaults_from(const ParamList& defaults);

@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace nck::config {
 
@@ -58,11 +59,30 @@ struct KeyRewrite {
 };
 // nullopt when `key` (lower case, concrete) is no known alias of `list`.
 std::optional<KeyRewrite> rewrite_alias(ListKind list, std::string_view key);
+// The other spellings of p's key that rewrite_alias accepts, as patterns
+// ("spindle[].log_achs_no", "spindel[].log_achs_no" ... for spindel[].log_achs_nr).
+std::vector<std::string> alias_patterns(const ParamInfo& p);
+// The accepted seed spellings in one markdown line ("`spindle[…` for `spindel[…`, ...").
+std::string alias_summary();
+
+// How a key that is neither known nor an alias is reported (docs/cli.md, --strict).
+enum class KeyPolicy : std::uint8_t {
+  lenient,  // warning 910002, no effect: lists written for TF5200 carry keys nck does not model
+  strict,   // error 910032
+};
+// The known key an unknown `key` (lower case, concrete) misspells, as a
+// concrete key with key's indices: within edit distance 2 of a known key or
+// of one of its alias_patterns, with the same number of indices, not a
+// numbered sibling (only digits differ: m3_synch / m6_synch, swe_pos /
+// swe_pos_2) and not a short name (under 3 letters: kv, id). nullopt otherwise.
+std::optional<std::string> misspelt_key(ListKind list, std::string_view key);
 
 // Symbol value for the symbol types (sync, achstyp, decoder_fct); nullopt if unknown.
 std::optional<std::uint32_t> symbol_value(ParamType type, std::string_view name);
 
 // docs/parameters.md: one markdown table per list.
 std::string parameters_markdown();
+// A key pattern as docs/parameters.md shows it: "spindel[].range_table[]" -> "spindel[i].range_table[j]".
+std::string display_key(std::string_view pattern);
 
 }  // namespace nck::config

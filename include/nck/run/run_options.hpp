@@ -30,6 +30,7 @@ struct RunOptions {
   bool prep_thread = false;  // preparation in a thread of its own
   bool progress = true;       // on a terminal only
   std::vector<std::string> cycles;  // --cycles DIR: searched after startup.lis cycle_path[i]
+  bool strict_keys = false;         // --strict: every unknown list key is an error (910032)
   // --start-mode: P-CHAN-00508 condition of this run; empty: ISG_STANDARD,
   // or SV with a block search
   std::string start_mode;

@@ -43,7 +43,7 @@ TEST(CliPoints, CheckPrintsDiagnosticsOnStderrOnly) {
 // A warning the kernel raises (970004: #CS OFF without a CS) is printed like
 // an error, with its location; list warnings count in the summary.
 TEST(CliPoints, EveryWarningReachesStderrAndTheSummary) {
-  const auto m = patched_example("mill", "warn_stderr", "tools.lis", "wz[9].radiuss 5");
+  const auto m = patched_example("mill", "warn_stderr", "tools.lis", "wz[9].standzeit 5");
   std::ofstream(m.dir / "p.nc") << "N10 G17 G0 X0 Y0\nN20 #CS OFF\nN30 G0 X1\nM30\n";
   const CliResult r = run_nck_raw("run " + m.dir.string() + " " + (m.dir / "p.nc").string() + " --no-progress 2>&1 >/dev/null");
   EXPECT_EQ(r.exit_code, 0) << r.output;

@@ -88,7 +88,7 @@ TEST(CheckCommand, WarningsAloneExitZero) {
 }
 
 TEST(CheckCommand, UnknownKeyNamesTheNearestKnownKey) {
-  const auto [dir, line] = patched_example("mill", "check_unknown", "x.lis", "getriebe[0].dynamik.vb_maks 1000");
+  const auto [dir, line] = patched_example("mill", "check_unknown", "x.lis", "getriebe[0].dynamik.vb_max_cmd 1000");
   CliResult r = run_nck("check " + dir.string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("x.lis:" + std::to_string(line) + ": warning 910002"), std::string::npos)

@@ -219,13 +219,14 @@ TEST(Checks, SpindleKnownToTwoChannelsIsFine) {
   expect_one(f, f.load(), {ErrorId::ConfigAxisNrDuplicate, "ch2.lis", 2});
 }
 
-TEST(Checks, UnknownKeyInAxisListHasFileAndLine) {
+TEST(Checks, MisspeltKeyInAxisListHasFileAndLine) {
   MachineFolder f;
   f.append("x.lis", "getriebe[0].dynamik.vb_mx 1000\n");
   auto r = f.load();
-  expect_one(f, r, {ErrorId::ConfigUnknownKey, "x.lis", 3});
-  EXPECT_NE(with_id(r.diagnostics, ErrorId::ConfigUnknownKey)[0].message.find("getriebe[0].dynamik.vb_max"),
+  expect_one(f, r, {ErrorId::ConfigKeyTypo, "x.lis", 3});
+  EXPECT_NE(with_id(r.diagnostics, ErrorId::ConfigKeyTypo)[0].message.find("getriebe[0].dynamik.vb_max"),
             std::string::npos);
+  EXPECT_FALSE(r.ok());
 }
 
 TEST(Checks, LinkPairMustNameChannelSpindles) {

@@ -78,13 +78,13 @@ TEST(ParamList, SeedAnnotationsAfterNumbersAreIgnored) {
   EXPECT_DOUBLE_EQ(l.num("spindel[0].range_table[0].min_speed", 0), 50.0);
 }
 
-TEST(ParamList, UnknownKeyNamesNearestKnownKey) {
+TEST(ParamList, MisspeltKeyIsAnErrorNamingTheKeyItMeans) {
   Diagnostics d;
   parse("kopf.achs_nr 1\nkenngr.achs_tpy 4\n", ListKind::axis, d);
   ASSERT_EQ(d.items().size(), 1u);
   const auto& x = d.items()[0];
-  EXPECT_EQ(x.id, ErrorId::ConfigUnknownKey);
-  EXPECT_EQ(x.severity, Severity::warning);
+  EXPECT_EQ(x.id, ErrorId::ConfigKeyTypo);
+  EXPECT_EQ(x.severity, Severity::error);
   EXPECT_EQ(x.loc.file, "t.lis");
   EXPECT_EQ(x.loc.line, 2u);
   EXPECT_NE(x.message.find("kenngr.achs_typ"), std::string::npos) << x.message;
@@ -93,6 +93,24 @@ TEST(ParamList, UnknownKeyNamesNearestKnownKey) {
   parse("spindel[3].bezeichnug S4\n", ListKind::channel, d2);
   ASSERT_EQ(d2.items().size(), 1u);
   EXPECT_NE(d2.items()[0].message.find("'spindel[3].bezeichnung'"), std::string::npos) << d2.items()[0].message;
+}
+
+TEST(ParamList, UnknownKeyNamesNearestKnownKey) {
+  Diagnostics d;
+  parse("kopf.achs_nr 1\nkenngr.achs_typ_ext 4\n", ListKind::axis, d);
+  ASSERT_EQ(d.items().size(), 1u);
+  const auto& x = d.items()[0];
+  EXPECT_EQ(x.id, ErrorId::ConfigUnknownKey);
+  EXPECT_EQ(x.severity, Severity::warning);
+  EXPECT_EQ(x.loc.line, 2u);
+  EXPECT_NE(x.message.find("no effect; nearest known key: 'kenngr.achs_typ'"), std::string::npos) << x.message;
+
+  Diagnostics strict;
+  ParamList::parse(read_list_text("kenngr.achs_typ_ext 4\n", "t.lis", strict), ListKind::axis, strict,
+                   KeyPolicy::strict);
+  ASSERT_EQ(strict.items().size(), 1u);
+  EXPECT_EQ(strict.items()[0].id, ErrorId::ConfigUnknownKeyStrict);
+  EXPECT_EQ(strict.items()[0].severity, Severity::error);
 }
 
 TEST(ParamList, WrongTypeAndOutOfRange) {

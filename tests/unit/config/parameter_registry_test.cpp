@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 #include <set>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace nck::config {
 namespace {
@@ -75,6 +77,36 @@ TEST(ParameterRegistry, SymbolValuesOfFactsSheetB0) {
 TEST(ParameterRegistry, NearestKey) {
   EXPECT_EQ(nearest_key(ListKind::channel, "spindel[].log_achs_no"), "spindel[].log_achs_nr");
   EXPECT_EQ(nearest_key(ListKind::startup, "cycle_time"), "cycle_time_us");
+}
+
+// Issue 44 item 13: what is taken for a misspelling (docs/decisions.md).
+TEST(ParameterRegistry, MisspeltKeys) {
+  EXPECT_EQ(misspelt_key(ListKind::axis, "kenngr.swe_poss"), "kenngr.swe_pos");
+  EXPECT_EQ(misspelt_key(ListKind::axis, "getriebe[3].dynamik.vb_mx"), "getriebe[3].dynamik.vb_max");
+  // Near a seed spelling or short form: the key it stands for, with the key's indices.
+  EXPECT_EQ(misspelt_key(ListKind::channel, "spindle[2].log_achs_nn"), "spindel[2].log_achs_nr");
+  EXPECT_EQ(misspelt_key(ListKind::axis, "beschl_kennlinie.a_konts"), "getriebe[0].beschl_kennlinie.a_konst");
+  EXPECT_EQ(misspelt_key(ListKind::axis, "achs_tpy"), "kenngr.achs_typ");
+  // Not misspellings: far from every key, only numbers differ (m6_synch is
+  // also 2 from s_synch), other indices, a name of two letters.
+  EXPECT_EQ(misspelt_key(ListKind::axis, "kenngr.abs_pos_gueltig"), std::nullopt);
+  EXPECT_EQ(misspelt_key(ListKind::channel, "spindel[0].m6_synch"), std::nullopt);
+  EXPECT_EQ(misspelt_key(ListKind::axis, "kenngr.swe_pos_2"), std::nullopt);
+  EXPECT_EQ(misspelt_key(ListKind::tool, "wz[1].ax_versatz"), std::nullopt);
+  EXPECT_EQ(misspelt_key(ListKind::axis, "getriebe[0].kw"), std::nullopt);
+}
+
+TEST(ParameterRegistry, AliasPatternsAreEverySpellingThatResolves) {
+  const ParamInfo* p = find_parameter(ListKind::channel, "spindel[].log_achs_nr");
+  ASSERT_NE(p, nullptr);
+  const std::vector<std::string> aliases = alias_patterns(*p);
+  EXPECT_EQ(std::set<std::string>(aliases.begin(), aliases.end()),
+            (std::set<std::string>{"spindle[].log_achs_nr", "spindel[].log_achs_no", "spindle[].log_achs_no"}));
+  for (std::string a : aliases) {
+    a.replace(a.find("[]"), 2, "[1]");
+    EXPECT_TRUE(rewrite_alias(ListKind::channel, a)) << a;
+  }
+  EXPECT_TRUE(alias_patterns(*find_parameter(ListKind::channel, "gruppe[].achse[].log_achs_nr")).empty());
 }
 
 }  // namespace
