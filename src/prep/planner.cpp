@@ -31,7 +31,7 @@ Planner::Planner(const config::Machine& machine, std::size_t channel_index, Plan
       cax_(machine, channel_, n_axes_, spindles),
       axes_(machine, channel_, n_axes_, cax_.c_axis(), cax_.c_axis_list()),
       corner_(axes_, machine.cycle_time_us),
-      weights_(n_axes_),
+      weights_(axes_),
       spindles_(machine, channel_index, std::vector<int>(spindles.begin(), spindles.end())),
       feed_(channel_, spindles),
       diameter_(machine, channel_, n_axes_),
@@ -96,7 +96,7 @@ PlanResult Planner::plan_one(const nc::Block& b, PlannedCommand& c, PlanContext&
 // The block's functions, unit after unit.
 PlanResult Planner::plan_technologies(const nc::Block& b, PlannedCommand& c, PlanContext& ctx) {
   if (auto r = diameter_.check(b, c, ctx); !r) return r;
-  if (auto r = apply_weights(b); !r) return r;
+  apply_weights(b, c);
   if (auto r = apply_frames(b, c); !r) return r;
   modal_.zero_offset = frames_.zero_index();  // what is in force, for --final
   if (auto r = measure_.apply_offset(b, c, ctx); !r) return r;
@@ -118,17 +118,17 @@ PlanResult Planner::plan_technologies(const nc::Block& b, PlannedCommand& c, Pla
   return {};
 }
 
-// G130...G134, G233 and #SLOPE DEFAULT: the weightings in force, and the
-// corner rule's kink budgets with the weighted accelerations.
-PlanResult Planner::apply_weights(const nc::Block& b) {
+// G130...G134, G233 and #SLOPE DEFAULT: the weightings in force (the
+// values they limit warned at c), and the corner rule's kink budgets with
+// the weighted accelerations.
+void Planner::apply_weights(const nc::Block& b, PlannedCommand& c) {
   constexpr nc::GCodeSet kWeighting{nc::GCode::g130, nc::GCode::g131, nc::GCode::g132,
                                     nc::GCode::g133, nc::GCode::g134, nc::GCode::g233};
-  if (!b.slope_default && !b.g_nonmodal.has_any(kWeighting)) return {};
-  if (auto r = weights_.apply(b, axes_, channel_); !r) return r;
+  if (!b.slope_default && !b.g_nonmodal.has_any(kWeighting)) return;
+  add_warnings(c, weights_.apply(b, axes_, channel_), store_);
   AxisDynamicsArray feed = axes_.dynamics(false);
   weights_.weigh(feed, false);
   corner_.set_feed_dynamics(axes_, feed);
-  return {};
 }
 
 // Runs the block's offset functions.

@@ -94,7 +94,7 @@ class Planner final : public nc::KernelStateReader {
   PlanResult plan_one(const nc::Block& b, PlannedCommand& c, PlanContext& ctx);
   PlanResult plan_technologies(const nc::Block& b, PlannedCommand& c, PlanContext& ctx);
   PlanResult apply_frames(const nc::Block& b, PlannedCommand& c);
-  PlanResult apply_weights(const nc::Block& b);
+  void apply_weights(const nc::Block& b, PlannedCommand& c);
   PlanResult plan_execution(const nc::Block& b, PlannedCommand& c, PlanContext& ctx);
   PlanResult plan_motion(const nc::Block& b, PlannedCommand& c, PlanContext& ctx);
   PlanResult plan_arc(const nc::Block& b, PlannedCommand& c, const motion::AxisVector& target, frames::SuppressMask mask,

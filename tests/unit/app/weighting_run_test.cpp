@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cli_helpers.hpp"
+#include "spindle_path_helpers.hpp"
 
 namespace nck::app {
 namespace {
@@ -60,6 +60,44 @@ TEST(WeightingRun, WeightedAccelerationAndRampTimesBoundTheProfile) {
   EXPECT_GT(plain.a, 2400);
   EXPECT_LE(plain.j, 50000 * (1 + 1e-6));
   EXPECT_GT(plain.j, 40000);
+}
+
+// Issue 44 item 4: G131=300 asks X/Y for 7,500 mm/s^2 and Z for 6,000.
+// TF5200 limits each weighted value to a_w_max (here X: 2,800 set in the
+// list; Y, Z: a_max 3,000 and 2,500), warns 120033 at the weighting and runs
+// on (nck before aborted with 930800). The axes accelerate with the limited
+// values, never beyond them.
+TEST(WeightingRun, AnAccelerationWeightingAboveAwMaxIsLimitedAndRunsOn) {
+  const auto m = patched_example("mill", "weighting-limited", "x.lis", "getriebe[0].dynamik.a_w_max 2800");
+  const PathRun r = run_text(m.dir.string(),
+                             "N10 G90 G0 X0 Y0 Z0\nN20 G131=300\nN30 G1 X100 F12000\nN40 Y50\nN50 Z-20\n"
+                             "N60 X0 Y0 Z0\nN70 M30\n",
+                             "weighting-limited-run");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  const auto warnings = r.of("warning");
+  ASSERT_EQ(warnings.size(), 4u) << r.cli.output;  // X, Y, Z and S1's C axis (24,000 deg/s^2) at N20
+  for (const json& w : warnings) {
+    EXPECT_EQ(w["id"], 120033);
+    EXPECT_EQ(w["line"], 2);
+  }
+  EXPECT_NE(r.cli.output.find("axis X: a_beschl 2500 at 300 % is 7500, above a_w_max 2800: 2800 used"),
+            std::string::npos) << r.cli.output;
+  EXPECT_GT(r.line_t(7), 0);  // N70 M30 is reached
+  ASSERT_EQ(r.of("end").size(), 1u);
+  EXPECT_EQ(r.of("end")[0]["reason"], "M30");
+  const double a_w_max[] = {2800, 3000, 2500};
+  const char* axes[] = {"X", "Y", "Z"};
+  ASSERT_GE(r.line_t(3), 0);
+  double peak[3] = {};
+  // From the weighted moves on (N10's G0 accelerates with a_grenz).
+  for (std::size_t i = r.index(r.line_t(3)) + 2; i < r.rows.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      auto p = [&](std::size_t row) { return r.rows[row].at(axes[k]); };
+      const double a = (p(i) - 2 * p(i - 1) + p(i - 2)) / (kDt * kDt);
+      ASSERT_LE(std::abs(a), a_w_max[k] + 3.0) << axes[k] << " at " << r.rows[i].at("t");  // + the trace's digits
+      peak[k] = std::max(peak[k], std::abs(a));
+    }
+  for (int k = 0; k < 3; ++k) EXPECT_GT(peak[k], 0.9 * a_w_max[k]) << axes[k];  // the limited value is used
 }
 
 }  // namespace

@@ -1,10 +1,13 @@
 // G130...G134, G233 in preparation on examples/mill (X/Y: a_beschl = a_brems
 // 2500, a_max 3000; Z: 2000, a_max 2500; every axis the TF5200 ramp times:
 // 50 ms feed, 10 ms tr_geom and tr_grenz, tr_min 10 ms, no a_w_max /
-// tr_w_min, so a_max and tr_min bound the weightings). Lines along one
-// axis show that axis's weighted values in the path limits.
+// tr_w_min, so a_max and tr_min bound the weightings; the channel's fourth
+// axis is S1's C axis, weighted and limited alike). Lines along one axis
+// show that axis's weighted values in the path limits. A weighted value
+// beyond its range is limited, with a warning at the block.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -24,6 +27,24 @@ struct Rig : testing::PlannerRig {
   Rig() : PlannerRig("mill") {}
 };
 
+// examples/mill with X: a_beschl 1000, a_brems 2000, a_w_max 2500 and
+// Y: tr_w_min 20 ms.
+const config::Machine& patched_mill() {
+  static const config::Machine m = [] {
+    config::Machine p = example_machine("mill");
+    auto stage = [&](std::size_t j) -> config::GearStage& {
+      config::AxisConfig& a = p.axes[static_cast<std::size_t>(p.channels[0].axes[j].axis_index)];
+      return a.gears[a.initial_gear_stage - 1];
+    };
+    stage(0).accel_mm_s2 = 1000;
+    stage(0).decel_mm_s2 = 2000;
+    stage(0).a_w_max_mm_s2 = 2500;
+    stage(1).tr_w_min_s = 0.020;
+    return p;
+  }();
+  return m;
+}
+
 // The command planned for program line `line`.
 const PlannedCommand& at_line(const std::vector<PlannedCommand>& cs, std::uint32_t line) {
   for (const PlannedCommand& c : cs)
@@ -40,9 +61,18 @@ void expect_ramps(const motion::PathLimits& l, double tr_s, std::uint32_t line) 
   EXPECT_DOUBLE_EQ(l.tr.dec_down_s, tr_s) << "line " << line;
 }
 
-void expect_error(const PlannedCommand& c, ErrorId id) {
-  EXPECT_EQ(c.kind, CommandKind::error) << "line " << c.head.line;
-  EXPECT_EQ(test::error_of(c).id, id) << "line " << c.head.line;
+// The IDs of the warnings c raises, in order.
+std::vector<ErrorId> warning_ids(const PlannedCommand& c) {
+  std::vector<ErrorId> ids;
+  for (const kernel::Warning& w : test::attached<kernel::Warning>(c)) ids.push_back(w.id);
+  return ids;
+}
+
+// The text of c's first warning with `id` ("" when none).
+std::string warning_text(const PlannedCommand& c, const PlanStore& store, ErrorId id) {
+  for (const kernel::Warning& w : test::attached<kernel::Warning>(c))
+    if (w.id == id && w.message) return store.messages[*w.message];
+  return "";
 }
 
 TEST(DynWeights, G131WeightsTheConfiguredAccelerationNotThePreviousWeighting) {
@@ -70,10 +100,35 @@ TEST(DynWeights, G130SetsTheAxesItDoesNotNameBackTo100Percent) {
 
 TEST(DynWeights, AccelerationMayBeRaisedUpToAwMax) {
   Rig r;
-  const auto c = r.plan("G0 X0 Y0 Z0\nG130 X120 Z125\nG1 X10 F3000\nZ-10\nG130 X121\nX20\nM30\n");
+  const auto c = r.plan("G0 X0 Y0 Z0\nG130 X120 Z125\nG1 X10 F3000\nZ-10\nM30\n");
+  EXPECT_TRUE(warning_ids(at_line(c, 2)).empty());
   EXPECT_DOUBLE_EQ(at_line(c, 3).limits.a_acc_mm_s2, 3000);  // 2500 * 1.2 = a_max
   EXPECT_DOUBLE_EQ(at_line(c, 4).limits.a_acc_mm_s2, 2500);  // 2000 * 1.25 = a_max
-  expect_error(at_line(c, 5), ErrorId::KernelWeightedAcceleration);
+}
+
+TEST(DynWeights, AccelerationAboveAwMaxIsLimitedAndWarnedAtTheWeightingOnly) {
+  Rig r;
+  const auto c = r.plan("G0 X0 Y0 Z0\nG130 X121 Z50\nG1 X10 F3000\nZ-10\nG133=50\nX20\nM30\n");
+  EXPECT_EQ(at_line(c, 2).kind, CommandKind::nop);
+  EXPECT_EQ(warning_ids(at_line(c, 2)), std::vector<ErrorId>{ErrorId::KernelWeightAccLimited});  // X only
+  EXPECT_EQ(warning_text(at_line(c, 2), r.store, ErrorId::KernelWeightAccLimited),
+            "axis X: a_beschl 2500 at 121 % is 3025, above a_w_max 3000: 3000 used; "
+            "a_brems 2500 at 121 % is 3025, above a_w_max 3000: 3000 used");
+  EXPECT_DOUBLE_EQ(at_line(c, 3).limits.a_acc_mm_s2, 3000);
+  EXPECT_DOUBLE_EQ(at_line(c, 3).limits.a_dec_mm_s2, 3000);
+  EXPECT_DOUBLE_EQ(at_line(c, 4).limits.a_acc_mm_s2, 1000);  // Z's 50 % stays in force
+  for (std::uint32_t line : {3u, 4u, 5u, 6u}) EXPECT_TRUE(warning_ids(at_line(c, line)).empty()) << line;
+  EXPECT_DOUBLE_EQ(at_line(c, 6).limits.a_acc_mm_s2, 3000);  // G133 leaves G130 in force
+}
+
+TEST(DynWeights, AccelerationAndDecelerationAreLimitedEachOnItsOwn) {
+  testing::PlannerRig r(patched_mill());
+  const auto c = r.plan("G0 X0 Y0 Z0\nG130 X200\nG1 X10 F3000\nM30\n");
+  EXPECT_EQ(warning_ids(at_line(c, 2)), std::vector<ErrorId>{ErrorId::KernelWeightAccLimited});
+  EXPECT_EQ(warning_text(at_line(c, 2), r.store, ErrorId::KernelWeightAccLimited),
+            "axis X: a_brems 2000 at 200 % is 4000, above a_w_max 2500: 2500 used");
+  EXPECT_DOUBLE_EQ(at_line(c, 3).limits.a_acc_mm_s2, 2000);  // 1000 * 2: within a_w_max
+  EXPECT_DOUBLE_EQ(at_line(c, 3).limits.a_dec_mm_s2, 2500);  // not 4000
 }
 
 TEST(DynWeights, AccelerationWeightingActsUnderStepAndOnFeedOnly) {
@@ -96,14 +151,40 @@ TEST(DynWeights, G133AndG132WeightTheFeedRampTimes) {
   expect_ramps(at_line(c, 12).limits, 0.010, 12);  // G0 keeps tr_grenz
 }
 
-TEST(DynWeights, RampWeightingsBelowTheirFloorAreRefused) {
+TEST(DynWeights, FeedRampsBelowTrWMinAreLimitedToIt) {
   Rig r;
-  const auto c = r.plan("G0 X0 Y0 Z0\nG133=19\nG132 Y19.9\nG134=99\nG233=99\nG133=1000\nG134=150\nG233=200\nM30\n");
-  expect_error(at_line(c, 2), ErrorId::KernelWeightedRampTime);  // 9.5 ms < tr_w_min = tr_min 10 ms
-  expect_error(at_line(c, 3), ErrorId::KernelWeightedRampTime);
-  expect_error(at_line(c, 4), ErrorId::KernelWeightedRampTime);  // tr_geom 9.9 ms
-  expect_error(at_line(c, 5), ErrorId::KernelWeightedRampTime);  // tr_grenz 9.9 ms
-  for (std::uint32_t ok : {6u, 7u, 8u}) EXPECT_EQ(at_line(c, ok).kind, CommandKind::nop) << ok;
+  const auto c = r.plan("G0 X0 Y0 Z0\n#SLOPE [TYPE=TRAPEZ]\nG132 Y19\nG1 Y10 F3000\nX10\nM30\n");
+  // 50 ms * 19 % = 9.5 ms < tr_w_min = tr_min 10 ms: P-AXIS-00197 has an ID of its own.
+  EXPECT_EQ(at_line(c, 3).kind, CommandKind::nop);
+  EXPECT_EQ(warning_ids(at_line(c, 3)),
+            (std::vector<ErrorId>{ErrorId::KernelWeightRampBelowMin, ErrorId::KernelWeightDecDownBelowMin}));
+  EXPECT_EQ(warning_text(at_line(c, 3), r.store, ErrorId::KernelWeightDecDownBelowMin),
+            "axis Y: tr_brems_ab 0.05 s at 19 % is 0.0095 s, below tr_w_min 0.01 s: 0.01 s used");
+  expect_ramps(at_line(c, 4).limits, 0.010, 4);
+  expect_ramps(at_line(c, 5).limits, 0.050, 5);
+  testing::PlannerRig p(patched_mill());  // Y: tr_w_min 20 ms
+  const auto d = p.plan("G0 X0 Y0 Z0\n#SLOPE [TYPE=TRAPEZ]\nG132 Y30\nG1 Y10 F3000\nM30\n");
+  EXPECT_EQ(warning_ids(at_line(d, 3)).size(), 2u);
+  expect_ramps(at_line(d, 4).limits, 0.020, 4);
+}
+
+TEST(DynWeights, RampWeightingsBeyondTheirRangeAreLimitedAndWarned) {
+  Rig r;
+  const auto c = r.plan("G0 X0 Y0 Z0\n#SLOPE [TYPE=TRAPEZ]\nG133=10000000\nG1 X10 F3000\nG133=100 G134=99\n"
+                        "G233=99\nG0 X20\nG233=100000000\nG233=150 G134=150\nM30\n");
+  using V = std::vector<ErrorId>;
+  const ErrorId above = ErrorId::KernelWeightRampAboveMax, geom = ErrorId::KernelWeightGeomRampLimited;
+  EXPECT_EQ(warning_ids(at_line(c, 3)), (V{above, above, above, above}));  // 5000 s: X, Y, Z and C
+  expect_ramps(at_line(c, 4).limits, 4294.967295, 4);
+  EXPECT_EQ(warning_ids(at_line(c, 5)), (V{geom, geom, geom, geom}));  // tr_geom 9.9 ms < tr_min
+  EXPECT_EQ(warning_text(at_line(c, 5), r.store, geom),
+            "axis X: tr_geom 0.01 s at 99 % is 0.0099 s, below tr_min 0.01 s: 0.01 s used");
+  const ErrorId rapid_low = ErrorId::KernelWeightRapidRampBelowMin;
+  EXPECT_EQ(warning_ids(at_line(c, 6)), (V{rapid_low, rapid_low, rapid_low, rapid_low}));
+  expect_ramps(at_line(c, 7).limits, 0.010, 7);  // tr_grenz 10 ms, not 9.9
+  const ErrorId rapid_high = ErrorId::KernelWeightRapidRampAboveMax;
+  EXPECT_EQ(warning_ids(at_line(c, 8)), (V{rapid_high, rapid_high, rapid_high, rapid_high}));
+  EXPECT_TRUE(warning_ids(at_line(c, 9)).empty());
 }
 
 TEST(DynWeights, G233WeightsTheRapidRampsAndG134TheGeometricOne) {

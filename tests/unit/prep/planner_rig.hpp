@@ -13,8 +13,10 @@ namespace nck::prep::testing {
 // text and plans every block in order, returning all commands.
 struct PlannerRig {
   explicit PlannerRig(const std::string& example, std::uint32_t clamp_index = 0)
-      : machine(example_machine(example)),
-        planner(machine, 0, store, PlannerOptions{clamp_index}, spindle_indices(machine)) {}
+      : PlannerRig(example_machine(example), clamp_index) {}
+  // m must outlive the rig.
+  explicit PlannerRig(const config::Machine& m, std::uint32_t clamp_index = 0)
+      : machine(m), planner(machine, 0, store, PlannerOptions{clamp_index}, spindle_indices(machine)) {}
 
   static std::vector<std::int8_t> spindle_indices(const config::Machine& m) {
     std::vector<std::int8_t> v;
