@@ -39,8 +39,8 @@ class Reader {
   }
   std::string command() const { return j_.value("command", std::string()); }
 
-  bool boolean(const char* key) {
-    const json* v = field(key);
+  bool boolean(const char* key, bool required = true) {
+    const json* v = required ? field(key) : optional_field(key);
     if (!v) return false;
     if (!v->is_boolean()) return fail(ErrorId::ApiBadValue, fmt::format("'{}' must be true or false", key));
     return v->get<bool>();
@@ -200,9 +200,10 @@ std::optional<sim::ActionPayload> operator_payload(const std::string& cmd, Reade
 bool other_command(const std::string& cmd, Reader& r, ApiCommand& out) {
   using K = ApiCommand::Kind;
   if (cmd == "mdi") {
-    r.only({"text"});
+    r.only({"text", "queue"});
     out.kind = K::mdi;
     out.text = r.text("text", kMaxMdiChars);
+    out.queue = r.boolean("queue", false);
     if (r.ok() && out.text.find_first_not_of(" \t") == std::string::npos) r.fail(ErrorId::ApiBadValue, "'text' is empty");
   } else if (cmd == "load") {
     r.only({"program", "start_at"});

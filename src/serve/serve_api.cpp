@@ -140,7 +140,7 @@ HttpReply ServeApi::act(const ApiCommand& c) {
       staged_ = std::move(*run);
       break;
     }
-    case K::mdi: return mdi(ch, c.text);
+    case K::mdi: return mdi(ch, c.text, c.queue);
     case K::action:
       return operate(sim::check_operator_action(sim::OperatorAction{c.action, {}}, machine_, diags, "api"), diags);
     case K::action_line: return operate(sim::parse_operator_action(c.line, machine_, diags, "api"), diags);
@@ -148,8 +148,9 @@ HttpReply ServeApi::act(const ApiCommand& c) {
   return ok_json(json{{"ok", true}});
 }
 
-HttpReply ServeApi::mdi(std::size_t ch, const std::string& text) {
-  if (auto d = serving_->mdi(ch, text, last_.channels[ch].program_state, SourceLoc{"api", 1, 0})) return error_reply(409, *d);
+HttpReply ServeApi::mdi(std::size_t ch, const std::string& text, bool queue) {
+  if (auto d = serving_->mdi(ch, text, last_.channels[ch].program_state, SourceLoc{"api", 1, 0}, queue))
+    return error_reply(409, *d);
   return ok_json(json{{"ok", true}});
 }
 
@@ -157,7 +158,7 @@ HttpReply ServeApi::mdi(std::size_t ch, const std::string& text) {
 HttpReply ServeApi::operate(const std::optional<sim::OperatorAction>& op, const Diagnostics& diags) {
   if (!op) return error_reply(400, diags.items().front());
   const std::size_t ch = op->action.channel - 1u;
-  if (op->action.kind() == sim::ActionKind::mdi) return mdi(ch, op->mdi_text);
+  if (op->action.kind() == sim::ActionKind::mdi) return mdi(ch, op->mdi_text, false);
   if (op->action.kind() == sim::ActionKind::cycle_start) return start_or_release(ch, op->action);
   return pass_on(op->action);
 }

@@ -151,7 +151,7 @@ void DryRun::submit_mdi() {
 // MDI is for an idle channel: before its program, after its end or a reset,
 // or while it runs the MDI text before (the texts queue up).
 std::optional<Diagnostic> DryRun::mdi(std::size_t ch, const std::string& text, kernel::ProgramState st,
-                                      const SourceLoc& loc) {
+                                      const SourceLoc& loc, bool queue) {
   braking_[ch] = braking_[ch] && !kernel_->channel_done(ch);
   if (braking_[ch])
     return make_diagnostic(ErrorId::KernelMdiRefused, loc,
@@ -162,6 +162,11 @@ std::optional<Diagnostic> DryRun::mdi(std::size_t ch, const std::string& text, k
   if (!idle && !in_mdi)
     return make_diagnostic(ErrorId::KernelMdiRefused, loc,
                            fmt::format("MDI '{}' refused: channel {} is {}", text, ch + 1, kernel::state_name(st)));
+  if (in_mdi && !queue)
+    return make_diagnostic(ErrorId::KernelMdiRefused, loc,
+                           fmt::format("MDI '{}' refused: channel {} runs an MDI text; ask to queue it "
+                                       "(\"queue\": true) to run it after that one",
+                                       text, ch + 1));
   preps_[ch].submit_mdi(text);
   if (prep_thread_) prep_thread_->wake();
   return std::nullopt;

@@ -140,6 +140,28 @@ async function clients(s) {
   await Promise.all(held);
 }
 
+// MDI while a text runs (issue 44 item 5): refused with 930710 unless the
+// request asks to queue it; the queued text runs after the first.
+async function mdiQueue(s) {
+  const first = await command(s, { command: "mdi", text: "G90 G1 X20 F1200" });
+  check("MDI on an idle channel -> 200", first.status === 200, `${first.status} ${first.body}`);
+  await sleep(100);
+  const refused = await command(s, { command: "mdi", text: "G1 Y5" });
+  check("MDI while a text runs -> 409 930710", refused.status === 409 && errorId(refused) === 930710,
+        `${refused.status} ${refused.body}`);
+  const queued = await command(s, { command: "mdi", text: "G90 G1 Y7 F1200", queue: true });
+  check("MDI with queue: true while a text runs -> 200", queued.status === 200, `${queued.status} ${queued.body}`);
+  const badQueue = await command(s, { command: "mdi", text: "G1 Y1", queue: "yes" });
+  check("queue must be true or false -> 400", badQueue.status === 400, `${badQueue.status}`);
+  let st = await state(s);
+  for (let i = 0; i < 100 && !(st.channels[0].state === "idle" && st.channels[0].mcs.Y === 7); ++i) {
+    await sleep(50);
+    st = await state(s);
+  }
+  check("the queued text ran after the first (X20 Y7), the refused one not", st.channels[0].mcs.X === 20 &&
+        st.channels[0].mcs.Y === 7, JSON.stringify(st.channels[0].mcs));
+}
+
 async function main() {
   fs.mkdirSync(path.join(out, "programs"), { recursive: true });
   fs.mkdirSync(path.join(out, "outside"), { recursive: true });
@@ -158,6 +180,7 @@ async function main() {
   }
   const fast = await startServer(["--rate", "100000"]);
   try {
+    await mdiQueue(fast);
     await malformed(fast);
   } finally {
     fast.proc.kill("SIGTERM");

@@ -37,6 +37,9 @@ struct ApiCommand {
   std::string program;
   std::string start_at;  // block-search mark, as nck run --start-at takes it
   bool on = false;
+  // mdi: queue the text behind one that runs (TF5200 "extended manual block
+  // mode", ADD_MDI_BLOCK); without it such a text is refused (930710).
+  bool queue = false;
   double speed = 1;
 };
 

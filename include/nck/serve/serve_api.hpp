@@ -44,7 +44,7 @@ class ServeApi : public ApiHandler {
  private:
   HttpReply command(std::string_view body);
   HttpReply act(const ApiCommand& c);
-  HttpReply mdi(std::size_t ch, const std::string& text);
+  HttpReply mdi(std::size_t ch, const std::string& text, bool queue);
   HttpReply operate(const std::optional<sim::OperatorAction>& op, const Diagnostics& diags);
   HttpReply pass_on(const sim::ScenarioAction& a);
   HttpReply start_or_release(std::size_t ch, const sim::ScenarioAction& cycle_start);

@@ -120,9 +120,11 @@ class DryRun {
   std::optional<Diagnostic> operate(const OperatorAction& op);
   // MDI text for channel ch (0-based) whose program state is `st`, or why
   // it is refused. Reads nothing the cycles write: a live kernel's server
-  // thread calls it with the state the kernel last published.
+  // thread calls it with the state the kernel last published. `queue`: a
+  // text typed while another runs waits for it (the scenario, Python);
+  // without it such a text is refused (nck serve unless asked).
   std::optional<Diagnostic> mdi(std::size_t ch, const std::string& text, kernel::ProgramState st,
-                                const SourceLoc& loc);
+                                const SourceLoc& loc, bool queue = true);
   // Every channel still running holds (M0/M1) and nothing will release it:
   // no automatic cycle start, no scenario line still to come.
   bool held_for_good() const noexcept;

@@ -80,6 +80,10 @@ TEST(ServeApiMessage, OtherCommandsCarryTheirFields) {
   ASSERT_TRUE(c);
   EXPECT_EQ(c->kind, ApiCommand::Kind::mdi);
   EXPECT_EQ(c->text, "G0 X10 #comment-free");  // '#' stays: MDI text is not a scenario line
+  EXPECT_FALSE(c->queue);  // refused while a text runs unless asked
+  c = parse(R"({"command":"mdi","text":"G0 X1","queue":true})", d);
+  ASSERT_TRUE(c);
+  EXPECT_TRUE(c->queue);
   c = parse(R"({"command":"load","program":"contour.nc","start_at":"N100","channel":2})", d);
   ASSERT_TRUE(c);
   EXPECT_EQ(c->kind, ApiCommand::Kind::load);
