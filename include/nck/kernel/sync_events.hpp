@@ -3,6 +3,7 @@
 // the PLC's external spindle commands): a function output to the PLC, its
 // acknowledgement, and the channel's waits. Each payload's JSON writer is
 // beside it (docs/outputs.md lists the fields).
+#include <climits>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -42,13 +43,17 @@ constexpr std::optional<std::int8_t> spindle_or_none(std::int8_t s) noexcept {
 }
 
 // A function output to the PLC (M, H, T, S).
+// No additional value (an int32 the decoder never yields: |value| < 2^31;
+// a sentinel, not std::optional, keeps the event at its size).
+inline constexpr std::int32_t kNoAddValue = INT32_MIN;
+
 struct PlcOut {
   plc::TechKind fn = plc::TechKind::m;
   std::int32_t number = 0;             // M3 -> 3; S: 0
   std::optional<std::int8_t> spindle;  // kernel spindle index
   double s_rpm = 0;                    // S: the programmed speed
   std::uint32_t sync = 0;              // synchronisation bits (config::sync)
-  std::optional<std::int32_t> add_value;  // M/H: the additional value (M52=-345)
+  std::int32_t add_value = kNoAddValue;  // M/H: the additional value (M52=-345)
 };
 
 // The PLC acknowledged a function.
@@ -73,7 +78,7 @@ template <class Json, class Names>
 void write_json(Json& j, const PlcOut& e, const EventHead&, const Names& names) {
   j["fn"] = plc::function_name(e.fn, e.number);
   j["spindle"] = names.spindle(e.spindle);
-  j["value"] = e.fn == plc::TechKind::s ? Json(e.s_rpm) : e.add_value ? Json(*e.add_value) : Json(nullptr);
+  j["value"] = e.fn == plc::TechKind::s ? Json(e.s_rpm) : e.add_value != kNoAddValue ? Json(e.add_value) : Json(nullptr);
   j["sync"] = plc::sync_name(e.sync);
 }
 

@@ -191,7 +191,7 @@ Fault SyncUnit::issue_output(const Output& o, Cycle& cy) noexcept {
   w.deadline_s = o.ack_timeout_s > 0 ? cy.t_s + o.ack_timeout_s : 0;
   w.handle = cy.machine.plc ? cy.machine.plc->submit(t, cy.sink) : plc::kNoHandle;
   if (w.handle == plc::kNoHandle) return {ErrorId::PlcOutputQueueFull};
-  cy.emit(ev::PlcOut{o.fn, o.number, std::nullopt, 0, o.sync, o.value});
+  cy.emit(ev::PlcOut{o.fn, o.number, std::nullopt, 0, o.sync, o.value.value_or(ev::kNoAddValue)});
   if (!add_wait(w, sync_point(o.sync).value_or(SyncPoint::none))) return {ErrorId::KernelWaitOverflow};
   return {};
 }

@@ -148,7 +148,10 @@ TEST(SpindleSlopeRun, CAxisFollowsTheChannelSlopeNotTheSlopeType) {
       j_max = std::max(j_max, std::fabs(j));
     }
     EXPECT_LE(j_max, 2'000'000 * (1 + 1e-6) + 10.0);
-    EXPECT_NEAR(*std::max_element(c.begin(), c.end()), 90, 1e-9);
+    // The reversal G1 C90 -> G0 C0 is passed at the kink speed the jerk of
+    // G1 allows (issue 44 item 2: 400,000 deg/s^3 * dt^2 / 2 = 0.2 deg/s):
+    // the set points straddle C90 within a cycle's travel.
+    EXPECT_NEAR(*std::max_element(c.begin(), c.end()), 90, 0.2 * kDt);
     if (c_ref.empty()) c_ref = c;
     EXPECT_EQ(c, c_ref);  // the spindle's slope_type changes nothing of it
   }
