@@ -13,13 +13,15 @@ The 6-decimal trace adds up to 2e-6 mm of rounding to a second difference
 a program under a jerk-limited slope (TRAPEZ, SIN2, HSC) also keeps every
 axis's jerk within pi/2 a_max / tr_min (the drive's bound; SIN2's peak
 is pi/2 times its mean), with 4,000 mm/s^3 for the rounding of a third
-difference.
+difference, up to the program's end (jogs and MDI after it are not under
+its #SLOPE).
 
   limits_property.py NCK SOURCE_DIR [--cases N] [--seed S] [--minutes M]
 
 A violation prints the program, the scenario and the cycle, and exits 1.
 """
 import argparse
+import json
 import math
 import pathlib
 import random
@@ -122,8 +124,8 @@ def trace_rows(path):
     return [[float(cells[cols[n]]) for n in ("t",) + AXES] for cells in (l.split(",") for l in lines[1:])]
 
 
-def violation(rows, limits, jerk):
-    """The first cycle that breaks a limit, as text, or None."""
+def violation(rows, limits, jerk_until_s):
+    """The first cycle that breaks a limit, as text, or None (the jerk only before jerk_until_s)."""
     for i in range(1, len(rows)):
         for k, axis in enumerate(AXES, start=1):
             vb, a_max, j_max = limits[axis]
@@ -134,7 +136,7 @@ def violation(rows, limits, jerk):
                 a = (rows[i][k] - 2 * rows[i - 1][k] + rows[i - 2][k]) / DT_S**2
                 if abs(a) > a_max + A_TOL_MM_S2:
                     return f"t={rows[i][0]:.3f} {axis} a={a:.1f} mm/s^2 > {a_max}"
-            if jerk and i >= 3:
+            if i >= 3 and rows[i][0] < jerk_until_s:
                 j = (rows[i][k] - 3 * rows[i - 1][k] + 3 * rows[i - 2][k] - rows[i - 3][k]) / DT_S**3
                 if abs(j) > j_max + J_TOL_MM_S3:
                     return f"t={rows[i][0]:.3f} {axis} j={j:.0f} mm/s^3 > {j_max:.0f}"
@@ -144,13 +146,24 @@ def violation(rows, limits, jerk):
 def check_one(nck, machine, limits, prog_text, plc_text, work, jerk):
     (work / "p.nc").write_text(prog_text)
     (work / "s.plc").write_text(plc_text)
-    trace = work / "t.csv"
+    trace, events = work / "t.csv", work / "e.jsonl"
     done = subprocess.run([nck, "run", str(machine), str(work / "p.nc"), "--plc", str(work / "s.plc"),
-                           "--trace", str(trace), "--max-time", "120"], capture_output=True, text=True, timeout=600)
+                           "--trace", str(trace), "--events", str(events), "--max-time", "120"],
+                          capture_output=True, text=True, timeout=600)
     if done.returncode not in (0, 1):
         return f"exit {done.returncode}: {done.stderr[-500:]}", 0
     rows = trace_rows(trace)
-    return violation(rows, limits, jerk and "TYPE=STEP" not in prog_text), len(rows)
+    jerk_until_s = program_end_s(events) if jerk and "TYPE=STEP" not in prog_text else -1.0
+    return violation(rows, limits, jerk_until_s), len(rows)
+
+
+def program_end_s(events):
+    """When the program ended (its first `end` event), or never."""
+    for line in events.read_text().splitlines():
+        e = json.loads(line)
+        if e.get("ev") == "end":
+            return e["t"]
+    return math.inf
 
 
 def main():
