@@ -113,8 +113,7 @@ bool check_spindle_m(const Words& w, BlockCtx& b, const ModalState& after) {
   const MWord* m19 = w.find_m(19);
   const MWord* gear = nullptr;
   for (const auto& m : w.m) {
-    const bool spindle_fn = m.code == 3 || m.code == 4 || m.code == 5 || m.code == 19 || (m.code >= 40 && m.code <= 45);
-    if (spindle_fn && m.value)
+    if (spindle_m_function(m.code) && m.value)
       return fail(b, ErrorId::NcMValueNotAllowed, m.pos,
                   fmt::format("M{}={}: the spindle function M{} takes no additional value", m.code, *m.value, m.code));
     if (m.code == 3 || m.code == 4 || m.code == 5) {

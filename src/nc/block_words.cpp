@@ -83,6 +83,16 @@ bool all_digits(std::string_view s) {
   return true;
 }
 
+// An M or H word (`letter`) into the block's list of its kind.
+bool add_function_word(BlockCtx& b, Words& w, char letter, double code, std::size_t pos,
+                       std::optional<std::int32_t> value = std::nullopt) {
+  auto& list = letter == 'M' ? w.m : w.h;
+  if (!list.push_back(MWord{static_cast<int>(code), static_cast<std::uint32_t>(pos), value}))
+    return b.x.err.fail(ErrorId::NcBadMFunction, pos, "too many M/H functions in one block");
+  ++w.word_count;
+  return true;
+}
+
 // M<n>=<value> / H<n>=<value> (TF5200 "M/H functions with additional
 // information"): an integer, written out or computed, that the PLC gets
 // with the function. `c` stands before the '='.
@@ -94,11 +104,7 @@ bool function_with_value(Cursor& c, BlockCtx& b, Words& w, const std::string& na
                         fmt::format("{}={:g}: the additional value must be an integer (32 bits)", name, v));
   const double code = std::stod(name.substr(1));
   if (code > 1e9) return b.x.err.fail(ErrorId::NcBadMFunction, pos, fmt::format("{} is malformed", name));
-  auto& list = name[0] == 'M' ? w.m : w.h;
-  if (!list.push_back(MWord{static_cast<int>(code), static_cast<std::uint32_t>(pos), static_cast<std::int32_t>(v)}))
-    return b.x.err.fail(ErrorId::NcBadMFunction, pos, "too many M/H functions in one block");
-  ++w.word_count;
-  return true;
+  return add_function_word(b, w, name[0], code, pos, static_cast<std::int32_t>(v));
 }
 
 // As many digits as a block number written out may have (15, decoder.cpp).
@@ -212,11 +218,7 @@ bool parse_letter_word(Cursor& c, BlockCtx& b, Words& w) {
       if (r < 0 || r > 1e9)
         return b.x.err.fail(ErrorId::NcBadMFunction, pos,
                             fmt::format("{}{} is malformed: the number must be an integer >= 0", a, v));
-      auto& list = a == 'M' ? w.m : w.h;
-      if (!list.push_back(MWord{static_cast<int>(r), static_cast<std::uint32_t>(pos)}))
-        return b.x.err.fail(ErrorId::NcBadMFunction, pos, "too many M/H functions in one block");
-      ++w.word_count;
-      return true;
+      return add_function_word(b, w, a, r, pos);
     }
     case 'F': case 'T': case 'D': case 'R': case 'I': case 'J': case 'K': {
       if (!word_value(c, b, v, a)) return false;

@@ -25,6 +25,11 @@ struct GWord {
   std::uint32_t pos = 0;
   double value = 0;  // G159=<value>, G131=/G133=/G134=/G233=<percent>
 };
+// M3/M4/M5/M19 and the gear stages M40..M45: the main spindle's DIN functions.
+constexpr bool spindle_m_function(int code) noexcept {
+  return code == 3 || code == 4 || code == 5 || code == 19 || (code >= 40 && code <= 45);
+}
+
 struct MWord {
   int code = 0;
   std::uint32_t pos = 0;

@@ -209,8 +209,7 @@ bool apply_words(Words& w, BlockCtx& b, ModalState& modal, Block& out) {
   }
   for (const auto& mw : w.m) {
     int c = mw.code;
-    bool spindle = c == 3 || c == 4 || c == 5 || c == 19 || (c >= 40 && c <= 45);
-    if (c == 17 || c == 29 || spindle) continue;
+    if (c == 17 || c == 29 || spindle_m_function(c)) continue;
     out.m.push_back(c);
     if (mw.value) out.m_values.push_back(FunctionValue{c, *mw.value});
     if (c == 0) out.stop = true;

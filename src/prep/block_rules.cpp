@@ -42,11 +42,9 @@ PlanResult undefined_m(const nc::Block& b, int m) {
                      fmt::format("M{} is not defined: the channel list has no m_synch[{}] (P-CHAN-00041)", m, m));
 }
 
-// Every M function of the block, in channel or spindle syntax, is one the
-// channel defines (TF5200: an unknown M function aborts decoding).
-PlanResult check_m_defined(const nc::Block& b, const config::ChannelConfig& channel) {
-  for (int m : b.m)
-    if (!is_fixed_m(m) && m_sync(channel, m) == config::sync::NOT_VALID) return undefined_m(b, m);
+// The user M functions in spindle syntax (S[M=63]) are ones the channel
+// defines too (TF5200: an unknown M function aborts decoding).
+PlanResult check_spindle_m_defined(const nc::Block& b, const config::ChannelConfig& channel) {
   for (const nc::SpindleCommand& s : b.spindles)
     for (int m : s.user_m)
       if (m_sync(channel, m) == config::sync::NOT_VALID) return undefined_m(b, m);
@@ -94,15 +92,16 @@ PlanResult check_plc_spindles(const nc::Block& b, const config::ChannelConfig& c
 
 PlanResult add_outputs(const nc::Block& b, PlannedCommand& c, const config::ChannelConfig& channel) {
   auto overflow = [&] { return block_error(ErrorId::KernelQueueOverflow, b, "more than 8 PLC outputs in one block"); };
-  if (auto r = check_m_defined(b, channel); !r) return r;
   for (int m : b.m) {
     if (is_fixed_m(m)) continue;
     const std::uint32_t sync = m_sync(channel, m);
+    if (sync == config::sync::NOT_VALID) return undefined_m(b, m);  // no m_synch entry: unknown
     // A channel M function with NO_SYNCH is not output (FCT-S1 2.5).
     if (sync == config::sync::NO_SYNCH) continue;
     if (!c.attach_within(kernel::Output{TechKind::m, m, sync, 0, nc::value_of(b.m_values, m)}, PlannedCommand::kMaxOutputs))
       return overflow();
   }
+  if (auto r = check_spindle_m_defined(b, channel); !r) return r;
   for (int h : b.h)
     if (!c.attach_within(kernel::Output{TechKind::h, h, config::sync::MOS, 0, nc::value_of(b.h_values, h)},
                          PlannedCommand::kMaxOutputs))

@@ -152,21 +152,16 @@ void DryRun::submit_mdi() {
 // or while it runs the MDI text before (the texts queue up).
 std::optional<Diagnostic> DryRun::mdi(std::size_t ch, const std::string& text, kernel::ProgramState st,
                                       const SourceLoc& loc, bool queue) {
+  auto refused = [&](std::string_view why) {
+    return make_diagnostic(ErrorId::KernelMdiRefused, loc, fmt::format("MDI '{}' refused: channel {} {}", text, ch + 1, why));
+  };
   braking_[ch] = braking_[ch] && !kernel_->channel_done(ch);
-  if (braking_[ch])
-    return make_diagnostic(ErrorId::KernelMdiRefused, loc,
-                           fmt::format("MDI '{}' refused: channel {} brakes after a reset", text, ch + 1));
+  if (braking_[ch]) return refused("brakes after a reset");
   const bool idle = st == kernel::ProgramState::idle || st == kernel::ProgramState::ended;
   // MDI was only ever taken once the program was over: running now is MDI.
   const bool in_mdi = preps_[ch].mdi_pending() || (preps_[ch].mdi_used() && st == kernel::ProgramState::running);
-  if (!idle && !in_mdi)
-    return make_diagnostic(ErrorId::KernelMdiRefused, loc,
-                           fmt::format("MDI '{}' refused: channel {} is {}", text, ch + 1, kernel::state_name(st)));
-  if (in_mdi && !queue)
-    return make_diagnostic(ErrorId::KernelMdiRefused, loc,
-                           fmt::format("MDI '{}' refused: channel {} runs an MDI text; ask to queue it "
-                                       "(\"queue\": true) to run it after that one",
-                                       text, ch + 1));
+  if (!idle && !in_mdi) return refused(fmt::format("is {}", kernel::state_name(st)));
+  if (in_mdi && !queue) return refused("runs an MDI text; ask to queue it (\"queue\": true) to run it after that one");
   preps_[ch].submit_mdi(text);
   if (prep_thread_) prep_thread_->wake();
   return std::nullopt;
