@@ -52,14 +52,16 @@ void PathProfile::replan_jerk(double target_mm_s, bool may_keep) noexcept {
   // Past the end only with a successor to go on braking in.
   JerkPlan next;
   const BlockPlanKind kind = plan_block(next, now, length_mm - s_mm_, target_mm_s, v_end, l, v_end > 0.0);
-  // A new target that a plan from here could only meet past the end: the
-  // plan in force meets the end speed (a plan that "just fits" cannot
-  // always be planned again from its own later states), and passing the
-  // end faster would break the corner's or the fillet's speed (an
-  // acceleration jump at a kink). It stays; the next segment takes the new
-  // target (a feedhold brakes on there, an override step rises there).
+  // A new target that a plan from here could only meet past the end (or
+  // with ramps shorter than the slope's, "forced"): the plan in force meets
+  // the end speed within the limits (a plan that "just fits" cannot always
+  // be planned again from its own later states: a new SIN2 ramp starts at
+  // jerk 0 where the ramp under way is at its peak), and passing the end
+  // faster would break the corner's or the fillet's speed (an acceleration
+  // jump at a kink). It stays; the next segment takes the new target (a
+  // feedhold brakes on there, an override step rises there).
   plan_target_mm_s_ = target_mm_s;
-  if (may_keep && !chain && kind == BlockPlanKind::overrun && plan_kind_ != BlockPlanKind::overrun) return;
+  if (may_keep && !chain && kind != BlockPlanKind::fits && plan_kind_ != BlockPlanKind::overrun) return;
   plan_ = next;
   plan_kind_ = kind;
   plan_s0_mm_ = s_mm_;

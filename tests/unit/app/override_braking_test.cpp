@@ -1,5 +1,5 @@
 // Braking for a lower target under a jerk-limited slope (issue 44, item 1,
-// found by tests/motion/limits_property.py): an override step to 0 on an
+// found by tests/motion/limits_property.py, with --jerk for the last test): an override step to 0 on an
 // arc that already brakes for the kink at its end passes the kink no faster
 // than planned. A new plan from the braking state could only meet the end
 // speed past the end, and passed the kink at 19.5 mm/s instead of its
@@ -7,7 +7,9 @@
 // target rises again (a stop released at once).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "spindle_path_helpers.hpp"
 
@@ -54,6 +56,34 @@ TEST(OverrideBraking, AStopReleasedAtOnceKeepsTheFilletSpeed) {
                              "stop_kink", "--plc " + plc.string());
   ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
   expect_within_a_max(r);
+}
+
+// The largest |third difference| of X over the rows before t_end_s.
+double largest_x_jerk(const PathRun& r, double t_end_s) {
+  double worst = 0;
+  for (std::size_t i = 3; i < r.rows.size() && r.rows[i].at("t") < t_end_s; ++i) {
+    const auto x = [&](std::size_t k) { return r.rows[k].at("X"); };
+    worst = std::max(worst, std::abs((x(i) - 3 * x(i - 1) + 3 * x(i - 2) - x(i - 3)) / (kDt * kDt * kDt)));
+  }
+  return worst;
+}
+
+// An NC stop released at once while a SIN2 G0 that brakes to a standstill
+// at its end ramps its acceleration down: a stop from there could only fit
+// with ramps shorter than tr_grenz (a new sin^2 ramp starts at jerk 0 where
+// the one under way is at its peak), so X reached 516,000 mm/s^3 against
+// the drive's pi/2 a_max / tr_min = 471,239. The plan in force stays.
+TEST(OverrideBraking, AStopReleasedAtOnceInASin2RampKeepsTheJerk) {
+  const auto plc = temp_dir("stop_sin2_plc") / "s.plc";
+  write(plc, "0.272 stop\n0.377 feedhold on\n0.737 feedhold off\n");
+  const PathRun r = run_text("mill",
+                             "N1 G90 G17 F20000\n#SLOPE [TYPE=SIN2]\nG1 X-0.144 Y0.571 Z0.654\n"
+                             "G1 X-0.225 Y0.581 Z0.812\nG0 X59.825 Y15.452 Z-21.503\nG1 X59.759 Y15.252 Z-21.353\nM30\n",
+                             "stop_sin2", "--plc " + plc.string());
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  expect_within_a_max(r);
+  const double bound = std::numbers::pi / 2 * 3000 / 0.010;  // X: a_max 3,000, tr_min 10 ms
+  EXPECT_LE(largest_x_jerk(r, r.of("end").at(0)["t"].get<double>()), bound + 4000);  // + the trace's digits
 }
 
 }  // namespace
