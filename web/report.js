@@ -71,6 +71,7 @@
       ["cycle time", hms(m.end_s) + " (" + m.end_s.toFixed(3) + " s simulated, NC cycle " + (m.cycle_s * 1000).toFixed(3) + " ms)"],
       ["errors / warnings", '<span class="' + (m.errors ? "err" : "") + '">' + m.errors + "</span> / <span class=\"" + (m.warnings ? "warn" : "") + '">' + m.warnings + "</span>"],
       ["waits", waits],
+      ["written by", "nck " + esc(m.nck || "")],
     ];
     $("summary").innerHTML = '<div class="kv">' + rows.map(([k, v]) => "<b>" + k + "</b><span>" + v + "</span>").join("") + "</div>";
   }

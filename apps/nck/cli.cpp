@@ -17,6 +17,7 @@
 #include "nck/config/machine.hpp"
 #include "nck/core/diagnostic.hpp"
 #include "nck/core/edit_distance.hpp"
+#include "nck/core/version.hpp"
 #include "nck/output/trace_columns.hpp"
 #include "nck/run/start_at.hpp"
 #include "nck/run/stop_request.hpp"
@@ -193,7 +194,7 @@ int main_cli(int argc, char** argv) {
   install_signal_handlers();  // before anything that a signal could leave half done
   CLI::App app{"nck - an open NC kernel: check machine data, decode and run NC programs"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "nck 0.1.0");
+  app.set_version_flag("--version", fmt::format("nck {} (git {})", nck::version(), nck::git_hash()));
 
   CheckOptions checko;
   auto* check = app.add_subcommand(

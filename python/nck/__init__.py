@@ -16,6 +16,10 @@ from ._machine import Machine, Run
 from ._session import Session
 from ._batch import batch
 
+#: The version of the nck build this module belongs to ("0.3.0": CMake's
+#: project(VERSION), as ``nck --version`` prints it).
+__version__ = _nck.version
+
 #: The events' kinds ("ev"), by the code ``Run.event_records["ev"]`` holds.
 EVENT_KINDS = _nck.EVENT_KINDS
 

@@ -8,6 +8,7 @@
 #include "nck/config/load.hpp"
 #include "nck/config/parameter_registry.hpp"
 #include "nck/core/diagnostic.hpp"
+#include "nck/core/version.hpp"
 #include "nck/nc/block_json.hpp"
 #include "nck/nc/decoder.hpp"
 #include "nck/prep/decoder_setup.hpp"
@@ -119,4 +120,6 @@ PYBIND11_MODULE(_nck, m) {
   m.def("errors", &py::errors);
   m.def("params", &py::params);
   m.def("errors_markdown", &nck::errors_markdown);
+  m.attr("version") = std::string(nck::version());
+  m.attr("git_hash") = std::string(nck::git_hash());
 }

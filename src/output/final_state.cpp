@@ -9,6 +9,7 @@
 #include "nck/spindle/spindle_status.hpp"
 
 #include "nck/core/utf8.hpp"
+#include "nck/core/version.hpp"
 
 namespace nck::app {
 namespace {
@@ -167,6 +168,7 @@ nlohmann::json final_json(const config::Machine& m, const sim::DryRun& run, doub
            {"links", links},
            {"hli", hli},
            {"errors", errs}};
+  doc["nck"] = std::string(version());  // the build that wrote it (nck 0.3; docs/outputs.md)
   // nck 0.3: where the time went (docs/outputs.md), kept in its own order
   doc["time_by_cause"] = json::parse(time_by_cause.dump(-1, ' ', false, json::error_handler_t::replace));
   return doc;

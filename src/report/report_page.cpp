@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "nck/core/utf8.hpp"
+#include "nck/core/version.hpp"
 #include "nck/output/output_file.hpp"
 #include "nck/output/output_writers.hpp"
 #include "nck/report/embedded_files.hpp"
@@ -218,7 +219,8 @@ std::string ReportWriter::summary_json(std::vector<LineRef>& lines_used) const {
 std::string ReportWriter::data_json(double end_s, int exit_code) const {
   std::vector<LineRef> lines_used;
   std::string s = "{\"meta\":{";
-  s += fmt::format(R"("machine":{},"plc":{},"programs":{},"end_s":)", json_quoted(machine_), json_quoted(plc_),
+  s += fmt::format(R"("nck":{},"machine":{},"plc":{},"programs":{},"end_s":)", json_quoted(std::string(version())),
+                   json_quoted(machine_), json_quoted(plc_),
                    array_of(programs_, [](std::string& o, const std::string& p) { o += json_quoted(p); }));
   append_number(s, end_s, 4);
   s += fmt::format(R"(,"exit_code":{},"end":{},"cycle_s":{},"errors":{},"warnings":{},"stride":{},"c_axis":{}}})",

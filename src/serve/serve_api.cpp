@@ -7,6 +7,7 @@
 
 #include "nck/config/parameter_registry.hpp"
 #include "nck/core/utf8.hpp"
+#include "nck/core/version.hpp"
 #include "nck/output/output_writers.hpp"
 #include "nck/report/embedded_files.hpp"
 #include "nck/run/start_at.hpp"
@@ -107,6 +108,8 @@ HttpReply ServeApi::handle(const HttpRequest& r) {
     if (path == "/api/v1/parameters") return ok_json(parameters_json());
     if (path == "/api/v1/programs") return ok_json(json{{"programs", folders_.list()}});
     if (path == "/api/v1/program") return program_text(r.target);
+    if (path == "/api/v1/version")
+      return ok_json(json{{"nck", version()}, {"api", "v1"}, {"git", git_hash()}});
   }
   if (r.method == "POST") {
     if (path == "/api/v1/command") return command(r.body);

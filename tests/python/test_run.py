@@ -1,5 +1,7 @@
 """Machine.run: the same run as `nck run`, in memory."""
 import json
+import os
+import re
 import subprocess
 import threading
 
@@ -7,7 +9,7 @@ import numpy as np
 import pytest
 
 import nck
-from conftest import EXAMPLES
+from conftest import EXAMPLES, ROOT
 
 # (machine folder, programs): every example folder, one program per channel.
 EXAMPLE_RUNS = [
@@ -150,3 +152,12 @@ def test_threads_may_share_a_machine(mill):
     for t in threads:
         t.join()
     assert all(r == alone for r in runs)
+
+
+def test_the_version_is_cmakes():
+    """nck.__version__ is CMake's project(VERSION), as `nck --version` prints it (issue 47, item 2)."""
+    cmake = re.search(r"project\(nck VERSION ([0-9.]+)", (ROOT / "CMakeLists.txt").read_text()).group(1)
+    assert nck.__version__ == cmake
+    cli = subprocess.run([os.environ.get("NCK_BINARY", str(ROOT / "build/default/nck")), "--version"],
+                         capture_output=True, text=True, check=True)
+    assert cli.stdout.startswith(f"nck {cmake} (git ")

@@ -42,6 +42,11 @@ async function authentication(s) {
   check("the parameters name P-AXIS-00212", params.some((p) => p.id === "P-AXIS-00212" && p.key.includes("vb_max")));
   const errors = JSON.parse((await request(s, "GET", "/api/v1/errors")).body);
   check("the errors carry their remedy", errors.some((e) => e.id === 940304 && e.remedy.length > 0));
+  // The version comes from CMake's project(VERSION) (the one place it is written).
+  const cmakeVersion = /project\(nck VERSION ([0-9.]+)/.exec(fs.readFileSync(new URL("../../CMakeLists.txt", import.meta.url), "utf8"))[1];
+  const version = JSON.parse((await request(s, "GET", "/api/v1/version")).body);
+  check("GET /api/v1/version names the build", version.nck === cmakeVersion && version.api === "v1" && version.git.length > 0,
+        JSON.stringify(version));
   const badUrl = await request(s, "GET", "/?token=deadbeef", { token: false });
   check("a wrong URL token -> 401", badUrl.status === 401);
 }

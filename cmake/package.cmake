@@ -1,0 +1,41 @@
+# The CMake package (find_package(nck)) and pkg-config file of the layers
+# this configuration built (docs/embedding.md): static libraries exported
+# as nck::<layer>, the public headers under include/nck/, nckConfig.cmake,
+# nckConfigVersion.cmake and nck.pc. The libraries and headers form the
+# "dev" component; the command line, examples and docs "runtime".
+include(CMakePackageConfigHelpers)
+
+get_property(nck_layers GLOBAL PROPERTY NCK_LAYERS)
+set(nck_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/nck)
+install(TARGETS ${nck_layers} EXPORT nckTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev
+        INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/nck DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT dev)
+install(EXPORT nckTargets NAMESPACE nck:: DESTINATION ${nck_cmake_dir} COMPONENT dev)
+
+# What a consumer must find before the targets resolve: the layers' own
+# dependencies (Boost only with the server, header-only).
+set(NCK_PACKAGE_DEPS "find_dependency(fmt)\nfind_dependency(nlohmann_json)")
+if(NCK_APPS)
+  string(APPEND NCK_PACKAGE_DEPS "\nfind_dependency(Threads)\nfind_dependency(Boost 1.74)")
+endif()
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/nckConfig.cmake.in
+                              ${PROJECT_BINARY_DIR}/nckConfig.cmake INSTALL_DESTINATION ${nck_cmake_dir})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/nckConfigVersion.cmake COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/nckConfig.cmake ${PROJECT_BINARY_DIR}/nckConfigVersion.cmake
+        DESTINATION ${nck_cmake_dir} COMPONENT dev)
+
+# pkg-config: every layer built, the highest first (a static link resolves
+# left to right).
+set(NCK_PC_LIBS "")
+foreach(layer IN LISTS nck_layers)
+  string(PREPEND NCK_PC_LIBS "-l${layer} ")
+endforeach()
+if(NCK_APPS)
+  string(APPEND NCK_PC_LIBS "-pthread")  # the run service's and the report's threads
+endif()
+# Relocatable: the prefix is found from where nck.pc lies (an install
+# with --prefix or DESTDIR, a .deb unpacked elsewhere).
+file(RELATIVE_PATH NCK_PC_TO_PREFIX /${CMAKE_INSTALL_LIBDIR}/pkgconfig /)
+configure_file(${PROJECT_SOURCE_DIR}/cmake/nck.pc.in ${PROJECT_BINARY_DIR}/nck.pc @ONLY)
+install(FILES ${PROJECT_BINARY_DIR}/nck.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig COMPONENT dev)
