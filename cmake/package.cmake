@@ -39,3 +39,27 @@ endif()
 file(RELATIVE_PATH NCK_PC_TO_PREFIX /${CMAKE_INSTALL_LIBDIR}/pkgconfig /)
 configure_file(${PROJECT_SOURCE_DIR}/cmake/nck.pc.in ${PROJECT_BINARY_DIR}/nck.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/nck.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig COMPONENT dev)
+
+# Debian packages (cpack -G DEB in the build folder; docs/embedding.md):
+# nck (component runtime: the command line, examples under
+# /usr/share/nck/examples, docs), nck-dev (dev) and python3-nck (python).
+# Shared-library dependencies come from dpkg-shlibdeps (libfmt9 ...).
+set(CPACK_PACKAGE_NAME nck)
+set(CPACK_PACKAGE_VENDOR "the nck developers")
+set(CPACK_PACKAGE_CONTACT "nck developers <nck@localhost>")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "open NC kernel: ISG machine lists, DIN 66025 / ISG programs, cycle by cycle")
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_GENERATOR DEB)
+set(CPACK_DEB_COMPONENT_INSTALL ON)
+set(CPACK_STRIP_FILES ON)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_PACKAGE_SECTION science)
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME nck)
+set(CPACK_DEBIAN_DEV_PACKAGE_NAME nck-dev)
+set(CPACK_DEBIAN_DEV_PACKAGE_DEPENDS "nck (= ${PROJECT_VERSION}), libfmt-dev, nlohmann-json3-dev")
+set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)
+set(CPACK_DEBIAN_PYTHON_PACKAGE_NAME python3-nck)
+set(CPACK_DEBIAN_PYTHON_PACKAGE_DEPENDS "python3 (>= 3.11), python3-numpy")
+set(CPACK_DEBIAN_PYTHON_PACKAGE_SECTION python)
+include(CPack)

@@ -1,0 +1,46 @@
+# ctest package.deb (cmake -P): builds this build's Debian packages nck and
+# python3-nck with CPack, unpacks them with dpkg-deb -x into a scratch
+# folder (never dpkg -i: the test does not touch the host) and runs what
+# they carry: the binary on the packaged mill example, the Python module
+# from the packaged dist-packages folder.
+#   -DBUILD_DIR= -DWORK= -DPYTHON=
+function(run_checked)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${out}\n${err}")
+  endif()
+  set(last_output "${out}${err}" PARENT_SCOPE)
+endfunction()
+
+file(REMOVE_RECURSE ${WORK})
+# The build's CPack configuration with two of its three components (nck-dev
+# would only add the static libraries package.embedding installs already).
+file(WRITE ${WORK}/cpack.cmake "include(${BUILD_DIR}/CPackConfig.cmake)\nset(CPACK_COMPONENTS_ALL runtime python)\n")
+run_checked(cpack -G DEB -B ${WORK}/debs --config ${WORK}/cpack.cmake)
+file(GLOB debs ${WORK}/debs/*.deb)
+list(LENGTH debs n)
+if(NOT n EQUAL 2)
+  message(FATAL_ERROR "expected nck and python3-nck, got: ${debs}")
+endif()
+set(root ${WORK}/root)
+foreach(deb IN LISTS debs)
+  run_checked(dpkg-deb -x ${deb} ${root})
+  run_checked(dpkg-deb -f ${deb} Package Version Depends)
+  message(STATUS "${last_output}")
+endforeach()
+
+set(examples ${root}/usr/share/nck/examples)
+run_checked(${root}/usr/bin/nck run ${examples}/mill ${examples}/mill/contour.nc --final ${WORK}/final.json)
+if(NOT last_output MATCHES "program_end after 0:00:29.620 simulated")
+  message(FATAL_ERROR "the packaged nck: ${last_output}")
+endif()
+
+set(ENV{PYTHONPATH} ${root}/usr/lib/python3/dist-packages)
+# (no ";" in the code: run_checked's arguments are a CMake list)
+run_checked(${PYTHON} -c "import nck
+print(nck.__version__, nck.__file__)
+print(nck.Machine('${examples}/mill').run('${examples}/mill/contour.nc').time_s)")
+if(NOT last_output MATCHES "${root}/usr/lib/python3/dist-packages/nck/__init__.py" OR NOT last_output MATCHES "29.62")
+  message(FATAL_ERROR "the packaged Python module: ${last_output}")
+endif()
+message(STATUS "nck and python3-nck unpacked and run: ${last_output}")
