@@ -1,5 +1,8 @@
 // $ statements: $IF/$ELSEIF/$ELSE/$ENDIF, $WHILE/$ENDWHILE, $FOR/$ENDFOR,
-// $DO/$ENDDO, $SWITCH/$CASE/$DEFAULT/$ENDSWITCH, $BREAK, $CONTINUE.
+// $DO/$ENDDO, $REPEAT/$UNTIL, $SWITCH/$CASE/$DEFAULT/$ENDSWITCH, $BREAK,
+// $CONTINUE. A condition is TRUE when its value's magnitude is at least 0.5
+// (TF5200 "The IF - ELSE branch": decimal values are allowed), $CASE values
+// match the $SWITCH value within 0.001.
 // Loops jump back by seeking the reader to the remembered byte offset of
 // their opening statement; untaken branches are skipped by scanning ahead
 // with a nesting counter, so no block is kept in memory.
@@ -15,15 +18,16 @@ using namespace detail;
 namespace {
 
 enum class Kw : std::uint8_t { none, if_, elseif, else_, endif, while_, endwhile, for_, endfor,
-                               do_, enddo, switch_, case_, default_, endswitch, break_, continue_,
-                               goto_, unknown };
+                               do_, enddo, repeat_, until, switch_, case_, default_, endswitch, break_,
+                               continue_, goto_, unknown };
 
 Kw keyword_of(std::string_view id) {
   struct E { std::string_view s; Kw k; };
   static constexpr E table[] = {
       {"IF", Kw::if_}, {"ELSEIF", Kw::elseif}, {"ELSE", Kw::else_}, {"ENDIF", Kw::endif},
       {"WHILE", Kw::while_}, {"ENDWHILE", Kw::endwhile}, {"FOR", Kw::for_}, {"ENDFOR", Kw::endfor},
-      {"DO", Kw::do_}, {"ENDDO", Kw::enddo}, {"SWITCH", Kw::switch_}, {"CASE", Kw::case_},
+      {"DO", Kw::do_}, {"ENDDO", Kw::enddo}, {"REPEAT", Kw::repeat_}, {"UNTIL", Kw::until},
+      {"SWITCH", Kw::switch_}, {"CASE", Kw::case_},
       {"DEFAULT", Kw::default_}, {"ENDSWITCH", Kw::endswitch}, {"BREAK", Kw::break_},
       {"CONTINUE", Kw::continue_}, {"GOTO", Kw::goto_}};
   for (const auto& e : table)
@@ -38,19 +42,27 @@ Ctl mk(CtlKind k, SourcePos start) {
   return c;
 }
 
-bool is_opener(Kw k) { return k == Kw::if_ || k == Kw::while_ || k == Kw::for_ || k == Kw::do_ || k == Kw::switch_; }
-bool is_closer(Kw k) { return k == Kw::endif || k == Kw::endwhile || k == Kw::endfor || k == Kw::enddo || k == Kw::endswitch; }
+bool is_opener(Kw k) {
+  return k == Kw::if_ || k == Kw::while_ || k == Kw::for_ || k == Kw::do_ || k == Kw::repeat_ || k == Kw::switch_;
+}
+bool is_closer(Kw k) {
+  return k == Kw::endif || k == Kw::endwhile || k == Kw::endfor || k == Kw::enddo || k == Kw::until ||
+         k == Kw::endswitch;
+}
 
-Kw closer_of(CtlKind k) {
-  switch (k) {
+Kw closer_of(const Ctl& t) {
+  switch (t.kind) {
     case CtlKind::if_: return Kw::endif;
     case CtlKind::while_: return Kw::endwhile;
     case CtlKind::for_: return Kw::endfor;
-    case CtlKind::do_: return Kw::enddo;
+    case CtlKind::do_: return t.until ? Kw::until : Kw::enddo;
     case CtlKind::switch_: return Kw::endswitch;
   }
   return Kw::endif;
 }
+
+// TF5200: a condition is FALSE in -0.5 < value < 0.5, TRUE otherwise.
+bool truth(double v) { return std::fabs(v) >= 0.5; }
 
 // The $ keyword of a block (after skip mark, N number and label); the
 // cursor is left after it. Kw::none for other blocks.
@@ -179,7 +191,7 @@ struct Flow {
       if (k != Kw::elseif) return fail(ErrorId::NcControlStructure, 0, "$IF closed by the wrong statement");
       double v = 0;
       if (!condition(c, v)) return Outcome::error;
-      if (v != 0) {
+      if (truth(v)) {
         frame().ctl.push_back(mk(CtlKind::if_, frame().reader->block_pos()));
         return Outcome::nothing;
       }
@@ -190,7 +202,7 @@ struct Flow {
   bool leave(std::size_t levels) {
     auto& ctl = frame().ctl;
     for (std::size_t i = 0; i < levels; ++i) {
-      Kw want = closer_of(ctl.back().kind);
+      Kw want = closer_of(ctl.back());
       Kw k = Kw::none;
       Cursor c;
       if (!skip({want}, k, c)) return false;
@@ -252,7 +264,7 @@ struct Flow {
     else if (!count_iteration(ctl.back(), pos)) return Outcome::error;
     double v = 0;
     if (!condition(c, v)) return Outcome::error;
-    if (v != 0) return Outcome::nothing;
+    if (truth(v)) return Outcome::nothing;
     return leave(1) ? Outcome::nothing : Outcome::error;
   }
 
@@ -263,12 +275,17 @@ struct Flow {
     return Outcome::nothing;
   }
 
-  Outcome enddo(Cursor& c, std::size_t pos) {
-    if (expect_top(CtlKind::do_, pos, "$ENDDO") == Outcome::error) return Outcome::error;
+  // $ENDDO c repeats while c is TRUE, $UNTIL c until c is TRUE.
+  Outcome enddo(Cursor& c, std::size_t pos, bool until) {
+    const char* what = until ? "$UNTIL" : "$ENDDO";
+    if (expect_top(CtlKind::do_, pos, what) == Outcome::error) return Outcome::error;
+    if (frame().ctl.back().until != until)
+      return fail(ErrorId::NcControlStructure, pos,
+                  until ? "$UNTIL closes a $DO: write $ENDDO" : "$ENDDO closes a $REPEAT: write $UNTIL");
     double v = 0;
     if (!condition(c, v)) return Outcome::error;
     Ctl& t = frame().ctl.back();
-    if (v == 0) {
+    if (truth(v) == until) {
       frame().ctl.pop_back();
       return Outcome::nothing;
     }
@@ -277,9 +294,25 @@ struct Flow {
     return Outcome::nothing;
   }
 
+  // "$SWITCH P1=INT[P1*P2/P3]": the value may be assigned to a variable
+  // first (TF5200 "Switch branching"), the switch then takes that value.
   Outcome start_switch(Cursor& c) {
     double v = 0;
+    c.skip_spaces();
+    Cursor probe = c;
+    Lvalue lv;
+    bool assigned = false;
+    if (looks_like_lvalue(probe)) {
+      if (!parse_lvalue(probe, d.x, lv)) return Outcome::error;  // not a value either
+      probe.skip_spaces();
+      if (probe.peek() == '=' && probe.peek(1) != '=') {
+        ++probe.pos;
+        c = probe;
+        assigned = true;
+      }
+    }
     if (!condition(c, v)) return Outcome::error;
+    if (assigned && !write_lvalue(lv, d.x, v)) return Outcome::error;
     frame().ctl.push_back(mk(CtlKind::switch_, frame().reader->block_pos()));
     for (;;) {
       Kw k = Kw::none;
@@ -293,7 +326,7 @@ struct Flow {
       if (k != Kw::case_) return fail(ErrorId::NcControlStructure, 0, "$SWITCH closed by the wrong statement");
       double cv = 0;
       if (!condition(cc, cv)) return Outcome::error;
-      if (std::fabs(cv - v) <= 1e-9) return Outcome::nothing;
+      if (std::fabs(cv - v) < 0.001) return Outcome::nothing;
     }
   }
 
@@ -319,8 +352,8 @@ struct Flow {
         double v = 0;
         bool then_goto = false;
         if (!condition(c, v, &then_goto)) return Outcome::error;
-        if (then_goto) return v != 0 ? d.go_to(c, pos) : Outcome::nothing;  // no $ENDIF follows
-        if (v != 0) {
+        if (then_goto) return truth(v) ? d.go_to(c, pos) : Outcome::nothing;  // no $ENDIF follows
+        if (truth(v)) {
           ctl.push_back(mk(CtlKind::if_, frame().reader->block_pos()));
           return Outcome::nothing;
         }
@@ -343,13 +376,16 @@ struct Flow {
       case Kw::endfor:
         if (expect_top(CtlKind::for_, pos, "$ENDFOR") == Outcome::error) return Outcome::error;
         return jump_back(ctl.back());
-      case Kw::do_: {
+      case Kw::do_:
+      case Kw::repeat_: {
         Ctl t = mk(CtlKind::do_, frame().reader->block_pos());
         t.body = frame().reader->next_pos();
+        t.until = k == Kw::repeat_;
         ctl.push_back(t);
         return Outcome::nothing;
       }
-      case Kw::enddo: return enddo(c, pos);
+      case Kw::enddo: return enddo(c, pos, false);
+      case Kw::until: return enddo(c, pos, true);
       case Kw::switch_: return start_switch(c);
       case Kw::case_:
       case Kw::default_:  // reached from the case above: falls through
@@ -371,8 +407,9 @@ struct Flow {
         if (t.kind != CtlKind::do_) return jump_back(t);
         Kw kk = Kw::none;
         Cursor cc;
-        if (!skip({Kw::enddo}, kk, cc)) return Outcome::error;
-        return enddo(cc, 0);
+        const Kw closer = closer_of(t);
+        if (!skip({closer}, kk, cc)) return Outcome::error;
+        return enddo(cc, 0, closer == Kw::until);
       }
       case Kw::goto_: return d.go_to(c, pos);
       default:

@@ -26,7 +26,8 @@ enum class CtlKind : std::uint8_t { if_, while_, for_, do_, switch_ };
 struct Ctl {
   CtlKind kind = CtlKind::if_;
   SourcePos start;           // the opening statement's block
-  SourcePos body;            // the block after it ($DO)
+  SourcePos body;            // the block after it ($DO, $REPEAT)
+  bool until = false;        // a $DO opened by $REPEAT: closed by $UNTIL, which ends the loop when true
   Lvalue var;                // $FOR variable
   double end = 0, step = 1;  // $FOR limits
 };

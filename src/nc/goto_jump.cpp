@@ -41,9 +41,9 @@ bool contains_goto(std::string_view rest) {
 Shape shape_of(std::string_view kw, std::string_view rest) {
   if (iequals(kw, "IF")) return contains_goto(rest) ? Shape::plain : Shape::open_if;
   if (iequals(kw, "ENDIF")) return Shape::close_if;
-  for (std::string_view k : {"WHILE", "FOR", "DO", "SWITCH"})
+  for (std::string_view k : {"WHILE", "FOR", "DO", "REPEAT", "SWITCH"})
     if (iequals(kw, k)) return Shape::open_loop;
-  for (std::string_view k : {"ENDWHILE", "ENDFOR", "ENDDO", "ENDSWITCH"})
+  for (std::string_view k : {"ENDWHILE", "ENDFOR", "ENDDO", "UNTIL", "ENDSWITCH"})
     if (iequals(kw, k)) return Shape::close_loop;
   return Shape::plain;
 }
@@ -174,7 +174,7 @@ struct Jump {
     for (Shape s : entered)
       if (s != Shape::open_if)
         return fail(ErrorId::NcGotoIntoBlock, pos,
-                    fmt::format("$GOTO {} (line {}) jumps into a $WHILE/$FOR/$DO/$SWITCH body from outside",
+                    fmt::format("$GOTO {} (line {}) jumps into a $WHILE/$FOR/$DO/$REPEAT/$SWITCH body from outside",
                                 label, target.line));
     if (left > f.ctl.size())
       return fail(ErrorId::NcControlStructure, pos, fmt::format("$GOTO {}: the $ structures are not nested", label));

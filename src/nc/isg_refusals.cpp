@@ -23,7 +23,8 @@ constexpr std::pair<int, int> kIsgGRanges[] = {{80, 89}, {800, 839}};
 // ISG # functions nck does not have, by their keywords; "#MC_..." by prefix.
 constexpr std::array<std::string_view, 2> kIsgHashPhrases[] = {
     {"RT", "CYCLE"}, {"WAIT", "SYN"},  {"SIGNAL", "SYN"}, {"HSC", ""},     {"TRAFO", ""},   {"CHANNEL", "INIT"},
-    {"FILE", "NAME"}, {"RETAIN", "CYCLE"}, {"TURN", ""},  {"TOOL", "ORI"}};
+    {"FILE", "NAME"}, {"RETAIN", "CYCLE"}, {"TURN", ""},  {"TOOL", "ORI"}, {"BCS", ""},
+    {"OTC", ""}};
 constexpr std::string_view kMotionCommandPrefix = "MC_";
 // ISG expression functions nck does not have.
 constexpr std::string_view kIsgExpressionFunctions[] = {"IS_STRING"};

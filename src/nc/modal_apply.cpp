@@ -171,7 +171,13 @@ bool apply_words(Words& w, BlockCtx& b, ModalState& modal, Block& out) {
       case FeedMode::g194: modal.feed_pct = *w.f.v; break;
     }
   }
-  if (w.r.v) { out.r = w.r.v; modal.r = *w.r.v; }
+  if (w.r.v) {
+    out.r = w.r.v;
+    modal.r = *w.r.v;
+  } else if (modal.r != 0 && (modal.motion == Motion::cw || modal.motion == Motion::ccw) && !w.ijk[0].v &&
+             !w.ijk[1].v && !w.ijk[2].v) {
+    out.r = modal.r;  // R is modal (TF5200 "Radius programming"): a circle without I/J/K or R takes the last R
+  }
   for (int i = 0; i < 3; ++i) out.ijk[i] = w.ijk[i].v;
   if (modal.motion == Motion::thread) {
     for (const auto& p : w.ijk)

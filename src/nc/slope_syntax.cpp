@@ -56,6 +56,15 @@ bool parse_slope(HashCtx& h) {
     if (c.at_end()) return syntax_error(h, c.pos, "']' expected to close #SLOPE");
     const std::size_t kp = c.pos;
     const std::string key = to_upper(c.read_ident());
+    if (key == "NO_OPT") {  // 1 (the default): no optimised use of jerk, which nck does not have anyway
+      c.skip_spaces();
+      if (!c.match('=')) return syntax_error(h, kp, "NO_OPT=<0|1> expected");
+      int n = 1;
+      if (!int_arg(c, h.b, n, 0, 1, "#SLOPE NO_OPT")) return false;
+      if (n == 0)
+        return syntax_error(h, kp, "#SLOPE NO_OPT=0 (optimised use of jerk) is not supported; NO_OPT=1 is the default");
+      continue;
+    }
     if (key != "TYPE")
       return syntax_error(h, kp, key.empty() ? std::string("TYPE=<STEP|TRAPEZ|SIN2|HSC> expected")
                                              : fmt::format("#SLOPE parameter {} is not supported (only TYPE)", key));

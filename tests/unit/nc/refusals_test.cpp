@@ -27,7 +27,8 @@ TEST(NcRefusals, NcLanguageListsEveryRefusedIsgFunction) {
 
 TEST(NcRefusals, IsgFunctionsAreNamed) {
   for (const char* text : {"#TOOL ORI CS [0,0,1]\n", "#TURN [THREAD_CHAIN=1]\n", "#CYL 2ROT [Z, C, X60]\n",
-                           "#FACE 2ROT [X, C]\n", "G138 X1\n", "G237\n", "#mc_movepath [..]\n", "P1 = IS_STRING[2]\n"}) {
+                           "#FACE 2ROT [X, C]\n", "#BCS ON [0, 0, 10]\n", "#OTC ON\n", "G138 X1\n", "G237\n",
+                           "#mc_movepath [..]\n", "P1 = IS_STRING[2]\n"}) {
     auto d = decode(text);
     const Diagnostic* e = d.find(ErrorId::NcUnsupported);
     ASSERT_NE(e, nullptr) << text << dump(d);

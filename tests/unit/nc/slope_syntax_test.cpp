@@ -48,6 +48,15 @@ TEST(SlopeSyntax, UnknownTypeNamesFileAndLine) {
   EXPECT_TRUE(decode("#SET SLOPE PROFIL[-1]\n").has(ErrorId::NcSlopeType));
 }
 
+// TF5200 "#SLOPE": NO_OPT=1 is the default (no optimised use of jerk, which
+// nck does not have); NO_OPT=0 asks for that optimisation and is refused.
+TEST(SlopeSyntax, NoOptOneIsAcceptedNoOptZeroRefused) {
+  const auto ok = decode("#SLOPE [TYPE=SIN2 NO_OPT=1]\nX1\nM30\n");
+  EXPECT_EQ(ok.errors(), 0u) << dump(ok);
+  EXPECT_TRUE(decode("#SLOPE [TYPE=SIN2 NO_OPT=0]\n").has(ErrorId::NcSlopeSyntax));
+  EXPECT_TRUE(decode("#SLOPE [TYPE=SIN2 NO_OPT]\n").has(ErrorId::NcSlopeSyntax));
+}
+
 TEST(SlopeSyntax, MalformedOrUnsupportedParametersAreSyntaxErrors) {
   for (const char* text : {"#SLOPE\n", "#SLOPE [TYPE TRAPEZ]\n", "#SLOPE [TYPE=TRAPEZ\n", "#SLOPE []\n",
                            "#SLOPE [TYPE=TRAPEZ, WEIGHT=50]\n"}) {

@@ -97,6 +97,22 @@ TEST(NcWords, RadiusWithCenterIs21024) {
   EXPECT_DOUBLE_EQ(*ok.blocks[1].ijk[0], -5);
 }
 
+// TF5200 (TwinCAT CNC programming manual) "Radius programming": R is modal,
+// a circle without I/J/K or R takes the last R (tests/manual_programs/circle_radius.nc).
+TEST(NcWords, CircleRadiusIsModal) {
+  auto d = decode("G1 X0 Y0 F500\nG2 R=15\nX30\nG3 X60\nG2 X70 I5\nG1 X80\nG3 X90\nG2 X100 R-5\nX110\nM30\n");
+  ASSERT_EQ(d.errors(), 0u) << dump(d);
+  ASSERT_EQ(d.blocks.size(), 10u) << dump(d);
+  EXPECT_DOUBLE_EQ(*d.blocks[1].r, 15);  // the block that programs it (no motion)
+  EXPECT_DOUBLE_EQ(*d.blocks[2].r, 15);
+  EXPECT_DOUBLE_EQ(*d.blocks[3].r, 15);
+  EXPECT_FALSE(d.blocks[4].r.has_value());  // I/J/K: the centre, not the radius
+  EXPECT_FALSE(d.blocks[5].r.has_value());  // G1
+  EXPECT_DOUBLE_EQ(*d.blocks[6].r, 15);
+  EXPECT_DOUBLE_EQ(*d.blocks[8].r, -5);
+  EXPECT_FALSE(decode("G2 X10 Y0\nM30\n").blocks[0].r.has_value());  // no R yet: 930005 in preparation
+}
+
 TEST(NcWords, FeedBelongsToItsFeedMode) {
   // TF5200 G95 (docs/nc-language.md): G95 F1.5 then G94 X50 runs with the old G94 feed again.
   auto d = decode("G94 F500 X1\nG95 F1.5 X2\nG94 X50\nM30\n");
