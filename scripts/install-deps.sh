@@ -11,7 +11,8 @@ pkgs=(build-essential g++ cmake ninja-build pkg-config
       pybind11-dev python3-dev python3-numpy   # the Python module (python/, docs/python.md)
       python3-pytest python3-distributed       # its tests; nck.batch on Dask
       python3-matplotlib                       # examples/python/accel_sweep.py plots (CSV without it)
-      python3-setuptools python3-wheel python3-build python3-venv python3-pip)  # the wheel (python/pyproject.toml)
+      python3-setuptools python3-wheel python3-build python3-venv python3-pip  # the wheel (python/pyproject.toml)
+      python3-jsonschema)                      # docs/openapi.json checked against the API tests
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

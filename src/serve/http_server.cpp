@@ -342,7 +342,9 @@ std::optional<HttpReply> HttpServer::Impl::check(const http::request<http::strin
   if (!budget.take(std::chrono::steady_clock::now()))
     return error_reply(429, ErrorId::ApiRateLimited, fmt::format("more than {} requests per second", limits.requests_per_s));
   const std::string_view target(req.target().data(), req.target().size());
-  if (target.starts_with("/api/") && !authorized(req))
+  // The API's description is public, like the page (OpenAPI: "security": []).
+  const bool public_api = target == "/api/v1/openapi.json";
+  if (target.starts_with("/api/") && !public_api && !authorized(req))
     return error_reply(401, ErrorId::ApiUnauthorized, "no valid token: open the URL nck serve printed");
   // The page's URL token becomes a cookie the scripts cannot read, and leaves the address bar.
   if (const std::string_view t = query_value(target, "token"); !t.empty()) {

@@ -108,6 +108,8 @@ HttpReply ServeApi::handle(const HttpRequest& r) {
     if (path == "/api/v1/parameters") return ok_json(parameters_json());
     if (path == "/api/v1/programs") return ok_json(json{{"programs", folders_.list()}});
     if (path == "/api/v1/program") return program_text(r.target);
+    if (path == "/api/v1/openapi.json")  // docs/openapi.json, built in
+      return HttpReply{200, "application/json", std::string(embedded_file("openapi.json")), {}};
     if (path == "/api/v1/version")
       return ok_json(json{{"nck", version()}, {"api", "v1"}, {"git", git_hash()}});
   }

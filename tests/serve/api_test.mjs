@@ -47,6 +47,11 @@ async function authentication(s) {
   const version = JSON.parse((await request(s, "GET", "/api/v1/version")).body);
   check("GET /api/v1/version names the build", version.nck === cmakeVersion && version.api === "v1" && version.git.length > 0,
         JSON.stringify(version));
+  const openapi = await request(s, "GET", "/api/v1/openapi.json", { token: false });
+  check("GET /api/v1/openapi.json needs no token and is OpenAPI 3.1",
+        openapi.status === 200 && JSON.parse(openapi.body).openapi === "3.1.0", `${openapi.status}`);
+  const machine = JSON.parse((await request(s, "GET", "/api/v1/machine")).body);
+  check("GET /api/v1/machine names the axes", machine.api === 1 && machine.channels[0].axes.includes("X"));
   const badUrl = await request(s, "GET", "/?token=deadbeef", { token: false });
   check("a wrong URL token -> 401", badUrl.status === 401);
 }

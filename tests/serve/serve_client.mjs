@@ -61,6 +61,15 @@ export function runServe(nck, cwd, args, ms = 10000) {
   });
 }
 
+// NCK_API_RECORD=FILE: every answered request is appended to FILE as one
+// JSON line, for tests/serve/openapi_check.py (ctest serve.openapi).
+function record(method, target, body, res, data) {
+  if (!process.env.NCK_API_RECORD) return;
+  const line = { method, target, status: res.statusCode, type: res.headers["content-type"] || "", request: body ?? null,
+                 answer: data.length <= 1 << 20 ? data : null };
+  fs.appendFileSync(process.env.NCK_API_RECORD, JSON.stringify(line) + "\n");
+}
+
 // One request; resolves with {status, headers, body} (status 0 and the
 // error as body on a reset connection). agent: an http.Agent for
 // keep-alive, else a connection of its own.
@@ -73,7 +82,10 @@ export function request(s, method, target, { body, headers = {}, token = true, h
                                setHost: false, agent }, (res) => {
       let data = "";
       res.on("data", (c) => (data += c));
-      res.on("end", () => resolve({ status: res.statusCode, headers: res.headers, body: data }));
+      res.on("end", () => {
+        record(method, target, body, res, data);
+        resolve({ status: res.statusCode, headers: res.headers, body: data });
+      });
       res.on("error", () => resolve({ status: res.statusCode, headers: res.headers, body: data }));
     });
     req.on("error", (e) => resolve({ status: 0, headers: {}, body: String(e) }));
