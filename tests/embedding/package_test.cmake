@@ -4,7 +4,7 @@
 # and compares its end time with `nck run`'s end event. Then checks that
 # nck.pc gives the same libraries to pkg-config, and that the kernel-only
 # configuration (NCK_APPS=OFF) configures without Boost, CLI11, pybind11,
-# GoogleTest or node_modules.
+# GoogleTest or node_modules, also as add_subdirectory(nck).
 #   -DBUILD_DIR= -DSOURCE_DIR= -DNCK= -DWORK= -DCXX_FLAGS= -DBUILD_TYPE=
 function(run_checked)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -58,3 +58,13 @@ if(NOT last_output MATCHES "nck_kernel" OR last_output MATCHES "nck_serve|nck_ru
   message(FATAL_ERROR "the kernel-only configuration's targets:\n${last_output}")
 endif()
 message(STATUS "NCK_APPS=OFF configures nck::kernel..nck::sim alone")
+
+# add_subdirectory(nck) for a kernel-only user (tests/embedding/subdirectory).
+run_checked(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/embedding/subdirectory -B ${WORK}/subdirectory -G Ninja
+            -DNCK_SOURCE_DIR=${SOURCE_DIR} -DCMAKE_DISABLE_FIND_PACKAGE_Boost=ON -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON
+            -DCMAKE_DISABLE_FIND_PACKAGE_pybind11=ON -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON)
+file(READ ${WORK}/subdirectory/build.ninja rules)
+if(NOT rules MATCHES "build embedding:" OR rules MATCHES "nck_serve")
+  message(FATAL_ERROR "add_subdirectory(nck) with NCK_APPS OFF: no embedding target, or the server came along")
+endif()
+message(STATUS "add_subdirectory(nck) with NCK_APPS OFF configures")
