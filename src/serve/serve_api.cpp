@@ -117,6 +117,11 @@ HttpReply ServeApi::handle(const HttpRequest& r) {
     if (path == "/api/v1/command") return command(r.body);
     if (path == "/api/v1/upload") return upload(r.target, r.body);
   }
+  // An old or newer client: say which version this server speaks.
+  if (path.starts_with("/api/") && !path.starts_with("/api/v1/"))
+    return error_reply(404, ErrorId::ApiNotFound,
+                       fmt::format("no {} {}: this server speaks API v1 only (/api/v1/..., GET /api/v1/version)",
+                                   r.method, path.substr(0, 80)));
   return error_reply(404, ErrorId::ApiNotFound, fmt::format("no {} {} (docs/api.md)", r.method, path.substr(0, 80)));
 }
 

@@ -50,6 +50,9 @@ async function authentication(s) {
   const openapi = await request(s, "GET", "/api/v1/openapi.json", { token: false });
   check("GET /api/v1/openapi.json needs no token and is OpenAPI 3.1",
         openapi.status === 200 && JSON.parse(openapi.body).openapi === "3.1.0", `${openapi.status}`);
+  const v2 = await request(s, "GET", "/api/v2/state");
+  check("an /api/v2 client gets 404 naming v1", v2.status === 404 && JSON.parse(v2.body).error.message.includes("API v1 only"),
+        v2.body);
   const machine = JSON.parse((await request(s, "GET", "/api/v1/machine")).body);
   check("GET /api/v1/machine names the axes", machine.api === 1 && machine.channels[0].axes.includes("X"));
   const badUrl = await request(s, "GET", "/?token=deadbeef", { token: false });
