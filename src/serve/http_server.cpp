@@ -1,5 +1,6 @@
 #include "nck/serve/http_server.hpp"
 
+#include <charconv>
 #include <deque>
 #include <map>
 #include <optional>
@@ -181,7 +182,7 @@ class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connect
       authenticated_ = true;
     }
     if (auto refused = server_.check(req, budget_)) return reply(*refused, after);
-    if (req.method() == http::verb::get && req.target() == "/api/v1/stream") return start_stream();
+    if (req.method() == http::verb::get && req.target() == "/api/v1/stream") return start_stream(last_event_id(req));
     const HttpRequest r{std::string_view(req.method_string().data(), req.method_string().size()),
                         std::string_view(req.target().data(), req.target().size()),
                         std::string_view(req.body().data(), req.body().size())};
@@ -221,12 +222,21 @@ class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connect
     });
   }
   // The connection becomes a server-sent-events stream until either side closes it.
-  void start_stream() {
+  // The Last-Event-ID header of a reconnecting stream client (none when absent or not a number).
+  static std::optional<std::uint64_t> last_event_id(const http::request<http::string_body>& req) {
+    const auto it = req.find("Last-Event-ID");
+    if (it == req.end()) return std::nullopt;
+    std::uint64_t id = 0;
+    const auto v = it->value();
+    const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), id);
+    return ec == std::errc{} && end == v.data() + v.size() ? std::optional(id) : std::nullopt;
+  }
+  void start_stream(std::optional<std::uint64_t> last_id) {
     server_.streams.push_back(weak_from_this());
     std::string head =
         "HTTP/1.1 200 OK\r\nContent-Type: text/event-stream\r\nCache-Control: no-store\r\n"
         "Referrer-Policy: no-referrer\r\nX-Content-Type-Options: nosniff\r\nConnection: close\r\n\r\n";
-    send(std::make_shared<const std::string>(std::move(head) + server_.handler.stream_start()));
+    send(std::make_shared<const std::string>(std::move(head) + server_.handler.stream_start(last_id)));
     watch_for_close();
   }
   // A stream client sends nothing more: a read ends only when it goes away.

@@ -294,7 +294,7 @@ void ServeApi::drain_events(std::vector<std::string>& frames) {
     batch += batch.empty() ? "[" : ",";
     batch += EventWriter::line(e, RunNames{serving_});
   }
-  if (!batch.empty()) frames.push_back(fmt::format("event: events\ndata: {}]\n\n", batch));
+  if (!batch.empty()) frames.push_back(replay_.number(fmt::format("event: events\ndata: {}]\n\n", batch), true));
 }
 
 void ServeApi::collect(std::vector<std::string>& frames) {
@@ -305,7 +305,7 @@ void ServeApi::collect(std::vector<std::string>& frames) {
     if (kernel_.snapshot().generation > generation_) advance();
   }
   last_ = kernel_.snapshot();
-  frames.push_back(fmt::format("event: state\ndata: {}\n\n", state_frame()));
+  frames.push_back(replay_.number(fmt::format("event: state\ndata: {}\n\n", state_frame()), false));
 }
 
 std::string ServeApi::state_frame() {
@@ -317,8 +317,11 @@ std::string ServeApi::state_frame() {
   return dump_json(j);
 }
 
-std::string ServeApi::stream_start() {
-  return fmt::format("event: machine\ndata: {}\n\nevent: state\ndata: {}\n\n", dump_json(machine_json(machine_)),
+// retry: a client that loses the stream reconnects after 1 s (and sends
+// Last-Event-ID: the events it missed come before the state).
+std::string ServeApi::stream_start(std::optional<std::uint64_t> last_event_id) {
+  return fmt::format("retry: 1000\n\nevent: machine\ndata: {}\n\n{}event: state\ndata: {}\n\n",
+                     dump_json(machine_json(machine_)), last_event_id ? replay_.since(*last_event_id) : "",
                      state_frame());
 }
 

@@ -175,6 +175,33 @@ async function mdiQueue(s) {
         st.channels[0].mcs.Y === 7, JSON.stringify(st.channels[0].mcs));
 }
 
+// The stream's frames as [{id, event, data}] (the retry line aside).
+function frames(text) {
+  return text.split("\n\n").filter((f) => f.includes("event:")).map((f) => ({
+    id: Number((/^id: (\d+)$/m.exec(f) || [])[1] ?? NaN), event: (/^event: (\w+)$/m.exec(f) || [])[1], data: f }));
+}
+
+// Server-sent events carry ids and a retry time; a client that comes back
+// with Last-Event-ID gets the events frames it missed, in order, before the state.
+async function streamIds(s) {
+  const first = readStream(s, 1500);
+  await sleep(200);
+  await command(s, { command: "mdi", text: "G91 G1 X5 F3000" });
+  const seen = await first;
+  check("the stream tells clients to retry after 1 s", seen.text.startsWith("retry: 1000\n"), seen.text.slice(0, 40));
+  const numbered = frames(seen.text).filter((f) => !Number.isNaN(f.id));
+  check("stream frames carry increasing ids", numbered.length > 5 &&
+        numbered.every((f, i) => i === 0 || f.id > numbered[i - 1].id), numbered.map((f) => f.id).join(","));
+  const events = numbered.filter((f) => f.event === "events");
+  check("the MDI's events came as numbered frames", events.length >= 1, `${events.length}`);
+  if (events.length === 0) return;
+  const last = events[events.length - 1];
+  const again = await readStream(s, 300, { "Last-Event-ID": String(last.id - 1) });
+  const replayed = frames(again.text).filter((f) => f.event === "events");
+  check("Last-Event-ID replays the events frames after it", replayed.length >= 1 && replayed[0].id === last.id &&
+        replayed[0].data === last.data, again.text.slice(0, 300));
+}
+
 async function main() {
   fs.mkdirSync(path.join(out, "programs"), { recursive: true });
   fs.mkdirSync(path.join(out, "outside"), { recursive: true });
@@ -193,6 +220,7 @@ async function main() {
   }
   const fast = await startServer(["--rate", "100000"]);
   try {
+    await streamIds(fast);
     await mdiQueue(fast);
     await malformed(fast);
   } finally {

@@ -98,11 +98,11 @@ export const state = async (s) => JSON.parse((await request(s, "GET", "/api/v1/s
 export const errorId = (r) => { try { return JSON.parse(r.body).error.id; } catch { return null; } };
 
 // Reads a stream for `ms`; resolves with {status, text}.
-export function readStream(s, ms) {
+export function readStream(s, ms, headers = {}) {
   return new Promise((resolve) => {
     let text = "";
     const req = http.get({ host: "127.0.0.1", port: s.port, path: "/api/v1/stream", agent: false,
-                           headers: { Host: `127.0.0.1:${s.port}`, Authorization: `Bearer ${s.token}` } }, (res) => {
+                           headers: { Host: `127.0.0.1:${s.port}`, Authorization: `Bearer ${s.token}`, ...headers } }, (res) => {
       res.on("data", (c) => (text += c));
       setTimeout(() => { req.destroy(); resolve({ status: res.statusCode, text }); }, ms);
     });

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -56,8 +57,9 @@ class ApiHandler {
   virtual HttpReply handle(const HttpRequest& r) = 0;
   // Every stream period: the frames ("event: ...\ndata: ...\n\n") for every stream client.
   virtual void collect(std::vector<std::string>& frames) = 0;
-  // The frames a new stream client gets first (the whole state).
-  virtual std::string stream_start() = 0;
+  // The frames a new stream client gets first (the whole state); a client
+  // that reconnects with Last-Event-ID also gets the events it missed.
+  virtual std::string stream_start(std::optional<std::uint64_t> last_event_id) = 0;
 };
 
 class HttpServer {

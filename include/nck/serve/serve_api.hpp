@@ -14,6 +14,7 @@
 #include "nck/serve/live_kernel.hpp"
 #include "nck/serve/program_folders.hpp"
 #include "nck/serve/snapshot_json.hpp"
+#include "nck/serve/stream_replay.hpp"
 #include "nck/sim/operator_action.hpp"
 
 namespace nck::app::serve {
@@ -32,7 +33,7 @@ class ServeApi : public ApiHandler {
 
   HttpReply handle(const HttpRequest& r) override;
   void collect(std::vector<std::string>& frames) override;
-  std::string stream_start() override;
+  std::string stream_start(std::optional<std::uint64_t> last_event_id) override;
 
   // A fresh run of the loaded programs (setup side), ready to hand over;
   // the reason when a program cannot be opened.
@@ -65,6 +66,7 @@ class ServeApi : public ApiHandler {
   std::uint64_t generation_ = 1;
   ChannelFrames frames_{};
   LiveSnapshot last_{};  // the newest state taken
+  StreamReplay replay_;  // the frames' ids, the events a reconnecting client missed
 };
 
 }  // namespace nck::app::serve
