@@ -4,13 +4,7 @@
 # they carry: the binary on the packaged mill example, the Python module
 # from the packaged dist-packages folder.
 #   -DBUILD_DIR= -DWORK= -DPYTHON=
-function(run_checked)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${out}\n${err}")
-  endif()
-  set(last_output "${out}${err}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/run_checked.cmake)
 
 file(REMOVE_RECURSE ${WORK})
 # The build's CPack configuration with two of its three components (nck-dev

@@ -6,13 +6,7 @@
 # configuration (NCK_APPS=OFF) configures without Boost, CLI11, pybind11,
 # GoogleTest or node_modules, also as add_subdirectory(nck).
 #   -DBUILD_DIR= -DSOURCE_DIR= -DNCK= -DWORK= -DCXX_FLAGS= -DBUILD_TYPE=
-function(run_checked)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${out}\n${err}")
-  endif()
-  set(last_output "${out}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/run_checked.cmake)
 
 file(REMOVE_RECURSE ${WORK})
 set(prefix ${WORK}/prefix)

@@ -5,13 +5,7 @@
 # compile); the venv then imports nck without PYTHONPATH and runs the mill
 # example.
 #   -DBUILD_DIR= -DSOURCE_DIR= -DWORK= -DPYTHON=
-function(run_checked)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${out}\n${err}")
-  endif()
-  set(last_output "${out}${err}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/run_checked.cmake)
 
 file(REMOVE_RECURSE ${WORK})
 unset(ENV{PYTHONPATH})
