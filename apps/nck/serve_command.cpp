@@ -80,7 +80,8 @@ int serve_command(const ServeOptions& opt) {
   std::string why;
   const auto token = read_token(opt, why);
   if (!token) return bad_options(why);
-  config::LoadResult loaded = config::load_machine(opt.machine);
+  config::LoadResult loaded =
+      config::load_machine(opt.machine, {opt.strict_keys ? config::KeyPolicy::strict : config::KeyPolicy::lenient});
   for (const Diagnostic& d : loaded.diagnostics.items()) fmt::print(stderr, "{}\n", format(d));
   if (!loaded.ok()) return 2;
   const config::Machine& m = *loaded.machine;

@@ -16,6 +16,7 @@ struct ServeOptions {
   std::vector<std::string> folders;    // --programs DIR: what may be loaded
   std::string uploads;                 // folder for uploaded programs (default: a new temporary one)
   std::string speed = "1";             // simulated seconds per wall second, or "max"
+  bool strict_keys = false;            // --strict: every unknown list key is an error (910032)
   bool realtime = true;                // ask for SCHED_FIFO and locked memory
   bool paused = false;
   std::size_t max_clients = 8;        // the last one kept for a request with the token

@@ -88,6 +88,9 @@ TEST(ListKeys, StrictMakesEveryUnknownKeyAnError) {
   const CliResult run = run_nck("run --strict " + m.dir.string() + " " + contour() + " --no-progress");
   EXPECT_EQ(run.exit_code, 2) << run.output;
   EXPECT_NE(run.output.find(at_line("x.lis", m.line, "error 910032")), std::string::npos) << run.output;
+  const CliResult serve = run_nck("serve --strict " + m.dir.string() + " --port 0 --no-realtime --max-wall 5");
+  EXPECT_EQ(serve.exit_code, 2) << serve.output;  // refused before it listens
+  EXPECT_NE(serve.output.find(at_line("x.lis", m.line, "error 910032")), std::string::npos) << serve.output;
   // Without --strict the run starts, warned.
   const CliResult lenient = run_nck("run " + m.dir.string() + " " + contour() + " --no-progress");
   EXPECT_EQ(lenient.exit_code, 0) << lenient.output;
@@ -96,6 +99,7 @@ TEST(ListKeys, StrictMakesEveryUnknownKeyAnError) {
   EXPECT_EQ(run_nck("check --strict " + mill()).exit_code, 0);
   EXPECT_NE(run_nck("check --help").output.find("--strict"), std::string::npos);
   EXPECT_NE(run_nck("run --help").output.find("--strict"), std::string::npos);
+  EXPECT_NE(run_nck("serve --help").output.find("--strict"), std::string::npos);
   EXPECT_NE(read_file(root() + "/docs/cli.md").find("`--strict`"), std::string::npos);
 }
 
