@@ -18,7 +18,7 @@ struct ServeOptions {
   std::string speed = "1";             // simulated seconds per wall second, or "max"
   bool realtime = true;                // ask for SCHED_FIFO and locked memory
   bool paused = false;
-  std::size_t max_clients = 8;        // the last one kept for a request with the token
+  std::size_t max_clients = 8;         // connections with the token
   std::size_t max_anonymous = 4;       // connections without a token yet, per address
   double header_timeout_s = 5;         // a complete request, until one brought the token
   double rate = 50;                    // requests per second per client
