@@ -48,6 +48,7 @@ const SNAPSHOT_LAG_S = 0.1;
 
 const figures = { attacks: {}, mixes: 0, probes: 0, worstProbeMs: 0, checks: 0, failures: 0, cycleChecks: 0,
                   worstCycleDevMs: 0, rssKb: { start: 0, max: 0, end: 0, hwm: 0 }, notes: {} };
+const probeMs = [];  // every operator action's time, for the percentiles
 const expect = (name, cond, detail = "") => {
   figures.checks++;
   if (!cond) { figures.failures++; console.error(`FAIL ${name} ${detail}`); }
@@ -97,6 +98,10 @@ async function main() {
     expect("SIGTERM ends the server (143)", ended?.code === 143, JSON.stringify(ended));
   }
   figures.seconds = (Date.now() - t0) / 1000;
+  probeMs.sort((a, b) => a - b);
+  const at = (q) => Math.round(probeMs[Math.min(probeMs.length - 1, Math.floor(q * probeMs.length))] ?? 0);
+  figures.probeMsP50 = at(0.5);
+  figures.probeMsP99 = at(0.99);
   console.log(progress(t0));
   console.log(JSON.stringify(figures));
   const json = opt("json", "");
@@ -141,7 +146,8 @@ function operatorProbe(s) {
     }
     const ms = performance.now() - t0;
     figures.probes++;
-    figures.worstProbeMs = Math.max(figures.worstProbeMs, ms);
+    probeMs.push(ms);
+    if (ms > figures.worstProbeMs) Object.assign(figures, { worstProbeMs: ms, worstProbe: what });
     expect(`operator ${what}: feed override ${percent} % acknowledged and in the state within 1 s (${ms.toFixed(0)} ms)`,
            r.status === 200 && seen && ms <= 1000, `${r.status} ${r.body.slice(0, 160)}`);
   };
@@ -229,7 +235,7 @@ function rssKb(s, field = "VmRSS") {
 function progress(t0) {
   const total = Object.values(figures.attacks).reduce((a, b) => a + b, 0);
   return `${((Date.now() - t0) / 1000).toFixed(0)} s: ${total} attacks (${figures.mixes} mixes), ${figures.probes} operator actions, ` +
-    `worst ${figures.worstProbeMs.toFixed(0)} ms, cycle/wall ratio ${figures.cycleRatio?.toFixed(6)}, ` +
+    `worst ${figures.worstProbeMs.toFixed(0)} ms (${figures.worstProbe ?? "-"}), cycle/wall ratio ${figures.cycleRatio?.toFixed(6)}, ` +
     `worst cycle deviation ${figures.worstCycleDevMs.toFixed(1)} ms, RSS ${figures.rssKb.max} kB, ${figures.failures} failures`;
 }
 
