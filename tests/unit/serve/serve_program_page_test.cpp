@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <future>
+#include <memory>
 #include <string>
 #include <thread>
 
@@ -69,9 +70,10 @@ TEST(ServeProgramPage, NeitherALinkNorAFifoInThePlaceOfTheProgramIsRead) {
   const auto link = nlohmann::json::parse(program_page(1, dir / "link.nc", 1));
   EXPECT_TRUE(link["lines"].empty()) << link.dump();
   ASSERT_EQ(::mkfifo((dir / "fifo.nc").c_str(), 0600), 0);
-  std::promise<std::string> answer;
-  auto got = answer.get_future();
-  std::thread([&answer, p = dir / "fifo.nc"] { answer.set_value(program_page(1, p, 1)); }).detach();
+  // the thread owns the promise with the test: it may still be in set_value when the test ends
+  auto answer = std::make_shared<std::promise<std::string>>();
+  auto got = answer->get_future();
+  std::thread([answer, p = dir / "fifo.nc"] { answer->set_value(program_page(1, p, 1)); }).detach();
   const bool in_time = got.wait_for(std::chrono::seconds(2)) == std::future_status::ready;
   if (!in_time) {  // a writer releases the reader stuck in open(), so that the test ends
     const int fd = ::open((dir / "fifo.nc").c_str(), O_WRONLY | O_NONBLOCK);
