@@ -25,7 +25,8 @@
         (e) => { report(e, `channel ${n}: ${command}`); return false; });
       this.controls = [C.cyclePanel(this.send), C.overridePanel(this.send), C.skipPanel(this.send),
         C.spindlePanel(this.send, machine.spindles), C.jogPanel(this.send, machine.axes), C.mdiPanel(this.send)];
-      this.program = new window.NckProgramView((nr, line) => this.search(nr, line));
+      this.program = new window.NckProgramView((nr, line) => this.search(nr, line),
+        (from) => api.get(`/api/v1/program?channel=${n}&from=${from}`), (e) => report(e, `channel ${n}: program text`));
       this.el = el("section", { class: "channel", "data-channel": n },
         this.header(), el("div", { class: "channel-body" },
           el("div", { class: "col controls" }, this.dro(), ...this.controls.map((c) => c.el)),

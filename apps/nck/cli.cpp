@@ -321,7 +321,7 @@ int main_cli(int argc, char** argv) {
   servec->add_flag("!--no-realtime", serve.realtime, "do not ask for real-time scheduling and locked memory");
   servec->add_flag("--strict", serve.strict_keys, kStrictHelp);
   servec->add_flag("--paused", serve.paused, "start with the kernel's cycles paused (step them from the API)");
-  servec->add_option("--max-clients", serve.max_clients, "connections served at once (default 8)")
+  servec->add_option("--max-clients", serve.max_clients, "connections with the token served at once (default 8)")
       ->check(number_at_least(1, true));
   servec->add_option("--max-anonymous", serve.max_anonymous,
                      "connections per address that have sent no token yet (default 4)")

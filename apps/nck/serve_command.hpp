@@ -19,7 +19,7 @@ struct ServeOptions {
   bool strict_keys = false;            // --strict: every unknown list key is an error (910032)
   bool realtime = true;                // ask for SCHED_FIFO and locked memory
   bool paused = false;
-  std::size_t max_clients = 8;        // the last one kept for a request with the token
+  std::size_t max_clients = 8;         // connections with the token
   std::size_t max_anonymous = 4;       // connections without a token yet, per address
   double header_timeout_s = 5;         // a complete request, until one brought the token
   double rate = 50;                    // requests per second per client

@@ -34,6 +34,15 @@ constexpr auto kDrainTimeout = std::chrono::seconds(2);
 // A connection younger than this is not evicted: a browser opens several
 // at once, and each is without a token until its request has been read.
 constexpr auto kEvictionGrace = std::chrono::milliseconds(250);
+// A connection without the token that has sent nothing for this long is
+// the first to make room: a client sends its request as soon as it is
+// connected (the operator's may be accepted a moment before its bytes come).
+constexpr auto kSilentGrace = std::chrono::milliseconds(10);
+// A stream's socket buffer. Left to the kernel it grew to 4 MB for a client
+// that reads nothing (tcp_wmem): the backlog bound (max_stream_backlog) only
+// counts once the socket is full, and that took minutes at 40 frames/s. 64 KiB
+// holds about two seconds of frames, more than a reader on any link needs.
+constexpr int kStreamSendBuffer = 64 * 1024;
 
 }  // namespace
 
@@ -58,7 +67,8 @@ struct HttpServer::Impl {
   tcp::acceptor acceptor{io};
   std::optional<ServerNames> names;
   std::vector<std::weak_ptr<Connection>> streams;
-  std::size_t clients = 0;      // every connection (each one counted by its constructor)
+  std::size_t clients = 0;      // connections a request with the token came on (bound: max_clients)
+  std::size_t strangers = 0;    // connections without the token yet (bound: max_anonymous)
   std::deque<std::weak_ptr<Connection>> arrivals;  // oldest first: whom to evict
   std::map<std::string, std::size_t> anonymous;  // per address: connections without a valid token yet
   asio::steady_timer tick{io};
@@ -67,8 +77,9 @@ struct HttpServer::Impl {
   Impl(ApiHandler& h, std::string t, HttpLimits l) : handler(h), token(std::move(t)), limits(l) {}
   void accept();
   void admit(const std::shared_ptr<Connection>& c);
-  // Closes the oldest connection without a token (of `address`, or any); false when there is none.
-  bool evict_anonymous(const std::shared_ptr<Connection>& newcomer, const std::string* address, ErrorId why);
+  // Closes the oldest connection without a token for which may_go(it) holds; false when there is none.
+  template <class Pred>
+  bool evict_oldest(const std::shared_ptr<Connection>& newcomer, ErrorId why, const Pred& may_go);
   void on_tick();
   // The checks every request passes; a refusal, or nothing when it may go on.
   std::optional<HttpReply> check(const http::request<http::string_body>& req, RequestBudget& budget) const;
@@ -84,7 +95,7 @@ class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connect
       : server_(server), stream_(std::move(socket)), budget_(server.limits.requests_per_s) {
     beast::error_code ec;
     address_ = stream_.socket().remote_endpoint(ec).address().to_string();
-    ++server_.clients;
+    ++server_.strangers;
     ++server_.anonymous[address_];
   }
   ~Connection() { leave(); }
@@ -93,18 +104,23 @@ class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connect
   const std::string& address() const { return address_; }
   bool anonymous() const { return !authenticated_ && counted_; }
   bool young(std::chrono::steady_clock::time_point now) const { return now - born_ < kEvictionGrace; }
+  std::chrono::steady_clock::time_point born() const { return born_; }
+  // No byte of a request has come: none parsed or buffered, none waiting in the socket.
+  bool silent() {
+    beast::error_code ec;
+    return buffer_.size() == 0 && !(parser_ && parser_->got_some()) && stream_.socket().available(ec) == 0;
+  }
   // Closed to make room for a newer connection: it brought no token in its
   // time. It gets the reason unless it is sending an answer.
   void evict(ErrorId why) {
+    evicted_ = true;
     leave();
     if (writing_) return close();
     reply(error_reply(503, why, why == ErrorId::ApiTooManyFromAddress
                                     ? "this address holds too many connections without the token: the oldest goes"
-                                    : "too many clients are connected: one without the token makes room"),
+                                    : "too many connections without the token: the oldest goes"),
           After::close);
   }
-  // One answer, then the connection goes (the client bound holds).
-  void refuse(const HttpReply& r) { reply(r, After::close); }
   // A stream frame (shared by every stream client); drops a client that lags.
   void send(const std::shared_ptr<const std::string>& frame) {
     if (outbox_.size() >= server_.limits.max_stream_backlog) return close();
@@ -149,6 +165,7 @@ class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connect
     });
   }
   void on_header(beast::error_code ec) {
+    if (evicted_) return;  // the 503 is the answer (and its write closes the connection)
     if (header_late_) return request_timeout();
     if (ec == http::error::header_limit)
       return reply(error_reply(431, ErrorId::ApiHeadersTooLarge,
@@ -156,9 +173,15 @@ class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connect
                    After::drain_and_close);
     if (ec == http::error::body_limit || ec == http::error::bad_content_length) return too_large();
     if (ec) return close();
-    const bool upload = parser_->get().target().starts_with("/api/v1/upload");
+    const http::request<http::string_body>& req = parser_->get();
+    const bool upload = req.target().starts_with("/api/v1/upload");
     const std::size_t limit = upload ? server_.limits.max_upload_bytes : server_.limits.max_command_bytes;
     if (const auto length = parser_->content_length(); length && *length > limit) return too_large();
+    // The header decides. A connection without the token is refused before
+    // the body is read, so it never holds one (up to --max-program); a
+    // client's refusal (429) waits for the body, and its connection stays.
+    refusal_ = admit_request(req);
+    if (refusal_ && !authenticated_) return reply(*refusal_, parser_->is_done() ? after(req) : After::drain_and_close);
     parser_->body_limit(limit);  // a chunked body is counted as it comes
     http::async_read(stream_, buffer_, *parser_,
                      [self = shared_from_this()](beast::error_code e, std::size_t) { self->on_request(e); });
@@ -172,21 +195,35 @@ class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connect
   }
   void on_request(beast::error_code ec) {
     header_timer_.cancel();  // the whole request came (or failed) in time
+    // Evicted while its request was still coming: it ran all the same, and
+    // its answer was a second write beside the 503 (issue 45's attack campaign).
+    if (evicted_) return;
     if (header_late_) return request_timeout();
     if (ec == http::error::body_limit) return too_large();
     if (ec) return close();
     const http::request<http::string_body>& req = parser_->get();
-    const After after = req.keep_alive() ? After::next_request : After::close;
-    if (!authenticated_ && counted_ && server_.has_token(req)) {
-      forget_anonymous();
-      authenticated_ = true;
-    }
-    if (auto refused = server_.check(req, budget_)) return reply(*refused, after);
+    if (refusal_) return reply(*refusal_, after(req));
     if (req.method() == http::verb::get && req.target() == "/api/v1/stream") return start_stream(last_event_id(req));
     const HttpRequest r{std::string_view(req.method_string().data(), req.method_string().size()),
                         std::string_view(req.target().data(), req.target().size()),
                         std::string_view(req.body().data(), req.body().size())};
-    reply(server_.handler.handle(r), after);
+    reply(server_.handler.handle(r), after(req));
+  }
+  static After after(const http::request<http::string_body>& req) {
+    return req.keep_alive() ? After::next_request : After::close;
+  }
+  // A request with the token makes its connection a client (past
+  // max_clients: 503); then the checks every request passes.
+  std::optional<HttpReply> admit_request(const http::request<http::string_body>& req) {
+    if (!authenticated_ && counted_ && server_.has_token(req)) {
+      if (server_.clients >= server_.limits.max_clients)
+        return error_reply(503, ErrorId::ApiTooManyClients,
+                           fmt::format("{} clients with the token are connected", server_.clients));
+      forget_anonymous();
+      authenticated_ = true;
+      ++server_.clients;
+    }
+    return server_.check(req, budget_);
   }
   void reply(const HttpReply& r, After after) {
     auto res = std::make_shared<http::response<http::string_body>>(static_cast<http::status>(r.status), 11);
@@ -232,6 +269,8 @@ class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connect
     return ec == std::errc{} && end == v.data() + v.size() ? std::optional(id) : std::nullopt;
   }
   void start_stream(std::optional<std::uint64_t> last_id) {
+    beast::error_code ec;
+    stream_.socket().set_option(asio::socket_base::send_buffer_size(kStreamSendBuffer), ec);
     server_.streams.push_back(weak_from_this());
     std::string head =
         "HTTP/1.1 200 OK\r\nContent-Type: text/event-stream\r\nCache-Control: no-store\r\n"
@@ -260,11 +299,12 @@ class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connect
   // The server's counts without this connection (once).
   void leave() {
     if (!counted_) return;
-    if (!authenticated_) forget_anonymous();
-    --server_.clients;
+    if (authenticated_) --server_.clients;
+    else forget_anonymous();
     counted_ = false;
   }
   void forget_anonymous() {
+    --server_.strangers;
     if (const auto it = server_.anonymous.find(address_); it != server_.anonymous.end() && --it->second == 0)
       server_.anonymous.erase(it);
   }
@@ -276,6 +316,8 @@ class HttpServer::Impl::Connection : public std::enable_shared_from_this<Connect
   bool writing_ = false;        // an answer is on its way
   std::chrono::steady_clock::time_point born_ = std::chrono::steady_clock::now();
   bool header_late_ = false;    // the header timeout ended the read
+  bool evicted_ = false;        // made room for a newer connection: nothing it sends counts
+  std::optional<HttpReply> refusal_;  // the answer the request's header earned, given after its body
   beast::tcp_stream stream_;
   asio::steady_timer header_timer_{stream_.get_executor()};  // after stream_: made from it
   beast::flat_buffer buffer_;
@@ -295,29 +337,36 @@ void HttpServer::Impl::accept() {
   });
 }
 
-// A connection that has brought no token yet (and is older than
-// kEvictionGrace) yields its slot to a newer one: silent sockets (held at
-// most the header timeout anyway) never lock the operator out. Per address
-// at most max_anonymous_per_address of them; past the client bound the
-// oldest anonymous one goes, and only when none can go is the newcomer
-// refused.
+// A connection that has brought no token yet yields its place to a newer
+// one: silent sockets (held at most the header timeout anyway) never lock
+// the operator out. Per address at most max_anonymous_per_address of them:
+// the oldest older than kEvictionGrace goes (a browser opens several at
+// once). Past max_anonymous in all, one goes whatever its age: the oldest
+// that has sent nothing for kSilentGrace, else the oldest. A newcomer never
+// waits for a place, and the operator's connection only has to bring its
+// request before max_anonymous newer ones came (issue 45's attack campaign:
+// in the client bound's 8 places, a flood of new sockets kept every place
+// young and the operator got 503 for as long as it lasted).
 void HttpServer::Impl::admit(const std::shared_ptr<Connection>& c) {
   std::erase_if(arrivals, [](const std::weak_ptr<Connection>& w) { return w.expired(); });
   arrivals.push_back(c);
-  if (anonymous[c->address()] > limits.max_anonymous_per_address)
-    (void)evict_anonymous(c, &c->address(), ErrorId::ApiTooManyFromAddress);
-  if (clients > limits.max_clients && !evict_anonymous(c, nullptr, ErrorId::ApiTooManyClients))
-    return c->refuse(error_reply(503, ErrorId::ApiTooManyClients, "too many clients are connected"));
+  const auto now = std::chrono::steady_clock::now();
+  const std::string& from = c->address();
+  if (anonymous[from] > limits.max_anonymous_per_address)
+    (void)evict_oldest(c, ErrorId::ApiTooManyFromAddress,
+                       [&](const Connection& old) { return old.address() == from && !old.young(now); });
+  if (strangers > limits.max_anonymous &&
+      !evict_oldest(c, ErrorId::ApiTooManyClients,
+                    [&](Connection& old) { return now - old.born() > kSilentGrace && old.silent(); }))
+    (void)evict_oldest(c, ErrorId::ApiTooManyClients, [](const Connection&) { return true; });
   c->start();
 }
 
-bool HttpServer::Impl::evict_anonymous(const std::shared_ptr<Connection>& newcomer, const std::string* address,
-                                       ErrorId why) {
-  const auto now = std::chrono::steady_clock::now();
+template <class Pred>
+bool HttpServer::Impl::evict_oldest(const std::shared_ptr<Connection>& newcomer, ErrorId why, const Pred& may_go) {
   for (const std::weak_ptr<Connection>& w : arrivals) {
     const auto old = w.lock();
-    if (!old || old == newcomer || !old->anonymous() || old->young(now) || (address && old->address() != *address))
-      continue;
+    if (!old || old == newcomer || !old->anonymous() || !may_go(*old)) continue;
     old->evict(why);
     return true;
   }

@@ -252,7 +252,14 @@ HttpReply ServeApi::program_text(std::string_view target) const {
   const std::string_view from_text = query_value(target, "from");
   const long long from = from_text.empty() ? 1 : std::atoll(std::string(from_text).c_str());
   if (from < 1) return error_reply(400, ErrorId::ApiBadValue, "'from' is a line number from 1 on");
-  return HttpReply{200, "application/json", program_page(ch, programs_[ch - 1], static_cast<std::size_t>(from)), {}};
+  const std::filesystem::path& loaded = programs_[ch - 1];
+  if (loaded.empty()) return HttpReply{200, "application/json", program_page(ch, loaded, static_cast<std::size_t>(from)), {}};
+  // Resolved again: since the load the file may have become a link out of
+  // the folders (its text was served), a FIFO or a larger file.
+  const auto now = folders_.resolve(loaded.string());
+  if (!now) return error_reply(400, now.error());
+  return HttpReply{200, "application/json",
+                   program_page(ch, loaded, static_cast<std::size_t>(from), kMaxProgramPageBytes, *now), {}};
 }
 
 HttpReply ServeApi::upload(std::string_view target, std::string_view body) {

@@ -1,13 +1,15 @@
 // Browser test of nck serve's HMI: starts `nck serve examples/mill
 // examples/mill/contour.nc` in real time, opens the page in Debian's
 // chromium (playwright-core), operates it as a user does (buttons, slider,
-// MDI box, a click on a program line) and checks what the machine does.
+// MDI box, a click on a program line) and checks what the machine does;
+// a program longer than one page of the API (hmi_paging.mjs).
 // Usage:
 //   node tests/browser/hmi_test.mjs --nck BIN --source DIR --out DIR [--screenshot FILE]
 // --screenshot: also save the README's picture there (docs/img/hmi.png).
 import { chromium } from "playwright-core";
 import fs from "node:fs";
 import path from "node:path";
+import { checkProgramPages } from "./hmi_paging.mjs";
 import { startServer } from "./hmi_server.mjs";
 
 const args = Object.fromEntries(process.argv.slice(2).reduce((acc, a, i, all) => {
@@ -283,6 +285,7 @@ async function run(browser, url, port) {
   await checkMdi(h);
   await checkJog(h);
   await checkMdiError(h);
+  await checkProgramPages(h, { expect, fail });
   expect(!problems.length, "no console errors or warnings", "console: " + problems.join(" | "));
   expect(!foreign.length, "no request beyond the server", "requests beyond the server: " + foreign.join(", "));
   await context.close();

@@ -72,8 +72,9 @@ function record(method, target, body, res, data) {
 
 // One request; resolves with {status, headers, body} (status 0 and the
 // error as body on a reset connection). agent: an http.Agent for
-// keep-alive, else a connection of its own.
-export function request(s, method, target, { body, headers = {}, token = true, host, agent = false } = {}) {
+// keep-alive, else a connection of its own. timeout: ms until the request
+// is given up (status 0), so that a server that hangs fails a check.
+export function request(s, method, target, { body, headers = {}, token = true, host, agent = false, timeout } = {}) {
   return new Promise((resolve) => {
     const h = host === "" ? { ...headers } : { Host: host ?? `127.0.0.1:${s.port}`, ...headers };
     if (token && !h.Authorization) h.Authorization = `Bearer ${s.token}`;
@@ -89,6 +90,7 @@ export function request(s, method, target, { body, headers = {}, token = true, h
       res.on("error", () => resolve({ status: res.statusCode, headers: res.headers, body: data }));
     });
     req.on("error", (e) => resolve({ status: 0, headers: {}, body: String(e) }));
+    if (timeout) req.setTimeout(timeout, () => req.destroy(new Error(`no answer within ${timeout} ms`)));
     if (body !== undefined) req.write(body);
     req.end();
   });

@@ -1,8 +1,10 @@
 #pragma once
-// nck serve's HTTP side (Boost.Beast over Asio, one thread): it accepts at
-// most `max_clients` connections, checks Host and Origin on every request,
-// the token on everything under /api/, a request budget per connection and
-// the body size, and hands what passes to an ApiHandler. GET /api/v1/stream
+// nck serve's HTTP side (Boost.Beast over Asio, one thread): it serves at
+// most `max_clients` connections with the token (and `max_anonymous`
+// without one yet, the oldest making room), checks Host and Origin on every
+// request, the token on everything under /api/ (before a body is read), a
+// request budget per connection and the body size, and hands what passes
+// to an ApiHandler. GET /api/v1/stream
 // turns a connection into a server-sent-events stream that gets, every
 // `stream_period`, the frames the handler collects. Nothing a client sends
 // reaches the kernel but through the handler.
@@ -22,8 +24,9 @@
 namespace nck::app::serve {
 
 struct HttpLimits {
-  std::size_t max_clients = 8;           // beyond: the oldest connection without a token yet goes, else 503
+  std::size_t max_clients = 8;           // connections with the token; one more request with it: 503
   std::size_t max_anonymous_per_address = 4;  // connections without a token yet, per address (the oldest goes)
+  std::size_t max_anonymous = 64;        // connections without a token yet, in all (the oldest goes)
   std::chrono::milliseconds header_timeout{5000};  // a connection's complete request, until one had the token
   double requests_per_s = 50;            // per connection; beyond: 429
   std::size_t max_command_bytes = 64 * 1024;

@@ -16,7 +16,9 @@ inline constexpr std::size_t kMaxShownLineBytes = 64 * 1024;          // a longe
 // (empty: none loaded), lines from `first_line` (1-based) on, at most
 // `max_bytes` long: {"channel", "file", "path", "first_line", "lines",
 // "next_line"} (next_line: the first line not sent, or null at the end).
+// The lines are read from `source` (default: `path`), and only when it is
+// a regular file that is no symbolic link (else there are none).
 std::string program_page(std::size_t channel, const std::filesystem::path& path, std::size_t first_line,
-                         std::size_t max_bytes = kMaxProgramPageBytes);
+                         std::size_t max_bytes = kMaxProgramPageBytes, const std::filesystem::path& source = {});
 
 }  // namespace nck::app::serve
