@@ -15,6 +15,7 @@ from ._errors import ActionError, ArgumentError, ConfigError, Error, ProgramErro
 from ._machine import Machine, Run
 from ._session import Session
 from ._batch import batch
+from ._closed import alive as _alive
 
 #: The version of the nck build this module belongs to ("0.3.0": CMake's
 #: project(VERSION), as ``nck --version`` prints it).
@@ -51,7 +52,7 @@ def parse(program, machine=None, channel=1, max_wall=None):
         machine = Machine(_args.path(machine, "machine"))
     ch = _args.whole(channel, "channel", 1)  # the core says when the machine has no such channel
     wall = _args.optional_positive(max_wall, "max_wall")
-    return _nck.parse(path, machine._m if machine is not None else None, ch, wall)
+    return _nck.parse(path, _alive(machine._m) if machine is not None else None, ch, wall)
 
 
 def errors():

@@ -1,5 +1,7 @@
 """nck.Machine and nck.Run: load a machine folder, run NC programs on it."""
 from . import _args, _nck
+from ._closed import closed
+from ._errors import ArgumentError
 
 
 class Run:
@@ -31,6 +33,17 @@ class Run:
     def __init__(self, result):
         self._r = result
 
+    # Pickling (a batch's worker returns a Run; a process pool sends it
+    # back): the compiled result cannot cross processes, so its public
+    # values go as plain data and come back as a _PlainResult that answers
+    # the same attribute reads.
+    def __getstate__(self):
+        r = self._r
+        return {name: getattr(r, name) for name in _PlainResult.FIELDS}
+
+    def __setstate__(self, state):
+        self._r = _PlainResult(state)
+
     exit = property(lambda self: self._r.exit)
     time_s = property(lambda self: self._r.time_s)
     end = property(lambda self: self._r.end)
@@ -55,6 +68,26 @@ class Run:
 
     def __repr__(self):
         return f"<nck.Run exit={self.exit} end={self.end} time_s={self.time_s:.3f} errors={len(self.errors)}>"
+
+
+class _PlainResult:
+    """A Run's values as plain data (an unpickled Run): the attributes of
+    the compiled result, and event(i) from the event dicts."""
+
+    FIELDS = ("exit", "time_s", "end", "summary", "messages", "errors", "warnings", "events", "event_records",
+              "event_bytes", "final", "trace")
+
+    def __init__(self, state):
+        missing = [name for name in self.FIELDS if name not in state]
+        if missing:
+            raise ArgumentError(f"a pickled nck.Run without {', '.join(missing)}", _args.BAD_ARGUMENT)
+        self.__dict__.update({name: state[name] for name in self.FIELDS})
+
+    def event(self, i):
+        n = len(self.events)
+        if not -n <= i < n:
+            raise ArgumentError(f"event({i}): the run kept {n} event(s)", _args.BAD_ARGUMENT)
+        return self.events[i]
 
 
 class Machine:
@@ -152,5 +185,26 @@ class Machine:
         from ._session import Session
         return Session(self, program, plc, max_events_mb)
 
+    # -- closing -----------------------------------------------------------
+    def close(self):
+        """Frees the machine's data (the sessions open on it keep what they
+        use); any later call raises ArgumentError 940201. Closing twice is
+        allowed."""
+        self._m = closed("machine")
+
+    @property
+    def closed(self):
+        """True after close()."""
+        return not self._m
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
     def __repr__(self):
+        if self.closed:
+            return "<nck.Machine closed>"
         return f"<nck.Machine {self.path!r} channels={self.channels}>"

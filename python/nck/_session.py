@@ -1,6 +1,7 @@
 """nck.Session: a machine running cycle by cycle, operated from Python."""
 from . import _args, _nck
 from ._args import whole as _whole
+from ._closed import alive, closed
 from ._errors import ArgumentError
 
 
@@ -42,7 +43,7 @@ class Session:
 
     def __init__(self, machine, program=None, plc=None, max_events_mb=256):
         self._machine = machine
-        self._s = _nck._Session(machine._m, _args.paths(program, "program"), _args.optional_path(plc, "plc"),
+        self._s = _nck._Session(alive(machine._m), _args.paths(program, "program"), _args.optional_path(plc, "plc"),
                                 _args.positive(max_events_mb, "max_events_mb"))
 
     # -- running -----------------------------------------------------------
@@ -171,5 +172,26 @@ class Session:
         """Kernel cycles run."""
         return self._s.cycles
 
+    # -- closing -----------------------------------------------------------
+    def close(self):
+        """Ends the session and frees its simulation (a call another thread
+        is making finishes first, on the simulation it holds); any later
+        call raises ArgumentError 940201. Closing twice is allowed."""
+        self._s = closed("session")
+
+    @property
+    def closed(self):
+        """True after close()."""
+        return not self._s
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
     def __repr__(self):
+        if self.closed:
+            return "<nck.Session closed>"
         return f"<nck.Session t={self.time_s:.3f} s cycles={self.cycles}>"
