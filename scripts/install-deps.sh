@@ -10,6 +10,7 @@ pkgs=(build-essential g++ cmake ninja-build pkg-config
       nodejs chromium               # the report's uPlot and three.js (inlined at build time) and its browser test
       pybind11-dev python3-dev python3-numpy   # the Python module (python/, docs/python.md)
       python3-pytest python3-distributed       # its tests; nck.batch on Dask
+      python3-pandas                           # nck.batch(as_frame=True) (optional for users)
       python3-matplotlib                       # examples/python/accel_sweep.py plots (CSV without it)
       python3-setuptools python3-wheel python3-build python3-venv python3-pip  # the wheel (python/pyproject.toml)
       python3-jsonschema)                      # docs/openapi.json checked against the API tests

@@ -222,7 +222,7 @@ int main_cli(int argc, char** argv) {
   runc->add_option("--events", run.events, "write events as JSON lines to FILE (- for stdout)")->type_name("FILE");
   runc->add_option("--trace", run.trace, "write set points as CSV to FILE (- for stdout)")->type_name("FILE");
   runc->add_option("--trace-every", run.trace_every, "trace every Nth cycle")->check(number_at_least(1, true));
-  runc->add_option("--trace-columns", run.trace_columns, "extra trace columns: path.a,path.j (path acceleration, jerk)")
+  runc->add_option("--trace-columns", run.trace_columns, "extra trace columns: path.v,path.a,path.j (path velocity, acceleration, jerk)")
       ->type_name("LIST")
       ->check(CLI::Validator(
           [](const std::string& v) {

@@ -1,5 +1,7 @@
 """nck.Machine and nck.Run: load a machine folder, run NC programs on it."""
-from . import _args, _nck
+from . import _args, _nck, _scenario
+from ._closed import closed
+from ._errors import ArgumentError
 
 
 class Run:
@@ -31,6 +33,17 @@ class Run:
     def __init__(self, result):
         self._r = result
 
+    # Pickling (a batch's worker returns a Run; a process pool sends it
+    # back): the compiled result cannot cross processes, so its public
+    # values go as plain data and come back as a _PlainResult that answers
+    # the same attribute reads.
+    def __getstate__(self):
+        r = self._r
+        return {name: getattr(r, name) for name in _PlainResult.FIELDS}
+
+    def __setstate__(self, state):
+        self._r = _PlainResult(state)
+
     exit = property(lambda self: self._r.exit)
     time_s = property(lambda self: self._r.time_s)
     end = property(lambda self: self._r.end)
@@ -55,6 +68,26 @@ class Run:
 
     def __repr__(self):
         return f"<nck.Run exit={self.exit} end={self.end} time_s={self.time_s:.3f} errors={len(self.errors)}>"
+
+
+class _PlainResult:
+    """A Run's values as plain data (an unpickled Run): the attributes of
+    the compiled result, and event(i) from the event dicts."""
+
+    FIELDS = ("exit", "time_s", "end", "summary", "messages", "errors", "warnings", "events", "event_records",
+              "event_bytes", "final", "trace")
+
+    def __init__(self, state):
+        missing = [name for name in self.FIELDS if name not in state]
+        if missing:
+            raise ArgumentError(f"a pickled nck.Run without {', '.join(missing)}", _args.BAD_ARGUMENT)
+        self.__dict__.update({name: state[name] for name in self.FIELDS})
+
+    def event(self, i):
+        n = len(self.events)
+        if not -n <= i < n:
+            raise ArgumentError(f"event({i}): the run kept {n} event(s)", _args.BAD_ARGUMENT)
+        return self.events[i]
 
 
 class Machine:
@@ -92,13 +125,16 @@ class Machine:
         return self._m.warnings
 
     def run(self, program, plc=None, start_at=None, stop_at=None, trace_every=None, max_time=86400.0,
-            max_wall=None, max_trace_mb=512, events=True, max_events_mb=256):
+            max_wall=None, max_trace_mb=512, events=True, max_events_mb=256, override=None, feedhold=None,
+            trace_columns="path.v"):
         """Runs a program to its end, as ``nck run MACHINE PROGRAM`` does,
         in this process, and returns a ``Run``.
 
         Args:
             program: the NC program's path, or a list of them (one per channel).
-            plc: a --plc scenario file (docs/plc-scenario.md).
+            plc: a --plc scenario file (docs/plc-scenario.md), or its lines
+                as a list of str (["0.5 feedhold on", "1.0 feedhold off"]):
+                no file needed.
             start_at: a block search: "N100[:pass][@program]", "block:K" or
                 "offset:BYTES" (docs/operating.md).
             stop_at: where the run ends: "N100", "line:12", "block:7",
@@ -107,6 +143,10 @@ class Machine:
                 (``Run.trace``). Memory: rows x columns x 8 bytes, e.g. a
                 100 s run at 1 ms with 6 columns and N=1 is 4.8 MB (growth
                 may hold up to twice that for a moment).
+            trace_columns: the trace's columns after the CSV's default ones,
+                as --trace-columns names them: "path.v" (the default: each
+                channel's path velocity, mm/s), "path.a", "path.j", a list
+                or a comma-separated str of them; None: the CSV's only.
             max_time: simulated-time limit, s (the run then ends "max_time").
             max_wall: wall-clock limit, s (None: none).
             max_trace_mb: the trace's memory limit; reaching it ends the run
@@ -119,18 +159,30 @@ class Machine:
                 run ("max_events", error 940204) rather than exhaust memory.
                 ``Run.events``' dicts take several times more when read;
                 ``Run.event_records`` 22 bytes per event.
+            override: channel 1's feed override in % from the start (the
+                scenario's "0 feed_override P"), or a dict {"feed": 80,
+                "rapid": 50, "S1": 120}; 0..200 as the HLI takes it, the
+                path at most 100 % (docs/decisions.md, "feed override").
+            feedhold: (on_s, off_s): channel 1 holds between these times;
+                or a list of such pairs.
+
+        override and feedhold are scenario lines too, before the plc's own:
+        a plc line at the same time acts after them.
 
         Raises:
-            ProgramError: the program does not exist, or the run cannot start.
+            ProgramError: the program does not exist, the scenario has an
+                error, or the run cannot start.
             ArgumentError: an argument nck cannot use.
 
         An NC error while running does not raise: ``Run.exit`` is 1 and
         ``Run.errors`` lists it.
         """
-        result = self._m.run(_args.paths(program, "program"), _args.optional_path(plc, "plc"),
+        plc_file, plc_texts = _scenario.plc_inputs(plc, override, feedhold)
+        result = self._m.run(_args.paths(program, "program"), plc_file, plc_texts,
                              _args.text(start_at, "start_at", optional=True),
                              _args.text(stop_at, "stop_at", optional=True),
-                             _args.whole(trace_every, "trace_every", 1, optional=True) or 0, _args.positive(max_time, "max_time"),
+                             _args.whole(trace_every, "trace_every", 1, optional=True) or 0,
+                             _scenario.trace_columns(trace_columns), _args.positive(max_time, "max_time"),
                              _args.optional_positive(max_wall, "max_wall"),
                              _args.positive(max_trace_mb, "max_trace_mb"), bool(events),
                              _args.positive(max_events_mb, "max_events_mb"))
@@ -152,5 +204,26 @@ class Machine:
         from ._session import Session
         return Session(self, program, plc, max_events_mb)
 
+    # -- closing -----------------------------------------------------------
+    def close(self):
+        """Frees the machine's data (the sessions open on it keep what they
+        use); any later call raises ArgumentError 940201. Closing twice is
+        allowed."""
+        self._m = closed("machine")
+
+    @property
+    def closed(self):
+        """True after close()."""
+        return not self._m
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
     def __repr__(self):
+        if self.closed:
+            return "<nck.Machine closed>"
         return f"<nck.Machine {self.path!r} channels={self.channels}>"

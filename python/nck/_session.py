@@ -1,6 +1,7 @@
 """nck.Session: a machine running cycle by cycle, operated from Python."""
 from . import _args, _nck
 from ._args import whole as _whole
+from ._closed import alive, closed
 from ._errors import ArgumentError
 
 
@@ -42,7 +43,7 @@ class Session:
 
     def __init__(self, machine, program=None, plc=None, max_events_mb=256):
         self._machine = machine
-        self._s = _nck._Session(machine._m, _args.paths(program, "program"), _args.optional_path(plc, "plc"),
+        self._s = _nck._Session(alive(machine._m), _args.paths(program, "program"), _args.optional_path(plc, "plc"),
                                 _args.positive(max_events_mb, "max_events_mb"))
 
     # -- running -----------------------------------------------------------
@@ -82,8 +83,13 @@ class Session:
         self._s.action(_args.text(line, "line"))
 
     def cycle_start(self, ch=1):
-        """Cycle start: releases a hold (M0/M1, single step, stop), or starts
-        the program again after a reset."""
+        """Cycle start, as nck serve's: on a channel that runs no program
+        (idle, after its end, a reset or an error) while the session has one
+        for it and no other channel runs one, the programs start again — a
+        new run (time from 0) that keeps the operator's switches (overrides,
+        single step, optional stop, mode, skip levels), the events not yet
+        taken and the errors. Otherwise it releases the channel's hold
+        (M0/M1, single step, stop)."""
         self._s.cycle_start(_whole(ch, "ch", 1))
 
     def hold(self, on=True, ch=1):
@@ -147,14 +153,17 @@ class Session:
     # -- reading -----------------------------------------------------------
     def state(self):
         """The state now: per channel axes (mcs, pcs), modal state, offsets,
-        program_state, block (line, n, file), path_velocity_mm_s, wait;
+        program_state, block (line, n, file), path_velocity_mm_s, wait and
+        the operator's switches (feed_override_pct, rapid_override_pct,
+        feedhold, single_step, optional_stop, manual_mode, skip_mask);
         spindles; the HLI; time "t"... the --final schema plus these."""
         return self._s.state()
 
     def events(self):
-        """The events (dicts of the JSONL schema) since the last call. At
-        most ``max_events_mb`` of them wait: past it the oldest half goes
-        and a ``warning`` event 940205 says so."""
+        """The events (dicts of the JSONL schema) since the last call, the
+        operator's actions among them ("ev": "operator", "action":
+        "feed_override 50"). At most ``max_events_mb`` of them wait: past it
+        the oldest half goes and a ``warning`` event 940205 says so."""
         return self._s.events()
 
     def errors(self):
@@ -171,5 +180,26 @@ class Session:
         """Kernel cycles run."""
         return self._s.cycles
 
+    # -- closing -----------------------------------------------------------
+    def close(self):
+        """Ends the session and frees its simulation (a call another thread
+        is making finishes first, on the simulation it holds); any later
+        call raises ArgumentError 940201. Closing twice is allowed."""
+        self._s = closed("session")
+
+    @property
+    def closed(self):
+        """True after close()."""
+        return not self._s
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
     def __repr__(self):
+        if self.closed:
+            return "<nck.Session closed>"
         return f"<nck.Session t={self.time_s:.3f} s cycles={self.cycles}>"

@@ -21,6 +21,7 @@ namespace nck::py {
 
 void bind_run(pyb::module_& m);
 void bind_session(pyb::module_& m);
+void bind_check(pyb::module_& m);
 
 namespace {
 
@@ -115,6 +116,7 @@ PYBIND11_MODULE(_nck, m) {
   py::bind_machine(m);
   py::bind_run(m);
   py::bind_session(m);
+  py::bind_check(m);
   m.def("parse", &py::parse, pybind11::arg("program"), pybind11::arg("machine"), pybind11::arg("channel"),
         pybind11::arg("max_wall_s"));
   m.def("errors", &py::errors);

@@ -8,6 +8,7 @@
 #include <pybind11/stl.h>
 
 #include "nck/config/load.hpp"
+#include "nck/output/trace_columns.hpp"
 #include "nck/run/simulation.hpp"
 #include "nck/run/start_at.hpp"
 #include "nck/run/stop_request.hpp"
@@ -53,6 +54,12 @@ app::RunOptions Machine::options(const RunArgs& a) const {
     raise("ArgumentError", ErrorId::AppBadArgument,
           fmt::format("{} programs for {} channel(s)", a.programs.size(), data.channels.size()));
   o.plc = a.plc;
+  o.plc_texts = a.plc_texts;
+  if (!a.trace_columns.empty()) {
+    const auto columns = app::parse_trace_columns(a.trace_columns);
+    if (!columns) raise("ArgumentError", ErrorId::AppBadArgument, "trace_columns: " + columns.error());
+    o.trace_columns = a.trace_columns;
+  }
   if (a.start_at) o.start_at = start_mark(*a.start_at);
   if (a.stop_at) {
     o.stop_at = app::parse_stop_at(*a.stop_at);
@@ -102,7 +109,9 @@ RunResult run(const Machine& m, const RunArgs& args) {
   if (!created) raise_setup(created.error());
   app::Simulation& s = **created;
   if (args.keep_events) s.outputs().event_memory.start(mb_bytes(args.max_events_mb), app::EventMemory::Full::end_run);
-  if (args.trace_every > 0) s.outputs().trace_memory.start(s.machine(), args.trace_every, mb_bytes(args.max_trace_mb));
+  if (args.trace_every > 0)
+    s.outputs().trace_memory.start(s.machine(), args.trace_every, mb_bytes(args.max_trace_mb),
+                                   app::parse_trace_columns(opt.trace_columns).value_or(app::TraceColumns{}));
   for (std::size_t i = 0; i < m.warnings.size(); ++i) s.outputs().summary.warning();
   const CtrlC ctrl_c(*s.own_stop_flag());  // ends the run as a wall-clock limit would
   {
@@ -135,15 +144,19 @@ void bind_machine(pyb::module_& mod) {
                              })
       .def(
           "run",
-          [](const Machine& m, std::vector<std::string> programs, std::string plc, std::optional<std::string> start_at,
-             std::optional<std::string> stop_at, std::uint64_t trace_every, double max_time_s, double max_wall_s,
-             double max_trace_mb, bool keep_events, double max_events_mb) {
-            return run(m, RunArgs{std::move(programs), std::move(plc), std::move(start_at), std::move(stop_at),
-                                  trace_every, max_time_s, max_wall_s, max_trace_mb, keep_events, max_events_mb});
+          [](const Machine& m, std::vector<std::string> programs, std::string plc,
+             const std::vector<std::pair<std::string, std::string>>& plc_texts, std::optional<std::string> start_at,
+             std::optional<std::string> stop_at, std::uint64_t trace_every, std::string trace_columns,
+             double max_time_s, double max_wall_s, double max_trace_mb, bool keep_events, double max_events_mb) {
+            RunArgs a{std::move(programs), std::move(plc), {}, std::move(trace_columns), std::move(start_at),
+                      std::move(stop_at), trace_every, max_time_s, max_wall_s, max_trace_mb, keep_events,
+                      max_events_mb};
+            for (const auto& [name, text] : plc_texts) a.plc_texts.push_back({name, text});
+            return run(m, a);
           },
-          pyb::arg("programs"), pyb::arg("plc"), pyb::arg("start_at"), pyb::arg("stop_at"), pyb::arg("trace_every"),
-          pyb::arg("max_time_s"), pyb::arg("max_wall_s"), pyb::arg("max_trace_mb"), pyb::arg("keep_events"),
-          pyb::arg("max_events_mb"));
+          pyb::arg("programs"), pyb::arg("plc"), pyb::arg("plc_texts"), pyb::arg("start_at"), pyb::arg("stop_at"),
+          pyb::arg("trace_every"), pyb::arg("trace_columns"), pyb::arg("max_time_s"), pyb::arg("max_wall_s"),
+          pyb::arg("max_trace_mb"), pyb::arg("keep_events"), pyb::arg("max_events_mb"));
 }
 
 }  // namespace nck::py

@@ -16,6 +16,8 @@ namespace nck::py {
 struct RunArgs {
   std::vector<std::string> programs;  // one per channel
   std::string plc;
+  std::vector<app::RunOptions::PlcText> plc_texts;  // override=, feedhold=, a plc list (before the file)
+  std::string trace_columns;                         // "path.v,path.a" (--trace-columns)
   std::optional<std::string> start_at, stop_at;
   std::uint64_t trace_every = 0;  // 0: no trace
   double max_time_s = 86400;

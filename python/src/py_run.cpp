@@ -114,6 +114,7 @@ void bind_run(pyb::module_& m) {
   pyb::list kinds;
   for (std::size_t k = 0; k < std::variant_size_v<kernel::EventPayload>; ++k)
     kinds.append(kernel::event_name(static_cast<kernel::EventKind>(k)));
+  kinds.append(app::kOperatorEventName);  // a session's operator actions (index kOperatorEventKind)
   m.attr("EVENT_KINDS") = pyb::tuple(kinds);
   pyb::class_<RunResult>(m, "_RunResult")
       .def_readonly("exit", &RunResult::exit)

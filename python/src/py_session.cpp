@@ -56,21 +56,23 @@ class Session {
     RunArgs args;
     args.programs = std::move(programs);
     args.plc = std::move(plc);
-    app::RunOptions opt = m.options(args);
-    opt.operator_present = true;
-    auto created = app::Simulation::create(m.data, opt, app::Simulation::Host::embedded);
-    if (!created) {
-      NckError e{"ProgramError", {}};
-      for (const Diagnostic& d : created.error().items())
-        if (d.severity == Severity::error) e.diagnostics.push_back(d);
-      throw e;
-    }
-    sim_ = std::move(*created);
+    opt_ = m.options(args);
+    opt_.operator_present = true;
+    sim_ = simulation();
     // Events wait for events(); past the bound the oldest go (a ring), not the session.
     sim_->outputs().event_memory.start(mb_bytes(max_events_mb), app::EventMemory::Full::drop_oldest);
     // The operator presses cycle start: a hold (M0, single step, stop) waits for it.
     for (std::size_t ch = 1; ch <= m.data.channels.size(); ++ch)
-      operate(static_cast<std::int64_t>(ch), sim::act::AutoCycleStart{false});
+      operate(static_cast<std::int64_t>(ch), sim::act::AutoCycleStart{false}, {}, false);
+  }
+
+  // Cycle start. On a channel that runs no program (idle, after its end, a
+  // reset or an error) while the session has one for it, and no other
+  // channel runs one: the programs start again, as nck serve's cycle start
+  // starts them. Otherwise the hold (M0/M1, single step, stop) is released.
+  void cycle_start(std::int64_t ch) {
+    if (restarts(ch)) restart(ch);
+    else operate(ch, sim::act::CycleStart{});
   }
 
   void step(std::int64_t cycles) {
@@ -120,17 +122,21 @@ class Session {
   // One operator line the user typed ("feed_override 80", "ch=2 feedhold on", "mdi G0 X10").
   void action(const std::string& line) {
     Diagnostics ds;
-    run(sim::parse_operator_action(line, sim_->machine(), ds, "python"), ds);
+    const std::optional<sim::OperatorAction> op = sim::parse_operator_action(line, sim_->machine(), ds, "python");
+    if (op && op->action.kind() == sim::ActionKind::cycle_start && restarts(op->action.channel))
+      return restart(op->action.channel);  // as cycle_start(): a typed line means the same
+    run(op, ds);
   }
 
-  // A typed operator action for channel ch (1-based), checked as a scenario line.
-  void operate(std::int64_t ch, const sim::ActionPayload& payload, std::string mdi_text = {}) {
+  // A typed operator action for channel ch (1-based), checked as a scenario
+  // line; `record`: an "operator" event says so (not the session's own setup).
+  void operate(std::int64_t ch, const sim::ActionPayload& payload, std::string mdi_text = {}, bool record = true) {
     // Beyond 255 the channel is as wrong as at 255 (kMaxChannels is far below).
     sim::OperatorAction op{sim::ScenarioAction{}, std::move(mdi_text)};
     op.action.channel = static_cast<std::uint8_t>(std::clamp<std::int64_t>(ch, 0, 255));
     op.action.payload = payload;
     Diagnostics ds;
-    run(sim::check_operator_action(std::move(op), sim_->machine(), ds, "python", sim::Quoting::python), ds);
+    run(sim::check_operator_action(std::move(op), sim_->machine(), ds, "python", sim::Quoting::python), ds, record);
   }
 
   void skip_mask(std::int64_t ch, std::int64_t mask) {
@@ -228,16 +234,22 @@ class Session {
   std::uint64_t cycles() const { return sim_->run().kernel().cycles(); }
   pyb::list errors() const {
     pyb::list out;
+    for (const app::FinalError& e : past_errors_) out.append(error_dict(e));
     for (const app::FinalError& e : sim_->outputs().errors) out.append(error_dict(e));
     return out;
   }
   std::vector<std::string> messages() { return sim_->outputs().console.take(); }
 
  private:
-  void run(const std::optional<sim::OperatorAction>& op, const Diagnostics& ds) {
+  void run(const std::optional<sim::OperatorAction>& op, const Diagnostics& ds, bool record = true) {
     if (!op) throw NckError{"ActionError", ds.items()};
     if (std::optional<Diagnostic> refused = sim_->run().operate(*op)) throw NckError{"ActionError", {*refused}};
+    if (record) record_action(*op);
   }
+  std::unique_ptr<app::Simulation> simulation() const;
+  bool restarts(std::int64_t ch) const;
+  void restart(std::int64_t ch);
+  void record_action(const sim::OperatorAction& op);
   [[noreturn]] static void refuse(std::string_view line, ErrorId id, std::string_view message) {
     throw NckError{"ActionError", {sim::operator_action_refused(line, id, message, "python")}};
   }
@@ -257,7 +269,9 @@ class Session {
 
  private:
   const Machine* machine_;  // kept alive by the Python Session (keep_alive)
+  app::RunOptions opt_;     // the session's programs and scenario, for a restart
   std::unique_ptr<app::Simulation> sim_;
+  std::vector<app::FinalError> past_errors_;  // of the runs before a restart
   Turns turns_;
 };
 
@@ -303,6 +317,74 @@ void Session::submit_mdi(std::int64_t channel, const std::string& text) {
   operate(channel, sim::act::Mdi{}, std::string(t));
 }
 
+// A new run of the session's programs and scenario.
+std::unique_ptr<app::Simulation> Session::simulation() const {
+  auto created = app::Simulation::create(machine_->data, opt_, app::Simulation::Host::embedded);
+  if (!created) {
+    NckError e{"ProgramError", {}};
+    for (const Diagnostic& d : created.error().items())
+      if (d.severity == Severity::error) e.diagnostics.push_back(d);
+    throw e;
+  }
+  return std::move(*created);
+}
+
+// Channel ch (1-based) has a program and no channel runs one (a restart
+// would end another channel's program midway).
+bool Session::restarts(std::int64_t ch) const {
+  const kernel::Kernel& k = sim_->run().kernel();
+  if (ch < 1 || static_cast<std::size_t>(ch) > opt_.programs.size()) return false;
+  for (std::size_t c = 0; c < k.channel_count(); ++c) {
+    const kernel::ProgramState st = k.program_state(c);
+    if (st != kernel::ProgramState::idle && st != kernel::ProgramState::ended && st != kernel::ProgramState::error)
+      return false;
+  }
+  return true;
+}
+
+// The programs again from their start, as nck serve's cycle start loads a
+// new run: the operator's switches stay as they were (feed and rapid
+// override, single step, optional stop, mode, skip levels), the events not
+// yet taken and the errors so far are kept; time starts at 0 again.
+void Session::restart(std::int64_t ch) {
+  std::unique_ptr<app::Simulation> next = simulation();
+  const plc::HliImage& hli = sim_->run().machine().hli();
+  for (std::size_t c = 0; c < machine_->data.channels.size(); ++c) {
+    const plc::ChannelControl& was = hli.channel[c];
+    const auto n = static_cast<std::uint8_t>(c + 1);
+    for (const sim::ScenarioAction& a :
+         {sim::make_action(n, sim::act::AutoCycleStart{false}), sim::make_action(n, sim::act::FeedOverride{was.feed_override_percent}),
+          sim::make_action(n, sim::act::RapidOverride{was.rapid_override_percent}),
+          sim::make_action(n, sim::act::SingleStep{was.single_step}),
+          sim::make_action(n, sim::act::OptionalStop{was.optional_stop}), sim::make_action(n, sim::act::Mode{was.manual_mode}),
+          sim::make_action(n, sim::act::SkipMask{was.skip_mask})})
+      (void)next->run().machine().operate(a);
+  }
+  next->outputs().event_memory = std::move(sim_->outputs().event_memory);
+  past_errors_.insert(past_errors_.end(), sim_->outputs().errors.begin(), sim_->outputs().errors.end());
+  sim_ = std::move(next);
+  sim::OperatorAction op{sim::make_action(static_cast<std::uint8_t>(ch), sim::act::CycleStart{}), {}};
+  record_action(op);
+}
+
+// An operator action the session took, as an "operator" event (docs/outputs.md):
+// the scenario line it means, without the channel, which "ch" gives.
+void Session::record_action(const sim::OperatorAction& op) {
+  std::string line = sim::operator_line(op, sim::Quoting::api);
+  if (line.starts_with("ch=")) line.erase(0, std::min(line.size(), line.find(' ') + 1));
+  if (op.action.kind() == sim::ActionKind::mdi) line = "mdi " + op.mdi_text;
+  nlohmann::ordered_json j;
+  j["t"] = sim_->run().time_s();
+  j["ch"] = op.action.channel;
+  j["ev"] = app::kOperatorEventName;
+  j["action"] = line;
+  app::EventRecord head;
+  head.t_s = sim_->run().time_s();
+  head.channel = op.action.channel;
+  head.kind = app::kOperatorEventKind;
+  (void)sim_->outputs().event_memory.add(head, j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+}
+
 // The --final document's positions, spindles and HLI, with each channel's
 // program state, block, path velocity and wait of the last cycle.
 pyb::object Session::state() const {
@@ -328,6 +410,15 @@ pyb::object Session::state() const {
     ch["wait"] = o.channels[c].cause == kernel::CycleCause::wait
                      ? nlohmann::json(kernel::wait_reason_name(o.channels[c].wait_reason))
                      : nlohmann::json(nullptr);
+    // The operator's switches as they stand, named as nck serve's snapshot names them.
+    const plc::ChannelControl& hli = run.machine().hli().channel[c];
+    ch["feed_override_pct"] = hli.feed_override_percent;
+    ch["rapid_override_pct"] = hli.rapid_override_percent;
+    ch["feedhold"] = hli.feedhold;
+    ch["single_step"] = hli.single_step;
+    ch["optional_stop"] = hli.optional_stop;
+    ch["manual_mode"] = hli.manual_mode;
+    ch["skip_mask"] = hli.skip_mask;
   }
   return to_python(doc);
 }
@@ -338,10 +429,11 @@ void bind_session(pyb::module_& m) {
   pyb::class_<Until>(m, "_Until")
       .def(pyb::init([](std::optional<std::int64_t> n, std::optional<std::uint32_t> line,
                         std::optional<std::string> event, std::optional<double> time_s) {
-             const std::optional<kernel::EventKind> kind = event ? app::event_kind_from(*event) : std::nullopt;
+             std::optional<kernel::EventKind> kind = event ? app::event_kind_from(*event) : std::nullopt;
+             if (event && *event == app::kOperatorEventName) kind = static_cast<kernel::EventKind>(app::kOperatorEventKind);
              if (event && !kind)
                raise("ArgumentError", ErrorId::AppBadArgument,
-                     fmt::format("'{}' is no event kind (docs/outputs.md: block, wait, error, end, state ...)", *event));
+                     fmt::format("'{}' is no event kind (docs/outputs.md: block, wait, error, end, state, operator ...)", *event));
              return Until{n, line, kind, time_s};
            }),
            pyb::arg("n"), pyb::arg("line"), pyb::arg("event"), pyb::arg("time_s"));
@@ -351,8 +443,7 @@ void bind_session(pyb::module_& m) {
       .def("step", locked(&Session::step), pyb::arg("cycles"))
       .def("run_until", locked(&Session::run_until), pyb::arg("until"), pyb::arg("max_cycles"))
       .def("action", locked(&Session::action), pyb::arg("line"))
-      .def("cycle_start", locked(+[](Session& s, std::int64_t ch) { s.operate(ch, sim::act::CycleStart{}); }),
-           pyb::arg("ch"))
+      .def("cycle_start", locked(&Session::cycle_start), pyb::arg("ch"))
       .def("stop", locked(+[](Session& s, std::int64_t ch) { s.operate(ch, sim::act::Stop{}); }), pyb::arg("ch"))
       .def("reset", locked(+[](Session& s, std::int64_t ch) { s.operate(ch, sim::act::Reset{}); }),
            pyb::arg("ch"))

@@ -150,6 +150,7 @@ std::vector<std::string> TraceWriter::column_names(const config::Machine& m, Tra
   }
   for (std::size_t c = 0; c < m.channels.size(); ++c) {
     const std::string prefix = c == 0 ? std::string() : fmt::format("{}.", c + 1);
+    if (extra.path_v) cols.push_back(prefix + "path.v");
     if (extra.path_a) cols.push_back(prefix + "path.a");
     if (extra.path_j) cols.push_back(prefix + "path.j");
   }
@@ -193,7 +194,9 @@ void TraceWriter::write(std::uint64_t cycle, const kernel::TickOutput& out) {
       case TraceLayout::Format::whole: fmt::format_to(std::back_inserter(row_), "{:.0f}", v); break;
     }
   });
-  for (const PathDerivatives& d : path_) {
+  for (std::size_t c = 0; c < path_.size(); ++c) {
+    const PathDerivatives& d = path_[c];
+    if (extra_.path_v) fmt::format_to(std::back_inserter(row_), ",{:.6f}", out.channels[c].path_velocity_mm_s);
     if (extra_.path_a) fmt::format_to(std::back_inserter(row_), ",{:.3f}", d.a_mm_s2());
     if (extra_.path_j) fmt::format_to(std::back_inserter(row_), ",{:.1f}", d.j_mm_s3());
   }

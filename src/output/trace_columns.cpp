@@ -10,9 +10,10 @@ std::expected<TraceColumns, std::string> parse_trace_columns(std::string_view li
   while (from <= list.size()) {
     const std::size_t comma = std::min(list.find(',', from), list.size());
     const std::string_view name = list.substr(from, comma - from);
-    if (name == "path.a") c.path_a = true;
+    if (name == "path.v") c.path_v = true;
+    else if (name == "path.a") c.path_a = true;
     else if (name == "path.j") c.path_j = true;
-    else return std::unexpected(fmt::format("'{}' is not a trace column (path.a, path.j)", name));
+    else return std::unexpected(fmt::format("'{}' is not a trace column (path.v, path.a, path.j)", name));
     from = comma + 1;
   }
   return c;

@@ -11,6 +11,16 @@ void EventMemory::start(std::uint64_t max_bytes, Full policy) {
 }
 
 bool EventMemory::add(const kernel::Event& e, std::string_view line) {
+  EventRecord r;
+  r.t_s = e.t_s;
+  r.n = e.at.n.value_or(-1);
+  r.line = e.at.line;
+  r.channel = e.channel;
+  r.kind = static_cast<std::uint8_t>(e.kind());
+  return add(r, line);
+}
+
+bool EventMemory::add(EventRecord r, std::string_view line) {
   if (!enabled_) return true;
   const std::uint64_t need = line.size() + sizeof(EventRecord);
   if (!lifted_ && bytes() + need > max_bytes_) {
@@ -22,13 +32,7 @@ bool EventMemory::add(const kernel::Event& e, std::string_view line) {
     while (!records.empty() && bytes() + need > max_bytes_) drop_oldest_half();
   }
   text.append(line);
-  EventRecord r;
-  r.t_s = e.t_s;
   r.text_end = text.size();
-  r.n = e.at.n.value_or(-1);
-  r.line = e.at.line;
-  r.channel = e.channel;
-  r.kind = static_cast<std::uint8_t>(e.kind());
   records.push_back(r);
   return true;
 }

@@ -1,8 +1,10 @@
 #include "nck/run/simulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <thread>
 
@@ -16,23 +18,74 @@ namespace {
 
 Diagnostic usage(std::string text) { return make_diagnostic(ErrorId::AppBadUsage, {}, std::move(text)); }
 
-// The --plc scenario; errors make it unusable, warnings go to the console.
+// A scenario's text, parsed and resolved; errors make it unusable,
+// warnings go to the console.
+std::expected<sim::Scenario, Diagnostics> scenario_of(std::string_view text, const std::string& file,
+                                                      const config::Machine& m, Console& console) {
+  Diagnostics ds;
+  sim::Scenario sc = sim::parse_scenario(text, file, ds);
+  sim::resolve_spindles(sc, m, plc::build_spindle_map(m), ds);
+  if (ds.has_errors()) return std::unexpected(ds);
+  for (const Diagnostic& d : ds.items()) console.line(format(d));
+  return sc;
+}
+
+// The --plc scenario file.
 std::expected<sim::Scenario, Diagnostics> load_scenario(const std::string& path, const config::Machine& m,
                                                         Console& console) {
   std::error_code ec;
   std::ifstream f(path, std::ios::binary);
-  Diagnostics ds;
   if (!std::filesystem::is_regular_file(path, ec) || !f) {
+    Diagnostics ds;
     ds.add(ErrorId::AppScenarioUnreadable, SourceLoc{path, 0, 0}, "cannot read the PLC scenario");
     return std::unexpected(ds);
   }
   std::stringstream text;
   text << f.rdbuf();
-  sim::Scenario sc = sim::parse_scenario(text.str(), path, ds);
-  sim::resolve_spindles(sc, m, plc::build_spindle_map(m), ds);
-  if (ds.has_errors()) return std::unexpected(ds);
-  for (const Diagnostic& d : ds.items()) console.line(format(d));
-  return sc;
+  return scenario_of(text.str(), path, m, console);
+}
+
+// `from`'s lines after `into`'s at equal times (both are sorted by time);
+// one block search in all. false (the reason in ds) when both search.
+bool append_scenario(sim::Scenario& into, sim::Scenario from, Diagnostics& ds) {
+  if (sim::block_search_of(from) && sim::block_search_of(into)) {
+    for (const sim::ScenarioAction& a : from.actions)
+      if (a.kind() == sim::ActionKind::block_search)
+        ds.add(ErrorId::PlcScenarioBlockSearch, SourceLoc{from.file, a.line, 1},
+               fmt::format("a second block_search line (after {}'s); a run has one block search", into.file));
+    return false;
+  }
+  const auto base = static_cast<std::uint32_t>(into.texts.size());
+  for (std::vector<sim::ScenarioAction>* list : {&from.actions, &from.triggered})
+    for (sim::ScenarioAction& a : *list)
+      if (auto* mdi = a.get<sim::act::Mdi>()) mdi->text += base;  // its text's index among all texts
+  std::ranges::move(from.texts, std::back_inserter(into.texts));
+  std::ranges::move(from.triggered, std::back_inserter(into.triggered));
+  const auto middle = static_cast<std::ptrdiff_t>(into.actions.size());
+  std::ranges::move(from.actions, std::back_inserter(into.actions));
+  std::inplace_merge(into.actions.begin(), into.actions.begin() + middle, into.actions.end(),
+                     [](const sim::ScenarioAction& x, const sim::ScenarioAction& y) { return x.t_s < y.t_s; });
+  into.file = into.file.empty() ? from.file : into.file;
+  return true;
+}
+
+// The run's scenario: the embedding's texts (RunOptions::plc_texts), then
+// the --plc file, merged by time.
+std::expected<sim::Scenario, Diagnostics> run_scenario(const RunOptions& opt, const config::Machine& m,
+                                                       Console& console) {
+  sim::Scenario all;
+  Diagnostics ds;
+  for (const RunOptions::PlcText& t : opt.plc_texts) {
+    auto sc = scenario_of(t.text, t.name, m, console);
+    if (!sc) return sc;
+    if (!append_scenario(all, std::move(*sc), ds)) return std::unexpected(ds);
+  }
+  if (!opt.plc.empty()) {
+    auto sc = load_scenario(opt.plc, m, console);
+    if (!sc) return sc;
+    if (!append_scenario(all, std::move(*sc), ds)) return std::unexpected(ds);
+  }
+  return all;
 }
 
 // The run's block search: --start-at & co. (channel 1) or the scenario's
@@ -106,12 +159,9 @@ std::expected<std::unique_ptr<Simulation>, Diagnostics> Simulation::create(confi
                                                                            Host host) {
   std::unique_ptr<Simulation> s(new Simulation(opt, host));
   for (const std::string& dir : opt.cycles) m.cycle_paths.emplace_back(dir);
-  s->scenario_ = std::make_unique<sim::Scenario>();
-  if (!opt.plc.empty()) {
-    auto loaded = load_scenario(opt.plc, m, s->out_.console);
-    if (!loaded) return std::unexpected(loaded.error());
-    *s->scenario_ = std::move(*loaded);
-  }
+  auto scenario = run_scenario(opt, m, s->out_.console);
+  if (!scenario) return std::unexpected(scenario.error());
+  s->scenario_ = std::make_unique<sim::Scenario>(std::move(*scenario));
   const auto search = block_search_of(opt, *s->scenario_);
   if (!search) return std::unexpected(one(search.error()));
   // A searched program runs in the block-search start mode (P-CHAN-00508 SV) throughout.
@@ -138,7 +188,7 @@ std::expected<std::unique_ptr<Simulation>, Diagnostics> Simulation::create(confi
   auto created = sim::DryRun::create(*s->machine_, programs, options);
   if (!created) return std::unexpected(one(created.error()));
   s->run_ = std::make_unique<sim::DryRun>(std::move(*created));
-  if (!opt.plc.empty()) s->run_->load_scenario(*s->scenario_);
+  if (!opt.plc.empty() || !opt.plc_texts.empty()) s->run_->load_scenario(*s->scenario_);
   s->names_.run = s->run_.get();
   s->tick_ = std::make_unique<kernel::TickOutput>();
   if (opt.stop_at) s->stop_at_.emplace(*opt.stop_at, *s->run_);

@@ -46,7 +46,9 @@ def test_an_example_runs_as_the_command_line_runs_it(nck_binary, tmp_path, folde
 def test_the_trace_holds_the_csv_columns_at_full_precision(nck_binary, tmp_path):
     prog = EXAMPLES / "mill" / "contour.nc"
     r = nck.Machine(EXAMPLES / "mill").run(prog, trace_every=10)
-    _, _, _, trace = cli_run(nck_binary, tmp_path, EXAMPLES / "mill", [prog], "--trace-every", "10")
+    # Python's trace has path.v by default: the CSV has it with --trace-columns
+    _, _, _, trace = cli_run(nck_binary, tmp_path, EXAMPLES / "mill", [prog], "--trace-every", "10",
+                             "--trace-columns", "path.v")
     header = trace.read_text().splitlines()[0].split(",")
     csv = np.loadtxt(trace, delimiter=",", skiprows=1, ndmin=2)
     assert list(r.trace) == header

@@ -115,7 +115,7 @@ class TraceLayout {
 };
 
 // One column per path axis of every channel (MCS set point) and per spindle;
-// then the --trace-columns extras per channel (path.a, path.j; 2.path.a ...).
+// then the --trace-columns extras per channel (path.v, path.a, path.j; 2.path.v ...).
 class TraceWriter {
  public:
   std::optional<std::string> open(const std::string& path, bool live, const config::Machine& m,

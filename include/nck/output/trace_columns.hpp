@@ -1,9 +1,11 @@
 #pragma once
 // `nck run --trace-columns LIST`: optional trace columns after the default
-// ones (the default trace stays as it is). path.a and path.j are the path
-// acceleration (mm/s^2) and jerk (mm/s^3) of each channel, the backward
-// differences of the path velocity over the cycles — what the set points
-// do, so a jerk-limited slope shows its bound and STEP its steps.
+// ones (the default trace stays as it is). path.v is each channel's path
+// velocity (mm/s, the kernel's, as the final state and a session report
+// it); path.a and path.j are the path acceleration (mm/s^2) and jerk
+// (mm/s^3), the backward differences of the path velocity over the cycles
+// — what the set points do, so a jerk-limited slope shows its bound and
+// STEP its steps.
 #include <expected>
 #include <string>
 #include <string_view>
@@ -14,11 +16,11 @@
 namespace nck::app {
 
 struct TraceColumns {
-  bool path_a = false, path_j = false;
-  bool any() const { return path_a || path_j; }
+  bool path_v = false, path_a = false, path_j = false;
+  bool any() const { return path_v || path_a || path_j; }
 };
 
-// "path.a,path.j" (either, in any order); an unknown name is an error text.
+// "path.v,path.a,path.j" (any of them, in any order); an unknown name is an error text.
 std::expected<TraceColumns, std::string> parse_trace_columns(std::string_view list);
 
 // The path acceleration and jerk of one channel, updated every cycle.

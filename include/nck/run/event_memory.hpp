@@ -18,13 +18,18 @@
 
 namespace nck::app {
 
+// The kind of a session's operator-action event ("operator"): after the
+// kernel's kinds, as nck.EVENT_KINDS lists it. No kernel event has it.
+inline constexpr std::uint8_t kOperatorEventKind = std::variant_size_v<kernel::EventPayload>;
+inline constexpr const char* kOperatorEventName = "operator";
+
 struct EventRecord {
   double t_s = 0;
   std::uint64_t text_end = 0;  // where the event's line ends in EventMemory::text
   std::int64_t n = -1;         // the block's N number; -1: none
   std::uint32_t line = 0;
   std::uint8_t channel = 0;
-  std::uint8_t kind = 0;  // kernel::EventKind
+  std::uint8_t kind = 0;  // kernel::EventKind; kOperatorEventKind for an operator action
 };
 
 class EventMemory {
@@ -37,6 +42,9 @@ class EventMemory {
   // One event and its JSON line. end_run: false (and nothing kept) once
   // the event would pass the bound. drop_oldest: always kept.
   bool add(const kernel::Event& e, std::string_view line);
+  // An event no kernel cycle made (a session's operator action): its head
+  // as a record (text_end is filled in) and its JSON line; as add.
+  bool add(EventRecord head, std::string_view line);
   // The closing events of a run that ended at the bound (state, end) are kept.
   void lift_bound() { lifted_ = true; }
   bool full() const { return full_; }

@@ -20,6 +20,14 @@ struct RunOptions {
   std::vector<std::string> programs;  // program i runs in channel i+1
   std::string events, trace, final_state;
   std::string plc;     // --plc scenario file
+  // Scenario lines an embedding gives as text (the Python module's
+  // override=, feedhold= and a plc list), each with the name its
+  // diagnostics give as file; merged with the --plc file's lines by time,
+  // the earlier texts' first at equal times, then the file's.
+  struct PlcText {
+    std::string name, text;
+  };
+  std::vector<PlcText> plc_texts;
   std::string report;  // --report FILE.html
   std::uint64_t trace_every = 1;
   std::string trace_columns;  // --trace-columns path.a,path.j (trace_columns.hpp)

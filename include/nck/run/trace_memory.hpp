@@ -13,8 +13,9 @@ namespace nck::app {
 
 class TraceMemory {
  public:
-  // setup: every `every`-th cycle, at most `max_bytes` of values.
-  void start(const config::Machine& m, std::uint64_t every, std::uint64_t max_bytes);
+  // setup: every `every`-th cycle, at most `max_bytes` of values; the
+  // columns of TraceWriter with the extras asked for (path.v, path.a, path.j).
+  void start(const config::Machine& m, std::uint64_t every, std::uint64_t max_bytes, TraceColumns extra = {});
   bool enabled() const { return enabled_; }
   // After each cycle; false (and nothing kept) once the row would pass the limit.
   bool write(std::uint64_t cycle, const kernel::TickOutput& out);
@@ -28,6 +29,8 @@ class TraceMemory {
   std::uint64_t max_rows_ = 0;
   std::uint64_t max_bytes_ = 0;
   TraceLayout layout_;
+  TraceColumns extra_{};
+  std::vector<PathDerivatives> path_;  // per channel, every cycle (also between kept rows)
 };
 
 }  // namespace nck::app

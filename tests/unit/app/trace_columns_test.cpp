@@ -1,5 +1,5 @@
-// `nck run --trace-columns path.a,path.j` (docs/cli.md): the default trace is
-// unchanged without it; with it the path acceleration and jerk follow the
+// `nck run --trace-columns path.v,path.a,path.j` (docs/cli.md): the default trace is
+// unchanged without it; with it the path velocity, acceleration and jerk follow the
 // default columns, and on examples/mill/slope.nc the jerk of the TRAPEZ pass
 // stays within a/tr (X/Y a_beschl 2500 mm/s^2, ramp times 50 ms: 50,000
 // mm/s^3) while the STEP pass jumps far beyond it.
@@ -84,10 +84,26 @@ TEST(TraceColumns, TrapezJerkStaysWithinAOverTr) {
   EXPECT_GT(peak(r, j, r.square_t[0], r.square_t[1]), 20 * kJerk);
 }
 
+// path.v (issue 47): the path velocity, first of each channel's extras
+// whatever the list's order; its backward difference is path.a.
+TEST(TraceColumns, PathVelocityComesFirst) {
+  const SlopeRun r = run_slope("tc-v", "--trace-columns path.a,path.v");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  const std::size_t v = column(r, "path.v"), a = column(r, "path.a");
+  ASSERT_EQ(v + 1, a);
+  ASSERT_EQ(a + 1, r.header.size());
+  double top = 0;
+  for (std::size_t i = 1; i < r.rows.size(); ++i) {
+    top = std::max(top, r.rows[i][v]);
+    EXPECT_NEAR((r.rows[i][v] - r.rows[i - 1][v]) / 0.001, r.rows[i][a], 1e-2) << "row " << i;
+  }
+  EXPECT_GT(top, 0);
+}
+
 TEST(TraceColumns, UnknownColumnIsBadUsage) {
-  const CliResult c = run_nck("run " + mill() + " " + mill() + "/slope.nc --trace-columns path.v");
+  const CliResult c = run_nck("run " + mill() + " " + mill() + "/slope.nc --trace-columns path.x");
   EXPECT_EQ(c.exit_code, 2) << c.output;
-  EXPECT_NE(c.output.find("path.v"), std::string::npos) << c.output;
+  EXPECT_NE(c.output.find("path.x"), std::string::npos) << c.output;
 }
 
 }  // namespace
