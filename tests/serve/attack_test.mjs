@@ -62,6 +62,7 @@ async function main() {
   const s = await startServer(nck, src, ["--programs", files.programs, "--max-clients", String(limits.maxClients),
     "--header-timeout", String(limits.headerTimeoutMs / 1000), "--speed", String(SPEED),
     "--max-wall", String(Math.ceil(minutes * 60) + 300)]);
+  server = s;
   const ctx = { s, out, files, limits, random, expect, mixed: false,
                 note: (k, v) => { figures.notes[k] = Math.max(figures.notes[k] ?? -Infinity, v); } };
   ctx.probe = operatorProbe(s);
@@ -239,4 +240,7 @@ function progress(t0) {
     `worst cycle deviation ${figures.worstCycleDevMs.toFixed(1)} ms, RSS ${figures.rssKb.max} kB, ${figures.failures} failures`;
 }
 
-main().catch((e) => { console.error(e); process.exit(1); });
+// An exception before the campaign's own finally (the setup) must not
+// leave the server running: it would hold its programs folder for 300 s.
+let server = null;
+main().catch((e) => { console.error(e); server?.proc.kill("SIGKILL"); process.exit(1); });
