@@ -36,11 +36,6 @@ endif()
 
 set(ENV{PYTHONPATH} ${root}/usr/lib/python3/dist-packages)
 set(ENV{LD_PRELOAD} "${preload}")
-# (no ";" in the code: run_checked's arguments are a CMake list)
-run_checked(${PYTHON} -c "import nck
-print(nck.__version__, nck.__file__)
-print(nck.Machine('${examples}/mill').run('${examples}/mill/contour.nc').time_s)")
-if(NOT last_output MATCHES "${root}/usr/lib/python3/dist-packages/nck/__init__.py" OR NOT last_output MATCHES "29.62")
-  message(FATAL_ERROR "the packaged Python module: ${last_output}")
-endif()
+check_module_runs(${PYTHON} ${examples} "${root}/usr/lib/python3/dist-packages/nck/__init__.py"
+                  "the packaged Python module")
 message(STATUS "nck and python3-nck unpacked and run: ${last_output}")

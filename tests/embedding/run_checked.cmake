@@ -8,3 +8,17 @@ function(run_checked)
   endif()
   set(last_output "${out}${err}" PARENT_SCOPE)
 endfunction()
+
+# check_module_runs(PYTHON EXAMPLES WHERE_REGEX WHAT): that PYTHON imports
+# nck from a path matching WHERE_REGEX and runs EXAMPLES/mill/contour.nc to
+# its 29.62 s, as `nck run` does. (No ";" in the code: run_checked's
+# arguments are a CMake list.)
+function(check_module_runs python examples where what)
+  run_checked(${python} -c "import nck
+print(nck.__version__, nck.__file__)
+print(nck.Machine('${examples}/mill').run('${examples}/mill/contour.nc').time_s)")
+  if(NOT last_output MATCHES "${where}" OR NOT last_output MATCHES "29.62")
+    message(FATAL_ERROR "${what}: ${last_output}")
+  endif()
+  set(last_output "${last_output}" PARENT_SCOPE)
+endfunction()
