@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <fstream>
+#include <functional>
 #include <unordered_map>
 
 namespace nck::app {
@@ -19,33 +20,43 @@ std::string section_of(const std::string& header) {
   return name;
 }
 
-// Reads the file line by line: f(line number, identity text, section).
+// Reads the file line by line: f(line number, identity text, section);
+// one buffer for every line's text, so a long program allocates nothing per line.
 template <class F>
 bool each_line(const std::string& path, F&& f) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return false;
-  std::string raw, section;
+  std::string raw, text, section;
   for (std::uint32_t n = 1; std::getline(in, raw); ++n) {
-    const std::string text = identity_text(raw);
+    identity_text(raw, text);
     if (!text.empty() && text[0] == '%') section = section_of(text);
-    if (!f(n, text, section)) break;
+    if (!f(n, std::string_view(text), section)) break;
   }
   return true;
 }
 
-std::string key_of(const std::string& section, const std::string& text) { return section + '\n' + text; }
+// Hashes and compares std::string and std::string_view alike (a lookup
+// by the reading buffer's view makes no string).
+struct TextHash {
+  using is_transparent = void;
+  std::size_t operator()(std::string_view v) const { return std::hash<std::string_view>{}(v); }
+};
 
 }  // namespace
 
-std::string identity_text(std::string_view line) {
+void identity_text(std::string_view line, std::string& out) {
   line = line.substr(0, std::min(line.find(';'), line.size()));
-  std::string out;
-  out.reserve(line.size());
+  out.clear();
   for (char c : line) {
     if (!blank(c)) out += c;
     else if (!out.empty() && out.back() != ' ') out += ' ';
   }
   if (!out.empty() && out.back() == ' ') out.pop_back();
+}
+
+std::string identity_text(std::string_view line) {
+  std::string out;
+  identity_text(line, out);
   return out;
 }
 
@@ -55,18 +66,21 @@ std::vector<BlockIdentity> block_identities(const std::string& path, const std::
   std::uint32_t last = 0;
   for (std::size_t i = 0; i < lines.size(); ++i) wanted[lines[i]].push_back(i), last = std::max(last, lines[i]);
   // first read: the text and section of each line asked for
-  const bool readable = each_line(path, [&](std::uint32_t n, const std::string& text, const std::string& section) {
+  const bool readable = each_line(path, [&](std::uint32_t n, std::string_view text, const std::string& section) {
     if (const auto it = wanted.find(n); it != wanted.end())
       for (std::size_t i : it->second) ids[i].text = text, ids[i].section = section;
     return n < last;
   });
   if (!readable) return ids;
   // second read: how often each of those texts came before, in its section
-  std::unordered_map<std::string, std::uint32_t> seen;
-  for (const BlockIdentity& id : ids) seen.emplace(key_of(id.section, id.text), 0);
-  each_line(path, [&](std::uint32_t n, const std::string& text, const std::string& section) {
-    const auto counted = seen.find(key_of(section, text));
-    if (counted == seen.end()) return true;
+  // (text -> section -> lines of it so far)
+  std::unordered_map<std::string, std::unordered_map<std::string, std::uint32_t>, TextHash, std::equal_to<>> seen;
+  for (const BlockIdentity& id : ids) seen[id.text].emplace(id.section, 0);
+  each_line(path, [&](std::uint32_t n, std::string_view text, const std::string& section) {
+    const auto by_text = seen.find(text);
+    if (by_text == seen.end()) return true;
+    const auto counted = by_text->second.find(section);
+    if (counted == by_text->second.end()) return true;
     ++counted->second;
     if (const auto it = wanted.find(n); it != wanted.end())
       for (std::size_t i : it->second) ids[i].pass = counted->second;

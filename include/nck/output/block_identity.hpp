@@ -20,6 +20,8 @@ struct BlockIdentity {
 
 // A line as its identity's text: the `;` comment cut, blanks collapsed.
 std::string identity_text(std::string_view line);
+// The same into `out` (its buffer reused).
+void identity_text(std::string_view line, std::string& out);
 
 // The identities of `lines` (1-based line numbers) of the file at `path`,
 // in the order given. Two reads of the file; the memory held is that of
