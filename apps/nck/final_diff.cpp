@@ -1,5 +1,7 @@
 #include "final_diff.hpp"
 
+#include "block_pairs.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -69,15 +71,6 @@ std::string file_key(const json& r) {
   return f.empty() ? "(main program)" : std::filesystem::path(f).filename().string();
 }
 
-// A block by its line: "line 12" in the channel's main program (so that
-// two versions of a program match), "sub.nc:12" in another file.
-std::string block_key(const json& r, const std::string& main_file) {
-  const std::string f = string_or(r, "file");
-  const std::string line = r.is_object() && r.contains("line") ? r["line"].dump() : "?";
-  if (f.empty() || f == main_file) return "line " + line;
-  return std::filesystem::path(f).filename().string() + ":" + line;
-}
-
 // The channel's main program file, as its subroutine rows name it.
 std::string main_file(const json& ch) {
   if (ch.is_object() && ch.contains("subroutines") && ch["subroutines"].is_array())
@@ -140,8 +133,7 @@ ojson diff_finals(const json& a, const json& b) {
       return compare(times_of(side(ca, key), k), times_of(side(cb, key), k));
     };
     const std::string main_a = main_file(ca), main_b = main_file(cb);
-    const ojson blocks = compare(times_of(side(ca, "blocks"), [&](const json& r) { return block_key(r, main_a); }),
-                                 times_of(side(cb, "blocks"), [&](const json& r) { return block_key(r, main_b); }));
+    const ojson blocks = compare_blocks(side(ca, "blocks"), main_a, side(cb, "blocks"), main_b);
     channels.push_back({{"ch", i + 1},
                         {"time_a_s", round_us(number_or(ca, "time_s"))},
                         {"time_b_s", round_us(number_or(cb, "time_s"))},
@@ -156,15 +148,27 @@ ojson diff_finals(const json& a, const json& b) {
 
 namespace {
 
+// The table's first column: a block's NC text fits (N number and a few words).
+constexpr std::size_t kKeyWidth = 40;
+
+// At most `width` bytes of `key` (a block's NC text can be long; --json has
+// it whole), never cutting a UTF-8 character.
+std::string shortened(const std::string& key, std::size_t width) {
+  if (key.size() <= width) return key;
+  std::size_t end = width - 3;
+  while (end > 0 && (static_cast<unsigned char>(key[end]) & 0xC0) == 0x80) --end;
+  return key.substr(0, end) + "...";
+}
+
 std::string seconds_text(const ojson& v) { return v.is_number() ? fmt::format("{:.3f}", v.get<double>()) : "-"; }
 
 void table(std::string& s, const std::string& title, const ojson& rows, std::size_t max_rows) {
   if (!rows.is_array() || rows.empty()) return;
-  s += fmt::format("\n{:<32} {:>12} {:>12} {:>12}\n", title, "A (s)", "B (s)", "B - A (s)");
+  s += fmt::format("\n{:<{}} {:>12} {:>12} {:>12}\n", title, kKeyWidth + 2, "A (s)", "B (s)", "B - A (s)");
   for (std::size_t i = 0; i < rows.size() && i < max_rows; ++i) {
     const ojson& r = rows[i];
-    s += fmt::format("  {:<30} {:>12} {:>12} {:>+12.3f}\n", r["key"].get<std::string>(), seconds_text(r["a_s"]),
-                     seconds_text(r["b_s"]), r["delta_s"].get<double>());
+    s += fmt::format("  {:<{}} {:>12} {:>12} {:>+12.3f}\n", shortened(r["key"].get<std::string>(), kKeyWidth),
+                     kKeyWidth, seconds_text(r["a_s"]), seconds_text(r["b_s"]), r["delta_s"].get<double>());
   }
   if (rows.size() > max_rows) s += fmt::format("  ... {} more (--json lists all)\n", rows.size() - max_rows);
 }

@@ -24,9 +24,9 @@ std::expected<nlohmann::json, Diagnostic> check_final(nlohmann::json doc, const 
 // {"time_a_s", "time_b_s", "delta_s", "channels": [{"ch", "causes", "tools",
 // "subroutines", "blocks"}]}: rows {key, a_s, b_s, delta_s}, the largest
 // change first; a row one side lacks has null there. Blocks are matched by
-// line in the main program ("line 12", whatever the file is called) and by
-// file name and line elsewhere ("sub.nc:12"); only the lines each --final
-// lists (its 2,000 most time-losing) can be matched.
+// identity (block_pairs.hpp: file name, local subroutine, NC text, pass;
+// then by N number), whatever line they stand on; only the lines each
+// --final lists (its 2,000 most time-losing) can be matched.
 nlohmann::ordered_json diff_finals(const nlohmann::json& a, const nlohmann::json& b);
 
 // The readable table of diff_finals (and of "path", when present): at most

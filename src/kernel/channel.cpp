@@ -46,7 +46,7 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
   cax_.follow(dt_s, path_.position(), ctx);
   (void)fail(handwheel_.follow(cy, in.manual_mode ? manual_axes(in) : 0u), cy);
   (void)fail(technologies_.follow(path_.position(), done(), cy), cy);
-  write_output(out);
+  write_output(out, ctx);
 }
 
 // Starts and advances blocks as far as this cycle allows.
@@ -82,7 +82,7 @@ void Channel::run_blocks(Cycle& cy) noexcept {
   }
 }
 
-void Channel::write_output(ChannelOutput& out) const noexcept {
+void Channel::write_output(ChannelOutput& out, const ChannelContext& ctx) const noexcept {
   const motion::AxisVector& pos = path_.position();
   const motion::AxisVector& manual = handwheel_.in_force_mm();
   for (std::size_t j = 0; j < n_axes_; ++j) out.axis_mcs[j] = pos[j] + manual[j];
@@ -92,7 +92,7 @@ void Channel::write_output(ChannelOutput& out) const noexcept {
   out.program_state = state_;
   out.cause = cause_;
   const Motion* m = active_ ? current_.as<Motion>() : nullptr;
-  out.feed_mm_s = m ? m->v_cmd_mm_s : 0.0;
+  out.feed_mm_s = m ? spindle_path_.commanded_feed_mm_s(m->v_cmd_mm_s, ctx) : 0.0;
   out.distance_to_go_mm = m ? std::max(0.0, path_.segment().length() - path_.s_mm()) : 0.0;
   out.wait_reason = wait_reason_;
 }

@@ -107,7 +107,7 @@ class Channel {
   void place(const Motion& m, double s_mm) noexcept;
   bool waits_done(SyncPoint phase, Cycle& cy) noexcept;
   void end_block(Cycle& cy) noexcept;
-  void write_output(ChannelOutput& out) const noexcept;
+  void write_output(ChannelOutput& out, const ChannelContext& ctx) const noexcept;
   // manual mode (jog, handwheel without G201)
   void take_jogs(Cycle& cy) noexcept;
   bool jog_allowed(const JogRequest& r) const noexcept;

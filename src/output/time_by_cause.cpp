@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <fmt/format.h>
 #include <tuple>
 
+#include "nck/output/block_identity.hpp"
 #include "nck/output/line_ledger.hpp"
 #include "nck/output/output_writers.hpp"
 #include "nck/prep/units/axis_table.hpp"
@@ -267,7 +269,16 @@ ordered_json TimeByCause::channel_json(const Channel& ch) const {
     files.push_back({{"file", name}, {"main", id == 0},
                      {"time_s", seconds(t.cycles())}, {"causes", tally_json(ch, t)}});
   }
-  // The blocks where the most time is lost against length / feed.
+  return {{"time_s", seconds(ch.cycles)},
+          {"causes", tally_json(ch, ch.total)},
+          {"tools", tools},
+          {"subroutines", files},
+          {"blocks", blocks_json(ch)}};
+}
+
+// The blocks where the most time is lost against length / feed, each with
+// its identity (block_identity.hpp) for nck diff.
+ordered_json TimeByCause::blocks_json(const Channel& ch) const {
   std::vector<const Block*> blocks;
   blocks.reserve(ch.blocks.size());
   for (const Block& b : ch.blocks) blocks.push_back(&b);
@@ -278,6 +289,8 @@ ordered_json TimeByCause::channel_json(const Channel& ch) const {
                       const double la = lost(a), lb = lost(b);
                       return la != lb ? la > lb : std::tie(a->file, a->line) < std::tie(b->file, b->line);
                     });
+  blocks.resize(keep);
+  const std::vector<BlockIdentity> ids = identities(ch, blocks);
   ordered_json rows = ordered_json::array();
   for (std::size_t i = 0; i < keep; ++i) {
     const Block& b = *blocks[i];
@@ -285,6 +298,9 @@ ordered_json TimeByCause::channel_json(const Channel& ch) const {
     rows.push_back({{"file", file},
                     {"line", b.line},
                     {"n", b.has_n ? ordered_json(b.n) : ordered_json(nullptr)},
+                    {"text", ids[i].text},
+                    {"sub", ids[i].section},
+                    {"pass", ids[i].pass},
                     {"runs", b.runs},
                     {"time_s", seconds(b.cycles)},
                     {"length_mm", b.length_mm},
@@ -292,11 +308,22 @@ ordered_json TimeByCause::channel_json(const Channel& ch) const {
                     {"lost_s", lost(&b)},
                     {"causes", tally_json(ch, b.tally)}});
   }
-  return {{"time_s", seconds(ch.cycles)},
-          {"causes", tally_json(ch, ch.total)},
-          {"tools", tools},
-          {"subroutines", files},
-          {"blocks", rows}};
+  return rows;
+}
+
+// The identities of `blocks`, in their order: one pair of reads per file.
+std::vector<BlockIdentity> TimeByCause::identities(const Channel& ch, const std::vector<const Block*>& blocks) const {
+  std::vector<BlockIdentity> ids(blocks.size());
+  std::map<std::uint16_t, std::vector<std::size_t>> by_file;
+  for (std::size_t i = 0; i < blocks.size(); ++i) by_file[blocks[i]->file].push_back(i);
+  for (const auto& [file, index] : by_file) {
+    if (file >= ch.file_names.size() || ch.file_names[file].empty()) continue;
+    std::vector<std::uint32_t> lines;
+    for (std::size_t i : index) lines.push_back(blocks[i]->line);
+    std::vector<BlockIdentity> found = block_identities(ch.file_names[file], lines);
+    for (std::size_t k = 0; k < index.size(); ++k) ids[index[k]] = std::move(found[k]);
+  }
+  return ids;
 }
 
 ordered_json TimeByCause::json() const {

@@ -83,13 +83,58 @@ json PathTrack::ghost_json(std::size_t max_points) const {
   return {{"axes", names_}, {"x", x}, {"y", y}, {"z", z}, {"line", line}};
 }
 
+namespace {
+
+// The window: far enough ahead to follow B where it is shorter or longer
+// (corner rounding, another contour), near enough never to reach a pass of
+// the tool over the same place much later in the program.
+constexpr double kWindowMm = 20;
+// A distance this much larger is a rise, not rounding.
+constexpr double kRiseMm = 1e-9;
+// A point further ahead replaces the first valley only when it is nearer by
+// more than this and by more than half: B left A's path there (a detour,
+// a contour of its own) and A has moved on.
+constexpr double kJumpMm = 0.01;
+
+struct Match {
+  std::size_t j = 0;  // B's segment j .. j + 1
+  double d_mm = -1;
+  std::array<double, 3> at{};
+};
+
+// The point of B's path nearest to x, searched along the path from segment
+// `cursor`: B may first go as far as A went since its last point
+// (`reach_mm`: past a turn such as a plunge's bottom, B must follow A up),
+// then on while the distance does not rise (the first valley), since a
+// later pass over the same place (a retract along the plunge, a loop's next
+// turn) lies beyond a rise. The rest of the window is searched only to
+// leave a valley B no longer shares with A.
+Match nearest_along(const std::vector<PathTrack::Point>& pb, std::size_t cursor, const std::array<double, 3>& x,
+                    double reach_mm) {
+  const double s_end_mm = pb[cursor].s_mm + kWindowMm;
+  const double s_reach_mm = pb[cursor + 1].s_mm + reach_mm;
+  const auto at = [&](std::size_t j) {
+    const auto [w, d] = nearest_on(pb[j].pos, pb[j + 1].pos, x);
+    return Match{j, d, w};
+  };
+  Match valley = at(cursor);
+  std::size_t j = cursor + 1;
+  for (; j + 1 < pb.size() && pb[j].s_mm <= s_end_mm; ++j) {
+    const Match m = at(j);
+    if (pb[j].s_mm > s_reach_mm && m.d_mm > valley.d_mm + kRiseMm) break;
+    if (m.d_mm < valley.d_mm) valley = m;  // a tie keeps the earlier segment
+  }
+  Match best = valley;
+  for (; j + 1 < pb.size() && pb[j].s_mm <= s_end_mm; ++j)
+    if (const Match m = at(j); m.d_mm < best.d_mm) best = m;
+  return best.d_mm < std::min(valley.d_mm / 2, valley.d_mm - kJumpMm) ? best : valley;
+}
+
+}  // namespace
+
 json compare_paths(const PathTrack& a, const PathTrack& b, std::size_t top) {
   const auto& pa = a.points();
   const auto& pb = b.points();
-  // the window: far enough ahead to follow B where it is shorter or longer
-  // (corner rounding, another contour), near enough never to jump to a
-  // later pass of the tool over the same place
-  constexpr double kWindowMm = 20;
   struct Hit {
     double d_mm = -1;
     std::size_t ia = 0;
@@ -98,20 +143,14 @@ json compare_paths(const PathTrack& a, const PathTrack& b, std::size_t top) {
   };
   std::map<std::uint32_t, Hit> worst;  // per NC line of A
   double max_mm = 0, sum_mm = 0;
-  std::size_t cursor = 0;
+  std::size_t cursor = 0;  // the cursor only moves forward
   for (std::size_t i = 0; i < pa.size() && pb.size() > 1; ++i) {
-    Hit best;
-    std::size_t best_j = cursor;
-    for (std::size_t j = cursor; j + 1 < pb.size() && pb[j].s_mm <= pb[cursor].s_mm + kWindowMm; ++j) {
-      const auto [w, d] = nearest_on(pb[j].pos, pb[j + 1].pos, pa[i].pos);
-      if (best.d_mm < 0 || d < best.d_mm) best = {d, i, w, pb[j + 1].line}, best_j = j;
-    }
-    if (best.d_mm < 0) continue;
-    cursor = best_j;
-    max_mm = std::max(max_mm, best.d_mm);
-    sum_mm += best.d_mm;
+    const Match m = nearest_along(pb, cursor, pa[i].pos, i > 0 ? pa[i].s_mm - pa[i - 1].s_mm : 0.0);
+    cursor = m.j;
+    max_mm = std::max(max_mm, m.d_mm);
+    sum_mm += m.d_mm;
     Hit& h = worst[pa[i].line];
-    if (best.d_mm > h.d_mm) h = best;
+    if (m.d_mm > h.d_mm) h = {m.d_mm, i, m.at, pb[m.j + 1].line};
   }
   std::vector<Hit> hits;
   for (const auto& [line, h] : worst) hits.push_back(h);

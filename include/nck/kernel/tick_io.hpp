@@ -146,7 +146,9 @@ struct ChannelOutput {
   ChannelStatus status = ChannelStatus::idle;
   ProgramState program_state = ProgramState::idle;
   CycleCause cause = CycleCause::none;        // what this cycle went to
-  double feed_mm_s = 0;  // the motion's programmed path velocity (G0: its rapid limit); 0 without motion
+  // The motion's programmed path velocity: F, under G95 / G33 the programmed
+  // spindle speed x mm/rev (G96: the speed its law sets), G0 its rapid limit; 0 without motion.
+  double feed_mm_s = 0;
   WaitReason wait_reason = WaitReason::plc_ack;  // cause == wait: for what
 };
 

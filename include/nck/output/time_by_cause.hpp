@@ -18,6 +18,7 @@
 #include "nck/config/machine.hpp"
 #include "nck/core/kept_quotient.hpp"
 #include "nck/kernel/tick_io.hpp"
+#include "nck/output/block_identity.hpp"
 #include "nck/output/line_ledger.hpp"
 
 namespace nck::app {
@@ -128,6 +129,8 @@ class TimeByCause {
   std::string class_name(const Channel& ch, Class c) const;
   nlohmann::ordered_json tally_json(const Channel& ch, const Tally& t) const;
   nlohmann::ordered_json channel_json(const Channel& ch) const;
+  nlohmann::ordered_json blocks_json(const Channel& ch) const;
+  std::vector<BlockIdentity> identities(const Channel& ch, const std::vector<const Block*>& blocks) const;
 
   // n cycles in seconds, from the whole-µs cycle time (0.018, not 0.018000000000000002)
   double seconds(std::uint64_t n) const { return static_cast<double>(n) * static_cast<double>(cycle_us_) / 1e6; }

@@ -46,9 +46,10 @@ class PathTrack {
 };
 
 // The largest position differences between two tracks (docs/decisions.md,
-// "Run diff"): for each point of A, the nearest point of B's
-// path, searched forward from the last match within a window of arc
-// length; the `top` largest, at most one per NC line of A.
+// "Run diff"): for each point of A, the nearest point of B's path, searched
+// forward from the last match: the first valley of the distance along B,
+// or a point further within a window of arc length that is clearly nearer;
+// the `top` largest, at most one per NC line of A.
 nlohmann::ordered_json compare_paths(const PathTrack& a, const PathTrack& b, std::size_t top);
 
 }  // namespace nck::app

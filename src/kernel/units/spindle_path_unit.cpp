@@ -98,6 +98,17 @@ void SpindlePathUnit::limit_path(motion::PathProfile& path, ChannelContext& ctx)
   }
 }
 
+// Time by cause's ideal (ChannelOutput::feed_mm_s): the programmed speed,
+// not the set point, so a spindle still ramping up, its override or a limit
+// show as time lost, as a G94 feed the axes cannot reach does.
+double SpindlePathUnit::commanded_feed_mm_s(double planned_mm_s, const ChannelContext& ctx) const noexcept {
+  const FeedLink& f = link_;
+  if (f.kind != FeedLinkKind::per_rev && f.kind != FeedLinkKind::thread) return planned_mm_s;
+  if (f.use_programmed) return link_velocity_mm_s(f.programmed_rpm, f.mm_per_rev);
+  const SpindleUnit* u = ctx.spindle(f.spindle);
+  return u ? link_velocity_mm_s(u->axis.status().programmed_rpm, f.mm_per_rev) : planned_mm_s;
+}
+
 void SpindlePathUnit::follow_path(double s_mm, double v_mm_s, ChannelContext& ctx) noexcept {
   const FeedLink& f = link_;
   if (!is_tap(f.kind) || tap_spindle_ != f.spindle) return;

@@ -33,6 +33,10 @@ class SpindlePathUnit {
   std::int8_t tap_spindle() const noexcept { return tap_spindle_; }
   // G33: the path follows the spindle's actual speed on the pitch. rt
   bool threading() const noexcept { return link_.kind == FeedLinkKind::thread; }
+  // The path velocity the block commands: for G95 and G33 the programmed
+  // spindle speed (under G96 the one its law set) x mm/rev, else
+  // `planned_mm_s` (G94, G63/G331: their feed is programmed). rt
+  double commanded_feed_mm_s(double planned_mm_s, const ChannelContext& ctx) const noexcept;
 
  private:
   void release_tap_spindle(ChannelContext& ctx) noexcept;
