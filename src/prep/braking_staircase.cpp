@@ -11,7 +11,7 @@ namespace {
 // What c can brake with from its first step on (passing in from a fillet:
 // what the fillet's turn leaves of a_max).
 double first_step_deceleration(const PlannedCommand& c) {
-  return c.after_fillet ? std::min(c.limits.a_dec_mm_s2, c.start_a_mm_s2) : c.limits.a_dec_mm_s2;
+  return c.pass_in_limited ? std::min(c.limits.a_dec_mm_s2, c.start_a_mm_s2) : c.limits.a_dec_mm_s2;
 }
 
 // holding_entry_limit's margins for a motion of length_mm that brakes
@@ -35,8 +35,7 @@ double holding_entry_limit(const PlannedCommand& c, double dt_s) {
   return std::max(motion::entry_velocity_limit(shorter, c.v_end_mm_s, a, dt_s) - a * dt_s, 0.0);
 }
 
-Staircase settle(const PlannedCommand& c, std::uint64_t seq, double end_cap_mm_s, const Staircase* next,
-                 double dt_s) {
+Staircase settle(const PlannedCommand& c, std::uint64_t seq, EndCaps caps, const Staircase* next, double dt_s) {
   const double length = c.segment.length();
   // Holding: the staircase comes to rest where the profile's would
   // (pass_brake_distance); a motion before it brakes towards the same
@@ -54,10 +53,11 @@ Staircase settle(const PlannedCommand& c, std::uint64_t seq, double end_cap_mm_s
   // both curves all along, entering at no more than the ceiling is always
   // possible (the margins are not paid again at every ceiling).
   const double a = std::min(s.a_mm_s2, next->a_mm_s2);
-  const double beyond = std::min(next->stand_mm, motion::pass_brake_distance(end_cap_mm_s, a, dt_s));
+  const double cap = caps.through_mm_s;
+  const double beyond = std::min(next->stand_mm, motion::pass_brake_distance(cap, a, dt_s));
   if (!(beyond > 0)) return s;
   const double v = std::max(across_entry_limit(length, beyond, a, dt_s),
-                            std::min(end_cap_mm_s, across_entry_limit(length, next->stand_mm, a, dt_s)));
+                            std::min(cap, across_entry_limit(length, next->stand_mm, a, dt_s)));
   if (!(v > s.entry_mm_s)) return s;
   return Staircase{v, length + beyond, a, next->stand_mm, next->reference, true, true};
 }

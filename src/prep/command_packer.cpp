@@ -12,7 +12,7 @@ using Attachments = FixedVector<kernel::Attachment, kernel::kMaxAttachments>;
 
 kernel::Motion motion_of(const PlannedCommand& c) {
   return kernel::Motion{c.segment.tail(), c.limits,  c.v_cmd_mm_s,       c.v_end_mm_s,   c.start_a_mm_s2,
-                        c.brake_beyond_mm, c.trafo,  c.measure,         c.passes_at_cruise, c.after_fillet,
+                        c.brake_beyond_mm, c.trafo,  c.measure,         c.passes_at_cruise, c.pass_in_limited,
                         c.into_fillet,     c.corner_stop,       c.manual_offset_axes};
 }
 

@@ -125,13 +125,14 @@ void LookAheadWindow::store(const PlannedCommand& c, bool linkable) {
   e.command = c;
   e.command.v_end_mm_s = 0;
   e.prev_motion = 0;
-  e.end_cap_mm_s = 0;
+  e.end_cap_mm_s = e.through_cap_mm_s = 0;
   e.stairs = Staircase{};
   if (c.kind == CommandKind::motion) {
     const std::uint64_t open = open_motion_;
     open_motion_ = is_quiet(c) && !c.exact_stop ? seq + 1 : 0;
     if (chained) {
       at(open - 1).end_cap_mm_s = c.v_entry_max_mm_s;
+      at(open - 1).through_cap_mm_s = c.v_entry_through_max_mm_s;
       e.prev_motion = open;
       raise_chain(seq);
     } else if (linkable) {
@@ -167,7 +168,7 @@ void LookAheadWindow::raise_chain(std::uint64_t seq) {
 // follows that): a new one only where it covers the old.
 void LookAheadWindow::settle(std::uint64_t seq, const Staircase* next) {
   Entry& e = at(seq);
-  const Staircase s = prep::settle(e.command, seq, e.end_cap_mm_s, next, cycle_s_);
+  const Staircase s = prep::settle(e.command, seq, e.caps(), next, cycle_s_);
   const bool kept = seq < fixed_end_ && e.stairs.through;
   if (!kept || (s.through && s.covers(e.stairs))) e.stairs = s;
 }
@@ -208,7 +209,7 @@ bool LookAheadWindow::lowering_is_safe(std::uint64_t seq, Staircase changed) con
     if (m < first_open()) return false;
     PlannedCommand c = before.command;
     c.v_end_mm_s = std::min(before.end_cap_mm_s, changed.entry_mm_s);
-    changed = prep::settle(c, m, before.end_cap_mm_s, &changed, cycle_s_);
+    changed = prep::settle(c, m, before.caps(), &changed, cycle_s_);
     seq = m;
   }
 }
@@ -357,7 +358,7 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
     after.start_a_mm_s2 =
         parabola ? parabola_pass_acceleration(cb->corner, f.limits, cb->after, after.limits, true, dyn, cycle_s_)
                  : pass_acceleration(cb->corner, f.limits, cb->after, after.limits, dyn, cycle_s_);
-    after.after_fillet = true;
+    after.pass_in_limited = true;
   }
   // Into the fillet: the block before brakes to the fillet's speed in the
   // cycle that crosses into it (not a cycle earlier) with at most what the
@@ -375,11 +376,12 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   // is slower than a stop is far): fine inside the window, where the chain
   // is planned again, but not for a command already released.
   after.v_end_mm_s = 0;
-  const Staircase after_stairs = prep::settle(after, tail_ + 1, 0, nullptr, cycle_s_);
+  const Staircase after_stairs = prep::settle(after, tail_ + 1, EndCaps{}, nullptr, cycle_s_);
   f.v_end_mm_s = std::min(after.v_entry_max_mm_s, after_stairs.entry_mm_s);
-  const Staircase f_stairs = prep::settle(f, tail_, after.v_entry_max_mm_s, &after_stairs, cycle_s_);
+  const Staircase f_stairs = prep::settle(f, tail_, EndCaps::both(after.v_entry_max_mm_s), &after_stairs, cycle_s_);
   before.v_end_mm_s = std::min(f.v_entry_max_mm_s, f_stairs.entry_mm_s);
-  if (!lowering_is_safe(prev, prep::settle(before, prev, f.v_entry_max_mm_s, &f_stairs, cycle_s_))) return false;
+  if (!lowering_is_safe(prev, prep::settle(before, prev, EndCaps::both(f.v_entry_max_mm_s), &f_stairs, cycle_s_)))
+    return false;
 
   p.command.segment = cb->before;
   p.command.limits = before.limits;
@@ -387,15 +389,15 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   next.segment = cb->after;
   next.limits = after.limits;
   next.start_a_mm_s2 = after.start_a_mm_s2;
-  next.after_fillet = after.after_fillet;
+  next.pass_in_limited = after.pass_in_limited;
   next.v_entry_max_mm_s = after.v_entry_max_mm_s;
   f.v_end_mm_s = 0;
   const std::uint64_t seq = tail_++;
   Entry& e = at(seq);
   e.command = f;
   e.prev_motion = prev + 1;
-  e.end_cap_mm_s = 0;
-  p.end_cap_mm_s = f.v_entry_max_mm_s;
+  e.end_cap_mm_s = e.through_cap_mm_s = 0;
+  p.end_cap_mm_s = p.through_cap_mm_s = f.v_entry_max_mm_s;
   open_motion_ = seq + 1;
   raise_chain(seq);
   ++stats_.blends;
@@ -424,7 +426,7 @@ bool LookAheadWindow::release(kernel::CommandQueue& q, bool flush) {
     if (e.stairs.through) {  // the kernel follows the staircase, which must stay as it is
       e.command.brake_beyond_mm = e.stairs.across_mm;
       e.command.limits.a_dec_mm_s2 = e.stairs.a_mm_s2;
-      e.command.v_end_mm_s = e.end_cap_mm_s;  // the ceiling: the staircase sets the speed below it
+      e.command.v_end_mm_s = e.through_cap_mm_s;  // the ceiling: the staircase sets the speed below it
       fixed_end_ = std::max(fixed_end_, e.stairs.reference + 1);
     }
     if (!packer_.pack(e.command, q)) return false;

@@ -16,7 +16,11 @@ is pi/2 times its mean), with 4,000 mm/s^3 for the rounding of a third
 difference, up to the program's end (jogs and MDI after it are not under
 its #SLOPE).
 
-  limits_property.py NCK SOURCE_DIR [--cases N] [--seed S] [--minutes M]
+  limits_property.py NCK SOURCE_DIR [--cases N] [--seed S] [--minutes M] [--machine DIR]
+
+--machine runs them on another machine folder than examples/mill (e.g.
+bench/machines/equal-limits, where the feed accelerations equal a_max and
+a kink has no acceleration to spare above the path's).
 
 A violation prints the program, the scenario and the cycle, and exits 1.
 """
@@ -80,6 +84,8 @@ def program(rng):
             lines.append(rng.choice(["G4 X0.05", "M8", "M9", "P1 = 2"]))
         elif roll < 0.38:
             lines.append(f"F{rng.choice([300, 1200, 6000, 15000])}")
+        elif roll < 0.48:
+            here = fine_polyline(rng, here, lines)
         else:
             # short and long lines, mostly small kinks, sometimes a reversal
             step = rng.choice([0.2, 1, 5, 30])
@@ -88,6 +94,21 @@ def program(rng):
             lines.append(f"G1 X{here[0]} Y{here[1]} Z{here[2]}")
     lines.append("M30")
     return "\n".join(lines) + "\n"
+
+
+def fine_polyline(rng, here, lines):
+    """Chords of 0.1 to 2 mm turning by up to 6 degrees each (a CAM program's
+    fine segments, whose kinks are passed at speed near the kink rule's
+    limit), in the XY plane or climbing in Z; returns the last point."""
+    step = rng.choice([0.1, 0.25, 0.5, 2.0])
+    heading, climb = rng.uniform(0, 2 * math.pi), rng.choice([0.0, 0.2])
+    for _ in range(rng.randint(5, 30)):
+        heading += math.radians(rng.uniform(-6, 6))
+        x = min(max(here[0] + step * math.cos(heading), -90), 90)
+        y = min(max(here[1] + step * math.sin(heading), -90), 90)
+        here = (round(x, 4), round(y, 4), round(min(here[2] + climb * step * rng.uniform(-1, 1), 10), 4))
+        lines.append(f"G1 X{here[0]} Y{here[1]} Z{here[2]}")
+    return here
 
 
 def scenario(rng):
@@ -174,8 +195,9 @@ def main():
     ap.add_argument("--seed", type=int, default=44)
     ap.add_argument("--minutes", type=float, default=0)
     ap.add_argument("--jerk", action="store_true", help="check the jerk under jerk-limited slopes too")
+    ap.add_argument("--machine", help="machine folder (default: SOURCE/examples/mill)")
     a = ap.parse_args()
-    machine = pathlib.Path(a.source) / "examples" / "mill"
+    machine = pathlib.Path(a.machine) if a.machine else pathlib.Path(a.source) / "examples" / "mill"
     limits = axis_limits(machine)
     rng = random.Random(a.seed)
     started = time.monotonic()

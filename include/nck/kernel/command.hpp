@@ -53,11 +53,12 @@ struct Motion {
   // transitions. (Flags of one bit here: Command stays at 504 bytes;
   // at 512, the queue's entries fell on the same cache sets.)
   bool passes_at_cruise : 1 = false;
-  // It follows a fillet (corner blending) and passes in from it: then
-  // start_a_mm_s2 is also the first step's acceleration when passing in
-  // (what the rest of the fillet's turn in that step leaves of a_max; the
-  // fillet's own, lower, would apply otherwise).
-  bool after_fillet : 1 = false;
+  // Passing in from the motion before, its first step changes the speed by
+  // at most start_a_mm_s2 (STEP): after a fillet, what the rest of the
+  // fillet's turn in that step leaves of a_max (the fillet's own, lower,
+  // would apply otherwise); after a kink passed at speed, what the kink's
+  // share in that step leaves.
+  bool pass_in_limited : 1 = false;
   // A fillet follows and the path passes into it: the speed to pass at is
   // reached in the crossing cycle (PathProfile::pass_into_fillet; the
   // window keeps this motion's accelerations within what the fillet's

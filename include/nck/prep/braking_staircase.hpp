@@ -37,12 +37,20 @@ struct Staircase {
 // step faster than planned; the margins keep its braking within a_dec.
 double holding_entry_limit(const PlannedCommand& c, double dt_s);
 
+// How fast the corner at a motion's end may be passed: holding the speed
+// (the planned v_end's cap) and braking across it (the kink shares its
+// crossing cycle with a braking step: PlannedCommand::v_entry_through_max_mm_s).
+struct EndCaps {
+  double holding_mm_s = 0;
+  double through_mm_s = 0;
+  static EndCaps both(double v_mm_s) { return {v_mm_s, v_mm_s}; }
+};
+
 // How c (sequence number seq, its planned v_end set) brakes: holding its
 // end speed, or braking across its end along next's staircase where both
 // run under STEP, c passes on at speed, the staircase never crosses faster
-// than the corner allows (end_cap_mm_s) and lets the path enter c faster.
-// next: the motion chained after c (nullptr: none).
-Staircase settle(const PlannedCommand& c, std::uint64_t seq, double end_cap_mm_s, const Staircase* next,
-                 double dt_s);
+// than the corner allows braking across (caps.through_mm_s) and lets the
+// path enter c faster. next: the motion chained after c (nullptr: none).
+Staircase settle(const PlannedCommand& c, std::uint64_t seq, EndCaps caps, const Staircase* next, double dt_s);
 
 }  // namespace nck::prep

@@ -97,6 +97,8 @@ class LookAheadWindow {
     PlannedCommand command;
     std::uint64_t prev_motion = 0;  // sequence number + 1 of the motion chained before, 0 = none
     double end_cap_mm_s = 0;        // corner/feed limit at its end while chained, else 0
+    double through_cap_mm_s = 0;    // the same for braking across its end (EndCaps)
+    EndCaps caps() const { return {end_cap_mm_s, through_cap_mm_s}; }
     Staircase stairs{};             // how it brakes (motions)
   };
   Entry& at(std::uint64_t seq) { return ring_[seq % ring_.size()]; }

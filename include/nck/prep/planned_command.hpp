@@ -62,6 +62,11 @@ struct PlannedCommand {
   // exact_stop_after_g00); the look-ahead window sets the velocity at its
   // end (0 = exact stop) so that every later block can still be reached.
   double v_entry_max_mm_s = 0;
+  // The same for a motion before it that brakes across the transition
+  // (braking_staircase.hpp): its braking and the kink share the crossing
+  // cycle, so the kink has only what a_max leaves above the braking (STEP;
+  // the same value under a jerk-limited slope).
+  double v_entry_through_max_mm_s = 0;
   bool exact_stop = false;
   double v_end_mm_s = 0;
   // The next motion chains after it and the corner and feed rules let the
@@ -69,9 +74,9 @@ struct PlannedCommand {
   // (kernel::Motion::passes_at_cruise). The look-ahead window sets it when
   // the command leaves (HSC's chains).
   bool passes_at_cruise = false;
-  // It follows a fillet and start_a_mm_s2 is also its first step when
-  // passing in from it (kernel::Motion::after_fillet; STEP only).
-  bool after_fillet = false;
+  // Passing in (after a fillet or a kink), its first step is limited to
+  // start_a_mm_s2 too (kernel::Motion::pass_in_limited; STEP only).
+  bool pass_in_limited = false;
   // A fillet follows: it reaches the speed to pass at in the crossing
   // cycle (kernel::Motion::into_fillet; STEP only).
   bool into_fillet = false;
@@ -145,6 +150,6 @@ struct PlannedCommand {
 
 // The window keeps up to 128 of them and copies them as it plans
 // (docs/architecture.md gives this size; issue 42's bar: at most 1,200 B).
-static_assert(sizeof(PlannedCommand) == 1000);
+static_assert(sizeof(PlannedCommand) == 1008);
 
 }  // namespace nck::prep

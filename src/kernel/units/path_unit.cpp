@@ -42,7 +42,7 @@ void PathUnit::note_chain(const HscChain& h) noexcept {
 bool PathUnit::carry_on(const Motion& m) noexcept {
   if (passing_) {
     passing_ = false;
-    if (m.after_fillet) profile_.pass_first_step(m.start_a_mm_s2);
+    if (m.pass_in_limited) profile_.pass_first_step(m.start_a_mm_s2);
     velocity_ = profile_.v();
     return true;
   }

@@ -3,6 +3,7 @@
 // and how fast the path may pass into it from the motion planned before it.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "nck/motion/junction.hpp"
 #include "nck/prep/units/corner_unit.hpp"
@@ -24,19 +25,46 @@ double jerk_limited_kink_dv(const motion::AxisDynamics& d, double weight, double
   return std::min(d.a_acc_mm_s2, d.a_dec_mm_s2) / tr_s * dt_s * dt_s;
 }
 
+// A kink passed at speed under STEP turns the axes within the cycle that
+// crosses it and the one after: the crossing cycle keeps its speed
+// (PathProfile::step) and the cycle before holds it, so no along-path
+// acceleration shares those two cycles but the first step after the kink,
+// which the next motion limits to what the turn leaves
+// (kink_pass_acceleration). The turn may so take this share of a_max even
+// where the feed accelerations equal a_max (issue 43, D2: every kink was a
+// stop there); the rest stays for that first step.
+constexpr double kKinkShare = 0.5;
+
 }  // namespace
 
 // setup: each axis's velocity budget for a kink. Along the path an axis
-// already accelerates with up to max(a_acc, a_dec) of the block's mode; a
-// kink may add only what is left of a_max, spent within one cycle, and
-// under a jerk-limited slope no more than its jerk allows.
+// accelerates with up to max(a_acc, a_dec) of the block's mode; a kink in a
+// cycle that may also do so (braking across it) adds only what is left of
+// a_max; passing at speed it may take kKinkShare of a_max; under a
+// jerk-limited slope no more than its jerk allows.
 CornerUnit::KinkBudgets CornerUnit::kink_budgets(const AxisTable& axes, const AxisDynamicsArray& dyn, double dt_s) {
   KinkBudgets dv;
   for (std::size_t j = 0; j < axes.count(); ++j) {
-    dv.step_mm_s[j] = std::max(axes.accel_cap_mm_s2(j) - std::max(dyn[j].a_acc_mm_s2, dyn[j].a_dec_mm_s2), 0.0) * dt_s;
+    const double a_max = axes.accel_cap_mm_s2(j);
+    dv.step_mm_s[j] = std::max(a_max - std::max(dyn[j].a_acc_mm_s2, dyn[j].a_dec_mm_s2), 0.0) * dt_s;
+    dv.passing_mm_s[j] = std::max(dv.step_mm_s[j], kKinkShare * a_max * dt_s);
     dv.jerk_limited_mm_s[j] = std::min(dv.step_mm_s[j], jerk_limited_kink_dv(dyn[j], axes.trans_weight(j), dt_s));
   }
   return dv;
+}
+
+// The first step after passing from t_in into t_out at up to v: the largest
+// acceleration along t_out at which no axis's turn (at most v |t_out - t_in|
+// in that step) and the step together exceed its a_max.
+double CornerUnit::kink_pass_acceleration(const motion::AxisVector& t_in, const motion::AxisVector& t_out,
+                                          double v_mm_s, const PlanContext& ctx, double dt_s) {
+  double a = std::numeric_limits<double>::infinity();
+  for (std::size_t j = 0; j < ctx.n_axes; ++j) {
+    if (std::fabs(t_out[j]) < 1e-12) continue;
+    const double turn_mm_s2 = v_mm_s * std::fabs(t_out[j] - t_in[j]) / dt_s;
+    a = std::min(a, (ctx.axes.accel_cap_mm_s2(j) - turn_mm_s2) / std::fabs(t_out[j]));
+  }
+  return std::max(a, 0.0);
 }
 
 CornerUnit::CornerUnit(const AxisTable& axes, std::uint32_t cycle_time_us) {
@@ -122,21 +150,40 @@ void CornerUnit::note_transition(const nc::Block& b, PlannedCommand& c, bool rap
   c.feed_link.chained = thread_chain && last_.valid;
   const KinkBudgets& budgets = rapid ? rapid_ : feed_;
   const bool jerk = jerk_limited(b.modal.slope);
-  const auto& dv = jerk ? budgets.jerk_limited_mm_s : budgets.step_mm_s;
+  const auto& dv = jerk ? budgets.jerk_limited_mm_s : budgets.passing_mm_s;
+  const auto& through_dv = jerk ? budgets.jerk_limited_mm_s : budgets.step_mm_s;
   const double cruise_mm_s = std::min(c.v_cmd_mm_s, c.limits.v_max_mm_s);
   c.start_a_mm_s2 = start_acceleration(c, ctx);
-  if (last_.valid) {
-    std::array<double, kMaxAxes> budget{};
-    for (std::size_t j = 0; j < ctx.n_axes; ++j) budget[j] = std::min(dv[j], last_.corner_dv[j]);
-    c.v_entry_max_mm_s = motion::transition_velocity(
-        last_.tangent, machine_tangent(c, false, ctx.n_axes), std::span<const double>(budget.data(), ctx.n_axes),
-        last_.braking_step_mm_s, last_.cruise_mm_s, cruise_mm_s);
-  }
+  if (last_.valid) pass_kink(c, dv, through_dv, cruise_mm_s, jerk, ctx);
   // STEP brakes in whole steps of a_dec * dt and may cross the transition
   // one step faster than planned; a jerk-limited slope ends its braking with
   // the deceleration ramped down to 0, at the planned speed.
   const double braking_step_mm_s = jerk ? 0.0 : c.limits.a_dec_mm_s2 * cycle_s_;
-  last_ = {true, machine_tangent(c, true, ctx.n_axes), dv, cruise_mm_s, c.limits.a_dec_mm_s2, braking_step_mm_s, thread_chain};
+  last_ = {true,        machine_tangent(c, true, ctx.n_axes), dv, through_dv, cruise_mm_s, c.limits.a_dec_mm_s2,
+           braking_step_mm_s, thread_chain};
+}
+
+// The entry limits of c from the last motion: passing at speed and braking
+// across (each with the smaller budget of both motions); passing at a speed
+// whose turn leaves less than c's accelerations, c's first step is limited.
+void CornerUnit::pass_kink(PlannedCommand& c, const Budget& dv, const Budget& through_dv, double cruise_mm_s,
+                           bool jerk, const PlanContext& ctx) {
+  const motion::AxisVector t_out = machine_tangent(c, false, ctx.n_axes);
+  const auto entry = [&](const Budget& mine, const Budget& last) {
+    Budget budget{};
+    for (std::size_t j = 0; j < ctx.n_axes; ++j) budget[j] = std::min(mine[j], last[j]);
+    return motion::transition_velocity(last_.tangent, t_out, std::span<const double>(budget.data(), ctx.n_axes),
+                                       last_.braking_step_mm_s, last_.cruise_mm_s, cruise_mm_s);
+  };
+  c.v_entry_max_mm_s = entry(dv, last_.corner_dv);
+  c.v_entry_through_max_mm_s = entry(through_dv, last_.through_dv);
+  if (jerk || !(c.v_entry_max_mm_s > 0)) return;
+  // The path may cross one braking step faster than planned.
+  const double v = c.v_entry_max_mm_s + last_.braking_step_mm_s;
+  const double a = kink_pass_acceleration(last_.tangent, t_out, v, ctx, cycle_s_);
+  if (a >= std::max(c.limits.a_acc_mm_s2, c.limits.a_dec_mm_s2)) return;
+  c.start_a_mm_s2 = std::min(c.start_a_mm_s2, a);
+  c.pass_in_limited = true;
 }
 
 }  // namespace nck::prep

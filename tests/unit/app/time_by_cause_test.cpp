@@ -78,10 +78,12 @@ TEST(TimeByCause, Feedhold) {
 }
 
 TEST(TimeByCause, Corner) {
-  // a zigzag of 1 mm blocks that turn by half a degree: the corners allow
-  // about 48 mm/s, and between them the path never reaches F (100 mm/s)
+  // a zigzag of 1 mm blocks that turn by 1.5 degrees: the corners allow
+  // about 55 mm/s (half of a_max, 1.5 mm/s in a cycle, over Y's turn of
+  // 0.026, less a braking step), and between them the path never reaches
+  // F (100 mm/s)
   std::string p = "G90 G0 X0 Y0 Z0\nG1 F6000\n";
-  for (int i = 1; i <= 40; ++i) p += "X" + std::to_string(i) + " Y" + (i % 2 ? "0.005" : "0") + "\n";
+  for (int i = 1; i <= 40; ++i) p += "X" + std::to_string(i) + " Y" + (i % 2 ? "0.013" : "0") + "\n";
   p += "M30\n";
   expect_dominant(run_program("corner", p), 20, "corner");
 }

@@ -28,12 +28,17 @@ class CornerUnit {
  private:
   motion::AxisVector machine_tangent(const PlannedCommand& c, bool at_end, std::size_t n_axes) const;
   double start_acceleration(const PlannedCommand& c, const PlanContext& ctx) const;
+  using Budget = std::array<double, kMaxAxes>;
+  void pass_kink(PlannedCommand& c, const Budget& dv, const Budget& through_dv, double cruise_mm_s, bool jerk,
+                 const PlanContext& ctx);
+  static double kink_pass_acceleration(const motion::AxisVector& t_in, const motion::AxisVector& t_out, double v_mm_s,
+                                       const PlanContext& ctx, double dt_s);
 
   // The last planned motion, for the corner into the next one.
   struct LastMotion {
     bool valid = false;
     motion::AxisVector tangent{};  // at its end, machine axes
-    std::array<double, kMaxAxes> corner_dv{};
+    std::array<double, kMaxAxes> corner_dv{}, through_dv{};
     double cruise_mm_s = 0;
     double a_dec_mm_s2 = 0;  // along its path
     double braking_step_mm_s = 0;  // how much faster than planned it may reach its end
@@ -41,11 +46,13 @@ class CornerUnit {
   };
   LastMotion last_{};
   double cycle_s_ = 0.001;
-  // Velocity change a kink may cause per axis within one cycle: under STEP
-  // what is left of a_max, under a jerk-limited slope no more than its jerk
-  // (or P-AXIS-00013) allows either.
+  // Velocity change a kink may cause per axis within one cycle. Under STEP
+  // passing at speed: kKinkShare of a_max or what a_max leaves above the
+  // feed accelerations, whichever is more; braking across it: only the
+  // latter. Under a jerk-limited slope no more than its jerk (or
+  // P-AXIS-00013) allows either.
   struct KinkBudgets {
-    std::array<double, kMaxAxes> step_mm_s{}, jerk_limited_mm_s{};
+    std::array<double, kMaxAxes> passing_mm_s{}, step_mm_s{}, jerk_limited_mm_s{};
   };
   static KinkBudgets kink_budgets(const AxisTable& axes, const AxisDynamicsArray& dyn, double dt_s);
   KinkBudgets feed_{}, rapid_{};
