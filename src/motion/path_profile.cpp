@@ -242,9 +242,13 @@ ProfileSample PathProfile::step(double dt_s, double override_factor) noexcept {
   // takes the speed to pass at instead (the fillet's first part turns by at
   // most half its centripetal acceleration in it, and the window gave this
   // segment no acceleration beyond what that leaves of a_max).
-  // Braking across the end, it may go on braking in it.
-  if (v_end_mm_s_ > 0.0 && v_prev > 0.0 && v * dt_s >= left_mm - kSnapMm) {
-    if (through) v = std::min(v, v_prev);
+  // Braking across the end, it may go on braking in it. Out of a
+  // standstill just before the end (a feedhold that stopped there), the step
+  // reaches the end and no further: its speed-up is this segment's, which
+  // the next one's direction may turn into more than an axis's a_max.
+  if (v_end_mm_s_ > 0.0 && v * dt_s >= left_mm - kSnapMm) {
+    if (!(v_prev > 0.0)) v = left_mm / dt_s;
+    else if (through) v = std::min(v, v_prev);
     else v = into_fillet_ ? std::clamp(std::min(target, v_end_mm_s_), v_prev - a_dec * dt_s, v_prev) : v_prev;
   }
   const double move_mm = v * dt_s;

@@ -73,6 +73,24 @@ std::optional<motion::CornerBlend> sized_for_feed(Make make, LimitsOf limits_of,
   return sized;
 }
 
+// Under a jerk-limited slope the acceleration across the path steps by
+// v^2/r within a cycle where a fillet meets its blocks (it is tangent to
+// them, not curvature-continuous). Like a kink's velocity step (the kink
+// rule, CornerUnit), that step stays within what the slope's jerk allows
+// in a cycle, a / tr * dt, on each plane axis (TF5200 P-AXIS-00154
+// r_trans_weight at its 100 %): v <= sqrt(a / tr * dt * r).
+double curvature_step_speed(const motion::Segment& fillet, const BlendDynamics& d, double cycle_s) {
+  const double r = std::min(fillet.radius_start(), fillet.radius_end());
+  double step_mm_s2 = std::numeric_limits<double>::infinity();
+  for (const std::size_t j : {fillet.plane_a(), fillet.plane_b()}) {
+    if (j >= d.feed.size()) continue;
+    const motion::AxisDynamics& ax = d.feed[j];
+    const double tr_s = std::max({ax.tr.acc_up_s, ax.tr.acc_down_s, ax.tr.dec_up_s, ax.tr.dec_down_s});
+    if (tr_s > 0) step_mm_s2 = std::min(step_mm_s2, std::min(ax.a_acc_mm_s2, ax.a_dec_mm_s2) / tr_s * cycle_s);
+  }
+  return std::isfinite(step_mm_s2) ? std::sqrt(step_mm_s2 * r) : step_mm_s2;
+}
+
 }  // namespace
 
 LookAheadWindow::LookAheadWindow(std::size_t depth, double cycle_s)
@@ -282,10 +300,14 @@ std::optional<motion::CornerBlend> LookAheadWindow::corner_blend(const Entry& p,
   const auto bounds = [&](double share) { return motion::BlendBounds{p.command.blend_dev_mm, trim_a, trim_b, share}; };
   // Sized with the fillet's least share for speeding up and braking, run
   // with what its turn at the feed leaves (fillet_limits).
+  const auto fillet_limits_of = [&](const motion::Segment& f, double feed_mm_s) {
+    motion::PathLimits l = jerk_fillet_limits(f, dyn, p.command.limits, feed_mm_s);
+    if (jerk_limited(l.slope)) l.v_max_mm_s = std::min(l.v_max_mm_s, curvature_step_speed(f, dyn, cycle_s_));
+    return l;
+  };
   auto cb = sized_for_feed([&](double share) { return motion::blend_corner(p.command.segment, next.segment, bounds(share)); },
-                           [&](const motion::Segment& f) { return jerk_fillet_limits(f, dyn, p.command.limits, 0.0); },
-                           feed, cycle_s_, limits);
-  if (cb) limits = jerk_fillet_limits(cb->corner, dyn, p.command.limits, feed);
+                           [&](const motion::Segment& f) { return fillet_limits_of(f, 0.0); }, feed, cycle_s_, limits);
+  if (cb) limits = fillet_limits_of(cb->corner, feed);
   // STEP only: a parabola's axes change their acceleration at its ends by
   // up to a_max (no jerk limit could hold there).
   if (p.command.limits.slope != SlopeProfile::step || next.limits.slope != SlopeProfile::step) return cb;

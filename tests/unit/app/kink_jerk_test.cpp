@@ -95,5 +95,23 @@ TEST(KinkJerk, ATransitionWeightLetsTheKinkStepTheAccelerationByItsShare) {
   EXPECT_LT(weighted.rows.size(), plain.rows.size());
 }
 
+// A fillet under a jerk-limited slope meets its lines with a step of v^2/r
+// in the acceleration across the path, within a cycle: like a kink's, that
+// step is held to a / tr * dt (50 mm/s^2 at the default 50 ms ramps), so the
+// fillet is made larger or run slower. Found by the property test at equal
+// limits (issue 43): five 2 mm chords with 0.8 to 18 degree kinks under
+// TRAPEZ and PATH_DEV 0.05 stepped Y's acceleration by 419 mm/s^2 in a
+// cycle, beyond even the drive's pi/2 a_max / tr_min = 392,699 mm/s^3.
+TEST(KinkJerk, FilletsStepTheAccelerationAcrossThePathWithinTheJerk) {
+  const PathRun r = run_text(root() + "/bench/machines/equal-limits",
+                             "N1 G90 G17 F3000\n#SLOPE [TYPE=TRAPEZ]\n#CONTOUR MODE [DEV PATH_DEV=0.05]\nG261\n"
+                             "G0 X-48.0447 Y-0.1261\nG1 X-46.0447 Y-0.2467\nG1 X-44.0511 Y-0.5885\n"
+                             "G1 X-42.0603 Y-0.9587\nG1 X-40.0779 Y-0.681\nG1 X-38.1034 Y-1.0417\nM30\n",
+                             "fillet_jerk");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  EXPECT_LE(largest(r, 3), M_PI / 2 * 2500 / 0.01 + kJerkRoundingMmS3);
+  EXPECT_LE(largest(r, 2), 2500 + kAccelRoundingMmS2);
+}
+
 }  // namespace
 }  // namespace nck::app::testing

@@ -245,6 +245,25 @@ TEST(PathProfile, EndVelocityCarriesIntoNextSegment) {
   EXPECT_NEAR(t, duration_estimate(100.0, 50.0, l), 3 * kDt);
 }
 
+// A feedhold that stopped the path just before the end of a segment it
+// passes on from: the step out of the standstill reaches the end and no
+// further (its speed-up is this segment's; the next segment's direction may
+// turn it into more than an axis's a_max), and nothing is carried.
+TEST(PathProfile, OutOfAStandstillJustBeforeAPassedEndTheStepStopsThere) {
+  PathProfile p;
+  const PathLimits l{100.0, 2500.0, 2500.0};
+  ASSERT_TRUE(p.start(1.0, 50.0, l, 40.0));
+  // Hold at once: from standstill nothing moves; then creep to 0.7 um before the end.
+  ASSERT_EQ(p.step(kDt, 0.0).v_mm_s, 0.0);
+  ASSERT_TRUE(p.start(0.0007, 50.0, l, 40.0));  // what is left of the block
+  const ProfileSample st = p.step(kDt, 1.0);
+  EXPECT_TRUE(st.finished);
+  EXPECT_NEAR(st.v_mm_s, 0.7, 1e-9);  // not 2.5 (a * dt), of which 1.8 um would lie in the next segment
+  ASSERT_TRUE(p.start(10.0, 50.0, l));
+  EXPECT_EQ(p.s(), 0.0);  // nothing carried
+  EXPECT_LE(p.step(kDt, 1.0).v_mm_s, 0.7 + 2.5 + 1e-9);
+}
+
 TEST(PathProfile, EndVelocityBrakesDownToIt) {
   PathProfile p;
   const PathLimits l{100.0, 500.0, 500.0};
