@@ -2,15 +2,17 @@
 // each report offline in Debian's chromium (playwright-core) and checks
 // what a user sees. Usage:
 //   node tests/browser/report_test.mjs --nck BIN --source DIR --out DIR
-//        [--blocks N] [--images DIR]
+//        [--blocks N] [--images DIR] [--only NAME,...]
 // --blocks: size of the generated long program (default 200000, the
-// issue's benchmark); --images: also save the README screenshots there.
+// issue's benchmark); --images: also save the README screenshots there;
+// --only: run only the cases of these names (while working on one).
 import { chromium } from "playwright-core";
 import { execFileSync } from "node:child_process";
 import fs from "node:fs";
 import path from "node:path";
 import { caps, expectations, writeCommonProgram, writeFrameProgram, writeHoldProgram } from "./report_cases.mjs";
 import { check3d, checkAccel } from "./report_view3d.mjs";
+import { checkCursor } from "./report_cursor.mjs";
 
 const args = Object.fromEntries(process.argv.slice(2).reduce((acc, a, i, all) => {
   if (a.startsWith("--")) acc.push([a.slice(2), all[i + 1] && !all[i + 1].startsWith("--") ? all[i + 1] : "1"]);
@@ -24,18 +26,21 @@ let failures = 0;
 const fail = (name, msg) => { failures++; console.error(`FAIL ${name}: ${msg}`); };
 const ok = (name, msg) => console.log(`ok   ${name}: ${msg}`);
 
-function runNck(name, machine, programs, plc) {
+// withOutputs: the run's --events and --trace beside the report (the cursor's checks)
+function runNck(name, machine, programs, plc, withOutputs) {
   const report = path.join(out, name + ".html");
+  const outputs = { events: path.join(out, name + ".events.jsonl"), trace: path.join(out, name + ".trace.csv") };
   // run in the source folder with relative names, as a user would (the report shows them)
   const argv = ["run", machine, ...programs, "--report", report, "--no-progress"];
   if (plc) argv.push("--plc", plc);
+  if (withOutputs) argv.push("--events", outputs.events, "--trace", outputs.trace);
   const t = Date.now();
   try {
     execFileSync(path.resolve(nck), argv, { cwd: src, stdio: ["ignore", "ignore", "pipe"] });
   } catch (e) {
     if (e.status !== 0 && e.status !== 1) throw new Error(`nck ${argv.join(" ")} exited ${e.status}: ${e.stderr}`);
   }
-  return { report, runMs: Date.now() - t };
+  return { report, runMs: Date.now() - t, outputs };
 }
 
 // The time cursor: play moves the tool marker and the highlighted line;
@@ -91,7 +96,7 @@ async function checkPlayer(page, name) {
 }
 
 async function check(browser, c) {
-  const { report, runMs } = runNck(c.name, c.machine, c.programs, c.plc);
+  const { report, runMs, outputs } = runNck(c.name, c.machine, c.programs, c.plc, !!c.cursor);
   const sizeBytes = fs.statSync(report).size;
   const context = await browser.newContext({ offline: true, viewport: { width: 1320, height: 900 }, deviceScaleFactor: 1 });
   const page = await context.newPage();
@@ -295,6 +300,7 @@ async function check(browser, c) {
     if (off.length) fail(name, `backplot ${i + 1} in program coordinates spans ${JSON.stringify(got)}, expected ${JSON.stringify(want)}`);
     else ok(name, `backplot ${i + 1} in program coordinates: ${JSON.stringify(got)}`);
   }
+  if (c.cursor) await checkCursor(page, name, { ...outputs, ...c.cursor }, { fail, ok });
   if (c.play) await checkPlayer(page, name);
   // a 3D view for each channel with three linear axes, none otherwise
   const want3d = c.backplots.filter((b) => b.view3d).length;
@@ -320,7 +326,8 @@ try {
   writeCommonProgram(longProgram, blocks);
   writeFrameProgram(path.join(out, "frames.nc"));
   writeHoldProgram(out);
-  for (const c of expectations(longProgram, blocks, caps(blocks), out)) await check(browser, c);
+  for (const c of expectations(longProgram, blocks, caps(blocks), out))
+    if (!args.only || args.only.split(",").includes(c.name)) await check(browser, c);
 } catch (e) {
   fail("browser test", e.stack || String(e));
 } finally {
