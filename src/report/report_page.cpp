@@ -294,10 +294,10 @@ std::string ReportWriter::lines_json(const std::vector<LineRef>& lines_used) con
 void ReportWriter::note_link(const kernel::Event& e, const kernel::LinkEvent& link, const RunNames& names) {
   const int ch = e.channel, group = link.group;
   if (link.on) {
-    json pairs = json::array();
-    for (const auto& [slave, master] : names.link(link.payload).pairs) pairs.push_back(json::array({slave, master}));
-    if (links_.size() < kMaxListed)
-      links_.push_back({ch, group, pairs.dump(-1, ' ', false, json::error_handler_t::replace), e.t_s, -1, ""});
+    std::string pairs;  // "Y2 ← Y1, S2 ← S1": as the event table writes a link's pairs
+    for (const auto& [slave, master] : names.link(link.payload).pairs)
+      pairs += (pairs.empty() ? "" : ", ") + slave + " \u2190 " + master;
+    if (links_.size() < kMaxListed) links_.push_back({ch, group, pairs, e.t_s, -1, ""});
     return;
   }
   for (LinkPeriod& p : links_)
@@ -310,7 +310,7 @@ void ReportWriter::note_link(const kernel::Event& e, const kernel::LinkEvent& li
 std::string ReportWriter::link_table() const {
   if (links_.empty()) return {};
   std::string h = "<section><h2>Synchronous operation (coupling periods)</h2><table><tr><th>ch</th><th>group</th>"
-                  "<th>pairs [slave, master]</th><th>on (s)</th><th>off (s)</th><th>ended by</th></tr>";
+                  "<th>pairs (slave ← master)</th><th>on (s)</th><th>off (s)</th><th>ended by</th></tr>";
   for (const LinkPeriod& p : links_)
     h += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{:.3f}</td><td>{}</td><td>{}</td></tr>", p.ch, p.group,
                      html_text(p.pairs), p.on_s, p.off_s < 0 ? std::string("still on") : fmt::format("{:.3f}", p.off_s),

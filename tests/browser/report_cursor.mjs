@@ -79,6 +79,14 @@ export async function checkCursor(page, name, files, { fail, ok }) {
   });
   if (!bad) ok(name, `cursor over ${samples.length} cycles of ${new Set(samples.map((s) => s.block)).size} blocks: block, line and DRO ` +
     `as the events and the trace (worst ${worst.toExponential(1)} mm, bound ${meta.error} mm)`);
+  // at t = 0 the motion shown is the one the cause names (item 5: it said feed while the cause said rapid)
+  const start = await page.evaluate(() => {
+    window.nckReport.player.seek(0);
+    const kv = [...document.querySelectorAll("#dro .kv > *")].map((e) => e.textContent);
+    return { motion: kv[kv.indexOf("motion") + 1], cause: document.querySelector("#dro .cause-now").textContent };
+  });
+  if (/^rapid/.test(start.cause) !== /^G0/.test(start.motion)) fail(name, `at 0 s the DRO shows ${start.motion} and cause ${start.cause}`);
+  else ok(name, `at 0 s: ${start.motion}, cause ${start.cause}`);
   for (const want of files.at || []) {  // the issue's own cases
     const got = await page.evaluate((t) => { window.nckReport.player.seek(t); return document.querySelector("#dro .block-now").textContent; }, want.t);
     if (!got.includes(want.block)) fail(name, `at ${want.t} s the DRO names "${got}", expected ${want.block}`);

@@ -168,12 +168,14 @@ async function check(browser, c) {
   // issue 31 item 1: time by cause, a stacked bar and two tables per channel
   const causes = await page.evaluate(() => [...document.querySelectorAll("#causes .cause-channel")].map((d) => ({
     bar: [...d.querySelectorAll(".cause-bar span")].reduce((s, x) => s + parseFloat(x.style.width), 0),
+    colours: [...d.querySelectorAll(".cause-bar span")].map((x) => x.style.background),
     causes: [...d.querySelectorAll(".cause-table tr")].filter((tr) => tr.querySelector("td")).length,
     lines: [...d.querySelectorAll(".blocks tr")].filter((tr) => tr.querySelector("td")).map((tr) => tr.children[1].textContent),
   })));
   if (!causes.length) fail(name, "no time-by-cause section");
   for (const [i, ch] of causes.entries()) {
     if (Math.abs(ch.bar - 100) > 0.5) fail(name, `cause bar ${i + 1} spans ${ch.bar} %`);
+    if (new Set(ch.colours).size !== ch.colours.length) fail(name, `cause bar ${i + 1} repeats colours: ${ch.colours.join(" ")}`);
     if (ch.causes < (c.minCauses || 1)) fail(name, `cause table ${i + 1} has ${ch.causes} rows, expected ${c.minCauses || 1}`);
     if (!ch.lines.length || ch.lines.some((t) => !t.trim())) fail(name, `block table ${i + 1}: a row without its NC line`);
   }
@@ -299,6 +301,28 @@ async function check(browser, c) {
     const off = [0, 1, 2].filter((a) => Math.abs(got.min[a] - want.min[a]) > want.tol || Math.abs(got.max[a] - want.max[a]) > want.tol);
     if (off.length) fail(name, `backplot ${i + 1} in program coordinates spans ${JSON.stringify(got)}, expected ${JSON.stringify(want)}`);
     else ok(name, `backplot ${i + 1} in program coordinates: ${JSON.stringify(got)}`);
+  }
+  if (c.links) {  // issue 48 item 5: the coupling table as Y2 ← Y1, not raw JSON
+    const text = await page.evaluate(() => [...document.querySelectorAll("section h2")]
+      .find((h) => h.textContent.startsWith("Synchronous"))?.parentElement.textContent || "");
+    if (!c.links.test(text) || /[[\]"]/.test(text)) fail(name, `coupling table "${text}", expected ${c.links}`);
+    else ok(name, `coupling table "${text.slice(0, 80)}…"`);
+  }
+  if (c.iso) {  // issue 48 item 5: the isometric view has no tick labels (no axis runs along the screen)
+    const texts = await page.evaluate(() => {
+      const b = window.nckReport.backplots[0], drawn = [], fill = b.ctx.fillText;
+      b.ctx.fillText = function (t, ...rest) { drawn.push(String(t)); return fill.call(this, t, ...rest); };
+      b.select.value = "ISO";
+      b.select.dispatchEvent(new Event("change"));
+      b.draw();
+      b.ctx.fillText = fill;
+      b.select.value = "XY";
+      b.select.dispatchEvent(new Event("change"));
+      return drawn;
+    });
+    const numbers = texts.filter((t) => /^-?[\d.]+$/.test(t.trim()));
+    if (numbers.length || !texts.some((t) => t.startsWith("isometric"))) fail(name, `the isometric view draws ${JSON.stringify(texts)}`);
+    else ok(name, `the isometric view draws no tick labels (${JSON.stringify(texts)})`);
   }
   if (c.cursor) await checkCursor(page, name, { ...outputs, ...c.cursor }, { fail, ok });
   if (c.play) await checkPlayer(page, name);
