@@ -188,12 +188,12 @@
       for (let u = Math.ceil(u0 / step) * step; u <= u1; u += step) {
         const [x] = this.toScreen(u, 0);
         ctx.moveTo(x, 0); ctx.lineTo(x, this.h);
-        ctx.fillText(fmtNum(u), x + 2, this.h - 4);
+        if (!view.iso) ctx.fillText(fmtNum(u), x + 2, this.h - 4);  // isometric: no axis runs along the screen
       }
       for (let v = Math.ceil(v0 / step) * step; v <= v1; v += step) {
         const [, y] = this.toScreen(0, v);
         ctx.moveTo(0, y); ctx.lineTo(this.w, y);
-        ctx.fillText(fmtNum(v), 2, y - 2);
+        if (!view.iso) ctx.fillText(fmtNum(v), 2, y - 2);
       }
       ctx.stroke();
       const names = this.ch.axes;

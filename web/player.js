@@ -75,7 +75,10 @@
       requestAnimationFrame(step);
     }
 
-    // The tool of channel ch at time t: between the path points around t.
+    // The tool of channel ch at time t: between the path points around t,
+    // in the block of the later one. The path is timed (the report's
+    // TimedPath): its points are within path_error_mm of every cycle's
+    // set point, and the stretch up to each point lies in that point's block.
     toolAt(ch, t) {
       if (!ch.t || !ch.t.length) return null;
       const i = floorIndex(ch.t, t), j = Math.min(i + 1, ch.t.length - 1);
@@ -90,14 +93,14 @@
       return ch.cause[floorIndex(ch.cause_t, t)];
     }
 
-    // The first time the channel's path reaches a point of that line.
+    // The first cycle of the line's first run: the point before is the
+    // last cycle of the block before it.
     seekLine(file, line) {
       const ch = this.ch;
       for (let i = 0; i < ch.line.length; i++)
         if (ch.line[i] === line && ch.file[i] === file) {
-          // just after the move to point i began (point i is where line's motion goes)
           const t0 = i > 0 ? ch.t[i - 1] : ch.t[i];
-          return this.seek(t0 + Math.min(1e-4, (ch.t[i] - t0) / 2));
+          return this.seek(Math.min(ch.t[i], t0 + this.D.meta.cycle_s));
         }
     }
 
@@ -110,6 +113,7 @@
         b.setMarker(at ? at.pos : null);
       }
       const at = this.toolAt(this.ch, this.t);
+      this.at = at;  // for the browser test and for scripting
       this.showProgram(at);
       this.showDro(at);
     }
@@ -150,7 +154,9 @@
         rows.map((r) => "<tr><td>" + r[0] + '</td><td class="num">' + r[1] + '</td><td class="num">' + r[2] + "</td></tr>").join("") + "</table>";
       const modal = at ? (ch.rapid[at.i] ? "G0" : "G1/G2/G3 (feed)") + ", plane " + ch.plane : "-";
       const line = at ? ch.line[at.i] : 0;
-      h += '<div class="kv"><b>block</b><span>' + (line ? "line " + line : "-") + "</span><b>motion</b><span>" + modal +
+      const n = line ? /^\s*N(\d+)/i.exec(D.lines[ch.file[at.i] + ":" + line] || "") : null;
+      h += '<div class="kv"><b>block</b><span class="block-now">' + (line ? "line " + line + (n ? " (N" + n[1] + ")" : "") : "-") +
+        "</span><b>motion</b><span>" + modal +
         "</span><b>cause</b><span class=\"cause-now\">" + esc(this.causeAt(ch, this.t)) + "</span>";
       const ts = D.ts, k = floorIndex(ts.t, this.t);
       D.series.forEach((s, i) => {

@@ -247,6 +247,12 @@
     };
     render();
   }
+  // The k-th of as many distinct colours as there are causes: the palette,
+  // then hues a golden angle apart in two lightnesses (not the palette again).
+  function distinctColour(k) {
+    if (k < COLOURS.length) return COLOURS[k];
+    return "hsl(" + Math.round((k * 137.508) % 360) + ", 60%, " + (k % 2 ? 38 : 62) + "%)";
+  }
   const cell = (html, sort) => ({ html: String(html), sort: sort === undefined ? String(html) : sort });
 
   function causes() {
@@ -255,7 +261,7 @@
     const parent = $("causes");
     const colour = {};
     C.channels.forEach((ch) => ch.causes.forEach((c) => {
-      if (!(c.name in colour)) colour[c.name] = COLOURS[Object.keys(colour).length % COLOURS.length];
+      if (!(c.name in colour)) colour[c.name] = distinctColour(Object.keys(colour).length);
     }));
     for (const ch of C.channels) {
       if (!ch.time_s) continue;

@@ -85,13 +85,11 @@ std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const 
   for (std::size_t c = 0; c < channels_.size(); ++c) {
     const Channel& ch = channels_[c];
     const ReportPlots::Channel& plot = plots_->channel(c);
-    const PathRecorder& path = plot.path;
-    const double diag = std::hypot(path.max()[0] - path.min()[0], path.max()[1] - path.min()[1],
-                                   path.max()[2] - path.min()[2]);
-    // A tenth of a pixel of a 1000-pixel view, and never more than kMaxBackplotPoints.
-    double tol = std::max(diag / 10000.0, PathRecorder::kRecordTolMm);
-    std::vector<PathPoint> pts = path.simplified(tol);
-    while (pts.size() > kMaxBackplotPoints) pts = path.simplified(tol *= 2);
+    const TimedPath& path = plot.path;
+    // Every cycle's position within a tenth of the DRO's digit while there
+    // are at most kMaxBackplotPoints vertices; a coarser bound beyond.
+    const TimedPath::Vertices v = path.vertices(kMaxBackplotPoints);
+    const std::vector<TimedPoint>& pts = v.points;
     const bool has_y = ch.axis[1] >= 0;
     const char* plane = ch.plane == 18 || (ch.plane == 0 && !has_y) ? "XZ" : ch.plane == 19 ? "YZ" : "XY";
     s += fmt::format(R"({}{{"n":{},"plane":"{}","axes":[{},{},{}],"has":[{},{},{}],"min":[)", c > 0 ? "," : "", c + 1,
@@ -107,22 +105,26 @@ std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const 
       append_number(s, path.empty() ? 0 : path.max()[a], 4);
     }
     s += "]";
+    // how far from the trace the cursor's interpolation may be, and whether each segment lies in one block
+    s += ",\"path_error_mm\":";
+    append_number(s, v.error_mm + 5e-5, 5);  // + the rounding to 4 decimals
+    s += fmt::format(",\"path_by_block\":{}", v.by_block);
     for (int a = 0; a < 3; ++a)
       s += fmt::format(",\"{}\":", "xyz"[a]) +
-           array_of(pts, [a](std::string& o, const PathPoint& p) { append_number(o, p.pos[a], 4); });
-    s += ",\"line\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.line); });
-    s += ",\"file\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.file); });
-    s += ",\"rapid\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += p.rapid ? '1' : '0'; });
-    s += ",\"t\":" + array_of(pts, [](std::string& o, const PathPoint& p) { append_number(o, p.t_s, 4); });
+           array_of(pts, [a](std::string& o, const TimedPoint& p) { append_number(o, p.pos[a], 4); });
+    s += ",\"line\":" + array_of(pts, [](std::string& o, const TimedPoint& p) { o += fmt::format("{}", p.line); });
+    s += ",\"file\":" + array_of(pts, [](std::string& o, const TimedPoint& p) { o += fmt::format("{}", p.file); });
+    s += ",\"rapid\":" + array_of(pts, [](std::string& o, const TimedPoint& p) { o += p.rapid ? '1' : '0'; });
+    s += ",\"t\":" + array_of(pts, [](std::string& o, const TimedPoint& p) { append_number(o, p.t_s, 6); });
     s += ",\"cause_t\":" + array_of(plot.cause_t, [](std::string& o, double t) { append_number(o, t, 4); });
     s += ",\"cause\":" + array_of(plot.cause_name, [](std::string& o, const std::string& n) { o += json_quoted(n); });
     s += ",\"limits\":" + limits_json(ch);
     s += ",\"frames\":" + frames_json(ch);
     if (ch.frames.size() > 1)  // which map each point is in; all the first one otherwise
-      s += ",\"frame\":" + array_of(pts, [](std::string& o, const PathPoint& p) { o += fmt::format("{}", p.frame); });
+      s += ",\"frame\":" + array_of(pts, [](std::string& o, const TimedPoint& p) { o += fmt::format("{}", p.frame); });
     s += ",\"contour\":" + contour_json(ch);
     s += "}";
-    for (const PathPoint& p : pts) lines_used.emplace_back(p.file, p.line);
+    for (const TimedPoint& p : pts) lines_used.emplace_back(p.file, p.line);
   }
   return s + "]";
 }
@@ -292,10 +294,10 @@ std::string ReportWriter::lines_json(const std::vector<LineRef>& lines_used) con
 void ReportWriter::note_link(const kernel::Event& e, const kernel::LinkEvent& link, const RunNames& names) {
   const int ch = e.channel, group = link.group;
   if (link.on) {
-    json pairs = json::array();
-    for (const auto& [slave, master] : names.link(link.payload).pairs) pairs.push_back(json::array({slave, master}));
-    if (links_.size() < kMaxListed)
-      links_.push_back({ch, group, pairs.dump(-1, ' ', false, json::error_handler_t::replace), e.t_s, -1, ""});
+    std::string pairs;  // "Y2 ← Y1, S2 ← S1": as the event table writes a link's pairs
+    for (const auto& [slave, master] : names.link(link.payload).pairs)
+      pairs += (pairs.empty() ? "" : ", ") + slave + " \u2190 " + master;
+    if (links_.size() < kMaxListed) links_.push_back({ch, group, pairs, e.t_s, -1, ""});
     return;
   }
   for (LinkPeriod& p : links_)
@@ -308,7 +310,7 @@ void ReportWriter::note_link(const kernel::Event& e, const kernel::LinkEvent& li
 std::string ReportWriter::link_table() const {
   if (links_.empty()) return {};
   std::string h = "<section><h2>Synchronous operation (coupling periods)</h2><table><tr><th>ch</th><th>group</th>"
-                  "<th>pairs [slave, master]</th><th>on (s)</th><th>off (s)</th><th>ended by</th></tr>";
+                  "<th>pairs (slave ← master)</th><th>on (s)</th><th>off (s)</th><th>ended by</th></tr>";
   for (const LinkPeriod& p : links_)
     h += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{:.3f}</td><td>{}</td><td>{}</td></tr>", p.ch, p.group,
                      html_text(p.pairs), p.on_s, p.off_s < 0 ? std::string("still on") : fmt::format("{:.3f}", p.off_s),

@@ -80,7 +80,7 @@ void ReportPlots::fold(ReportBatch& b) {
     for (std::size_t c = 0; c < channels_.size(); ++c) {
       Channel& ch = channels_[c];
       const ReportBatch::ChannelSample& s = b.channel(i, c);
-      ch.path.add(s.pos, s.line, s.file, s.rapid, s.frame, b.t_s(i));
+      ch.path.add({.pos = s.pos, .t_s = b.t_s(i), .line = s.line, .frame = s.frame, .file = s.file, .rapid = s.rapid});
       note_cause(ch, s.cause, s.wait_reason, b.t_s(i));
       if (!ch.velocity_column) continue;
       ch.path_deriv.update(s.path_velocity_mm_s);

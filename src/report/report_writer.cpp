@@ -91,7 +91,7 @@ void ReportWriter::start(const config::Machine& m, const ReportInputs& inputs, s
       std::array<double, 3> p{};
       for (int a = 0; a < 3; ++a)
         if (ch.axis[a] >= 0) p[a] = st.axis_mcs[static_cast<std::size_t>(ch.axis[a])];
-      plots_->channel(c).path.add(p, 0, 0, false);
+      plots_->channel(c).path.add({.pos = p});
     }
     if (c < run.channel_count()) {
       ch.contour = std::make_unique<ProgrammedContour>(ch.axis);

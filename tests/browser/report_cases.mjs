@@ -56,6 +56,16 @@ export function expectations(longProgram, blocks, longCaps, out) {
       minPlots: 2, minCauses: 4,
       // pocket +-40 x +-25; helix r 15; holes r 30 (Y +-25.98); Z from -3 (holes, helix) to 2 + 20 (G91 retract)
       backplots: [{ view: "XY", min: [-40, -sin60, -3], max: [40, sin60, 22], tol: 0.02, view3d: mill3d }],
+      // issue 48 item 1: N140 runs from 10.805 to 12.505 s (the cursor named N150 there); hovering the
+      // middle of N100 (line 23) named N110
+      cursor: { at: [{ t: 11.848, block: "N140" }], hover: [23] }, iso: true,
+    },
+    {
+      // issue 48 item 1: N70 runs from 12.717 to 17.997 s (the cursor named N80 there)
+      name: "lathe-diameter", machine: "examples/lathe", programs: ["examples/lathe/diameter.nc"], minPlots: 2,
+      // X words are diameters: the face at D60 (X30 radius) to the centre, the profile to Z-45 and D50 (X25)
+      backplots: [{ view: "ZX", min: [0, null, -45], max: [30, null, 2], tol: 0.01 }],
+      cursor: { at: [{ t: 16.07, block: "N70" }], hover: [11] },
     },
     {
       // #SLOPE STEP, TRAPEZ, SIN2: the square (X 0..60, Y -10..30) and the G2 bulging to X80; Z0 to Z10
@@ -121,6 +131,7 @@ export function expectations(longProgram, blocks, longCaps, out) {
       backplots: [{ view: "XY", min: [0, 0, -10], max: [0, 50, 0], tol: 0.01, minPoints: 3,
                     view3d: { limits: { min: [-500, -500, -500], max: [500, 500, 500] } } }],
       summary: /waitsspeed reached 1\.041 s, in position 0\.748 s, standstill 1\.009 swritten bynck [0-9.]+$/,
+      links: /Y2 ← Y1, S2 ← S1/,
     },
     {
       name: "lathe", image: "report-lathe.png", machine: "examples/lathe", programs: ["examples/lathe/turn.nc"],

@@ -2,15 +2,17 @@
 // each report offline in Debian's chromium (playwright-core) and checks
 // what a user sees. Usage:
 //   node tests/browser/report_test.mjs --nck BIN --source DIR --out DIR
-//        [--blocks N] [--images DIR]
+//        [--blocks N] [--images DIR] [--only NAME,...]
 // --blocks: size of the generated long program (default 200000, the
-// issue's benchmark); --images: also save the README screenshots there.
+// issue's benchmark); --images: also save the README screenshots there;
+// --only: run only the cases of these names (while working on one).
 import { chromium } from "playwright-core";
 import { execFileSync } from "node:child_process";
 import fs from "node:fs";
 import path from "node:path";
 import { caps, expectations, writeCommonProgram, writeFrameProgram, writeHoldProgram } from "./report_cases.mjs";
 import { check3d, checkAccel } from "./report_view3d.mjs";
+import { checkCursor } from "./report_cursor.mjs";
 
 const args = Object.fromEntries(process.argv.slice(2).reduce((acc, a, i, all) => {
   if (a.startsWith("--")) acc.push([a.slice(2), all[i + 1] && !all[i + 1].startsWith("--") ? all[i + 1] : "1"]);
@@ -24,18 +26,21 @@ let failures = 0;
 const fail = (name, msg) => { failures++; console.error(`FAIL ${name}: ${msg}`); };
 const ok = (name, msg) => console.log(`ok   ${name}: ${msg}`);
 
-function runNck(name, machine, programs, plc) {
+// withOutputs: the run's --events and --trace beside the report (the cursor's checks)
+function runNck(name, machine, programs, plc, withOutputs) {
   const report = path.join(out, name + ".html");
+  const outputs = { events: path.join(out, name + ".events.jsonl"), trace: path.join(out, name + ".trace.csv") };
   // run in the source folder with relative names, as a user would (the report shows them)
   const argv = ["run", machine, ...programs, "--report", report, "--no-progress"];
   if (plc) argv.push("--plc", plc);
+  if (withOutputs) argv.push("--events", outputs.events, "--trace", outputs.trace);
   const t = Date.now();
   try {
     execFileSync(path.resolve(nck), argv, { cwd: src, stdio: ["ignore", "ignore", "pipe"] });
   } catch (e) {
     if (e.status !== 0 && e.status !== 1) throw new Error(`nck ${argv.join(" ")} exited ${e.status}: ${e.stderr}`);
   }
-  return { report, runMs: Date.now() - t };
+  return { report, runMs: Date.now() - t, outputs };
 }
 
 // The time cursor: play moves the tool marker and the highlighted line;
@@ -91,7 +96,7 @@ async function checkPlayer(page, name) {
 }
 
 async function check(browser, c) {
-  const { report, runMs } = runNck(c.name, c.machine, c.programs, c.plc);
+  const { report, runMs, outputs } = runNck(c.name, c.machine, c.programs, c.plc, !!c.cursor);
   const sizeBytes = fs.statSync(report).size;
   const context = await browser.newContext({ offline: true, viewport: { width: 1320, height: 900 }, deviceScaleFactor: 1 });
   const page = await context.newPage();
@@ -163,12 +168,14 @@ async function check(browser, c) {
   // issue 31 item 1: time by cause, a stacked bar and two tables per channel
   const causes = await page.evaluate(() => [...document.querySelectorAll("#causes .cause-channel")].map((d) => ({
     bar: [...d.querySelectorAll(".cause-bar span")].reduce((s, x) => s + parseFloat(x.style.width), 0),
+    colours: [...d.querySelectorAll(".cause-bar span")].map((x) => x.style.background),
     causes: [...d.querySelectorAll(".cause-table tr")].filter((tr) => tr.querySelector("td")).length,
     lines: [...d.querySelectorAll(".blocks tr")].filter((tr) => tr.querySelector("td")).map((tr) => tr.children[1].textContent),
   })));
   if (!causes.length) fail(name, "no time-by-cause section");
   for (const [i, ch] of causes.entries()) {
     if (Math.abs(ch.bar - 100) > 0.5) fail(name, `cause bar ${i + 1} spans ${ch.bar} %`);
+    if (new Set(ch.colours).size !== ch.colours.length) fail(name, `cause bar ${i + 1} repeats colours: ${ch.colours.join(" ")}`);
     if (ch.causes < (c.minCauses || 1)) fail(name, `cause table ${i + 1} has ${ch.causes} rows, expected ${c.minCauses || 1}`);
     if (!ch.lines.length || ch.lines.some((t) => !t.trim())) fail(name, `block table ${i + 1}: a row without its NC line`);
   }
@@ -295,6 +302,29 @@ async function check(browser, c) {
     if (off.length) fail(name, `backplot ${i + 1} in program coordinates spans ${JSON.stringify(got)}, expected ${JSON.stringify(want)}`);
     else ok(name, `backplot ${i + 1} in program coordinates: ${JSON.stringify(got)}`);
   }
+  if (c.links) {  // issue 48 item 5: the coupling table as Y2 ← Y1, not raw JSON
+    const text = await page.evaluate(() => [...document.querySelectorAll("section h2")]
+      .find((h) => h.textContent.startsWith("Synchronous"))?.parentElement.textContent || "");
+    if (!c.links.test(text) || /[[\]"]/.test(text)) fail(name, `coupling table "${text}", expected ${c.links}`);
+    else ok(name, `coupling table "${text.slice(0, 80)}…"`);
+  }
+  if (c.iso) {  // issue 48 item 5: the isometric view has no tick labels (no axis runs along the screen)
+    const texts = await page.evaluate(() => {
+      const b = window.nckReport.backplots[0], drawn = [], fill = b.ctx.fillText;
+      b.ctx.fillText = function (t, ...rest) { drawn.push(String(t)); return fill.call(this, t, ...rest); };
+      b.select.value = "ISO";
+      b.select.dispatchEvent(new Event("change"));
+      b.draw();
+      b.ctx.fillText = fill;
+      b.select.value = "XY";
+      b.select.dispatchEvent(new Event("change"));
+      return drawn;
+    });
+    const numbers = texts.filter((t) => /^-?[\d.]+$/.test(t.trim()));
+    if (numbers.length || !texts.some((t) => t.startsWith("isometric"))) fail(name, `the isometric view draws ${JSON.stringify(texts)}`);
+    else ok(name, `the isometric view draws no tick labels (${JSON.stringify(texts)})`);
+  }
+  if (c.cursor) await checkCursor(page, name, { ...outputs, ...c.cursor }, { fail, ok });
   if (c.play) await checkPlayer(page, name);
   // a 3D view for each channel with three linear axes, none otherwise
   const want3d = c.backplots.filter((b) => b.view3d).length;
@@ -320,7 +350,8 @@ try {
   writeCommonProgram(longProgram, blocks);
   writeFrameProgram(path.join(out, "frames.nc"));
   writeHoldProgram(out);
-  for (const c of expectations(longProgram, blocks, caps(blocks), out)) await check(browser, c);
+  for (const c of expectations(longProgram, blocks, caps(blocks), out))
+    if (!args.only || args.only.split(",").includes(c.name)) await check(browser, c);
 } catch (e) {
   fail("browser test", e.stack || String(e));
 } finally {

@@ -21,13 +21,14 @@
 #include "nck/output/trace_columns.hpp"
 #include "nck/report/report_batch.hpp"
 #include "nck/report/report_series.hpp"
+#include "nck/report/timed_path.hpp"
 
 namespace nck::app {
 
 class ReportPlots {
  public:
   struct Channel {
-    PathRecorder path;
+    TimedPath path;
     // The row's path velocity column: path.a and path.j as --trace-columns
     // computes them go into the two after it (none: not plotted).
     std::optional<std::size_t> velocity_column;

@@ -169,7 +169,7 @@ TEST(Link, TwinProgramCouplesAxesAndSpindles) {
 }
 
 // The report lists the coupling periods: group 2 (gantry) from its link on
-// to its link off.
+// to its link off, its pair as "Z2 ← Z1".
 TEST(Link, ReportMarksCouplingPeriods) {
   const auto dir = temp_dir("link_report");
   const std::string ex = root() + "/examples/twin-spindle";
@@ -181,7 +181,8 @@ TEST(Link, ReportMarksCouplingPeriods) {
     if (e["ev"] == "link" && e["group"] == 2) (e["on"] ? on : off) = e["t"].get<double>();
   const std::string html = read_file(dir / "r.html");
   EXPECT_NE(html.find("coupling periods"), std::string::npos);
-  const std::string row = fmt::format("<tr><td>1</td><td>2</td><td>[[&quot;Z2&quot;,&quot;Z1&quot;]]</td><td>{:.3f}</td><td>{:.3f}</td><td>program</td></tr>", on, off);
+  // the pairs as slave ← master, as the event table writes them (issue 48 item 5: not raw JSON)
+  const std::string row = fmt::format("<tr><td>1</td><td>2</td><td>Z2 \u2190 Z1</td><td>{:.3f}</td><td>{:.3f}</td><td>program</td></tr>", on, off);
   EXPECT_NE(html.find(row), std::string::npos) << row;
 }
 

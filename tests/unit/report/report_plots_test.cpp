@@ -40,13 +40,13 @@ std::vector<Cycle> cycles(std::size_t n) {
 TEST(ReportPlots, FoldedOnTheirThreadAsOnTheRunsThread) {
   const std::vector<Cycle> run = cycles(70000);  // 137 batches, the envelope past its 4,096 buckets
   ReportPlots plots(1);
-  plots.channel(0).path.add({1, 0, 0}, 0, 0, false);
+  plots.channel(0).path.add({.pos = {1, 0, 0}});
   plots.channel(0).velocity_column = 0;
   plots.channel(0).path_deriv = PathDerivatives(kCycleS);
   plots.start(kSeries, kCycleS);
   PathDerivatives derivatives(kCycleS);
-  PathRecorder path;
-  path.add({1, 0, 0}, 0, 0, false);
+  TimedPath path;
+  path.add({.pos = {1, 0, 0}});
   EnvelopeSeries series;
   series.start(kSeries, kCycleS);
   std::vector<double> cause_t;
@@ -64,7 +64,7 @@ TEST(ReportPlots, FoldedOnTheirThreadAsOnTheRunsThread) {
     s.path_velocity_mm_s = c.row[0];
     b.row(k)[0] = c.row[0];
     if (b.full()) plots.publish();
-    path.add(c.pos, c.line, 0, c.rapid, 0, t);
+    path.add({.pos = c.pos, .t_s = t, .line = c.line, .rapid = c.rapid});
     derivatives.update(c.row[0]);
     series.add(i, std::array<double, kSeries>{c.row[0], derivatives.a_mm_s2(), derivatives.j_mm_s3()});
     if (c.cause != last) cause_t.push_back(t);
@@ -72,8 +72,8 @@ TEST(ReportPlots, FoldedOnTheirThreadAsOnTheRunsThread) {
   }
   plots.finish();  // folds the last, partial batch too
   plots.finish();  // and a second call does nothing
-  const std::vector<PathPoint> want = path.simplified(PathRecorder::kRecordTolMm);
-  const std::vector<PathPoint> got = plots.channel(0).path.simplified(PathRecorder::kRecordTolMm);
+  const std::vector<TimedPoint> want = path.vertices(TimedPath::kMaxVertices).points;
+  const std::vector<TimedPoint> got = plots.channel(0).path.vertices(TimedPath::kMaxVertices).points;
   ASSERT_EQ(got.size(), want.size());
   for (std::size_t i = 0; i < got.size(); ++i) {
     EXPECT_EQ(got[i].pos, want[i].pos) << i;

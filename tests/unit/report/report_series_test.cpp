@@ -93,39 +93,5 @@ TEST(EnvelopeSeries, KeepsMinAndMaxOfLongRunsInBoundedSize) {
   EXPECT_NEAR(j["t"][2].get<double>(), 0.256, 1e-9);
 }
 
-TEST(PathRecorder, StraightLinesBecomeTheirEndPoints) {
-  PathRecorder p;
-  for (int i = 0; i <= 1000; ++i) p.add({i * 0.01, 0, 0}, 1, 0, false);  // X 0 -> 10
-  for (int i = 1; i <= 500; ++i) p.add({10, i * 0.01, 0}, 2, 0, true);   // then Y 0 -> 5, G0
-  const auto pts = p.simplified(0.001);
-  ASSERT_EQ(pts.size(), 3u);
-  EXPECT_FLOAT_EQ(pts[1].pos[0], 10);
-  EXPECT_EQ(pts[1].line, 1u);
-  EXPECT_FLOAT_EQ(pts[2].pos[1], 5);
-  EXPECT_EQ(pts[2].line, 2u);
-  EXPECT_TRUE(pts[2].rapid);
-  EXPECT_DOUBLE_EQ(p.max()[0], 10);
-  EXPECT_DOUBLE_EQ(p.max()[1], 5);
-}
-
-// An arc of radius 10 in 0.001 rad steps: the vertices lie on the arc, and a
-// chord between neighbours never leaves it by more than the tolerance
-// (sagitta r (1 - cos(a/2)) <= tol, so about 2 acos(1 - tol/r) per vertex).
-TEST(PathRecorder, ArcsKeepEnoughVerticesForTheTolerance) {
-  PathRecorder p;
-  const double r = 10;
-  for (int i = 0; i <= 3142; ++i) p.add({r * std::cos(i * 0.001), r * std::sin(i * 0.001), 0}, 7, 0, false);
-  const double tol = 0.01;
-  const auto pts = p.simplified(tol);
-  const double step = 2 * std::acos(1 - tol / r);  // the largest angle a chord may span
-  EXPECT_GE(pts.size(), std::size_t(std::numbers::pi / step));
-  EXPECT_LE(pts.size(), std::size_t(4 * std::numbers::pi / step) + 2);
-  for (std::size_t i = 1; i < pts.size(); ++i) {
-    EXPECT_NEAR(std::hypot(pts[i].pos[0], pts[i].pos[1]), r, 1e-4);
-    const double mid = std::hypot((pts[i].pos[0] + pts[i - 1].pos[0]) / 2, (pts[i].pos[1] + pts[i - 1].pos[1]) / 2);
-    EXPECT_LE(r - mid, 2 * tol + 1e-6) << i;
-  }
-}
-
 }  // namespace
 }  // namespace nck::app
