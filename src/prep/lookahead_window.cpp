@@ -280,9 +280,16 @@ double LookAheadWindow::corner_cost(const motion::CornerBlend& cb, const motion:
   const double v_in = cruise(before), v_out = cruise(after);
   const double trim_in = before.segment.length() - cb.before.length();
   const double trim_out = after.segment.length() - cb.after.length();
-  auto ramp = [v](double v_feed, double a) { return v < v_feed && a > 0 ? (v_feed - v) * (v_feed - v) / (2 * a * v_feed) : 0.0; };
-  return cb.corner.length() / v - trim_in / v_in - trim_out / v_out + ramp(v_in, before.limits.a_dec_mm_s2) +
-         ramp(v_out, after.limits.a_acc_mm_s2);
+  return cb.corner.length() / v - trim_in / v_in - trim_out / v_out + ramps_cost(v, before, after);
+}
+
+// What braking from the feed to v_mm_s before a corner and speeding up
+// after it cost against passing at the feed (continuous time).
+double LookAheadWindow::ramps_cost(double v_mm_s, const PlannedCommand& before, const PlannedCommand& after) const {
+  const auto ramp = [v_mm_s](double v_feed, double a) {
+    return v_mm_s < v_feed && a > 0 ? (v_feed - v_mm_s) * (v_feed - v_mm_s) / (2 * a * v_feed) : 0.0;
+  };
+  return ramp(cruise(before), before.limits.a_dec_mm_s2) + ramp(cruise(after), after.limits.a_acc_mm_s2);
 }
 
 // The blend of the corner between p and next: the fillet, or (both under
@@ -357,6 +364,10 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   f.head.feed_motion = true;
   f.manual_offset_axes = p.command.manual_offset_axes;
   if (!motion::valid(f.limits) || cruise(f) <= next.v_entry_max_mm_s) return false;
+  // Nor where the blend takes longer than the sharp corner (issue 43, D3):
+  // a slow fillet under a jerk-limited slope can take longer to run through
+  // than braking to the corner's speed and back.
+  if (corner_cost(*cb, f.limits, p.command, next) >= ramps_cost(next.v_entry_max_mm_s, p.command, next)) return false;
   // Every piece must take more than a cycle's travel, or the profile would
   // stand still for a cycle at its end (it carries one cycle at most).
   PlannedCommand before = p.command, after = next;

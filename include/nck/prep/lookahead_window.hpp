@@ -117,6 +117,7 @@ class LookAheadWindow {
                                                   motion::PathLimits& limits) const;
   double corner_cost(const motion::CornerBlend& cb, const motion::PathLimits& l, const PlannedCommand& before,
                      const PlannedCommand& after) const;
+  double ramps_cost(double v_mm_s, const PlannedCommand& before, const PlannedCommand& after) const;
   static motion::PathLimits jerk_fillet_limits(const motion::Segment& fillet, const BlendDynamics& d,
                                                const motion::PathLimits& before, double feed_mm_s);
   bool lowering_is_safe(std::uint64_t seq, Staircase changed) const;
