@@ -55,8 +55,8 @@ TEST(OperatorAction, RefusesWhatIsNoLiveActionWithItsId) {
   EXPECT_EQ(refused("ch=3 feedhold on"), ErrorId::PlcScenarioBadChannel);  // no channel 3
   EXPECT_EQ(refused("override S9 50"), ErrorId::PlcScenarioUnknownSpindle);
   EXPECT_EQ(refused("feed_override 80\n1 reset"), ErrorId::PlcOperatorActionBad);
-  EXPECT_EQ(refused(""), ErrorId::PlcOperatorActionBad);
-  EXPECT_EQ(refused("launch rockets"), ErrorId::PlcOperatorActionBad);
+  EXPECT_EQ(refused(""), ErrorId::PlcScenarioMissingArgument);
+  EXPECT_EQ(refused("launch rockets"), ErrorId::PlcScenarioUnknownAction);
 }
 
 // A typed action (nck serve, the Python session) is checked and resolved
