@@ -38,7 +38,7 @@
       if (e.ev !== "error" && e.ev !== "warning") continue;
       const where = [e.ch ? "channel " + e.ch : "", e.file ? String(e.file).split("/").pop() + ":" + e.line : "",
         e.n != null ? "N" + e.n : "", e.t != null ? "t " + fixed(e.t, 3) + " s" : ""].filter(Boolean).join(" ");
-      addError(e.ev, e.id, e.msg || e.message || "", where);
+      addError(e.ev, e.id, e.message || e.msg || "", where, e.remedy);  // the diagnostic's one shape (docs/outputs.md)
     }
   }
 

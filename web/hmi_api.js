@@ -4,7 +4,7 @@
 (function () {
   "use strict";
 
-  // An answer with {"error": {id, message, remedy}} becomes this.
+  // An answer with {"error": DIAGNOSTIC} (docs/api.md) becomes this.
   class ApiError extends Error {
     constructor(status, body) {
       const e = (body && body.error) || {};
@@ -12,6 +12,7 @@
       this.status = status;
       this.id = e.id;
       this.remedy = e.remedy || "";
+      this.diagnostic = e;
     }
   }
 

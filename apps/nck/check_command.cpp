@@ -57,10 +57,10 @@ int check_command(const CheckOptions& opt) {
   if (p.bad_usage) return 2;
   if (p.stopped) return stopped_exit_code(wall, opt);
   if (opt.json) {
-    nlohmann::json list = nlohmann::json::array();
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
     for (const PreflightFinding& f : p.found) list.push_back(to_json(f));
     // A closed pipe or a full disk: main_cli reports it (940002, exit 2).
-    (void)write_stdout(list.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+    (void)write_stdout(list.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n");
   }
   return p.has_errors() ? 1 : 0;
 }

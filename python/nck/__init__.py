@@ -89,7 +89,8 @@ def check(machine, programs=None, strict=False, max_wall=None):
 
 
 def errors():
-    """Every diagnostic ID: dicts with id, severity, name, text, remedy (docs/errors.md)."""
+    """The catalogue of diagnostic IDs: dicts with id, severity, name, cause,
+    remedy, as GET /api/v1/errors gives them, and text (= cause; docs/errors.md)."""
     return _nck.errors()
 
 

@@ -7,13 +7,18 @@ import numpy.typing as npt
 
 _Path = Union[str, os.PathLike[str]]
 _Programs = Union[_Path, Sequence[_Path]]
-Diagnostic = dict[str, Any]  # id, severity, file, line, msg
-RunError = dict[str, Any]    # id, ch, line, file, msg
+Diagnostic = dict[str, Any]  # id, severity, name, message, remedy, file, line, column, channel (+ msg)
+RunError = dict[str, Any]    # id, ch, line, file, msg, then the Diagnostic fields
 
 class Error(Exception):
     id: int
+    severity: str
+    name: str
+    remedy: str
     file: str
     line: int
+    column: int
+    channel: int
     message: str
     diagnostics: list[Diagnostic]
     def __init__(self, message: str, id: int = ..., file: str = ..., line: int = ...,

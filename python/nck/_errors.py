@@ -10,12 +10,19 @@ class Error(Exception):
     """An nck diagnostic as an exception.
 
     Attributes:
-        id: the diagnostic ID (``nck.errors()`` / docs/errors.md explain it).
+        id: the diagnostic's own ID (``nck.errors()`` / docs/errors.md
+            explain it), e.g. 960003 for an override above 200 %.
+        severity, name, remedy: the ID's, as the catalogue gives them.
         file: the file it concerns ("" when none).
         line: its line, 1-based (0: not known).
+        column: its column, 1-based (0: not known).
+        channel: the channel, 1-based (0: none).
         message: the text.
-        diagnostics: every diagnostic (dicts with id, severity, file, line,
-            msg); the attributes above are the first one's.
+        diagnostics: every diagnostic, each a dict of the one shape
+            ``{id, severity, name, message, remedy, file, line, column,
+            channel}`` (a field that does not apply is left out; docs/python.md)
+            with ``msg`` (the message's earlier name); the attributes above
+            are the first one's.
     """
 
     def __init__(self, message, id=0, file="", line=0, diagnostics=None):
@@ -24,13 +31,26 @@ class Error(Exception):
         self.file = file
         self.line = line
         self.message = message
-        self.diagnostics = diagnostics if diagnostics is not None else [
-            {"id": id, "severity": "error", "file": file, "line": line, "msg": message}]
+        if diagnostics is None:
+            first = {"id": id, "severity": "error", "message": message, "msg": message}
+            if file:
+                first["file"] = file
+            if line:
+                first["line"] = line
+            diagnostics = [first]
+        self.diagnostics = diagnostics
+        first = diagnostics[0] if diagnostics else {}
+        self.severity = first.get("severity", "error")
+        self.name = first.get("name", "")
+        self.remedy = first.get("remedy", "")
+        self.column = first.get("column", 0)
+        self.channel = first.get("channel", 0)
 
     @classmethod
     def from_diagnostics(cls, diagnostics):
-        first = diagnostics[0] if diagnostics else {"id": 0, "file": "", "line": 0, "msg": "unknown error"}
-        return cls(first["msg"], first["id"], first["file"], first["line"], list(diagnostics))
+        first = diagnostics[0] if diagnostics else {"id": 0, "message": "unknown error"}
+        return cls(first.get("message", first.get("msg", "")), first["id"], first.get("file", ""),
+                   first.get("line", 0), list(diagnostics))
 
     def __str__(self):
         where = self.file or "nck"

@@ -152,11 +152,13 @@ class Session:
 
     # -- reading -----------------------------------------------------------
     def state(self):
-        """The state now: per channel axes (mcs, pcs), modal state, offsets,
-        program_state, block (line, n, file), path_velocity_mm_s, wait and
-        the operator's switches (feed_override_pct, rapid_override_pct,
-        feedhold, single_step, optional_stop, manual_mode, skip_mask);
-        spindles; the HLI; time "t"... the --final schema plus these."""
+        """The state now: the document of nck serve's GET /api/v1/state (one
+        writer): per channel program_state, axes (mcs, pcs), modal state,
+        path_velocity_mm_s, distance_to_go_mm, wait, the operator's switches
+        (feed_override_pct, feedhold ...) and last_error; spindles (keyed by
+        name); last_error; and the session's earlier fields beside it (the
+        --final schema's offsets, tool, HLI; per channel ch, status, line, n,
+        file; time "t"). docs/python.md."""
         return self._s.state()
 
     def events(self):
@@ -167,7 +169,8 @@ class Session:
         return self._s.events()
 
     def errors(self):
-        """Every NC error of the session so far (dicts: id, ch, line, file, msg)."""
+        """Every NC error of the session so far (dicts: id, ch, line, file, msg,
+        then the diagnostic's one shape: severity, name, message, remedy, channel)."""
         return self._s.errors()
 
     @property

@@ -11,6 +11,7 @@
 #include "nck/core/version.hpp"
 #include "nck/nc/block_json.hpp"
 #include "nck/nc/decoder.hpp"
+#include "nck/output/diagnostic_json.hpp"
 #include "nck/prep/decoder_setup.hpp"
 #include "nck/run/stop_request.hpp"
 #include "py_common.hpp"
@@ -76,14 +77,12 @@ pyb::list parse(const std::string& program, const Machine* machine, std::size_t 
 
 pyb::list errors() {
   pyb::list out;
+  // The catalogue's one shape, as GET /api/v1/errors (app::catalogue_json),
+  // and `text`, the name the cause had here before.
   for (const ErrorInfo& e : all_errors()) {
-    pyb::dict d;
-    d["id"] = number(e.id);
-    d["severity"] = e.severity == Severity::error ? "error" : "warning";
-    d["name"] = std::string(e.name);
-    d["text"] = std::string(e.text);
-    d["remedy"] = std::string(e.remedy);
-    out.append(d);
+    nlohmann::ordered_json j = app::catalogue_json(e);
+    j["text"] = std::string(e.text);
+    out.append(to_python(j));
   }
   return out;
 }

@@ -1,6 +1,7 @@
 #include "py_common.hpp"
 
 #include "nck/core/utf8.hpp"
+#include "nck/output/diagnostic_json.hpp"
 
 namespace nck::py {
 namespace {
@@ -32,11 +33,6 @@ pyb::object convert(const Json& j) {
   }
 }
 
-pyb::str text(const std::string& s) {
-  const std::string u = to_utf8(s);
-  return pyb::reinterpret_steal<pyb::str>(PyUnicode_DecodeUTF8(u.data(), static_cast<Py_ssize_t>(u.size()), "replace"));
-}
-
 }  // namespace
 
 pyb::object to_python(const nlohmann::ordered_json& j) { return convert(j); }
@@ -46,24 +42,14 @@ void raise(const char* kind, ErrorId id, std::string message, SourceLoc loc) {
   throw NckError{kind, {make_diagnostic(id, std::move(loc), std::move(message))}};
 }
 
-pyb::dict diagnostic_dict(const Diagnostic& d) {
-  pyb::dict out;
-  out["id"] = number(d.id);
-  out["severity"] = d.severity == Severity::error ? "error" : "warning";
-  out["file"] = text(d.loc.file);
-  out["line"] = d.loc.line;
-  out["msg"] = text(d.message);
-  return out;
+pyb::object diagnostic_dict(const Diagnostic& d) {
+  nlohmann::ordered_json j = app::diagnostic_json(d);
+  j["msg"] = j["message"];  // the name Error.diagnostics had before the one shape
+  return to_python(j);
 }
 
-pyb::dict error_dict(const app::FinalError& e) {
-  pyb::dict out;
-  out["id"] = e.id;
-  out["ch"] = e.channel;
-  out["line"] = e.line;
-  out["file"] = text(e.file);
-  out["msg"] = text(e.msg);
-  return out;
+pyb::object error_dict(const app::FinalError& e, Severity severity) {
+  return to_python(app::final_error_json(e, severity));
 }
 
 void register_errors() {

@@ -27,8 +27,11 @@ struct NckError {
 [[noreturn]] void raise(const char* kind, ErrorId id, std::string message, SourceLoc loc = {});
 void register_errors();
 
-// A diagnostic / a run's error as the dict Run.errors lists: id, ch, line, file, msg.
-pyb::dict diagnostic_dict(const Diagnostic& d);
-pyb::dict error_dict(const app::FinalError& e);
+// A diagnostic as an exception's diagnostics list it: the one shape
+// (output/diagnostic_json.hpp) and `msg`, its first name for the message.
+pyb::object diagnostic_dict(const Diagnostic& d);
+// A run's error or warning as Run.errors lists it: id, ch, line, file, msg,
+// then the one shape (app::final_error_json, as --final's errors).
+pyb::object error_dict(const app::FinalError& e, Severity severity = Severity::error);
 
 }  // namespace nck::py

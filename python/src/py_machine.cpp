@@ -139,7 +139,7 @@ void bind_machine(pyb::module_& mod) {
       .def_property_readonly("warnings",
                              [](const Machine& m) {
                                pyb::list out;
-                               for (const app::FinalError& w : m.warnings) out.append(error_dict(w));
+                               for (const app::FinalError& w : m.warnings) out.append(error_dict(w, Severity::warning));
                                return out;
                              })
       .def(

@@ -19,9 +19,9 @@ pyb::array_t<double> column(const std::shared_ptr<std::vector<double>>& v) {
   return pyb::array_t<double>({v->size()}, {sizeof(double)}, v->data(), release);
 }
 
-pyb::list error_list(const std::vector<app::FinalError>& es) {
+pyb::list error_list(const std::vector<app::FinalError>& es, Severity severity) {
   pyb::list out;
-  for (const app::FinalError& e : es) out.append(error_dict(e));
+  for (const app::FinalError& e : es) out.append(error_dict(e, severity));
   return out;
 }
 
@@ -122,8 +122,8 @@ void bind_run(pyb::module_& m) {
       .def_readonly("end", &RunResult::end)
       .def_readonly("summary", &RunResult::summary)
       .def_readonly("messages", &RunResult::messages)
-      .def_property_readonly("errors", [](const RunResult& r) { return error_list(r.errors); })
-      .def_property_readonly("warnings", [](const RunResult& r) { return error_list(r.warnings); })
+      .def_property_readonly("errors", [](const RunResult& r) { return error_list(r.errors, Severity::error); })
+      .def_property_readonly("warnings", [](const RunResult& r) { return error_list(r.warnings, Severity::warning); })
       .def_property_readonly("events", [](RunResult& r) {
         if (!r.events_py) r.events_py = event_dicts(r.events);
         return r.events_py;

@@ -10,6 +10,7 @@
 #include <pybind11/stl.h>
 
 #include "nck/run/simulation.hpp"
+#include "nck/run/state_document.hpp"
 #include "nck/sim/action_words.hpp"
 #include "nck/sim/operator_action.hpp"
 #include "py_common.hpp"
@@ -203,7 +204,7 @@ class Session {
     for (std::size_t k = seen; k < errors.size(); ++k) {
       const app::FinalError& e = errors[k];
       if (static_cast<std::int64_t>(e.channel) != channel || e.id == number(ErrorId::AppChannelReset)) continue;  // a scenario's reset is none
-      throw NckError{"ProgramError", {make_diagnostic(static_cast<ErrorId>(e.id), SourceLoc{"mdi", 1, 0}, e.msg)}};
+      throw NckError{"ProgramError", {make_diagnostic(static_cast<ErrorId>(e.id), SourceLoc{e.file, e.line, 0}, e.msg)}};
     }
   }
 
@@ -215,6 +216,7 @@ class Session {
   }
 
   pyb::object state() const;
+  nlohmann::json session_fields() const;
 
   // Nothing changes any more without the operator: no channel runs a
   // program or MDI block (a hold waits for cycle start), none jogs, and the
@@ -244,6 +246,8 @@ class Session {
   void run(const std::optional<sim::OperatorAction>& op, const Diagnostics& ds, bool record = true) {
     if (!op) throw NckError{"ActionError", ds.items()};
     if (std::optional<Diagnostic> refused = sim_->run().operate(*op)) throw NckError{"ActionError", {*refused}};
+    // the state's last_error goes with the reset, also of an idle channel (as nck serve's)
+    if (op->action.kind() == sim::ActionKind::reset) sim_->outputs().last_errors.clear(op->action.channel);
     if (record) record_action(*op);
   }
   std::unique_ptr<app::Simulation> simulation() const;
@@ -272,6 +276,7 @@ class Session {
   app::RunOptions opt_;     // the session's programs and scenario, for a restart
   std::unique_ptr<app::Simulation> sim_;
   std::vector<app::FinalError> past_errors_;  // of the runs before a restart
+  std::uint64_t runs_ = 1;                    // the session's runs (the state's "run")
   Turns turns_;
 };
 
@@ -305,7 +310,7 @@ auto locked(R (*call)(Session&, A...)) {
 // rest): one line, a '#' ends it, the blanks around it dropped.
 void Session::submit_mdi(std::int64_t channel, const std::string& text) {
   if (text.find_first_of("\r\n") != std::string::npos)
-    throw NckError{"ActionError", {make_diagnostic(ErrorId::PlcOperatorActionBad, SourceLoc{"python", 1, 0},
+    throw NckError{"ActionError", {make_diagnostic(ErrorId::PlcOperatorActionBad, SourceLoc{},
                                                    "an operator action is one line")}};
   constexpr std::string_view kBlanks = " \t\v\f";
   std::string_view t = std::string_view(text).substr(0, text.find('#'));
@@ -363,6 +368,7 @@ void Session::restart(std::int64_t ch) {
   next->outputs().event_memory = std::move(sim_->outputs().event_memory);
   past_errors_.insert(past_errors_.end(), sim_->outputs().errors.begin(), sim_->outputs().errors.end());
   sim_ = std::move(next);
+  ++runs_;
   sim::OperatorAction op{sim::make_action(static_cast<std::uint8_t>(ch), sim::act::CycleStart{}), {}};
   record_action(op);
 }
@@ -385,9 +391,54 @@ void Session::record_action(const sim::OperatorAction& op) {
   (void)sim_->outputs().event_memory.add(head, j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
 }
 
-// The --final document's positions, spindles and HLI, with each channel's
-// program state, block, path velocity and wait of the last cycle.
+// Adds what `into` lacks of `from`, object by object and array element by
+// element: the session's fields from before the one writer stay beside it.
+void add_missing(nlohmann::ordered_json& into, const nlohmann::ordered_json& from) {
+  if (into.is_array() && from.is_array()) {
+    for (std::size_t i = 0; i < into.size() && i < from.size(); ++i) add_missing(into[i], from[i]);
+    return;
+  }
+  if (!into.is_object() || !from.is_object()) return;
+  for (auto it = from.begin(); it != from.end(); ++it) {
+    const auto found = into.find(it.key());
+    if (found == into.end()) into[it.key()] = it.value();
+    else add_missing(*found, it.value());
+  }
+}
+
+// The state document of nck serve's GET /api/v1/state, by its one writer
+// (app::state_json, issue 47 item 5), with the session's earlier fields
+// beside it: the --final document's positions, offsets, tools, spindles
+// and HLI, and per channel ch, status, line, n, file.
 pyb::object Session::state() const {
+  const sim::DryRun& run = sim_->run();
+  auto snap = std::make_unique<app::LiveSnapshot>();
+  app::fill_snapshot(run, sim_->last_cycle(), *snap);
+  snap->generation = runs_;
+  snap->speed = 0;  // the session's cycles run as fast as they are asked for ("max")
+  std::array<app::ChannelPlace, config::kMaxChannels> places{};
+  for (std::size_t c = 0; c < run.kernel().channel_count() && c < places.size(); ++c) {
+    const sim::ChannelSnapshot cs = run.snapshot(c);
+    places[c].pcs = cs.axis_pcs;
+    places[c].modal = cs.modal;
+  }
+  nlohmann::ordered_json doc = app::state_json(*snap, sim_->machine(), run, places, &sim_->outputs().last_errors);
+  const nlohmann::ordered_json before = nlohmann::ordered_json::parse(
+      session_fields().dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+  // Spindles: the session has always named them as keys (--final's layout);
+  // each gains the one writer's fields of the same spindle.
+  nlohmann::ordered_json spindles = before.at("spindles");
+  for (const nlohmann::ordered_json& sp : doc["spindles"])
+    if (spindles.contains(sp["name"].get<std::string>())) add_missing(spindles[sp["name"].get<std::string>()], sp);
+  doc["spindles"] = std::move(spindles);
+  add_missing(doc, before);
+  return to_python(doc);
+}
+
+// The session's state before the one writer: the --final document's
+// positions, spindles and HLI, with each channel's program state, block,
+// path velocity and wait of the last cycle.
+nlohmann::json Session::session_fields() const {
   const sim::DryRun& run = sim_->run();
   nlohmann::json doc = app::final_json(sim_->machine(), run, run.time_s(), "running", {}, nlohmann::ordered_json::object());
   doc.erase("end");
@@ -396,31 +447,16 @@ pyb::object Session::state() const {
   doc.erase("format");
   doc["t"] = run.time_s();
   doc["cycle"] = run.kernel().cycles();
-  const kernel::TickOutput& o = sim_->last_cycle();
   for (std::size_t c = 0; c < run.kernel().channel_count() && c < doc["channels"].size(); ++c) {
     const kernel::ChannelState st = run.kernel().channel_state(c);
     nlohmann::json& ch = doc["channels"][c];
     ch["ch"] = c + 1;
-    ch["program_state"] = kernel::state_name(st.program_state);
     ch["status"] = status_name(st.status);
     ch["line"] = st.at.line;
     ch["n"] = st.at.n ? nlohmann::json(*st.at.n) : nlohmann::json(nullptr);
     ch["file"] = sim_->names().file(c, st.at.file_id);
-    ch["path_velocity_mm_s"] = o.channels[c].path_velocity_mm_s;
-    ch["wait"] = o.channels[c].cause == kernel::CycleCause::wait
-                     ? nlohmann::json(kernel::wait_reason_name(o.channels[c].wait_reason))
-                     : nlohmann::json(nullptr);
-    // The operator's switches as they stand, named as nck serve's snapshot names them.
-    const plc::ChannelControl& hli = run.machine().hli().channel[c];
-    ch["feed_override_pct"] = hli.feed_override_percent;
-    ch["rapid_override_pct"] = hli.rapid_override_percent;
-    ch["feedhold"] = hli.feedhold;
-    ch["single_step"] = hli.single_step;
-    ch["optional_stop"] = hli.optional_stop;
-    ch["manual_mode"] = hli.manual_mode;
-    ch["skip_mask"] = hli.skip_mask;
   }
-  return to_python(doc);
+  return doc;
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "nck/distctrl/controller.hpp"
+#include "nck/output/diagnostic_json.hpp"
 #include "nck/output/machine_names.hpp"
 #include "nck/output/output_writers.hpp"
 #include "nck/spindle/spindle_status.hpp"
@@ -65,6 +66,12 @@ std::optional<std::string> write_final(const std::string& path, const config::Ma
   f.write(dump_json(final_json(m, run, time_s, end_reason, errors, time_by_cause), 2));
   f.write("\n");
   return f.commit();
+}
+
+nlohmann::ordered_json final_error_json(const FinalError& e, Severity severity) {
+  nlohmann::ordered_json j{{"id", e.id}, {"ch", e.channel}, {"line", e.line}, {"file", to_utf8(e.file)}, {"msg", to_utf8(e.msg)}};
+  add_diagnostic_fields(j, diagnostic_json(static_cast<ErrorId>(e.id), e.msg, SourceLoc{e.file, e.line, 0}, e.channel, severity));
+  return j;
 }
 
 nlohmann::json final_json(const config::Machine& m, const sim::DryRun& run, double time_s,
@@ -158,7 +165,7 @@ nlohmann::json final_json(const config::Machine& m, const sim::DryRun& run, doub
     }
   json errs = json::array();
   for (const FinalError& e : errors)
-    errs.push_back(json{{"id", e.id}, {"ch", e.channel}, {"line", e.line}, {"file", to_utf8(e.file)}, {"msg", to_utf8(e.msg)}});
+    errs.push_back(json(final_error_json(e)));
   // "format": 2 since nck 0.2 (docs/outputs.md); every earlier field stays as it was
   json doc{{"format", 2},
            {"time", time_s},

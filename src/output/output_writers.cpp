@@ -8,6 +8,7 @@
 
 #include "nck/core/utf8.hpp"
 #include "nck/distctrl/controller.hpp"
+#include "nck/output/diagnostic_json.hpp"
 #include "nck/output/machine_names.hpp"
 #include "nck/spindle/spindle_status.hpp"
 
@@ -113,6 +114,20 @@ const std::string& BlockEventText::line(const kernel::Event& e, const RunNames& 
   return s;
 }
 
+namespace {
+// A warning or error line is also the diagnostic's one shape (issue 47 item
+// 5): its first fields (id, line, file, msg, beside t, ch, ev) stay, the
+// others follow them.
+void add_diagnosis_fields(nlohmann::ordered_json& j, const kernel::Event& e, const RunNames& names) {
+  const kernel::ev::Diagnosis* d = e.get<kernel::ev::Warning>();
+  if (!d) d = e.get<kernel::ev::Error>();
+  if (!d) return;
+  const SourceLoc loc{names.file(e.channel_index(), e.at.file_id), e.at.line, 0};
+  add_diagnostic_fields(j, diagnostic_json(d->id, names.text(d->id, d->message), loc, e.channel,
+                                           e.get<kernel::ev::Warning>() ? Severity::warning : Severity::error));
+}
+}  // namespace
+
 // The head's fields ("t", "ch", "ev" first, as docs/outputs.md lists them),
 // then the payload's, by the writer beside its type.
 nlohmann::ordered_json EventWriter::object(const kernel::Event& e, const RunNames& names) {
@@ -121,8 +136,10 @@ nlohmann::ordered_json EventWriter::object(const kernel::Event& e, const RunName
   if (e.channel > 0) j["ch"] = e.channel;
   j["ev"] = kernel::event_name(e.kind());
   std::visit([&](const auto& payload) { write_json(j, payload, e, names); }, e.payload);
+  add_diagnosis_fields(j, e, names);
   return j;
 }
+
 
 namespace {
 bool has_dist_ctrl(const config::ChannelConfig& ch) {

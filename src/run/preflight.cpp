@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "nck/config/load.hpp"
+#include "nck/output/diagnostic_json.hpp"
 #include "nck/prep/program_check.hpp"
 
 namespace nck::app {
@@ -65,16 +66,6 @@ Preflight preflight(const PreflightOptions& opt) {
   return out;
 }
 
-nlohmann::json to_json(const PreflightFinding& f) {
-  const ErrorInfo* info = find_error(f.d.id);
-  return {{"id", number(f.d.id)},
-          {"name", info ? std::string(info->name) : std::string()},
-          {"severity", f.d.severity == Severity::error ? "error" : "warning"},
-          {"channel", f.channel},
-          {"file", f.d.loc.file},
-          {"line", f.d.loc.line},
-          {"column", f.d.loc.column},
-          {"message", f.d.message}};
-}
+nlohmann::ordered_json to_json(const PreflightFinding& f) { return diagnostic_json(f.d, f.channel); }
 
 }  // namespace nck::app

@@ -228,6 +228,7 @@ void Simulation::record_events(const kernel::TickOutput& o) {
   progress_.take(o);
   for (const kernel::Event& e : o.events) {
     out_.summary.take(e);
+    out_.last_errors.take(e, names_);
     if (out_.wants_events()) {
       if (e.kind() == kernel::EventKind::block) out_.event_line(e, block_text_.line(e, names_), names_);
       else out_.event(e, names_);

@@ -24,7 +24,7 @@ class Reader {
   Reader(const json& j, Diagnostics& diags) : j_(j), diags_(diags) {}
 
   bool fail(ErrorId id, std::string msg) {
-    if (ok_) diags_.add(id, SourceLoc{"api", 1, 0}, std::move(msg));
+    if (ok_) diags_.add(id, SourceLoc{}, std::move(msg));
     ok_ = false;
     return false;
   }
@@ -238,7 +238,7 @@ bool other_command(const std::string& cmd, Reader& r, ApiCommand& out) {
 }  // namespace
 
 std::optional<ApiCommand> parse_api_command(std::string_view body, std::size_t channels, Diagnostics& diags) {
-  const SourceLoc loc{"api", 1, 0};
+  const SourceLoc loc{};
   if (body.size() > kMaxCommandBytes) {
     diags.add(ErrorId::ApiTooLarge, loc, fmt::format("a command is at most {} bytes", kMaxCommandBytes));
     return std::nullopt;

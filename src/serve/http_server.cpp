@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "nck/core/diagnostic.hpp"
+#include "nck/output/diagnostic_json.hpp"
 #include "nck/serve/access.hpp"
 
 namespace nck::app::serve {
@@ -46,15 +47,15 @@ constexpr int kStreamSendBuffer = 64 * 1024;
 
 }  // namespace
 
-HttpReply error_reply(unsigned status, const Diagnostic& d) {
-  nlohmann::ordered_json j = {{"error", {{"id", number(d.id)}, {"message", d.message}}}};
-  if (const ErrorInfo* info = find_error(d.id)) j["error"]["remedy"] = std::string(info->remedy);
+HttpReply error_reply(unsigned status, const Diagnostic& d, std::size_t channel) {
+  // the diagnostic's one shape (id, message and remedy among its fields)
+  const nlohmann::ordered_json j = {{"error", app::diagnostic_json(d, channel)}};
   // replace, not throw: a message may quote bytes a client sent
   return HttpReply{status, "application/json", j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace), {}};
 }
 
 HttpReply error_reply(unsigned status, ErrorId id, std::string message) {
-  return error_reply(status, make_diagnostic(id, SourceLoc{"api", 1, 0}, std::move(message)));
+  return error_reply(status, make_diagnostic(id, SourceLoc{}, std::move(message)));
 }
 
 struct HttpServer::Impl {

@@ -1,5 +1,6 @@
 #include "nck/serve/serve_api.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -8,11 +9,13 @@
 #include "nck/config/parameter_registry.hpp"
 #include "nck/core/utf8.hpp"
 #include "nck/core/version.hpp"
+#include "nck/output/diagnostic_json.hpp"
 #include "nck/output/output_writers.hpp"
 #include "nck/report/embedded_files.hpp"
 #include "nck/run/start_at.hpp"
 #include "nck/serve/access.hpp"
 #include "nck/serve/api_message.hpp"
+#include "nck/serve/mdi_check.hpp"
 #include "nck/serve/program_page.hpp"
 #include "nck/sim/operator_action.hpp"
 
@@ -75,14 +78,6 @@ json parameters_json() {
   return all;
 }
 
-json errors_json() {
-  json all = json::array();
-  for (const ErrorInfo& e : all_errors())
-    all.push_back({{"id", number(e.id)}, {"name", std::string(e.name)}, {"cause", std::string(e.text)},
-                   {"remedy", std::string(e.remedy)}});
-  return all;
-}
-
 }  // namespace
 
 sim::DryRunOptions served_run_options(const ProgramFolders& folders) {
@@ -96,7 +91,27 @@ sim::DryRunOptions served_run_options(const ProgramFolders& folders) {
 
 ServeApi::ServeApi(const config::Machine& m, LiveKernel& kernel, ProgramFolders folders)
     : machine_(m), kernel_(kernel), folders_(std::move(folders)), programs_(m.channels.size()),
-      serving_(kernel.current()) {}
+      serving_(kernel.current()) {
+  seed_state();
+}
+
+// The state before the kernel's first snapshot is taken: the run's channels
+// as they start (the kernel thread does not run yet), so that no state
+// lists no channel (a GET in the first 25 ms answered "channels": []).
+void ServeApi::seed_state() {
+  const kernel::Kernel& k = serving_->kernel();
+  last_.channel_count = std::min(k.channel_count(), last_.channels.size());
+  last_.spindle_count = std::min(k.spindle_count(), last_.spindles.size());
+  for (std::size_t ch = 0; ch < last_.channel_count; ++ch) {
+    const kernel::ChannelState st = k.channel_state(ch);
+    last_.channels[ch].axis_mcs = st.axis_mcs;
+    last_.channels[ch].program_state = st.program_state;
+    last_.channels[ch].at = st.at;
+    last_.channels[ch].hli = serving_->machine().hli().channel[ch];
+  }
+  for (std::size_t i = 0; i < last_.spindle_count; ++i)
+    last_.spindle_override_pct[i] = serving_->machine().hli().spindle_control[i].effective_override_percent();
+}
 
 HttpReply ServeApi::handle(const HttpRequest& r) {
   const std::string_view path = r.target.substr(0, r.target.find('?'));
@@ -104,7 +119,7 @@ HttpReply ServeApi::handle(const HttpRequest& r) {
     if (auto page = page_file(path)) return *page;
     if (path == "/api/v1/state") return HttpReply{200, "application/json", state_frame(), {}};
     if (path == "/api/v1/machine") return ok_json(machine_json(machine_));
-    if (path == "/api/v1/errors") return ok_json(errors_json());
+    if (path == "/api/v1/errors") return ok_json(catalogue_json());
     if (path == "/api/v1/parameters") return ok_json(parameters_json());
     if (path == "/api/v1/programs") return ok_json(json{{"programs", folders_.list()}});
     if (path == "/api/v1/program") return program_text(r.target);
@@ -159,7 +174,9 @@ HttpReply ServeApi::act(const ApiCommand& c) {
 }
 
 HttpReply ServeApi::mdi(std::size_t ch, const std::string& text, bool queue) {
-  if (auto d = serving_->mdi(ch, text, last_.channels[ch].program_state, SourceLoc{"api", 1, 0}, queue))
+  // Text that does not decode is answered with its diagnostic, not queued.
+  if (auto d = mdi_text_error(machine_, ch, text, folders_.roots())) return error_reply(422, *d, ch + 1);
+  if (auto d = serving_->mdi(ch, text, last_.channels[ch].program_state, SourceLoc{}, queue))
     return error_reply(409, *d);
   return ok_json(json{{"ok", true}});
 }
@@ -175,6 +192,7 @@ HttpReply ServeApi::operate(const std::optional<sim::OperatorAction>& op, const 
 
 HttpReply ServeApi::pass_on(const sim::ScenarioAction& a) {
   if (!kernel_.operate(a)) return error_reply(429, ErrorId::PlcOperatorActionsFull, "the kernel has 64 actions waiting");
+  if (a.kind() == sim::ActionKind::reset) last_errors_.clear(a.channel);  // also of an idle channel
   return ok_json(json{{"ok", true}});
 }
 
@@ -202,7 +220,7 @@ std::optional<std::size_t> ServeApi::busy_channel() const {
 
 std::optional<Diagnostic> ServeApi::load(std::size_t ch, const std::string& program) {
   if (const auto busy = busy_channel())
-    return make_diagnostic(ErrorId::ApiChannelBusy, SourceLoc{"api", 1, 0},
+    return make_diagnostic(ErrorId::ApiChannelBusy, SourceLoc{},
                            fmt::format("channel {} is {}: reset it or wait for its end", *busy + 1,
                                        kernel::state_name(last_.channels[*busy].program_state)));
   const auto path = folders_.resolve(program);
@@ -283,6 +301,7 @@ void ServeApi::advance() {
   serving_ = kernel_.current();
   ++generation_;
   frames_ = ChannelFrames{};
+  last_errors_ = LastErrors{};  // a new run starts without an error
 }
 
 void ServeApi::drain_events(std::vector<std::string>& frames) {
@@ -292,6 +311,7 @@ void ServeApi::drain_events(std::vector<std::string>& frames) {
     const LiveEvent& le = q.front();
     if (le.generation > generation_) advance();  // every event of the old run came before
     const kernel::Event& e = le.event;
+    last_errors_.take(e, RunNames{serving_});
     if (const auto* block = e.get<kernel::ev::Block>(); block && block->frame_index && e.channel >= 1)
       if (const kernel::AffineMap* f = serving_->frame(*block->frame_index)) {
         BlockContext& b = frames_[e.channel - 1u];
@@ -316,7 +336,7 @@ void ServeApi::collect(std::vector<std::string>& frames) {
 }
 
 std::string ServeApi::state_frame() {
-  json j = snapshot_json(last_, machine_, *serving_, frames_);
+  json j = snapshot_json(last_, machine_, *serving_, frames_, &last_errors_);
   json programs = json::array();
   for (const auto& p : programs_) programs.push_back(p.empty() ? json() : json(p.filename().string()));
   j["programs"] = std::move(programs);

@@ -89,16 +89,18 @@ std::string operator_line(const OperatorAction& op, Quoting q) {
 
 std::string operator_action_shown(std::string_view word) { return detail::printable(word); }
 
-Diagnostic operator_action_refused(std::string_view line, ErrorId id, std::string_view message,
-                                   const std::string& source) {
-  return make_diagnostic(ErrorId::PlcOperatorActionBad, SourceLoc{source, 1, 0},
-                         fmt::format("'{}': {} ({})", detail::printable(line), message, number(id)));
+// The specific ID, not 960040 with it in the text (issue 47 item 5): a
+// client tells the refusals apart by the ID. No location: an action typed
+// or sent has no file and line (a placeholder such as "api:1" would look
+// like one).
+Diagnostic operator_action_refused(std::string_view line, ErrorId id, std::string_view message, const std::string&) {
+  return make_diagnostic(id, SourceLoc{}, fmt::format("'{}': {}", detail::printable(line), message));
 }
 
 std::optional<OperatorAction> check_operator_action(OperatorAction op, const config::Machine& m, Diagnostics& diags,
                                                     const std::string& source, Quoting q) {
   if (op.action.kind() == ActionKind::block_search) {
-    diags.add(ErrorId::PlcOperatorActionNotLive, SourceLoc{source, 1, 0},
+    diags.add(ErrorId::PlcOperatorActionNotLive, SourceLoc{},
               "block_search starts a run: it is no action on a running kernel");
     return std::nullopt;
   }
@@ -119,7 +121,7 @@ std::optional<OperatorAction> check_operator_action(OperatorAction op, const con
 
 std::optional<OperatorAction> parse_operator_action(std::string_view line, const config::Machine& m,
                                                     Diagnostics& diags, const std::string& source) {
-  const SourceLoc loc{source, 1, 0};
+  const SourceLoc loc{};
   if (line.find('\n') != std::string_view::npos || line.find('\r') != std::string_view::npos) {
     diags.add(ErrorId::PlcOperatorActionBad, loc, "an operator action is one line");
     return std::nullopt;

@@ -42,6 +42,8 @@ async function authentication(s) {
   check("the parameters name P-AXIS-00212", params.some((p) => p.id === "P-AXIS-00212" && p.key.includes("vb_max")));
   const errors = JSON.parse((await request(s, "GET", "/api/v1/errors")).body);
   check("the errors carry their remedy", errors.some((e) => e.id === 940304 && e.remedy.length > 0));
+  check("the catalogue's shape: id, severity, name, cause, remedy (as nck.errors())",
+        errors.every((e) => Object.keys(e).join() === "id,severity,name,cause,remedy"), JSON.stringify(errors[0]));
   // The version comes from CMake's project(VERSION) (the one place it is written).
   const cmakeVersion = /project\(nck VERSION ([0-9.]+)/.exec(fs.readFileSync(new URL("../../CMakeLists.txt", import.meta.url), "utf8"))[1];
   const version = JSON.parse((await request(s, "GET", "/api/v1/version")).body);
@@ -175,6 +177,60 @@ async function mdiQueue(s) {
         st.channels[0].mcs.Y === 7, JSON.stringify(st.channels[0].mcs));
 }
 
+// The diagnostic's one shape (issue 47 item 5): every field one of these,
+// absent ones left out.
+const SHAPE = ["id", "severity", "name", "message", "remedy", "file", "line", "column", "channel"];
+const shaped = (d) => d && typeof d === "object" && Object.keys(d).every((k) => SHAPE.includes(k)) &&
+  ["id", "severity", "name", "message", "remedy"].every((k) => k in d);
+
+// Errors of API actions answer with their ID (issue 47 item 5): MDI text
+// that does not decode -> 422 with the diagnostic, nothing queued; an error
+// while MDI executes -> /state's last_error (and the stream), until reset.
+async function mdiErrors(s) {
+  const before = await state(s);
+  check("the state has last_error (null without one)", before.last_error === null && before.channels[0].last_error === null,
+        JSON.stringify(before.last_error));
+  const bad = await command(s, { command: "mdi", text: "G0 X1 ?" });
+  const err = (() => { try { return JSON.parse(bad.body).error; } catch { return null; } })();
+  check("MDI text that does not decode -> 422 with its diagnostic", bad.status === 422 && err?.id === 920003 &&
+        shaped(err) && err.severity === "error" && err.channel === 1 && err.file === "MDI" && err.line === 1,
+        `${bad.status} ${bad.body}`);
+  const typed = await command(s, { command: "action", line: "mdi G0 X1 ?" });
+  check("the same text as an action line -> 422", typed.status === 422 && errorId(typed) === 920003, `${typed.status} ${typed.body}`);
+  await sleep(100);
+  check("nothing ran of it", (await state(s)).channels[0].state === "idle");
+  const refused = await command(s, { command: "feed_override", percent: 201 });
+  check("a refusal is the diagnostic too (no placeholder file or line)", refused.status === 400 &&
+        shaped(JSON.parse(refused.body).error) && !("file" in JSON.parse(refused.body).error), refused.body);
+  const stream = readStream(s, 1500);
+  await sleep(200);
+  const runs = await command(s, { command: "mdi", text: "G90 G0 X9999" });
+  check("MDI that decodes -> 200", runs.status === 200, `${runs.status} ${runs.body}`);
+  let st = await state(s);
+  for (let i = 0; i < 100 && !st.last_error; ++i) {
+    await sleep(20);
+    st = await state(s);
+  }
+  const seen = await stream;
+  check("an error while MDI executes -> /state last_error with its ID", st.last_error?.id === 930003 &&
+        shaped(st.last_error) && st.channels[0].last_error?.id === 930003 && st.last_error.channel === 1,
+        JSON.stringify(st.last_error));
+  const line = seen.text.split("\n").find((l) => l.startsWith("data: [") && l.includes('"ev":"error"'));
+  const event = line && JSON.parse(line.slice(6)).find((e) => e.ev === "error");
+  check("... and on the stream, the same diagnostic", event && SHAPE.every((k) => (k in event) === (k in st.last_error) ||
+        k === "file" || k === "line") && event.id === st.last_error.id && event.message === st.last_error.message,
+        JSON.stringify(event));
+  await command(s, { command: "reset" });
+  for (let i = 0; i < 100 && st.last_error; ++i) {
+    await sleep(20);
+    st = await state(s);
+  }
+  check("reset clears last_error", st.last_error === null && st.channels[0].last_error === null, JSON.stringify(st.last_error));
+  const doc = st.channels[0];
+  check("the state names program_state and axes {mcs, pcs} as the Python session does",
+        doc.program_state === doc.state && doc.axes.X.mcs === doc.mcs.X && doc.axes.X.pcs === doc.pcs.X, JSON.stringify(doc));
+}
+
 // The stream's frames as [{id, event, data}] (the retry line aside).
 function frames(text) {
   return text.split("\n\n").filter((f) => f.includes("event:")).map((f) => ({
@@ -221,6 +277,7 @@ async function main() {
   const fast = await startServer(["--rate", "100000"]);
   try {
     await streamIds(fast);
+    await mdiErrors(fast);
     await mdiQueue(fast);
     await malformed(fast);
   } finally {

@@ -142,6 +142,11 @@ struct FinalError {
   std::string file, msg;
 };
 
+// An entry of --final's errors (and the Python module's Run.errors,
+// Run.warnings, Session.errors): its first fields {id, ch, line, file, msg},
+// then the diagnostic's one shape (output/diagnostic_json.hpp).
+nlohmann::ordered_json final_error_json(const FinalError& e, Severity severity = Severity::error);
+
 // The error text when it cannot be written.
 // The modal state as --final writes it ("motion": "G1", "plane": "G17" ...).
 nlohmann::json modal_json(const nc::ModalState& m);

@@ -53,8 +53,8 @@ struct Preflight {
 
 Preflight preflight(const PreflightOptions& opt);
 
-// A finding as `nck check --json` lists it (docs/cli.md): id, name,
-// severity, channel, file, line, column, message.
-nlohmann::json to_json(const PreflightFinding& f);
+// A finding as `nck check --json` lists it: the diagnostic's one shape
+// (output/diagnostic_json.hpp; docs/cli.md).
+nlohmann::ordered_json to_json(const PreflightFinding& f);
 
 }  // namespace nck::app

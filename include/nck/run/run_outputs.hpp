@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "nck/output/last_errors.hpp"
 #include "nck/output/output_writers.hpp"
 #include "nck/output/time_by_cause.hpp"
 #include "nck/report/report_writer.hpp"
@@ -26,6 +27,7 @@ struct RunOutputs {
   TraceMemory trace_memory;    // the Python module's trace
   std::vector<FinalError> errors;
   std::vector<FinalError> warnings;  // every warning of the run said on stderr (the module's Run.warnings)
+  LastErrors last_errors;            // each channel's last error until its reset (a session's state)
   RunSummary summary;
   TimeByCause causes;  // every cycle's class, summed (--final, the report, stderr)
   Console console;     // stderr

@@ -49,8 +49,10 @@ struct HttpReply {
   std::vector<std::pair<std::string, std::string>> headers;  // extra ones (Set-Cookie, Location)
 };
 
-// A refusal: {"error": {"id", "message", "remedy"}} with its status (docs/api.md).
-HttpReply error_reply(unsigned status, const Diagnostic& d);
+// A refusal: {"error": DIAGNOSTIC} with its status, the diagnostic's one
+// shape (output/diagnostic_json.hpp; docs/api.md).
+// `channel`: the channel (1-based) it concerns, 0: none.
+HttpReply error_reply(unsigned status, const Diagnostic& d, std::size_t channel = 0);
 HttpReply error_reply(unsigned status, ErrorId id, std::string message);
 
 class ApiHandler {

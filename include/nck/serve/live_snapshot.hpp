@@ -1,56 +1,11 @@
 #pragma once
-// What the live kernel publishes after every cycle (nck serve): plain data,
-// copied into a triple buffer by the kernel thread and read by the server
-// thread, which turns it into the stream's JSON (docs/api.md).
-#include <array>
-#include <cstdint>
-
-#include "nck/config/machine.hpp"
-#include "nck/kernel/event.hpp"
-#include "nck/kernel/tick_io.hpp"
+// The live snapshot lives in the run layer (nck/run/live_snapshot.hpp):
+// the Python session fills one too, for the state document both show.
+#include "nck/run/live_snapshot.hpp"
 
 namespace nck::app::serve {
-
-// A channel that runs no program (idle, ended, failed): a program may be
-// loaded or started, and its cycles go to no cause.
-inline bool channel_free(kernel::ProgramState st) {
-  return st == kernel::ProgramState::idle || st == kernel::ProgramState::ended || st == kernel::ProgramState::error;
-}
-
-struct LiveChannel {
-  AxisArray axis_mcs{};
-  double path_velocity_mm_s = 0;
-  double feed_mm_s = 0;  // the motion's programmed velocity
-  double distance_to_go_mm = 0;
-  kernel::ProgramState program_state = kernel::ProgramState::idle;
-  kernel::CycleCause cause = kernel::CycleCause::none;
-  kernel::WaitReason wait_reason = kernel::WaitReason::plc_ack;
-  BlockRef at{};  // the block the channel stands at
-  plc::ChannelControl hli{};  // the operator's controls as the HLI holds them
-};
-
-// Cycle lateness: how long after its deadline each cycle started.
-struct Lateness {
-  std::uint64_t wakeups = 0;      // deadlines waited for (one per cycle at speed 1)
-  std::uint64_t late_cycles = 0;  // woke more than one cycle time after the deadline
-  double worst_us = 0;
-  double p50_us = 0, p99_us = 0;  // over the whole session
-};
-
-struct LiveSnapshot {
-  std::uint64_t generation = 0;  // which loaded run (LiveKernel::load)
-  std::uint64_t cycle = 0;       // the run's cycles
-  double t_s = 0;                // the run's simulated time
-  bool paused = false;
-  double speed = 1;              // simulated seconds per wall second (0: as fast as possible)
-  std::size_t channel_count = 0;
-  std::size_t spindle_count = 0;
-  std::array<LiveChannel, config::kMaxChannels> channels{};
-  std::array<kernel::SpindleOutput, kernel::kMaxMachineSpindles> spindles{};
-  std::array<plc::SpindleStatus, kernel::kMaxMachineSpindles> hli_spindles{};
-  std::array<double, kernel::kMaxMachineSpindles> spindle_override_pct{};  // the operator's (HLI)
-  Lateness lateness;
-  std::uint64_t events_lost = 0;  // the event ring was full (a server that fell behind)
-};
-
+using app::channel_free;
+using app::Lateness;
+using app::LiveChannel;
+using app::LiveSnapshot;
 }  // namespace nck::app::serve

@@ -56,6 +56,7 @@ class ServeApi : public ApiHandler {
   std::string state_frame();
   void drain_events(std::vector<std::string>& frames);
   void advance();
+  void seed_state();
 
   const config::Machine& machine_;
   LiveKernel& kernel_;
@@ -66,6 +67,7 @@ class ServeApi : public ApiHandler {
   std::uint64_t generation_ = 1;
   ChannelFrames frames_{};
   LiveSnapshot last_{};  // the newest state taken
+  LastErrors last_errors_;  // of the run of generation_, from its events (the state's last_error)
   StreamReplay replay_;  // the frames' ids, the events a reconnecting client missed
 };
 

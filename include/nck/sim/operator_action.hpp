@@ -29,9 +29,8 @@ enum class Quoting : std::uint8_t { api, python };
 
 // setup side: the action's values checked as the scenario grammar checks a
 // line's words, its names resolved against the machine (resolve_action).
-// Nothing when it cannot act, and the reason in diags: PlcOperatorActionBad
-// quoting the action as its scenario line (operator_line), `source` naming
-// where it came from. block_search is refused: it belongs to a run's start.
+// Nothing when it cannot act, and the reason in diags: the scenario
+// grammar's ID, quoting the action as its scenario line (operator_line). block_search is refused: it belongs to a run's start.
 std::optional<OperatorAction> check_operator_action(OperatorAction op, const config::Machine& m, Diagnostics& diags,
                                                     const std::string& source, Quoting q = Quoting::api);
 
@@ -40,7 +39,7 @@ std::optional<OperatorAction> check_operator_action(OperatorAction op, const con
 std::string operator_line(const OperatorAction& op, Quoting q);
 
 // The refusal of an operator action as check_operator_action words it:
-// `line` quoted, the scenario grammar's message and ID after it.
+// the scenario grammar's ID, `line` quoted before its message.
 Diagnostic operator_action_refused(std::string_view line, ErrorId id, std::string_view message,
                                    const std::string& source);
 

@@ -44,17 +44,19 @@ TEST(OperatorAction, RefusesWhatIsNoLiveActionWithItsId) {
     Diagnostics d;
     EXPECT_FALSE(parse(line, d)) << line;
     EXPECT_EQ(d.items().size(), 1u) << line;
-    EXPECT_EQ(d.items().at(0).loc.file, "api");
+    EXPECT_TRUE(d.items().at(0).loc.file.empty()) << line;  // an action has no file: no placeholder
+    EXPECT_EQ(d.items().at(0).loc.line, 0u) << line;
     return d.items().at(0).id;
   };
   EXPECT_EQ(refused("block_search N100"), ErrorId::PlcOperatorActionNotLive);
-  EXPECT_EQ(refused("5 cycle_start"), ErrorId::PlcOperatorActionBad);  // a time is not part of it
-  EXPECT_EQ(refused("@hold cycle_start"), ErrorId::PlcOperatorActionBad);
-  EXPECT_EQ(refused("ch=3 feedhold on"), ErrorId::PlcOperatorActionBad);  // no channel 3
-  EXPECT_EQ(refused("override S9 50"), ErrorId::PlcOperatorActionBad);
+  // the scenario grammar's own IDs, not 960040 with them in the text (issue 47 item 5)
+  EXPECT_EQ(refused("5 cycle_start"), ErrorId::PlcScenarioUnknownAction);  // a time is not part of it
+  EXPECT_EQ(refused("@hold cycle_start"), ErrorId::PlcScenarioUnknownAction);
+  EXPECT_EQ(refused("ch=3 feedhold on"), ErrorId::PlcScenarioBadChannel);  // no channel 3
+  EXPECT_EQ(refused("override S9 50"), ErrorId::PlcScenarioUnknownSpindle);
   EXPECT_EQ(refused("feed_override 80\n1 reset"), ErrorId::PlcOperatorActionBad);
-  EXPECT_EQ(refused(""), ErrorId::PlcOperatorActionBad);
-  EXPECT_EQ(refused("launch rockets"), ErrorId::PlcOperatorActionBad);
+  EXPECT_EQ(refused(""), ErrorId::PlcScenarioMissingArgument);
+  EXPECT_EQ(refused("launch rockets"), ErrorId::PlcScenarioUnknownAction);
 }
 
 // A typed action (nck serve, the Python session) is checked and resolved
@@ -81,7 +83,8 @@ TEST(OperatorAction, TypedActionsAreCheckedAsTheirLines) {
   Diagnostics same;
   EXPECT_FALSE(parse_operator_action("ch=1 jog Q + 600", m, same, "api"));
   ASSERT_EQ(refused.items().size(), 1u);
-  EXPECT_EQ(refused.items()[0].id, ErrorId::PlcOperatorActionBad);
+  EXPECT_EQ(refused.items()[0].id, ErrorId::PlcScenarioUnknownAxis);
+  EXPECT_EQ(refused.items()[0].id, same.items().at(0).id);
   EXPECT_EQ(refused.items()[0].message, same.items().at(0).message);
   o.spindle.name = {'X', '1'};
   Diagnostics bad_name, bad_line;

@@ -1,10 +1,12 @@
-#include "nck/serve/snapshot_json.hpp"
+#include "nck/run/state_document.hpp"
+
+#include <algorithm>
 
 #include "nck/core/utf8.hpp"
 #include "nck/output/output_writers.hpp"
 #include "nck/output/time_by_cause.hpp"
 
-namespace nck::app::serve {
+namespace nck::app {
 namespace {
 
 using json = nlohmann::ordered_json;
@@ -26,21 +28,22 @@ motion::AxisVector to_pcs(const kernel::AffineMap& f, const motion::AxisVector& 
 }
 
 json channel_json(const LiveChannel& c, const config::ChannelConfig& cfg, const sim::DryRun& run, std::size_t ch,
-                  const BlockContext& context) {
-  json mcs = json::object(), pcs = json::object();
-  motion::AxisVector set{};
-  for (std::size_t j = 0; j < cfg.axes.size() && j < set.size(); ++j) set[j] = c.axis_mcs[j];
-  const motion::AxisVector program = to_pcs(context.frame, set, cfg.axes.size());
-  for (std::size_t j = 0; j < cfg.axes.size() && j < set.size(); ++j) {
-    mcs[cfg.axes[j].name] = set[j];
-    pcs[cfg.axes[j].name] = program[j];
+                  const ChannelPlace& place, const LastErrors* errors) {
+  json mcs = json::object(), pcs = json::object(), axes = json::object();
+  for (std::size_t j = 0; j < cfg.axes.size() && j < place.pcs.size(); ++j) {
+    mcs[cfg.axes[j].name] = c.axis_mcs[j];
+    pcs[cfg.axes[j].name] = place.pcs[j];
+    axes[cfg.axes[j].name] = {{"mcs", c.axis_mcs[j]}, {"pcs", place.pcs[j]}};
   }
   const RunNames names{&run};
   json block = {{"file", names.file(ch, c.at.file_id)}, {"line", c.at.line}, {"n", c.at.n ? json(*c.at.n) : json()}};
+  const std::string state(kernel::state_name(c.program_state));
   json j = {{"channel", ch + 1},
-            {"state", std::string(kernel::state_name(c.program_state))},
+            {"state", state},
+            {"program_state", state},  // the Python session's name for it (both stay)
             {"mcs", std::move(mcs)},
             {"pcs", std::move(pcs)},
+            {"axes", std::move(axes)},  // per axis: the Python session's layout
             {"path_velocity_mm_s", c.path_velocity_mm_s},
             {"feed_mm_s", c.feed_mm_s},
             {"distance_to_go_mm", c.distance_to_go_mm},
@@ -55,7 +58,8 @@ json channel_json(const LiveChannel& c, const config::ChannelConfig& cfg, const 
             {"manual_mode", c.hli.manual_mode},
             {"skip_mask", c.hli.skip_mask}};
   j["wait"] = c.cause == kernel::CycleCause::wait ? json(wait_reason_name(c.wait_reason)) : json();
-  j["modal"] = context.modal ? json(modal_json(*context.modal)) : json();
+  j["modal"] = place.modal ? json(modal_json(*place.modal)) : json();
+  j["last_error"] = errors ? errors->channel(ch + 1) : json();
   return j;
 }
 
@@ -74,11 +78,11 @@ json spindle_json(const LiveSnapshot& s, std::size_t i, const sim::DryRun& run) 
 
 }  // namespace
 
-nlohmann::ordered_json snapshot_json(const LiveSnapshot& s, const config::Machine& m, const sim::DryRun& run,
-                                     const ChannelFrames& frames) {
+nlohmann::ordered_json state_json(const LiveSnapshot& s, const config::Machine& m, const sim::DryRun& run,
+                                  std::span<const ChannelPlace> places, const LastErrors* errors) {
   json channels = json::array();
-  for (std::size_t ch = 0; ch < s.channel_count && ch < m.channels.size(); ++ch)
-    channels.push_back(channel_json(s.channels[ch], m.channels[ch], run, ch, frames[ch]));
+  for (std::size_t ch = 0; ch < s.channel_count && ch < m.channels.size() && ch < places.size(); ++ch)
+    channels.push_back(channel_json(s.channels[ch], m.channels[ch], run, ch, places[ch], errors));
   json spindles = json::array();
   for (std::size_t i = 0; i < s.spindle_count; ++i) spindles.push_back(spindle_json(s, i, run));
   return {{"t_s", s.t_s},
@@ -93,7 +97,22 @@ nlohmann::ordered_json snapshot_json(const LiveSnapshot& s, const config::Machin
                         {"p50_us", s.lateness.p50_us},
                         {"p99_us", s.lateness.p99_us},
                         {"worst_us", s.lateness.worst_us}}},
-          {"events_lost", s.events_lost}};
+          {"events_lost", s.events_lost},
+          // the newest error of any channel (or of none: a spindle's), until a reset
+          {"last_error", errors ? errors->latest() : json()}};
 }
 
-}  // namespace nck::app::serve
+nlohmann::ordered_json snapshot_json(const LiveSnapshot& s, const config::Machine& m, const sim::DryRun& run,
+                                     const ChannelFrames& frames, const LastErrors* errors) {
+  std::array<ChannelPlace, config::kMaxChannels> places{};
+  for (std::size_t ch = 0; ch < s.channel_count && ch < m.channels.size() && ch < places.size(); ++ch) {
+    const std::size_t n = m.channels[ch].axes.size();
+    motion::AxisVector set{};
+    for (std::size_t j = 0; j < n && j < set.size(); ++j) set[j] = s.channels[ch].axis_mcs[j];
+    places[ch].pcs = to_pcs(frames[ch].frame, set, std::min(n, set.size()));
+    places[ch].modal = frames[ch].modal;
+  }
+  return state_json(s, m, run, places, errors);
+}
+
+}  // namespace nck::app

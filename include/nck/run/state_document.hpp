@@ -1,0 +1,43 @@
+#pragma once
+// The state document: one writer for nck serve's GET /api/v1/state, its
+// stream's state frames (the HMI reads them) and the Python session's
+// Session.state() (issue 47 item 5; docs/api.md, "The state").
+#include <array>
+#include <optional>
+#include <span>
+
+#include <nlohmann/json.hpp>
+
+#include "nck/kernel/affine_map.hpp"
+#include "nck/output/last_errors.hpp"
+#include "nck/run/live_snapshot.hpp"
+#include "nck/sim/dry_run.hpp"
+
+namespace nck::app {
+
+// Per channel, what the block events said of the block it runs: its
+// program -> machine map (the positions in program coordinates) and the
+// modal state after it.
+struct BlockContext {
+  kernel::AffineMap frame;
+  std::optional<nc::ModalState> modal;
+};
+using ChannelFrames = std::array<BlockContext, config::kMaxChannels>;
+
+// Per channel, where it stands in program coordinates and its modal state.
+struct ChannelPlace {
+  motion::AxisVector pcs{};
+  std::optional<nc::ModalState> modal;
+};
+
+// The document. `run`: the run the snapshot belongs to (names of files and
+// spindles); `places`: one per channel of the snapshot; `errors`: the last
+// errors (null fields without).
+nlohmann::ordered_json state_json(const LiveSnapshot& s, const config::Machine& m, const sim::DryRun& run,
+                                  std::span<const ChannelPlace> places, const LastErrors* errors);
+
+// nck serve's: the places from the block events' maps.
+nlohmann::ordered_json snapshot_json(const LiveSnapshot& s, const config::Machine& m, const sim::DryRun& run,
+                                     const ChannelFrames& frames, const LastErrors* errors = nullptr);
+
+}  // namespace nck::app
