@@ -14,7 +14,6 @@ jerk-limited slopes do not hold it yet: docs/performance.md, issue 43).
 
 A program that breaks it is printed with both times, and the exit code is 1.
 """
-import argparse
 import json
 import pathlib
 import random
@@ -56,23 +55,17 @@ def end_time(nck, machine, text, work):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("nck")
-    ap.add_argument("source")
-    ap.add_argument("--cases", type=int, default=30)
-    ap.add_argument("--seed", type=int, default=43)
-    ap.add_argument("--minutes", type=float, default=0)
-    ap.add_argument("--machine", help="machine folder (default: SOURCE/examples/mill)")
+    ap = limits_property.campaign_arguments(43)
     ap.add_argument("--slopes", default="STEP")
     a = ap.parse_args()
     slopes = a.slopes.split(",")
-    machine = pathlib.Path(a.machine) if a.machine else pathlib.Path(a.source) / "examples" / "mill"
+    machine = limits_property.campaign_machine(a)
     rng = random.Random(a.seed)
     started = time.monotonic()
     cases = 0
     with tempfile.TemporaryDirectory() as tmp:
         work = pathlib.Path(tmp)
-        while (cases < a.cases) if a.minutes == 0 else (time.monotonic() - started < a.minutes * 60):
+        while limits_property.goes_on(a, cases, started):
             text = re.sub(r"#SLOPE \[TYPE=\w+\]", f"#SLOPE [TYPE={rng.choice(slopes)}]", limits_property.program(rng))
             path_dev = rng.choice([0.005, 0.01, 0.05, 0.2])
             plain = end_time(a.nck, machine, unblended(text), work)

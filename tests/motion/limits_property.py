@@ -187,24 +187,40 @@ def program_end_s(events):
     return math.inf
 
 
-def main():
+def campaign_arguments(default_seed):
+    """The arguments every random campaign here takes (NCK SOURCE --cases
+    --seed --minutes --machine); the caller adds its own and parses."""
     ap = argparse.ArgumentParser()
     ap.add_argument("nck")
     ap.add_argument("source")
     ap.add_argument("--cases", type=int, default=30)
-    ap.add_argument("--seed", type=int, default=44)
+    ap.add_argument("--seed", type=int, default=default_seed)
     ap.add_argument("--minutes", type=float, default=0)
-    ap.add_argument("--jerk", action="store_true", help="check the jerk under jerk-limited slopes too")
     ap.add_argument("--machine", help="machine folder (default: SOURCE/examples/mill)")
+    return ap
+
+
+def campaign_machine(a):
+    return pathlib.Path(a.machine) if a.machine else pathlib.Path(a.source) / "examples" / "mill"
+
+
+def goes_on(a, cases, started):
+    """--cases cases, or with --minutes until that time has passed."""
+    return cases < a.cases if a.minutes == 0 else time.monotonic() - started < a.minutes * 60
+
+
+def main():
+    ap = campaign_arguments(44)
+    ap.add_argument("--jerk", action="store_true", help="check the jerk under jerk-limited slopes too")
     a = ap.parse_args()
-    machine = pathlib.Path(a.machine) if a.machine else pathlib.Path(a.source) / "examples" / "mill"
+    machine = campaign_machine(a)
     limits = axis_limits(machine)
     rng = random.Random(a.seed)
     started = time.monotonic()
     cases = cycles = 0
     with tempfile.TemporaryDirectory() as tmp:
         work = pathlib.Path(tmp)
-        while (cases < a.cases) if a.minutes == 0 else (time.monotonic() - started < a.minutes * 60):
+        while goes_on(a, cases, started):
             prog_text, plc_text = program(rng), scenario(rng)
             bad, n = check_one(a.nck, machine, limits, prog_text, plc_text, work, a.jerk)
             cases += 1
