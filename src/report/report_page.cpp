@@ -1,6 +1,7 @@
 // ReportWriter's output: the run's data as one JSON object, put into the
 // page template (web/report.html) with the scripts and styles inlined.
 #include <algorithm>
+#include <utility>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -26,18 +27,22 @@ constexpr std::size_t kMaxSummaryBlocks = 300;    // the longest blocks in the t
 constexpr std::size_t kMaxLinesJsonBytes = 1536 << 10;
 constexpr std::uint32_t kContextLines = 2;           // lines around each line shown, for the program panel
 
-template <class T, class F>
-std::string array_of(const std::vector<T>& v, F&& item) {
+template <class Range, class F>
+std::string array_of(const Range& v, F&& item) {
   std::string s = "[";
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    if (i > 0) s += ',';
-    item(s, v[i]);
+  bool first = true;
+  for (const auto& x : v) {
+    if (!first) s += ',';
+    first = false;
+    item(s, x);
   }
-  return s + "]";
+  s += ']';
+  return s;
 }
 
 // "</" inside the data would end the <script> element that carries it.
-std::string script_safe(const std::string& s) {
+std::string script_safe(std::string s) {
+  if (s.find("</") == std::string::npos) return s;  // no second copy of megabytes
   std::string out;
   out.reserve(s.size() + s.size() / 64);
   std::size_t from = 0;
@@ -50,25 +55,23 @@ std::string script_safe(const std::string& s) {
   return out;
 }
 
-// The template with each /*NAME*/ replaced once by its text; the parts come
-// in template order and each search starts after the key found before, so
-// inserted text is never searched. Built by appending (the page is MBs: a
-// replace in place moved its tail once per part).
-std::string fill(std::string_view page, const std::vector<std::pair<std::string, std::string>>& parts) {
-  std::size_t size = page.size();
-  for (const auto& part : parts) size += part.second.size();
-  std::string out;
-  out.reserve(size);
+// A piece of the page's data, made script-safe, onto the page.
+void put(OutputFile& f, std::string piece) { f.write(script_safe(std::move(piece))); }
+
+// Writes the template with each /*NAME*/ replaced once by its text; the
+// parts come in template order and each search starts after the key found
+// before, so inserted text is never searched. Written piece by piece: the
+// page is MBs, and a whole copy of it would be the run's peak memory.
+void write_filled(OutputFile& f, std::string_view page, const std::vector<std::pair<std::string, std::string>>& parts) {
   std::size_t from = 0;
   for (const auto& [key, text] : parts) {
     const std::size_t p = page.find(key, from);
     if (p == std::string::npos) continue;
-    out.append(page.substr(from, p - from));
-    out += text;
+    f.write(page.substr(from, p - from));
+    f.write(text);
     from = p + key.size();
   }
-  out.append(page.substr(from));
-  return out;
+  f.write(page.substr(from));
 }
 
 std::string html_text(const std::string& s) {
@@ -80,7 +83,7 @@ std::string html_text(const std::string& s) {
 
 }  // namespace
 
-std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const {
+void ReportWriter::write_channels(OutputFile& f, std::vector<LineRef>& lines_used) const {
   std::string s = "[";
   for (std::size_t c = 0; c < channels_.size(); ++c) {
     const Channel& ch = channels_[c];
@@ -89,7 +92,7 @@ std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const 
     // Every cycle's position within a tenth of the DRO's digit while there
     // are at most kMaxBackplotPoints vertices; a coarser bound beyond.
     const TimedPath::Vertices v = path.vertices(kMaxBackplotPoints);
-    const std::vector<TimedPoint>& pts = v.points;
+    const std::span<const TimedPoint> pts = v.points;
     const bool has_y = ch.axis[1] >= 0;
     const char* plane = ch.plane == 18 || (ch.plane == 0 && !has_y) ? "XZ" : ch.plane == 19 ? "YZ" : "XY";
     s += fmt::format(R"({}{{"n":{},"plane":"{}","axes":[{},{},{}],"has":[{},{},{}],"min":[)", c > 0 ? "," : "", c + 1,
@@ -109,24 +112,26 @@ std::string ReportWriter::channels_json(std::vector<LineRef>& lines_used) const 
     s += ",\"path_error_mm\":";
     append_number(s, v.error_mm + 5e-5, 5);  // + the rounding to 4 decimals
     s += fmt::format(",\"path_by_block\":{}", v.by_block);
+    put(f, std::exchange(s, std::string()));  // the point arrays one by one: each is up to a megabyte
     for (int a = 0; a < 3; ++a)
-      s += fmt::format(",\"{}\":", "xyz"[a]) +
-           array_of(pts, [a](std::string& o, const TimedPoint& p) { append_number(o, p.pos[a], 4); });
-    s += ",\"line\":" + array_of(pts, [](std::string& o, const TimedPoint& p) { o += fmt::format("{}", p.line); });
-    s += ",\"file\":" + array_of(pts, [](std::string& o, const TimedPoint& p) { o += fmt::format("{}", p.file); });
-    s += ",\"rapid\":" + array_of(pts, [](std::string& o, const TimedPoint& p) { o += p.rapid ? '1' : '0'; });
-    s += ",\"t\":" + array_of(pts, [](std::string& o, const TimedPoint& p) { append_number(o, p.t_s, 6); });
-    s += ",\"cause_t\":" + array_of(plot.cause_t, [](std::string& o, double t) { append_number(o, t, 4); });
+      put(f, fmt::format(",\"{}\":", "xyz"[a]) +
+                 array_of(pts, [a](std::string& o, const TimedPoint& p) { append_number(o, p.pos[a], 4); }));
+    put(f, ",\"line\":" + array_of(pts, [](std::string& o, const TimedPoint& p) { o += fmt::format("{}", p.line); }));
+    put(f, ",\"file\":" + array_of(pts, [](std::string& o, const TimedPoint& p) { o += fmt::format("{}", p.file); }));
+    put(f, ",\"rapid\":" + array_of(pts, [](std::string& o, const TimedPoint& p) { o += p.rapid ? '1' : '0'; }));
+    put(f, ",\"t\":" + array_of(pts, [](std::string& o, const TimedPoint& p) { append_number(o, p.t_s, 6); }));
+    if (ch.frames.size() > 1)  // which map each point is in; all the first one otherwise
+      put(f, ",\"frame\":" + array_of(pts, [](std::string& o, const TimedPoint& p) { o += fmt::format("{}", p.frame); }));
+s += ",\"cause_t\":" + array_of(plot.cause_t, [](std::string& o, double t) { append_number(o, t, 4); });
     s += ",\"cause\":" + array_of(plot.cause_name, [](std::string& o, const std::string& n) { o += json_quoted(n); });
     s += ",\"limits\":" + limits_json(ch);
     s += ",\"frames\":" + frames_json(ch);
-    if (ch.frames.size() > 1)  // which map each point is in; all the first one otherwise
-      s += ",\"frame\":" + array_of(pts, [](std::string& o, const TimedPoint& p) { o += fmt::format("{}", p.frame); });
     s += ",\"contour\":" + contour_json(ch);
     s += "}";
     for (const TimedPoint& p : pts) lines_used.emplace_back(p.file, p.line);
   }
-  return s + "]";
+  s += ']';
+  put(f, std::move(s));
 }
 
 // The software limits of X, Y, Z (machine coordinates, mm; null where the
@@ -141,7 +146,8 @@ std::string ReportWriter::limits_json(const Channel& ch) const {
       else append_number(s, (*side)[a], 4);
     }
   }
-  return s + "]}";
+  s += "]}";
+  return s;
 }
 
 // The channel's program -> machine maps: MCS = r * PCS + s on X, Y, Z
@@ -215,10 +221,13 @@ std::string ReportWriter::summary_json(std::vector<LineRef>& lines_used) const {
     s += "}";
     first = false;
   }
-  return s + "]}";
+  s += "]}";
+  return s;
 }
 
-std::string ReportWriter::data_json(double end_s, int exit_code) const {
+// The page's data, written piece by piece (a whole copy of its megabytes
+// would be the run's peak memory), each made script-safe.
+void ReportWriter::write_data(OutputFile& f, double end_s, int exit_code) const {
   std::vector<LineRef> lines_used;
   std::string s = "{\"meta\":{";
   s += fmt::format(R"("nck":{},"machine":{},"plc":{},"programs":{},"end_s":)", json_quoted(std::string(version())),
@@ -227,27 +236,29 @@ std::string ReportWriter::data_json(double end_s, int exit_code) const {
   append_number(s, end_s, 4);
   s += fmt::format(R"(,"exit_code":{},"end":{},"cycle_s":{},"errors":{},"warnings":{},"stride":{},"c_axis":{}}})",
                    exit_code, json_quoted(end_reason_), cycle_s_, errors_, warnings_, plots_->series().stride(), c_axis_used_);
-  s += ",\"files\":" + array_of(files_, [](std::string& o, const SourceLines& f) { o += json_quoted(f.name()); });
-  s += ",\"spindles\":" + array_of(spindles_, [](std::string& o, const std::string& n) { o += json_quoted(n); });
-  s += ",\"series\":" + array_of(series_meta_, [](std::string& o, const std::string& m) { o += m; });
-  s += ",\"ts\":" + plots_->series().json(decimals_);
-  s += ",\"channels\":" + channels_json(lines_used);
-  s += ",\"waits\":" + array_of(waits_, [&](std::string& o, const Wait& w) {
+  put(f, std::move(s));
+  put(f, ",\"files\":" + array_of(files_, [](std::string& o, const SourceLines& file) { o += json_quoted(file.name()); }));
+  put(f, ",\"spindles\":" + array_of(spindles_, [](std::string& o, const std::string& n) { o += json_quoted(n); }));
+  put(f, ",\"series\":" + array_of(series_meta_, [](std::string& o, const std::string& m) { o += m; }));
+  put(f, ",\"ts\":" + plots_->series().json(decimals_));
+  put(f, ",\"channels\":");
+  write_channels(f, lines_used);
+  put(f, ",\"waits\":" + array_of(waits_, [&](std::string& o, const Wait& w) {
     o += fmt::format(R"({{"ch":{},"t0":{},"t1":{},"reason":{},"fn":{},"spindle":{},"sync":{},"file":{},"line":{}}})",
                      w.ch, w.t0, w.t1 < 0 ? end_s : w.t1, json_quoted(w.reason), json_quoted(w.fn), json_quoted(w.spindle),
                      json_quoted(w.sync), w.file, w.line);
     lines_used.emplace_back(w.file, w.line);
-  });
-  s += ",\"marks\":" + array_of(marks_, [](std::string& o, const Mark& m) {
+  }));
+  put(f, ",\"marks\":" + array_of(marks_, [](std::string& o, const Mark& m) {
     o += fmt::format(R"({{"t":{},"spindle":{},"ch":{},"kind":{},"text":{}}})", m.t, m.ch ? -1 : static_cast<int>(m.spindle),
                      m.ch, json_quoted(m.kind), json_quoted(m.text));
-  });
-  s += ",\"diagnostics\":" + array_of(diagnostics_, [](std::string& o, const std::string& l) { o += l; });
-  s += ",\"events\":" + array_of(events_, [](std::string& o, const std::string& l) { o += l; });
-  s += fmt::format(",\"events_dropped\":{}", events_dropped_);
-  s += ",\"summary\":" + summary_json(lines_used);
-  s += ",\"causes\":" + causes_json_;
-  s += ",\"ghost\":" + ghost_json_;
+  }));
+  put(f, ",\"diagnostics\":" + array_of(diagnostics_, [](std::string& o, const std::string& l) { o += l; }));
+  put(f, ",\"events\":" + array_of(events_, [](std::string& o, const std::string& l) { o += l; }));
+  put(f, fmt::format(",\"events_dropped\":{}", events_dropped_));
+  put(f, ",\"summary\":" + summary_json(lines_used));
+  put(f, ",\"causes\":" + causes_json_);
+  put(f, ",\"ghost\":" + ghost_json_);
   lines_used.insert(lines_used.end(), cause_lines_.begin(), cause_lines_.end());
   // the NC text of every line a hover or table shows
   for (const std::string& d : diagnostics_) {
@@ -258,8 +269,8 @@ std::string ReportWriter::data_json(double end_s, int exit_code) const {
   }
   std::sort(lines_used.begin(), lines_used.end());
   lines_used.erase(std::unique(lines_used.begin(), lines_used.end()), lines_used.end());
-  s += ",\"lines\":" + lines_json(lines_used);
-  return s + "}";
+  put(f, ",\"lines\":" + lines_json(lines_used));
+  put(f, "}");
 }
 
 // The NC text of the lines shown (hovers, tables, the program panel's
@@ -286,7 +297,8 @@ std::string ReportWriter::lines_json(const std::vector<LineRef>& lines_used) con
       if (line > d) put(file, line - d);
       put(file, line + d);
     }
-  return s + "}";
+  s += '}';
+  return s;
 }
 
 // Coupling periods from the link events: an "on" opens one, the "off" of
@@ -325,17 +337,22 @@ std::optional<std::string> ReportWriter::write(const std::string& path, double e
   if (auto err = f.open(path)) return err;
   std::string title = "nck report";
   for (const std::string& p : programs_) title += " · " + std::filesystem::path(p).filename().string();
-  f.write(fill(embedded_file("report.html"),
+  // the data goes between the template's two halves
+  constexpr std::string_view kDataKey = "/*NCK_DATA*/";
+  const std::string_view page = embedded_file("report.html");
+  const std::size_t data_at = std::min(page.find(kDataKey), page.size());
+  write_filled(f, page.substr(0, data_at),
                {{"/*TITLE*/", html_text(title)},
                 {"/*UPLOT_CSS*/", std::string(embedded_file("uPlot.min.css"))},
                 {"/*REPORT_CSS*/", std::string(embedded_file("report.css"))},
-                {"<!--LINK_TABLE-->", link_table()},
-                {"/*NCK_DATA*/", script_safe(data_json(end_s, exit_code))},
-                {"/*UPLOT_JS*/", std::string(embedded_file("uPlot.iife.min.js"))},
+                {"<!--LINK_TABLE-->", link_table()}});
+  write_data(f, end_s, exit_code);
+  write_filled(f, page.substr(std::min(data_at + kDataKey.size(), page.size())),
+               {{"/*UPLOT_JS*/", std::string(embedded_file("uPlot.iife.min.js"))},
                 {"/*BACKPLOT_JS*/", std::string(embedded_file("backplot.js"))},
                 {"/*VIEW3D_JS*/", std::string(embedded_file("view3d.js"))},
                 {"/*PLAYER_JS*/", std::string(embedded_file("player.js"))},
-                {"/*REPORT_JS*/", std::string(embedded_file("report.js"))}}));
+                {"/*REPORT_JS*/", std::string(embedded_file("report.js"))}});
   return f.commit();
 }
 

@@ -41,6 +41,7 @@ void ReportPlots::finish() {
   if (batch().size() > 0) publish();
   wake(true);
   thread_.join();
+  for (Channel& c : channels_) c.path.close();
 }
 
 // Folds the batches in the order they were handed over; once stopped, what

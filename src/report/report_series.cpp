@@ -155,7 +155,8 @@ std::string EnvelopeSeries::json(std::span<const int> decimals) const {
     }
     s += ']';
   }
-  return s + "]}";
+  s += "]}";
+  return s;
 }
 
 }  // namespace nck::app

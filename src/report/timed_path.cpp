@@ -67,9 +67,6 @@ void TimedPath::Fit::take(const TimedPoint& anchor, const TimedPoint& p, double 
 void TimedPath::add(const TimedPoint& p) {
   if (points_.empty()) {
     min_ = max_ = p.pos;
-    // Room for every vertex kept: pages are touched only as the path grows,
-    // and the vector never moves (a doubling copies megabytes).
-    points_.reserve(kMaxVertices + 1);
     points_.push_back(p);
     return;
   }
@@ -88,53 +85,53 @@ void TimedPath::add(const TimedPoint& p) {
   fit_.start(points_.back(), p, kTolMm);
   tip_ = p;
   has_tip_ = true;
-  if (points_.size() > kMaxVertices) thin_in_place();
+  // fit_ stays valid: the thinning keeps the last vertex, the current
+  // run's anchor.
+  if (points_.size() > kMaxVertices)
+    thin_tol_mm_ = thin_until(points_, kMaxVertices / 2, thin_tol_mm_, error_mm_, by_block_);
 }
 
-// Halves the vertices at least: thinned again with a tolerance doubling
-// from twice the last one, past kMaxBlockTolMm across blocks; if G0 / feed
-// and map changes alone leave too many, every second vertex goes. The
-// last vertex (the current run's anchor) stays.
-void TimedPath::thin_in_place() {
+// Thins `points` again until at most max_points remain, with a tolerance
+// doubling from twice last_tol_mm, past kMaxBlockTolMm across blocks; if G0
+// / feed and map changes alone leave too many, every second point goes. The
+// first and last points stay. Returns the last tolerance used.
+double TimedPath::thin_until(std::vector<TimedPoint>& points, std::size_t max_points, double last_tol_mm,
+                             double& error_mm, bool& by_block) {
   constexpr double kMaxTolMm = 1e6;
-  const TimedPoint anchor = points_.back();
-  scratch_.reserve(kMaxVertices + 1);
-  for (double tol = std::max(2 * thin_tol_mm_, 2 * kTolMm); points_.size() > kMaxVertices / 2; tol *= 2) {
+  std::vector<TimedPoint> kept;
+  for (double tol = std::max(2 * last_tol_mm, 2 * kTolMm); points.size() > max_points; tol *= 2) {
     if (tol > kMaxTolMm) {
-      scratch_.clear();
-      for (std::size_t i = 0; i < points_.size(); i += 2) scratch_.push_back(points_[i]);
-      if (scratch_.back().t_s != anchor.t_s) scratch_.push_back(anchor);
-      points_.swap(scratch_);
-      error_mm_ = kMaxTolMm;  // no bound worth stating
-      break;
+      kept.clear();
+      for (std::size_t i = 0; i < points.size(); i += 2) kept.push_back(points[i]);
+      if (kept.back().t_s != points.back().t_s) kept.push_back(points.back());
+      error_mm = kMaxTolMm;  // no bound worth stating
+    } else {
+      if (tol > kMaxBlockTolMm) by_block = false;
+      thin(points, tol, by_block, kept);
+      error_mm += tol;
+      last_tol_mm = tol;
     }
-    if (tol > kMaxBlockTolMm) by_block_ = false;
-    thin(points_, tol, by_block_, scratch_);
-    points_.swap(scratch_);
-    thin_tol_mm_ = tol;
-    error_mm_ += tol;
+    points.swap(kept);
   }
-  // fit_ stays valid: add() thins right after a new run began at the
-  // anchor, which every thinning keeps as the last vertex.
+  return last_tol_mm;
+}
+
+void TimedPath::close() {
+  if (has_tip_) points_.push_back(tip_);
+  has_tip_ = false;
 }
 
 TimedPath::Vertices TimedPath::vertices(std::size_t max_points) const {
-  Vertices v{points_, error_mm_, by_block_};
-  if (has_tip_) v.points.push_back(tip_);
-  std::vector<TimedPoint> scratch;
-  for (double tol = std::max(2 * thin_tol_mm_, 2 * kTolMm); v.points.size() > max_points; tol *= 2) {
-    if (tol > 1e6) {  // G0 / feed and map changes alone are too many: every second vertex
-      scratch.clear();
-      for (std::size_t i = 0; i < v.points.size(); i += 2) scratch.push_back(v.points[i]);
-      v.points.swap(scratch);
-      v.error_mm = 1e6;
-      continue;
-    }
-    if (tol > kMaxBlockTolMm) v.by_block = false;
-    thin(v.points, tol, v.by_block, scratch);
-    v.points.swap(scratch);
-    v.error_mm += tol;
+  Vertices v{{}, {}, error_mm_, by_block_};
+  if (!has_tip_ && points_.size() <= max_points) {
+    v.points = points_;
+    return v;
   }
+  v.thinned.reserve(points_.size() + 1);
+  v.thinned.assign(points_.begin(), points_.end());
+  if (has_tip_) v.thinned.push_back(tip_);
+  (void)thin_until(v.thinned, max_points, thin_tol_mm_, v.error_mm, v.by_block);
+  v.points = v.thinned;
   return v;
 }
 

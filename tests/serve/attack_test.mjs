@@ -9,7 +9,7 @@
 // wall time since the start times the speed.
 //
 //   node tests/serve/attack_test.mjs --nck BIN --source DIR --out DIR [--minutes N] [--seed S] [--json FILE]
-//                                    [--only ATTACK,...]
+//                                    [--only ATTACK,...] [--operator-ms MS]
 //
 // Without --minutes (ctest's serve.attack): each attack once, in an order
 // the seed shuffles. --minutes N (or NCK_ATTACK_MINUTES): attacks in random
@@ -27,6 +27,11 @@ const opt = (name, fallback) => {
   return i > 0 && process.argv[i + 1] !== undefined ? process.argv[i + 1] : fallback;
 };
 const minutes = Number(opt("minutes", process.env.NCK_ATTACK_MINUTES || 0));
+// The operator's bar (1 s). Under ASan on CI's two cores the server runs
+// some three times slower beside the flood's own thread: ctest's sanitized
+// serve.attack checks the behaviour with a wider bar, and scripts/test.sh
+// runs it again in the plain build with this one.
+const OPERATOR_MS = Number(opt("operator-ms", 1000));
 let seed = Number(opt("seed", 45)) >>> 0;
 const random = () => {  // mulberry32: the same seed gives the same campaign
   seed = (seed + 0x6d2b79f5) >>> 0;
@@ -140,7 +145,7 @@ function operatorProbe(s) {
     const t0 = performance.now();
     const r = await command(s, { command: "feed_override", percent }, { timeout: 1500 });
     let seen = false;
-    while (r.status === 200 && !seen && performance.now() - t0 < 1000) {
+    while (r.status === 200 && !seen && performance.now() - t0 < OPERATOR_MS) {
       const st = await request(s, "GET", "/api/v1/state", { timeout: 1000 });
       seen = st.status === 200 && stateOf(st)?.channels[0].feed_override_pct === percent;
       if (!seen) await sleep(10);
@@ -149,8 +154,8 @@ function operatorProbe(s) {
     figures.probes++;
     probeMs.push(ms);
     if (ms > figures.worstProbeMs) Object.assign(figures, { worstProbeMs: ms, worstProbe: what });
-    expect(`operator ${what}: feed override ${percent} % acknowledged and in the state within 1 s (${ms.toFixed(0)} ms)`,
-           r.status === 200 && seen && ms <= 1000, `${r.status} ${r.body.slice(0, 160)}`);
+    expect(`operator ${what}: feed override ${percent} % acknowledged and in the state within ${OPERATOR_MS} ms (${ms.toFixed(0)} ms)`,
+           r.status === 200 && seen && ms <= OPERATOR_MS, `${r.status} ${r.body.slice(0, 160)}`);
   };
   return (what) => (queue = queue.then(() => probe(what)));
 }

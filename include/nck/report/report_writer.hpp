@@ -36,6 +36,7 @@ class DryRun;
 namespace nck::app {
 
 struct RunNames;
+class OutputFile;
 
 // The run's inputs as the page names them (nck run's MACHINE, PROGRAM...
 // and --plc FILE).
@@ -140,8 +141,8 @@ class ReportWriter {
   std::string limits_json(const Channel& ch) const;
   std::string frames_json(const Channel& ch) const;
   std::string contour_json(const Channel& ch) const;
-  std::string data_json(double end_s, int exit_code) const;
-  std::string channels_json(std::vector<std::pair<std::uint16_t, std::uint32_t>>& lines_used) const;
+  void write_data(OutputFile& f, double end_s, int exit_code) const;
+  void write_channels(OutputFile& f, std::vector<std::pair<std::uint16_t, std::uint32_t>>& lines_used) const;
   std::string summary_json(std::vector<std::pair<std::uint16_t, std::uint32_t>>& lines_used) const;
   std::string lines_json(const std::vector<std::pair<std::uint16_t, std::uint32_t>>& lines_used) const;
   // Synchronous operation: one row per coupling period (link events).

@@ -10,6 +10,7 @@
 // report's path is timed").
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace nck::app {
@@ -29,21 +30,27 @@ class TimedPath {
  public:
   // Within a tenth of the DRO's last digit (its 3 decimals) at every cycle.
   static constexpr double kTolMm = 1e-4;
-  // Vertices kept while recording: beyond, they are thinned again with a
-  // doubling tolerance to half as many (a block per vertex in a 5-million-block
-  // program stays bounded).
-  static constexpr std::size_t kMaxVertices = 240000;
+  // Vertices kept while recording, as many as the page shows: beyond, they
+  // are thinned again with a doubling tolerance to half as many (a block per
+  // vertex in a 5-million-block program stays within some 3 MB).
+  static constexpr std::size_t kMaxVertices = 60000;
   // Thinning tolerances beyond this let a segment span blocks (a page of
   // more blocks than points): the labels are then those of its end.
   static constexpr double kMaxBlockTolMm = 1.0;
 
   // The set point of the next cycle (t_s increasing).
   void add(const TimedPoint& p);
+  // The recording ended: the newest set point becomes the last vertex.
+  void close();
   // The vertices and the newest set point, thinned again until there are
   // at most max_points; error_mm: their bound against every cycle's
   // position, by_block: every segment lies in one block.
+  // `points` views the path's own vertices when they need no thinning and
+  // the path is closed (no copy of megabytes), else `thinned` (a move of
+  // Vertices keeps that buffer, so the view stays valid).
   struct Vertices {
-    std::vector<TimedPoint> points;
+    std::span<const TimedPoint> points;
+    std::vector<TimedPoint> thinned;
     double error_mm = 0;
     bool by_block = true;
   };
@@ -68,16 +75,16 @@ class TimedPath {
   };
 
  private:
-  void thin_in_place();
+  static double thin_until(std::vector<TimedPoint>& points, std::size_t max_points, double last_tol_mm,
+                           double& error_mm, bool& by_block);
 
-  std::vector<TimedPoint> points_;   // vertices; the last one anchors the current run
-  std::vector<TimedPoint> scratch_;  // thin_in_place's second buffer
+  std::vector<TimedPoint> points_;  // vertices; the last one anchors the current run
   TimedPoint tip_;                   // the newest set point, not yet a vertex
   bool has_tip_ = false;
   Fit fit_;
   std::array<double, 3> min_{}, max_{};
   double error_mm_ = kTolMm;  // the vertices' bound: kTolMm and the re-thinnings' tolerances, summed
-  double thin_tol_mm_ = 0;    // the tolerance of the last in-place thinning (0: none yet)
+  double thin_tol_mm_ = 0;    // the tolerance of the last thinning while recording (0: none yet)
   bool by_block_ = true;
 };
 

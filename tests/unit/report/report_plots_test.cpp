@@ -72,14 +72,15 @@ TEST(ReportPlots, FoldedOnTheirThreadAsOnTheRunsThread) {
   }
   plots.finish();  // folds the last, partial batch too
   plots.finish();  // and a second call does nothing
-  const std::vector<TimedPoint> want = path.vertices(TimedPath::kMaxVertices).points;
-  const std::vector<TimedPoint> got = plots.channel(0).path.vertices(TimedPath::kMaxVertices).points;
-  ASSERT_EQ(got.size(), want.size());
-  for (std::size_t i = 0; i < got.size(); ++i) {
-    EXPECT_EQ(got[i].pos, want[i].pos) << i;
-    EXPECT_EQ(got[i].line, want[i].line) << i;
-    EXPECT_EQ(got[i].rapid, want[i].rapid) << i;
-    EXPECT_EQ(got[i].t_s, want[i].t_s) << i;
+  path.close();
+  const TimedPath::Vertices want = path.vertices(TimedPath::kMaxVertices);
+  const TimedPath::Vertices got = plots.channel(0).path.vertices(TimedPath::kMaxVertices);
+  ASSERT_EQ(got.points.size(), want.points.size());
+  for (std::size_t i = 0; i < got.points.size(); ++i) {
+    EXPECT_EQ(got.points[i].pos, want.points[i].pos) << i;
+    EXPECT_EQ(got.points[i].line, want.points[i].line) << i;
+    EXPECT_EQ(got.points[i].rapid, want.points[i].rapid) << i;
+    EXPECT_EQ(got.points[i].t_s, want.points[i].t_s) << i;
   }
   EXPECT_GT(series.stride(), 1u);
   EXPECT_EQ(plots.series().json({}), series.json({}));

@@ -20,7 +20,7 @@ struct At {
   std::array<double, 3> pos;
   std::uint32_t line;
 };
-At cursor(const std::vector<TimedPoint>& v, double t) {
+At cursor(std::span<const TimedPoint> v, double t) {
   std::size_t j = 1;
   while (j < v.size() - 1 && v[j].t_s < t) ++j;
   const TimedPoint &a = v[j - 1], &b = v[j];
