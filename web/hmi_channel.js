@@ -43,20 +43,43 @@
       return el("header", { class: "channel-head" }, el("h2", {}, "Channel " + this.n), this.stateEl, this.whyEl, this.blockEl);
     }
 
-    // The DRO: machine and program coordinates per axis, path velocity and feed.
+    // The DRO: program and machine coordinates and the distance to go per
+    // axis (a face-turning axis as a diameter when the machine's
+    // display_diameter_pos and G51 say so), path velocity against the
+    // programmed feed, and the modal state.
     dro() {
       this.droCells = {};
       const rows = this.axes.map((a) => {
-        const mcs = el("td", { class: "num" }), pcs = el("td", { class: "num" });
-        this.droCells[a] = { mcs, pcs };
-        return el("tr", { "data-axis": a }, el("th", {}, a), pcs, mcs);
+        const name = el("th", {}, a), mcs = el("td", { class: "num" }), pcs = el("td", { class: "num" });
+        const dtg = el("td", { class: "num dtg" });
+        this.droCells[a] = { name, mcs, pcs, dtg };
+        return el("tr", { "data-axis": a }, name, pcs, mcs, dtg);
       });
-      this.velEl = el("td", { class: "num", colspan: 2 });
-      this.feedEl = el("td", { class: "num", colspan: 2 });
+      this.velEl = el("td", { class: "num", colspan: 3 });
+      this.modalEl = el("td", { class: "modal", colspan: 3 });
       return el("table", { class: "dro panel" },
-        el("tr", {}, el("th", {}), el("th", { class: "num" }, "PCS mm"), el("th", { class: "num" }, "MCS mm")), ...rows,
-        el("tr", { class: "small" }, el("th", {}, "path v"), this.velEl),
-        el("tr", { class: "small" }, el("th", {}, "feed"), this.feedEl));
+        el("tr", {}, el("th", {}), el("th", { class: "num" }, "PCS"), el("th", { class: "num" }, "MCS"),
+          el("th", { class: "num" }, "to go")), ...rows,
+        el("tr", { class: "small" }, el("th", { title: "path velocity / programmed feed" }, "F act/prog"), this.velEl),
+        el("tr", { class: "small" }, el("th", {}, "modal"), this.modalEl));
+    }
+
+    // One DRO row: a face-turning axis in diameter display shows ⌀ and twice its radius.
+    droRow(a, c) {
+      const cells = this.droCells[a], axis = (c.axes || {})[a] || {};
+      const diameter = c.diameter_display && axis.pcs_diameter != null;
+      cells.name.textContent = diameter ? "\u2300" + a : a;
+      cells.name.title = diameter ? "diameter (G51, display_diameter_pos)" : "";
+      cells.pcs.textContent = fixed(diameter ? axis.pcs_diameter : c.pcs[a], 3);
+      cells.mcs.textContent = fixed(c.mcs[a], 3);
+      cells.dtg.textContent = fixed(diameter ? 2 * c.dtg[a] : c.dtg[a], 3);
+    }
+
+    // G codes in force, then D (the tool offset).
+    modalText(m) {
+      if (!m) return "";
+      return [m.motion, m.plane, m.distance, m.units, m.zero_offset, m.radius_comp, m.feed_mode, m.speed_mode,
+              m.diameter, m.exact_stop, "D" + m.D].filter((x) => x != null).join(" ");
     }
 
     // Program picker: a program of /api/v1/programs, loaded into this channel; or an upload.
@@ -144,12 +167,9 @@
       this.whyEl.textContent = c.wait ? "waits for " + (WAITS[c.wait] || c.wait) : c.cause && c.state !== "idle" ? c.cause : "";
       const b = c.block;
       this.blockEl.textContent = b.line ? `${String(b.file).split("/").pop()}:${b.line}${b.n != null ? " N" + b.n : ""}` : "";
-      for (const a of this.axes) {
-        this.droCells[a].mcs.textContent = fixed(c.mcs[a], 3);
-        this.droCells[a].pcs.textContent = fixed(c.pcs[a], 3);
-      }
-      this.velEl.textContent = fixed(c.path_velocity_mm_s * 60, 0) + " mm/min";
-      this.feedEl.textContent = fixed(c.feed_mm_s * 60, 0) + " mm/min";
+      for (const a of this.axes) this.droRow(a, c);
+      this.velEl.textContent = `${fixed(c.path_velocity_mm_s * 60, 0)} / ${fixed(c.feed_mm_s * 60, 0)} mm/min`;
+      this.modalEl.textContent = this.modalText(c.modal);
       for (const p of this.controls) p.update(c, state);
       this.followProgram(state);
       if (this.run !== state.run) { this.run = state.run; this.plot.clear(); }

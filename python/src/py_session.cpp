@@ -420,7 +420,9 @@ pyb::object Session::state() const {
   for (std::size_t c = 0; c < run.kernel().channel_count() && c < places.size(); ++c) {
     const sim::ChannelSnapshot cs = run.snapshot(c);
     places[c].pcs = cs.axis_pcs;
-    places[c].modal = cs.modal;
+    // the modal state of the block in execution (as nck serve's), else the decoder's
+    const std::optional<nc::ModalState>& running = sim_->outputs().blocks[c].modal;
+    places[c].modal = running ? *running : cs.modal;
   }
   nlohmann::ordered_json doc = app::state_json(*snap, sim_->machine(), run, places, &sim_->outputs().last_errors);
   const nlohmann::ordered_json before = nlohmann::ordered_json::parse(

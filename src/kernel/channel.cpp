@@ -94,6 +94,8 @@ void Channel::write_output(ChannelOutput& out, const ChannelContext& ctx) const 
   const Motion* m = active_ ? current_.as<Motion>() : nullptr;
   out.feed_mm_s = m ? spindle_path_.commanded_feed_mm_s(m->v_cmd_mm_s, ctx) : 0.0;
   out.distance_to_go_mm = m ? std::max(0.0, path_.segment().length() - path_.s_mm()) : 0.0;
+  const motion::AxisVector& end = m ? path_.segment().end_point() : pos;
+  for (std::size_t j = 0; j < n_axes_; ++j) out.axis_dtg[j] = end[j] - pos[j];
   out.wait_reason = wait_reason_;
 }
 

@@ -15,6 +15,7 @@ void fill_snapshot(const sim::DryRun& run, const kernel::TickOutput& out, LiveSn
     c.path_velocity_mm_s = o.path_velocity_mm_s;
     c.feed_mm_s = o.feed_mm_s;
     c.distance_to_go_mm = o.distance_to_go_mm;
+    c.axis_dtg = o.axis_dtg;
     c.program_state = k.program_state(ch);
     c.cause = o.cause;
     c.wait_reason = o.wait_reason;

@@ -177,7 +177,9 @@ std::expected<std::unique_ptr<Simulation>, Diagnostics> Simulation::create(confi
   s->machine_ = std::make_unique<config::Machine>(std::move(m));
   sim::DryRunOptions options;
   options.clamp_index = opt.clamp_index;
-  options.record_frames = !opt.report.empty();
+  options.record_frames = !opt.report.empty() || opt.operator_present;
+  // a session's state gives the modal state of the block in execution (RunOutputs::blocks)
+  options.record_modal = opt.operator_present;
   options.prep_thread = opt.prep_thread;
   options.stop = s->stop_;
   if (*search) {
@@ -229,6 +231,7 @@ void Simulation::record_events(const kernel::TickOutput& o) {
   for (const kernel::Event& e : o.events) {
     out_.summary.take(e);
     out_.last_errors.take(e, names_);
+    note_block(out_.blocks, e, *run_);
     if (out_.wants_events()) {
       if (e.kind() == kernel::EventKind::block) out_.event_line(e, block_text_.line(e, names_), names_);
       else out_.event(e, names_);

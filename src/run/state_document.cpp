@@ -27,13 +27,22 @@ motion::AxisVector to_pcs(const kernel::AffineMap& f, const motion::AxisVector& 
   return pcs;
 }
 
-json channel_json(const LiveChannel& c, const config::ChannelConfig& cfg, const sim::DryRun& run, std::size_t ch,
+bool face_turning(const config::Machine& m, const config::ChannelAxis& a) {
+  return a.axis_index >= 0 && m.axes[static_cast<std::size_t>(a.axis_index)].is_face_turning();
+}
+
+json channel_json(const LiveChannel& c, const config::Machine& m, const sim::DryRun& run, std::size_t ch,
                   const ChannelPlace& place, const LastErrors* errors) {
-  json mcs = json::object(), pcs = json::object(), axes = json::object();
+  const config::ChannelConfig& cfg = m.channels[ch];
+  json mcs = json::object(), pcs = json::object(), dtg = json::object(), axes = json::object();
   for (std::size_t j = 0; j < cfg.axes.size() && j < place.pcs.size(); ++j) {
-    mcs[cfg.axes[j].name] = c.axis_mcs[j];
-    pcs[cfg.axes[j].name] = place.pcs[j];
-    axes[cfg.axes[j].name] = {{"mcs", c.axis_mcs[j]}, {"pcs", place.pcs[j]}};
+    const std::string& name = cfg.axes[j].name;
+    mcs[name] = c.axis_mcs[j];
+    pcs[name] = place.pcs[j];
+    dtg[name] = c.axis_dtg[j];
+    axes[name] = {{"mcs", c.axis_mcs[j]}, {"pcs", place.pcs[j]}, {"dtg", c.axis_dtg[j]}};
+    // a face-turning axis also as the diameter G51 programs (as --final writes it)
+    if (face_turning(m, cfg.axes[j])) axes[name]["pcs_diameter"] = 2 * place.pcs[j];
   }
   const RunNames names{&run};
   json block = {{"file", names.file(ch, c.at.file_id)}, {"line", c.at.line}, {"n", c.at.n ? json(*c.at.n) : json()}};
@@ -43,6 +52,7 @@ json channel_json(const LiveChannel& c, const config::ChannelConfig& cfg, const 
             {"program_state", state},  // the Python session's name for it (both stay)
             {"mcs", std::move(mcs)},
             {"pcs", std::move(pcs)},
+            {"dtg", std::move(dtg)},
             {"axes", std::move(axes)},  // per axis: the Python session's layout
             {"path_velocity_mm_s", c.path_velocity_mm_s},
             {"feed_mm_s", c.feed_mm_s},
@@ -59,6 +69,9 @@ json channel_json(const LiveChannel& c, const config::ChannelConfig& cfg, const 
             {"skip_mask", c.hli.skip_mask}};
   j["wait"] = c.cause == kernel::CycleCause::wait ? json(wait_reason_name(c.wait_reason)) : json();
   j["modal"] = place.modal ? json(modal_json(*place.modal)) : json();
+  if (place.modal) j["modal"]["D"] = place.modal->d;
+  // P-CHAN-00256: under G51 a display shows the face-turning axis's PCS position as a diameter
+  j["diameter_display"] = cfg.display_diameter_pos && place.modal && place.modal->diameter;
   j["last_error"] = errors ? errors->channel(ch + 1) : json();
   return j;
 }
@@ -82,7 +95,7 @@ nlohmann::ordered_json state_json(const LiveSnapshot& s, const config::Machine& 
                                   std::span<const ChannelPlace> places, const LastErrors* errors) {
   json channels = json::array();
   for (std::size_t ch = 0; ch < s.channel_count && ch < m.channels.size() && ch < places.size(); ++ch)
-    channels.push_back(channel_json(s.channels[ch], m.channels[ch], run, ch, places[ch], errors));
+    channels.push_back(channel_json(s.channels[ch], m, run, ch, places[ch], errors));
   json spindles = json::array();
   for (std::size_t i = 0; i < s.spindle_count; ++i) spindles.push_back(spindle_json(s, i, run));
   return {{"t_s", s.t_s},
@@ -100,6 +113,16 @@ nlohmann::ordered_json state_json(const LiveSnapshot& s, const config::Machine& 
           {"events_lost", s.events_lost},
           // the newest error of any channel (or of none: a spindle's), until a reset
           {"last_error", errors ? errors->latest() : json()}};
+}
+
+void note_block(ChannelFrames& frames, const kernel::Event& e, const sim::DryRun& run) {
+  const auto* block = e.get<kernel::ev::Block>();
+  if (!block || !block->frame_index || e.channel < 1 || static_cast<std::size_t>(e.channel) > frames.size()) return;
+  const kernel::AffineMap* f = run.frame(*block->frame_index);
+  if (!f) return;
+  BlockContext& b = frames[e.channel - 1u];
+  b.frame = *f;
+  if (const nc::ModalState* m = run.modal(*block->frame_index)) b.modal = *m;
 }
 
 nlohmann::ordered_json snapshot_json(const LiveSnapshot& s, const config::Machine& m, const sim::DryRun& run,

@@ -312,12 +312,7 @@ void ServeApi::drain_events(std::vector<std::string>& frames) {
     if (le.generation > generation_) advance();  // every event of the old run came before
     const kernel::Event& e = le.event;
     last_errors_.take(e, RunNames{serving_});
-    if (const auto* block = e.get<kernel::ev::Block>(); block && block->frame_index && e.channel >= 1)
-      if (const kernel::AffineMap* f = serving_->frame(*block->frame_index)) {
-        BlockContext& b = frames_[e.channel - 1u];
-        b.frame = *f;
-        if (const nc::ModalState* m = serving_->modal(*block->frame_index)) b.modal = *m;
-      }
+    note_block(frames_, e, *serving_);
     batch += batch.empty() ? "[" : ",";
     batch += EventWriter::line(e, RunNames{serving_});
   }

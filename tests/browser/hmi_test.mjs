@@ -84,8 +84,47 @@ async function checkStart(h) {
   lines.add(await h.currentLine());
   const after = { x: await h.dro("X"), z: await h.dro("Z") };
   expect(after.x !== before.x && after.z !== before.z, `cycle start: the DRO moves (X ${before.x} → ${after.x}, Z ${before.z} → ${after.z})`);
+  await checkDroDetails(h);
   const seen = [...lines].filter(Boolean).map(Number);
   expect(seen.length >= 2 && seen[seen.length - 1] > seen[0], `the current line advances: ${seen.join(" → ")}`);
+}
+
+// Issue 48 item 7: distance to go per axis and the modal state in the DRO.
+// N80 (line 21) is a G1 in X only: X has some way to go, Y and Z none.
+async function checkDroDetails(h) {
+  const dtg = (a) => h.ch.locator(`.dro tr[data-axis="${a}"] td.dtg`).textContent();
+  const x = Number(await dtg("X")), y = Number(await dtg("Y")), z = Number(await dtg("Z"));
+  const modal = await h.ch.locator(".dro td.modal").textContent();
+  expect(x !== 0 && Math.abs(x) < 100 && y === 0 && z === 0, `DRO: distance to go X ${x}, Y ${y}, Z ${z} in the G1 along X`);
+  expect(/^G1 G17 G90 G71 G5\d .*G40 G94 .*D\d+$/.test(modal), `DRO: the modal state "${modal}"`);
+}
+
+// A lathe whose channel list sets display_diameter_pos: under G51 the X row
+// reads ⌀X and twice the radius the state gives (issue 48 item 7).
+async function checkLatheDiameter(browser) {
+  const server = startServer(path.resolve(args.nck), src, ["examples/lathe", "examples/lathe/diameter.nc", "--speed", "4"], 60);
+  try {
+    const url = await server.url;
+    const page = await browser.newPage({ viewport: { width: 1560, height: 1000 } });
+    await page.goto(url);
+    await page.waitForFunction(() => window.nckHmi && window.nckHmi.ready, null, { timeout: 10000 });
+    const ch = page.locator('section.channel[data-channel="1"]');
+    await ch.getByRole("button", { name: "Cycle start", exact: true }).click();
+    // N70 turns at ⌀20 and N90 at ⌀40 (X stands while Z moves): the DRO reads that diameter
+    const seen = await page.waitForFunction(() => {
+      const r = document.querySelector('.dro tr[data-axis="X"]');
+      const text = r.querySelector("th").textContent + " " + r.querySelector("td").textContent;
+      return /^\u2300X (20|40)\.000$/.test(text) && text;
+    }, null, { timeout: 20000 }).then((v) => v.jsonValue()).catch(() => null);
+    const token = new URL(url).searchParams.get("token");
+    const state = await (await fetch(new URL("/api/v1/state", url), { headers: { Authorization: `Bearer ${token}` } })).json();
+    const x = state.channels[0].axes.X;
+    expect(seen && Math.abs(x.pcs_diameter - 2 * x.pcs) < 1e-9,
+      `lathe under G51: the DRO shows ${seen} (the state: pcs ${x.pcs}, pcs_diameter ${x.pcs_diameter})`);
+    await page.close();
+  } finally {
+    await server.stop();
+  }
 }
 
 async function checkOverride(h) {
@@ -300,6 +339,7 @@ try {
   const url = await server.url;
   await run(browser, url, new URL(url).port);
   await checkTwoChannels(browser);
+  await checkLatheDiameter(browser);
 } catch (e) {
   fail(e.stack || String(e));
 } finally {

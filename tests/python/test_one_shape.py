@@ -138,3 +138,32 @@ def test_action_errors_carry_their_own_id_and_no_placeholder_place(mill, call, w
 def test_the_catalogue_is_one_shape_too(mill):
     first = nck.errors()[0]
     assert list(first)[:5] == ["id", "severity", "name", "cause", "remedy"] and first["text"] == first["cause"]
+
+
+def test_the_state_gives_each_axis_its_distance_to_go(mill, program):
+    # issue 47 item 5 / issue 48 item 7: per axis the motion's end minus the set point
+    s = mill.session(program("G90 G1 X10 Y5 F600\nM30\n"))
+    assert s.run_until(time_s=0.5)
+    ch = s.state()["channels"][0]
+    dtg = ch["dtg"]
+    assert 0 < dtg["X"] < 12 and dtg["X"] == pytest.approx(2 * dtg["Y"], rel=1e-9) and dtg["Z"] == 0
+    assert (dtg["X"] ** 2 + dtg["Y"] ** 2) ** 0.5 == pytest.approx(ch["distance_to_go_mm"], rel=1e-9)
+    assert all(ch["axes"][a]["dtg"] == dtg[a] for a in dtg)
+    assert s.run_until(event="end")
+    assert all(v == 0 for v in s.state()["channels"][0]["dtg"].values())
+
+
+def test_a_lathe_shows_x_as_a_diameter_under_g51(program):
+    # P-CHAN-00256 display_diameter_pos 1 in examples/lathe: under G51 the
+    # face axis reads as a diameter (pcs_diameter), under G52 as a radius
+    lathe = nck.Machine(str(EXAMPLES / "lathe"))
+    s = lathe.session(program("G90 G52 G0 X20 Z5\nM0\nG51 G0 X30\nM0\nM30\n"))
+    assert s.run_until(event="stop")
+    ch = s.state()["channels"][0]
+    assert ch["diameter_display"] is False and ch["modal"]["diameter"] == "G52"
+    s.cycle_start()
+    assert s.run_until(event="stop")
+    ch = s.state()["channels"][0]
+    assert ch["diameter_display"] is True and ch["modal"]["diameter"] == "G51"
+    assert ch["axes"]["X"]["pcs"] == pytest.approx(15) and ch["axes"]["X"]["pcs_diameter"] == pytest.approx(30)
+    assert "pcs_diameter" not in ch["axes"]["Z"]

@@ -138,6 +138,7 @@ struct ChannelOutput {
   AxisArray axis_mcs{};  // set points, mm / deg
   double path_velocity_mm_s = 0;
   double distance_to_go_mm = 0;  // the rest of the motion that runs (0 without one)
+  AxisArray axis_dtg{};  // per axis: the motion's end minus the set point, mm / deg (0 without one)
   double dist_offset_mm = 0;  // 3D distance control's offset on the tool axis (0 while inactive)
   double dist_sensor_mm = 0;  // the last valid sensor value it took
   double dist_error_mm = 0;   // wanted minus measured (filtered) gap

@@ -25,6 +25,7 @@ struct LiveChannel {
   double path_velocity_mm_s = 0;
   double feed_mm_s = 0;  // the motion's programmed velocity
   double distance_to_go_mm = 0;
+  AxisArray axis_dtg{};  // per axis: the motion's end minus the set point
   kernel::ProgramState program_state = kernel::ProgramState::idle;
   kernel::CycleCause cause = kernel::CycleCause::none;
   kernel::WaitReason wait_reason = kernel::WaitReason::plc_ack;

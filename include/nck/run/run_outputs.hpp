@@ -10,6 +10,7 @@
 #include "nck/report/report_writer.hpp"
 #include "nck/run/console.hpp"
 #include "nck/run/event_memory.hpp"
+#include "nck/run/state_document.hpp"
 #include "nck/run/run_options.hpp"
 #include "nck/run/run_summary.hpp"
 #include "nck/run/trace_memory.hpp"
@@ -28,6 +29,7 @@ struct RunOutputs {
   std::vector<FinalError> errors;
   std::vector<FinalError> warnings;  // every warning of the run said on stderr (the module's Run.warnings)
   LastErrors last_errors;            // each channel's last error until its reset (a session's state)
+  ChannelFrames blocks;              // each channel's block in execution: map and modal state (a session's state)
   RunSummary summary;
   TimeByCause causes;  // every cycle's class, summed (--final, the report, stderr)
   Console console;     // stderr

@@ -24,6 +24,10 @@ struct BlockContext {
 };
 using ChannelFrames = std::array<BlockContext, config::kMaxChannels>;
 
+// Takes a block event's map and modal state into its channel's context
+// (other events leave them).
+void note_block(ChannelFrames& frames, const kernel::Event& e, const sim::DryRun& run);
+
 // Per channel, where it stands in program coordinates and its modal state.
 struct ChannelPlace {
   motion::AxisVector pcs{};
