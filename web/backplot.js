@@ -7,7 +7,8 @@
 // contour is drawn thin beside the tool-centre path.
 // Live use (nck serve's HMI): `append` grows the path point by point (with
 // its program coordinates, ch.px/py/pz, where no frames are known) and
-// `setTool` marks where the tool stands now; `opts.width/height` size it.
+// `setTool` marks where the tool stands now, `setPreview` draws the loaded
+// program's path before it runs; `opts.width/height` size it.
 (function () {
   "use strict";
   const VIEWS = {
@@ -167,7 +168,11 @@
         const s = this.segmentStart(i);
         if (s) this.jumps.set(i, s);
       }
-      if (!this.n) { lo = [0, 0]; hi = [1, 1]; }
+      this.pv = this.previewUV();
+      for (const q of this.pv) {  // the program's preview is in view before it runs
+        for (let k = 0; k < 2; k++) { lo[k] = Math.min(lo[k], q[k]); hi[k] = Math.max(hi[k], q[k]); }
+      }
+      if (lo[0] > hi[0]) { lo = [0, 0]; hi = [1, 1]; }
       const least = this.minSpan || 1e-3;
       const span = [Math.max(hi[0] - lo[0], least), Math.max(hi[1] - lo[1], least)];
       const m = 40;
@@ -215,6 +220,7 @@
       ctx.clearRect(0, 0, this.w, this.h);
       ctx.fillStyle = "#fff"; ctx.fillRect(0, 0, this.w, this.h);
       this.drawGrid(ctx);
+      this.drawPreview(ctx);
       ctx.lineWidth = 1.4; ctx.lineJoin = "round";
       const batch = Math.max(1, Math.ceil(n / 200));  // colour changes along the program in ~200 steps
       let i = 1;
@@ -323,6 +329,35 @@
       if (this.pending) return;
       this.pending = true;
       requestAnimationFrame(() => { this.pending = false; this.draw(); });
+    }
+
+    // nck serve's HMI: the loaded program's path before it runs (GET
+    // /api/v1/preview: x/y/z machine, px/py/pz program coordinates), under
+    // the live path, light grey, G0 dashed.
+    setPreview(p) {
+      this.preview = p && p.points ? p : null;
+      if (this.moved) this.pv = this.previewUV(); else this.fit();
+      this.redrawSoon();
+    }
+    previewUV() {
+      const p = this.preview, out = [];
+      if (!p) return out;
+      const [x, y, z] = this.pcs() ? [p.px, p.py, p.pz] : [p.x, p.y, p.z];
+      for (let k = 0; k < x.length; k++) out.push(this.projectPoint([x[k], y[k], z[k]]));
+      return out;
+    }
+    // One stroke per run of G0 or feed points (a preview has up to 100,000).
+    drawPreview(ctx) {
+      const uv = this.pv || [], rapid = this.preview ? this.preview.rapid : [];
+      ctx.lineWidth = 1; ctx.strokeStyle = "#a8b0bd";
+      for (let k = 1; k < uv.length;) {
+        const g0 = rapid[k] === 1;
+        ctx.setLineDash(g0 ? [4, 4] : []);
+        ctx.beginPath(); ctx.moveTo(...this.toScreen(...uv[k - 1]));
+        for (; k < uv.length && (rapid[k] === 1) === g0; k++) ctx.lineTo(...this.toScreen(...uv[k]));
+        ctx.stroke();
+      }
+      ctx.setLineDash([]);
     }
 
     // nck diff --run --report: the other run's path (machine coordinates), grey and dashed.

@@ -187,6 +187,7 @@
         const p = await api.get("/api/v1/program?channel=" + this.n);
         this.program.show(p);
         this.plot.data.files[0] = p.path;
+        this.plot.setPreview(await api.get("/api/v1/preview?channel=" + this.n));
       } catch (e) { this.report(e, `channel ${this.n}: program text`); }
     }
   }

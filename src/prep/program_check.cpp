@@ -20,6 +20,7 @@
 #include "nck/prep/decoder_setup.hpp"
 #include "nck/prep/error_command.hpp"
 #include "nck/prep/lookahead_window.hpp"
+#include "nck/prep/path_preview.hpp"
 #include "nck/prep/planner.hpp"
 #include "nck/prep/radius_comp.hpp"
 #include "spindle_limit_check.hpp"
@@ -44,7 +45,8 @@ class ChannelCheck {
         trc_(m, ch),
         spindle_limits_(m, ch, kernel_spindles(m, ch)),
         queue_(std::make_unique<kernel::CommandQueue>()),
-        decoder_(program, lint_config(m, ch, o)) {
+        decoder_(program, lint_config(m, ch, o)),
+        preview_(o.preview) {
     window_.set_blend_axes(planner_.blend_axes());
     decoder_.set_kernel_state_reader(&planner_);
     for (const auto& [name, value] : initial_variables(m, ch, o.clamp_index)) (void)decoder_.set_variable(name, value);
@@ -76,6 +78,7 @@ class ChannelCheck {
   std::size_t decoder_seen_ = 0;
   std::uint32_t last_main_line_ = 0;  // of the main program's last block decoded
   ProgramCheckResult result_;
+  PathPreview* preview_;  // null: a lint only
 };
 
 ProgramCheckResult ChannelCheck::run() {
@@ -100,7 +103,7 @@ ProgramCheckResult ChannelCheck::run() {
     if (r.block.depth == 0) last_main_line_ = r.block.line;
     prepare(r.block);
     if (ChannelPrep::needs_feedback(r.block)) take_feedback(assumed_feedback(r.block, planner_), planner_, decoder_);
-    if (r.block.program_end) break;
+    if (r.block.program_end || (preview_ && preview_->full())) break;
   }
   return std::move(result_);
 }
@@ -141,6 +144,9 @@ void ChannelCheck::record(const PlannedCommand& c) {
     add(Diagnostic{error->id, Severity::error, {file, c.head.line, 0}, message(error->message)});
     return;
   }
+  if (preview_ && c.kind == CommandKind::motion)
+    preview_->add(c.segment, c.head.file_id, c.head.line, planner_.modal().motion == nc::Motion::rapid,
+                  [&](const motion::AxisVector& mcs) { return planner_.frames().to_pcs(planner_.cartesian(mcs)); });
   spindle_found_.clear();
   spindle_limits_.check(c, spindle_found_);
   for (Diagnostic& d : spindle_found_) {

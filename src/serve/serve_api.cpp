@@ -16,6 +16,7 @@
 #include "nck/serve/access.hpp"
 #include "nck/serve/api_message.hpp"
 #include "nck/serve/mdi_check.hpp"
+#include "nck/serve/preview_page.hpp"
 #include "nck/serve/program_page.hpp"
 #include "nck/sim/operator_action.hpp"
 
@@ -90,7 +91,7 @@ sim::DryRunOptions served_run_options(const ProgramFolders& folders) {
 }
 
 ServeApi::ServeApi(const config::Machine& m, LiveKernel& kernel, ProgramFolders folders)
-    : machine_(m), kernel_(kernel), folders_(std::move(folders)), programs_(m.channels.size()),
+    : machine_(m), kernel_(kernel), folders_(std::move(folders)), programs_(m.channels.size()), previews_(m.channels.size()),
       serving_(kernel.current()) {
   seed_state();
 }
@@ -123,6 +124,7 @@ HttpReply ServeApi::handle(const HttpRequest& r) {
     if (path == "/api/v1/parameters") return ok_json(parameters_json());
     if (path == "/api/v1/programs") return ok_json(json{{"programs", folders_.list()}});
     if (path == "/api/v1/program") return program_text(r.target);
+    if (path == "/api/v1/preview") return preview(r.target);
     if (path == "/api/v1/openapi.json")  // docs/openapi.json, built in
       return HttpReply{200, "application/json", std::string(embedded_file("openapi.json")), {}};
     if (path == "/api/v1/version")
@@ -227,6 +229,7 @@ std::optional<Diagnostic> ServeApi::load(std::size_t ch, const std::string& prog
   if (!path) return path.error();
   const std::filesystem::path before = programs_[ch];
   programs_[ch] = *path;
+  previews_[ch].clear();
   auto run = make_run(std::nullopt, 0);
   if (!run) {
     programs_[ch] = before;
@@ -280,6 +283,17 @@ HttpReply ServeApi::program_text(std::string_view target) const {
                    program_page(ch, loaded, static_cast<std::size_t>(from), kMaxProgramPageBytes, *now), {}};
 }
 
+// The check plans the whole program once per load (a 100,000-point
+// preview in well under a second); later asks get the same answer.
+HttpReply ServeApi::preview(std::string_view target) {
+  const std::string_view ch_text = query_value(target, "channel");
+  std::size_t ch = ch_text.empty() ? 1 : static_cast<std::size_t>(std::atoi(std::string(ch_text).c_str()));
+  if (ch < 1 || ch > programs_.size()) return error_reply(400, ErrorId::ApiBadValue, "'channel' is no channel of the machine");
+  std::string& page = previews_[ch - 1];
+  if (page.empty()) page = preview_page(machine_, ch, programs_[ch - 1]);
+  return HttpReply{200, "application/json", page, {}};
+}
+
 HttpReply ServeApi::upload(std::string_view target, std::string_view body) {
   const std::string_view wanted = query_value(target, "name");
   // A running program opens its subroutines when it calls them, and a
@@ -290,6 +304,7 @@ HttpReply ServeApi::upload(std::string_view target, std::string_view body) {
                        fmt::format("channel {} runs a program: '{}' is not replaced meanwhile", *busy + 1, wanted));
   const auto name = folders_.save_upload(wanted, body);
   if (!name) return error_reply(name.error().id == ErrorId::ApiTooLarge ? 413 : 400, name.error());
+  for (std::string& p : previews_) p.clear();  // a loaded program (or one it calls) may be the file replaced
   return ok_json(json{{"ok", true}, {"program", *name}});
 }
 

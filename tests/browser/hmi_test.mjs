@@ -69,6 +69,19 @@ class Hmi {
   }
 }
 
+// Issue 48 item 6: before cycle start the backplot draws the loaded
+// program's whole path (contour.nc spans X -40..40, Y ±25.98, Z -3..22).
+async function checkPreview(h) {
+  const p = await h.page.waitForFunction(() => {
+    const v = window.nckHmi.panels[0].plot.preview;
+    return v && { n: v.points, x: [Math.min(...v.x), Math.max(...v.x)], y: [Math.min(...v.y), Math.max(...v.y)],
+                  z: [Math.min(...v.z), Math.max(...v.z)], drawn: window.nckHmi.panels[0].plot.pv.length };
+  }, null, { timeout: 5000 }).then((v) => v.jsonValue()).catch(() => null);
+  const near = (a, b) => Math.abs(a[0] - b[0]) < 1e-3 && Math.abs(a[1] - b[1]) < 1e-3;
+  expect(p && p.n > 100 && p.drawn === p.n && near(p.x, [-40, 40]) && near(p.y, [-25.9808, 25.9808]) && near(p.z, [-3, 22]),
+    `preview before cycle start: ${JSON.stringify(p)}`);
+}
+
 async function checkStart(h) {
   const m = await h.mark();
   const before = { x: await h.dro("X"), z: await h.dro("Z") };
@@ -315,6 +328,7 @@ async function run(browser, url, port) {
   expect(loadMs < 3000, `page load ${loadMs} ms < 3000 ms`);
   await page.evaluate(installRecorder);
   const h = new Hmi(page);
+  await checkPreview(h);
   await checkRate(h);
   await checkStart(h);
   await checkOverride(h);

@@ -20,7 +20,7 @@ const command = (s, obj, opts = {}) => commandTo(s, obj, withAgent(opts));
 
 async function authentication(s) {
   const endpoints = [["GET", "/api/v1/state"], ["GET", "/api/v1/machine"], ["GET", "/api/v1/errors"], ["GET", "/api/v1/parameters"],
-                     ["GET", "/api/v1/programs"], ["GET", "/api/v1/program?channel=1"], ["GET", "/api/v1/stream"],
+                     ["GET", "/api/v1/programs"], ["GET", "/api/v1/program?channel=1"], ["GET", "/api/v1/preview?channel=1"], ["GET", "/api/v1/stream"],
                      ["POST", "/api/v1/command"], ["POST", "/api/v1/upload?name=x.nc"], ["GET", "/api/v1/nothing"]];
   for (const [m, t] of endpoints) {
     const r = await request(s, m, t, { token: false, body: m === "POST" ? "{}" : undefined });
@@ -258,6 +258,28 @@ async function streamIds(s) {
         replayed[0].data === last.data, again.text.slice(0, 300));
 }
 
+// Issue 48 item 6: the loaded program's path before cycle start. An
+// uploaded square with a G0 approach and a half circle: its points in
+// machine and program coordinates, the G0 marked, each with its line.
+async function preview(s) {
+  const text = "G90 G0 X0 Y0 Z5\nG1 Z-1 F600\nG1 X20\nG3 X40 Y0 I10 J0\nG1 Y-20\nG0 Z5\nM30\n";
+  const up = await request(s, "POST", "/api/v1/upload?name=preview.nc", { body: text });
+  const load = await command(s, { command: "load", program: "preview.nc" });
+  check("upload and load a program for its preview", up.status === 200 && load.status === 200, `${up.body} ${load.body}`);
+  const r = await request(s, "GET", "/api/v1/preview?channel=1");
+  const p = JSON.parse(r.body || "{}");
+  const at = (x, y, z) => p.x.findIndex((_, k) => Math.abs(p.px[k] - x) + Math.abs(p.py[k] - y) + Math.abs(p.pz[k] - z) < 1e-3);
+  const arc = p.line ? p.line.map((l, k) => [l, k]).filter(([l]) => l === 4).map(([, k]) => k) : [];
+  const onCircle = arc.every((k) => Math.abs(Math.hypot(p.px[k] - 30, p.py[k]) - 10) < 1e-3);
+  check(`the preview: ${p.points} points of preview.nc, the arc as ${arc.length} chords on its circle`,
+        r.status === 200 && p.file === "preview.nc" && !p.cut && p.points === p.x.length &&
+        at(0, 0, 5) >= 0 && at(20, 0, -1) >= 0 && at(40, 0, -1) >= 0 && at(40, -20, 5) >= 0 &&
+        arc.length >= 36 && onCircle && p.rapid[at(40, -20, 5)] === 1 && p.rapid[at(20, 0, -1)] === 0 &&
+        p.line[at(20, 0, -1)] === 3, r.body.slice(0, 300));
+  const bad = await request(s, "GET", "/api/v1/preview?channel=9");
+  check("a preview of no channel -> 400", bad.status === 400, `${bad.status} ${bad.body}`);
+}
+
 async function main() {
   fs.mkdirSync(path.join(out, "programs"), { recursive: true });
   fs.mkdirSync(path.join(out, "outside"), { recursive: true });
@@ -268,6 +290,7 @@ async function main() {
     await authentication(s);
     await origins(s);
     await files(s);
+    await preview(s);
     await rate(s);
     freshAgent();
     await clients(s);

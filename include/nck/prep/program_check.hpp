@@ -28,11 +28,16 @@
 
 namespace nck::prep {
 
+class PathPreview;
+
 struct ProgramCheckOptions {
   std::uint32_t clamp_index = 0;  // clamp-offset group at program start (--clamp-index)
   // Set by the caller to stop the check within one block read (SIGINT,
   // SIGTERM, --max-wall). Not owned.
   const std::atomic<bool>* stop = nullptr;
+  // Set by the caller: every planned motion goes into it; the check ends
+  // when it is full (an operator's preview, not a lint). Not owned.
+  PathPreview* preview = nullptr;
 };
 
 struct ProgramCheckResult {

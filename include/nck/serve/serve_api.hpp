@@ -50,6 +50,7 @@ class ServeApi : public ApiHandler {
   HttpReply pass_on(const sim::ScenarioAction& a);
   HttpReply start_or_release(std::size_t ch, const sim::ScenarioAction& cycle_start);
   HttpReply program_text(std::string_view target) const;
+  HttpReply preview(std::string_view target);
   HttpReply upload(std::string_view target, std::string_view body);
   // A channel that runs a program (not idle, ended or failed), if any.
   std::optional<std::size_t> busy_channel() const;
@@ -62,6 +63,7 @@ class ServeApi : public ApiHandler {
   LiveKernel& kernel_;
   ProgramFolders folders_;
   std::vector<std::filesystem::path> programs_;  // per channel: the loaded program (empty: none)
+  std::vector<std::string> previews_;            // per channel: its preview's answer, once asked (empty: not yet)
   std::unique_ptr<sim::DryRun> staged_;          // loaded, waits for cycle start
   sim::DryRun* serving_ = nullptr;  // the run of generation_ (the kernel's, or the one it just gave back)
   std::uint64_t generation_ = 1;
