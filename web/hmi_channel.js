@@ -152,6 +152,7 @@
       const mcs = this.xyz(c.mcs), pcs = this.xyz(c.pcs), ch = this.plotCh, k = ch.x.length - 1;
       this.plot.setTool(mcs, pcs);
       const rapid = c.cause === "rapid";
+      if (this.restoring) return;
       if (k >= 0 && Math.abs(ch.x[k] - mcs[0]) + Math.abs(ch.y[k] - mcs[1]) + Math.abs(ch.z[k] - mcs[2]) < 1e-3) return;
       this.plot.append(mcs, pcs, rapid, 0, c.block.file === this.program.path ? c.block.line : 0);
     }
@@ -172,9 +173,22 @@
       this.modalEl.textContent = this.modalText(c.modal);
       for (const p of this.controls) p.update(c, state);
       this.followProgram(state);
-      if (this.run !== state.run) { this.run = state.run; this.plot.clear(); }
+      if (this.run !== state.run) { this.run = state.run; this.plot.clear(); this.restorePath(state.run); }
       this.track(c);
       this.program.highlight(b.file, b.line);
+    }
+
+    // A page loaded during a run draws what ran before it: the server keeps
+    // the path (GET /api/v1/path); the live points wait until it is drawn.
+    async restorePath(run) {
+      this.restoring = true;
+      try {
+        const p = await api.get("/api/v1/path?channel=" + this.n);
+        if (p.run === run && this.run === run)
+          for (let k = 0; k < p.points; k++)
+            this.plot.append([p.x[k], p.y[k], p.z[k]], [p.px[k], p.py[k], p.pz[k]], p.rapid[k] === 1, 0, p.line[k]);
+      } catch (e) { this.report(e, `channel ${this.n}: the path so far`); }
+      this.restoring = false;
     }
 
     // The program text follows the loaded program (fetched when it changes).

@@ -125,8 +125,8 @@ void note_block(ChannelFrames& frames, const kernel::Event& e, const sim::DryRun
   if (const nc::ModalState* m = run.modal(*block->frame_index)) b.modal = *m;
 }
 
-nlohmann::ordered_json snapshot_json(const LiveSnapshot& s, const config::Machine& m, const sim::DryRun& run,
-                                     const ChannelFrames& frames, const LastErrors* errors) {
+std::array<ChannelPlace, config::kMaxChannels> channel_places(const LiveSnapshot& s, const config::Machine& m,
+                                                             const ChannelFrames& frames) {
   std::array<ChannelPlace, config::kMaxChannels> places{};
   for (std::size_t ch = 0; ch < s.channel_count && ch < m.channels.size() && ch < places.size(); ++ch) {
     const std::size_t n = m.channels[ch].axes.size();
@@ -135,7 +135,12 @@ nlohmann::ordered_json snapshot_json(const LiveSnapshot& s, const config::Machin
     places[ch].pcs = to_pcs(frames[ch].frame, set, std::min(n, set.size()));
     places[ch].modal = frames[ch].modal;
   }
-  return state_json(s, m, run, places, errors);
+  return places;
+}
+
+nlohmann::ordered_json snapshot_json(const LiveSnapshot& s, const config::Machine& m, const sim::DryRun& run,
+                                     const ChannelFrames& frames, const LastErrors* errors) {
+  return state_json(s, m, run, channel_places(s, m, frames), errors);
 }
 
 }  // namespace nck::app

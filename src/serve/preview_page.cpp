@@ -6,18 +6,10 @@
 #include "nck/prep/path_preview.hpp"
 #include "nck/prep/program_check.hpp"
 #include "nck/report/report_series.hpp"
+#include "nck/serve/live_path.hpp"
 
 namespace nck::app::serve {
 namespace {
-
-// The channel's axis index of X, Y and Z (the backplot's axes), -1 without.
-std::array<int, 3> xyz_axes(const config::ChannelConfig& ch) {
-  std::array<int, 3> axes{-1, -1, -1};
-  for (std::size_t j = 0; j < ch.axes.size(); ++j)
-    for (std::size_t k = 0; k < 3; ++k)
-      if (ch.axes[j].name == std::string(1, "XYZ"[k])) axes[k] = static_cast<int>(j);
-  return axes;
-}
 
 template <class F>
 std::string array_of(const std::vector<prep::PreviewPoint>& points, F&& item) {
@@ -33,7 +25,7 @@ std::string array_of(const std::vector<prep::PreviewPoint>& points, F&& item) {
 }  // namespace
 
 std::string preview_page(const config::Machine& m, std::size_t channel, const std::filesystem::path& path) {
-  prep::PathPreview preview(xyz_axes(m.channels[channel - 1]));
+  prep::PathPreview preview(hmi_axes(m.channels[channel - 1]));
   if (!path.empty()) (void)prep::check_program(m, channel - 1, path, {.preview = &preview});
   const std::vector<prep::PreviewPoint>& pts = preview.points();
   std::string s = fmt::format(R"({{"channel":{},"file":{},"points":{},"cut":{})", channel,

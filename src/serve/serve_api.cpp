@@ -15,6 +15,7 @@
 #include "nck/run/start_at.hpp"
 #include "nck/serve/access.hpp"
 #include "nck/serve/api_message.hpp"
+#include "nck/serve/live_path.hpp"
 #include "nck/serve/mdi_check.hpp"
 #include "nck/serve/preview_page.hpp"
 #include "nck/serve/program_page.hpp"
@@ -125,6 +126,7 @@ HttpReply ServeApi::handle(const HttpRequest& r) {
     if (path == "/api/v1/programs") return ok_json(json{{"programs", folders_.list()}});
     if (path == "/api/v1/program") return program_text(r.target);
     if (path == "/api/v1/preview") return preview(r.target);
+    if (path == "/api/v1/path") return path_so_far(r.target);
     if (path == "/api/v1/openapi.json")  // docs/openapi.json, built in
       return HttpReply{200, "application/json", std::string(embedded_file("openapi.json")), {}};
     if (path == "/api/v1/version")
@@ -294,6 +296,13 @@ HttpReply ServeApi::preview(std::string_view target) {
   return HttpReply{200, "application/json", page, {}};
 }
 
+HttpReply ServeApi::path_so_far(std::string_view target) const {
+  const std::string_view ch_text = query_value(target, "channel");
+  std::size_t ch = ch_text.empty() ? 1 : static_cast<std::size_t>(std::atoi(std::string(ch_text).c_str()));
+  if (ch < 1 || ch > programs_.size()) return error_reply(400, ErrorId::ApiBadValue, "'channel' is no channel of the machine");
+  return HttpReply{200, "application/json", path_.json(ch, generation_), {}};
+}
+
 HttpReply ServeApi::upload(std::string_view target, std::string_view body) {
   const std::string_view wanted = query_value(target, "name");
   // A running program opens its subroutines when it calls them, and a
@@ -317,6 +326,7 @@ void ServeApi::advance() {
   ++generation_;
   frames_ = ChannelFrames{};
   last_errors_ = LastErrors{};  // a new run starts without an error
+  path_.clear();
 }
 
 void ServeApi::drain_events(std::vector<std::string>& frames) {
@@ -342,6 +352,7 @@ void ServeApi::collect(std::vector<std::string>& frames) {
     if (kernel_.snapshot().generation > generation_) advance();
   }
   last_ = kernel_.snapshot();
+  path_.take(last_, machine_, channel_places(last_, machine_, frames_));
   frames.push_back(replay_.number(fmt::format("event: state\ndata: {}\n\n", state_frame()), false));
 }
 

@@ -278,6 +278,24 @@ async function checkBackplot(h) {
     `live backplot: ${plot.n} points (${plot.rapid} of them G0), tool marker ${plot.tool}`);
 }
 
+// Issue 48 item 6: a page reloaded during the run draws the path that ran
+// before it (the server keeps it), then goes on live.
+async function checkReload(h) {
+  const before = await h.page.evaluate(() => {
+    const b = window.nckHmi.panels[0].plot;
+    return { n: b.n, x: [Math.min(...b.ch.x), Math.max(...b.ch.x)], run: window.nckHmi.panels[0].run };
+  });
+  await h.page.reload({ waitUntil: "load" });
+  await h.page.waitForFunction(() => window.nckHmi && window.nckHmi.ready, null, { timeout: 10000 });
+  const after = await h.page.waitForFunction((n) => {
+    const p = window.nckHmi.panels[0];
+    return !p.restoring && p.plot.n >= 0.8 * n && { n: p.plot.n, x: [Math.min(...p.plot.ch.x), Math.max(...p.plot.ch.x)], run: p.run };
+  }, before.n, { timeout: 5000 }).then((v) => v.jsonValue()).catch(() => null);
+  await h.page.evaluate(installRecorder);
+  expect(after && after.run === before.run && after.x[0] <= before.x[0] + 1e-3 && after.x[1] >= before.x[1] - 1e-3,
+    `reload during the run: the path so far is drawn again (${before.n} points before, ${JSON.stringify(after)})`);
+}
+
 // A machine of two channels: one column each, with its own axes.
 async function checkTwoChannels(browser) {
   const server = startServer(path.resolve(args.nck), src, ["examples/two-channel"], 30);
@@ -334,6 +352,7 @@ async function run(browser, url, port) {
   await checkOverride(h);
   await checkFeedhold(h);
   await checkBackplot(h);
+  await checkReload(h);
   await checkSingleStep(h);
   await checkBlockSearch(h);
   await checkSpeedToEnd(h);

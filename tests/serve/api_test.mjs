@@ -20,7 +20,7 @@ const command = (s, obj, opts = {}) => commandTo(s, obj, withAgent(opts));
 
 async function authentication(s) {
   const endpoints = [["GET", "/api/v1/state"], ["GET", "/api/v1/machine"], ["GET", "/api/v1/errors"], ["GET", "/api/v1/parameters"],
-                     ["GET", "/api/v1/programs"], ["GET", "/api/v1/program?channel=1"], ["GET", "/api/v1/preview?channel=1"], ["GET", "/api/v1/stream"],
+                     ["GET", "/api/v1/programs"], ["GET", "/api/v1/program?channel=1"], ["GET", "/api/v1/preview?channel=1"], ["GET", "/api/v1/path?channel=1"], ["GET", "/api/v1/stream"],
                      ["POST", "/api/v1/command"], ["POST", "/api/v1/upload?name=x.nc"], ["GET", "/api/v1/nothing"]];
   for (const [m, t] of endpoints) {
     const r = await request(s, m, t, { token: false, body: m === "POST" ? "{}" : undefined });
@@ -276,6 +276,10 @@ async function preview(s) {
         at(0, 0, 5) >= 0 && at(20, 0, -1) >= 0 && at(40, 0, -1) >= 0 && at(40, -20, 5) >= 0 &&
         arc.length >= 36 && onCircle && p.rapid[at(40, -20, 5)] === 1 && p.rapid[at(20, 0, -1)] === 0 &&
         p.line[at(20, 0, -1)] === 3, r.body.slice(0, 300));
+  const kept = await request(s, "GET", "/api/v1/path?channel=1");
+  const k = JSON.parse(kept.body || "{}");
+  check("the path so far has its run and one entry per point", kept.status === 200 && Number.isInteger(k.run) &&
+        ["x", "y", "z", "px", "py", "pz", "rapid", "line"].every((f) => k[f].length === k.points), kept.body.slice(0, 200));
   const bad = await request(s, "GET", "/api/v1/preview?channel=9");
   check("a preview of no channel -> 400", bad.status === 400, `${bad.status} ${bad.body}`);
 }

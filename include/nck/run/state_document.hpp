@@ -40,6 +40,10 @@ struct ChannelPlace {
 nlohmann::ordered_json state_json(const LiveSnapshot& s, const config::Machine& m, const sim::DryRun& run,
                                   std::span<const ChannelPlace> places, const LastErrors* errors);
 
+// Per channel of the snapshot, its place from the block events' maps.
+std::array<ChannelPlace, config::kMaxChannels> channel_places(const LiveSnapshot& s, const config::Machine& m,
+                                                             const ChannelFrames& frames);
+
 // nck serve's: the places from the block events' maps.
 nlohmann::ordered_json snapshot_json(const LiveSnapshot& s, const config::Machine& m, const sim::DryRun& run,
                                      const ChannelFrames& frames, const LastErrors* errors = nullptr);

@@ -12,6 +12,7 @@
 #include "nck/config/machine.hpp"
 #include "nck/serve/http_server.hpp"
 #include "nck/serve/live_kernel.hpp"
+#include "nck/serve/live_path.hpp"
 #include "nck/serve/program_folders.hpp"
 #include "nck/serve/snapshot_json.hpp"
 #include "nck/serve/stream_replay.hpp"
@@ -51,6 +52,7 @@ class ServeApi : public ApiHandler {
   HttpReply start_or_release(std::size_t ch, const sim::ScenarioAction& cycle_start);
   HttpReply program_text(std::string_view target) const;
   HttpReply preview(std::string_view target);
+  HttpReply path_so_far(std::string_view target) const;
   HttpReply upload(std::string_view target, std::string_view body);
   // A channel that runs a program (not idle, ended or failed), if any.
   std::optional<std::size_t> busy_channel() const;
@@ -70,6 +72,7 @@ class ServeApi : public ApiHandler {
   ChannelFrames frames_{};
   LiveSnapshot last_{};  // the newest state taken
   LastErrors last_errors_;  // of the run of generation_, from its events (the state's last_error)
+  LivePath path_;        // the run's path so far, for a page loaded during it
   StreamReplay replay_;  // the frames' ids, the events a reconnecting client missed
 };
 
