@@ -30,7 +30,9 @@
 
   // A refused request (status 4xx with {"error": ...}) or a failed fetch.
   function reportRefusal(e, what) {
-    addError("refused", e.id, e.message, what, e.remedy);
+    const d = e.diagnostic || {};  // an MDI text that does not decode says where in it
+    const at = d.line ? ` line ${d.line}${d.column ? ", column " + d.column : ""}` : "";
+    addError("refused", e.id, e.message, what + at, e.remedy);
   }
 
   function onEvents(events) {

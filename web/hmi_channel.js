@@ -24,7 +24,7 @@
       this.send = (command, fields) => api.command(command, n, fields).then(() => true,
         (e) => { report(e, `channel ${n}: ${command}`); return false; });
       this.controls = [C.cyclePanel(this.send), C.overridePanel(this.send), C.skipPanel(this.send),
-        C.spindlePanel(this.send, machine.spindles), C.jogPanel(this.send, machine.axes), C.mdiPanel(this.send)];
+        C.spindlePanel(this.send, machine.spindles), C.jogPanel(this.send, machine.axes), C.mdiPanel(this.send, n)];
       this.program = new window.NckProgramView((nr, line) => this.search(nr, line),
         (from) => api.get(`/api/v1/program?channel=${n}&from=${from}`), (e) => report(e, `channel ${n}: program text`));
       this.el = el("section", { class: "channel", "data-channel": n },

@@ -19,7 +19,7 @@
       el("div", { class: "buttons" },
         button("Cycle start", "start the loaded program, or release a hold", () => send("cycle_start"), "start"),
         hold,
-        button("Stop", "stop the program (it ends)", () => send("stop"), "stop"),
+        button("Stop", "NC stop: hold the program where it is (cycle start goes on, reset ends it)", () => send("stop"), "stop"),
         button("Reset", "reset the channel: the program ends, errors clear", () => send("reset"), "reset")),
       el("div", { class: "switches" }, step.el, opt.el, el("label", { class: "check" }, "mode ", mode)));
     return {
@@ -79,15 +79,39 @@
     return { el: el("div", { class: "panel jog" }, el("span", { class: "name" }, "jog"), step, keys), update() {} };
   }
 
-  // One NC block typed by the operator (runs when the channel is idle or ended).
-  function mdiPanel(send) {
+  // One NC block typed by the operator (runs when the channel is idle or
+  // ended). The blocks run are kept (the newest first, at most 20, across a
+  // reload of the page): ↑ and ↓ in the box step through them, a click on
+  // one in the list puts it back in the box.
+  function mdiPanel(send, channel) {
+    const key = "nck.mdi." + channel, kept = 20;
     const input = el("input", { type: "text", placeholder: "MDI: e.g. G0 X10", "aria-label": "MDI block", maxlength: 256 });
-    const go = () => {
-      if (!input.value.trim()) return;
-      send("mdi", { text: input.value }).then((ok) => { if (ok) input.value = ""; });
+    const list = el("ol", { class: "mdi-history", "aria-label": "MDI history" });
+    let history = [];
+    try { history = JSON.parse(sessionStorage.getItem(key) || "[]"); } catch { history = []; }
+    let at = -1;  // where ↑/↓ stand in the history (-1: the box as typed)
+    const show = () => list.replaceChildren(...history.slice(0, 5).map((text) =>
+      el("li", { title: "put this block back in the box", onclick: () => { input.value = text; input.focus(); } }, text)));
+    const remember = (text) => {
+      history = [text, ...history.filter((h) => h !== text)].slice(0, kept);
+      try { sessionStorage.setItem(key, JSON.stringify(history)); } catch { /* storage full or off: memory only */ }
+      show();
     };
-    input.addEventListener("keydown", (e) => { if (e.key === "Enter") go(); });
-    return { el: el("div", { class: "panel mdi" }, input, button("Run MDI", "run the typed block", go)), update() {} };
+    const go = () => {
+      const text = input.value.trim();
+      if (!text) return;
+      send("mdi", { text: input.value }).then((ok) => { if (ok) { remember(text); input.value = ""; at = -1; } });
+    };
+    input.addEventListener("keydown", (e) => {
+      if (e.key === "Enter") go();
+      else if ((e.key === "ArrowUp" || e.key === "ArrowDown") && history.length) {
+        at = Math.max(-1, Math.min(history.length - 1, at + (e.key === "ArrowUp" ? 1 : -1)));
+        input.value = at < 0 ? "" : history[at];
+        e.preventDefault();
+      }
+    });
+    show();
+    return { el: el("div", { class: "panel mdi" }, input, button("Run MDI", "run the typed block", go), list), update() {} };
   }
 
   // The channel's spindles: set and actual speed, gear, speed reached; override.

@@ -180,6 +180,16 @@ async function checkMdi(h) {
   await h.ch.locator(".mdi input").press("Enter");
   const done = await h.until(m, (s) => Math.abs(s.x - 10) < 1e-6 && s.state === "idle", 10000, "MDI G0 X10");
   if (done) expect((await h.dro("X")) === "10.000", `MDI G0 X10: X at ${done.x}, the DRO shows ${await h.dro("X")}`);
+  // issue 48 item 11: the block is in the history, ↑ brings it back, a click on it too
+  const first = await h.ch.locator(".mdi-history li").first().textContent({ timeout: 2000 }).catch(() => "");
+  await h.ch.locator(".mdi input").press("ArrowUp");
+  const recalled = await h.ch.locator(".mdi input").inputValue();
+  await h.ch.locator(".mdi input").fill("");
+  await h.ch.locator(".mdi-history li").first().click();
+  const clicked = await h.ch.locator(".mdi input").inputValue();
+  await h.ch.locator(".mdi input").fill("");
+  expect(first === "G0 X10" && recalled === "G0 X10" && clicked === "G0 X10",
+    `MDI history: "${first}" listed, ↑ recalls "${recalled}", a click "${clicked}"`);
 }
 
 async function checkMdiError(h) {
@@ -187,8 +197,10 @@ async function checkMdiError(h) {
   await h.ch.locator(".mdi input").press("Enter");
   const item = h.page.locator("#errors li").first();
   const text = await item.textContent({ timeout: 5000 }).catch(() => "");
-  expect(/Remedy: \S/.test(text), `a bad MDI block lists an error with its remedy: "${text.slice(0, 160)}"`,
-    `a bad MDI block lists no error with a remedy (got "${text}")`);
+  expect(/Remedy: \S/.test(text) && /line 1, column \d+/.test(text), `a bad MDI block lists an error with its place and remedy: "${text.slice(0, 200)}"`,
+    `a bad MDI block lists no error with its place and a remedy (got "${text}")`);
+  const stop = await h.button("Stop").getAttribute("title");
+  expect(/hold/.test(stop), `the Stop button says it holds: "${stop}"`);
 }
 
 // Single step is switched on once the program runs: a new run starts with
