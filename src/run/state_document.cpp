@@ -1,6 +1,7 @@
 #include "nck/run/state_document.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "nck/core/utf8.hpp"
 #include "nck/output/output_writers.hpp"
@@ -27,6 +28,14 @@ motion::AxisVector to_pcs(const kernel::AffineMap& f, const motion::AxisVector& 
   return pcs;
 }
 
+// A position (mm, °) or speed as a person reads it: at the control's
+// internal resolution, 0.1 µm / 0.0001° (TF5200's positions are integers of
+// it), so that the JSON shows 23.47, not 23.47000000000009 (issue 48 item 4).
+double shown(double v) {
+  const double r = std::round(v * 1e4) / 1e4;
+  return r == 0 ? 0.0 : r;  // no -0
+}
+
 bool face_turning(const config::Machine& m, const config::ChannelAxis& a) {
   return a.axis_index >= 0 && m.axes[static_cast<std::size_t>(a.axis_index)].is_face_turning();
 }
@@ -37,12 +46,12 @@ json channel_json(const LiveChannel& c, const config::Machine& m, const sim::Dry
   json mcs = json::object(), pcs = json::object(), dtg = json::object(), axes = json::object();
   for (std::size_t j = 0; j < cfg.axes.size() && j < place.pcs.size(); ++j) {
     const std::string& name = cfg.axes[j].name;
-    mcs[name] = c.axis_mcs[j];
-    pcs[name] = place.pcs[j];
-    dtg[name] = c.axis_dtg[j];
-    axes[name] = {{"mcs", c.axis_mcs[j]}, {"pcs", place.pcs[j]}, {"dtg", c.axis_dtg[j]}};
+    mcs[name] = shown(c.axis_mcs[j]);
+    pcs[name] = shown(place.pcs[j]);
+    dtg[name] = shown(c.axis_dtg[j]);
+    axes[name] = {{"mcs", mcs[name]}, {"pcs", pcs[name]}, {"dtg", dtg[name]}};
     // a face-turning axis also as the diameter G51 programs (as --final writes it)
-    if (face_turning(m, cfg.axes[j])) axes[name]["pcs_diameter"] = 2 * place.pcs[j];
+    if (face_turning(m, cfg.axes[j])) axes[name]["pcs_diameter"] = shown(2 * place.pcs[j]);
   }
   const RunNames names{&run};
   json block = {{"file", names.file(ch, c.at.file_id)}, {"line", c.at.line}, {"n", c.at.n ? json(*c.at.n) : json()}};
@@ -54,9 +63,9 @@ json channel_json(const LiveChannel& c, const config::Machine& m, const sim::Dry
             {"pcs", std::move(pcs)},
             {"dtg", std::move(dtg)},
             {"axes", std::move(axes)},  // per axis: the Python session's layout
-            {"path_velocity_mm_s", c.path_velocity_mm_s},
-            {"feed_mm_s", c.feed_mm_s},
-            {"distance_to_go_mm", c.distance_to_go_mm},
+            {"path_velocity_mm_s", shown(c.path_velocity_mm_s)},
+            {"feed_mm_s", shown(c.feed_mm_s)},
+            {"distance_to_go_mm", shown(c.distance_to_go_mm)},
             // an idle channel's cycles go to nothing (time by cause would call them starved)
             {"cause", channel_free(c.program_state) ? json() : json(cause_name(c.cause))},
             {"block", std::move(block)},
@@ -80,9 +89,9 @@ json spindle_json(const LiveSnapshot& s, std::size_t i, const sim::DryRun& run) 
   const kernel::SpindleOutput& o = s.spindles[i];
   const plc::SpindleStatus& h = s.hli_spindles[i];
   return {{"name", run.kernel().spindle_name(i)},
-          {"set_rpm", o.set_rpm},
-          {"act_rpm", o.act_rpm},
-          {"pos_deg", o.set_pos_deg},
+          {"set_rpm", shown(o.set_rpm)},
+          {"act_rpm", shown(o.act_rpm)},
+          {"pos_deg", shown(o.set_pos_deg)},
           {"gear", h.gear_stage},
           {"override_pct", s.spindle_override_pct[i]},
           {"speed_reached", h.speed_reached},
