@@ -9,7 +9,7 @@
   const WAITS = {
     plc_ack: "the PLC's acknowledgement", speed_reached: "spindle speed reached", in_position: "in position",
     standstill: "standstill", homing: "homing", gear_change: "gear change", expl_syn: "explicit synchronisation",
-    dwell: "dwell", feedhold: "feed hold", coupling: "a spindle coupling",
+    dwell: "dwell", feedhold: "feed hold", coupling: "a spindle coupling", zero_mark: "the spindle's zero mark (G33)",
   };
 
   class ChannelPanel {

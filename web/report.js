@@ -12,7 +12,7 @@
   const REASONS = {
     plc_ack: "the PLC's acknowledgement", speed_reached: "speed reached", in_position: "in position",
     standstill: "standstill", homing: "homing", gear_change: "gear change", expl_syn: "explicit synchronisation",
-    dwell: "dwell", feedhold: "feed hold", coupling: "a spindle coupling",
+    dwell: "dwell", feedhold: "feed hold", coupling: "a spindle coupling", zero_mark: "the spindle's zero mark (G33)",
   };
 
   function hms(s) {

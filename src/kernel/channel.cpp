@@ -279,10 +279,12 @@ void Channel::run_motion(const Motion& m, Cycle& cy) noexcept {
     return;
   }
   spindle_path_.limit_path(path_.profile(), cy.machine);
+  spindle_path_.announce_wait(cy);
   hold_.follow(current_, cy.in, sync_.has_functions(), path_, cy.dt_s);
   const motion::ProfileSample st = path_.step(m, *commands_, cy);
   cause_ = path_.cause();
-  if (cause_ == CycleCause::wait) wait_reason_ = WaitReason::coupling;
+  if (cause_ == CycleCause::wait)
+    wait_reason_ = spindle_path_.waits_for_zero_mark() ? WaitReason::zero_mark : WaitReason::coupling;
   measuring_.stepped(m);
   place(m, st.s_mm);
   spindle_path_.follow_path(st.s_mm, st.v_mm_s, cy.machine);

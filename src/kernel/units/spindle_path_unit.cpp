@@ -98,6 +98,14 @@ void SpindlePathUnit::limit_path(motion::PathProfile& path, ChannelContext& ctx)
   }
 }
 
+void SpindlePathUnit::announce_wait(Cycle& cy) noexcept {
+  if (thread_waiting_ == wait_announced_) return;
+  wait_announced_ = thread_waiting_;
+  const ev::Wait e{WaitReason::zero_mark, ev::spindle_or_none(link_.spindle)};
+  if (thread_waiting_) cy.emit(e);
+  else cy.emit(ev::WaitEnd{e});
+}
+
 // Time by cause's ideal (ChannelOutput::feed_mm_s): the programmed speed,
 // not the set point, so a spindle still ramping up, its override or a limit
 // show as time lost, as a G94 feed the axes cannot reach does.

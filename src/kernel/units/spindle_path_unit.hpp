@@ -33,6 +33,11 @@ class SpindlePathUnit {
   std::int8_t tap_spindle() const noexcept { return tap_spindle_; }
   // G33: the path follows the spindle's actual speed on the pitch. rt
   bool threading() const noexcept { return link_.kind == FeedLinkKind::thread; }
+  // G33 waits for the zero mark (+ OFFSET) before it starts. rt
+  bool waits_for_zero_mark() const noexcept { return thread_waiting_; }
+  // After limit_path: that wait as the other waits say theirs (a wait
+  // event when it begins, its end when the mark passed). rt
+  void announce_wait(Cycle& cy) noexcept;
   // The path velocity the block commands: for G95 and G33 the programmed
   // spindle speed (under G96 the one its law set) x mm/rev, else
   // `planned_mm_s` (G94, G63/G331: their feed is programmed). rt
@@ -44,6 +49,7 @@ class SpindlePathUnit {
   std::int8_t tap_spindle_ = -1;  // the spindle tracking the path (G63/G331/G332), -1 none
   double tap_start_deg_ = 0;      // its set point when the block's motion began
   bool thread_waiting_ = false;   // G33: the path waits for the start angle
+  bool wait_announced_ = false;   // ... and its wait event went out
   double thread_last_deg_ = 0;    // the spindle's set point one cycle ago
   FeedLink link_{};               // the block's feed link
   CssLink css_{};                 // G96 in force

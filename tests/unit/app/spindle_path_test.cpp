@@ -151,6 +151,19 @@ TEST(SpindlePath, ThreadInThreeG33PassesStartsOnTheZeroMark) {
   }
   EXPECT_NEAR(wrapped_step(at_z10[0], at_z10[1]), 0.0, step_deg);
   EXPECT_NEAR(wrapped_step(at_z10[0], at_z10[2]), 0.0, step_deg);
+  // Each pass's wait for the mark is a wait like the others (issue 48 item
+  // 5): a wait event at the pass's start, its end in the cycle Z moves.
+  std::vector<nlohmann::json> waits, ends;
+  for (const nlohmann::json& e : r.of("wait")) if (e["reason"] == "zero_mark") waits.push_back(e);
+  for (const nlohmann::json& e : r.of("wait_end")) if (e["reason"] == "zero_mark") ends.push_back(e);
+  ASSERT_EQ(waits.size(), 3u);
+  ASSERT_EQ(ends.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(waits[i]["spindle"], "S1");
+    EXPECT_EQ(waits[i]["line"], ends[i]["line"]);
+    EXPECT_GT(ends[i]["t"].get<double>(), waits[i]["t"].get<double>());
+    EXPECT_LT(ends[i]["t"].get<double>() - waits[i]["t"].get<double>(), 60.0 / 400 + kDt);  // within a turn
+  }
 }
 
 // P-CHAN-00836: with thread_cutting.ignore_override 1 a feed override of
