@@ -64,6 +64,8 @@ class Channel {
   // The path's set point (what the program commanded) and the machine set
   // point (plus the handwheel's manual offset and distance control's offset).
   const motion::AxisVector& position() const noexcept { return path_.position(); }
+  // setup: the path stands at path_mcs before the program starts.
+  void start_at(const motion::AxisVector& path_mcs) noexcept { path_.position() = path_mcs; }
   motion::AxisVector machine_position() const noexcept;
   // The handwheel offset in the set point now (less than travelled while
   // #SUPPRESS OFFSETS or #MCS leaves it out).

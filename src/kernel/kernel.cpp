@@ -130,6 +130,10 @@ std::vector<std::uint32_t> Kernel::active_links(std::size_t ch) const {
 }
 
 
+void Kernel::start_channel_at(std::size_t ch, const motion::AxisVector& path_mcs) {
+  channels_.at(ch)->start_at(path_mcs);
+}
+
 ChannelState Kernel::channel_state(std::size_t ch) const {
   const Channel& c = *channels_.at(ch);
   const DistUnit& dist = c.technologies().get<DistUnit>();

@@ -392,4 +392,6 @@ std::size_t ChannelPrep::discard_mdi() {
   return n;
 }
 
+void ChannelPrep::start_at(const motion::AxisVector& path_mcs) { planner_->take_stopped_position(path_mcs); }
+
 }  // namespace nck::prep

@@ -247,6 +247,10 @@ std::expected<std::unique_ptr<sim::DryRun>, Diagnostic> ServeApi::make_run(
   o.search = search;
   o.search_channel = search_channel;
   for (std::size_t ch = 0; ch < o.skip_masks.size(); ++ch) o.skip_masks[ch] = last_.channels[ch].hli.skip_mask;
+  // The new run starts where the axes stand (issue 48 item 10): the DRO
+  // does not jump, and a block search returns to the contour from there.
+  for (std::size_t ch = 0; ch < last_.channel_count && ch < o.start_mcs.size(); ++ch)
+    o.start_mcs[ch] = last_.channels[ch].axis_mcs;
   auto run = sim::DryRun::create(machine_, programs_, o);
   if (!run) return std::unexpected(run.error());
   auto live = std::make_unique<sim::DryRun>(std::move(*run));

@@ -28,6 +28,10 @@ std::expected<DryRun, Diagnostic> DryRun::create(const config::Machine& m,
     run.queues_.push_back({&run.kernel_->commands(ch), &run.kernel_->feedback(ch)});
   }
   for (std::size_t ch = 0; ch < run.preps_.size() && ch < config::kMaxChannels; ++ch) {
+    if (const auto& at = options.start_mcs[ch]) {
+      run.kernel_->start_channel_at(ch, *at);
+      run.preps_[ch].start_at(*at);
+    }
     run.sim_->start_with_skip_mask(ch, options.skip_masks[ch]);
     if (options.skip_masks[ch] != 0) run.preps_[ch].set_skip_mask(options.skip_masks[ch]);
   }

@@ -177,6 +177,25 @@ async function mdiQueue(s) {
         st.channels[0].mcs.Y === 7, JSON.stringify(st.channels[0].mcs));
 }
 
+// Issue 48 item 10: a program loaded after MDI (or a jog) starts where the
+// axes stand, not at the machine's start position: an incremental program
+// ends 1 mm above X20 Y7.
+async function runStartsWhereTheAxesStand(s) {
+  const before = (await state(s)).channels[0].mcs;
+  const up = await request(s, "POST", "/api/v1/upload?name=up1.nc", { body: "G91 G0 Z1\nM30\n" });
+  const load = await command(s, { command: "load", program: "up1.nc" });
+  const start = await command(s, { command: "cycle_start" });
+  let st = await state(s);
+  for (let i = 0; i < 100 && st.channels[0].state !== "ended"; ++i) {
+    await sleep(50);
+    st = await state(s);
+  }
+  const at = st.channels[0].mcs;
+  check(`a new run starts where MDI left the axes: X${before.X} Y${before.Y} Z${before.Z} -> X${at.X} Y${at.Y} Z${at.Z}`,
+        up.status === 200 && load.status === 200 && start.status === 200 && st.channels[0].state === "ended" &&
+        at.X === before.X && at.Y === before.Y && Math.abs(at.Z - before.Z - 1) < 1e-9, `${load.body} ${start.body}`);
+}
+
 // The diagnostic's one shape (issue 47 item 5): every field one of these,
 // absent ones left out.
 const SHAPE = ["id", "severity", "name", "message", "remedy", "file", "line", "column", "channel"];
@@ -306,6 +325,7 @@ async function main() {
     await streamIds(fast);
     await mdiErrors(fast);
     await mdiQueue(fast);
+    await runStartsWhereTheAxesStand(fast);
     await malformed(fast);
   } finally {
     fast.proc.kill("SIGTERM");

@@ -71,6 +71,8 @@ class Kernel {
   CommandQueue& commands(std::size_t ch) { return *command_queues_.at(ch); }
   FeedbackQueue& feedback(std::size_t ch) { return *feedback_queues_.at(ch); }
   ChannelState channel_state(std::size_t ch) const;
+  // setup: channel ch's path stands at path_mcs before its program starts.
+  void start_channel_at(std::size_t ch, const motion::AxisVector& path_mcs);
   // The coupling groups enabled in channel ch: their plan-store payloads.
   std::vector<std::uint32_t> active_links(std::size_t ch) const;
 

@@ -106,6 +106,9 @@ class ChannelPrep {
   const BlendStats& blend_stats() const { return window_.blend_stats(); }
   const nc::Decoder* decoder() const { return decoder_ ? &*decoder_ : nullptr; }
   const Planner& planner() const { return *planner_; }
+  // setup: the program starts where the axes stand (a live session's new
+  // run after the last one, a jog or MDI moved them).
+  void start_at(const motion::AxisVector& path_mcs);
 
   // setup: watches every decoded block (nullptr: none); it must outlive the run.
   void set_observer(PrepObserver* o) { observer_ = o; }

@@ -48,6 +48,9 @@ struct DryRunOptions {
   bool record_modal = false;  // with record_frames: the modal state of each block (nck serve)
   // Block-skip levels per channel at program start (the HLI's; nck serve keeps the operator's).
   std::array<std::uint32_t, config::kMaxChannels> skip_masks{};
+  // Where each channel's axes stand at program start (nck serve: where the
+  // last run, a jog or MDI left them); none: the machine's start position.
+  std::array<std::optional<motion::AxisVector>, config::kMaxChannels> start_mcs{};
 };
 
 // What a channel knows about its programmed state, for --final.
