@@ -3,7 +3,7 @@
 through scripts/hal-demo.sh and bounded in time. Exit 77 (skipped) when the
 HAL components are not built or unshare is not allowed.
 
-  hal_test.py SOURCE BUILD CASE   CASE: contour | period | wrong-type | missing-machine | missing-program
+  hal_test.py SOURCE BUILD CASE   CASE: contour | operator | period | wrong-type | missing-machine | missing-program
 """
 import json, os, re, subprocess, sys, tempfile
 
@@ -119,6 +119,34 @@ elif case == "missing-machine":
 elif case == "missing-program":
     rc, out = run(example_text, program="/nonexistent.nc", timeout=30)
     check(rc != 0 and "940403" in out, f"a missing program: error 940403, the file stops (exit {rc})", out)
+elif case == "operator":
+    head = example_text[:example_text.index("\nstart\n")]
+    tail = """
+setp nck.channel.1.feedhold 1
+start
+loadusr -w sleep 1
+show pin nck.axis.X.pos-cmd
+setp nck.channel.1.feedhold 0
+setp nck.channel.1.feed-override 50
+loadusr -w sleep 2
+show pin nck.channel.1.program-state
+show pin nck.axis.X.pos-cmd
+setp nck.channel.1.cycle-start 1
+waitusr nck-hal
+show pin nck.channel.1.status
+show pin nck.axis.X.pos-cmd
+show pin nck.error-id
+stop
+"""
+    rc, out = run(head + "\n" + tail, program=os.path.join(src, "tests", "hal", "operator.nc"), timeout=60)
+    rows = re.findall(r"^\s*\d+\s+(?:bit|float|s32|u32)\s+(?:IN|OUT)\s+(\S+)\s+(\S+)", out, re.M)
+    xs = [float(v) for v, n in rows if n == "nck.axis.X.pos-cmd"]
+    state = [v for v, n in rows if n == "nck.channel.1.program-state"]
+    check(rc == 0 and len(xs) == 3, f"the session ran (exit {rc})", out)
+    check(xs[0] == 0.0, "feedhold on at the start: X has not moved after 1 s", out)
+    check(state == ["2"] and xs[1] == 10.0, "after feedhold off the program holds at M0 (program-state 2) with X at 10", out)
+    check(xs[2] == 20.0 and pins(out).get("nck.channel.1.status") == "3", "cycle start released M0: X at 20, ended", out)
+    check("event" in out and "channel 1 done" in out, "nck-hal saw the end", out)
 else:
     print(f"unknown case {case}")
     sys.exit(2)

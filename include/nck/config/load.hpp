@@ -26,7 +26,7 @@ struct LoadOptions {
   // loader asks it for each list by its path (nullopt: not there) and
   // touches no file. The HAL module loads a machine that nck-hal packed
   // into shared memory this way (docs/hal.md, docs/decisions.md).
-  std::function<std::optional<std::string>(const std::filesystem::path&)> read_text;
+  std::function<std::optional<std::string>(const std::filesystem::path&)> read_text = nullptr;
 };
 
 // Reads startup.lis in `folder` and every list it names, converts units,
