@@ -102,8 +102,12 @@ int main(int argc, char** argv) {
       prep.feed(link->commands[0], link->feedback[0], done);
       while (!link->events.empty()) {
         const nck::kernel::Event& e = link->events.front();
-        std::printf("event t=%.4f ch=%u line=%u kind=%u\n", e.t_s, unsigned{e.channel}, e.at.line,
-                    static_cast<unsigned>(e.kind()));
+        if (const auto* w = e.get<nck::kernel::ev::Wait>())
+          std::printf("event t=%.4f ch=%u line=%u ev=wait reason=%s\n", e.t_s, unsigned{e.channel}, e.at.line,
+                      nck::kernel::wait_reason_name(w->reason));
+        else
+          std::printf("event t=%.4f ch=%u line=%u ev=%s\n", e.t_s, unsigned{e.channel}, e.at.line,
+                      nck::kernel::event_name(e.kind()));
         link->events.pop();
         ++events;
       }

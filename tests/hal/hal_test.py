@@ -3,7 +3,7 @@
 through scripts/hal-demo.sh and bounded in time. Exit 77 (skipped) when the
 HAL components are not built or unshare is not allowed.
 
-  hal_test.py SOURCE BUILD CASE   CASE: contour | operator | period | wrong-type | missing-machine | missing-program
+  hal_test.py SOURCE BUILD CASE   CASE: contour | operator | plc | period | wrong-type | missing-machine | missing-program
 """
 import json, os, re, subprocess, sys, tempfile
 
@@ -103,6 +103,22 @@ if case == "contour":
         # period on a PREEMPT_RT host.
         print(f"{a}: worst |fb - cmd| {worst:.4f} mm; outside {bound:.3f} mm for {outside_s:.4f} s of {run_s:.1f} s")
         check(outside_s <= 0.01 * run_s, f"{a}: |fb - cmd| <= v*T + 1 step = {bound:.3f} mm in >= 99 % of the cycles", out)
+elif case == "plc":
+    # (d): spindle.nc with the example's plain-HAL PLC (timedelay acknowledges
+    # each M/H function) waits where `nck run --plc spindle.plc` waits.
+    spindle = os.path.join(mill, "spindle.nc")
+    rc, out = run(example_text, program=spindle, timeout=90)
+    check(rc == 0 and "channel 1 done" in out, f"spindle.nc ran to its end through HAL (exit {rc})", out)
+    hal_waits = re.findall(r"^event t=\S+ ch=1 line=(\d+) ev=wait reason=(\S+)", out, re.M)
+    with tempfile.TemporaryDirectory() as d:
+        ev = os.path.join(d, "ev.jsonl")
+        subprocess.run([os.path.join(build, "nck"), "run", mill, spindle, "--plc", os.path.join(mill, "spindle.plc"),
+                        "--events", ev], check=True, capture_output=True, timeout=120)
+        run_waits = [(str(j["line"]), j["reason"]) for j in map(json.loads, open(ev)) if j.get("ev") == "wait"]
+    print("HAL waits:", hal_waits)
+    print("nck run waits:", run_waits)
+    check(len(run_waits) > 0 and hal_waits == run_waits,
+          "the same waits (line, reason), in the same order, as nck run --plc spindle.plc", out)
 elif case == "period":
     rc, out = run(example_text.replace("period2=1000000", "period2=2000000"), timeout=30)
     check("940400" in out, "a 2 ms thread for a 1 ms machine: error 940400", out)
