@@ -12,6 +12,7 @@ namespace {
 struct Folder {
   std::filesystem::path dir;
   KeyPolicy keys = KeyPolicy::lenient;  // how its lists' unknown keys are reported
+  const LoadOptions* options = nullptr;  // its read_text, when set, stands for the files
   // A path from a list, relative to the machine folder; '\' from ISG/Windows lists accepted.
   std::filesystem::path resolve(std::string rel) const {
     std::replace(rel.begin(), rel.end(), '\\', '/');
@@ -20,13 +21,25 @@ struct Folder {
   }
 };
 
+std::optional<ListText> read_list(const Folder& f, const std::filesystem::path& path, Diagnostics& d,
+                                  SourceLoc from = {}) {
+  if (!f.options || !f.options->read_text) return read_list_file(path, path.string(), d, from);
+  auto text = f.options->read_text(path);
+  if (!text) {
+    if (from.file.empty()) from.file = path.string();
+    d.add(ErrorId::ConfigFileUnreadable, from, fmt::format("list file '{}' is not in the machine's pack", path.string()));
+    return std::nullopt;
+  }
+  return read_list_text(*text, path.string(), d);
+}
+
 // Reads and checks one list named by `key` in startup.lis; empty list when absent.
 std::optional<ParamList> read_named(const Folder& f, const ParamList& startup, const std::string& key,
                                     ListKind kind, Diagnostics& d) {
   const ParamValue* v = startup.find(key);
   if (!v || v->text.empty()) return std::nullopt;
   auto path = f.resolve(v->text);
-  auto text = read_list_file(path, path.string(), d, v->loc);
+  auto text = read_list(f, path, d, v->loc);
   if (!text) return std::nullopt;
   return ParamList::parse(*text, kind, d, f.keys);
 }
@@ -95,9 +108,9 @@ void load_channels(const Folder& f, const ParamList& st, Machine& m, std::vector
 
 LoadResult load_machine_unguarded(const std::filesystem::path& folder, const LoadOptions& options) {
   LoadResult r;
-  Folder f{folder, options.keys};
+  Folder f{folder, options.keys, &options};
   auto startup_path = (folder / "startup.lis").lexically_normal();
-  auto text = read_list_file(startup_path, startup_path.string(), r.diagnostics);
+  auto text = read_list(f, startup_path, r.diagnostics);
   if (!text) return r;
   ParamList st = ParamList::parse(*text, ListKind::startup, r.diagnostics, f.keys);
 

@@ -1,6 +1,8 @@
 #pragma once
 #include <filesystem>
+#include <functional>
 #include <optional>
+#include <string>
 
 #include "nck/config/machine.hpp"
 #include "nck/config/parameter_registry.hpp"
@@ -20,6 +22,11 @@ struct LoadOptions {
   // asks, e.g. a spindle that cannot position or home (70252). The run
   // reports such a thing when a program asks for it.
   bool capability_warnings = false;
+  // Where the lists' text comes from: empty reads the files; set, the
+  // loader asks it for each list by its path (nullopt: not there) and
+  // touches no file. The HAL module loads a machine that nck-hal packed
+  // into shared memory this way (docs/hal.md, docs/decisions.md).
+  std::function<std::optional<std::string>(const std::filesystem::path&)> read_text = nullptr;
 };
 
 // Reads startup.lis in `folder` and every list it names, converts units,

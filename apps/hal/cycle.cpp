@@ -1,0 +1,201 @@
+#include "hal/cycle.hpp"
+
+#include <fmt/format.h>
+
+#include "nck/config/load.hpp"
+#include "nck/core/diagnostic.hpp"
+
+namespace nck::hal {
+
+bool Cycle::build(Link& link, std::string& error) {
+  if (link.magic != kLinkMagic || link.version != kLinkVersion || link.pack_bytes.load() == 0) {
+    error = fmt::format("{}: no machine in shared memory; load nck-hal first (loadusr -W nck-hal MACHINE PROGRAM)",
+                        static_cast<std::uint32_t>(ErrorId::HalNoMachinePack));
+    return false;
+  }
+  link_ = &link;
+  auto pack = std::make_shared<const ListPack>(read_pack(link));
+  config::LoadOptions options;
+  // The pack's paths are the folder's as nck-hal read them; nothing is read from disk here.
+  options.read_text = [pack](const std::filesystem::path& p) -> std::optional<std::string> {
+    auto it = pack->find(p.string());
+    if (it == pack->end()) return std::nullopt;
+    return it->second;
+  };
+  const auto folder_it = pack->find("");
+  const std::filesystem::path folder = folder_it == pack->end() ? std::filesystem::path() : std::filesystem::path(folder_it->second);
+  auto loaded = config::load_machine(folder, options);
+  if (!loaded.ok()) {
+    std::string first;
+    for (const Diagnostic& d : loaded.diagnostics.items())
+      if (d.severity == Severity::error) {
+        first = fmt::format(": {} {}", static_cast<std::uint32_t>(d.id), d.message);
+        break;
+      }
+    error = fmt::format("{}: the packed machine does not load{}", static_cast<std::uint32_t>(ErrorId::HalMachineInvalid), first);
+    return false;
+  }
+  machine_ = std::make_unique<config::Machine>(std::move(*loaded.machine));
+  if (auto ok = kernel_.configure(*machine_); !ok) {
+    error = fmt::format("{}: {}", static_cast<std::uint32_t>(ErrorId::HalMachineInvalid), ok.error().message);
+    return false;
+  }
+  in_ = std::make_unique<kernel::TickInput>();
+  out_ = std::make_unique<kernel::TickOutput>();
+  for (std::size_t ch = 0; ch < machine_->channels.size(); ++ch) {
+    const auto& axes = machine_->channels[ch].axes;
+    for (std::size_t j = 0; j < axes.size() && j < kMaxAxes; ++j) axes_.push_back({ch, j, axes[j].name});
+  }
+  for (auto& s : plc_slots_) s.handle = plc::kNoHandle;
+  link.rt_state.store(static_cast<std::uint32_t>(RtState::configured));
+  return true;
+}
+
+void Cycle::fail(std::uint32_t id) noexcept {
+  failed_ = true;
+  **machine_pins.error = true;
+  **machine_pins.error_id = id;
+  for (const auto& a : axis_pins) **a.enable = false;
+  link_->rt_error_id.store(id);
+  link_->rt_state.store(static_cast<std::uint32_t>(RtState::error));
+}
+
+void Cycle::run(long period_ns) noexcept {
+  watchdog_ = !watchdog_;
+  **machine_pins.watchdog = watchdog_;
+  if (failed_) return;
+  // The kernel's time advances by the machine's cycle per tick: a thread of
+  // another period would run it faster or slower than the machine.
+  if (period_ns != static_cast<long>(machine_->cycle_time_us) * 1000) {
+    fail(static_cast<std::uint32_t>(ErrorId::HalPeriodMismatch));
+    return;
+  }
+  link_->rt_state.store(static_cast<std::uint32_t>(RtState::running), std::memory_order_relaxed);
+  read_pins();
+  relay_commands();
+  out_->tech_outputs.clear();
+  out_->events.clear();
+  out_->events_dropped = 0;
+  kernel_.tick(*in_, *out_);
+  write_pins();
+  hand_to_plc();
+  for (const auto& e : out_->events) {
+    if (e.channel > 0 && e.at.line > 0 && e.channel <= channel_pins.size())
+      **channel_pins[e.channel - 1u].block_line = static_cast<std::int32_t>(e.at.line);
+    if (!link_->events.push(e)) link_->events_dropped.fetch_add(1, std::memory_order_relaxed);
+  }
+  if (out_->events_dropped) link_->events_dropped.fetch_add(out_->events_dropped, std::memory_order_relaxed);
+  for (std::size_t ch = 0; ch < channel_count(); ++ch) {
+    auto& fb = kernel_.feedback(ch);
+    while (!fb.empty() && link_->feedback[ch].push(fb.front())) fb.pop();
+    link_->channel_done[ch].store(kernel_.channel_done(ch) ? 1 : 0, std::memory_order_release);
+  }
+  link_->cycles.store(kernel_.cycles(), std::memory_order_release);
+  **machine_pins.cycles = static_cast<std::uint32_t>(kernel_.cycles());
+}
+
+void Cycle::read_pins() noexcept {
+  const bool estop = **machine_pins.estop;
+  const bool on = **machine_pins.machine_on && !estop;
+  in_->acks.clear();
+  in_->ext_commands.clear();
+  for (std::size_t ch = 0; ch < channel_count(); ++ch) {
+    const ChannelPins& p = channel_pins[ch];
+    kernel::ChannelInput& c = in_->channels[ch];
+    // Buttons act on their rising edge (a held cycle start is one press).
+    const bool start = **p.cycle_start, reset = **p.reset;
+    c.cycle_start = start && !cycle_start_was_[ch];
+    c.reset = (reset && !reset_was_[ch]) || estop;
+    cycle_start_was_[ch] = start;
+    reset_was_[ch] = reset;
+    // Without machine-on the path holds where it is, as under feedhold.
+    c.feedhold = **p.feedhold || !on;
+    c.single_step = **p.single_step;
+    c.optional_stop = **p.optional_stop;
+    c.feed_override_pct = **p.feed_override;
+    c.rapid_override_pct = **p.rapid_override;
+  }
+  for (std::size_t s = 0; s < spindle_pins.size(); ++s) {
+    const SpindlePins& p = spindle_pins[s];
+    spindle::DriveFeedback& f = in_->spindle_measured[s];
+    f.valid = **p.feedback_valid;
+    f.actual_speed_deg_s = **p.speed_in_rpm * 6.0;  // rpm -> deg/s
+    f.actual_pos_deg = **p.revolutions * 360.0;
+  }
+  for (std::size_t k = 0; k < kPlcSlots; ++k) {
+    const PlcPins& p = plc_pins[k];
+    kernel::TechRequest& slot = plc_slots_[k];
+    // The rising edge acknowledges: an ack still high from the slot's last
+    // function does not acknowledge the next one.
+    const bool ack = **p.ack, rose = ack && !ack_was_[k];
+    ack_was_[k] = ack;
+    if (slot.handle == plc::kNoHandle || !rose) continue;
+    (void)in_->acks.push_back(plc::PlcAck{slot.handle, slot.output, kernel_.time_s()});
+    slot.handle = plc::kNoHandle;
+    **p.request = false;
+  }
+}
+
+// Moves what nck-hal queued into the kernel's queues while they have room:
+// the kernel's look-ahead sees what it holds, the shared queue is the buffer.
+void Cycle::relay_commands() noexcept {
+  for (std::size_t ch = 0; ch < channel_count(); ++ch) {
+    kernel::CommandQueue& from = link_->commands[ch];
+    kernel::CommandQueue& to = kernel_.commands(ch);
+    while (!from.empty() && to.free_slots() > 0) {
+      const kernel::Command& c = from.front();
+      if (to.free_attachment_slots() < c.attachments || c.attachments > attachments_.size()) break;
+      for (std::size_t i = 0; i < c.attachments; ++i) attachments_[i] = from.attachment(i);
+      (void)to.push(c, std::span<const kernel::Attachment>(attachments_.data(), c.attachments));
+      from.pop();
+    }
+  }
+}
+
+void Cycle::write_pins() noexcept {
+  const bool on = **machine_pins.machine_on && !**machine_pins.estop;
+  for (std::size_t i = 0; i < axes_.size(); ++i) {
+    const AxisRef& a = axes_[i];
+    const AxisPins& p = axis_pins[i];
+    const double cmd = out_->channels[a.channel].axis_mcs[a.axis];
+    **p.pos_cmd = cmd;
+    **p.following_error = cmd - **p.pos_fb;
+    **p.enable = on;
+  }
+  for (std::size_t ch = 0; ch < channel_count(); ++ch) {
+    const kernel::ChannelOutput& o = out_->channels[ch];
+    const ChannelPins& p = channel_pins[ch];
+    **p.program_state = static_cast<std::int32_t>(o.program_state);
+    **p.status = static_cast<std::int32_t>(o.status);
+    **p.path_velocity = o.path_velocity_mm_s;
+    **p.done = kernel_.channel_done(ch);
+  }
+  for (std::size_t s = 0; s < spindle_pins.size(); ++s) {
+    const SpindlePins& p = spindle_pins[s];
+    **p.speed_cmd_rpm = out_->spindles[s].set_rpm;
+    **p.pos_cmd_deg = out_->spindles[s].set_pos_deg;
+    **p.at_speed = out_->hli_spindles[s].speed_reached;
+  }
+}
+
+// Each technology function the kernel hands out takes a free slot until the
+// PLC acknowledges it; with no slot free it is an error (never a hang).
+void Cycle::hand_to_plc() noexcept {
+  for (const kernel::TechRequest& r : out_->tech_outputs) {
+    std::size_t k = 0;
+    while (k < kPlcSlots && plc_slots_[k].handle != plc::kNoHandle) ++k;
+    if (k == kPlcSlots) {
+      fail(static_cast<std::uint32_t>(ErrorId::HalPlcSlotsFull));
+      return;
+    }
+    plc_slots_[k] = r;
+    const PlcPins& p = plc_pins[k];
+    **p.kind = static_cast<std::int32_t>(r.output.kind);
+    **p.number = r.output.number;
+    **p.channel = r.output.channel;
+    **p.value = r.output.value;
+    **p.request = true;
+  }
+}
+
+}  // namespace nck::hal

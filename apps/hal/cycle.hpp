@@ -1,0 +1,102 @@
+#pragma once
+// What nck.cycle does in the HAL thread, apart from HAL itself: take the
+// input pins into a TickInput, relay the commands nck-hal queued in the
+// shared Link into the kernel's own queues, run Kernel::tick() once, and
+// write the output pins, the events and the feedback back. Allocation-free
+// after build(); the pins are plain pointers (HAL's hal_bit_t,
+// hal_float_t, hal_u32_t and hal_s32_t are these types), so a unit test can
+// run it without HAL (tests/unit/hal).
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "hal/link.hpp"
+#include "nck/config/machine.hpp"
+#include "nck/kernel/kernel.hpp"
+
+namespace nck::hal {
+
+// A pin is the address of HAL's pointer to the pin's value: `net` points it
+// at the signal, so it is followed every cycle.
+using PinBit = volatile bool**;
+using PinFloat = volatile double**;
+using PinU32 = volatile std::uint32_t**;
+using PinS32 = volatile std::int32_t**;
+
+struct AxisPins {  // nck.axis.<name>.*
+  PinFloat pos_cmd, pos_fb, following_error;
+  PinBit enable, amp_fault, home_sw, limit_pos, limit_neg;
+};
+struct ChannelPins {  // nck.channel.<n>.*
+  PinBit cycle_start, feedhold, reset, single_step, optional_stop, done;
+  PinFloat feed_override, rapid_override, path_velocity;
+  PinU32 skip_mask;
+  PinS32 program_state, block_line, status;
+};
+struct SpindlePins {  // nck.spindle.<name>.*
+  PinFloat speed_cmd_rpm, pos_cmd_deg, speed_in_rpm, revolutions;
+  PinBit feedback_valid, orient, at_speed;
+};
+inline constexpr std::size_t kPlcSlots = 8;
+struct PlcPins {  // nck.plc.<k>.*
+  PinBit request, ack;
+  PinS32 kind, number, channel;
+  PinFloat value;
+};
+struct MachinePins {  // nck.*
+  PinBit estop, machine_on, watchdog, error;
+  PinU32 error_id, cycles;
+};
+
+struct AxisRef {  // one nck.axis.* pin group: its channel and channel axis
+  std::size_t channel = 0, axis = 0;
+  std::string name;
+};
+
+class Cycle {
+ public:
+  // Builds the kernel from the machine nck-hal packed into `link` (may
+  // allocate; runs in the module's load function). The error text names an ID.
+  bool build(Link& link, std::string& error);
+
+  const config::Machine& machine() const { return *machine_; }
+  const std::vector<AxisRef>& axes() const { return axes_; }
+  std::size_t channel_count() const { return machine_->channels.size(); }
+  std::size_t spindle_count() const { return kernel_.spindle_count(); }
+  const std::string& spindle_name(std::size_t i) const { return kernel_.spindle_name(i); }
+
+  // The pins, set before the first run().
+  std::vector<AxisPins> axis_pins;
+  std::vector<ChannelPins> channel_pins;
+  std::vector<SpindlePins> spindle_pins;
+  std::array<PlcPins, kPlcSlots> plc_pins{};
+  MachinePins machine_pins{};
+
+  // One kernel cycle; period_ns is the HAL thread's. Never allocates or throws.
+  void run(long period_ns) noexcept;
+
+ private:
+  void fail(std::uint32_t id) noexcept;
+  void read_pins() noexcept;
+  void relay_commands() noexcept;
+  void write_pins() noexcept;
+  void hand_to_plc() noexcept;
+
+  Link* link_ = nullptr;
+  std::unique_ptr<config::Machine> machine_;
+  kernel::Kernel kernel_;
+  std::unique_ptr<kernel::TickInput> in_;
+  std::unique_ptr<kernel::TickOutput> out_;
+  std::vector<AxisRef> axes_;
+  std::array<kernel::Attachment, kernel::kMaxAttachments> attachments_{};
+  std::array<kernel::TechRequest, kPlcSlots> plc_slots_{};  // handle kNoHandle: free
+  bool watchdog_ = false;
+  bool failed_ = false;
+  std::array<bool, config::kMaxChannels> cycle_start_was_{};
+  std::array<bool, config::kMaxChannels> reset_was_{};
+  std::array<bool, kPlcSlots> ack_was_{};
+};
+
+}  // namespace nck::hal

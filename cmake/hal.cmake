@@ -1,0 +1,34 @@
+# The LinuxCNC HAL components (docs/hal.md): on when linuxcnc-uspace-dev's
+# headers are there; the rest of nck builds without them.
+set(nck_hal_default OFF)
+if(EXISTS /usr/include/linuxcnc/hal.h)
+  set(nck_hal_default ON)
+endif()
+option(NCK_HAL "Build the LinuxCNC HAL components nck.so and nck-hal (needs linuxcnc-uspace-dev)" ${nck_hal_default})
+if(NOT NCK_HAL)
+  message(STATUS "NCK_HAL off: /usr/include/linuxcnc/hal.h not found (install linuxcnc-uspace-dev)")
+  return()
+endif()
+find_library(NCK_LINUXCNC_HAL_LIB linuxcnchal PATHS /usr/lib REQUIRED)
+set(NCK_HAL_INCLUDE /usr/include/linuxcnc)
+
+# What nck.cycle does, without HAL: the module links it, the unit test runs it.
+add_library(nck_hal_cycle STATIC ${PROJECT_SOURCE_DIR}/apps/hal/cycle.cpp)
+target_include_directories(nck_hal_cycle PUBLIC ${PROJECT_SOURCE_DIR}/apps)
+target_link_libraries(nck_hal_cycle PUBLIC nck_kernel nck_config)
+
+# nck.so, loaded into rtapi_app by `loadrt nck`: flags as LinuxCNC's
+# Makefile.modinc gives a uspace module.
+add_library(nck_hal_rt MODULE ${PROJECT_SOURCE_DIR}/apps/hal/nck_rt.cpp)
+set_target_properties(nck_hal_rt PROPERTIES OUTPUT_NAME nck PREFIX "" LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/hal)
+target_compile_definitions(nck_hal_rt PRIVATE RTAPI __MODULE__ USPACE SIM _GNU_SOURCE realtime)
+target_include_directories(nck_hal_rt SYSTEM PRIVATE ${NCK_HAL_INCLUDE})
+target_link_libraries(nck_hal_rt PRIVATE nck_hal_cycle)
+
+# nck-hal, the userspace component: decoder and preparation.
+add_executable(nck-hal ${PROJECT_SOURCE_DIR}/apps/hal/nck_hal_main.cpp)
+set_target_properties(nck-hal PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/hal)
+target_compile_definitions(nck-hal PRIVATE ULAPI _GNU_SOURCE)
+target_include_directories(nck-hal SYSTEM PRIVATE ${NCK_HAL_INCLUDE})
+target_include_directories(nck-hal PRIVATE ${PROJECT_SOURCE_DIR}/apps)
+target_link_libraries(nck-hal PRIVATE nck_prep ${NCK_LINUXCNC_HAL_LIB})

@@ -1,0 +1,177 @@
+#!/usr/bin/python3
+"""nck in a LinuxCNC HAL session (issue 46), each case in its own namespaces
+through scripts/hal-demo.sh and bounded in time. Exit 77 (skipped) when the
+HAL components are not built or unshare is not allowed.
+
+  hal_test.py SOURCE BUILD CASE   CASE: contour | operator | plc | period | wrong-type | missing-machine | missing-program
+"""
+import json, os, re, subprocess, sys, tempfile
+
+SKIP = 77
+src, build, case = sys.argv[1], sys.argv[2], sys.argv[3]
+demo = os.path.join(src, "scripts", "hal-demo.sh")
+example = os.path.join(src, "examples", "hal", "mill-stepgen.hal")
+mill = os.path.join(src, "examples", "mill")
+contour = os.path.join(mill, "contour.nc")
+STEP_MM = 1 / 10  # the example's position-scale
+V_MAX_MM_S, T_SERVO_S = 500.0, 0.001  # the mill's rapid; the servo period
+
+
+def skip(why):
+    print(f"SKIPPED: {why}")
+    sys.exit(SKIP)
+
+
+if not os.path.exists(os.path.join(build, "hal", "nck.so")):
+    skip("the HAL components are not built (NCK_HAL off: install linuxcnc-uspace-dev)")
+if os.geteuid() != 0:
+    skip("HAL sessions run in their own namespaces (unshare): run as root like scripts/test.sh")
+
+
+def run(hal_text, program=contour, machine=mill, timeout=120):
+    with tempfile.NamedTemporaryFile("w", suffix=".hal", delete=False) as f:
+        f.write(hal_text)
+    env = dict(os.environ, NCK_BUILD_DIR=build, NCK_HAL_TIMEOUT=str(timeout))
+    p = subprocess.run([demo, f.name, program, machine], capture_output=True, text=True, env=env,
+                       timeout=timeout + 30)
+    os.unlink(f.name)
+    out = p.stdout + p.stderr
+    if "unshare" in out and "Operation not permitted" in out:
+        skip("unshare is not permitted here")
+    return p.returncode, out
+
+
+def pins(out):
+    """name -> value of every `show pin` row."""
+    vals = {}
+    for m in re.finditer(r"^\s*\d+\s+(bit|float|s32|u32)\s+(IN|OUT|I/O)\s+(\S+)\s+(\S+)", out, re.M):
+        vals[m.group(4)] = m.group(3)
+    return vals
+
+
+def check(cond, what, out=""):
+    if not cond:
+        print(out[-4000:])
+        print(f"FAILED: {what}")
+        sys.exit(1)
+    print(f"ok: {what}")
+
+
+BOUND_MM = V_MAX_MM_S * T_SERVO_S + STEP_MM
+
+
+def with_monitor(text):
+    """The example with, per axis, a minmax on its following error and the
+    time it spent outside v*T + 1 step (wcomp -> not -> integ), shown at the end."""
+    lines = ["loadrt minmax count=3", "loadrt wcomp count=3", "loadrt not count=3",
+             "loadrt conv_bit_float count=3", "loadrt integ count=3"]
+    for i, a in enumerate("XYZ"):
+        lines += [f"addf minmax.{i} servo-thread", f"addf wcomp.{i} servo-thread", f"addf not.{i} servo-thread",
+                  f"addf conv-bit-float.{i} servo-thread", f"addf integ.{i} servo-thread",
+                  f"setp wcomp.{i}.min {-BOUND_MM}", f"setp wcomp.{i}.max {BOUND_MM}",
+                  f"net {a.lower()}-ferr nck.axis.{a}.f-error => minmax.{i}.in wcomp.{i}.in",
+                  f"net {a.lower()}-inside wcomp.{i}.out => not.{i}.in",
+                  f"net {a.lower()}-outside not.{i}.out => conv-bit-float.{i}.in",
+                  f"net {a.lower()}-outside-f conv-bit-float.{i}.out => integ.{i}.in"]
+    return text.replace("\nstart\n", "\n" + "\n".join(lines) + "\nstart\n").replace(
+        "show pin nck.error\n", "show pin nck.error\nshow pin nck.cycles\nshow pin minmax\nshow pin integ\n")
+
+
+example_text = open(example).read()
+
+if case == "contour":
+    rc, out = run(with_monitor(example_text))
+    check(rc == 0, f"halrun -f mill-stepgen.hal exits 0 (got {rc})", out)
+    check("channel 1 done" in out, "nck-hal saw the program end", out)
+    v = pins(out)
+    check(v.get("nck.channel.1.status") == "3", "the channel ended (status 3)", out)
+    check(v.get("nck.error-id") == "0x00000000", "no error on nck.error-id", out)
+    final = subprocess.run([os.path.join(build, "nck"), "run", mill, contour, "--final", "-"],
+                           capture_output=True, text=True, timeout=120)
+    axes = json.loads(final.stdout)["channels"][0]["axes"]
+    bound = BOUND_MM
+    # On a non-real-time host whose cores are all busy (load above the core
+    # count during the run) the stepgen's base thread starves for whole
+    # milliseconds: what it then lags says nothing about nck.
+    load, cpus = os.getloadavg()[0], os.cpu_count() or 1
+    overloaded = load > cpus
+    run_s = int(v["nck.cycles"], 16) * T_SERVO_S
+    for i, a in enumerate("XYZ"):
+        fb = float(v[f"nck.axis.{a}.pos-fb"])
+        check(abs(fb - axes[a]["mcs"]) <= STEP_MM + 1e-9,
+              f"{a}: stepgen's feedback {fb:.4f} within one step of nck run's {axes[a]['mcs']}", out)
+        worst = max(abs(float(v[f"minmax.{i}.max"])), abs(float(v[f"minmax.{i}.min"])))
+        outside_s = float(v[f"integ.{i}.out"])
+        # A non-real-time host (CI) misses base-thread periods under load:
+        # the stepgen then falls behind for reasons not nck's. The bound must
+        # hold in 99 % of the cycles; docs/hal.md says how to judge every
+        # period on a PREEMPT_RT host.
+        print(f"{a}: worst |fb - cmd| {worst:.4f} mm; outside {bound:.3f} mm for {outside_s:.4f} s of {run_s:.1f} s")
+        if overloaded:
+            print(f"{a}: following not judged: the host is overloaded (load {load:.1f} on {cpus} cores), "
+                  "the base thread misses periods")
+            continue
+        check(outside_s <= 0.01 * run_s, f"{a}: |fb - cmd| <= v*T + 1 step = {bound:.3f} mm in >= 99 % of the cycles", out)
+elif case == "plc":
+    # (d): spindle.nc with the example's plain-HAL PLC (timedelay acknowledges
+    # each M/H function) waits where `nck run --plc spindle.plc` waits.
+    spindle = os.path.join(mill, "spindle.nc")
+    rc, out = run(example_text, program=spindle, timeout=90)
+    check(rc == 0 and "channel 1 done" in out, f"spindle.nc ran to its end through HAL (exit {rc})", out)
+    hal_waits = re.findall(r"^event t=\S+ ch=1 line=(\d+) ev=wait reason=(\S+)", out, re.M)
+    with tempfile.TemporaryDirectory() as d:
+        ev = os.path.join(d, "ev.jsonl")
+        subprocess.run([os.path.join(build, "nck"), "run", mill, spindle, "--plc", os.path.join(mill, "spindle.plc"),
+                        "--events", ev], check=True, capture_output=True, timeout=120)
+        run_waits = [(str(j["line"]), j["reason"]) for j in map(json.loads, open(ev)) if j.get("ev") == "wait"]
+    print("HAL waits:", hal_waits)
+    print("nck run waits:", run_waits)
+    check(len(run_waits) > 0 and hal_waits == run_waits,
+          "the same waits (line, reason), in the same order, as nck run --plc spindle.plc", out)
+elif case == "period":
+    rc, out = run(example_text.replace("period2=1000000", "period2=2000000"), timeout=30)
+    check("940400" in out, "a 2 ms thread for a 1 ms machine: error 940400", out)
+    check(pins(out).get("nck.error-id") == "0x000E5970", "nck.error-id shows 940400 (0xE5970)", out)
+    check(pins(out).get("nck.error") == "TRUE", "nck.error is on", out)
+    check("Segmentation" not in out and "crash" not in out.lower(), "rtapi_app did not crash", out)
+elif case == "wrong-type":
+    rc, out = run(example_text.replace("=> stepgen.0.position-cmd", "=> stepgen.0.enable"), timeout=30)
+    check(rc != 0, f"a float pin netted to a bit pin: the HAL file fails to load (exit {rc})", out)
+    check(re.search(r"type", out, re.I) is not None, "halcmd names the type mismatch", out)
+elif case == "missing-machine":
+    rc, out = run(example_text, machine="/nonexistent-machine", timeout=30)
+    check(rc != 0 and "940403" in out, f"a missing machine folder: error 940403, the file stops (exit {rc})", out)
+elif case == "missing-program":
+    rc, out = run(example_text, program="/nonexistent.nc", timeout=30)
+    check(rc != 0 and "940403" in out, f"a missing program: error 940403, the file stops (exit {rc})", out)
+elif case == "operator":
+    head = example_text[:example_text.index("\nstart\n")]
+    tail = """
+setp nck.channel.1.feedhold 1
+start
+loadusr -w sleep 1
+show pin nck.axis.X.pos-cmd
+setp nck.channel.1.feedhold 0
+setp nck.channel.1.feed-override 50
+loadusr -w sleep 2
+show pin nck.channel.1.program-state
+show pin nck.axis.X.pos-cmd
+setp nck.channel.1.cycle-start 1
+waitusr nck-hal
+show pin nck.channel.1.status
+show pin nck.axis.X.pos-cmd
+show pin nck.error-id
+stop
+"""
+    rc, out = run(head + "\n" + tail, program=os.path.join(src, "tests", "hal", "operator.nc"), timeout=60)
+    rows = re.findall(r"^\s*\d+\s+(?:bit|float|s32|u32)\s+(?:IN|OUT)\s+(\S+)\s+(\S+)", out, re.M)
+    xs = [float(v) for v, n in rows if n == "nck.axis.X.pos-cmd"]
+    state = [v for v, n in rows if n == "nck.channel.1.program-state"]
+    check(rc == 0 and len(xs) == 3, f"the session ran (exit {rc})", out)
+    check(xs[0] == 0.0, "feedhold on at the start: X has not moved after 1 s", out)
+    check(state == ["2"] and xs[1] == 10.0, "after feedhold off the program holds at M0 (program-state 2) with X at 10", out)
+    check(xs[2] == 20.0 and pins(out).get("nck.channel.1.status") == "3", "cycle start released M0: X at 20, ended", out)
+    check("event" in out and "channel 1 done" in out, "nck-hal saw the end", out)
+else:
+    print(f"unknown case {case}")
+    sys.exit(2)
