@@ -194,6 +194,8 @@ void read_head(const ParamList& l, AxisConfig& a) {
   a.kind = static_cast<AxisKind>(l.u32("kenngr.achs_typ", 1));
   a.axis_mode = l.u32("kenngr.achs_mode", a.axis_mode);
   a.drive_type = l.u32("kenngr.antr_typ", a.drive_type);
+  a.drive_simulation = l.flag("kenngr.drive_simulation", a.drive_simulation);
+  a.drive_enable_timeout_s = l.num("antr.enable_timeout_ms", a.drive_enable_timeout_s);
   a.sw_limit_neg = l.num("kenngr.swe_neg", a.sw_limit_neg);
   a.sw_limit_pos = l.num("kenngr.swe_pos", a.sw_limit_pos);
   a.initial_gear_stage = l.u32("kenngr.getriebe_stufe", a.initial_gear_stage);

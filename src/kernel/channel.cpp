@@ -31,6 +31,7 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
   if (in.reset && state_ == ProgramState::error) clear_error(cy);
   cause_ = done() ? CycleCause::none : CycleCause::transition;
   if (!done()) follow_stop(cy);
+  if (!done()) follow_drives(cy);
   if (!done()) follow_reset(cy);
   if (!done()) {
     run_blocks(cy);
@@ -54,7 +55,7 @@ void Channel::run_blocks(Cycle& cy) noexcept {
   for (;;) {
     if (!active_) {
       if (resetting_ && !continues_braking()) {
-        end_program(EndReason::reset, cy);
+        end_program(reset_reason(), cy);
         break;
       }
       if (state_ == ProgramState::hold) {
@@ -68,6 +69,7 @@ void Channel::run_blocks(Cycle& cy) noexcept {
         cause_ = CycleCause::starved;  // preparation has not queued the next block
         break;
       }
+      if (drives_hold(cy)) break;
       if (state_ == ProgramState::idle && manual_blocks_program(cy.in)) {
         cause_ = CycleCause::hold;  // manual mode keeps the program from starting
         break;
@@ -384,7 +386,40 @@ void Channel::follow_reset(Cycle& cy) noexcept {
   }
   // A thread's path is not braked on its own: it follows its spindle down.
   cy.resetting = resetting_ && !spindle_path_.threading();
-  if (resetting_ && !path_.moving()) end_program(EndReason::reset, cy);
+  if (resetting_ && !path_.moving()) end_program(reset_reason(), cy);
+}
+
+// A drive's error (its ID names the axis) brakes the path within its
+// limits as a reset does; at standstill the program ends in error.
+void Channel::follow_drives(Cycle& cy) noexcept {
+  const DriveReport& r = cy.machine.drives;
+  if (r.axis < 0 || drive_failed_) return;
+  drive_failed_ = true;
+  set_state(ProgramState::error, StateReason::error, cy);
+  ev::Error e{{r.error, {}, {}}};
+  e.axis = r.axis;
+  cy.emit(e);
+  if (!resetting_) {
+    resetting_ = true;
+    end_spindles(EndReason::error, cy, spindle_path_.tap_spindle());
+  }
+}
+
+// Before a block starts: the program waits until every CiA 402 drive is
+// in operation enabled (wait / wait_end events, reason drive_enable).
+bool Channel::drives_hold(Cycle& cy) noexcept {
+  const bool hold = !cy.machine.drives.ready && !resetting_;
+  if (hold != drive_wait_) {
+    drive_wait_ = hold;
+    const ev::Wait e{WaitReason::drive_enable, std::nullopt};
+    if (hold) cy.emit(e);
+    else cy.emit(ev::WaitEnd{e});
+  }
+  if (hold) {
+    cause_ = CycleCause::wait;
+    wait_reason_ = WaitReason::drive_enable;
+  }
+  return hold;
 }
 
 // Between blocks while a reset brakes: the path still moving runs on into
@@ -478,7 +513,11 @@ void Channel::end_program(EndReason reason, Cycle& cy) noexcept {
     return;
   }
   ax_links_.end(reason, cy);
-  stopped_ = resetting_ = false;
+  stopped_ = resetting_ = drive_failed_ = false;
+  if (drive_wait_) {
+    drive_wait_ = false;
+    cy.emit(ev::WaitEnd{ev::Wait{WaitReason::drive_enable, std::nullopt}});
+  }
   const bool ok = reason == EndReason::m30 || reason == EndReason::m2;
   status_ = ok ? ChannelStatus::ended : ChannelStatus::aborted;
   active_ = false;

@@ -136,6 +136,10 @@ class Channel {
   // leaves the error state.
   void follow_reset(Cycle& cy) noexcept;
   void clear_error(Cycle& cy) noexcept;
+  // CiA 402 drives: a drive's error brakes and aborts; the program waits for enable.
+  void follow_drives(Cycle& cy) noexcept;
+  bool drives_hold(Cycle& cy) noexcept;
+  EndReason reset_reason() const noexcept { return drive_failed_ ? EndReason::error : EndReason::reset; }
   bool continues_braking() const noexcept;
   void finish_mdi(Cycle& cy) noexcept;
   void fail_mdi(Cycle& cy) noexcept;
@@ -163,6 +167,8 @@ class Channel {
   std::uint8_t stops_sent_ = 0, discard_reported_ = 0;
   bool stopped_ = false;       // NC stop: held until cycle start
   bool resetting_ = false;     // a reset brakes the path: the program ends at standstill
+  bool drive_failed_ = false;  // a drive's error brakes the path as a reset does; the program ends in error
+  bool drive_wait_ = false;    // the program waits for the CiA 402 drives (a wait event was sent)
   // What this cycle went to (time by cause), set where the cycle stops.
   CycleCause cause_ = CycleCause::none;
   WaitReason wait_reason_ = WaitReason::plc_ack;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "channel.hpp"
+#include "drive_units.hpp"
 #include "plc_outputs.hpp"
 #include "spindle_unit.hpp"
 
@@ -12,8 +13,8 @@ namespace nck::kernel {
 
 // An embedder keeps one of each outside the real-time thread's stack
 // (docs/embedding.md gives these sizes).
-static_assert(sizeof(TickInput) == 22328, "docs/embedding.md gives TickInput's size");
-static_assert(sizeof(TickOutput) == 34080, "docs/embedding.md gives TickOutput's size");
+static_assert(sizeof(TickInput) == 24376, "docs/embedding.md gives TickInput's size");
+static_assert(sizeof(TickOutput) == 38688, "docs/embedding.md gives TickOutput's size");
 
 namespace {
 
@@ -56,6 +57,8 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
   time_s_ = 0;
   machine_ = std::make_unique<const config::Machine>(machine);
   plc_outputs_ = std::make_unique<PlcOutputs>();
+  drive_units_ = std::make_unique<DriveUnits>();
+  drive_units_->configure(*machine_, cycle_s_);
   ext_commands_ = plc::ExtCommandQueue{};
   spindle_map_ = plc::build_spindle_map(*machine_);
   if (spindle_map_.count > kMaxMachineSpindles)
@@ -122,6 +125,25 @@ const spindle::SpindleStatus& Kernel::spindle_status(std::size_t index) const {
   return spindles_.at(index).axis.status();
 }
 const plc::SpindleMap& Kernel::spindle_map() const { return spindle_map_; }
+const std::string& Kernel::axis_name(std::size_t index) const {
+  static const std::string none;
+  return machine_ && index < machine_->axes.size() ? machine_->axes[index].name : none;
+}
+
+// The CiA 402 drives' set points: each channel path axis's machine set
+// point, and its velocity from the last one (mm, mm/s). rt
+void Kernel::write_drive_set_points(TickOutput& out) noexcept {
+  for (std::size_t c = 0; c < machine_->channels.size(); ++c) {
+    const config::ChannelConfig& ch = machine_->channels[c];
+    for (std::size_t j = 0; j < ch.axes.size() && j < kMaxAxes; ++j) {
+      const int a = ch.axes[j].axis_index;
+      if (a < 0 || static_cast<std::size_t>(a) >= drives::kMaxDrives) continue;
+      const double pos = out.channels[c].axis_mcs[j];
+      const double vel = (pos - out.drives[static_cast<std::size_t>(a)].target_pos) / cycle_s_;
+      drive_units_->write_set_point(static_cast<std::size_t>(a), pos, vel, out);
+    }
+  }
+}
 
 std::vector<std::uint32_t> Kernel::active_links(std::size_t ch) const {
   std::vector<std::uint32_t> out;
@@ -155,11 +177,17 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   take_external_commands(in, t_s, out);
   run_external_commands(t_s, out);
   ChannelContext ctx{spindles_.data(), spindles_.size(), plc_outputs_.get(), &in.spindles};
+  if (drive_units_ && !drive_units_->empty()) {
+    for (const ChannelInput& c : in.channels)
+      if (c.reset) drive_units_->on_reset();
+    ctx.drives = drive_units_->step(in, out);
+  }
   for (std::size_t i = 0; i < channels_.size(); ++i) {
     channels_[i]->tick(t_s, cycle_s_, in.channels[i], out.channels[i], out, ctx);
     channel_done_[i] = channels_[i]->done();  // only a tick changes it
   }
   tick_spindles(t_s, out);
+  if (drive_units_ && !drive_units_->empty()) write_drive_set_points(out);
   ++cycles_;
   time_s_ = static_cast<double>(cycles_ * cycle_us_) / 1e6;
 }

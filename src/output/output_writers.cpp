@@ -123,8 +123,12 @@ void add_diagnosis_fields(nlohmann::ordered_json& j, const kernel::Event& e, con
   if (!d) d = e.get<kernel::ev::Error>();
   if (!d) return;
   const SourceLoc loc{names.file(e.channel_index(), e.at.file_id), e.at.line, 0};
-  add_diagnostic_fields(j, diagnostic_json(d->id, names.text(d->id, d->message), loc, e.channel,
+  std::string text = names.text(d->id, d->message);
+  // A drive's diagnostic names its axis (CiA 402 drives, issue 46).
+  if (d->axis && names.run) text += fmt::format(" (axis {})", names.run->kernel().axis_name(static_cast<std::size_t>(*d->axis)));
+  add_diagnostic_fields(j, diagnostic_json(d->id, text, loc, e.channel,
                                            e.get<kernel::ev::Warning>() ? Severity::warning : Severity::error));
+  if (d->axis && names.run) j["axis"] = names.run->kernel().axis_name(static_cast<std::size_t>(*d->axis));
 }
 }  // namespace
 

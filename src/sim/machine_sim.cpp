@@ -16,7 +16,7 @@ Probe make_probe(const config::Machine& m, std::size_t ch) {
 }  // namespace
 
 MachineSim::MachineSim(const config::Machine& m)
-    : plc_(m.sim), drives_(m), hli_(plc::make_hli_image(m)), map_(plc::build_spindle_map(m)) {
+    : plc_(m.sim), drives_(m), cia402_(m), hli_(plc::make_hli_image(m)), map_(plc::build_spindle_map(m)) {
   channels_ = std::min(m.channels.size(), config::kMaxChannels);
   spindles_ = std::min(map_.count, kernel::kMaxMachineSpindles);
   // A dry run has no operator: unless the scenario says otherwise, every
@@ -93,6 +93,7 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
     if (sensor_on_[ch]) sensors_[ch].sample(t_s, ci.dist_sensor_valid, ci.dist_sensor_mm);
     else ci.dist_sensor_valid = false;
   }
+  cia402_.read(in);
   for (std::size_t i = 0; i < spindles_; ++i) {
     in.spindles[i] = hli_.spindle_control[i];
     hli_.spindle_control[i].reset = false;
@@ -100,6 +101,7 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
 }
 
 void MachineSim::write(const kernel::TickOutput& out) noexcept {
+  cia402_.write(out);
   for (const kernel::TechRequest& r : out.tech_outputs) (void)plc_.submit(r.handle, r.output, t_s_);
   if (player_.has_triggers())  // lines waiting for a program state ('@hold cycle_start')
     for (const kernel::Event& e : out.events)
@@ -169,6 +171,11 @@ void MachineSim::apply(const sim::ScenarioAction& a, kernel::TickInput& in) noex
     case K::jog: push_jog(jog_request(as<act::Jog>(a)), in.channels[c]); return;
     case K::jog_increment: push_jog(jog_request(as<act::JogIncrement>(a)), in.channels[c]); return;
     case K::mode: ch.manual_mode = as<act::Mode>(a).manual; return;
+    case K::drive_fault: {
+      const act::DriveFault& f = as<act::DriveFault>(a);
+      if (f.axis.index >= 0) cia402_.set_fault(c, static_cast<std::size_t>(f.axis.index), f.on);
+      return;
+    }
     case K::variable: set_variable(as<act::Variable>(a), in.channels[c]); return;
     case K::spindle_cmd:
       if (!in.ext_commands.push_back(as<act::SpindleCmd>(a).cmd)) ++in.ext_commands_lost;

@@ -54,6 +54,7 @@ constexpr std::array kActions = {
     ActionSpelling{"jog", ActionKind::jog},
     ActionSpelling{"jog_increment", ActionKind::jog_increment},
     ActionSpelling{"mode", ActionKind::mode},
+    ActionSpelling{"drive_fault", ActionKind::drive_fault},
 };
 
 // Parses one line; reports its first problem and returns nothing then.
@@ -231,6 +232,7 @@ bool LineParser::parse_args(ScenarioAction& a) {
         else if constexpr (std::is_same_v<T, act::Jog>) return take_jog(p);
         else if constexpr (std::is_same_v<T, act::JogIncrement>) return take_jog_increment(p);
         else if constexpr (std::is_same_v<T, act::Mode>) return take_mode(p);
+        else if constexpr (std::is_same_v<T, act::DriveFault>) return take_axis(p.axis) && take_switch(p.on);
         else return true;  // reset, stop, cycle_start: no arguments
       },
       a.payload);

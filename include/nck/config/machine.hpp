@@ -147,7 +147,11 @@ struct AxisConfig {
   std::string name;                     // kopf.log_achs_name
   AxisKind kind = AxisKind::translatory;  // kenngr.achs_typ
   std::uint32_t axis_mode = 0x1;        // kenngr.achs_mode
-  std::uint32_t drive_type = 4;           // kenngr.antr_typ (4 = simulation)
+  std::uint32_t drive_type = 4;           // kenngr.antr_typ (1 conventional, 4 simulation, 8 CiA 402, 16 virtual)
+  bool drive_simulation = false;          // P-AXIS-00790 (kenngr.drive_simulation): simulate whatever antr_typ says
+  double drive_enable_timeout_s = 1.0;    // antr.enable_timeout_ms (nck): time to reach operation enabled
+  // The drive the NC talks to: antr_typ 8 is CiA 402 unless P-AXIS-00790 simulates it.
+  bool is_cia402() const { return drive_type == 8 && !drive_simulation; }
   double sw_limit_neg = -10000, sw_limit_pos = 10000;  // kenngr.swe_neg/swe_pos software limits (mm / deg)
   std::uint32_t initial_gear_stage = 1; // kenngr.getriebe_stufe
   bool has_preferred_direction = false;       // P-AXIS-00224 (kenngr.vorz_richtung), spindle

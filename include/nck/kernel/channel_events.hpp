@@ -53,6 +53,7 @@ struct Diagnosis {
   ErrorId id{};
   std::optional<std::uint32_t> message;  // Kernel::message() index; none: the ID's table text
   std::optional<std::int8_t> spindle;    // the spindle (kernel index) it concerns
+  std::optional<std::int8_t> axis{};     // the drive (machine axis list index) it concerns
 };
 struct Warning : Diagnosis {};
 struct Error : Diagnosis {};

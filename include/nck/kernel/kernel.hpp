@@ -28,6 +28,7 @@ namespace nck::kernel {
 class Channel;
 struct SpindleUnit;
 class PlcOutputs;
+class DriveUnits;
 
 // A channel's execution state, for the final state.
 struct ChannelState {
@@ -64,6 +65,8 @@ class Kernel {
   // The spindle's HLI status object as the last tick wrote it to hli_spindles.
   plc::SpindleStatus hli_spindle_status(std::size_t index) const;
   const plc::SpindleMap& spindle_map() const;
+  // The name of machine axis list `index` (kopf.log_achs_name; "" when none).
+  const std::string& axis_name(std::size_t index) const;
   double cycle_time_s() const { return cycle_s_; }
 
   // The queues of channel ch (0-based); see nck/kernel/queues.hpp for who
@@ -97,6 +100,7 @@ class Kernel {
   void run_external_commands(double t_s, TickOutput& out) noexcept;
   void hand_out_external_commands() noexcept;
   void tick_spindles(double t_s, TickOutput& out) noexcept;
+  void write_drive_set_points(TickOutput& out) noexcept;
 
   std::unique_ptr<const config::Machine> machine_;  // own copy: channels refer into it
   std::vector<SpindleUnit> spindles_;
@@ -105,6 +109,7 @@ class Kernel {
   plc::ExtCommandQueue ext_commands_;
   std::unique_ptr<PlcOutputs> plc_outputs_;
   SpindleDrives* drives_ = nullptr;  // not owned
+  std::unique_ptr<DriveUnits> drive_units_;  // the CiA 402 drives' state machines
   std::vector<std::unique_ptr<CommandQueue>> command_queues_;
   std::vector<std::unique_ptr<FeedbackQueue>> feedback_queues_;
   std::vector<std::unique_ptr<Channel>> channels_;

@@ -17,7 +17,8 @@ namespace nck::kernel {
 enum class WaitReason : std::uint8_t {
   plc_ack, speed_reached, in_position, standstill, homing, gear_change, expl_syn, dwell, feedhold,
   coupling,  // a spindle coupling holds the path (G95/G33/G63 with the spindle at rest); time by cause only
-  zero_mark  // G33 waits for the spindle's zero mark (+ OFFSET) before it cuts
+  zero_mark,  // G33 waits for the spindle's zero mark (+ OFFSET) before it cuts
+  drive_enable  // CiA 402 drives power up to operation enabled before the program moves
 };
 
 constexpr const char* wait_reason_name(WaitReason r) noexcept {
@@ -33,6 +34,7 @@ constexpr const char* wait_reason_name(WaitReason r) noexcept {
     case WaitReason::feedhold: return "feedhold";
     case WaitReason::coupling: return "coupling";
     case WaitReason::zero_mark: return "zero_mark";
+    case WaitReason::drive_enable: return "drive_enable";
   }
   return "plc_ack";
 }

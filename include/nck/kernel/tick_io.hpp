@@ -14,6 +14,7 @@
 #include "nck/config/machine.hpp"
 #include "nck/core/axes.hpp"
 #include "nck/core/fixed_vector.hpp"
+#include "nck/drives/drive_io.hpp"
 #include "nck/kernel/event.hpp"
 #include "nck/kernel/program_state.hpp"
 #include "nck/plc/ext_command.hpp"
@@ -110,6 +111,9 @@ struct TickInput {
   FixedVector<plc::PlcAck, kMaxPendingOutputs> acks;
   FixedVector<plc::ExtSpindleCommand, plc::ExtCommandQueue::kCapacity> ext_commands;
   std::uint32_t ext_commands_lost = 0;  // arrived but did not fit (reported as PlcExtCommandQueueFull)
+  // What each axis's and spindle's drive reported (by machine axis list,
+  // nck/drives/drive_io.hpp); read for CiA 402 and conventional drives only.
+  std::array<drives::DriveFeedback, drives::kMaxDrives> drives{};
 };
 
 enum class ChannelStatus : std::uint8_t { idle, running, waiting, ended, aborted };
@@ -175,6 +179,9 @@ struct TickOutput {
   FixedVector<TechRequest, kMaxPendingOutputs> tech_outputs;
   FixedVector<Event, kMaxEventsPerTick> events;
   std::uint32_t events_dropped = 0;  // events that did not fit this cycle
+  // What each axis's and spindle's drive gets (by machine axis list,
+  // nck/drives/drive_io.hpp); written for CiA 402 and conventional drives only.
+  std::array<drives::DriveCommand, drives::kMaxDrives> drives{};
 
   // Adds an event, or counts it as dropped when the cycle's list is full. rt
   void emit(const Event& e) noexcept {

@@ -20,6 +20,7 @@
 #include "nck/kernel/tick_io.hpp"
 #include "nck/plc/hli.hpp"
 #include "nck/sim/scenario.hpp"
+#include "nck/sim/cia402_drives.hpp"
 #include "nck/sim/distance_sensor.hpp"
 #include "nck/sim/plc_sim.hpp"
 #include "nck/sim/probe.hpp"
@@ -108,6 +109,7 @@ class MachineSim {
 
   PlcSim plc_;
   SpindleDrives drives_;
+  Cia402Drives cia402_;  // the simulated CiA 402 drives (kenngr.antr_typ 8)
   plc::HliImage hli_;
   plc::SpindleMap map_;
   ScenarioPlayer player_;

@@ -70,6 +70,9 @@ struct Mdi { std::uint32_t text = 0; };  // index of the NC block's text (Scenar
 struct Jog { AxisRef axis; std::int8_t direction = 0; double speed_mm_min = 0; };  // 0: the axis's jog speed
 struct JogIncrement { AxisRef axis; std::int8_t direction = 1; double step_mm = 0; };
 struct Mode { bool manual = false; };
+// The simulated CiA 402 drive of a path axis reports a fault while on
+// (kenngr.antr_typ 8; a fault held from the start: the drive never enables).
+struct DriveFault { AxisRef axis; bool on = false; };
 
 }  // namespace act
 
@@ -99,6 +102,7 @@ enum class ActionKind : std::uint8_t {
   jog,                  // jog X + [600] / jog X stop (speed mm/min)
   jog_increment,        // jog_increment X - 0.1      (one step in mm)
   mode,                 // mode manual|automatic
+  drive_fault,          // drive_fault X on|off       (the simulated CiA 402 drive faults)
 };
 
 using ActionPayload =
@@ -106,7 +110,7 @@ using ActionPayload =
                  act::SpindleFeedhold, act::SpindleStopAtEnd, act::Reset, act::SpindleReset, act::OptionalStop,
                  act::Silent, act::SpindleCmd, act::Handwheel, act::Variable, act::CycleStart, act::AutoCycleStart,
                  act::SingleStep, act::SkipMask, act::BlockSearch, act::Stop, act::Mdi, act::Jog,
-                 act::JogIncrement, act::Mode>;
+                 act::JogIncrement, act::Mode, act::DriveFault>;
 
 // The action's name as a scenario file writes it (the primary spelling).
 std::string_view action_name(ActionKind k) noexcept;
@@ -160,7 +164,8 @@ static_assert(action_kind_of<act::Mdi>() == ActionKind::mdi);
 static_assert(action_kind_of<act::Jog>() == ActionKind::jog);
 static_assert(action_kind_of<act::JogIncrement>() == ActionKind::jog_increment);
 static_assert(action_kind_of<act::Mode>() == ActionKind::mode);
-static_assert(std::variant_size_v<ActionPayload> == static_cast<std::size_t>(ActionKind::mode) + 1);
+static_assert(action_kind_of<act::DriveFault>() == ActionKind::drive_fault);
+static_assert(std::variant_size_v<ActionPayload> == static_cast<std::size_t>(ActionKind::drive_fault) + 1);
 
 // Actions cross the live kernel's queue (LiveKernel::operate) and the
 // machine's fixed-size list of operator actions: copied as bytes.

@@ -14,6 +14,7 @@
 #include "nck/plc/hli.hpp"
 #include "../plc_outputs.hpp"
 #include "../spindle_unit.hpp"
+#include "../drive_units.hpp"
 
 namespace nck::kernel {
 
@@ -23,6 +24,7 @@ struct ChannelContext {
   std::size_t spindle_count = 0;
   PlcOutputs* plc = nullptr;
   const std::array<plc::SpindleControl, kMaxMachineSpindles>* spindle_controls = nullptr;
+  DriveReport drives{};  // the CiA 402 drives this cycle (all ready without any)
 
   // Spindle s (kernel index), or nullptr for none / out of range. rt
   SpindleUnit* spindle(std::int8_t s) const noexcept {

@@ -127,6 +127,7 @@ TEST(ZeroAllocation, SeedLinkProgramsRunThroughTickWithoutHeap) {
 TEST(ZeroAllocation, WholeExamplesRunThroughTickWithoutHeap) {
   const Example examples[] = {
       {"examples/mill", {"examples/mill/contour.nc"}},
+      {"examples/mill-cia402", {"examples/mill-cia402/enable.nc"}},  // CiA 402 drives: enable, set points
       {"examples/mill", {"examples/mill/contour.nc"}, "examples/mill/single_step.plc"},  // hold and release
       {"examples/mill", {}, "examples/mill/mdi.plc"},                                    // MDI
       {"examples/mill", {"examples/mill/contour_blend.nc"}},

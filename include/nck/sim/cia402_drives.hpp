@@ -1,0 +1,41 @@
+#pragma once
+// The simulated machine's CiA 402 drives: one cia402::Device per axis list
+// whose kenngr.antr_typ is 8 (and that P-AXIS-00790 does not simulate the
+// old way). Each cycle the device takes the kernel's controlword, steps its
+// power state machine and reports the statusword; while operation is
+// enabled it follows the target position exactly (an ideal drive: the
+// NC's set point is its actual position, following error 0). A scenario
+// line (drive_fault X on|off) holds its fault input.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "nck/config/machine.hpp"
+#include "nck/drives/cia402.hpp"
+#include "nck/kernel/tick_io.hpp"
+
+namespace nck::sim {
+
+class Cia402Drives {
+ public:
+  explicit Cia402Drives(const config::Machine& m);  // setup
+  // rt: the statuswords and actual values of the last cycle into the kernel's input.
+  void read(kernel::TickInput& in) const noexcept;
+  // rt: one step of every device with the controlwords the kernel wrote.
+  void write(const kernel::TickOutput& out) noexcept;
+  // rt: channel ch's path axis j (0-based) has its fault input on / off.
+  void set_fault(std::size_t ch, std::size_t j, bool on) noexcept;
+
+ private:
+  struct Drive {
+    bool present = false;
+    bool fault = false;
+    drives::cia402::Device device{2};  // fault reaction: 2 cycles
+    drives::DriveFeedback fb{};
+  };
+  std::array<Drive, drives::kMaxDrives> drives_{};
+  // Channel path axis -> machine axis list, for drive_fault lines.
+  std::array<std::array<std::int16_t, kMaxAxes>, config::kMaxChannels> axis_of_{};
+};
+
+}  // namespace nck::sim

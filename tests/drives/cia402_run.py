@@ -1,0 +1,58 @@
+#!/usr/bin/env python3
+"""`nck run` on examples/mill-cia402 (issue 46, tests b and bad input):
+the program waits for the CiA 402 drives (wait / wait_end drive_enable) and
+runs to M30; a fault injected by the scenario is 940501 naming Y and the
+other axes brake (X's speed falls by at most a_max per cycle in the trace);
+a drive that never enables is 940500 naming Z, not a hang."""
+import csv, json, os, subprocess, sys, tempfile
+
+nck, root = sys.argv[1], sys.argv[2]
+ex = os.path.join(root, "examples/mill-cia402")
+failures = []
+
+
+def run(plc=None):
+    d = tempfile.mkdtemp()
+    ev, tr = os.path.join(d, "ev.jsonl"), os.path.join(d, "tr.csv")
+    cmd = [nck, "run", ex, os.path.join(ex, "enable.nc"), "--events", ev, "--trace", tr]
+    if plc:
+        cmd += ["--plc", os.path.join(ex, plc)]
+    p = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
+    events = [json.loads(l) for l in open(ev)]
+    rows = list(csv.DictReader(open(tr)))
+    return p.returncode, events, rows
+
+
+def check(cond, what):
+    if not cond:
+        failures.append(what)
+
+
+rc, events, _ = run()
+check(rc == 0, f"enable.nc: exit {rc}")
+waits = [e for e in events if e["ev"] in ("wait", "wait_end") and e.get("reason") == "drive_enable"]
+check([e["ev"] for e in waits] == ["wait", "wait_end"], f"enable.nc: drive_enable waits {waits}")
+check(not [e for e in events if e["ev"] == "error"], "enable.nc: no error")
+
+rc, events, rows = run("fault.plc")
+errors = [e for e in events if e["ev"] == "error"]
+check(rc != 0, "fault.plc: nonzero exit")
+check(len(errors) == 1 and errors[0]["id"] == 940501 and errors[0].get("axis") == "Y",
+      f"fault.plc: one 940501 naming Y, got {errors}")
+# X brakes: its speed changes by at most a_max * T per cycle (x.lis: a_max 3000 mm/s^2; 1 ms cycle).
+xcol = next(k for k in rows[0] if k.strip().upper().startswith("X"))
+xs = [float(r[xcol]) for r in rows]
+vs = [(b - a) / 0.001 for a, b in zip(xs, xs[1:])]
+dv = max(abs(b - a) for a, b in zip(vs, vs[1:]))
+check(dv / 0.001 <= 3000 * 1.05, f"fault.plc: X's acceleration {dv / 0.001:.0f} mm/s^2: not braked within limits")
+check(abs(vs[-1]) < 1e-6, "fault.plc: X stands at the end")
+
+rc, events, _ = run("never_enables.plc")
+errors = [e for e in events if e["ev"] == "error"]
+check(len(errors) == 1 and errors[0]["id"] == 940500 and errors[0].get("axis") == "Z",
+      f"never_enables.plc: one 940500 naming Z, got {errors}")
+
+for f in failures:
+    print("FAIL:", f)
+print("ok" if not failures else f"{len(failures)} failure(s)")
+sys.exit(1 if failures else 0)
