@@ -14,7 +14,7 @@ namespace nck::kernel {
 // An embedder keeps one of each outside the real-time thread's stack
 // (docs/embedding.md gives these sizes).
 static_assert(sizeof(TickInput) == 24376, "docs/embedding.md gives TickInput's size");
-static_assert(sizeof(TickOutput) == 38688, "docs/embedding.md gives TickOutput's size");
+static_assert(sizeof(TickOutput) == 35616, "docs/embedding.md gives TickOutput's size");
 
 namespace {
 
