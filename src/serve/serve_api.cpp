@@ -272,9 +272,16 @@ std::expected<std::unique_ptr<sim::DryRun>, Diagnostic> ServeApi::make_run(
   return live;
 }
 
+namespace {
+// The `channel` of a GET's query (1 without one; 0 when it is no number).
+std::size_t channel_of(std::string_view target) {
+  const std::string_view text = query_value(target, "channel");
+  return text.empty() ? 1 : static_cast<std::size_t>(std::atoi(std::string(text).c_str()));
+}
+}  // namespace
+
 HttpReply ServeApi::program_text(std::string_view target) const {
-  const std::string_view ch_text = query_value(target, "channel");
-  std::size_t ch = ch_text.empty() ? 1 : static_cast<std::size_t>(std::atoi(std::string(ch_text).c_str()));
+  const std::size_t ch = channel_of(target);
   if (ch < 1 || ch > programs_.size()) return error_reply(400, ErrorId::ApiBadValue, "'channel' is no channel of the machine");
   const std::string_view from_text = query_value(target, "from");
   const long long from = from_text.empty() ? 1 : std::atoll(std::string(from_text).c_str());
@@ -292,8 +299,7 @@ HttpReply ServeApi::program_text(std::string_view target) const {
 // The check plans the whole program once per load (a 100,000-point
 // preview in well under a second); later asks get the same answer.
 HttpReply ServeApi::preview(std::string_view target) {
-  const std::string_view ch_text = query_value(target, "channel");
-  std::size_t ch = ch_text.empty() ? 1 : static_cast<std::size_t>(std::atoi(std::string(ch_text).c_str()));
+  const std::size_t ch = channel_of(target);
   if (ch < 1 || ch > programs_.size()) return error_reply(400, ErrorId::ApiBadValue, "'channel' is no channel of the machine");
   std::string& page = previews_[ch - 1];
   if (page.empty()) page = preview_page(machine_, ch, programs_[ch - 1]);
@@ -301,8 +307,7 @@ HttpReply ServeApi::preview(std::string_view target) {
 }
 
 HttpReply ServeApi::path_so_far(std::string_view target) const {
-  const std::string_view ch_text = query_value(target, "channel");
-  std::size_t ch = ch_text.empty() ? 1 : static_cast<std::size_t>(std::atoi(std::string(ch_text).c_str()));
+  const std::size_t ch = channel_of(target);
   if (ch < 1 || ch > programs_.size()) return error_reply(400, ErrorId::ApiBadValue, "'channel' is no channel of the machine");
   return HttpReply{200, "application/json", path_.json(ch, generation_), {}};
 }
