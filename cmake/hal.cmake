@@ -32,3 +32,17 @@ target_compile_definitions(nck-hal PRIVATE ULAPI _GNU_SOURCE)
 target_include_directories(nck-hal SYSTEM PRIVATE ${NCK_HAL_INCLUDE})
 target_include_directories(nck-hal PRIVATE ${PROJECT_SOURCE_DIR}/apps)
 target_link_libraries(nck-hal PRIVATE nck_prep ${NCK_LINUXCNC_HAL_LIB})
+
+# The nck-hal Debian package (component "hal", cmake/package.cmake): the
+# module where rtapi_app loads modules from, nck-hal beside halrun.
+install(TARGETS nck_hal_rt LIBRARY DESTINATION lib/linuxcnc/modules COMPONENT hal)
+install(TARGETS nck-hal RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT hal)
+# nck.so is built against this LinuxCNC's HAL ABI (hal.h's structures,
+# rtapi_app's loader): the package depends on exactly this version.
+execute_process(COMMAND dpkg-query -W "-f=\${Version}" linuxcnc-uspace-dev
+                OUTPUT_VARIABLE NCK_LINUXCNC_VERSION RESULT_VARIABLE dpkg_rc ERROR_QUIET)
+if(dpkg_rc EQUAL 0 AND NCK_LINUXCNC_VERSION)
+  set(CPACK_DEBIAN_HAL_PACKAGE_DEPENDS "linuxcnc-uspace (= ${NCK_LINUXCNC_VERSION})")
+else()
+  message(STATUS "linuxcnc-uspace-dev is not a Debian package here: the nck-hal package names no LinuxCNC version")
+endif()

@@ -42,7 +42,9 @@ install(FILES ${PROJECT_BINARY_DIR}/nck.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/p
 
 # Debian packages (cpack -G DEB in the build folder; docs/embedding.md):
 # nck (component runtime: the command line, examples under
-# /usr/share/nck/examples, docs), nck-dev (dev) and python3-nck (python).
+# /usr/share/nck/examples, docs), nck-dev (dev), python3-nck (python) and,
+# with NCK_HAL, nck-hal (hal: nck.so and nck-hal for LinuxCNC, depending on
+# the one linuxcnc-uspace version they were built against, cmake/hal.cmake).
 # Shared-library dependencies come from dpkg-shlibdeps (libfmt9 ...).
 set(CPACK_PACKAGE_NAME nck)
 set(CPACK_PACKAGE_VENDOR "the nck developers")
@@ -62,4 +64,8 @@ set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)
 set(CPACK_DEBIAN_PYTHON_PACKAGE_NAME python3-nck)
 set(CPACK_DEBIAN_PYTHON_PACKAGE_DEPENDS "python3 (>= 3.11), python3-numpy")
 set(CPACK_DEBIAN_PYTHON_PACKAGE_SECTION python)
+set(CPACK_DEBIAN_HAL_PACKAGE_NAME nck-hal)
+set(CPACK_DEBIAN_HAL_PACKAGE_RECOMMENDS nck)  # the HAL examples ship in nck (/usr/share/nck/examples/hal)
+set(CPACK_DEBIAN_HAL_PACKAGE_SECTION misc)
+set(CPACK_COMPONENT_HAL_DESCRIPTION "nck's real-time kernel as LinuxCNC HAL components (loadrt nck, loadusr nck-hal)")
 include(CPack)

@@ -4,7 +4,8 @@
 # suite a plain build runs what sanitizers would distort or slow past
 # reason: the report's absolute memory figures (ReportMemory.*), the Python
 # module's RSS plateau over 100 runs (python.test_stress), the operator's 1 s bar under attack (serve.attack),
-# the LinuxCNC HAL sessions (hal.*: a sanitized nck.so cannot load into rtapi_app) and the
+# the LinuxCNC HAL sessions (hal.*, and package.deb's run of the packaged nck-hal: a sanitized
+# nck.so cannot load into rtapi_app) and the
 # random-program property tests at CI's count (NCK_PROPERTY_COUNT, 200).
 # Before the suites, each libFuzzer
 # target for NCK_FUZZ_SECONDS (default 20) over its seed corpus (clang 14,
@@ -29,7 +30,7 @@ if [ "$preset" = asan ]; then
   [ -f /usr/include/linuxcnc/hal.h ] && hal_targets=(nck_hal_rt nck-hal)
   cmake --build --preset default -j "$(nproc)" --target nck test_app peak_rss _nck "${hal_targets[@]}"
   NCK_PROPERTY_COUNT="${NCK_PROPERTY_COUNT:-200}" ctest --preset default -j "$(nproc)" \
-    -R '^(ReportMemory\..*|ContinuousPathProperty\..*|python\.test_stress|serve\.attack|hal\..*)$' || plain_rc=$?
+    -R '^(ReportMemory\..*|ContinuousPathProperty\..*|python\.test_stress|serve\.attack|hal\..*|package\.deb)$' || plain_rc=$?
 fi
 log=$(mktemp)
 set +e
