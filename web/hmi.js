@@ -10,7 +10,9 @@
   const $ = (id) => document.getElementById(id);
   const MAX_ERRORS = 100;
 
-  const hmi = { ready: false, panels: [], errors: [], state: null, stats: null, catalog: new Map() };
+  const MAX_WAITS = 500, TIMELINE_MS = 500;
+  const hmi = { ready: false, panels: [], errors: [], state: null, stats: null, catalog: new Map(),
+    waits: [], timeline: [] };
   window.nckHmi = hmi;
 
   // One entry of the errors list: what happened, where, and what to do.
@@ -35,8 +37,39 @@
     addError("refused", e.id, e.message, what + at, e.remedy);
   }
 
+  // The current run's waits from the stream's wait / wait_end events, for
+  // the timeline of who waits for whom (timeline.js). A new run's events
+  // come before the first state that names it (and its clock may start
+  // again at 0): it keeps the waits that arrived after the old run's last
+  // state.
+  let waitsRun = -1, waitsFrom = 0, waitsAtState = 0, timelineDrawn = 0;
+  function noteWait(e) {
+    const same = (w) => w.t1 == null && w.ch === e.ch && w.spindle === e.spindle && w.reason === e.reason && w.fn === e.fn;
+    if (e.ev === "wait" && hmi.waits.length < MAX_WAITS)
+      hmi.waits.push({ ch: e.ch, spindle: e.spindle, reason: e.reason, fn: e.fn, t0: e.t, t1: null });
+    else if (e.ev === "wait_end") {
+      const w = hmi.waits.find(same);
+      if (w) w.t1 = e.t;
+    }
+  }
+  function drawTimeline(s) {
+    if (s.run !== waitsRun) {
+      waitsRun = s.run;
+      hmi.waits.splice(0, waitsAtState);
+      waitsFrom = Math.min(s.t_s, ...hmi.waits.map((w) => w.t0));
+    }
+    waitsAtState = hmi.waits.length;
+    const now = performance.now();
+    if (now - timelineDrawn < TIMELINE_MS) return;
+    timelineDrawn = now;
+    $("timeline-section").hidden = !hmi.waits.length;
+    if (!hmi.waits.length) return;
+    hmi.timeline = window.NckTimeline.draw($("timeline"), hmi.waits, s.t_s, hmi.panels.map((p) => "channel " + p.n), waitsFrom);
+  }
+
   function onEvents(events) {
     for (const e of events) {
+      if (e.ev === "wait" || e.ev === "wait_end") noteWait(e);
       if (e.ev !== "error" && e.ev !== "warning") continue;
       const where = [e.ch ? "channel " + e.ch : "", e.file ? String(e.file).split("/").pop() + ":" + e.line : "",
         e.n != null ? "N" + e.n : "", e.t != null ? "t " + fixed(e.t, 3) + " s" : ""].filter(Boolean).join(" ");
@@ -72,6 +105,7 @@
     hmi.state = s;
     updateBar(s);
     for (const p of hmi.panels) p.update(s);
+    drawTimeline(s);
     if (!hmi.ready) {
       hmi.ready = true;
       hmi.loadMs = performance.now() - t0;

@@ -6,11 +6,7 @@
   const api = window.NckApi;
   const C = window.NckControls;
 
-  const WAITS = {
-    plc_ack: "the PLC's acknowledgement", speed_reached: "spindle speed reached", in_position: "in position",
-    standstill: "standstill", homing: "homing", gear_change: "gear change", expl_syn: "explicit synchronisation",
-    dwell: "dwell", feedhold: "feed hold", coupling: "a spindle coupling", zero_mark: "the spindle's zero mark (G33)",
-  };
+  const WAITS = window.NckTimeline.REASONS;
 
   class ChannelPanel {
     // machine: this channel's {axes, spindles}; n: its number (1..);

@@ -9,11 +9,7 @@
   const esc = (s) => String(s == null ? "" : s).replace(/[&<>"]/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;" }[c]));
   const base = (p) => String(p || "").split("/").pop();
   const COLOURS = ["#1f6feb", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#17becf", "#e377c2"];
-  const REASONS = {
-    plc_ack: "the PLC's acknowledgement", speed_reached: "speed reached", in_position: "in position",
-    standstill: "standstill", homing: "homing", gear_change: "gear change", expl_syn: "explicit synchronisation",
-    dwell: "dwell", feedhold: "feed hold", coupling: "a spindle coupling", zero_mark: "the spindle's zero mark (G33)",
-  };
+  const REASONS = NckTimeline.REASONS;
 
   function hms(s) {
     const h = Math.floor(s / 3600), m = Math.floor((s % 3600) / 60), sec = s - 3600 * h - 60 * m;
@@ -365,6 +361,14 @@
     $("ghost").innerHTML = h;
   }
 
+  // --- who waits for whom --------------------------------------------------
+  function timeline() {
+    if (!D.waits.length) { $("timeline-section").hidden = true; return []; }
+    const rows = D.meta.programs.map((p, i) => "channel " + (i + 1));
+    const waits = D.waits.map((w) => Object.assign({ where: w.ch ? nLabel(w.file, w.line) : "" }, w));
+    return NckTimeline.draw($("timeline"), waits, D.meta.end_s, rows);
+  }
+
   summary();
   diagnostics();
   const { list: bps, views } = backplots();
@@ -373,7 +377,8 @@
   timeplots();
   cycletime();
   causes();
+  const timelineBars = timeline();
   events();
   // For the browser test and for scripting: what was drawn.
-  window.nckReport = { data: D, plots, backplots: bps, views3d: views, player, waitText, loadMs: performance.now() - t0, ready: true };
+  window.nckReport = { data: D, plots, backplots: bps, views3d: views, player, waitText, timeline: timelineBars, loadMs: performance.now() - t0, ready: true };
 })();

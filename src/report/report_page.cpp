@@ -352,6 +352,7 @@ std::optional<std::string> ReportWriter::write(const std::string& path, double e
                 {"/*BACKPLOT_JS*/", std::string(embedded_file("backplot.js"))},
                 {"/*VIEW3D_JS*/", std::string(embedded_file("view3d.js"))},
                 {"/*PLAYER_JS*/", std::string(embedded_file("player.js"))},
+                {"/*TIMELINE_JS*/", std::string(embedded_file("timeline.js"))},
                 {"/*REPORT_JS*/", std::string(embedded_file("report.js"))}});
   return f.commit();
 }

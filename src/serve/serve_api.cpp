@@ -40,6 +40,7 @@ std::optional<HttpReply> page_file(std::string_view path) {
       {"/hmi_controls.js", "hmi_controls.js"},
       {"/hmi_channel.js", "hmi_channel.js"},
       {"/backplot.js", "backplot.js"},
+      {"/timeline.js", "timeline.js"},
       {"/uPlot.iife.min.js", "uPlot.iife.min.js"},
       {"/uPlot.min.css", "uPlot.min.css"}};
   for (const auto& [url, name] : kFiles) {

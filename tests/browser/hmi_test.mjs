@@ -308,9 +308,14 @@ async function checkReload(h) {
     `reload during the run: the path so far is drawn again (${before.n} points before, ${JSON.stringify(after)})`);
 }
 
-// A machine of two channels: one column each, with its own axes.
+// A machine of two channels: one column each, with its own axes; after
+// both run, the timeline of who waits for whom (issue 48 item 12) shows
+// each channel's waits: link_ch1's M3 waits 0.316 s for S2's speed (as in
+// the report), link_ch2's M5 for S1 to stand still (how long depends on
+// when the operator started each channel).
 async function checkTwoChannels(browser) {
-  const server = startServer(path.resolve(args.nck), src, ["examples/two-channel"], 30);
+  const server = startServer(path.resolve(args.nck), src, ["examples/two-channel", "examples/two-channel/link_ch1.nc",
+    "examples/two-channel/link_ch2.nc", "--speed", "max"], 30);
   try {
     const url = await server.url;
     const page = await browser.newPage({ viewport: { width: 1560, height: 1000 } });
@@ -321,6 +326,16 @@ async function checkTwoChannels(browser) {
     const machine = await page.evaluate(() => window.nckHmi.machine.channels.map((c) => c.axes.join("")));
     expect(columns.length === 2 && columns.join() === machine.join(), `two channels side by side: axes ${columns.join(" | ")}`,
       `columns ${JSON.stringify(columns)} for the channels ${JSON.stringify(machine)}`);
+    for (const ch of [1, 2]) await page.locator(`section.channel[data-channel="${ch}"]`).getByRole("button", { name: "Cycle start", exact: true }).click();
+    const bars = await page.waitForFunction(() => {
+      const s = window.nckHmi.state, t = window.nckHmi.timeline;
+      return s.channels.every((c) => c.state === "ended") && t.length >= 4 && t.every((b) => b.t1 <= s.t_s) && t;
+    }, null, { timeout: 15000 }).then((v) => v.jsonValue()).catch(() => []);
+    const m5 = bars.find((b) => b.row === "channel 2" && b.party === "spindle" && /S1 standstill \(M5\)/.test(b.text));
+    const m3 = bars.find((b) => b.row === "channel 1" && b.party === "spindle" && /S2 speed reached \(M3\)/.test(b.text));
+    expect(m5 && m3 && Math.abs(m3.t1 - m3.t0 - 0.316) < 2e-3 && (await page.locator("#timeline rect.tl-bar").count()) === bars.length,
+      `who waits for whom: ${bars.length} bars, "${m5 && m5.text}", "${m3 && m3.text}"`,
+      `the timeline after both channels ran: ${JSON.stringify(bars)}`);
     await page.close();
   } finally {
     await server.stop();

@@ -113,6 +113,7 @@ export function expectations(longProgram, blocks, longCaps, out) {
       backplots: [{ view: "XY", min: [0, 0, 0], max: [100, 0, 0], tol: 0.01, view3d: true }],
       wait: { panel: "channel 1: path velocity", reason: "feedhold", span: [0.5, 1.3],
               text: /^N20 held 0\.800 s by the PLC's feedhold \(HLI\)$/ },
+      timeline: { rows: ["channel 1"], bars: [{ party: "operator", t0: 0.5, t1: 1.3, text: /^channel 1 \(N20\) waits 0\.800 s for feed hold/ }] },
       marks: [{ panel: "channel 1: path velocity", kind: "override", t: 1.5, text: /^1\.500 s: feed override 50 %$/ }],
     },
     {
@@ -132,6 +133,8 @@ export function expectations(longProgram, blocks, longCaps, out) {
                     view3d: { limits: { min: [-500, -500, -500], max: [500, 500, 500] } } }],
       summary: /waitsspeed reached 1\.041 s, in position 0\.748 s, standstill 1\.009 swritten bynck [0-9.]+$/,
       links: /Y2 ← Y1, S2 ← S1/,
+      // issue 48 item 12: the M19 wait of N50 for S1 in position (S2 reaches 90 deg at the same time)
+      timeline: { rows: ["channel 1"], bars: [{ party: "spindle", t0: 1.525, t1: 2.273, text: /^channel 1 \(N50\) waits 0\.748 s for S\d in position \(M19\)/ }] },
     },
     {
       name: "lathe", image: "report-lathe.png", machine: "examples/lathe", programs: ["examples/lathe/turn.nc"],

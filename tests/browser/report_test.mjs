@@ -308,6 +308,20 @@ async function check(browser, c) {
     if (!c.links.test(text) || /[[\]"]/.test(text)) fail(name, `coupling table "${text}", expected ${c.links}`);
     else ok(name, `coupling table "${text.slice(0, 80)}…"`);
   }
+  if (c.timeline) {  // issue 48 item 12: who waits for whom, one bar per wait of the run
+    const got = await page.evaluate(() => ({ bars: window.nckReport.timeline, waits: window.nckReport.data.waits.length,
+      drawn: document.querySelectorAll("#timeline rect.tl-bar").length,
+      rows: [...document.querySelectorAll("#timeline .tl-row")].map((r) => r.textContent) }));
+    if (got.bars.length !== got.waits || got.drawn !== got.waits || got.waits === 0)
+      fail(name, `timeline: ${got.drawn} bars drawn, ${got.bars.length} listed for ${got.waits} waits`);
+    else ok(name, `timeline: a bar for each of the ${got.waits} waits`);
+    if (JSON.stringify(got.rows) !== JSON.stringify(c.timeline.rows)) fail(name, `timeline rows ${JSON.stringify(got.rows)}, expected ${JSON.stringify(c.timeline.rows)}`);
+    for (const want of c.timeline.bars) {
+      const b = got.bars.find((b) => b.party === want.party && Math.abs(b.t0 - want.t0) < 1e-3 && Math.abs(b.t1 - want.t1) < 1e-3);
+      if (!b || !want.text.test(b.text)) fail(name, `timeline: no ${want.party} bar ${want.t0}..${want.t1} s like ${want.text} (${JSON.stringify(b)})`);
+      else ok(name, `timeline bar "${b.text}"`);
+    }
+  }
   if (c.iso) {  // issue 48 item 5: the isometric view has no tick labels (no axis runs along the screen)
     const texts = await page.evaluate(() => {
       const b = window.nckReport.backplots[0], drawn = [], fill = b.ctx.fillText;
