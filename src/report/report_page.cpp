@@ -27,19 +27,6 @@ constexpr std::size_t kMaxSummaryBlocks = 300;    // the longest blocks in the t
 constexpr std::size_t kMaxLinesJsonBytes = 1536 << 10;
 constexpr std::uint32_t kContextLines = 2;           // lines around each line shown, for the program panel
 
-template <class Range, class F>
-std::string array_of(const Range& v, F&& item) {
-  std::string s = "[";
-  bool first = true;
-  for (const auto& x : v) {
-    if (!first) s += ',';
-    first = false;
-    item(s, x);
-  }
-  s += ']';
-  return s;
-}
-
 // "</" inside the data would end the <script> element that carries it.
 std::string script_safe(std::string s) {
   if (s.find("</") == std::string::npos) return s;  // no second copy of megabytes

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "nck/report/report_series.hpp"
+#include "nck/serve/point_columns.hpp"
 
 namespace nck::app::serve {
 namespace {
@@ -54,21 +54,8 @@ void LivePath::clear() {
 
 std::string LivePath::json(std::size_t channel, std::uint64_t run) const {
   const std::vector<Point>& path = channels_[channel - 1];
-  const auto array = [&](auto&& item) {
-    std::string s = "[";
-    for (std::size_t i = 0; i < path.size(); ++i) {
-      if (i > 0) s += ',';
-      item(s, path[i]);
-    }
-    return s + "]";
-  };
   std::string s = fmt::format(R"({{"channel":{},"run":{},"points":{})", channel, run, path.size());
-  for (std::size_t k = 0; k < 3; ++k) {
-    s += fmt::format(R"(,"{}":)", "xyz"[k]) + array([k](std::string& o, const Point& p) { append_number(o, p.mcs[k], 4); });
-    s += fmt::format(R"(,"p{}":)", "xyz"[k]) + array([k](std::string& o, const Point& p) { append_number(o, p.pcs[k], 4); });
-  }
-  s += R"(,"rapid":)" + array([](std::string& o, const Point& p) { o += p.rapid ? '1' : '0'; });
-  s += R"(,"line":)" + array([](std::string& o, const Point& p) { o += fmt::format("{}", p.line); });
+  append_point_columns(s, path);
   return s + "}";
 }
 

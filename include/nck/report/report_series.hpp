@@ -12,6 +12,20 @@ namespace nck::app {
 // Numbers as short JSON text: at most `decimals` places, trailing zeros cut.
 void append_number(std::string& out, double v, int decimals);
 
+// A JSON array of the range's items, each written by item(out, x).
+template <class Range, class F>
+std::string array_of(const Range& range, F&& item) {
+  std::string s = "[";
+  bool first = true;
+  for (const auto& x : range) {
+    if (!first) s += ',';
+    first = false;
+    item(s, x);
+  }
+  s += ']';
+  return s;
+}
+
 // Per cycle, one value per series. A bucket spans `stride` cycles and keeps
 // each series' minimum and maximum in the order they occurred; when there
 // are kMaxBuckets, neighbours merge and the stride doubles. Drawing the two

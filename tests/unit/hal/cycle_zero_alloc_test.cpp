@@ -77,76 +77,64 @@ void wire(Cycle& c, Cells& k) {
   for (auto& p : c.plc_pins) p = {k.bit(), k.bit(), k.s32(), k.s32(), k.s32(), k.flt()};
 }
 
-TEST(HalCycle, ContourRunsThroughTheComponentsFunctionWithoutAllocating) {
-  const std::filesystem::path folder = NCK_SOURCE_DIR "/examples/mill";
-  ListPack pack;
-  config::LoadOptions options;
-  options.read_text = [&pack](const std::filesystem::path& p) -> std::optional<std::string> {
-    std::ifstream in(p, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    pack[p.string()] = text;
-    return text;
-  };
-  auto loaded = config::load_machine(folder, options);
-  ASSERT_TRUE(loaded.ok());
-  pack[""] = folder.string();
+// examples/mill as nck-hal packs it into the shared Link, and the Cycle
+// nck.so builds from that pack, its pins wired to cells.
+class MillInHal : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    config::LoadOptions options;
+    options.read_text = [this](const std::filesystem::path& p) -> std::optional<std::string> {
+      std::ifstream in(p, std::ios::binary);
+      if (!in) return std::nullopt;
+      return pack_[p.string()] = std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    config::LoadResult loaded = config::load_machine(folder_, options);
+    ASSERT_TRUE(loaded.ok());
+    machine_ = std::move(loaded.machine);
+    pack_[""] = folder_.string();
+    link_->magic = kLinkMagic;
+    link_->version = kLinkVersion;
+    ASSERT_TRUE(write_pack(*link_, pack_));
+    std::string error;
+    ASSERT_TRUE(cycle_.build(*link_, error)) << error;
+    wire(cycle_, cells_);
+  }
 
-  auto link = std::make_unique<Link>();
-  link->magic = kLinkMagic;
-  link->version = kLinkVersion;
-  ASSERT_TRUE(write_pack(*link, pack));
-  Cycle cycle;
-  std::string error;
-  ASSERT_TRUE(cycle.build(*link, error)) << error;
-  Cells cells;
-  wire(cycle, cells);
+  const std::filesystem::path folder_ = NCK_SOURCE_DIR "/examples/mill";
+  ListPack pack_;
+  std::optional<config::Machine> machine_;
+  std::unique_ptr<Link> link_ = std::make_unique<Link>();
+  Cycle cycle_;
+  Cells cells_;
+};
+
+TEST_F(MillInHal, ContourRunsThroughTheComponentsFunctionWithoutAllocating) {
   prep::PlanStore store;
-  prep::ChannelPrep prep(*loaded.machine, 0, folder / "contour.nc", store, prep::PrepOptions{});
-
+  prep::ChannelPrep prep(*machine_, 0, folder_ / "contour.nc", store, prep::PrepOptions{});
   std::size_t cycles = 0;
   std::array<bool, kPlcSlots> acked{};
-  for (; cycles < 200000 && !link->channel_done[0].load(); ++cycles) {
-    prep.feed(link->commands[0], link->feedback[0], false);
+  for (; cycles < 200000 && !link_->channel_done[0].load(); ++cycles) {
+    prep.feed(link_->commands[0], link_->feedback[0], false);
     for (std::size_t k = 0; k < kPlcSlots; ++k) {  // a PLC that acknowledges at once
-      **cycle.plc_pins[k].ack = **cycle.plc_pins[k].request && !acked[k];
-      acked[k] = **cycle.plc_pins[k].ack;
+      **cycle_.plc_pins[k].ack = **cycle_.plc_pins[k].request && !acked[k];
+      acked[k] = **cycle_.plc_pins[k].ack;
     }
     g_counting = true;
-    cycle.run(1000000);
+    cycle_.run(1000000);
     g_counting = false;
-    while (!link->events.empty()) link->events.pop();
+    while (!link_->events.empty()) link_->events.pop();
   }
   EXPECT_EQ(g_allocations.load(), 0u);
-  EXPECT_TRUE(link->channel_done[0].load()) << "after " << cycles << " cycles";
-  EXPECT_EQ(**cycle.machine_pins.error_id, 0u);
-  EXPECT_NEAR(**cycle.axis_pins[2].pos_cmd, 22.0, 1e-9);  // Z, as nck run ends
+  EXPECT_TRUE(link_->channel_done[0].load()) << "after " << cycles << " cycles";
+  EXPECT_EQ(**cycle_.machine_pins.error_id, 0u);
+  EXPECT_NEAR(**cycle_.axis_pins[2].pos_cmd, 22.0, 1e-9);  // Z, as nck run ends
 }
 
-TEST(HalCycle, AThreadPeriodOtherThanTheCycleTimeIsRefusedWithAnId) {
-  const std::filesystem::path folder = NCK_SOURCE_DIR "/examples/mill";
-  ListPack pack;
-  config::LoadOptions options;
-  options.read_text = [&pack](const std::filesystem::path& p) -> std::optional<std::string> {
-    std::ifstream in(p, std::ios::binary);
-    if (!in) return std::nullopt;
-    return pack[p.string()] = std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  };
-  ASSERT_TRUE(config::load_machine(folder, options).ok());
-  pack[""] = folder.string();
-  auto link = std::make_unique<Link>();
-  link->magic = kLinkMagic;
-  link->version = kLinkVersion;
-  ASSERT_TRUE(write_pack(*link, pack));
-  Cycle cycle;
-  std::string error;
-  ASSERT_TRUE(cycle.build(*link, error)) << error;
-  Cells cells;
-  wire(cycle, cells);
-  cycle.run(2000000);
-  EXPECT_EQ(**cycle.machine_pins.error_id, 940400u);
-  EXPECT_TRUE(**cycle.machine_pins.error);
-  EXPECT_EQ(link->rt_state.load(), static_cast<std::uint32_t>(RtState::error));
+TEST_F(MillInHal, AThreadPeriodOtherThanTheCycleTimeIsRefusedWithAnId) {
+  cycle_.run(2000000);
+  EXPECT_EQ(**cycle_.machine_pins.error_id, 940400u);
+  EXPECT_TRUE(**cycle_.machine_pins.error);
+  EXPECT_EQ(link_->rt_state.load(), static_cast<std::uint32_t>(RtState::error));
 }
 
 TEST(HalCycle, NoPackIsRefusedWithAnId) {
