@@ -70,6 +70,7 @@
   function onEvents(events) {
     for (const e of events) {
       if (e.ev === "wait" || e.ev === "wait_end") noteWait(e);
+      if (e.ev === "link" && hmi.panels[e.ch - 1]) hmi.panels[e.ch - 1].noteLink(e);
       if (e.ev !== "error" && e.ev !== "warning") continue;
       const where = [e.ch ? "channel " + e.ch : "", e.file ? String(e.file).split("/").pop() + ":" + e.line : "",
         e.n != null ? "N" + e.n : "", e.t != null ? "t " + fixed(e.t, 3) + " s" : ""].filter(Boolean).join(" ");

@@ -14,6 +14,8 @@
     constructor(parent, n, machine, report) {
       this.n = n;
       this.axes = machine.axes;
+      this.plotAxes = machine.plot_axes || ["X", "Y", "Z"];  // the backplot's X, Y, Z (the twin's X, Y1, Z1)
+      this.links = new Map();  // coupling group -> [[slave, master], ...] while it is on (the stream's link events)
       this.report = report;
       this.run = null;
       this.programName = undefined;
@@ -61,11 +63,21 @@
     }
 
     // One DRO row: a face-turning axis in diameter display shows ⌀ and twice its radius.
+    // A coupling switched on or off (a `link` event): its slave axes show
+    // their master in the DRO while it is on.
+    noteLink(e) {
+      if (e.on) this.links.set(e.group, e.pairs); else this.links.delete(e.group);
+    }
+    masterOf(a) {
+      for (const pairs of this.links.values()) for (const [slave, master] of pairs) if (slave === a) return master;
+      return null;
+    }
+
     droRow(a, c) {
       const cells = this.droCells[a], axis = (c.axes || {})[a] || {};
-      const diameter = c.diameter_display && axis.pcs_diameter != null;
-      cells.name.textContent = diameter ? "\u2300" + a : a;
-      cells.name.title = diameter ? "diameter (G51, display_diameter_pos)" : "";
+      const diameter = c.diameter_display && axis.pcs_diameter != null, master = this.masterOf(a);
+      cells.name.textContent = (diameter ? "\u2300" + a : a) + (master ? " \u2190 " + master : "");
+      cells.name.title = diameter ? "diameter (G51, display_diameter_pos)" : master ? `coupled: ${a} follows ${master}` : "";
       cells.pcs.textContent = fixed(diameter ? axis.pcs_diameter : c.pcs[a], 3);
       cells.mcs.textContent = fixed(c.mcs[a], 3);
       cells.dtg.textContent = fixed(diameter ? 2 * c.dtg[a] : c.dtg[a], 3);
@@ -132,8 +144,8 @@
     say(text) { this.notice.textContent = text; }
 
     makeBackplot() {
-      const has = ["X", "Y", "Z"].map((a) => this.axes.includes(a));
-      this.plotCh = { n: this.n, plane: "XY", axes: ["X", "Y", "Z"], has, x: [], y: [], z: [], px: [], py: [], pz: [], rapid: [], file: [], line: [] };
+      const has = this.plotAxes.map((a) => a != null);
+      this.plotCh = { n: this.n, plane: "XY", axes: this.plotAxes.map((a, k) => a || "XYZ"[k]), has, x: [], y: [], z: [], px: [], py: [], pz: [], rapid: [], file: [], line: [] };
       // the backplot's hover reads d.lines["file:line"]: the loaded program's text
       const lines = new Proxy({}, { get: (_, key) => this.program.text(Number(String(key).split(":")[1])) });
       const data = { channels: [this.plotCh], files: [""], lines };
@@ -141,7 +153,7 @@
       this.plot = new window.NckBackplot(this.plotCol, this.plotCh, data, { width, height: Math.round(width * 0.8), minSpan: 20 });
     }
 
-    xyz(pos) { return ["X", "Y", "Z"].map((a) => (pos && a in pos ? pos[a] : 0)); }
+    xyz(pos) { return this.plotAxes.map((a) => (pos && a != null && a in pos ? pos[a] : 0)); }
 
     // A point on the path where the tool moved (not every snapshot of a standstill).
     track(c) {

@@ -12,7 +12,7 @@ namespace {
 // X, Y and Z of a channel's positions (0 where it has no such axis).
 template <class Positions>
 std::array<double, 3> xyz(const config::ChannelConfig& ch, const Positions& pos) {
-  const std::array<int, 3> axes = hmi_axes(ch);
+  const std::array<int, 3> axes = backplot_axes(ch);
   std::array<double, 3> out{};
   for (std::size_t k = 0; k < 3; ++k)
     if (axes[k] >= 0) out[k] = pos[static_cast<std::size_t>(axes[k])];
@@ -20,14 +20,6 @@ std::array<double, 3> xyz(const config::ChannelConfig& ch, const Positions& pos)
 }
 
 }  // namespace
-
-std::array<int, 3> hmi_axes(const config::ChannelConfig& ch) {
-  std::array<int, 3> axes{-1, -1, -1};
-  for (std::size_t j = 0; j < ch.axes.size(); ++j)
-    for (std::size_t k = 0; k < 3; ++k)
-      if (ch.axes[j].name == std::string(1, "XYZ"[k])) axes[k] = static_cast<int>(j);
-  return axes;
-}
 
 void LivePath::take(const LiveSnapshot& s, const config::Machine& m, std::span<const ChannelPlace> places) {
   for (std::size_t ch = 0; ch < s.channel_count && ch < m.channels.size() && ch < places.size(); ++ch) {

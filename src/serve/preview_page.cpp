@@ -11,7 +11,7 @@
 namespace nck::app::serve {
 
 std::string preview_page(const config::Machine& m, std::size_t channel, const std::filesystem::path& path) {
-  prep::PathPreview preview(hmi_axes(m.channels[channel - 1]));
+  prep::PathPreview preview(backplot_axes(m.channels[channel - 1]));
   if (!path.empty()) (void)prep::check_program(m, channel - 1, path, {.preview = &preview});
   const std::vector<prep::PreviewPoint>& pts = preview.points();
   std::string s = fmt::format(R"({{"channel":{},"file":{},"points":{},"cut":{})", channel,

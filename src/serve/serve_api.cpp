@@ -63,7 +63,9 @@ json machine_json(const config::Machine& m) {
     json axes = json::array(), spindles = json::array();
     for (const auto& a : c.axes) axes.push_back(a.name);
     for (const auto& s : c.spindles) spindles.push_back(s.name);
-    channels.push_back({{"axes", std::move(axes)}, {"spindles", std::move(spindles)}});
+    json plot_axes = json::array();  // the backplot's X, Y, Z (null: none), as the report draws them
+    for (const int j : backplot_axes(c)) plot_axes.push_back(j < 0 ? json() : json(c.axes[static_cast<std::size_t>(j)].name));
+    channels.push_back({{"axes", std::move(axes)}, {"spindles", std::move(spindles)}, {"plot_axes", std::move(plot_axes)}});
   }
   return {{"api", 1}, {"cycle_time_s", m.cycle_time_us * 1e-6}, {"channels", std::move(channels)}};
 }

@@ -342,6 +342,41 @@ async function checkTwoChannels(browser) {
   }
 }
 
+// Issue 48 item 12, coupled axes: the twin-spindle machine's channel has
+// X, Y1, Z1 and the slave axes Y2, Z2, C2. The DRO lists every axis and
+// names a slave's master while its coupling is on (twin.nc N20..N60: Y2
+// follows Y1 from 20 to 70); the backplot draws X, Y1, Z1 (N40: Y1 to 50).
+async function checkCoupledAxes(browser) {
+  const server = startServer(path.resolve(args.nck), src, ["examples/twin-spindle", "examples/twin-spindle/twin.nc"], 40);
+  try {
+    const page = await browser.newPage({ viewport: { width: 1560, height: 1000 } });
+    await page.goto(await server.url);
+    await page.waitForFunction(() => window.nckHmi && window.nckHmi.ready, null, { timeout: 10000 });
+    const ch = page.locator('section.channel[data-channel="1"]');
+    const rows = await ch.locator(".dro tr[data-axis]").evaluateAll((r) => r.map((x) => x.dataset.axis).join(" "));
+    await ch.getByRole("button", { name: "Cycle start", exact: true }).click();
+    const y2 = ch.locator('.dro tr[data-axis="Y2"] th');
+    const linked = await page.waitForFunction(() => {
+      const th = document.querySelector('section.channel[data-channel="1"] .dro tr[data-axis="Y2"] th');
+      const s = window.nckHmi.state.channels[0];
+      return th.textContent === "Y2 \u2190 Y1" && s.mcs.Y1 > 10 && { y1: s.mcs.Y1, y2: s.mcs.Y2 };
+    }, null, { timeout: 8000 }).then((v) => v.jsonValue()).catch(() => null);
+    expect(rows === "X Y1 Z1 C1 Y2 Z2 C2" && linked && Math.abs(linked.y2 - linked.y1 - 20) < 0.01,
+      `coupled axes in the DRO: ${rows}; "Y2 ← Y1" with Y2 − Y1 = 20 (${JSON.stringify(linked)})`,
+      `the DRO of the twin machine: rows ${rows}, while linked ${JSON.stringify(linked)}, Y2 reads "${await y2.textContent()}"`);
+    const after = await page.waitForFunction(() => {
+      const p = window.nckHmi.panels[0], th = document.querySelector('section.channel[data-channel="1"] .dro tr[data-axis="Y2"] th');
+      return window.nckHmi.state.channels[0].state === "ended" && { label: th.textContent, ymax: Math.max(...p.plot.ch.y), axes: p.plotCh.axes };
+    }, null, { timeout: 12000 }).then((v) => v.jsonValue()).catch(() => null);
+    expect(after && after.label === "Y2" && Math.abs(after.ymax - 50) < 0.01 && after.axes.join() === "X,Y1,Z1",
+      `after #DISABLE AX LINK Y2 reads plain "Y2"; the backplot drew X, Y1, Z1 up to Y1 ${after && after.ymax}`,
+      `after the run: ${JSON.stringify(after)}`);
+    await page.close();
+  } finally {
+    await server.stop();
+  }
+}
+
 // The page down to its content (the README's picture: the whole path of the run after the search).
 async function screenshot(page) {
   const height = await page.evaluate(() => Math.ceil(document.querySelector("main").getBoundingClientRect().bottom) + 8);
@@ -399,6 +434,7 @@ try {
   const url = await server.url;
   await run(browser, url, new URL(url).port);
   await checkTwoChannels(browser);
+  await checkCoupledAxes(browser);
   await checkLatheDiameter(browser);
 } catch (e) {
   fail(e.stack || String(e));

@@ -12,13 +12,10 @@
 #include <vector>
 
 #include "nck/config/machine.hpp"
+#include "nck/report/backplot_axes.hpp"  // the HMI's backplot draws the report's axes
 #include "nck/run/state_document.hpp"
 
 namespace nck::app::serve {
-
-// The channel's axis index of the axes named X, Y and Z (-1: none): what
-// the HMI's backplot draws (its live path, the path kept and the preview).
-std::array<int, 3> hmi_axes(const config::ChannelConfig& ch);
 
 class LivePath {
  public:
