@@ -144,11 +144,13 @@
       const ch = this.ch, D = this.D;
       const rows = [];
       if (at) {
-        const frame = ch.frame ? ch.frame[at.i] : 0;
-        const f = ch.frames && ch.frames[frame] ? this.inverse(ch.frames[frame]) : (p) => p;
+        const frame = ch.frame ? ch.frame[at.i] : 0, map = ch.frames && ch.frames[frame];
+        const f = map ? this.inverse(map) : (p) => p;
         const pcs = f(at.pos);
+        // a face-turning axis under G51 with display_diameter_pos: PCS as a diameter
+        const dia = map && map.diameter != null ? map.diameter : -1;
         for (let a = 0; a < 3; a++)
-          if (ch.has[a]) rows.push([esc(ch.axes[a]), fmt(at.pos[a], 3), fmt(pcs[a], 3)]);
+          if (ch.has[a]) rows.push([(a === dia ? "\u2300" : "") + esc(ch.axes[a]), fmt(at.pos[a], 3), fmt(a === dia ? 2 * pcs[a] : pcs[a], 3)]);
       }
       let h = '<table class="dro-axes"><tr><th>axis</th><th class="num">MCS (mm)</th><th class="num">PCS (mm)</th></tr>' +
         rows.map((r) => "<tr><td>" + r[0] + '</td><td class="num">' + r[1] + '</td><td class="num">' + r[2] + "</td></tr>").join("") + "</table>";

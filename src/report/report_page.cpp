@@ -141,7 +141,8 @@ std::string ReportWriter::limits_json(const Channel& ch) const {
 // (r row by row); none recorded: the identity.
 std::string ReportWriter::frames_json(const Channel& ch) const {
   if (ch.frames.empty()) return R"([{"r":[1,0,0,0,1,0,0,0,1],"s":[0,0,0]}])";
-  return array_of(ch.frames, [&](std::string& o, const kernel::AffineMap& f) {
+  return array_of(ch.frames, [&](std::string& o, const Frame& frame) {
+    const kernel::AffineMap& f = frame.map;
     std::array<int, 3> row{};  // the map's main-axis slot of the report's X, Y, Z
     for (int a = 0; a < 3; ++a) {
       row[a] = -1;
@@ -160,7 +161,9 @@ std::string ReportWriter::frames_json(const Channel& ch) const {
       if (a > 0) o += ',';
       append_number(o, ch.axis[a] >= 0 ? f.shift[static_cast<std::size_t>(ch.axis[a])] : 0.0, 4);
     }
-    o += "]}";
+    o += "]";
+    if (frame.diameter_slot >= 0) o += fmt::format(",\"diameter\":{}", frame.diameter_slot);  // ⌀ in the player's DRO
+    o += "}";
   });
 }
 

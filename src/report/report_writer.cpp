@@ -86,6 +86,11 @@ void ReportWriter::start(const config::Machine& m, const ReportInputs& inputs, s
     col += axes.size();
     ch.axis_count = axes.size();
     ch.limits = backplot_limits(m, m.channels[c], ch.axis);
+    for (int a = 0; a < 3 && m.channels[c].display_diameter_pos; ++a) {
+      const int j = ch.axis[a];
+      const int idx = j < 0 ? -1 : axes[static_cast<std::size_t>(j)].axis_index;
+      if (idx >= 0 && m.axes[static_cast<std::size_t>(idx)].is_face_turning()) ch.diameter_slot = a;
+    }
     if (c < k.channel_count()) {  // the path starts where the axes stand
       const kernel::ChannelState st = k.channel_state(c);
       std::array<double, 3> p{};
@@ -343,18 +348,20 @@ void ReportWriter::record(std::uint64_t cycle, const kernel::TickOutput& out) {
 // channel's list when it differs from the one before.
 void ReportWriter::take_frame(Channel& ch, std::uint32_t store_index, const RunNames& names) {
   if (store_index == ch.store_frame || !names.run) return;
-  const kernel::AffineMap* f = names.run->frame(store_index);
-  if (!f) return;
+  const kernel::AffineMap* map = names.run->frame(store_index);
+  if (!map) return;
   ch.store_frame = store_index;
+  const nc::ModalState* modal = names.run->modal(store_index);
+  const Frame f{*map, modal && modal->diameter ? ch.diameter_slot : -1};
   // a map seen before keeps its index (a program switching between G54 and
   // G55 a million times still has two); beyond kMaxFrames the last one stays
   for (std::size_t i = 0; i < ch.frames.size(); ++i)
-    if (ch.frames[i] == *f) {
+    if (ch.frames[i] == f) {
       ch.frame = static_cast<std::uint32_t>(i);
       return;
     }
   if (ch.frames.size() >= kMaxFrames) return;
-  ch.frames.push_back(*f);
+  ch.frames.push_back(f);
   ch.frame = static_cast<std::uint32_t>(ch.frames.size() - 1);
 }
 

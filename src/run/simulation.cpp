@@ -178,8 +178,11 @@ std::expected<std::unique_ptr<Simulation>, Diagnostics> Simulation::create(confi
   sim::DryRunOptions options;
   options.clamp_index = opt.clamp_index;
   options.record_frames = !opt.report.empty() || opt.operator_present;
-  // a session's state gives the modal state of the block in execution (RunOutputs::blocks)
-  options.record_modal = opt.operator_present;
+  // a session's state gives the modal state of the block in execution (RunOutputs::blocks);
+  // a report's player shows a diameter under G51 where the machine says so
+  // (P-CHAN-00256): only then, as each modal change costs a map entry
+  const bool diameter_dro = std::ranges::any_of(s->machine_->channels, [](const auto& c) { return c.display_diameter_pos; });
+  options.record_modal = opt.operator_present || (!opt.report.empty() && diameter_dro);
   options.prep_thread = opt.prep_thread;
   options.stop = s->stop_;
   if (*search) {

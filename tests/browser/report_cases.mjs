@@ -65,7 +65,9 @@ export function expectations(longProgram, blocks, longCaps, out) {
       name: "lathe-diameter", machine: "examples/lathe", programs: ["examples/lathe/diameter.nc"], minPlots: 2,
       // X words are diameters: the face at D60 (X30 radius) to the centre, the profile to Z-45 and D50 (X25)
       backplots: [{ view: "ZX", min: [0, null, -45], max: [30, null, 2], tol: 0.01 }],
-      cursor: { at: [{ t: 16.07, block: "N70" }], hover: [11] },
+      // x.lis is face-turning and the lathe's display_diameter_pos is 1: under G51 X reads as ⌀X (N70
+      // at D20); after N110's G52 as a radius again (N120 X30, the end at N130)
+      cursor: { at: [{ t: 16.07, block: "N70", pcs: { "\u2300X": 20 } }, { t: 1e9, block: "N130", pcs: { X: 30, Z: 2 } }], hover: [11] },
     },
     {
       // #SLOPE STEP, TRAPEZ, SIN2: the square (X 0..60, Y -10..30) and the G2 bulging to X80; Z0 to Z10

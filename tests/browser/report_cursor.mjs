@@ -88,9 +88,16 @@ export async function checkCursor(page, name, files, { fail, ok }) {
   if (/^rapid/.test(start.cause) !== /^G0/.test(start.motion)) fail(name, `at 0 s the DRO shows ${start.motion} and cause ${start.cause}`);
   else ok(name, `at 0 s: ${start.motion}, cause ${start.cause}`);
   for (const want of files.at || []) {  // the issue's own cases
-    const got = await page.evaluate((t) => { window.nckReport.player.seek(t); return document.querySelector("#dro .block-now").textContent; }, want.t);
-    if (!got.includes(want.block)) fail(name, `at ${want.t} s the DRO names "${got}", expected ${want.block}`);
-    else ok(name, `at ${want.t} s the DRO names "${got}"`);
+    const got = await page.evaluate((t) => {
+      window.nckReport.player.seek(t);
+      const rows = [...document.querySelectorAll("#dro .dro-axes tr")].slice(1).map((tr) => [tr.children[0].textContent, +tr.children[2].textContent]);
+      return { block: document.querySelector("#dro .block-now").textContent, pcs: Object.fromEntries(rows) };
+    }, want.t);
+    if (!got.block.includes(want.block)) fail(name, `at ${want.t} s the DRO names "${got.block}", expected ${want.block}`);
+    else ok(name, `at ${want.t} s the DRO names "${got.block}"`);
+    for (const [axis, value] of Object.entries(want.pcs || {}))  // issue 48 item 7: ⌀X under G51
+      if (Math.abs(got.pcs[axis] - value) > 1e-3) fail(name, `at ${want.t} s the DRO's PCS ${JSON.stringify(got.pcs)}, expected ${axis} ${value}`);
+      else ok(name, `at ${want.t} s the DRO reads PCS ${axis} ${got.pcs[axis]}`);
   }
   await checkHover(page, name, samples.filter((s) => s.kind === "mid"), files.hover || [], { fail, ok });
 }

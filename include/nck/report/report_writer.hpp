@@ -97,6 +97,13 @@ class ReportWriter {
     std::size_t ch = 0;  // 1-based: a mark on the channel's velocity plot (feed override); 0: a spindle's
     std::string kind, text;
   };
+  // A block's program -> machine map and whether its face-turning axis
+  // reads as a diameter (G51 with display_diameter_pos): the player's DRO.
+  struct Frame {
+    kernel::AffineMap map;
+    int diameter_slot = -1;
+    bool operator==(const Frame&) const = default;
+  };
   struct Channel {
     std::array<int, 3> axis{-1, -1, -1};  // channel axis index of X, Y, Z (-1: none)
     std::array<std::string, 3> axis_name;
@@ -114,9 +121,12 @@ class ReportWriter {
     std::vector<std::size_t> open_waits;  // waits_ indices: one per spindle/function waited for
     // program -> machine maps of the blocks executed, in order of appearance
     // (PathPoint::frame); the PlanStore index of the newest
-    std::vector<kernel::AffineMap> frames;
+    std::vector<Frame> frames;
     std::uint32_t store_frame = kernel::kNoMessage;
     std::uint32_t frame = 0;  // index into frames of the block in execution
+    // the backplot slot (0..2) of the face-turning axis a DRO shows as a
+    // diameter under G51 (P-CHAN-00256 display_diameter_pos), -1: none
+    int diameter_slot = -1;
     std::unique_ptr<ProgrammedContour> contour;  // G41/G42 stretches as programmed
     double feed_override_pct = 100;
     std::optional<std::size_t> hold;  // the feedhold in progress (waits_ index)
