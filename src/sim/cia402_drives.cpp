@@ -6,21 +6,21 @@ namespace cia = drives::cia402;
 
 Cia402Drives::Cia402Drives(const config::Machine& m) {
   for (auto& ch : axis_of_) ch.fill(-1);
-  for (std::size_t i = 0; i < m.axes.size() && i < drives::kMaxDrives; ++i) drives_[i].present = m.axes[i].is_cia402();
+  for (std::size_t i = 0; i < m.axes.size() && i < drives::kMaxDrives; ++i)
+    if (m.axes[i].is_cia402()) present_[present_count_++] = static_cast<std::uint8_t>(i);
   for (std::size_t c = 0; c < m.channels.size() && c < config::kMaxChannels; ++c)
     for (std::size_t j = 0; j < m.channels[c].axes.size() && j < kMaxAxes; ++j)
       axis_of_[c][j] = static_cast<std::int16_t>(m.channels[c].axes[j].axis_index);
 }
 
 void Cia402Drives::read(kernel::TickInput& in) const noexcept {
-  for (std::size_t i = 0; i < drives::kMaxDrives; ++i)
-    if (drives_[i].present) in.drives[i] = drives_[i].fb;
+  for (std::size_t k = 0; k < present_count_; ++k) in.drives[present_[k]] = drives_[present_[k]].fb;
 }
 
 void Cia402Drives::write(const kernel::TickOutput& out) noexcept {
-  for (std::size_t i = 0; i < drives::kMaxDrives; ++i) {
+  for (std::size_t k = 0; k < present_count_; ++k) {
+    const std::size_t i = present_[k];
     Drive& d = drives_[i];
-    if (!d.present) continue;
     const drives::DriveCommand& cmd = out.drives[i];
     const std::uint16_t bits = d.device.step(cmd.controlword, d.fault);
     const bool enabled = d.device.state() == cia::State::operation_enabled;
