@@ -4,11 +4,21 @@
 # and compares its end time with `nck run`'s end event. Then checks that
 # nck.pc gives the same libraries to pkg-config, and that the kernel-only
 # configuration (NCK_APPS=OFF) configures without Boost, CLI11, pybind11,
-# GoogleTest or node_modules, also as add_subdirectory(nck).
+# GoogleTest or node_modules, also as add_subdirectory(nck). First: a
+# prefix nobody may write (under /proc, even for root) fails with CMake's
+# message naming it, and nothing is installed.
 #   -DBUILD_DIR= -DSOURCE_DIR= -DNCK= -DWORK= -DCXX_FLAGS= -DBUILD_TYPE=
 include(${CMAKE_CURRENT_LIST_DIR}/run_checked.cmake)
 
 file(REMOVE_RECURSE ${WORK})
+set(denied /proc/nck-install-test)
+execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${denied} --component dev
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc EQUAL 0 OR NOT err MATCHES "cannot create directory: ${denied}" OR EXISTS ${denied})
+  message(FATAL_ERROR "an install into a prefix without write access: exit ${rc}\n${out}\n${err}")
+endif()
+message(STATUS "a prefix without write access: exit ${rc}, \"${err}\"")
+
 set(prefix ${WORK}/prefix)
 run_checked(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix} --component dev)
 foreach(f lib/cmake/nck/nckConfig.cmake lib/cmake/nck/nckConfigVersion.cmake lib/pkgconfig/nck.pc
