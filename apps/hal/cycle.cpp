@@ -76,7 +76,7 @@ void Cycle::run(long period_ns) noexcept {
   out_->tech_outputs.clear();
   out_->events.clear();
   out_->events_dropped = 0;
-  kernel_.tick(*in_, *out_);
+  tick_timed();
   write_pins();
   hand_to_plc();
   for (const auto& e : out_->events) {
@@ -92,6 +92,26 @@ void Cycle::run(long period_ns) noexcept {
   }
   link_->cycles.store(kernel_.cycles(), std::memory_order_release);
   **machine_pins.cycles = static_cast<std::uint32_t>(kernel_.cycles());
+}
+
+// One Kernel::tick(), timed when the clocks are there: the tick's own
+// clocks, and the clock rate from the first timed cycle to this one.
+void Cycle::tick_timed() noexcept {
+  if (!clocks.clocks || !clocks.ns || !machine_pins.tick_time) {
+    kernel_.tick(*in_, *out_);
+    return;
+  }
+  const long long before = clocks.clocks();
+  kernel_.tick(*in_, *out_);
+  const long long after = clocks.clocks();
+  **machine_pins.tick_time = static_cast<std::int32_t>(after - before);
+  const long long now_ns = clocks.ns();
+  if (first_ns_ == 0) {
+    first_ns_ = now_ns;
+    first_clocks_ = after;
+  } else if (now_ns > first_ns_) {
+    **machine_pins.clocks_per_us = static_cast<double>(after - first_clocks_) * 1e3 / static_cast<double>(now_ns - first_ns_);
+  }
 }
 
 void Cycle::read_pins() noexcept {

@@ -48,6 +48,19 @@ struct PlcPins {  // nck.plc.<k>.*
 struct MachinePins {  // nck.*
   PinBit estop, machine_on, watchdog, error;
   PinU32 error_id, cycles;
+  // Kernel::tick()'s own time in the clocks of HAL's `nck.cycle.time`
+  // (rtapi_get_clocks: the TSC on x86), and those clocks per microsecond
+  // measured over the run: nck.cycle.time - nck.tick-time is the
+  // component's own share (docs/hal.md, "What a cycle costs").
+  PinS32 tick_time;
+  PinFloat clocks_per_us;
+};
+
+// The clocks a cycle is timed with: HAL's (rtapi_get_clocks, rtapi_get_time)
+// in nck.so; none in a unit test (then the timing pins stay 0).
+struct CycleClocks {
+  long long (*clocks)() = nullptr;  // CPU clocks
+  long long (*ns)() = nullptr;      // nanoseconds
 };
 
 struct AxisRef {  // one nck.axis.* pin group: its channel and channel axis
@@ -73,6 +86,7 @@ class Cycle {
   std::vector<SpindlePins> spindle_pins;
   std::array<PlcPins, kPlcSlots> plc_pins{};
   MachinePins machine_pins{};
+  CycleClocks clocks{};
 
   // One kernel cycle; period_ns is the HAL thread's. Never allocates or throws.
   void run(long period_ns) noexcept;
@@ -83,6 +97,7 @@ class Cycle {
   void relay_commands() noexcept;
   void write_pins() noexcept;
   void hand_to_plc() noexcept;
+  void tick_timed() noexcept;
 
   Link* link_ = nullptr;
   std::unique_ptr<config::Machine> machine_;
@@ -92,6 +107,7 @@ class Cycle {
   std::vector<AxisRef> axes_;
   std::array<kernel::Attachment, kernel::kMaxAttachments> attachments_{};
   std::array<kernel::TechRequest, kPlcSlots> plc_slots_{};  // handle kNoHandle: free
+  long long first_clocks_ = 0, first_ns_ = 0;  // at the first timed cycle
   bool watchdog_ = false;
   bool failed_ = false;
   std::array<bool, config::kMaxChannels> cycle_start_was_{};

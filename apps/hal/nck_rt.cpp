@@ -61,6 +61,8 @@ int make_pins(nck::hal::Cycle& c) {
   r |= bit(HAL_OUT, m.error, "nck.error");
   r |= u32(HAL_OUT, m.error_id, "nck.error-id");
   r |= u32(HAL_OUT, m.cycles, "nck.cycles");
+  r |= s32(HAL_OUT, m.tick_time, "nck.tick-time");
+  r |= flt(HAL_OUT, m.clocks_per_us, "nck.clocks-per-us");
   for (const auto& a : c.axes()) {
     nck::hal::AxisPins p{};
     const std::string n = a.channel == 0 ? fmt::format("nck.axis.{}", a.name)
@@ -148,6 +150,7 @@ extern "C" int rtapi_app_main(void) {
       hal_exit(comp_id);
       return -EINVAL;
     }
+    cycle->clocks = {rtapi_get_clocks, rtapi_get_time};
     if (make_pins(*cycle) != 0 ||
         hal_export_funct("nck.cycle", cycle_function, cycle, 1 /* uses floating point */, 0, comp_id) != 0) {
       rtapi_print_msg(RTAPI_MSG_ERR, "nck: the pins or nck.cycle cannot be exported (a name twice?)\n");

@@ -65,7 +65,7 @@ struct Cells {
 };
 
 void wire(Cycle& c, Cells& k) {
-  c.machine_pins = {k.bit(), k.bit(), k.bit(), k.bit(), k.u32(), k.u32()};
+  c.machine_pins = {k.bit(), k.bit(), k.bit(), k.bit(), k.u32(), k.u32(), k.s32(), k.flt()};
   **c.machine_pins.machine_on = true;
   for (std::size_t i = 0; i < c.axes().size(); ++i)
     c.axis_pins.push_back({k.flt(), k.flt(), k.flt(), k.bit(), k.bit(), k.bit(), k.bit(), k.bit()});
@@ -75,6 +75,17 @@ void wire(Cycle& c, Cells& k) {
   for (std::size_t s = 0; s < c.spindle_count(); ++s)
     c.spindle_pins.push_back({k.flt(), k.flt(), k.flt(), k.flt(), k.bit(), k.bit(), k.bit()});
   for (auto& p : c.plc_pins) p = {k.bit(), k.bit(), k.s32(), k.s32(), k.s32(), k.flt()};
+}
+
+// A clock of 1,000 CPU clocks a reading and 500 ns a reading: a timed
+// cycle reads the clocks twice and the nanoseconds once.
+long long fake_clocks() {
+  static long long c = 0;
+  return c += 1000;
+}
+long long fake_ns() {
+  static long long n = 0;
+  return n += 500;
 }
 
 // examples/mill as nck-hal packs it into the shared Link, and the Cycle
@@ -98,6 +109,7 @@ class MillInHal : public ::testing::Test {
     std::string error;
     ASSERT_TRUE(cycle_.build(*link_, error)) << error;
     wire(cycle_, cells_);
+    cycle_.clocks = {fake_clocks, fake_ns};
   }
 
   const std::filesystem::path folder_ = NCK_SOURCE_DIR "/examples/mill";
@@ -128,6 +140,15 @@ TEST_F(MillInHal, ContourRunsThroughTheComponentsFunctionWithoutAllocating) {
   EXPECT_TRUE(link_->channel_done[0].load()) << "after " << cycles << " cycles";
   EXPECT_EQ(**cycle_.machine_pins.error_id, 0u);
   EXPECT_NEAR(**cycle_.axis_pins[2].pos_cmd, 22.0, 1e-9);  // Z, as nck run ends
+}
+
+// nck.tick-time is the tick's own clocks (one reading before, one after:
+// 1,000), nck.clocks-per-us the rate since the first cycle (2,000 clocks
+// per 500 ns a cycle: 4,000 per microsecond).
+TEST_F(MillInHal, TheTickIsTimedInTheClocksOfHalsFunctionTime) {
+  for (int i = 0; i < 3; ++i) cycle_.run(1000000);
+  EXPECT_EQ(**cycle_.machine_pins.tick_time, 1000);
+  EXPECT_DOUBLE_EQ(**cycle_.machine_pins.clocks_per_us, 4000.0);
 }
 
 TEST_F(MillInHal, AThreadPeriodOtherThanTheCycleTimeIsRefusedWithAnId) {
