@@ -94,7 +94,10 @@
   const send = (command, fields) => api.command(command, 1, fields).catch((e) => reportRefusal(e, command));
 
   function updateBar(s) {
-    if (document.activeElement !== hmi.bar.speed) hmi.bar.speed.value = String(s.speed);
+    const speed = hmi.bar.speed, value = String(s.speed);
+    // a speed set elsewhere (--speed 4, the API) that the list lacks joins it
+    if (![...speed.options].some((o) => o.value === value)) speed.append(el("option", { value }, value + "×"));
+    if (document.activeElement !== speed) speed.value = value;
     hmi.bar.pause.set(s.paused);
     $("clock").textContent = `t ${fixed(s.t_s, 3)} s · cycle ${s.cycle} · run ${s.run}` + (s.events_lost ? ` · ${s.events_lost} events lost` : "");
     const l = s.lateness;

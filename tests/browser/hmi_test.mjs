@@ -4,8 +4,11 @@
 // MDI box, a click on a program line) and checks what the machine does;
 // a program longer than one page of the API (hmi_paging.mjs).
 // Usage:
-//   node tests/browser/hmi_test.mjs --nck BIN --source DIR --out DIR [--screenshot FILE]
-// --screenshot: also save the README's picture there (docs/img/hmi.png).
+//   node tests/browser/hmi_test.mjs --nck BIN --source DIR --out DIR [--screenshot FILE] [--screenshots DIR]
+// --screenshot: also save the README's picture there (docs/img/hmi.png);
+// --screenshots: also save the four states' pictures there (docs/img:
+// hmi-idle-preview.png, hmi-running.png, hmi-lathe.png, hmi-two-channel.png;
+// the test always writes them into --out).
 import { chromium } from "playwright-core";
 import fs from "node:fs";
 import path from "node:path";
@@ -80,6 +83,7 @@ async function checkPreview(h) {
   const near = (a, b) => Math.abs(a[0] - b[0]) < 1e-3 && Math.abs(a[1] - b[1]) < 1e-3;
   expect(p && p.n > 100 && p.drawn === p.n && near(p.x, [-40, 40]) && near(p.y, [-25.9808, 25.9808]) && near(p.z, [-3, 22]),
     `preview before cycle start: ${JSON.stringify(p)}`);
+  await shot(h.page, "hmi-idle-preview.png");
 }
 
 async function checkStart(h) {
@@ -98,6 +102,7 @@ async function checkStart(h) {
   const after = { x: await h.dro("X"), z: await h.dro("Z") };
   expect(after.x !== before.x && after.z !== before.z, `cycle start: the DRO moves (X ${before.x} → ${after.x}, Z ${before.z} → ${after.z})`);
   await checkDroDetails(h);
+  await shot(h.page, "hmi-running.png");
   const seen = [...lines].filter(Boolean).map(Number);
   expect(seen.length >= 2 && seen[seen.length - 1] > seen[0], `the current line advances: ${seen.join(" → ")}`);
 }
@@ -134,6 +139,9 @@ async function checkLatheDiameter(browser) {
     const x = state.channels[0].axes.X;
     expect(seen && Math.abs(x.pcs_diameter - 2 * x.pcs) < 1e-9,
       `lathe under G51: the DRO shows ${seen} (the state: pcs ${x.pcs}, pcs_diameter ${x.pcs_diameter})`);
+    const speed = await page.locator("#speed").inputValue();  // --speed 4: not one of the list's own
+    expect(speed === "4", `the speed list shows the server's --speed 4 (${speed})`);
+    await shot(page, "hmi-lathe.png");
     await page.close();
   } finally {
     await server.stop();
@@ -336,6 +344,7 @@ async function checkTwoChannels(browser) {
     expect(m5 && m3 && Math.abs(m3.t1 - m3.t0 - 0.316) < 2e-3 && (await page.locator("#timeline rect.tl-bar").count()) === bars.length,
       `who waits for whom: ${bars.length} bars, "${m5 && m5.text}", "${m3 && m3.text}"`,
       `the timeline after both channels ran: ${JSON.stringify(bars)}`);
+    await shot(page, "hmi-two-channel.png");
     await page.close();
   } finally {
     await server.stop();
@@ -377,12 +386,14 @@ async function checkCoupledAxes(browser) {
   }
 }
 
-// The page down to its content (the README's picture: the whole path of the run after the search).
-async function screenshot(page) {
+// One state of the HMI as a picture (the page down to its content), in
+// --out and, with --screenshots DIR, in DIR (docs/img, regenerated on
+// demand); `also`: one more file (--screenshot, the README's).
+async function shot(page, name, also) {
   const height = await page.evaluate(() => Math.ceil(document.querySelector("main").getBoundingClientRect().bottom) + 8);
   const clip = { x: 0, y: 0, width: page.viewportSize().width, height: Math.min(height, page.viewportSize().height) };
-  await page.screenshot({ path: path.join(out, "hmi.png"), clip });
-  if (args.screenshot) await page.screenshot({ path: path.resolve(args.screenshot), clip });
+  const files = [path.join(out, name), args.screenshots && path.join(path.resolve(args.screenshots), name), also];
+  for (const f of files.filter(Boolean)) await page.screenshot({ path: f, clip });
 }
 
 async function run(browser, url, port) {
@@ -418,7 +429,7 @@ async function run(browser, url, port) {
   await checkSingleStep(h);
   await checkBlockSearch(h);
   await checkSpeedToEnd(h);
-  await screenshot(page);
+  await shot(page, "hmi.png", args.screenshot && path.resolve(args.screenshot));  // the whole path of the run after the search
   await checkMdi(h);
   await checkJog(h);
   await checkMdiError(h);
