@@ -25,6 +25,14 @@ target_compile_definitions(nck_hal_rt PRIVATE RTAPI __MODULE__ USPACE SIM _GNU_S
 target_include_directories(nck_hal_rt SYSTEM PRIVATE ${NCK_HAL_INCLUDE})
 target_link_libraries(nck_hal_rt PRIVATE nck_hal_cycle)
 
+# nck_cia402_sim.so (loadrt nck_cia402_sim count=N): simulated CiA 402
+# drives for HAL files without EtherCAT hardware (examples/hal/mill-cia402.hal).
+add_library(nck_cia402_sim MODULE ${PROJECT_SOURCE_DIR}/apps/hal/cia402_sim_rt.cpp)
+set_target_properties(nck_cia402_sim PROPERTIES PREFIX "" LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/hal)
+target_compile_definitions(nck_cia402_sim PRIVATE RTAPI __MODULE__ USPACE SIM _GNU_SOURCE realtime)
+target_include_directories(nck_cia402_sim SYSTEM PRIVATE ${NCK_HAL_INCLUDE})
+target_link_libraries(nck_cia402_sim PRIVATE nck_drives fmt::fmt)
+
 # nck-hal, the userspace component: decoder and preparation.
 add_executable(nck-hal ${PROJECT_SOURCE_DIR}/apps/hal/nck_hal_main.cpp)
 set_target_properties(nck-hal PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/hal)
@@ -35,7 +43,7 @@ target_link_libraries(nck-hal PRIVATE nck_prep ${NCK_LINUXCNC_HAL_LIB})
 
 # The nck-hal Debian package (component "hal", cmake/package.cmake): the
 # module where rtapi_app loads modules from, nck-hal beside halrun.
-install(TARGETS nck_hal_rt LIBRARY DESTINATION lib/linuxcnc/modules COMPONENT hal)
+install(TARGETS nck_hal_rt nck_cia402_sim LIBRARY DESTINATION lib/linuxcnc/modules COMPONENT hal)
 install(TARGETS nck-hal RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT hal)
 # nck.so is built against this LinuxCNC's HAL ABI (hal.h's structures,
 # rtapi_app's loader): the package depends on exactly this version.

@@ -4,6 +4,7 @@
 
 #include "nck/config/load.hpp"
 #include "nck/core/diagnostic.hpp"
+#include "nck/drives/cia402.hpp"
 
 namespace nck::hal {
 
@@ -44,7 +45,12 @@ bool Cycle::build(Link& link, std::string& error) {
   out_ = std::make_unique<kernel::TickOutput>();
   for (std::size_t ch = 0; ch < machine_->channels.size(); ++ch) {
     const auto& axes = machine_->channels[ch].axes;
-    for (std::size_t j = 0; j < axes.size() && j < kMaxAxes; ++j) axes_.push_back({ch, j, axes[j].name});
+    for (std::size_t j = 0; j < axes.size() && j < kMaxAxes; ++j) {
+      const int index = axes[j].axis_index;
+      const bool cia = index >= 0 && static_cast<std::size_t>(index) < drives::kMaxDrives &&
+                       machine_->axes[static_cast<std::size_t>(index)].is_cia402();
+      axes_.push_back({ch, j, axes[j].name, cia ? index : -1});
+    }
   }
   for (auto& s : plc_slots_) s.handle = plc::kNoHandle;
   link.rt_state.store(static_cast<std::uint32_t>(RtState::configured));
@@ -72,6 +78,7 @@ void Cycle::run(long period_ns) noexcept {
   }
   link_->rt_state.store(static_cast<std::uint32_t>(RtState::running), std::memory_order_relaxed);
   read_pins();
+  read_drives();
   relay_commands();
   out_->tech_outputs.clear();
   out_->events.clear();
@@ -111,6 +118,22 @@ void Cycle::tick_timed() noexcept {
     first_clocks_ = after;
   } else if (now_ns > first_ns_) {
     **machine_pins.clocks_per_us = static_cast<double>(after - first_clocks_) * 1e3 / static_cast<double>(now_ns - first_ns_);
+  }
+}
+
+// The CiA 402 drives' statuswords and actual values, as the drive sent
+// them after the last cycle.
+void Cycle::read_drives() noexcept {
+  for (std::size_t i = 0; i < axes_.size() && i < cia_pins.size(); ++i) {
+    if (axes_[i].drive < 0) continue;
+    const CiaPins& c = cia_pins[i];
+    drives::DriveFeedback& fb = in_->drives[static_cast<std::size_t>(axes_[i].drive)];
+    fb.statusword = static_cast<std::uint16_t>(**c.statusword);
+    fb.mode_display = static_cast<std::int8_t>(**c.opmode_display);
+    fb.fault = (fb.statusword & drives::cia402::sw::fault) != 0;
+    fb.actual_pos = **axis_pins[i].pos_fb;
+    fb.actual_vel = **c.vel_fb;
+    fb.following_error = **axis_pins[i].following_error;
   }
 }
 
@@ -181,6 +204,13 @@ void Cycle::write_pins() noexcept {
     **p.pos_cmd = cmd;
     **p.following_error = cmd - **p.pos_fb;
     **p.enable = on;
+    if (a.drive < 0 || i >= cia_pins.size()) continue;
+    const drives::DriveCommand& d = out_->drives[static_cast<std::size_t>(a.drive)];
+    const CiaPins& c = cia_pins[i];
+    **c.controlword = d.controlword;
+    **c.opmode = d.mode_of_operation;
+    **c.vel_cmd = d.target_vel;
+    **p.enable = on && d.enable;
   }
   for (std::size_t ch = 0; ch < channel_count(); ++ch) {
     const kernel::ChannelOutput& o = out_->channels[ch];

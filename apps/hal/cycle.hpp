@@ -29,6 +29,13 @@ struct AxisPins {  // nck.axis.<name>.*
   PinFloat pos_cmd, pos_fb, following_error;
   PinBit enable, amp_fault, home_sw, limit_pos, limit_neg;
 };
+// An axis whose drive is CiA 402 (kenngr.antr_typ 8): its words, beside
+// pos-cmd (target position) and pos-fb (actual position).
+struct CiaPins {  // nck.axis.<name>.cia-*, vel-cmd, vel-fb
+  PinU32 controlword, statusword;
+  PinS32 opmode, opmode_display;
+  PinFloat vel_cmd, vel_fb;
+};
 struct ChannelPins {  // nck.channel.<n>.*
   PinBit cycle_start, feedhold, reset, single_step, optional_stop, done;
   PinFloat feed_override, rapid_override, path_velocity;
@@ -66,6 +73,7 @@ struct CycleClocks {
 struct AxisRef {  // one nck.axis.* pin group: its channel and channel axis
   std::size_t channel = 0, axis = 0;
   std::string name;
+  int drive = -1;  // its machine axis list (the drive slot) when the drive is CiA 402
 };
 
 class Cycle {
@@ -82,6 +90,7 @@ class Cycle {
 
   // The pins, set before the first run().
   std::vector<AxisPins> axis_pins;
+  std::vector<CiaPins> cia_pins;  // beside axis_pins; set where AxisRef::drive >= 0
   std::vector<ChannelPins> channel_pins;
   std::vector<SpindlePins> spindle_pins;
   std::array<PlcPins, kPlcSlots> plc_pins{};
@@ -94,6 +103,7 @@ class Cycle {
  private:
   void fail(std::uint32_t id) noexcept;
   void read_pins() noexcept;
+  void read_drives() noexcept;
   void relay_commands() noexcept;
   void write_pins() noexcept;
   void hand_to_plc() noexcept;

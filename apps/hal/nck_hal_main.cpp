@@ -34,6 +34,21 @@ int fail(nck::ErrorId id, const std::string& what) {
   return 1;
 }
 
+// One event as a line: its kind, and what a commissioning engineer needs
+// of a wait (the reason) and of an error or warning (the ID, the axis).
+void print_event(const nck::kernel::Event& e, const nck::config::Machine& m) {
+  std::string what = nck::kernel::event_name(e.kind());
+  if (const auto* w = e.get<nck::kernel::ev::Wait>()) what = fmt::format("wait reason={}", nck::kernel::wait_reason_name(w->reason));
+  const nck::kernel::ev::Diagnosis* d = e.get<nck::kernel::ev::Error>();
+  if (!d) d = e.get<nck::kernel::ev::Warning>();
+  if (d) {
+    what += fmt::format(" id={}", static_cast<unsigned>(d->id));
+    if (d->axis && static_cast<std::size_t>(*d->axis) < m.axes.size())
+      what += " axis=" + m.axes[static_cast<std::size_t>(*d->axis)].name;
+  }
+  std::printf("event t=%.4f ch=%u line=%u ev=%s\n", e.t_s, unsigned{e.channel}, e.at.line, what.c_str());
+}
+
 std::optional<std::string> read_text(const std::filesystem::path& p) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(p, ec)) return std::nullopt;
@@ -101,13 +116,7 @@ int main(int argc, char** argv) {
       const bool done = running && link->cycles.load() > 0 && link->channel_done[0].load() != 0;
       prep.feed(link->commands[0], link->feedback[0], done);
       while (!link->events.empty()) {
-        const nck::kernel::Event& e = link->events.front();
-        if (const auto* w = e.get<nck::kernel::ev::Wait>())
-          std::printf("event t=%.4f ch=%u line=%u ev=wait reason=%s\n", e.t_s, unsigned{e.channel}, e.at.line,
-                      nck::kernel::wait_reason_name(w->reason));
-        else
-          std::printf("event t=%.4f ch=%u line=%u ev=%s\n", e.t_s, unsigned{e.channel}, e.at.line,
-                      nck::kernel::event_name(e.kind()));
+        print_event(link->events.front(), machine);
         link->events.pop();
         ++events;
       }

@@ -76,6 +76,16 @@ int make_pins(nck::hal::Cycle& c) {
     r |= bit(HAL_IN, p.limit_pos, n + ".pos-lim-sw-in");
     r |= bit(HAL_IN, p.limit_neg, n + ".neg-lim-sw-in");
     c.axis_pins.push_back(p);
+    nck::hal::CiaPins cia{};
+    if (a.drive >= 0) {  // a CiA 402 drive: its words
+      r |= u32(HAL_OUT, cia.controlword, n + ".cia-controlword");
+      r |= s32(HAL_OUT, cia.opmode, n + ".cia-opmode");
+      r |= flt(HAL_OUT, cia.vel_cmd, n + ".vel-cmd");
+      r |= u32(HAL_IN, cia.statusword, n + ".cia-statusword");
+      r |= s32(HAL_IN, cia.opmode_display, n + ".cia-opmode-display");
+      r |= flt(HAL_IN, cia.vel_fb, n + ".vel-fb");
+    }
+    c.cia_pins.push_back(cia);
   }
   for (std::size_t ch = 0; ch < c.channel_count(); ++ch) {
     nck::hal::ChannelPins p{};

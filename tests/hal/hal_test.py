@@ -4,6 +4,7 @@ through scripts/hal-demo.sh and bounded in time. Exit 77 (skipped) when the
 HAL components are not built or unshare is not allowed.
 
   hal_test.py SOURCE BUILD CASE   CASE: contour | operator | plc | period | wrong-type | missing-machine | missing-program
+                                        | cia402 | cia402-fault
 """
 import json, os, re, subprocess, sys, tempfile
 
@@ -78,6 +79,10 @@ def with_monitor(text):
 
 
 example_text = open(example).read()
+cia_machine = os.path.join(src, "examples", "mill-cia402")
+cia_text = open(os.path.join(src, "examples", "hal", "mill-cia402.hal")).read()
+cia_enable = os.path.join(cia_machine, "enable.nc")
+OP_ENABLED = 0x0637  # CiA 402 statusword: operation enabled, remote, target reached
 
 if case == "contour":
     rc, out = run(with_monitor(example_text))
@@ -172,6 +177,49 @@ stop
     check(state == ["2"] and xs[1] == 10.0, "after feedhold off the program holds at M0 (program-state 2) with X at 10", out)
     check(xs[2] == 20.0 and pins(out).get("nck.channel.1.status") == "3", "cycle start released M0: X at 20, ended", out)
     check("event" in out and "channel 1 done" in out, "nck-hal saw the end", out)
+elif case == "cia402":
+    # (b) through HAL pins: nck powers the three simulated CiA 402 drives up
+    # to operation enabled (the program waits for them), runs the square
+    # in cyclic synchronous position and ends where `nck run` ends.
+    rc, out = run(cia_text, program=cia_enable, machine=cia_machine, timeout=60)
+    check(rc == 0 and "channel 1 done" in out, f"enable.nc ran to its end through nck_cia402_sim (exit {rc})", out)
+    check(re.search(r"ev=wait reason=drive_enable", out) is not None, "the program waited for the drives (drive_enable)", out)
+    v = pins(out)
+    for a in "XYZ":
+        check(int(v.get(f"nck.axis.{a}.cia-statusword", "0"), 16) == OP_ENABLED and v.get(f"nck.axis.{a}.cia-opmode") == "8",
+              f"{a}: statusword 0x{OP_ENABLED:04X} (operation enabled) in mode 8 (cyclic synchronous position)", out)
+    final = subprocess.run([os.path.join(build, "nck"), "run", cia_machine, cia_enable, "--final", "-"],
+                           capture_output=True, text=True, timeout=120)
+    axes = json.loads(final.stdout)["channels"][0]["axes"]
+    for a, i in (("X", 0), ("Y", 1), ("Z", 2)):
+        fb = float(v[f"nck-cia402-sim.{i}.pos-fb"])
+        check(abs(fb - axes[a]["mcs"]) < 1e-9, f"{a}: the drive stands at {fb}, where nck run ends ({axes[a]['mcs']})", out)
+elif case == "cia402-fault":
+    # (b) a drive fault in motion and its reset, through HAL pins: Y's fault
+    # input is error 940501 naming Y; with the fault gone a channel reset
+    # writes the fault reset and the drive powers up to operation enabled.
+    head = cia_text[:cia_text.index("\nstart\n")]
+    tail = """
+start
+loadusr -w sleep 2
+setp nck-cia402-sim.1.fault 1
+loadusr -w sleep 0.5
+show pin nck.axis.Y.cia-statusword
+setp nck-cia402-sim.1.fault 0
+setp nck.channel.1.reset 1
+loadusr -w sleep 0.5
+setp nck.channel.1.reset 0
+show pin nck.axis.Y.cia-statusword
+show pin nck.error-id
+stop
+"""
+    rc, out = run(head + "\n" + tail, program=cia_enable, machine=cia_machine, timeout=60)
+    check(rc == 0, f"the session ran (exit {rc})", out)
+    check(re.search(r"ev=error id=940501 axis=Y", out) is not None, "Y's drive fault is error 940501 naming Y", out)
+    words = [int(w, 16) for w in re.findall(r"^\s*\d+\s+u32\s+IN\s+(0x[0-9A-F]+)\s+nck\.axis\.Y\.cia-statusword", out, re.M)]
+    check(len(words) == 2 and words[0] & 0x0008 and words[1] == OP_ENABLED,
+          f"Y's statusword: fault (0x{words[0] if words else 0:04X}), then after the reset 0x{OP_ENABLED:04X}", out)
+    check(pins(out).get("nck.error-id") == "0x00000000", "nck.cycle itself never stopped (nck.error-id 0)", out)
 else:
     print(f"unknown case {case}")
     sys.exit(2)

@@ -1,17 +1,15 @@
 #pragma once
-// The simulated machine's CiA 402 drives: one cia402::Device per axis list
-// whose kenngr.antr_typ is 8 (and that P-AXIS-00790 does not simulate the
-// old way). Each cycle the device takes the kernel's controlword, steps its
-// power state machine and reports the statusword; while operation is
-// enabled it follows the target position exactly (an ideal drive: the
-// NC's set point is its actual position, following error 0). A scenario
-// line (drive_fault X on|off) holds its fault input.
+// The simulated machine's CiA 402 drives: one drives::IdealDrive per axis
+// list whose kenngr.antr_typ is 8 (and that P-AXIS-00790 does not simulate
+// the old way): each cycle it takes the kernel's controlword and set point
+// and reports its statusword and actual values. A scenario line
+// (drive_fault X on|off) holds its fault input.
 #include <array>
 #include <cstddef>
 #include <cstdint>
 
 #include "nck/config/machine.hpp"
-#include "nck/drives/cia402.hpp"
+#include "nck/drives/ideal_drive.hpp"
 #include "nck/kernel/tick_io.hpp"
 
 namespace nck::sim {
@@ -29,8 +27,7 @@ class Cia402Drives {
  private:
   struct Drive {
     bool fault = false;
-    drives::cia402::Device device{2};  // fault reaction: 2 cycles
-    drives::DriveFeedback fb{};
+    drives::IdealDrive drive;
   };
   std::array<Drive, drives::kMaxDrives> drives_{};
   // The axis lists with a CiA 402 drive, in order: each cycle visits only
