@@ -79,7 +79,6 @@ class ServeApi : public ApiHandler {
   std::unique_ptr<sim::DryRun> staged_;          // loaded, waits for cycle start
   std::optional<prep::SearchMark> staged_search_;  // its block search (an edit makes it again)
   std::size_t staged_search_channel_ = 0;
-  OffsetBook offsets_;  // the edits of the lists not saved yet
   sim::DryRun* serving_ = nullptr;  // the run of generation_ (the kernel's, or the one it just gave back)
   std::uint64_t generation_ = 1;
   ChannelFrames frames_{};
@@ -87,6 +86,7 @@ class ServeApi : public ApiHandler {
   LastErrors last_errors_;  // of the run of generation_, from its events (the state's last_error)
   LivePath path_;        // the run's path so far, for a page loaded during it
   StreamReplay replay_;  // the frames' ids, the events a reconnecting client missed
+  OffsetBook offsets_;   // the edits of the lists not saved yet
 };
 
 }  // namespace nck::app::serve
