@@ -62,8 +62,8 @@ async function edits(s) {
 }
 
 // G55 selected by MDI, the axes moved; touching off G54 X so that X reads 2
-// gives G54 X = MCS X - 2 (no tool, no clamp offset), and X reads 2 once an
-// MDI selects G54.
+// gives G54 X = MCS X - 2 (no tool, no clamp offset), and an MDI G54 X2
+// then does not move the axis.
 async function touchOff(s) {
   await sleep(300);  // the run the last edit handed the idle kernel is taken
   const mdi = await command(s, { command: "mdi", channel: 1, text: "G55 G90 G01 X7 Y3 F6000" });
@@ -79,10 +79,13 @@ async function touchOff(s) {
   check("the touched-off value in the table", Math.abs(zeroOf(await tables(s), "G54").X - (mcsX - 2)) < 1e-4);
   // the edit gave the idle kernel a fresh run: its MDI selects the new value
   await untilState(s, (st) => st.run > run, 5000, "a fresh run after the edit");
-  const sel = await command(s, { command: "mdi", channel: 1, text: "G54 G91 G01 Y1 F6000" });
-  check("MDI G54 accepted", sel.status === 200, sel.body);
-  await untilState(s, (st) => Math.abs(st.channels[0].pcs.X - 2) < 1e-4, 5000, "after G54 is selected X reads 2");
-  check("after G54 is selected X reads 2", true);
+  // G54 X2 in absolute: no move, the axis stands where it was touched off
+  const sel = await command(s, { command: "mdi", channel: 1, text: "G54 G90 G01 X2 F6000" });
+  check("MDI G54 X2 accepted", sel.status === 200, sel.body);
+  const st = await untilState(s, (x) => x.channels[0].modal && x.channels[0].modal.zero_offset === "G54" &&
+                                        x.channels[0].state === "idle", 5000, "G54 selected");
+  check("after G54 X2 the axis did not move and reads 2", Math.abs(st.channels[0].mcs.X - mcsX) < 1e-4 &&
+        Math.abs(st.channels[0].pcs.X - 2) < 1e-4, JSON.stringify(st.channels[0].mcs) + JSON.stringify(st.channels[0].pcs));
   const bad = await post(s, "/api/v1/offsets/touch_off", { offset: "G61", axis: "X", reads_mm: 0 });
   check("touch-off of a non-existent offset: 404 with 940330", bad.status === 404 && errorId(bad) === 940330, bad.body);
 }
