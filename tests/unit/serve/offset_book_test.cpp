@@ -43,6 +43,13 @@ TEST(ListRewrite, CrLfLinesStayCrLf) {
   EXPECT_EQ(rewrite_list("a 1 # x\r\nEnde\r\n", {{"a", "22"}}), "a 22 # x\r\nEnde\r\n");
 }
 
+// A tool edit of one field.
+ToolEdit tool_edit(std::optional<double> ToolEdit::*field, double value) {
+  ToolEdit e;
+  e.*field = value;
+  return e;
+}
+
 class OffsetBookTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -71,10 +78,10 @@ TEST_F(OffsetBookTest, AnEditIsCheckedByTheListRules) {
   EXPECT_EQ(book.set_zero(m_, 0, "G53", "X", 1)->id, ErrorId::OffsetNotFound);
   EXPECT_EQ(book.set_zero(m_, 0, "G54", "A", 1)->id, ErrorId::OffsetNotFound);
   EXPECT_EQ(book.set_clamp(m_, 0, 5, "X", 1)->id, ErrorId::OffsetNotFound);
-  EXPECT_EQ(book.set_tool(m_, 0, 4, ToolEdit{.length_mm = 1.0})->id, ErrorId::OffsetNotFound);  // no wz[4]
-  EXPECT_EQ(book.set_tool(m_, 0, 5, ToolEdit{.vb_min_rpm = 600.0})->id, ErrorId::OffsetOutOfRange);  // above vb_max 500
+  EXPECT_EQ(book.set_tool(m_, 0, 4, tool_edit(&ToolEdit::length_mm, 1.0))->id, ErrorId::OffsetNotFound);  // no wz[4]
+  EXPECT_EQ(book.set_tool(m_, 0, 5, tool_edit(&ToolEdit::vb_min_rpm, 600.0))->id, ErrorId::OffsetOutOfRange);  // above vb_max 500
   EXPECT_DOUBLE_EQ(m_.channel_data[0].tools[5].vb_min_rpm, 10);
-  EXPECT_FALSE(book.set_tool(m_, 0, 5, ToolEdit{.vb_max_rpm = 800.0}));
+  EXPECT_FALSE(book.set_tool(m_, 0, 5, tool_edit(&ToolEdit::vb_max_rpm, 800.0)));
   EXPECT_DOUBLE_EQ(m_.channel_data[0].tools[5].vb_max_rpm, 800);
 }
 
@@ -82,7 +89,7 @@ TEST_F(OffsetBookTest, SaveWritesTheValuesAndABackup) {
   OffsetBook book(m_);
   const std::string old = read_all(dir_ / "zero.lis");
   ASSERT_FALSE(book.set_zero(m_, 0, "G54", "Z", -149.5));
-  ASSERT_FALSE(book.set_tool(m_, 0, 5, ToolEdit{.vb_max_rpm = 800.0}));
+  ASSERT_FALSE(book.set_tool(m_, 0, 5, tool_edit(&ToolEdit::vb_max_rpm, 800.0)));
   const auto written = book.save();
   ASSERT_TRUE(written) << written.error().message;
   EXPECT_EQ(written->size(), 2u);
