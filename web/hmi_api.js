@@ -73,5 +73,5 @@
     return { source: es, stats };
   }
 
-  window.NckApi = { ApiError, get, command, upload, throttle, stream };
+  window.NckApi = { ApiError, request, get, command, upload, throttle, stream };
 })();

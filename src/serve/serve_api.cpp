@@ -40,6 +40,7 @@ std::optional<HttpReply> page_file(std::string_view path) {
       {"/hmi_controls.js", "hmi_controls.js"},
       {"/hmi_channel.js", "hmi_channel.js"},
       {"/backplot.js", "backplot.js"},
+      {"/hmi_offsets.js", "hmi_offsets.js"},
       {"/timeline.js", "timeline.js"},
       {"/uPlot.iife.min.js", "uPlot.iife.min.js"},
       {"/uPlot.min.css", "uPlot.min.css"}};
@@ -96,7 +97,7 @@ sim::DryRunOptions served_run_options(const ProgramFolders& folders) {
 
 ServeApi::ServeApi(const config::Machine& m, LiveKernel& kernel, ProgramFolders folders)
     : machine_(m), kernel_(kernel), folders_(std::move(folders)), programs_(m.channels.size()), previews_(m.channels.size()),
-      serving_(kernel.current()) {
+      serving_(kernel.current()), offsets_(m) {
   seed_state();
 }
 
@@ -120,6 +121,7 @@ void ServeApi::seed_state() {
 
 HttpReply ServeApi::handle(const HttpRequest& r) {
   const std::string_view path = r.target.substr(0, r.target.find('?'));
+  if (auto reply = offsets_route(r)) return *reply;
   if (r.method == "GET") {
     if (auto page = page_file(path)) return *page;
     if (path == "/api/v1/state") return HttpReply{200, "application/json", state_frame(), {}};
@@ -170,6 +172,8 @@ HttpReply ServeApi::act(const ApiCommand& c) {
       auto run = make_run(*mark, ch);
       if (!run) return error_reply(400, run.error());
       staged_ = std::move(*run);
+      staged_search_ = *mark;
+      staged_search_channel_ = ch;
       break;
     }
     case K::mdi: return mdi(ch, c.text, c.queue);
@@ -241,11 +245,12 @@ std::optional<Diagnostic> ServeApi::load(std::size_t ch, const std::string& prog
     return run.error();
   }
   staged_ = std::move(*run);
+  staged_search_.reset();
   return std::nullopt;
 }
 
 std::expected<std::unique_ptr<sim::DryRun>, Diagnostic> ServeApi::make_run(
-    const std::optional<prep::SearchMark>& search, std::size_t search_channel) const {
+    const std::optional<prep::SearchMark>& search, std::size_t search_channel, bool with_programs) const {
   sim::DryRunOptions o = served_run_options(folders_);
   o.search = search;
   o.search_channel = search_channel;
@@ -254,7 +259,7 @@ std::expected<std::unique_ptr<sim::DryRun>, Diagnostic> ServeApi::make_run(
   // does not jump, and a block search returns to the contour from there.
   for (std::size_t ch = 0; ch < last_.channel_count && ch < o.start_mcs.size(); ++ch)
     o.start_mcs[ch] = last_.channels[ch].axis_mcs;
-  auto run = sim::DryRun::create(machine_, programs_, o);
+  auto run = sim::DryRun::create(machine_, with_programs ? programs_ : std::vector<std::filesystem::path>(programs_.size()), o);
   if (!run) return std::unexpected(run.error());
   auto live = std::make_unique<sim::DryRun>(std::move(*run));
   // The operator presses cycle start for every hold (M0, single step,

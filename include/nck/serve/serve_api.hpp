@@ -13,6 +13,7 @@
 #include "nck/serve/http_server.hpp"
 #include "nck/serve/live_kernel.hpp"
 #include "nck/serve/live_path.hpp"
+#include "nck/serve/offset_book.hpp"
 #include "nck/serve/program_folders.hpp"
 #include "nck/serve/snapshot_json.hpp"
 #include "nck/serve/stream_replay.hpp"
@@ -38,8 +39,10 @@ class ServeApi : public ApiHandler {
 
   // A fresh run of the loaded programs (setup side), ready to hand over;
   // the reason when a program cannot be opened.
+  // with_programs false: a run without programs (the idle machine).
   std::expected<std::unique_ptr<sim::DryRun>, Diagnostic> make_run(const std::optional<prep::SearchMark>& search,
-                                                                   std::size_t search_channel) const;
+                                                                   std::size_t search_channel,
+                                                                   bool with_programs = true) const;
   // Loads `program` into channel ch (0-based) and stages the run.
   std::optional<Diagnostic> load(std::size_t ch, const std::string& program);
 
@@ -54,6 +57,13 @@ class ServeApi : public ApiHandler {
   HttpReply preview(std::string_view target);
   HttpReply path_so_far(std::string_view target) const;
   HttpReply upload(std::string_view target, std::string_view body);
+  // Offsets and tools (offsets_api.cpp, issue 48 item 8).
+  std::optional<HttpReply> offsets_route(const HttpRequest& r);
+  HttpReply offsets_page() const;
+  HttpReply edit_offset(std::string_view path, std::string_view body);
+  HttpReply touch_off(std::size_t ch, const std::string& offset, const std::string& axis, double reads_mm);
+  HttpReply edited(std::optional<Diagnostic> refusal);
+  HttpReply reload_lists();
   // A channel that runs a program (not idle, ended or failed), if any.
   std::optional<std::size_t> busy_channel() const;
   std::string state_frame();
@@ -61,12 +71,14 @@ class ServeApi : public ApiHandler {
   void advance();
   void seed_state();
 
-  const config::Machine& machine_;
+  config::Machine machine_;  // the server's copy: offset and tool edits change it, the next run takes it
   LiveKernel& kernel_;
   ProgramFolders folders_;
   std::vector<std::filesystem::path> programs_;  // per channel: the loaded program (empty: none)
   std::vector<std::string> previews_;            // per channel: its preview's answer, once asked (empty: not yet)
   std::unique_ptr<sim::DryRun> staged_;          // loaded, waits for cycle start
+  std::optional<prep::SearchMark> staged_search_;  // its block search (an edit makes it again)
+  std::size_t staged_search_channel_ = 0;
   sim::DryRun* serving_ = nullptr;  // the run of generation_ (the kernel's, or the one it just gave back)
   std::uint64_t generation_ = 1;
   ChannelFrames frames_{};
@@ -74,6 +86,7 @@ class ServeApi : public ApiHandler {
   LastErrors last_errors_;  // of the run of generation_, from its events (the state's last_error)
   LivePath path_;        // the run's path so far, for a page loaded during it
   StreamReplay replay_;  // the frames' ids, the events a reconnecting client missed
+  OffsetBook offsets_;   // the edits of the lists not saved yet
 };
 
 }  // namespace nck::app::serve

@@ -136,6 +136,8 @@ class DryRun {
   std::size_t channel_count() const { return preps_.size(); }
   const prep::ChannelPrep& prep(std::size_t ch) const { return preps_.at(ch); }
   const kernel::Kernel& kernel() const { return *kernel_; }
+  // The machine this run was made with (its own copy: later edits of the server's do not reach it).
+  const config::Machine& config() const { return *machine_; }
   const MachineSim& machine() const { return *sim_; }
   MachineSim& machine() { return *sim_; }
   ChannelSnapshot snapshot(std::size_t ch) const;
