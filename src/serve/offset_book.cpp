@@ -17,7 +17,7 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
 
-Diagnostic refusal(ErrorId id, std::string message) { return make_diagnostic(id, SourceLoc{"api", 0, 0}, std::move(message)); }
+Diagnostic refusal(ErrorId id, std::string message) { return make_diagnostic(id, SourceLoc{}, std::move(message)); }
 
 // A value as the list writes it (0.1 um, 0.001 deg/s ...), checked against
 // the key's registry entry as the loader checks it; the reason otherwise.

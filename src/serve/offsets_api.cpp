@@ -104,7 +104,7 @@ HttpReply ServeApi::edit_offset(std::string_view path, std::string_view body) {
     ToolEdit e{number(j, "length_mm"), number(j, "radius_mm"), number(j, "vb_min_rpm"), number(j, "vb_max_rpm"), number(j, "a_max_deg_s2")};
     for (std::size_t c = 0; c < last_.channel_count; ++c)  // the tool a running program has selected
       if (!channel_free(last_.channels[c].program_state) && frames_[c].modal && frames_[c].modal->d == static_cast<std::int64_t>(n))
-        return error_reply(409, make_diagnostic(ErrorId::OffsetToolInUse, SourceLoc{"api", 0, 0},
+        return error_reply(409, make_diagnostic(ErrorId::OffsetToolInUse, SourceLoc{},
                                                 fmt::format("channel {} runs with tool D{}: the edit is refused (not deferred)", c + 1, n)));
     return edited(offsets_.set_tool(machine_, ch, n, e));
   }
@@ -134,7 +134,7 @@ HttpReply ServeApi::edit_offset(std::string_view path, std::string_view body) {
 // = active offset (the run's) + PCS - reads.
 HttpReply ServeApi::touch_off(std::size_t ch, const std::string& offset, const std::string& axis, double reads_mm) {
   const auto refused = [&](std::string why) {
-    return error_reply(409, make_diagnostic(ErrorId::OffsetTouchOffRefused, SourceLoc{"api", 0, 0}, std::move(why)), ch + 1);
+    return error_reply(409, make_diagnostic(ErrorId::OffsetTouchOffRefused, SourceLoc{}, std::move(why)), ch + 1);
   };
   if (!std::isfinite(reads_mm)) return missing("reads_mm");
   if (ch < last_.channel_count && !channel_free(last_.channels[ch].program_state))
