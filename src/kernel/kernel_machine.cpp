@@ -27,4 +27,8 @@ void Kernel::follow_machine(const TickInput& in, double t_s, TickOutput& out) no
   out.machine = m;
 }
 
+bool Kernel::estop_latched(std::size_t ch) const noexcept {
+  return ch < channels_.size() && channels_[ch]->estop_latched();
+}
+
 }  // namespace nck::kernel

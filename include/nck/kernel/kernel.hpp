@@ -91,6 +91,8 @@ class Kernel {
   std::uint64_t cycles() const noexcept { return cycles_; }
   // What E-stop and machine on made of the machine, as of the last tick.
   const MachineOutput& machine_state() const noexcept { return machine_out_; }
+  // Channel ch keeps an E-stop latched until its reset after the release.
+  bool estop_latched(std::size_t ch) const noexcept;
   // Simulated time at the start of the next cycle.
   double time_s() const noexcept { return time_s_; }
 

@@ -159,3 +159,73 @@ TEST(HalCycle, NoPackIsRefusedWithAnId) {
 
 }  // namespace
 }  // namespace nck::hal
+
+namespace nck::hal {
+namespace {
+
+// nck.estop is the kernel's E-stop input (issue 48 item 9): the contour
+// brakes and ends in error, nck.axis.*.enable go off at standstill, the
+// reset pin does nothing while the E-stop is on and leaves the error after
+// its release; nothing allocates.
+TEST(HalCycle, EstopPinBrakesEndsInErrorAndDisablesUntilReset) {
+  const std::filesystem::path folder = NCK_SOURCE_DIR "/examples/mill";
+  ListPack pack;
+  config::LoadOptions options;
+  options.read_text = [&pack](const std::filesystem::path& p) -> std::optional<std::string> {
+    std::ifstream in(p, std::ios::binary);
+    if (!in) return std::nullopt;
+    return pack[p.string()] = std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  auto loaded = config::load_machine(folder, options);
+  ASSERT_TRUE(loaded.ok());
+  pack[""] = folder.string();
+  auto link = std::make_unique<Link>();
+  link->magic = kLinkMagic;
+  link->version = kLinkVersion;
+  ASSERT_TRUE(write_pack(*link, pack));
+  Cycle cycle;
+  std::string error;
+  ASSERT_TRUE(cycle.build(*link, error)) << error;
+  Cells cells;
+  wire(cycle, cells);
+  prep::PlanStore store;
+  prep::ChannelPrep prep(*loaded.machine, 0, folder / "contour.nc", store, prep::PrepOptions{});
+  std::array<bool, kPlcSlots> acked{};
+  auto run = [&](std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) {
+      prep.feed(link->commands[0], link->feedback[0], false);
+      for (std::size_t k = 0; k < kPlcSlots; ++k) {
+        **cycle.plc_pins[k].ack = **cycle.plc_pins[k].request && !acked[k];
+        acked[k] = **cycle.plc_pins[k].ack;
+      }
+      g_counting = true;
+      cycle.run(1000000);
+      g_counting = false;
+      while (!link->events.empty()) link->events.pop();
+    }
+  };
+  g_allocations = 0;
+  run(3000);
+  EXPECT_TRUE(**cycle.axis_pins[0].enable);
+  **cycle.machine_pins.estop = true;
+  run(2000);
+  const auto error_state = static_cast<std::int32_t>(kernel::ProgramState::error);
+  EXPECT_EQ(**cycle.channel_pins[0].program_state, error_state);
+  EXPECT_TRUE(link->channel_done[0].load());
+  EXPECT_FALSE(**cycle.axis_pins[0].enable);
+  **cycle.channel_pins[0].reset = true;  // ignored while the E-stop is on
+  run(2);
+  **cycle.channel_pins[0].reset = false;
+  EXPECT_EQ(**cycle.channel_pins[0].program_state, error_state);
+  **cycle.machine_pins.estop = false;
+  run(2);
+  EXPECT_TRUE(**cycle.axis_pins[0].enable);
+  EXPECT_EQ(**cycle.channel_pins[0].program_state, error_state);
+  **cycle.channel_pins[0].reset = true;
+  run(2);
+  EXPECT_EQ(**cycle.channel_pins[0].program_state, static_cast<std::int32_t>(kernel::ProgramState::idle));
+  EXPECT_EQ(g_allocations.load(), 0u);
+}
+
+}  // namespace
+}  // namespace nck::hal
