@@ -465,7 +465,9 @@ void Channel::fail_mdi(Cycle& cy) noexcept {
   hold_.reset();
   sync_.clear();
   dropping_mdi_ = true;
-  set_state(ProgramState::idle, StateReason::error, cy);
+  resetting_ = drive_failed_ = false;  // the braking that ended it is over
+  // An E-stop leaves the channel in error until its reset, MDI or not.
+  set_state(estop_latched_ ? ProgramState::error : ProgramState::idle, StateReason::error, cy);
   status_ = ChannelStatus::ended;
 }
 

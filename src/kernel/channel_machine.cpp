@@ -59,12 +59,16 @@ ErrorId Channel::refusal(const Cycle& cy) const noexcept {
 // MDI typed while starts are refused is dropped with the refusal's ID
 // (what else a done channel holds it drops anyway: take_mdi). rt
 void Channel::refuse_mdi(ErrorId why, Cycle& cy) noexcept {
+  // The rest of a text the E-stop ended goes silently (its error was said).
+  while (dropping_mdi_ && !commands_->empty()) {
+    dropping_mdi_ = commands_->front().mdi != Mdi::end;
+    commands_->pop();
+  }
   bool mdi = false;
-  while (!commands_->empty()) {
+  while (!dropping_mdi_ && !commands_->empty()) {
     mdi = mdi || commands_->front().mdi != Mdi::none;
     commands_->pop();
   }
-  dropping_mdi_ = false;
   if (mdi) cy.emit(ev::Warning{{why, {}, {}}});
 }
 
