@@ -85,8 +85,10 @@
         .map(([v, t]) => el("option", { value: v }, t)));
     const pause = check("pause", "stop the kernel's clock (the machine freezes)", (on) => send("pause", { on }));
     const step = button("Step cycle", "one kernel cycle while paused", () => send("step_cycle"));
-    hmi.bar = { speed, pause };
-    $("run").append(el("label", {}, "speed ", speed), pause.el, step,
+    const machine = window.NckControls.machinePanel((name, on) =>
+      api.machineInput(name, on).catch((e) => reportRefusal(e, name)));
+    hmi.bar = { speed, pause, machine };
+    $("run").append(machine.el, el("label", {}, "speed ", speed), pause.el, step,
       el("span", { id: "clock" }), el("span", { id: "lateness", title: "how late the kernel's cycles woke up" }),
       el("span", { id: "rate" }), el("span", { id: "link" }));
   }
@@ -94,6 +96,7 @@
   const send = (command, fields) => api.command(command, 1, fields).catch((e) => reportRefusal(e, command));
 
   function updateBar(s) {
+    hmi.bar.machine.update(s);
     const speed = hmi.bar.speed, value = String(s.speed);
     // a speed set elsewhere (--speed 4, the API) that the list lacks joins it
     if (![...speed.options].some((o) => o.value === value)) speed.append(el("option", { value }, value + "×"));

@@ -31,6 +31,8 @@
 
   const get = (path) => request("GET", path);
   const command = (name, channel, fields) => request("POST", "/api/v1/command", { command: name, channel, ...fields });
+  // The machine's inputs: POST /api/v1/estop or /api/v1/machine_on with {on}.
+  const machineInput = (name, on) => request("POST", "/api/v1/" + name, { on });
   const upload = (name, text) => request("POST", "/api/v1/upload?name=" + encodeURIComponent(name), text);
 
   // Calls fn at most once per `ms` with the latest arguments; the last call
@@ -73,5 +75,5 @@
     return { source: es, stats };
   }
 
-  window.NckApi = { ApiError, request, get, command, upload, throttle, stream };
+  window.NckApi = { ApiError, request, get, command, machineInput, upload, throttle, stream };
 })();

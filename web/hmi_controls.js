@@ -142,5 +142,32 @@
     };
   }
 
-  window.NckControls = { cyclePanel, overridePanel, skipPanel, jogPanel, mdiPanel, spindlePanel };
+  // The machine's E-stop (a latching button: press to stop, press again to
+  // release) and machine-on switch, with what they leave: E-stop active,
+  // reset needed, drives off. Not a safety function (docs/operating.md).
+  // input(name, on) posts the input; its refusal is the caller's to show.
+  function machinePanel(input) {
+    let estop = false;
+    const stop = button("E-stop", "emergency stop: the axes brake and are disabled; release it, then reset", () => input("estop", !estop), "estop");
+    stop.id = "estop";
+    const on = check("machine on", "the machine's drives may be powered", (v) => input("machine_on", v));
+    on.box.id = "machine-on";
+    const status = el("span", { id: "machine-status", role: "status" });
+    return {
+      el: el("span", { class: "machine" }, stop, on.el, status),
+      update(s) {
+        estop = !!s.estop;
+        stop.classList.toggle("on", estop);
+        stop.setAttribute("aria-pressed", estop);
+        stop.textContent = estop ? "Release E-stop" : "E-stop";
+        on.set(s.machine_on !== false);
+        const said = [estop ? "E-stop active" : "", !estop && s.reset_needed ? "reset needed" : "",
+          s.machine_on === false ? "machine off" : "", s.drives_enabled === false ? "drives off" : ""].filter(Boolean);
+        status.textContent = said.join(" · ");
+        status.className = said.length ? "warn" : "";
+      },
+    };
+  }
+
+  window.NckControls = { machinePanel, cyclePanel, overridePanel, skipPanel, jogPanel, mdiPanel, spindlePanel };
 })();

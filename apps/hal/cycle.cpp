@@ -138,8 +138,11 @@ void Cycle::read_drives() noexcept {
 }
 
 void Cycle::read_pins() noexcept {
-  const bool estop = **machine_pins.estop;
-  const bool on = **machine_pins.machine_on && !estop;
+  // The kernel brakes, refuses starts and disables the drives itself
+  // (TickInput::machine); a reset after the E-stop's release is the
+  // channel's reset pin.
+  in_->machine.estop = **machine_pins.estop;
+  in_->machine.machine_on = **machine_pins.machine_on;
   in_->acks.clear();
   in_->ext_commands.clear();
   for (std::size_t ch = 0; ch < channel_count(); ++ch) {
@@ -148,11 +151,10 @@ void Cycle::read_pins() noexcept {
     // Buttons act on their rising edge (a held cycle start is one press).
     const bool start = **p.cycle_start, reset = **p.reset;
     c.cycle_start = start && !cycle_start_was_[ch];
-    c.reset = (reset && !reset_was_[ch]) || estop;
+    c.reset = reset && !reset_was_[ch];
     cycle_start_was_[ch] = start;
     reset_was_[ch] = reset;
-    // Without machine-on the path holds where it is, as under feedhold.
-    c.feedhold = **p.feedhold || !on;
+    c.feedhold = **p.feedhold;
     c.single_step = **p.single_step;
     c.optional_stop = **p.optional_stop;
     c.feed_override_pct = **p.feed_override;
@@ -196,7 +198,7 @@ void Cycle::relay_commands() noexcept {
 }
 
 void Cycle::write_pins() noexcept {
-  const bool on = **machine_pins.machine_on && !**machine_pins.estop;
+  const bool on = out_->machine.drives_enabled;
   for (std::size_t i = 0; i < axes_.size(); ++i) {
     const AxisRef& a = axes_[i];
     const AxisPins& p = axis_pins[i];

@@ -22,13 +22,18 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
   path_.begin_cycle();
   hold_.begin_cycle();
   jog_.begin_cycle();
+  follow_machine(cy);
+  const ErrorId refused = refusal(cy);  // E-stop or machine off: nothing starts
   if (in.reset) jog_.release_all();
   if (!in.jogs.empty()) take_jogs(cy);
-  if (in.cycle_start && state_ == ProgramState::error && !in.reset) {
+  if (in.cycle_start && refused != ErrorId{}) {
+    cy.emit(ev::Warning{{refused, {}, {}}});
+  } else if (in.cycle_start && state_ == ProgramState::error && !in.reset) {
     cy.emit(ev::Warning{{ErrorId::KernelCycleStartInError, {}, {}}});  // an operator action the state does not allow
   }
+  if (done() && refused != ErrorId{}) refuse_mdi(refused, cy);
   if (done()) take_mdi(cy);
-  if (in.reset && state_ == ProgramState::error) clear_error(cy);
+  if (in.reset && state_ == ProgramState::error && !cy.machine.estop) clear_error(cy);
   cause_ = done() ? CycleCause::none : CycleCause::transition;
   if (!done()) follow_stop(cy);
   if (!done()) follow_drives(cy);
@@ -45,7 +50,7 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
   if (jog_.moving()) move_jogged(cy);
   ax_links_.follow(path_.position());
   cax_.follow(dt_s, path_.position(), ctx);
-  (void)fail(handwheel_.follow(cy, in.manual_mode ? manual_axes(in) : 0u), cy);
+  (void)fail(handwheel_.follow(cy, in.manual_mode && refused == ErrorId{} ? manual_axes(in) : 0u), cy);
   (void)fail(technologies_.follow(path_.position(), done(), cy), cy);
   write_output(out, ctx);
 }
@@ -56,6 +61,10 @@ void Channel::run_blocks(Cycle& cy) noexcept {
     if (!active_) {
       if (resetting_ && !continues_braking()) {
         end_program(reset_reason(), cy);
+        break;
+      }
+      if (!resetting_ && refusal(cy) != ErrorId{}) {
+        cause_ = CycleCause::hold;  // E-stop or machine off: no block starts
         break;
       }
       if (state_ == ProgramState::hold) {
@@ -111,7 +120,12 @@ motion::AxisVector Channel::machine_position() const noexcept {
 
 // Manual mode: the cycle's jog requests, each taken or refused (930720).
 void Channel::take_jogs(Cycle& cy) noexcept {
+  const ErrorId refused = refusal(cy);
   for (const JogRequest& r : cy.in.jogs) {
+    if (refused != ErrorId{} && r.kind != JogRequest::Kind::stop) {
+      cy.emit(ev::Warning{{refused, {}, {}}});
+      continue;
+    }
     if (jog_allowed(r)) {
       jog_.take(r, cy);
       continue;
@@ -451,7 +465,9 @@ void Channel::fail_mdi(Cycle& cy) noexcept {
   hold_.reset();
   sync_.clear();
   dropping_mdi_ = true;
-  set_state(ProgramState::idle, StateReason::error, cy);
+  resetting_ = drive_failed_ = false;  // the braking that ended it is over
+  // An E-stop leaves the channel in error until its reset, MDI or not.
+  set_state(estop_latched_ ? ProgramState::error : ProgramState::idle, StateReason::error, cy);
   status_ = ChannelStatus::ended;
 }
 

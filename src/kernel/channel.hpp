@@ -95,6 +95,11 @@ class Channel {
   // setup: the technologies with a home of their own (technologies.hpp).
   void setup_technologies(const config::ChannelConfig& channel, double dt_s) { technologies_.setup(channel, dt_s); }
   const ChannelTechnologies& technologies() const noexcept { return technologies_; }
+  // setup: the path's deceleration under E-stop (the smallest of its axes'
+  // P-AXIS-00003, a_max where 0), mm/s^2.
+  void set_emergency_decel(double a_mm_s2) noexcept { emergency_a_mm_s2_ = a_mm_s2; }
+  // An E-stop came and this channel has not been reset since its release.
+  bool estop_latched() const noexcept { return estop_latched_; }
 
  private:
   enum class Phase : std::uint8_t { pre_wait, body, post_wait };
@@ -136,10 +141,19 @@ class Channel {
   // leaves the error state.
   void follow_reset(Cycle& cy) noexcept;
   void clear_error(Cycle& cy) noexcept;
+  // E-stop and machine on (channel_machine.cpp): what the inputs start, and
+  // what they refuse.
+  void follow_machine(Cycle& cy) noexcept;
+  void halt_spindles(Cycle& cy) noexcept;
+  // Starts are refused: E-stop latched or machine off (the ID that says so, or none).
+  ErrorId refusal(const Cycle& cy) const noexcept;
+  void refuse_mdi(ErrorId why, Cycle& cy) noexcept;
   // CiA 402 drives: a drive's error brakes and aborts; the program waits for enable.
   void follow_drives(Cycle& cy) noexcept;
   bool drives_hold(Cycle& cy) noexcept;
-  EndReason reset_reason() const noexcept { return drive_failed_ ? EndReason::error : EndReason::reset; }
+  EndReason reset_reason() const noexcept {
+    return drive_failed_ || estop_latched_ ? EndReason::error : EndReason::reset;
+  }
   bool continues_braking() const noexcept;
   void finish_mdi(Cycle& cy) noexcept;
   void fail_mdi(Cycle& cy) noexcept;
@@ -169,6 +183,9 @@ class Channel {
   bool resetting_ = false;     // a reset brakes the path: the program ends at standstill
   bool drive_failed_ = false;  // a drive's error brakes the path as a reset does; the program ends in error
   bool drive_wait_ = false;    // the program waits for the CiA 402 drives (a wait event was sent)
+  bool estop_latched_ = false; // an E-stop came: cleared by a reset once it is released
+  bool machine_was_on_ = true; // the machine-on input of the last cycle
+  double emergency_a_mm_s2_ = 0;  // the path's deceleration under E-stop
   // What this cycle went to (time by cause), set where the cycle stops.
   CycleCause cause_ = CycleCause::none;
   WaitReason wait_reason_ = WaitReason::plc_ack;

@@ -23,7 +23,7 @@ void DriveUnits::configure(const config::Machine& m, double cycle_s) {
   }
 }
 
-DriveReport DriveUnits::step(const TickInput& in, TickOutput& out) noexcept {
+DriveReport DriveUnits::step(const TickInput& in, TickOutput& out, bool enabled) noexcept {
   DriveReport r;
   for (Slot& s : slots_) {
     const drives::DriveFeedback& fb = in.drives[s.axis];
@@ -31,21 +31,22 @@ DriveReport DriveUnits::step(const TickInput& in, TickOutput& out) noexcept {
     drives::DriveCommand& cmd = out.drives[s.axis];
     // A drive that faulted stays there until the operator resets: the
     // goal asks for power only while nothing is reported.
-    const cia::Goal goal = s.reported ? cia::Goal::disabled : cia::Goal::enabled;
+    const cia::Goal goal = s.reported || !enabled ? cia::Goal::disabled : cia::Goal::enabled;
     cmd.controlword = s.master.controlword(now, goal);
     cmd.mode_of_operation = static_cast<std::int8_t>(s.mode);
     cmd.enable = goal == cia::Goal::enabled;
-    const bool enabled = now == cia::State::operation_enabled;
-    if (!enabled) r.ready = false;
-    if (s.reported) continue;
+    const bool in_operation = now == cia::State::operation_enabled;
+    if (!in_operation) r.ready = false;
+    if (!enabled) s.reached = false;  // switched off on purpose: its enable starts anew
+    if (s.reported || !enabled) continue;
     ErrorId id{};
     if (s.reached && (now == cia::State::fault || now == cia::State::fault_reaction_active))
       id = ErrorId::KernelDriveFault;
-    else if (s.reached && !enabled)
+    else if (s.reached && !in_operation)
       id = ErrorId::KernelDriveLostEnable;
     else if (!s.reached && s.master.waiting_cycles() > s.timeout_cycles)
       id = ErrorId::KernelDriveEnableTimeout;
-    if (enabled) s.reached = true;
+    if (in_operation) s.reached = true;
     if (id != ErrorId{} && r.axis < 0) {
       r.error = id;
       r.axis = static_cast<std::int8_t>(s.axis);

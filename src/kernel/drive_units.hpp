@@ -29,8 +29,10 @@ class DriveUnits {
   // setup: one slot per CiA 402 axis list (index < drives::kMaxDrives).
   void configure(const config::Machine& m, double cycle_s);
   bool empty() const noexcept { return slots_.empty(); }
-  // Before the channels: the state machines' step. rt
-  DriveReport step(const TickInput& in, TickOutput& out) noexcept;
+  // Before the channels: the state machines' step. enabled false (E-stop
+  // or machine off at standstill): every drive is taken out of operation,
+  // which is no fault; the programs wait for enable again. rt
+  DriveReport step(const TickInput& in, TickOutput& out, bool enabled = true) noexcept;
   // After the channels: the set points (machine axis positions, mm / deg). rt
   void write_set_point(std::size_t axis_index, double pos, double vel, TickOutput& out) const noexcept;
   // The operator's reset: a drive at fault is reset (the goal asks for power again). rt

@@ -13,8 +13,8 @@ namespace nck::kernel {
 
 // An embedder keeps one of each outside the real-time thread's stack
 // (docs/embedding.md gives these sizes).
-static_assert(sizeof(TickInput) == 24376, "docs/embedding.md gives TickInput's size");
-static_assert(sizeof(TickOutput) == 35616, "docs/embedding.md gives TickOutput's size");
+static_assert(sizeof(TickInput) == 24384, "docs/embedding.md gives TickInput's size");
+static_assert(sizeof(TickOutput) == 35624, "docs/embedding.md gives TickOutput's size");
 
 namespace {
 
@@ -37,6 +37,22 @@ JogAxisSettings jog_settings(const config::Machine& m, const config::ChannelAxis
   return s;
 }
 
+// The path's deceleration under E-stop: the smallest of its axes'
+// emergency decelerations (P-AXIS-00003 of the stage in force at start; 0:
+// a_max), so that no axis brakes harder than its own whatever the path's
+// direction (docs/decisions.md, "E-stop and machine on").
+double emergency_decel(const config::Machine& m, const config::ChannelConfig& ch) {
+  double a = 0;
+  for (const config::ChannelAxis& axis : ch.axes) {
+    if (axis.axis_index < 0 || static_cast<std::size_t>(axis.axis_index) >= m.axes.size()) continue;
+    const config::AxisConfig& ax = m.axes[static_cast<std::size_t>(axis.axis_index)];
+    const config::GearStage& g = ax.gear(ax.initial_gear_stage);
+    const double e = g.a_emergency > 0 ? g.a_emergency : g.a_max;
+    if (e > 0 && (a == 0 || e < a)) a = e;
+  }
+  return a;
+}
+
 }  // namespace
 
 Kernel::Kernel() = default;
@@ -55,6 +71,7 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
   cycle_s_ = machine.cycle_time_us * 1e-6;
   cycles_ = 0;
   time_s_ = 0;
+  machine_out_ = MachineOutput{};
   machine_ = std::make_unique<const config::Machine>(machine);
   plc_outputs_ = std::make_unique<PlcOutputs>();
   drive_units_ = std::make_unique<DriveUnits>();
@@ -100,6 +117,7 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
     channels_.back()->set_single_step_mode(ch.single_step_mode);
     channels_.back()->set_rapid_override_mode(ch.rapid_override_mode);
     channels_.back()->setup_technologies(ch, cycle_s_);
+    channels_.back()->set_emergency_decel(emergency_decel(*machine_, ch));
     for (std::size_t j = 0; j < ch.axes.size() && j < kMaxAxes; ++j)
       channels_.back()->set_jog_axis(j, jog_settings(*machine_, ch.axes[j]));
     if (ch.c_axis >= 0)
@@ -177,16 +195,19 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   take_external_commands(in, t_s, out);
   run_external_commands(t_s, out);
   ChannelContext ctx{spindles_.data(), spindles_.size(), plc_outputs_.get(), &in.spindles};
+  ctx.estop = in.machine.estop;
+  ctx.machine_off = !in.machine.machine_on;
   if (drive_units_ && !drive_units_->empty()) {
     for (const ChannelInput& c : in.channels)
       if (c.reset) drive_units_->on_reset();
-    ctx.drives = drive_units_->step(in, out);
+    ctx.drives = drive_units_->step(in, out, machine_out_.drives_enabled);
   }
   for (std::size_t i = 0; i < channels_.size(); ++i) {
     channels_[i]->tick(t_s, cycle_s_, in.channels[i], out.channels[i], out, ctx);
     channel_done_[i] = channels_[i]->done();  // only a tick changes it
   }
   tick_spindles(t_s, out);
+  follow_machine(in, t_s, out);
   if (drive_units_ && !drive_units_->empty()) write_drive_set_points(out);
   ++cycles_;
   time_s_ = static_cast<double>(cycles_ * cycle_us_) / 1e6;

@@ -70,6 +70,16 @@ void PathProfile::reset() noexcept {
   jerk_ = false;
   a_mm_s2_ = carry_s_ = 0.0;
   chain_ = PathChain{};
+  emergency_a_mm_s2_ = 0.0;
+}
+
+void PathProfile::brake_for_emergency(double a_mm_s2) noexcept {
+  if (!positive_finite(a_mm_s2)) return;
+  emergency_a_mm_s2_ = a_mm_s2;
+  // A jerk-limited plan in force hands over at the speed it has now.
+  jerk_ = false;
+  a_mm_s2_ = carry_s_ = 0.0;
+  beyond_dt_s_ = 0.0;
 }
 
 bool PathProfile::start(double length_mm, double v_cmd_mm_s, const PathLimits& limits, double v_end_mm_s,
@@ -110,7 +120,7 @@ bool PathProfile::start(double length_mm, double v_cmd_mm_s, const PathLimits& l
   beyond_dt_s_ = 0.0;  // recomputed at the first step
   if (positive_finite(v_end_mm_s)) v_end_mm_s_ = std::min(v_end_mm_s, v_cmd_mm_s_);
   finished_ = false;
-  jerk_ = jerk_limited(limits.slope) && valid(jerk_limits(limits));
+  jerk_ = jerk_limited(limits.slope) && valid(jerk_limits(limits)) && !emergency();
   // A chain of one segment is the segment itself.
   const bool chain_on = jerk_ && chain.length_mm > length_mm + kSnapMm && valid(jerk_limits(chain.limits));
   chain_ = chain_on ? chain : PathChain{};
@@ -200,7 +210,7 @@ ProfileSample PathProfile::step(double dt_s, double override_factor) noexcept {
 
   const double target = target_velocity(override_factor);
   const double a_acc = std::min(limits_.a_acc_mm_s2, first_acc_mm_s2_);
-  const double a_dec = std::min(limits_.a_dec_mm_s2, first_dec_mm_s2_);
+  const double a_dec = std::max(std::min(limits_.a_dec_mm_s2, first_dec_mm_s2_), emergency_a_mm_s2_);
   first_acc_mm_s2_ = first_dec_mm_s2_ = kNoLimit;
   // Passing on at v_end > 0: over the last cycles before the end the
   // profile runs at v_end (pass_brake_distance), so it crosses at exactly

@@ -8,6 +8,7 @@ void fill_snapshot(const sim::DryRun& run, const kernel::TickOutput& out, LiveSn
   s.t_s = k.time_s();
   s.channel_count = k.channel_count();
   s.spindle_count = k.spindle_count();
+  s.machine = out.machine;
   for (std::size_t ch = 0; ch < s.channel_count && ch < config::kMaxChannels; ++ch) {
     const kernel::ChannelOutput& o = out.channels[ch];
     LiveChannel& c = s.channels[ch];

@@ -120,6 +120,11 @@ nlohmann::ordered_json state_json(const LiveSnapshot& s, const config::Machine& 
                         {"p99_us", s.lateness.p99_us},
                         {"worst_us", s.lateness.worst_us}}},
           {"events_lost", s.events_lost},
+          // E-stop and machine on (issue 48 item 9): reset_needed until a reset after the E-stop's release
+          {"estop", s.machine.estop},
+          {"machine_on", s.machine.machine_on},
+          {"reset_needed", s.machine.reset_needed},
+          {"drives_enabled", s.machine.drives_enabled},
           // the newest error of any channel (or of none: a spindle's), until a reset
           {"last_error", errors ? errors->latest() : json()}};
 }

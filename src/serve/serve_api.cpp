@@ -140,6 +140,7 @@ HttpReply ServeApi::handle(const HttpRequest& r) {
   if (r.method == "POST") {
     if (path == "/api/v1/command") return command(r.body);
     if (path == "/api/v1/upload") return upload(r.target, r.body);
+    if (path == "/api/v1/estop" || path == "/api/v1/machine_on") return machine_input(path, r.body);
   }
   // An old or newer client: say which version this server speaks.
   if (path.starts_with("/api/") && !path.starts_with("/api/v1/"))
@@ -176,7 +177,9 @@ HttpReply ServeApi::act(const ApiCommand& c) {
       staged_search_channel_ = ch;
       break;
     }
-    case K::mdi: return mdi(ch, c.text, c.queue);
+    case K::mdi:
+      if (auto no = refused_by_machine(sim::ActionKind::mdi)) return *no;
+      return mdi(ch, c.text, c.queue);
     case K::action:
       return operate(sim::check_operator_action(sim::OperatorAction{c.action, {}}, machine_, diags, "api"), diags);
     case K::action_line: return operate(sim::parse_operator_action(c.line, machine_, diags, "api"), diags);
@@ -196,6 +199,7 @@ HttpReply ServeApi::mdi(std::size_t ch, const std::string& text, bool queue) {
 HttpReply ServeApi::operate(const std::optional<sim::OperatorAction>& op, const Diagnostics& diags) {
   if (!op) return error_reply(400, diags.items().front());
   const std::size_t ch = op->action.channel - 1u;
+  if (auto no = refused_by_machine(op->action.kind())) return *no;
   if (op->action.kind() == sim::ActionKind::mdi) return mdi(ch, op->mdi_text, false);
   if (op->action.kind() == sim::ActionKind::cycle_start) return start_or_release(ch, op->action);
   return pass_on(op->action);
@@ -204,6 +208,7 @@ HttpReply ServeApi::operate(const std::optional<sim::OperatorAction>& op, const 
 HttpReply ServeApi::pass_on(const sim::ScenarioAction& a) {
   if (!kernel_.operate(a)) return error_reply(429, ErrorId::PlcOperatorActionsFull, "the kernel has 64 actions waiting");
   if (a.kind() == sim::ActionKind::reset) last_errors_.clear(a.channel);  // also of an idle channel
+  note_machine_input(a);
   return ok_json(json{{"ok", true}});
 }
 

@@ -65,6 +65,7 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
   for (const sim::ScenarioAction& a : operator_actions_) apply(a, in);
   operator_actions_.clear();
 
+  in.machine = machine_;
   plc_.tick(t_s);
   plc_.drain_acks(acks_);
   in.acks.clear();
@@ -84,7 +85,9 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
     ci.manual_mode = c.manual_mode;
     // The simulated operator presses cycle start for holds, never in error.
     const bool in_error = hli_.channel_state[ch].program_state == static_cast<std::uint8_t>(kernel::ProgramState::error);
-    ci.cycle_start = c.cycle_start || (auto_cycle_start_[ch] && !in_error);
+    // Nor while E-stop or machine off refuses starts (each press would be refused).
+    const bool refused = machine_.estop || !machine_.machine_on;
+    ci.cycle_start = c.cycle_start || (auto_cycle_start_[ch] && !in_error && !refused);
     c.cycle_start = false;
     ci.stop = c.stop;
     c.stop = false;
@@ -176,6 +179,8 @@ void MachineSim::apply(const sim::ScenarioAction& a, kernel::TickInput& in) noex
       if (f.axis.index >= 0) cia402_.set_fault(c, static_cast<std::size_t>(f.axis.index), f.on);
       return;
     }
+    case K::estop: machine_.estop = as<act::Estop>(a).on; return;
+    case K::machine_on: machine_.machine_on = as<act::MachineOn>(a).on; return;
     case K::variable: set_variable(as<act::Variable>(a), in.channels[c]); return;
     case K::spindle_cmd:
       if (!in.ext_commands.push_back(as<act::SpindleCmd>(a).cmd)) ++in.ext_commands_lost;

@@ -55,6 +55,8 @@ constexpr std::array kActions = {
     ActionSpelling{"jog_increment", ActionKind::jog_increment},
     ActionSpelling{"mode", ActionKind::mode},
     ActionSpelling{"drive_fault", ActionKind::drive_fault},
+    ActionSpelling{"estop", ActionKind::estop},
+    ActionSpelling{"machine_on", ActionKind::machine_on},
 };
 
 // Parses one line; reports its first problem and returns nothing then.
@@ -219,7 +221,8 @@ bool LineParser::parse_args(ScenarioAction& a) {
           return take_switch(p.on) && (at_end() || take_spindle(p.spindle));  // optional spindle
         else if constexpr (std::is_same_v<T, act::Feedhold> || std::is_same_v<T, act::OptionalStop> ||
                            std::is_same_v<T, act::Silent> || std::is_same_v<T, act::AutoCycleStart> ||
-                           std::is_same_v<T, act::SingleStep>)
+                           std::is_same_v<T, act::SingleStep> || std::is_same_v<T, act::Estop> ||
+                           std::is_same_v<T, act::MachineOn>)
           return take_switch(p.on);
         else if constexpr (std::is_same_v<T, act::SpindleReset>) return take_spindle(p.spindle);
         else if constexpr (std::is_same_v<T, act::SpindleCmd>)

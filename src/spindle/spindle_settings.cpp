@@ -111,6 +111,15 @@ void SpindleAxis::abort() noexcept {
   update_status();
 }
 
+void SpindleAxis::halt() noexcept {
+  const Changed changed(*this);
+  if (!configured_ || mode_ == SpindleMode::error || mode_ == SpindleMode::axis) return;
+  mode_ = SpindleMode::stop;  // brakes in tick()
+  pos_.planned = pos_.done = false;
+  homing_.after = AfterHoming::none;
+  update_status();
+}
+
 SpindleResult SpindleAxis::enter_axis_mode() noexcept {
   const Changed changed(*this);
   if (auto g = guard(); !g.ok()) return g;

@@ -196,6 +196,52 @@ async function runStartsWhereTheAxesStand(s) {
         at.X === before.X && at.Y === before.Y && Math.abs(at.Z - before.Z - 1) < 1e-9, `${load.body} ${start.body}`);
 }
 
+// E-stop and machine on (issue 48 item 9): POST /api/v1/estop and
+// /machine_on {on}; while the E-stop is on or not reset after its release,
+// cycle start, MDI and jog are refused 409 with 930731; machine off: 930732.
+async function estop(s) {
+  const post = (what, body, opts = {}) => request(s, "POST", "/api/v1/" + what, { body: JSON.stringify(body), ...opts });
+  const waitFor = async (cond) => {
+    let st = await state(s);
+    for (let i = 0; i < 200 && !cond(st); ++i) { await sleep(20); st = await state(s); }
+    return st;
+  };
+  const noToken = await post("estop", { on: true }, { token: false });
+  check("POST /api/v1/estop needs the token", noToken.status === 401, `${noToken.status}`);
+  const bad = await post("estop", { on: "yes" });
+  const extra = await post("machine_on", { on: true, speed: 1 });
+  check("estop {on: \"yes\"} -> 400 940303, an unknown field -> 400 940302",
+        bad.status === 400 && errorId(bad) === 940303 && extra.status === 400 && errorId(extra) === 940302, `${bad.body} ${extra.body}`);
+  await command(s, { command: "mdi", text: "G91 G1 X40 F3000" });
+  const moving = await waitFor((st) => st.channels[0].path_velocity_mm_s > 0);
+  const on = await post("estop", { on: true });
+  const stopped = await waitFor((st) => st.estop && st.drives_enabled === false);
+  check("E-stop while moving: the channel in error, reset needed, the drives disabled at standstill",
+        moving.channels[0].path_velocity_mm_s > 0 && on.status === 200 && stopped.channels[0].state === "error" &&
+        stopped.reset_needed && stopped.channels[0].path_velocity_mm_s === 0, JSON.stringify(stopped).slice(0, 300));
+  for (const c of [{ command: "cycle_start" }, { command: "mdi", text: "G0 X1" }, { command: "jog", axis: "X", direction: "+" }]) {
+    const r = await command(s, c);
+    check(`during E-stop ${c.command} -> 409 930731`, r.status === 409 && errorId(r) === 930731, `${r.status} ${r.body}`);
+  }
+  await post("estop", { on: false });
+  const start = await command(s, { command: "cycle_start" });
+  check("released but not reset: cycle start -> 409 930731", start.status === 409 && errorId(start) === 930731, start.body);
+  await command(s, { command: "reset" });
+  const reset = await waitFor((st) => !st.reset_needed && st.channels[0].state === "idle");
+  const mdi = await command(s, { command: "mdi", text: "G91 G1 X1 F3000" });
+  check("after the reset the channel is idle and MDI is taken", !reset.estop && !reset.reset_needed && mdi.status === 200,
+        `${JSON.stringify(reset).slice(0, 200)} ${mdi.body}`);
+  await waitFor((st) => st.channels[0].state === "idle");
+  await post("machine_on", { on: false });
+  const off = await waitFor((st) => st.machine_on === false && st.drives_enabled === false);
+  const refused = await command(s, { command: "mdi", text: "G0 X1" });
+  check("machine off: drives disabled, MDI -> 409 930732", off.machine_on === false && refused.status === 409 &&
+        errorId(refused) === 930732, `${refused.status} ${refused.body}`);
+  await post("machine_on", { on: true });
+  const back = await waitFor((st) => st.machine_on && st.drives_enabled);
+  check("machine on again: drives enabled", back.machine_on && back.drives_enabled);
+}
+
 // The diagnostic's one shape (issue 47 item 5): every field one of these,
 // absent ones left out.
 const SHAPE = ["id", "severity", "name", "message", "remedy", "file", "line", "column", "channel"];
@@ -326,6 +372,7 @@ async function main() {
     await mdiErrors(fast);
     await mdiQueue(fast);
     await runStartsWhereTheAxesStand(fast);
+    await estop(fast);
     await malformed(fast);
   } finally {
     fast.proc.kill("SIGTERM");

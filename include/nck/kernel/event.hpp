@@ -13,6 +13,7 @@
 #include "nck/frames/offset_event.hpp"
 #include "nck/kernel/ax_link.hpp"
 #include "nck/kernel/channel_events.hpp"
+#include "nck/kernel/machine_event.hpp"
 #include "nck/kernel/sync_events.hpp"
 #include "nck/spindle/spindle_events.hpp"
 #include "nck/trc/trc.hpp"
@@ -38,18 +39,19 @@ enum class EventKind : std::uint8_t {
   dist_ctrl,  // 3D distance control changed state
   trc,        // tool radius compensation selected, deselected or its D changed
   state,      // the channel's program state changed
+  machine,    // E-stop / machine on changed what the machine does (channel 0)
 };
 
 using EventPayload =
     std::variant<ev::Block, ev::PlcOut, ev::PlcAck, ev::Wait, ev::WaitEnd, spindle::ModeEvent,
                  spindle::SpeedReachedEvent, spindle::GearEvent, LinkEvent, frames::OffsetEvent, ev::Stop,
-                 ev::Warning, ev::Error, ev::End, distctrl::StateEvent, trc::TrcChange, ev::State>;
+                 ev::Warning, ev::Error, ev::End, distctrl::StateEvent, trc::TrcChange, ev::State, ev::Machine>;
 
 // "block", "plc_out", ... as the events file writes them.
 constexpr const char* event_name(EventKind k) noexcept {
   constexpr const char* kNames[] = {"block", "plc_out", "plc_ack", "wait",    "wait_end", "spindle",
                                     "speed_reached", "gear", "link", "offset", "stop", "warning",
-                                    "error", "end", "dist_ctrl", "trc", "state"};
+                                    "error", "end", "dist_ctrl", "trc", "state", "machine"};
   static_assert(std::size(kNames) == std::variant_size_v<EventPayload>);
   return kNames[static_cast<std::size_t>(k)];
 }

@@ -89,6 +89,10 @@ class Kernel {
   // An axis of channel ch is being jogged (manual mode).
   bool channel_jogging(std::size_t ch) const noexcept;
   std::uint64_t cycles() const noexcept { return cycles_; }
+  // What E-stop and machine on made of the machine, as of the last tick.
+  const MachineOutput& machine_state() const noexcept { return machine_out_; }
+  // Channel ch keeps an E-stop latched until its reset after the release.
+  bool estop_latched(std::size_t ch) const noexcept;
   // Simulated time at the start of the next cycle.
   double time_s() const noexcept { return time_s_; }
 
@@ -101,6 +105,8 @@ class Kernel {
   void hand_out_external_commands() noexcept;
   void tick_spindles(double t_s, TickOutput& out) noexcept;
   void write_drive_set_points(TickOutput& out) noexcept;
+  // After the channels: standstill, the drives' enable, the `machine` event (kernel_machine.cpp).
+  void follow_machine(const TickInput& in, double t_s, TickOutput& out) noexcept;
 
   std::unique_ptr<const config::Machine> machine_;  // own copy: channels refer into it
   std::vector<SpindleUnit> spindles_;
@@ -113,6 +119,7 @@ class Kernel {
   std::vector<std::unique_ptr<CommandQueue>> command_queues_;
   std::vector<std::unique_ptr<FeedbackQueue>> feedback_queues_;
   std::vector<std::unique_ptr<Channel>> channels_;
+  MachineOutput machine_out_{};  // E-stop and machine on: the last tick's
   std::vector<std::uint8_t> channel_done_;  // per channel: ended or aborted, as of the last tick
   double cycle_s_ = 0.001;
   std::uint64_t cycle_us_ = 1000;

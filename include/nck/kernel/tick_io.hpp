@@ -98,7 +98,23 @@ struct ChannelInput {
   FixedVector<ChannelVariable, kMaxChannelVariables> variables;
 };
 
+// The machine's own inputs (the PLC's, the HAL's pins, the API's): the
+// emergency stop and machine on. Neither is a safety function — a
+// machine's E-stop chain is hardware; these tell the NC to brake and to
+// stop asking for motion (docs/operating.md, "E-stop and machine on").
+struct MachineInput {
+  // E-stop in force: every channel brakes with the axes' emergency
+  // deceleration (P-AXIS-00003) and ends in error, the spindles stop, the
+  // drives are disabled at standstill; starts are refused until a reset
+  // after its release.
+  bool estop = false;
+  // Machine on: off brakes a running program as a reset does, disables the
+  // drives at standstill and refuses starts until it is on again.
+  bool machine_on = true;
+};
+
 struct TickInput {
+  MachineInput machine{};
   std::array<ChannelInput, config::kMaxChannels> channels{};
   std::array<plc::SpindleControl, kMaxMachineSpindles> spindles{};  // by kernel spindle index
   // What each spindle's drive measured at the start of this cycle (drive
@@ -171,8 +187,19 @@ struct TechRequest {
   plc::TechOutput output;
 };
 
+// What the machine's inputs made of the machine in this cycle (the
+// `machine` event reports each change).
+struct MachineOutput {
+  bool estop = false;           // the E-stop input is on
+  bool reset_needed = false;    // a channel keeps the E-stop latched until its reset
+  bool machine_on = true;       // the machine-on input
+  bool drives_enabled = true;   // the NC lets the drives be powered (false: E-stop or off, at standstill)
+  bool operator==(const MachineOutput&) const = default;
+};
+
 struct TickOutput {
   double t_s = 0;  // start of the cycle just computed
+  MachineOutput machine{};
   std::array<ChannelOutput, config::kMaxChannels> channels{};
   std::array<SpindleOutput, kMaxMachineSpindles> spindles{};  // by kernel spindle index
   std::array<plc::SpindleStatus, kMaxMachineSpindles> hli_spindles{};  // HLI status objects

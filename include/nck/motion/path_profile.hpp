@@ -67,6 +67,13 @@ class PathProfile {
 
   // Back to standstill with no carried distance (e.g. after an abort). rt
   void reset() noexcept;
+  // E-stop: from now on (this segment and the ones after it, until reset())
+  // the profile brakes with at least a_mm_s2 (its own deceleration when that
+  // is higher, so that it still stops at an exact-stop end), as a STEP
+  // profile: the quick stop of a drive ramps its speed, it does not limit
+  // its jerk. Give it with override 0 (the target speed). rt
+  void brake_for_emergency(double a_mm_s2) noexcept;
+  bool emergency() const noexcept { return emergency_a_mm_s2_ > 0.0; }
 
   // A per-cycle limit on the commanded velocity (a spindle coupling: G95,
   // G33, G63, G331), set before step(). The profile ramps to
@@ -158,6 +165,7 @@ class PathProfile {
   double last_override_ = 1.0;
   PathChain chain_{};           // HSC: the chain planned over (length 0: none)
   bool chain_changed_ = false;  // set_chain brought a new chain not planned yet
+  double emergency_a_mm_s2_ = 0.0;  // brake_for_emergency(), 0: none
 };
 
 // Largest velocity v for this cycle such that moving v*dt now and then

@@ -55,6 +55,7 @@ struct LiveSnapshot {
   std::array<double, kernel::kMaxMachineSpindles> spindle_override_pct{};  // the operator's (HLI)
   Lateness lateness;
   std::uint64_t events_lost = 0;  // the event ring was full (a server that fell behind)
+  kernel::MachineOutput machine{};  // E-stop and machine on as the kernel follows them
 };
 
 // The run's channels, spindles and operator switches after the cycle that

@@ -53,6 +53,10 @@ class ServeApi : public ApiHandler {
   HttpReply operate(const std::optional<sim::OperatorAction>& op, const Diagnostics& diags);
   HttpReply pass_on(const sim::ScenarioAction& a);
   HttpReply start_or_release(std::size_t ch, const sim::ScenarioAction& cycle_start);
+  // E-stop and machine on (machine_input.cpp).
+  HttpReply machine_input(std::string_view path, std::string_view body);
+  std::optional<HttpReply> refused_by_machine(sim::ActionKind kind) const;
+  void note_machine_input(const sim::ScenarioAction& a);
   HttpReply program_text(std::string_view target) const;
   HttpReply preview(std::string_view target);
   HttpReply path_so_far(std::string_view target) const;
@@ -85,6 +89,8 @@ class ServeApi : public ApiHandler {
   LiveSnapshot last_{};  // the newest state taken
   LastErrors last_errors_;  // of the run of generation_, from its events (the state's last_error)
   LivePath path_;        // the run's path so far, for a page loaded during it
+  bool estop_ = false, machine_on_ = true;  // as the last POST /api/v1/estop, /machine_on set them
+  bool reset_pending_ = false;             // an E-stop came, no reset after its release yet
   StreamReplay replay_;  // the frames' ids, the events a reconnecting client missed
   OffsetBook offsets_;   // the edits of the lists not saved yet
 };

@@ -121,6 +121,7 @@ class MachineSim {
   std::array<bool, config::kMaxChannels> sensor_on_{};  // sampled only once a program needs it
   std::array<bool, config::kMaxChannels> probe_switched_{};  // in the last cycle
   std::array<bool, config::kMaxChannels> auto_cycle_start_{};  // all on (constructor)
+  kernel::MachineInput machine_{};  // E-stop and machine on, as the scenario's lines set them
   std::array<kernel::StopMark, config::kMaxChannels> stop_at_{};
   std::size_t channels_ = 0;
   std::size_t spindles_ = 0;

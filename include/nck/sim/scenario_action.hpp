@@ -73,6 +73,10 @@ struct Mode { bool manual = false; };
 // The simulated CiA 402 drive of a path axis reports a fault while on
 // (kenngr.antr_typ 8; a fault held from the start: the drive never enables).
 struct DriveFault { AxisRef axis; bool on = false; };
+// The machine's E-stop input and machine-on input (TickInput::machine; the
+// line's channel does not matter: they act on the whole machine).
+struct Estop { bool on = false; };
+struct MachineOn { bool on = false; };
 
 }  // namespace act
 
@@ -103,6 +107,8 @@ enum class ActionKind : std::uint8_t {
   jog_increment,        // jog_increment X - 0.1      (one step in mm)
   mode,                 // mode manual|automatic
   drive_fault,          // drive_fault X on|off       (the simulated CiA 402 drive faults)
+  estop,                // estop on|off               (the machine's E-stop input)
+  machine_on,           // machine_on on|off          (the machine-on input)
 };
 
 using ActionPayload =
@@ -110,7 +116,7 @@ using ActionPayload =
                  act::SpindleFeedhold, act::SpindleStopAtEnd, act::Reset, act::SpindleReset, act::OptionalStop,
                  act::Silent, act::SpindleCmd, act::Handwheel, act::Variable, act::CycleStart, act::AutoCycleStart,
                  act::SingleStep, act::SkipMask, act::BlockSearch, act::Stop, act::Mdi, act::Jog,
-                 act::JogIncrement, act::Mode, act::DriveFault>;
+                 act::JogIncrement, act::Mode, act::DriveFault, act::Estop, act::MachineOn>;
 
 // The action's name as a scenario file writes it (the primary spelling).
 std::string_view action_name(ActionKind k) noexcept;
@@ -165,7 +171,9 @@ static_assert(action_kind_of<act::Jog>() == ActionKind::jog);
 static_assert(action_kind_of<act::JogIncrement>() == ActionKind::jog_increment);
 static_assert(action_kind_of<act::Mode>() == ActionKind::mode);
 static_assert(action_kind_of<act::DriveFault>() == ActionKind::drive_fault);
-static_assert(std::variant_size_v<ActionPayload> == static_cast<std::size_t>(ActionKind::drive_fault) + 1);
+static_assert(action_kind_of<act::Estop>() == ActionKind::estop);
+static_assert(action_kind_of<act::MachineOn>() == ActionKind::machine_on);
+static_assert(std::variant_size_v<ActionPayload> == static_cast<std::size_t>(ActionKind::machine_on) + 1);
 
 // Actions cross the live kernel's queue (LiveKernel::operate) and the
 // machine's fixed-size list of operator actions: copied as bytes.

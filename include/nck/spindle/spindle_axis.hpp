@@ -53,6 +53,9 @@ class SpindleAxis {
   void set_feedhold(bool on) noexcept;                                // HLI feedhold
   void reset() noexcept;                                              // channel reset
   void abort() noexcept;                                              // NC-error abort: keeps an error state
+  // E-stop / machine off: brakes to standstill with its ramp whatever
+  // P-AXIS-00455 says; an error state stays, axis mode (#CAX) follows its path.
+  void halt() noexcept;
   SpindleResult enter_axis_mode() noexcept;                           // #CAX, G63 (standstill)
   void axis_set_point(double pos_deg, double vel_deg_s) noexcept;     // per cycle in axis mode
   SpindleResult leave_axis_mode() noexcept;

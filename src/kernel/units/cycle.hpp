@@ -25,6 +25,8 @@ struct ChannelContext {
   PlcOutputs* plc = nullptr;
   const std::array<plc::SpindleControl, kMaxMachineSpindles>* spindle_controls = nullptr;
   DriveReport drives{};  // the CiA 402 drives this cycle (all ready without any)
+  bool estop = false;        // the E-stop input is on (TickInput::machine)
+  bool machine_off = false;  // the machine-on input is off
 
   // Spindle s (kernel index), or nullptr for none / out of range. rt
   SpindleUnit* spindle(std::int8_t s) const noexcept {

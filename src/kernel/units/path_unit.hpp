@@ -59,6 +59,9 @@ class PathUnit {
   void halt() noexcept { velocity_ = 0; }
   // Program end: standstill, nothing carried on. rt
   void reset() noexcept;
+  // E-stop: the path brakes along its path with at least a_mm_s2 until
+  // the program ends (PathProfile::brake_for_emergency). rt
+  void brake_for_emergency(double a_mm_s2) noexcept { profile_.brake_for_emergency(a_mm_s2); }
 
   const motion::AxisVector& position() const noexcept { return pos_; }
   motion::AxisVector& position() noexcept { return pos_; }

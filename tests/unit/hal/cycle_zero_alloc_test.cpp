@@ -110,6 +110,23 @@ class MillInHal : public ::testing::Test {
     ASSERT_TRUE(cycle_.build(*link_, error)) << error;
     wire(cycle_, cells_);
     cycle_.clocks = {fake_clocks, fake_ns};
+    prep_ = std::make_unique<prep::ChannelPrep>(*machine_, 0, folder_ / "contour.nc", store_, prep::PrepOptions{});
+  }
+
+  // n servo cycles of contour.nc as nck-hal feeds it, with a PLC that
+  // acknowledges at once; allocations counted inside nck.cycle only.
+  void cycles(std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) {
+      prep_->feed(link_->commands[0], link_->feedback[0], false);
+      for (std::size_t k = 0; k < kPlcSlots; ++k) {
+        **cycle_.plc_pins[k].ack = **cycle_.plc_pins[k].request && !acked_[k];
+        acked_[k] = **cycle_.plc_pins[k].ack;
+      }
+      g_counting = true;
+      cycle_.run(1000000);
+      g_counting = false;
+      while (!link_->events.empty()) link_->events.pop();
+    }
   }
 
   const std::filesystem::path folder_ = NCK_SOURCE_DIR "/examples/mill";
@@ -118,26 +135,17 @@ class MillInHal : public ::testing::Test {
   std::unique_ptr<Link> link_ = std::make_unique<Link>();
   Cycle cycle_;
   Cells cells_;
+  prep::PlanStore store_;
+  std::unique_ptr<prep::ChannelPrep> prep_;
+  std::array<bool, kPlcSlots> acked_{};
 };
 
 TEST_F(MillInHal, ContourRunsThroughTheComponentsFunctionWithoutAllocating) {
-  prep::PlanStore store;
-  prep::ChannelPrep prep(*machine_, 0, folder_ / "contour.nc", store, prep::PrepOptions{});
-  std::size_t cycles = 0;
-  std::array<bool, kPlcSlots> acked{};
-  for (; cycles < 200000 && !link_->channel_done[0].load(); ++cycles) {
-    prep.feed(link_->commands[0], link_->feedback[0], false);
-    for (std::size_t k = 0; k < kPlcSlots; ++k) {  // a PLC that acknowledges at once
-      **cycle_.plc_pins[k].ack = **cycle_.plc_pins[k].request && !acked[k];
-      acked[k] = **cycle_.plc_pins[k].ack;
-    }
-    g_counting = true;
-    cycle_.run(1000000);
-    g_counting = false;
-    while (!link_->events.empty()) link_->events.pop();
-  }
+  g_allocations = 0;
+  std::size_t n = 0;
+  for (; n < 200000 && !link_->channel_done[0].load(); ++n) cycles(1);
   EXPECT_EQ(g_allocations.load(), 0u);
-  EXPECT_TRUE(link_->channel_done[0].load()) << "after " << cycles << " cycles";
+  EXPECT_TRUE(link_->channel_done[0].load()) << "after " << n << " cycles";
   EXPECT_EQ(**cycle_.machine_pins.error_id, 0u);
   EXPECT_NEAR(**cycle_.axis_pins[2].pos_cmd, 22.0, 1e-9);  // Z, as nck run ends
 }
@@ -164,6 +172,34 @@ TEST(HalCycle, NoPackIsRefusedWithAnId) {
   std::string error;
   EXPECT_FALSE(cycle.build(*link, error));
   EXPECT_NE(error.find("940401"), std::string::npos) << error;
+}
+
+// nck.estop is the kernel's E-stop input (issue 48 item 9): the contour
+// brakes and ends in error, nck.axis.*.enable go off at standstill, the
+// reset pin does nothing while the E-stop is on and leaves the error after
+// its release; nothing allocates.
+TEST_F(MillInHal, EstopPinBrakesEndsInErrorAndDisablesUntilReset) {
+  g_allocations = 0;
+  cycles(3000);
+  EXPECT_TRUE(**cycle_.axis_pins[0].enable);
+  **cycle_.machine_pins.estop = true;
+  cycles(2000);
+  const auto error_state = static_cast<std::int32_t>(kernel::ProgramState::error);
+  EXPECT_EQ(**cycle_.channel_pins[0].program_state, error_state);
+  EXPECT_TRUE(link_->channel_done[0].load());
+  EXPECT_FALSE(**cycle_.axis_pins[0].enable);
+  **cycle_.channel_pins[0].reset = true;  // ignored while the E-stop is on
+  cycles(2);
+  **cycle_.channel_pins[0].reset = false;
+  EXPECT_EQ(**cycle_.channel_pins[0].program_state, error_state);
+  **cycle_.machine_pins.estop = false;
+  cycles(2);
+  EXPECT_TRUE(**cycle_.axis_pins[0].enable);
+  EXPECT_EQ(**cycle_.channel_pins[0].program_state, error_state);
+  **cycle_.channel_pins[0].reset = true;
+  cycles(2);
+  EXPECT_EQ(**cycle_.channel_pins[0].program_state, static_cast<std::int32_t>(kernel::ProgramState::idle));
+  EXPECT_EQ(g_allocations.load(), 0u);
 }
 
 }  // namespace
