@@ -27,7 +27,7 @@ plain_rc=0
 if [ "$preset" = asan ]; then
   cmake --preset default >/dev/null
   hal_targets=()  # the HAL sessions (issue 46): a sanitized nck.so cannot load into rtapi_app
-  [ -f /usr/include/linuxcnc/hal.h ] && hal_targets=(nck_hal_rt nck-hal)
+  [ -f /usr/include/linuxcnc/hal.h ] && hal_targets=(nck_hal_rt nck-hal nck_cia402_sim)
   cmake --build --preset default -j "$(nproc)" --target nck test_app peak_rss _nck "${hal_targets[@]}"
   NCK_PROPERTY_COUNT="${NCK_PROPERTY_COUNT:-200}" ctest --preset default -j "$(nproc)" \
     -R '^(ReportMemory\..*|ContinuousPathProperty\..*|python\.test_stress|serve\.attack|hal\..*|package\.deb)$' || plain_rc=$?
