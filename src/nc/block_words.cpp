@@ -13,7 +13,7 @@ void Words::clear() {
   g.clear();
   m.clear();
   h.clear();
-  for (std::uint32_t m = axis_mask; m != 0; m &= m - 1) axes[static_cast<std::size_t>(std::countr_zero(m))].reset();
+  for (std::uint32_t bits = axis_mask; bits != 0; bits &= bits - 1) axes[static_cast<std::size_t>(std::countr_zero(bits))].reset();
   axis_mask = 0;
   axis_count = 0;
   f = s = t = d = r = {};

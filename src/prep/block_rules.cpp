@@ -109,7 +109,7 @@ PlanResult add_outputs(const nc::Block& b, PlannedCommand& c, const config::Chan
   // #TOOL PREP [basic, ...] is the T word's form (TF5200 #TOOL PREP): the PLC gets the basic number.
   std::optional<std::int64_t> t = b.t;
   if (const auto* td = b.hash ? std::get_if<nc::ToolData>(&*b.hash) : nullptr; td && td->prep) t = td->fields[0];
-  if (t && !c.attach_within(kernel::Output{TechKind::t, static_cast<std::int32_t>(*t), config::sync::MOS}, PlannedCommand::kMaxOutputs))
+  if (t && !c.attach_within(kernel::Output{TechKind::t, static_cast<std::int32_t>(*t), config::sync::MOS, 0, std::nullopt}, PlannedCommand::kMaxOutputs))
     return overflow();
   return {};
 }

@@ -73,9 +73,9 @@ TEST(CommandPacker, TheKernelJoinsTheSegmentBitForBit) {
 TEST(CommandPacker, AttachmentsLeaveInHandlingOrderWithTheirCommand) {
   PlannedCommand c;
   c.kind = CommandKind::nop;
-  c.attach(kernel::Output{plc::TechKind::m, 8, 0, 0});
+  c.attach(kernel::Output{plc::TechKind::m, 8, 0, 0, std::nullopt});
   c.attach(trc::TrcChange{trc::RadiusComp::g41, 3, 2.5});
-  c.attach(kernel::Output{plc::TechKind::h, 9, 0, 0});
+  c.attach(kernel::Output{plc::TechKind::h, 9, 0, 0, std::nullopt});
   c.attach(kernel::Warning{{ErrorId::KernelPrepStarved, 7, {}}});
   auto q = std::make_unique<kernel::CommandQueue>();
   CommandPacker p;
@@ -95,7 +95,7 @@ TEST(CommandPacker, AttachmentsLeaveInHandlingOrderWithTheirCommand) {
 
 TEST(CommandPacker, AFullAttachmentRingTakesNothing) {
   PlannedCommand c;
-  for (int i = 0; i < 8; ++i) c.attach(kernel::Output{plc::TechKind::m, i, 0, 0});
+  for (int i = 0; i < 8; ++i) c.attach(kernel::Output{plc::TechKind::m, i, 0, 0, std::nullopt});
   auto q = std::make_unique<kernel::CommandQueue>();
   CommandPacker p;
   std::size_t packed = 0;
