@@ -35,21 +35,22 @@ HttpReply ServeApi::machine_input(std::string_view path, std::string_view body) 
 void ServeApi::note_machine_input(const sim::ScenarioAction& a) {
   if (const auto* e = a.get<sim::act::Estop>()) {
     estop_ = e->on;
-    reset_pending_ = reset_pending_ || e->on;
+    if (e->on) reset_pending_.fill(true);
   } else if (const auto* m = a.get<sim::act::MachineOn>()) {
     machine_on_ = m->on;
-  } else if (a.kind() == sim::ActionKind::reset && !estop_) {
-    reset_pending_ = false;  // the kernel's latch goes with it
+  } else if (a.kind() == sim::ActionKind::reset && !estop_ && a.channel >= 1 && a.channel <= reset_pending_.size()) {
+    reset_pending_[a.channel - 1u] = false;  // that channel's latch in the kernel goes with it
   }
 }
 
-std::optional<HttpReply> ServeApi::refused_by_machine(sim::ActionKind kind) const {
+std::optional<HttpReply> ServeApi::refused_by_machine(sim::ActionKind kind, std::size_t ch) const {
   using K = sim::ActionKind;
   if (kind != K::cycle_start && kind != K::mdi && kind != K::jog && kind != K::jog_increment) return std::nullopt;
   // The kernel latches the E-stop as this server does (no other source
   // gives it here); the server's own flags answer at once, with no wait
   // for the next snapshot.
-  if (estop_ || reset_pending_)
+  const bool pending = ch < reset_pending_.size() && reset_pending_[ch];
+  if (estop_ || pending)
     return error_reply(409, ErrorId::KernelEstopRefused,
                        estop_ ? "the E-stop is active: release it, then reset the channel"
                               : "the E-stop was released but not reset: reset the channel first");

@@ -178,7 +178,7 @@ HttpReply ServeApi::act(const ApiCommand& c) {
       break;
     }
     case K::mdi:
-      if (auto no = refused_by_machine(sim::ActionKind::mdi)) return *no;
+      if (auto no = refused_by_machine(sim::ActionKind::mdi, ch)) return *no;
       return mdi(ch, c.text, c.queue);
     case K::action:
       return operate(sim::check_operator_action(sim::OperatorAction{c.action, {}}, machine_, diags, "api"), diags);
@@ -199,7 +199,7 @@ HttpReply ServeApi::mdi(std::size_t ch, const std::string& text, bool queue) {
 HttpReply ServeApi::operate(const std::optional<sim::OperatorAction>& op, const Diagnostics& diags) {
   if (!op) return error_reply(400, diags.items().front());
   const std::size_t ch = op->action.channel - 1u;
-  if (auto no = refused_by_machine(op->action.kind())) return *no;
+  if (auto no = refused_by_machine(op->action.kind(), ch)) return *no;
   if (op->action.kind() == sim::ActionKind::mdi) return mdi(ch, op->mdi_text, false);
   if (op->action.kind() == sim::ActionKind::cycle_start) return start_or_release(ch, op->action);
   return pass_on(op->action);

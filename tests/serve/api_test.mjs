@@ -238,6 +238,31 @@ async function estop(s) {
   check("machine off: drives disabled, MDI -> 409 930732", off.machine_on === false && refused.status === 409 &&
         errorId(refused) === 930732, `${refused.status} ${refused.body}`);
   await post("machine_on", { on: true });
+}
+
+// The E-stop's latch is per channel: after its release a reset of channel 1
+// frees channel 1 only; channel 2 refuses cycle start (which would make a
+// fresh run and lose the kernel's latch) with 930731 until its own reset.
+async function estopTwoChannels(s) {
+  const post = (what, body) => request(s, "POST", "/api/v1/" + what, { body: JSON.stringify(body) });
+  const waitFor = async (cond) => {
+    let st = await state(s);
+    for (let i = 0; i < 200 && !cond(st); ++i) { await sleep(20); st = await state(s); }
+    return st;
+  };
+  await post("estop", { on: true });
+  await waitFor((st) => st.estop && st.channels.every((c) => c.state === "error"));
+  await post("estop", { on: false });
+  await command(s, { command: "reset", channel: 1 });
+  await waitFor((st) => st.channels[0].state === "idle");
+  const second = await command(s, { command: "cycle_start", channel: 2 });
+  const first = await command(s, { command: "mdi", channel: 1, text: "G0 X1" });
+  await command(s, { command: "reset", channel: 2 });
+  await waitFor((st) => st.channels[1].state === "idle" && st.channels[0].state === "idle");
+  const after = await command(s, { command: "cycle_start", channel: 2 });
+  check("two channels: a reset frees its own channel only (channel 2 -> 409 930731 until its reset)",
+        second.status === 409 && errorId(second) === 930731 && first.status === 200 && after.status === 200,
+        `${second.status} ${second.body} | ${first.status} ${first.body} | ${after.status} ${after.body}`);
   const back = await waitFor((st) => st.machine_on && st.drives_enabled);
   check("machine on again: drives enabled", back.machine_on && back.drives_enabled);
 }
@@ -376,6 +401,13 @@ async function main() {
     await malformed(fast);
   } finally {
     fast.proc.kill("SIGTERM");
+  }
+  const twin = await start(nck, src, ["examples/two-channel/channel1.nc", "examples/two-channel/channel2.nc", "--rate", "100000"],
+                           "examples/two-channel");
+  try {
+    await estopTwoChannels(twin);
+  } finally {
+    twin.proc.kill("SIGTERM");
   }
   agent.destroy();
   finish();

@@ -55,7 +55,7 @@ class ServeApi : public ApiHandler {
   HttpReply start_or_release(std::size_t ch, const sim::ScenarioAction& cycle_start);
   // E-stop and machine on (machine_input.cpp).
   HttpReply machine_input(std::string_view path, std::string_view body);
-  std::optional<HttpReply> refused_by_machine(sim::ActionKind kind) const;
+  std::optional<HttpReply> refused_by_machine(sim::ActionKind kind, std::size_t ch) const;
   void note_machine_input(const sim::ScenarioAction& a);
   HttpReply program_text(std::string_view target) const;
   HttpReply preview(std::string_view target);
@@ -90,7 +90,8 @@ class ServeApi : public ApiHandler {
   LastErrors last_errors_;  // of the run of generation_, from its events (the state's last_error)
   LivePath path_;        // the run's path so far, for a page loaded during it
   bool estop_ = false, machine_on_ = true;  // as the last POST /api/v1/estop, /machine_on set them
-  bool reset_pending_ = false;             // an E-stop came, no reset after its release yet
+  // per channel: an E-stop came, no reset of that channel after its release yet (the kernel's latch)
+  std::array<bool, config::kMaxChannels> reset_pending_{};
   StreamReplay replay_;  // the frames' ids, the events a reconnecting client missed
   OffsetBook offsets_;   // the edits of the lists not saved yet
 };
