@@ -22,7 +22,7 @@ void Kernel::follow_machine(const TickInput& in, double t_s, TickOutput& out) no
   for (const auto& c : channels_) m.reset_needed = m.reset_needed || c->estop_latched();
   m.drives_enabled = !stop_drives || (machine_out_.drives_enabled && moving);
   if (m != machine_out_)
-    out.emit(Event{{t_s, 0, {}}, ev::Machine{m.estop, m.reset_needed, m.machine_on, m.drives_enabled}});
+    out.emit(Event{{t_s, 0, {}}, m});
   machine_out_ = m;
   out.machine = m;
 }

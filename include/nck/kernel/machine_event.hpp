@@ -8,11 +8,13 @@
 
 namespace nck::kernel::ev {
 
+// Also what TickOutput::machine gives every cycle (kernel::MachineOutput).
 struct Machine {
   bool estop = false;           // the E-stop input is on
-  bool reset_needed = false;    // a channel waits for its reset after an E-stop
+  bool reset_needed = false;    // a channel keeps the E-stop latched until its reset
   bool machine_on = true;       // the machine-on input
-  bool drives_enabled = true;   // the NC lets the drives be powered
+  bool drives_enabled = true;   // the NC lets the drives be powered (false: E-stop or off, at standstill)
+  bool operator==(const Machine&) const = default;
 };
 
 template <class Json, class Names>

@@ -187,15 +187,9 @@ struct TechRequest {
   plc::TechOutput output;
 };
 
-// What the machine's inputs made of the machine in this cycle (the
-// `machine` event reports each change).
-struct MachineOutput {
-  bool estop = false;           // the E-stop input is on
-  bool reset_needed = false;    // a channel keeps the E-stop latched until its reset
-  bool machine_on = true;       // the machine-on input
-  bool drives_enabled = true;   // the NC lets the drives be powered (false: E-stop or off, at standstill)
-  bool operator==(const MachineOutput&) const = default;
-};
+// What the machine's inputs made of the machine in this cycle: the
+// `machine` event's payload, which reports each change.
+using MachineOutput = ev::Machine;
 
 struct TickOutput {
   double t_s = 0;  // start of the cycle just computed
