@@ -6,6 +6,13 @@
 #include "nck/motion/limits.hpp"
 
 namespace nck::kernel {
+
+bool chains_as_spline(const Motion& m) noexcept {
+  return jerk_limited(m.limits.slope) && m.path.kind == motion::SegmentKind::cubic;
+}
+
+bool chains(const Motion& m) noexcept { return m.limits.slope == SlopeProfile::hsc || chains_as_spline(m); }
+
 namespace {
 
 double cruise_of(const Motion& m) noexcept { return std::min(m.v_cmd_mm_s, m.limits.v_max_mm_s); }
@@ -14,8 +21,9 @@ double cruise_of(const Motion& m) noexcept { return std::min(m.v_cmd_mm_s, m.lim
 // motion): the transition passes at both motions' speed, and m's is not
 // below the chain's (so neither is the transition's).
 bool joins(const Motion& last, const Motion& m, double v_cruise_mm_s) noexcept {
-  return last.passes_at_cruise && m.limits.slope == SlopeProfile::hsc && m.trafo.kind == motion::CaxTrafoKind::none &&
-         !m.measure && cruise_of(m) >= v_cruise_mm_s && motion::valid(m.limits);
+  return last.passes_at_cruise && chains(m) && (m.limits.slope == SlopeProfile::hsc || chains_as_spline(last)) &&
+         m.trafo.kind == motion::CaxTrafoKind::none && !m.measure && cruise_of(m) >= v_cruise_mm_s &&
+         motion::valid(m.limits);
 }
 
 motion::PathLimits merged(const motion::PathLimits& a, const motion::PathLimits& b) noexcept {

@@ -123,6 +123,9 @@ struct Corner {
 };
 inline std::optional<Corner> corner_between(const Segment& a, const Segment& b, double path_dev_mm) {
   if (!(path_dev_mm > 0) || !std::isfinite(path_dev_mm)) return std::nullopt;
+  // Lines and arcs only: a smoothed chord (cubic) or a blend ends its chain.
+  for (const Segment* s : {&a, &b})
+    if (s->kind() != SegmentKind::line && s->kind() != SegmentKind::arc) return std::nullopt;
   const auto pl = corner_plane(a, b);
   if (!pl) return std::nullopt;
   const auto in = curve_of(a, *pl, true), out = curve_of(b, *pl, false);

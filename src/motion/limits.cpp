@@ -1,6 +1,7 @@
 #include "nck/motion/limits.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -67,6 +68,73 @@ void add_arc_plane(PathLimits& out, const Segment& seg, std::span<const AxisDyna
   out.a_dec_mm_s2 = std::min(out.a_dec_mm_s2, dec_t / plane_share);
 }
 
+// A cubic span (a smoothed chord): its tangent turns within the span and
+// from span to span without a step, so its curvature kappa(s) limits the
+// speed as an arc's radius does (v^2 kappa across the path), and under a
+// jerk-limited slope the turning acceleration's change, v^3 sqrt(kappa'^2 +
+// kappa^4), and speeding up while turning, 3 v a_t kappa, stay within the
+// share of a/tr that an arc gets. kappa from the unit tangent's change
+// between samples.
+void add_cubic_curve(PathLimits& out, const Segment& seg, std::span<const AxisDynamics> axes,
+                     SlopeProfile slope) noexcept {
+  constexpr int kSamples = 16;
+  const double len = seg.length(), step = len / kSamples;
+  double acc = kInf, dec = kInf, tr_geom = 0;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::size_t i = seg.cubic_axis(k);
+    if (i >= axes.size()) return;
+    acc = std::min(acc, axes[i].a_acc_mm_s2);
+    dec = std::min(dec, axes[i].a_dec_mm_s2);
+    tr_geom = std::max(tr_geom, axes[i].tr_geom_s);
+  }
+  std::array<double, kSamples + 1> kappa{};
+  AxisVector t0{}, t1{};
+  auto unit_tangent = [&](double s, AxisVector& t) {
+    seg.tangent_at(s, t);
+    double sq = 0;
+    for (std::size_t k = 0; k < 3; ++k)
+      if (!seg.cubic_axis_repeats(k)) sq += t[seg.cubic_axis(k)] * t[seg.cubic_axis(k)];
+    return std::sqrt(sq);
+  };
+  for (int n = 0; n <= kSamples; ++n) {
+    const double s = n * step, h = 0.25 * step;
+    const double a = std::max(s - h, 0.0), b = std::min(s + h, len);
+    const double speed0 = unit_tangent(a, t0), speed1 = unit_tangent(b, t1);
+    double sq = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (seg.cubic_axis_repeats(k)) continue;
+      const std::size_t i = seg.cubic_axis(k);
+      const double d = t1[i] / speed1 - t0[i] / speed0;
+      sq += d * d;
+    }
+    kappa[static_cast<std::size_t>(n)] = std::sqrt(sq) / (0.5 * (speed0 + speed1) * (b - a));
+  }
+  double kappa_max = 0, jerk_shape = 0;  // max kappa, max sqrt(kappa'^2 + kappa^4)
+  for (std::size_t n = 0; n <= kSamples; ++n) {
+    const double k = kappa[n];
+    const double slope_k = n == 0 ? (kappa[1] - k) / step
+                         : n == kSamples ? (k - kappa[n - 1]) / step
+                                         : (kappa[n + 1] - kappa[n - 1]) / (2 * step);
+    kappa_max = std::max(kappa_max, k);
+    jerk_shape = std::max(jerk_shape, std::sqrt(slope_k * slope_k + k * k * k * k));
+  }
+  const double any = std::min(acc, dec), split = std::numbers::sqrt2;
+  double v = kappa_max > 0 ? std::sqrt(any / split / kappa_max) : kInf;
+  double acc_t = acc / split, dec_t = dec / split;
+  if (jerk_limited(slope)) {
+    const RampTimes& t = out.tr;
+    const double tr = std::max({t.acc_up_s, t.acc_down_s, t.dec_up_s, t.dec_down_s, tr_geom});
+    const double j_geom = tr > 0 ? (1.0 - 1.0 / split) / 2.0 * any / tr : kInf;
+    if (jerk_shape > 0) v = std::min(v, std::cbrt(j_geom / jerk_shape));
+    const double a_t = v > 0 && kappa_max > 0 ? j_geom / (3.0 * v * kappa_max) : kInf;
+    acc_t = std::min(acc_t, a_t);
+    dec_t = std::min(dec_t, a_t);
+  }
+  out.v_max_mm_s = std::min(out.v_max_mm_s, v);
+  out.a_acc_mm_s2 = std::min(out.a_acc_mm_s2, acc_t);
+  out.a_dec_mm_s2 = std::min(out.a_dec_mm_s2, dec_t);
+}
+
 }  // namespace
 
 JerkLimits jerk_limits(const PathLimits& l) noexcept {
@@ -100,6 +168,16 @@ PathLimits path_limits(const Segment& seg, std::span<const AxisDynamics> axes, S
   const std::size_t n = std::min(seg.axis_count(), axes.size());
   const AxisVector& p0 = seg.start_point();
   const AxisVector& p1 = seg.end_point();
+  if (seg.kind() == SegmentKind::cubic) {  // each axis's largest share over the span
+    AxisVector share{}, t{};
+    for (int k = 0; k <= 8; ++k) {
+      seg.tangent_at(len * k / 8.0, t);
+      for (std::size_t i = 0; i < n; ++i) share[i] = std::max(share[i], std::abs(t[i]));
+    }
+    for (std::size_t i = 0; i < n; ++i) limit_by_share(out, axes[i], share[i]);
+    add_cubic_curve(out, seg, axes, slope);
+    return out;
+  }
   for (std::size_t i = 0; i < n; ++i) {
     if (arc && (i == seg.plane_a() || i == seg.plane_b())) continue;
     limit_by_share(out, axes[i], std::abs(p1[i] - p0[i]) / len);

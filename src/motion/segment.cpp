@@ -55,6 +55,7 @@ SegmentTail Segment::tail() const noexcept {
   t.n_axes = static_cast<std::uint8_t>(n_axes_);
   t.plane_a = static_cast<std::uint8_t>(plane_a_);
   t.plane_b = static_cast<std::uint8_t>(plane_b_);
+  t.axis_c = axis_c_;
   t.end = end_;
   t.length_mm = length_mm_;
   t.center_a = center_a_;
@@ -73,6 +74,7 @@ Segment Segment::joined(const AxisVector& start, const SegmentTail& t) noexcept 
   s.n_axes_ = t.n_axes;
   s.plane_a_ = t.plane_a;
   s.plane_b_ = t.plane_b;
+  s.axis_c_ = t.axis_c;
   s.start_ = start;
   s.end_ = t.end;
   s.length_mm_ = t.length_mm;
@@ -105,6 +107,7 @@ void Segment::point_at(double s_mm, AxisVector& out) const noexcept {
   // more), and the parabola's point is out of line.
   if (kind_ == SegmentKind::line) [[likely]] return;
   if (kind_ == SegmentKind::parabola) [[unlikely]] return parabola_point(f, out);
+  if (kind_ == SegmentKind::cubic) [[unlikely]] return cubic_point(f, out);
   const double ang = angle_start_rad_ + f * sweep_rad_;
   const double r = r_start_mm_ + f * (r_end_mm_ - r_start_mm_);
   out[plane_a_] = center_a_ + r * std::cos(ang);
@@ -119,6 +122,7 @@ void Segment::parabola_point(double f, AxisVector& out) const noexcept {
 
 Segment Segment::remainder(double s_mm) const noexcept {
   const double f = fraction(s_mm);
+  if (kind_ == SegmentKind::cubic) return cubic_remainder(f);
   Segment r = *this;
   point_at(s_mm, r.start_);
   r.length_mm_ = length_mm_ * (1.0 - f);
@@ -141,7 +145,9 @@ void Segment::tangent_at(double s_mm, AxisVector& out) const noexcept {
     return;
   }
   for (std::size_t i = 0; i < n_axes_; ++i) out[i] = (end_[i] - start_[i]) / length_mm_;
-  if (kind_ == SegmentKind::parabola) [[unlikely]] {  // not a unit vector inside: the axes' share of the path speed
+  if (kind_ == SegmentKind::cubic) [[unlikely]] {
+    cubic_tangent(fraction(s_mm), out);
+  } else if (kind_ == SegmentKind::parabola) [[unlikely]] {  // not a unit vector inside: the axes' share of the path speed
     const double f = fraction(s_mm), k = 2.0 / length_mm_;
     out[plane_a_] = k * ((1.0 - f) * (center_a_ - start_[plane_a_]) + f * (end_[plane_a_] - center_a_));
     out[plane_b_] = k * ((1.0 - f) * (center_b_ - start_[plane_b_]) + f * (end_[plane_b_] - center_b_));

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
+#include "nck/motion/chord_smoothing.hpp"
 #include "nck/motion/corner_blend.hpp"
 #include "nck/prep/blend_limits.hpp"
 #include "nck/motion/junction.hpp"
@@ -142,6 +144,8 @@ void LookAheadWindow::store(const PlannedCommand& c, bool linkable) {
   Entry& e = at(seq);
   e.command = c;
   e.command.v_end_mm_s = 0;
+  e.chord_limits = c.limits;
+  if (c.kind == CommandKind::motion && next_chord_limits_) e.chord_limits = *std::exchange(next_chord_limits_, std::nullopt);
   e.prev_motion = 0;
   e.end_cap_mm_s = e.through_cap_mm_s = 0;
   e.stairs = Staircase{};
@@ -346,6 +350,7 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   const BlendAxes& ax = w.unit() ? axes_ : weighted_axes(w);
   const BlendDynamics dyn{std::span<const motion::AxisDynamics>(ax.feed_dyn.data(), ax.n_axes),
                           std::span<const double>(ax.a_max_mm_s2.data(), ax.n_axes)};
+  if (jerk_limited(p.command.limits.slope) && jerk_limited(next.limits.slope) && smooth(prev, next, ax, dyn)) return true;
   motion::PathLimits blend_limits{};
   const auto cb = corner_blend(p, next, dyn, blend_limits);
   if (!cb) return false;
@@ -437,6 +442,51 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   stats_.parabolas += parabola ? 1 : 0;
   stats_.shortfall_mm += cb->shortfall_mm;
   stats_.max_deviation_mm = std::max(stats_.max_deviation_mm, cb->deviation_mm);
+  return true;
+}
+
+bool LookAheadWindow::smooth(std::uint64_t prev, PlannedCommand& next, const BlendAxes& ax, const BlendDynamics& dyn) {
+  Entry& p = at(prev);
+  const auto sv = motion::smooth_vertex(p.command.segment, next.segment, p.command.blend_dev_mm);
+  if (!sv) return false;
+  PlannedCommand before = p.command, after = next;
+  before.segment = sv->before;
+  after.segment = sv->after;
+  before.limits = p.chord_limits;
+  // A span keeps its chord's limits and adds what its curvature asks.
+  for (PlannedCommand* c : {&before, &after}) {
+    const motion::PathLimits curve = motion::path_limits(c->segment, dyn.feed, c->limits.slope);
+    c->limits.v_max_mm_s = std::min(c->limits.v_max_mm_s, curve.v_max_mm_s);
+    c->limits.a_acc_mm_s2 = std::min(c->limits.a_acc_mm_s2, curve.a_acc_mm_s2);
+    c->limits.a_dec_mm_s2 = std::min(c->limits.a_dec_mm_s2, curve.a_dec_mm_s2);
+    if (!motion::valid(c->limits)) return false;
+  }
+  after.v_entry_max_mm_s = tangent_cap(before, after, ax);
+  if (after.v_entry_max_mm_s <= next.v_entry_max_mm_s) return false;
+  // As blend(): a command that has left must still be able to brake.
+  after.v_end_mm_s = 0;
+  const Staircase after_stairs = prep::settle(after, tail_, EndCaps{}, nullptr, cycle_s_);
+  before.v_end_mm_s = std::min(after.v_entry_max_mm_s, after_stairs.entry_mm_s);
+  if (!lowering_is_safe(prev, prep::settle(before, prev, EndCaps::both(after.v_entry_max_mm_s), &after_stairs, cycle_s_)))
+    return false;
+  p.command.segment = before.segment;
+  p.command.limits = before.limits;
+  next_chord_limits_ = next.limits;
+  next.segment = after.segment;
+  next.limits = after.limits;
+  next.v_entry_max_mm_s = next.v_entry_through_max_mm_s = after.v_entry_max_mm_s;  // no kink left
+  // The span before now ends curving as it goes on: the vertex at its start,
+  // capped while it ended straight (clamped), may be passed faster.
+  if (p.prev_motion != 0 && p.prev_motion - 1 >= head_) {
+    Entry& m = at(p.prev_motion - 1);
+    if (m.command.segment.kind() == motion::SegmentKind::cubic && p.command.v_entry_max_mm_s == m.end_cap_mm_s) {
+      p.command.v_entry_max_mm_s = p.command.v_entry_through_max_mm_s = tangent_cap(m.command, p.command, ax);
+      m.end_cap_mm_s = m.through_cap_mm_s = std::max(m.end_cap_mm_s, p.command.v_entry_max_mm_s);
+      raise_chain(prev);
+    }
+  }
+  ++stats_.smoothed;
+  stats_.max_deviation_mm = std::max(stats_.max_deviation_mm, sv->deviation_mm);
   return true;
 }
 

@@ -11,7 +11,10 @@ namespace nck::prep {
 std::size_t PathPreview::chords(const motion::Segment& s) {
   if (s.kind() == motion::SegmentKind::line) return 1;
   constexpr double kChordRad = 5.0 * std::numbers::pi / 180.0;
-  const double turn = s.kind() == motion::SegmentKind::arc ? std::abs(s.sweep_rad()) : std::numbers::pi / 2;
+  // (a cubic span, a smoothed chord, turns by a few degrees at most: 4)
+  const double turn = s.kind() == motion::SegmentKind::arc     ? std::abs(s.sweep_rad())
+                      : s.kind() == motion::SegmentKind::cubic ? 0.0
+                                                               : std::numbers::pi / 2;
   return std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(turn / kChordRad)), 4, 360);
 }
 

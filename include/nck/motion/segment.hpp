@@ -7,9 +7,11 @@
 // Parametrisation: by path length s in [0, length()]. point_at(length())
 // returns the programmed end point exactly, so the path ends where the
 // program says, bit for bit.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <expected>
+#include <optional>
 #include <string_view>
 
 #include "nck/motion/axis_vector.hpp"
@@ -39,7 +41,13 @@ std::string_view describe(ArcError e) noexcept;
 // path speed every axis accelerates constantly. Its length() is the sum of its
 // two (equal) legs, so s is not the arc length: the path speed is the true
 // speed at both ends and up to cos(turn/2) below it inside.
-enum class SegmentKind : std::uint8_t { line, arc, parabola };
+// cubic: one span of the curvature-continuous path a programmed polyline is
+// smoothed into under a jerk-limited slope (docs/decisions.md, "Smoothing
+// fine chords"): the cubic Bezier start -> P1 -> P2 -> end in up to three
+// axes (the others stand), P1 and P2 at the thirds of the programmed chord.
+// s maps to the Bezier parameter through a cubic whose slopes at both ends
+// make s the arc length there (segment_cubic.cpp).
+enum class SegmentKind : std::uint8_t { line, arc, parabola, cubic };
 
 // How far the start and end radius of a centre-programmed arc may differ:
 // accepted when |r_end - r_start| <= max(abs_mm, rel * r_start).
@@ -57,12 +65,21 @@ struct SegmentTail {
   SegmentKind kind = SegmentKind::line;
   std::uint8_t n_axes = 0;
   std::uint8_t plane_a = 0, plane_b = 1;
+  std::uint8_t axis_c = 0;  // cubic: its third axis (plane_a, plane_b, axis_c)
   AxisVector end{};
   double length_mm = 0;
-  // arc only (a parabola: its control point in center_a/center_b)
+  // arc only (a parabola: its control point in center_a/center_b; a cubic:
+  // P1 in center_a, center_b, r_start_mm and P2 in r_end_mm, angle_start_rad,
+  // sweep_rad, for its axes plane_a, plane_b, axis_c)
   double center_a = 0, center_b = 0;
   double r_start_mm = 0, r_end_mm = 0;
   double angle_start_rad = 0, sweep_rad = 0, plane_len_mm = 0;
+};
+
+// A cubic span's axes and inner control points (make_cubic).
+struct CubicControl {
+  std::array<std::size_t, 3> axis{};  // distinct moving axes, or the last repeated
+  std::array<double, 3> p1{}, p2{};   // P1 and P2 on them
 };
 
 class Segment {
@@ -108,6 +125,15 @@ class Segment {
   // Parabola: its control point in the plane (the legs' intersection).
   double control_a() const noexcept { return center_a_; }
   double control_b() const noexcept { return center_b_; }
+  // Cubic: its axes (k = 0..2; repeated when fewer move) and inner control
+  // points on them.
+  std::size_t cubic_axis(std::size_t k) const noexcept { return k == 0 ? plane_a_ : k == 1 ? plane_b_ : axis_c_; }
+  double cubic_p1(std::size_t k) const noexcept { return k == 0 ? center_a_ : k == 1 ? center_b_ : r_start_mm_; }
+  double cubic_p2(std::size_t k) const noexcept { return k == 0 ? r_end_mm_ : k == 1 ? angle_start_rad_ : sweep_rad_; }
+  // Whether cubic_axis(k) repeats an earlier one (fewer than three move).
+  bool cubic_axis_repeats(std::size_t k) const noexcept {
+    return (k > 0 && cubic_axis(k) == cubic_axis(0)) || (k > 1 && cubic_axis(k) == cubic_axis(1));
+  }
 
  private:
   friend std::expected<Segment, ArcError> make_line(const AxisVector&, const AxisVector&,
@@ -118,12 +144,20 @@ class Segment {
                                                           AxisMask) noexcept;
   friend std::expected<Segment, ArcError> make_parabola(const AxisVector&, double, double, const AxisVector&,
                                                         std::size_t, std::size_t, std::size_t) noexcept;
+  friend std::optional<Segment> make_cubic(const AxisVector&, const CubicControl&, const AxisVector&,
+                                           std::size_t) noexcept;
 
   double fraction(double s_mm) const noexcept;
   // point_at's plane axes on a parabola at fraction f (kept out of point_at).
   [[gnu::noinline]] void parabola_point(double f, AxisVector& out) const noexcept;
+  // A cubic's Bezier parameter at fraction f, and its slope du/df.
+  double cubic_parameter(double f, double* slope) const noexcept;
+  [[gnu::noinline]] void cubic_point(double f, AxisVector& out) const noexcept;
+  void cubic_tangent(double f, AxisVector& out) const noexcept;
+  Segment cubic_remainder(double f) const noexcept;
 
   SegmentKind kind_ = SegmentKind::line;
+  std::uint8_t axis_c_ = 0;  // cubic: its third axis
   std::size_t n_axes_ = 0;
   AxisVector start_{};
   AxisVector end_{};
@@ -173,5 +207,12 @@ std::expected<Segment, ArcError> make_arc_radius(const AxisVector& start, const 
 std::expected<Segment, ArcError> make_parabola(const AxisVector& start, double control_a, double control_b,
                                                const AxisVector& end, std::size_t n_axes, std::size_t plane_a,
                                                std::size_t plane_b) noexcept;
+
+// A cubic span from start to end with the inner control points c (every
+// axis not in c.axis must stand). nullopt on a NaN or where its speed law
+// would stray more than 2 % from the arc length inside (the caller keeps
+// the sharp corner). setup
+std::optional<Segment> make_cubic(const AxisVector& start, const CubicControl& c, const AxisVector& end,
+                                            std::size_t n_axes) noexcept;
 
 }  // namespace nck::motion

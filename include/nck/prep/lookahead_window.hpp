@@ -32,6 +32,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -61,6 +62,7 @@ struct BlendAxes {
 struct BlendStats {
   std::uint64_t blends = 0;      // blends placed (fillets and parabolas)
   std::uint64_t parabolas = 0;   // of them parabolas (STEP)
+  std::uint64_t smoothed = 0;    // vertices smoothed into cubic spans (jerk-limited slopes)
   double shortfall_mm = 0;       // programmed length minus blended length, summed
   double max_deviation_mm = 0;   // largest corner-to-blend distance
 };
@@ -100,6 +102,9 @@ class LookAheadWindow {
     double through_cap_mm_s = 0;    // the same for braking across its end (EndCaps)
     EndCaps caps() const { return {end_cap_mm_s, through_cap_mm_s}; }
     Staircase stairs{};             // how it brakes (motions)
+    // The limits preparation gave the motion, before smoothing narrowed
+    // them for a span's curvature (which changes as its vertices are smoothed).
+    motion::PathLimits chord_limits{};
   };
   Entry& at(std::uint64_t seq) { return ring_[seq % ring_.size()]; }
   const Entry& at(std::uint64_t seq) const { return ring_[seq % ring_.size()]; }
@@ -113,6 +118,12 @@ class LookAheadWindow {
   void blend_across(PlannedCommand& c);
   bool passes_at_cruise(std::uint64_t seq) const;
   bool blend(std::uint64_t prev, PlannedCommand& next);
+  // The vertex between prev and next smoothed (motion/chord_smoothing.hpp):
+  // both become cubic spans; false (nothing changed) where it cannot be
+  // smoothed or would not pass faster than the kink.
+  bool smooth(std::uint64_t prev, PlannedCommand& next, const BlendAxes& ax, const BlendDynamics& dyn);
+  // smooth() narrowed the next motion's limits: its chord's, for store().
+  std::optional<motion::PathLimits> next_chord_limits_;
   std::optional<motion::CornerBlend> corner_blend(const Entry& p, const PlannedCommand& next, const BlendDynamics& dyn,
                                                   motion::PathLimits& limits) const;
   double corner_cost(const motion::CornerBlend& cb, const motion::PathLimits& l, const PlannedCommand& before,

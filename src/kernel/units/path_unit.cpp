@@ -23,7 +23,7 @@ void PathUnit::start_motion(const Motion& m, const CommandQueue& queued, double 
   const double v_end = reserve_end_speed(m, queued, dt_s);
   reserve_ = v_end < m.v_end_mm_s;
   HscChain h;
-  if (m.limits.slope == SlopeProfile::hsc) h = hsc_chain(m, segment_.length(), queued, dt_s);
+  if (chains(m)) h = hsc_chain(m, segment_.length(), queued, dt_s);
   note_chain(h);
   // Inside a chain this segment's end is passed at the chain's speed; the
   // chain's end is lowered while it reaches the end of the queue.
