@@ -7,8 +7,10 @@
 
 namespace nck::kernel {
 
+// TRAPEZ only: the chain is planned as one TRAPEZ move (a SIN2 ramp
+// planned again from a state of the ramp under way overshoots).
 bool chains_as_spline(const Motion& m) noexcept {
-  return jerk_limited(m.limits.slope) && m.path.kind == motion::SegmentKind::cubic;
+  return m.limits.slope == SlopeProfile::trapez && m.path.kind == motion::SegmentKind::cubic;
 }
 
 bool chains(const Motion& m) noexcept { return m.limits.slope == SlopeProfile::hsc || chains_as_spline(m); }

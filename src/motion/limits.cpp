@@ -75,8 +75,8 @@ void add_arc_plane(PathLimits& out, const Segment& seg, std::span<const AxisDyna
 // kappa^4), and speeding up while turning, 3 v a_t kappa, stay within the
 // share of a/tr that an arc gets. kappa from the unit tangent's change
 // between samples.
-void add_cubic_curve(PathLimits& out, const Segment& seg, std::span<const AxisDynamics> axes,
-                     SlopeProfile slope) noexcept {
+void add_cubic_curve(PathLimits& out, const Segment& seg, std::span<const AxisDynamics> axes, SlopeProfile slope,
+                     double v_cap_mm_s) noexcept {
   constexpr int kSamples = 16;
   const double len = seg.length(), step = len / kSamples;
   double acc = kInf, dec = kInf, tr_geom = 0;
@@ -119,7 +119,7 @@ void add_cubic_curve(PathLimits& out, const Segment& seg, std::span<const AxisDy
     jerk_shape = std::max(jerk_shape, std::sqrt(slope_k * slope_k + k * k * k * k));
   }
   const double any = std::min(acc, dec), split = std::numbers::sqrt2;
-  double v = kappa_max > 0 ? std::sqrt(any / split / kappa_max) : kInf;
+  double v = std::min(kappa_max > 0 ? std::sqrt(any / split / kappa_max) : kInf, v_cap_mm_s);
   double acc_t = acc / split, dec_t = dec / split;
   if (jerk_limited(slope)) {
     const RampTimes& t = out.tr;
@@ -159,7 +159,8 @@ bool valid(const PathLimits& l) noexcept {
   return ok(l.v_max_mm_s) && ok(l.a_acc_mm_s2) && ok(l.a_dec_mm_s2);
 }
 
-PathLimits path_limits(const Segment& seg, std::span<const AxisDynamics> axes, SlopeProfile slope) noexcept {
+PathLimits path_limits(const Segment& seg, std::span<const AxisDynamics> axes, SlopeProfile slope,
+                       double v_cap_mm_s) noexcept {
   const double len = seg.length();
   if (!(len > 0.0)) return standstill_limits(seg, axes);
   PathLimits out{kInf, kInf, kInf};
@@ -175,7 +176,7 @@ PathLimits path_limits(const Segment& seg, std::span<const AxisDynamics> axes, S
       for (std::size_t i = 0; i < n; ++i) share[i] = std::max(share[i], std::abs(t[i]));
     }
     for (std::size_t i = 0; i < n; ++i) limit_by_share(out, axes[i], share[i]);
-    add_cubic_curve(out, seg, axes, slope);
+    add_cubic_curve(out, seg, axes, slope, v_cap_mm_s);
     return out;
   }
   for (std::size_t i = 0; i < n; ++i) {

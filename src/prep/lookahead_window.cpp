@@ -342,15 +342,17 @@ bool LookAheadWindow::blend(std::uint64_t prev, PlannedCommand& next) {
   if (axes_.n_axes == 0 || !next.head.feed_motion || next.has<kernel::ProgramMap>() || next.trafo.kind != motion::CaxTrafoKind::none ||
       next.feed_link.kind != kernel::FeedLinkKind::none)
     return false;
-  // Only a corner that slows the path gets a fillet (a kink that passes at
-  // the feed, like the chords of a fine polygon, stays as programmed).
-  const double feed = std::min(cruise(p.command), cruise(next));
-  if (next.v_entry_max_mm_s >= 0.999 * feed) return false;
   const WeightScale w = both(p.command.weights, next.weights);
   const BlendAxes& ax = w.unit() ? axes_ : weighted_axes(w);
   const BlendDynamics dyn{std::span<const motion::AxisDynamics>(ax.feed_dyn.data(), ax.n_axes),
                           std::span<const double>(ax.a_max_mm_s2.data(), ax.n_axes)};
+  // Under a jerk-limited slope also a kink that passes at the feed is
+  // smoothed: the spans chain across it, a kink ends the chain.
   if (jerk_limited(p.command.limits.slope) && jerk_limited(next.limits.slope) && smooth(prev, next, ax, dyn)) return true;
+  // Only a corner that slows the path gets a fillet (a kink that passes at
+  // the feed, like the chords of a fine polygon, stays as programmed).
+  const double feed = std::min(cruise(p.command), cruise(next));
+  if (next.v_entry_max_mm_s >= 0.999 * feed) return false;
   motion::PathLimits blend_limits{};
   const auto cb = corner_blend(p, next, dyn, blend_limits);
   if (!cb) return false;
@@ -453,16 +455,19 @@ bool LookAheadWindow::smooth(std::uint64_t prev, PlannedCommand& next, const Ble
   before.segment = sv->before;
   after.segment = sv->after;
   before.limits = p.chord_limits;
-  // A span keeps its chord's limits and adds what its curvature asks.
+  // A span keeps its chord's limits and adds what its curvature asks, at
+  // its programmed feed at most (as a fillet is sized for it: an override
+  // above 100 % does not speed it up).
   for (PlannedCommand* c : {&before, &after}) {
-    const motion::PathLimits curve = motion::path_limits(c->segment, dyn.feed, c->limits.slope);
+    const motion::PathLimits curve =
+        motion::path_limits(c->segment, dyn.feed, c->limits.slope, std::min(c->v_cmd_mm_s, c->limits.v_max_mm_s));
     c->limits.v_max_mm_s = std::min(c->limits.v_max_mm_s, curve.v_max_mm_s);
     c->limits.a_acc_mm_s2 = std::min(c->limits.a_acc_mm_s2, curve.a_acc_mm_s2);
     c->limits.a_dec_mm_s2 = std::min(c->limits.a_dec_mm_s2, curve.a_dec_mm_s2);
     if (!motion::valid(c->limits)) return false;
   }
   after.v_entry_max_mm_s = tangent_cap(before, after, ax);
-  if (after.v_entry_max_mm_s <= next.v_entry_max_mm_s) return false;
+  if (after.v_entry_max_mm_s < next.v_entry_max_mm_s) return false;
   // As blend(): a command that has left must still be able to brake.
   after.v_end_mm_s = 0;
   const Staircase after_stairs = prep::settle(after, tail_, EndCaps{}, nullptr, cycle_s_);

@@ -4,7 +4,7 @@
 // runs through at its speed form one chain, which the profile plans as one
 // jerk-limited move (motion::PathChain): the acceleration goes on across
 // the transitions inside it instead of returning to 0 at every block end.
-// Under TRAPEZ and SIN2 the spans of one smoothed polyline chain the same
+// Under TRAPEZ the spans of one smoothed polyline chain the same
 // way (docs/decisions.md, "Smoothing fine chords"): together they are one
 // curve, as a spline through the programmed points is on an ISG control.
 #include <cstddef>
@@ -33,7 +33,7 @@ struct HscChain {
 // smallest accelerations and speed limits and longest ramp times. It ends
 // at its last motion's planned end speed, lowered by the braking reserve
 // of what is queued after it; at the end of the queue, at 0. rt
-// Whether m is a span of a smoothed polyline under a jerk-limited slope,
+// Whether m is a span of a smoothed polyline under TRAPEZ,
 // and whether a chain may start with m (HSC, or such a span). rt
 bool chains_as_spline(const Motion& m) noexcept;
 bool chains(const Motion& m) noexcept;

@@ -1,6 +1,7 @@
 #pragma once
 // From per-axis dynamics to limits along the path of one segment: the path
 // velocity and accelerations at which no axis exceeds its own limits.
+#include <limits>
 #include <span>
 
 #include "nck/core/slope.hpp"
@@ -63,7 +64,10 @@ RampTimes longest(const RampTimes& a, const RampTimes& b) noexcept;
 // the ramp times and tr_geom), so that with the path's jerk (at most
 // a/(sqrt 2 tr)) no plane axis exceeds a/tr. The ramp times are the
 // longest of the moving axes'.
+// v_cap_mm_s (a cubic span only): the span never runs faster, so its
+// tangential budget under the jerk-limited slopes is the one at that speed.
 PathLimits path_limits(const Segment& seg, std::span<const AxisDynamics> axes,
-                       SlopeProfile slope = SlopeProfile::step) noexcept;
+                       SlopeProfile slope = SlopeProfile::step,
+                       double v_cap_mm_s = std::numeric_limits<double>::infinity()) noexcept;
 
 }  // namespace nck::motion

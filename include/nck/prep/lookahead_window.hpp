@@ -120,7 +120,7 @@ class LookAheadWindow {
   bool blend(std::uint64_t prev, PlannedCommand& next);
   // The vertex between prev and next smoothed (motion/chord_smoothing.hpp):
   // both become cubic spans; false (nothing changed) where it cannot be
-  // smoothed or would not pass faster than the kink.
+  // smoothed or would pass slower than the kink.
   bool smooth(std::uint64_t prev, PlannedCommand& next, const BlendAxes& ax, const BlendDynamics& dyn);
   // smooth() narrowed the next motion's limits: its chord's, for store().
   std::optional<motion::PathLimits> next_chord_limits_;
