@@ -41,6 +41,8 @@ bool Cycle::build(Link& link, std::string& error) {
     error = fmt::format("{}: {}", static_cast<std::uint32_t>(ErrorId::HalMachineInvalid), ok.error().message);
     return false;
   }
+  // A machine switched on is not homed (P-AXIS-00277; G74 homes its axes).
+  for (std::size_t ch = 0; ch < machine_->channels.size(); ++ch) kernel_.set_homed_axes(ch, 0u);
   in_ = std::make_unique<kernel::TickInput>();
   out_ = std::make_unique<kernel::TickOutput>();
   for (std::size_t ch = 0; ch < machine_->channels.size(); ++ch) {
