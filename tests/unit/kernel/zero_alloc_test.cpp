@@ -171,7 +171,7 @@ TEST(ZeroAllocation, WholeExamplesRunThroughTickWithoutHeap) {
   for (const Example& ex : examples) {
     g_allocations = 0;
     const std::uint64_t cycles = run_counting(ex);
-    EXPECT_GT(cycles, 1000u) << ex.machine;
+    EXPECT_GT(cycles, ex.errors_expected ? 0u : 1000u) << ex.machine;  // a refusal ends at once
     EXPECT_EQ(g_allocations.load(), 0u) << ex.machine;
   }
 }
