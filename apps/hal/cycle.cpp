@@ -208,6 +208,7 @@ void Cycle::write_pins() noexcept {
     **p.pos_cmd = cmd;
     **p.following_error = cmd - **p.pos_fb;
     **p.enable = on;
+    **p.homed = (out_->channels[a.channel].homed_axes >> a.axis & 1u) != 0;
     if (a.drive < 0 || i >= cia_pins.size()) continue;
     const drives::DriveCommand& d = out_->drives[static_cast<std::size_t>(a.drive)];
     const CiaPins& c = cia_pins[i];
