@@ -33,6 +33,8 @@
   const command = (name, channel, fields) => request("POST", "/api/v1/command", { command: name, channel, ...fields });
   // The machine's inputs: POST /api/v1/estop or /api/v1/machine_on with {on}.
   const machineInput = (name, on) => request("POST", "/api/v1/" + name, { on });
+  // Homing (G74 through MDI): POST /api/v1/home; axes omitted = all path axes.
+  const home = (channel, axes) => request("POST", "/api/v1/home", axes ? { channel, axes } : { channel });
   const upload = (name, text) => request("POST", "/api/v1/upload?name=" + encodeURIComponent(name), text);
 
   // Calls fn at most once per `ms` with the latest arguments; the last call
@@ -75,5 +77,5 @@
     return { source: es, stats };
   }
 
-  window.NckApi = { ApiError, request, get, command, machineInput, upload, throttle, stream };
+  window.NckApi = { ApiError, request, get, command, machineInput, home, upload, throttle, stream };
 })();

@@ -50,8 +50,11 @@
       const rows = this.axes.map((a) => {
         const name = el("th", {}, a), mcs = el("td", { class: "num" }), pcs = el("td", { class: "num" });
         const dtg = el("td", { class: "num dtg" });
-        this.droCells[a] = { name, mcs, pcs, dtg };
-        return el("tr", { "data-axis": a }, name, pcs, mcs, dtg);
+        // homing (P-AXIS-00277): a "not homed" mark and the axis's Home button
+        const homed = el("span", { class: "not-homed", title: "not homed: a programmed motion of this axis is refused (930740) until it is homed", hidden: true }, "not homed");
+        const home = button("Home", `home ${a} (G74 ${a}1)`, () => this.home([a]), "home");
+        this.droCells[a] = { name, mcs, pcs, dtg, homed };
+        return el("tr", { "data-axis": a }, name, pcs, mcs, dtg, el("td", { class: "homing" }, homed, home));
       });
       this.velEl = el("td", { class: "num", colspan: 3 });
       this.modalEl = el("td", { class: "modal", colspan: 3 });
@@ -59,7 +62,18 @@
         el("tr", {}, el("th", {}), el("th", { class: "num" }, "PCS"), el("th", { class: "num" }, "MCS"),
           el("th", { class: "num" }, "to go")), ...rows,
         el("tr", { class: "small" }, el("th", { title: "path velocity / programmed feed" }, "F act/prog"), this.velEl),
-        el("tr", { class: "small" }, el("th", {}, "modal"), this.modalEl));
+        el("tr", { class: "small" }, el("th", {}, "modal"), this.modalEl),
+        el("tr", { class: "small" }, el("th", {}), el("td", { colspan: 4 },
+          button("Home all", "home every path axis of this channel (G74, all together)", () => this.home(null), "home-all"))));
+    }
+
+    // Homing through the server (G74 by MDI); a refusal (940340 in automatic
+    // mode, 940341 an unknown axis) goes to the errors list with its ID.
+    async home(axes) {
+      try {
+        await api.home(this.n, axes);
+        return true;
+      } catch (e) { this.report(e, `channel ${this.n}: home ${axes ? axes.join(" ") : "all"}`); return false; }
     }
 
     // One DRO row: a face-turning axis in diameter display shows ⌀ and twice its radius.
@@ -81,6 +95,8 @@
       cells.pcs.textContent = fixed(diameter ? axis.pcs_diameter : c.pcs[a], 3);
       cells.mcs.textContent = fixed(c.mcs[a], 3);
       cells.dtg.textContent = fixed(diameter ? 2 * c.dtg[a] : c.dtg[a], 3);
+      cells.homed.hidden = axis.homed !== false;  // shown only where the server says "not homed"
+      cells.homed.parentElement.parentElement.dataset.homed = axis.homed === false ? "no" : "yes";
     }
 
     // G codes in force, then D (the tool offset).

@@ -41,6 +41,8 @@ bool Cycle::build(Link& link, std::string& error) {
     error = fmt::format("{}: {}", static_cast<std::uint32_t>(ErrorId::HalMachineInvalid), ok.error().message);
     return false;
   }
+  // A machine switched on is not homed (P-AXIS-00277; G74 homes its axes).
+  for (std::size_t ch = 0; ch < machine_->channels.size(); ++ch) kernel_.set_homed_axes(ch, 0u);
   in_ = std::make_unique<kernel::TickInput>();
   out_ = std::make_unique<kernel::TickOutput>();
   for (std::size_t ch = 0; ch < machine_->channels.size(); ++ch) {
@@ -206,6 +208,7 @@ void Cycle::write_pins() noexcept {
     **p.pos_cmd = cmd;
     **p.following_error = cmd - **p.pos_fb;
     **p.enable = on;
+    **p.homed = (out_->channels[a.channel].homed_axes >> a.axis & 1u) != 0;
     if (a.drive < 0 || i >= cia_pins.size()) continue;
     const drives::DriveCommand& d = out_->drives[static_cast<std::size_t>(a.drive)];
     const CiaPins& c = cia_pins[i];

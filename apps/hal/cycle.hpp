@@ -28,6 +28,7 @@ using PinS32 = volatile std::int32_t**;
 struct AxisPins {  // nck.axis.<name>.*
   PinFloat pos_cmd, pos_fb, following_error;
   PinBit enable, amp_fault, home_sw, limit_pos, limit_neg;
+  PinBit homed;  // out: the kernel's homed state of the axis (P-AXIS-00277, G74)
 };
 // An axis whose drive is CiA 402 (kenngr.antr_typ 8): its words, beside
 // pos-cmd (target position) and pos-fb (actual position).

@@ -75,6 +75,7 @@ int make_pins(nck::hal::Cycle& c) {
     r |= bit(HAL_IN, p.home_sw, n + ".home-sw-in");
     r |= bit(HAL_IN, p.limit_pos, n + ".pos-lim-sw-in");
     r |= bit(HAL_IN, p.limit_neg, n + ".neg-lim-sw-in");
+    r |= bit(HAL_OUT, p.homed, n + ".homed");
     c.axis_pins.push_back(p);
     nck::hal::CiaPins cia{};
     if (a.drive >= 0) {  // a CiA 402 drive: its words

@@ -239,6 +239,9 @@ int main_cli(int argc, char** argv) {
   runc->add_flag("--realtime", run.realtime, "pace the cycles to the wall clock");
   runc->add_flag("--prep-thread", run.prep_thread,
                  "decode and plan in a thread of their own (the same outputs while preparation keeps up)");
+  runc->add_flag("--unhomed", run.unhomed,
+                 "start with no axis homed: a programmed motion of an axis with kenngr.prog_move_requires_homing "
+                 "is refused (930740) until G74 homes it");
   runc->add_option("--clamp-index", run.clamp_index, "clamp-offset group pzv_grp[N] at program start")
       ->check(number_at_least(0, true));
   runc->add_flag("!--no-progress", run.progress, "no progress display on the terminal");

@@ -204,6 +204,7 @@ void read_head(const ParamList& l, AxisConfig& a) {
   a.speed_reached_tolerance_permille = l.num("kenngr.vb_prozent", a.speed_reached_tolerance_permille);
   a.homing_without_cam = l.flag("kenngr.ref_ohne_nocken", a.homing_without_cam);
   a.homing_without_reversal = l.flag("kenngr.ref_ohne_rev", a.homing_without_reversal);
+  a.prog_move_requires_homing = l.flag("kenngr.prog_move_requires_homing", a.prog_move_requires_homing);
   a.no_stop_by_channel_reset = l.flag("kenngr.no_stop_by_channel_reset", a.no_stop_by_channel_reset);
   a.cax_gear_stage = l.u32("kenngr.def_cax_gear_st", a.cax_gear_stage);
   a.diameter_prog_abs = l.flag("kenngr.durchm_prog_abs", a.diameter_prog_abs);

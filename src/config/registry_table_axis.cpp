@@ -32,6 +32,7 @@ constexpr ParamInfo kTable[] = {
     {"kenngr.vb_prozent", "P-AXIS-00217", A, T::integer, 0, 1000, 100, 1, "0.1 %", "0.1 %", "Band around the commanded speed for 'speed reached'."},
     {"kenngr.ref_ohne_nocken", "P-AXIS-00156", A, T::boolean, 0, 1, 0, 1, "—", "—", "Homing without cam (requires ref_ohne_rev 1)."},
     {"kenngr.ref_ohne_rev", "P-AXIS-00157", A, T::boolean, 0, 1, 0, 1, "—", "—", "Homing without direction reversal."},
+    {"kenngr.prog_move_requires_homing", "P-AXIS-00277", A, T::boolean, 0, 1, 0, 1, "—", "—", "1: a programmed motion (program or MDI) of this path axis needs it homed first (G74); unhomed it is refused with 930740. Jogging stays allowed."},
     {"kenngr.no_stop_by_channel_reset", "P-AXIS-00455", A, T::boolean, 0, 1, 0, 1, "—", "—", "A rotating spindle keeps running through a channel reset."},
     {"kenngr.def_cax_gear_st", "P-AXIS-00052", A, T::integer, 1, 6, 1, 1, "—", "—", "Gear stage used when the spindle becomes a C axis."},
     {"kenngr.durchm_prog_abs", "P-AXIS-00058", A, T::boolean, 0, 1, 0, 1, "—", "—", "Diameter programming for G90 values of this face axis."},

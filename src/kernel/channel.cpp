@@ -108,6 +108,8 @@ void Channel::write_output(ChannelOutput& out, const ChannelContext& ctx) const 
   const motion::AxisVector& end = m ? path_.segment().end_point() : pos;
   for (std::size_t j = 0; j < n_axes_; ++j) out.axis_dtg[j] = end[j] - pos[j];
   out.wait_reason = wait_reason_;
+  out.homed_axes = homing_.homed();
+  out.homing_required = homing_.required();
 }
 
 motion::AxisVector Channel::machine_position() const noexcept {
@@ -173,6 +175,7 @@ struct BlockAttachments {
   const FeedLink* feed = nullptr;
   const CssLink* css = nullptr;
   const ManualChange* manual = nullptr;
+  const HomeAxes* home = nullptr;
 };
 
 // Sorts a block's attachments: what is reported goes out as an event (after
@@ -196,6 +199,7 @@ struct AttachmentSorter {
   void operator()(const FeedLink& x) const noexcept { parts.feed = &x; }
   void operator()(const CssLink& x) const noexcept { parts.css = &x; }
   void operator()(const ManualChange& x) const noexcept { parts.manual = &x; }
+  void operator()(const HomeAxes& x) const noexcept { parts.home = &x; }
   template <class A>
     requires ChannelTechnologies::takes<A>
   void operator()(const A& x) const noexcept { technologies.note(x); }
@@ -220,6 +224,11 @@ void Channel::start(Cycle& cy) noexcept {
   path_.start_block(current_, parts.start, parts.map);
   hold_.start_block(current_, cy.in.stop_at);
   if (const Error* e = current_.as<Error>()) {
+    raise(e->id, e->message, cy);
+    return;
+  }
+  // P-AXIS-00277: an unhomed axis refuses the motion before it moves.
+  if (const auto e = homing_.start(current_, parts.home, path_.segment(), parts.map ? &parts.map->map : nullptr)) {
     raise(e->id, e->message, cy);
     return;
   }
@@ -332,6 +341,7 @@ void Channel::end_block(Cycle& cy) noexcept {
   const End* end = current_.as<End>();
   if (end && technologies_.wind_down()) return;
   active_ = false;
+  homing_.end_block();  // a G74 has reached its home position
   if (current_.mdi == Mdi::end) {
     finish_mdi(cy);
   } else if (current_.restart != Restart::none) {
@@ -462,6 +472,7 @@ void Channel::finish_mdi(Cycle& cy) noexcept {
 void Channel::fail_mdi(Cycle& cy) noexcept {
   active_ = false;
   path_.reset();
+  homing_.reset();
   hold_.reset();
   sync_.clear();
   dropping_mdi_ = true;
@@ -538,6 +549,7 @@ void Channel::end_program(EndReason reason, Cycle& cy) noexcept {
   status_ = ok ? ChannelStatus::ended : ChannelStatus::aborted;
   active_ = false;
   path_.reset();
+  homing_.reset();
   if (!ok) {  // preparation may be ahead: it learns where the path stands (MDI plans from there)
     Feedback f;
     f.kind = FeedbackKind::stopped;

@@ -33,6 +33,7 @@
 #include "units/cycle.hpp"
 #include "units/dwell_unit.hpp"
 #include "units/handwheel_unit.hpp"
+#include "units/homing_unit.hpp"
 #include "units/hold_unit.hpp"
 #include "units/jog_unit.hpp"
 #include "units/measuring_unit.hpp"
@@ -98,6 +99,9 @@ class Channel {
   // setup: the path's deceleration under E-stop (the smallest of its axes'
   // P-AXIS-00003, a_max where 0), mm/s^2.
   void set_emergency_decel(double a_mm_s2) noexcept { emergency_a_mm_s2_ = a_mm_s2; }
+  // Homing (P-AXIS-00277): the axes that require it, the axes homed.
+  HomingUnit& homing() noexcept { return homing_; }
+  const HomingUnit& homing() const noexcept { return homing_; }
   // An E-stop came and this channel has not been reset since its release.
   bool estop_latched() const noexcept { return estop_latched_; }
 
@@ -202,6 +206,7 @@ class Channel {
   DwellUnit dwell_;            // G4
   HoldUnit hold_;              // single step, stop at
   JogUnit jog_;                // manual mode: jog
+  HomingUnit homing_;          // homed axes, P-AXIS-00277's refusal, G74 marks
 };
 
 }  // namespace nck::kernel

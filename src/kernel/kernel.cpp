@@ -14,7 +14,7 @@ namespace nck::kernel {
 // An embedder keeps one of each outside the real-time thread's stack
 // (docs/embedding.md gives these sizes).
 static_assert(sizeof(TickInput) == 24384, "docs/embedding.md gives TickInput's size");
-static_assert(sizeof(TickOutput) == 35624, "docs/embedding.md gives TickOutput's size");
+static_assert(sizeof(TickOutput) == 35720, "docs/embedding.md gives TickOutput's size");
 
 namespace {
 
@@ -118,8 +118,12 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
     channels_.back()->set_rapid_override_mode(ch.rapid_override_mode);
     channels_.back()->setup_technologies(ch, cycle_s_);
     channels_.back()->set_emergency_decel(emergency_decel(*machine_, ch));
-    for (std::size_t j = 0; j < ch.axes.size() && j < kMaxAxes; ++j)
+    for (std::size_t j = 0; j < ch.axes.size() && j < kMaxAxes; ++j) {
       channels_.back()->set_jog_axis(j, jog_settings(*machine_, ch.axes[j]));
+      const int a = ch.axes[j].axis_index;
+      if (a >= 0 && machine_->axes[static_cast<std::size_t>(a)].prog_move_requires_homing)
+        channels_.back()->homing().require(j, std::nullopt);
+    }
     if (ch.c_axis >= 0)
       for (std::size_t k = 0; k < ch.spindles.size(); ++k)
         if (ch.spindles[k].axis_index == ch.axes[static_cast<std::size_t>(ch.c_axis)].axis_index)
@@ -174,13 +178,29 @@ void Kernel::start_channel_at(std::size_t ch, const motion::AxisVector& path_mcs
   channels_.at(ch)->start_at(path_mcs);
 }
 
+void Kernel::set_homed_axes(std::size_t ch, std::uint32_t mask) { channels_.at(ch)->homing().set_homed(mask); }
+
+std::uint32_t Kernel::homed_axes(std::size_t ch) const noexcept {
+  return ch < channels_.size() ? channels_[ch]->homing().homed() : 0u;
+}
+
+void Kernel::carry_homed_axes(std::size_t ch, std::uint32_t mask) noexcept {
+  if (ch < channels_.size()) channels_[ch]->homing().set_homed(mask);
+}
+
+void Kernel::name_unhomed_axis(std::size_t ch, std::size_t j, std::uint32_t message) {
+  HomingUnit& h = channels_.at(ch)->homing();
+  if (j < kMaxAxes && (h.required() >> j & 1u)) h.require(j, message);
+}
+
 ChannelState Kernel::channel_state(std::size_t ch) const {
   const Channel& c = *channels_.at(ch);
   const DistUnit& dist = c.technologies().get<DistUnit>();
   return ChannelState{c.position(),      c.manual_offsets(),
                       c.machine_position(), c.status(),
                       c.program_state(), c.at(),
-                      dist.state(), dist.offset_mm()};
+                      dist.state(), dist.offset_mm(),
+                      c.homing().homed(), c.homing().required()};
 }
 
 void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {

@@ -81,9 +81,13 @@ nlohmann::json final_json(const config::Machine& m, const sim::DryRun& run, doub
   json channels = json::array();
   for (std::size_t c = 0; c < m.channels.size() && c < k.channel_count(); ++c) {
     const sim::ChannelSnapshot s = run.snapshot(c);
+    const kernel::ChannelState homing = k.channel_state(c);
     json axes = json::object();
     for (std::size_t j = 0; j < m.channels[c].axes.size(); ++j) {
       json axis{{"mcs", s.axis_mcs[j]}, {"pcs", s.axis_pcs[j]}};
+      // Homing only where the machine data require it (P-AXIS-00277): other
+      // machines' final states stay as they were.
+      if (homing.homing_required != 0) axis["homed"] = (homing.homed_axes >> j & 1u) != 0;
       // A face-turning axis also as the diameter G51 programs (the trace stays radius).
       const int list = m.channels[c].axes[j].axis_index;
       if (list >= 0 && m.axes[static_cast<std::size_t>(list)].is_face_turning())

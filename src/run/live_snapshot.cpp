@@ -20,6 +20,8 @@ void fill_snapshot(const sim::DryRun& run, const kernel::TickOutput& out, LiveSn
     c.program_state = k.program_state(ch);
     c.cause = o.cause;
     c.wait_reason = o.wait_reason;
+    c.homed_axes = o.homed_axes;
+    c.homing_required = o.homing_required;
     c.at = k.channel_state(ch).at;
     c.hli = run.machine().hli().channel[ch];
   }

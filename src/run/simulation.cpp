@@ -184,6 +184,7 @@ std::expected<std::unique_ptr<Simulation>, Diagnostics> Simulation::create(confi
   const bool diameter_dro = std::ranges::any_of(s->machine_->channels, [](const auto& c) { return c.display_diameter_pos; });
   options.record_modal = opt.operator_present || (!opt.report.empty() && diameter_dro);
   options.prep_thread = opt.prep_thread;
+  if (opt.unhomed) options.homed_axes.fill(0u);  // without it the operator homed the machine
   options.stop = s->stop_;
   if (*search) {
     options.search = (*search)->mark;

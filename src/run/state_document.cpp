@@ -49,7 +49,9 @@ json channel_json(const LiveChannel& c, const config::Machine& m, const sim::Dry
     mcs[name] = shown(c.axis_mcs[j]);
     pcs[name] = shown(place.pcs[j]);
     dtg[name] = shown(c.axis_dtg[j]);
-    axes[name] = {{"mcs", mcs[name]}, {"pcs", pcs[name]}, {"dtg", dtg[name]}};
+    axes[name] = {{"mcs", mcs[name]}, {"pcs", pcs[name]}, {"dtg", dtg[name]},
+                  {"homed", (c.homed_axes >> j & 1u) != 0},
+                  {"requires_homing", (c.homing_required >> j & 1u) != 0}};
     // a face-turning axis also as the diameter G51 programs (as --final writes it)
     if (face_turning(m, cfg.axes[j])) axes[name]["pcs_diameter"] = shown(2 * place.pcs[j]);
   }

@@ -101,6 +101,9 @@ void LiveKernel::take_incoming() noexcept {
   sim::DryRun* next = incoming_.load(std::memory_order_acquire);
   if (!next || retired_.load(std::memory_order_acquire)) return;  // the last one not yet collected
   incoming_.store(nullptr, std::memory_order_release);
+  // The axes stay homed across runs (a run staged before a G74 was made
+  // with the homed state of its time).
+  next->carry_homing(*current_.load(std::memory_order_relaxed));
   retired_.store(current_.exchange(next, std::memory_order_acq_rel), std::memory_order_release);
   generation_.fetch_add(1, std::memory_order_acq_rel);
 }

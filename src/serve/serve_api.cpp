@@ -92,6 +92,7 @@ sim::DryRunOptions served_run_options(const ProgramFolders& folders) {
   o.record_modal = true;
   o.prep_thread = true;
   o.allowed_roots = folders.roots();
+  o.homed_axes.fill(0u);  // a live machine starts unhomed; the server carries what G74 homed (LiveKernel)
   return o;
 }
 
@@ -113,6 +114,8 @@ void ServeApi::seed_state() {
     last_.channels[ch].axis_mcs = st.axis_mcs;
     last_.channels[ch].program_state = st.program_state;
     last_.channels[ch].at = st.at;
+    last_.channels[ch].homed_axes = st.homed_axes;
+    last_.channels[ch].homing_required = st.homing_required;
     last_.channels[ch].hli = serving_->machine().hli().channel[ch];
   }
   for (std::size_t i = 0; i < last_.spindle_count; ++i)
@@ -141,6 +144,7 @@ HttpReply ServeApi::handle(const HttpRequest& r) {
     if (path == "/api/v1/command") return command(r.body);
     if (path == "/api/v1/upload") return upload(r.target, r.body);
     if (path == "/api/v1/estop" || path == "/api/v1/machine_on") return machine_input(path, r.body);
+    if (path == "/api/v1/home") return home(r.body);
   }
   // An old or newer client: say which version this server speaks.
   if (path.starts_with("/api/") && !path.starts_with("/api/v1/"))
@@ -264,6 +268,8 @@ std::expected<std::unique_ptr<sim::DryRun>, Diagnostic> ServeApi::make_run(
   // does not jump, and a block search returns to the contour from there.
   for (std::size_t ch = 0; ch < last_.channel_count && ch < o.start_mcs.size(); ++ch)
     o.start_mcs[ch] = last_.channels[ch].axis_mcs;
+  for (std::size_t ch = 0; ch < last_.channel_count && ch < o.homed_axes.size(); ++ch)
+    o.homed_axes[ch] = last_.channels[ch].homed_axes;  // LiveKernel hands on the newest at the swap
   auto run = sim::DryRun::create(machine_, with_programs ? programs_ : std::vector<std::filesystem::path>(programs_.size()), o);
   if (!run) return std::unexpected(run.error());
   auto live = std::make_unique<sim::DryRun>(std::move(*run));

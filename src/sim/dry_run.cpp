@@ -6,6 +6,21 @@
 
 namespace nck::sim {
 
+// The texts that name the axis a 930740 refusal concerns, for the axes
+// that require homing (P-AXIS-00277).
+void DryRun::name_unhomed_axes(DryRun& run, std::size_t ch) {
+  const config::ChannelConfig& c = run.machine_->channels[ch];
+  for (std::size_t j = 0; j < c.axes.size() && j < kMaxAxes; ++j) {
+    const int a = c.axes[j].axis_index;
+    if (a < 0 || !run.machine_->axes[static_cast<std::size_t>(a)].prog_move_requires_homing) continue;
+    const std::uint32_t m = run.store_->add_message(fmt::format(
+        "axis {} is not homed and its machine data require homing before a programmed motion "
+        "(kenngr.prog_move_requires_homing, P-AXIS-00277): home it with G74 (or Home in the HMI) first",
+        c.axes[j].name));
+    run.kernel_->name_unhomed_axis(ch, j, m);
+  }
+}
+
 std::expected<DryRun, Diagnostic> DryRun::create(const config::Machine& m,
                                                  const std::vector<std::filesystem::path>& programs,
                                                  const DryRunOptions& options) {
@@ -32,10 +47,17 @@ std::expected<DryRun, Diagnostic> DryRun::create(const config::Machine& m,
       run.kernel_->start_channel_at(ch, *at);
       run.preps_[ch].start_at(*at);
     }
+    if (const auto& homed = options.homed_axes[ch]) run.kernel_->set_homed_axes(ch, *homed);
+    name_unhomed_axes(run, ch);
     run.sim_->start_with_skip_mask(ch, options.skip_masks[ch]);
     if (options.skip_masks[ch] != 0) run.preps_[ch].set_skip_mask(options.skip_masks[ch]);
   }
   return run;
+}
+
+void DryRun::carry_homing(const DryRun& before) noexcept {
+  const std::size_t n = std::min(kernel_->channel_count(), before.kernel_->channel_count());
+  for (std::size_t ch = 0; ch < n; ++ch) kernel_->carry_homed_axes(ch, before.kernel_->homed_axes(ch));
 }
 
 DryRun::~DryRun() { stop_preparation(); }

@@ -117,6 +117,41 @@ async function checkDroDetails(h) {
   expect(/^G1 G17 G90 G71 G5\d .*G40 G94 .*D\d+$/.test(modal), `DRO: the modal state "${modal}"`);
 }
 
+// Homing (issue 48 item 9) on tests/data/machine_homing: the DRO marks
+// the axes "not homed"; cycle start moving unhomed X lists 930740 with its
+// line; "Home all" clears the marks; then cycle start runs to the end.
+async function checkHoming(browser) {
+  const server = startServer(path.resolve(args.nck), src,
+    ["tests/data/machine_homing", "tests/data/machine_homing/move.nc", "--speed", "4"], 60);
+  try {
+    const url = await server.url;
+    const page = await browser.newPage({ viewport: { width: 1560, height: 1000 } });
+    await page.goto(url);
+    await page.waitForFunction(() => window.nckHmi && window.nckHmi.ready && window.nckHmi.state, null, { timeout: 10000 });
+    const ch = page.locator('section.channel[data-channel="1"]');
+    const marks = () => page.evaluate(() => [...document.querySelectorAll(".dro .not-homed")].filter((e) => !e.hidden).length);
+    const before = await marks();
+    expect(before === 3, `unhomed: the DRO marks ${before} of 3 axes "not homed"`);
+    await ch.getByRole("button", { name: "Cycle start", exact: true }).click();
+    const refused = await page.locator("#errors li").filter({ hasText: "930740" }).first().textContent({ timeout: 5000 }).catch(() => "");
+    expect(/930740/.test(refused) && /axis X/.test(refused) && /move\.nc:2/.test(refused),
+      `cycle start moving unhomed X lists 930740 with the axis and line: "${refused.slice(0, 160)}"`);
+    await ch.getByRole("button", { name: "Reset", exact: true }).click();
+    await page.waitForFunction(() => window.nckHmi.state.channels[0].state === "idle", null, { timeout: 5000 });
+    await ch.getByRole("button", { name: "Home all", exact: true }).click();
+    const cleared = await page.waitForFunction(() => [...document.querySelectorAll(".dro .not-homed")].every((e) => e.hidden) &&
+      window.nckHmi.state.channels[0].state === "idle", null, { timeout: 10000 }).then(() => true, () => false);
+    expect(cleared, "Home all clears every \"not homed\" mark");
+    await ch.getByRole("button", { name: "Cycle start", exact: true }).click();
+    const ended = await page.waitForFunction(() => window.nckHmi.state.channels[0].state === "ended", null, { timeout: 15000 })
+      .then(() => true, () => false);
+    expect(ended, "then cycle start runs the program to its end");
+    await page.close();
+  } finally {
+    await server.stop();
+  }
+}
+
 // A lathe whose channel list sets display_diameter_pos: under G51 the X row
 // reads ⌀X and twice the radius the state gives (issue 48 item 7).
 async function checkLatheDiameter(browser) {
@@ -489,6 +524,7 @@ try {
   await checkTwoChannels(browser);
   await checkCoupledAxes(browser);
   await checkLatheDiameter(browser);
+  await checkHoming(browser);
 } catch (e) {
   fail(e.stack || String(e));
 } finally {

@@ -374,6 +374,60 @@ async function preview(s) {
   check("a preview of no channel -> 400", bad.status === 400, `${bad.status} ${bad.body}`);
 }
 
+// Homing (issue 48 item 9, P-AXIS-00277) on tests/data/machine_homing (X
+// and Z require homing, Y not): the server starts unhomed, a cycle start
+// that moves X ends in 930740 at the block's line; POST /api/v1/home needs
+// the token, refuses an unknown axis (940341) and automatic mode (940340)
+// with nothing started; "Home all" homes by G74 and the program then runs.
+async function homing(s) {
+  const post = (body, opts = {}) => request(s, "POST", "/api/v1/home", { body: JSON.stringify(body), ...opts });
+  const waitFor = async (cond) => {
+    let st = await state(s);
+    for (let i = 0; i < 300 && !cond(st); ++i) { await sleep(20); st = await state(s); }
+    return st;
+  };
+  let st = await state(s);
+  const x = st.channels[0].axes.X, y = st.channels[0].axes.Y;
+  check("the live session starts unhomed; X requires homing, Y not",
+        x.homed === false && x.requires_homing === true && y.homed === false && y.requires_homing === false,
+        JSON.stringify(st.channels[0].axes));
+  await command(s, { command: "cycle_start" });
+  st = await waitFor((t) => t.channels[0].state === "error");
+  const e = st.channels[0].last_error || {};
+  check("cycle start moving unhomed X: 930740 naming X at the block's line, X not moved",
+        e.id === 930740 && e.line === 2 && /axis X/.test(e.message) && st.channels[0].mcs.X === 0, JSON.stringify(e));
+  await command(s, { command: "reset" });
+  await waitFor((t) => t.channels[0].state === "idle");
+  const noToken = await post({ channel: 1 }, { token: false });
+  const unknown = await post({ channel: 1, axes: ["X", "Q"] });
+  const extra = await post({ channel: 1, order: 2 });
+  check("POST /api/v1/home needs the token; an unknown axis -> 400 940341; an unknown field -> 400 940302",
+        noToken.status === 401 && unknown.status === 400 && errorId(unknown) === 940341 &&
+        extra.status === 400 && errorId(extra) === 940302, `${noToken.status} ${unknown.body} ${extra.body}`);
+  const up = await request(s, "POST", "/api/v1/upload?name=hold.nc", { body: "M0\nM30\n" });
+  await command(s, { command: "load", program: "hold.nc" });
+  await command(s, { command: "cycle_start" });
+  st = await waitFor((t) => t.channels[0].state === "hold");
+  const held = await post({ channel: 1, axes: ["X"] });
+  await sleep(100);
+  const after = await state(s);
+  check("home while a program holds -> 409 940340, nothing homed", up.status === 200 && st.channels[0].state === "hold" &&
+        held.status === 409 && errorId(held) === 940340 && after.channels[0].axes.X.homed === false, held.body);
+  await command(s, { command: "reset" });
+  await waitFor((t) => t.channels[0].state === "idle");
+  const all = await post({ channel: 1 });
+  st = await waitFor((t) => t.channels[0].state === "idle" && t.channels[0].axes.X.homed && t.channels[0].axes.Z.homed);
+  check("Home all: 200, G74 by MDI homes X, Y and Z (X to its pos_refpkt 10 mm)",
+        all.status === 200 && JSON.parse(all.body).mdi === "G74 X1 Y1 Z1" && st.channels[0].axes.Y.homed &&
+        Math.abs(st.channels[0].mcs.X - 10) < 1e-9, `${all.body} ${JSON.stringify(st.channels[0].axes)}`);
+  await command(s, { command: "load", program: "move.nc" });
+  await command(s, { command: "cycle_start" });
+  st = await waitFor((t) => t.channels[0].state === "ended" || t.channels[0].state === "error");
+  check("then cycle start runs the program to its end, homed state kept across runs",
+        st.channels[0].state === "ended" && st.channels[0].axes.X.homed && Math.abs(st.channels[0].mcs.X - 40) < 1e-9,
+        JSON.stringify(st.channels[0]).slice(0, 300));
+}
+
 async function main() {
   fs.mkdirSync(path.join(out, "programs"), { recursive: true });
   fs.mkdirSync(path.join(out, "outside"), { recursive: true });
@@ -401,6 +455,13 @@ async function main() {
     await malformed(fast);
   } finally {
     fast.proc.kill("SIGTERM");
+  }
+  const homed = await start(nck, src, ["tests/data/machine_homing/move.nc", "--rate", "100000",
+                                       "--programs", "tests/data/machine_homing"], "tests/data/machine_homing");
+  try {
+    await homing(homed);
+  } finally {
+    homed.proc.kill("SIGTERM");
   }
   const twin = await start(nck, src, ["examples/two-channel/channel1.nc", "examples/two-channel/channel2.nc", "--rate", "100000"],
                            "examples/two-channel");

@@ -158,6 +158,7 @@ struct AxisConfig {
   bool preferred_direction_positive = false;  // P-AXIS-00031 (kenngr.beweg_richt), spindle
   double speed_reached_tolerance_permille = 100;  // P-AXIS-00217 (kenngr.vb_prozent), spindle
   bool homing_without_cam = false, homing_without_reversal = false;  // kenngr.ref_ohne_nocken/_rev
+  bool prog_move_requires_homing = false;  // P-AXIS-00277: programmed motion refused until homed (G74)
   bool no_stop_by_channel_reset = false;  // P-AXIS-00455
   DriveMode drive_mode = DriveMode::drive_default;  // antr.operation_mode
   // Speed command scaling of a speed-controlled spindle (antr.v_reso_num,

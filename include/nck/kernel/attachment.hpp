@@ -70,6 +70,12 @@ struct CaxChange {
   std::int8_t axis = 0;
 };
 
+// G74: the command homes these path axes (bit j = axis j); the kernel
+// marks them homed when the command ends at their home position.
+struct HomeAxes {
+  std::uint32_t mask = 0;
+};
+
 using distctrl::DistChange;
 using frames::OffsetEvent;
 using trc::TrcChange;
@@ -79,7 +85,7 @@ using trc::TrcChange;
 // as events first (after the block event), then the units' switches, then
 // the outputs and spindle actions in the order they were planned.
 using Attachment = std::variant<Warning, OffsetEvent, TrcChange, CaxChange, LinkCommand, DistChange, FeedLink,
-                                CssLink, ManualChange, Output, SpindleAction, StartPoint, ProgramMap>;
+                                CssLink, ManualChange, Output, SpindleAction, StartPoint, ProgramMap, HomeAxes>;
 
 // Attachments cross the real-time queue, maybe in shared memory.
 static_assert(std::is_trivially_copyable_v<Attachment>);

@@ -40,6 +40,8 @@ struct ChannelState {
   BlockRef at{};  // the block the channel stands at
   distctrl::State dist_state = distctrl::State::inactive;
   double dist_offset_mm = 0;    // distance-control offset in axis_mcs
+  std::uint32_t homed_axes = 0;        // bit j: path axis j is homed
+  std::uint32_t homing_required = 0;   // bit j: P-AXIS-00277 set for path axis j
 };
 
 class Kernel {
@@ -76,6 +78,17 @@ class Kernel {
   ChannelState channel_state(std::size_t ch) const;
   // setup: channel ch's path stands at path_mcs before its program starts.
   void start_channel_at(std::size_t ch, const motion::AxisVector& path_mcs);
+  // setup: which of channel ch's path axes are homed (bit j = axis j;
+  // without a call: all, as the dry run assumes).
+  void set_homed_axes(std::size_t ch, std::uint32_t mask);
+  // Channel ch's homed axes (bit j = path axis j; 0 for no such channel). rt
+  std::uint32_t homed_axes(std::size_t ch) const noexcept;
+  // Between runs of a live session, before this kernel's first tick: as
+  // set_homed_axes, without throwing (no such channel: nothing). rt
+  void carry_homed_axes(std::size_t ch, std::uint32_t mask) noexcept;
+  // setup: the message (Kernel::message index) naming axis j of channel ch
+  // when its unhomed motion is refused (930740); without it, the ID's text.
+  void name_unhomed_axis(std::size_t ch, std::size_t j, std::uint32_t message);
   // The coupling groups enabled in channel ch: their plan-store payloads.
   std::vector<std::uint32_t> active_links(std::size_t ch) const;
 

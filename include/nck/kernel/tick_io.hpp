@@ -171,6 +171,8 @@ struct ChannelOutput {
   // spindle speed x mm/rev (G96: the speed its law sets), G0 its rapid limit; 0 without motion.
   double feed_mm_s = 0;
   WaitReason wait_reason = WaitReason::plc_ack;  // cause == wait: for what
+  // Homing (P-AXIS-00277), bit j = path axis j: homed, and requiring homing.
+  std::uint32_t homed_axes = 0, homing_required = 0;
 };
 
 struct SpindleOutput {

@@ -31,6 +31,7 @@ struct LiveChannel {
   kernel::WaitReason wait_reason = kernel::WaitReason::plc_ack;
   BlockRef at{};  // the block the channel stands at
   plc::ChannelControl hli{};  // the operator's controls as the HLI holds them
+  std::uint32_t homed_axes = 0, homing_required = 0;  // bit j: path axis j (P-AXIS-00277)
 };
 
 // Cycle lateness: how long after its deadline each cycle started.

@@ -36,6 +36,7 @@ struct RunOptions {
   std::uint32_t clamp_index = 0;  // clamp-offset group (pzv_grp) at program start
   bool realtime = false;
   bool prep_thread = false;  // preparation in a thread of its own
+  bool unhomed = false;      // --unhomed: no axis homed at start (P-AXIS-00277)
   bool progress = true;       // on a terminal only
   std::vector<std::string> cycles;  // --cycles DIR: searched after startup.lis cycle_path[i]
   bool strict_keys = false;         // --strict: every unknown list key is an error (910032)

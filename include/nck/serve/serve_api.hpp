@@ -56,6 +56,8 @@ class ServeApi : public ApiHandler {
   // E-stop and machine on (machine_input.cpp).
   HttpReply machine_input(std::string_view path, std::string_view body);
   std::optional<HttpReply> refused_by_machine(sim::ActionKind kind, std::size_t ch) const;
+  // POST /api/v1/home: G74 for the named axes through MDI (home_api.cpp).
+  HttpReply home(std::string_view body);
   void note_machine_input(const sim::ScenarioAction& a);
   HttpReply program_text(std::string_view target) const;
   HttpReply preview(std::string_view target);

@@ -51,6 +51,10 @@ struct DryRunOptions {
   // Where each channel's axes stand at program start (nck serve: where the
   // last run, a jog or MDI left them); none: the machine's start position.
   std::array<std::optional<motion::AxisVector>, config::kMaxChannels> start_mcs{};
+  // Which path axes of each channel are homed at program start (bit j =
+  // axis j); none: all, the operator homed the machine (nck run without
+  // --unhomed). nck serve starts with none homed and keeps what G74 homed.
+  std::array<std::optional<std::uint32_t>, config::kMaxChannels> homed_axes{};
 };
 
 // What a channel knows about its programmed state, for --final.
@@ -132,6 +136,9 @@ class DryRun {
   // no automatic cycle start, no scenario line still to come.
   bool held_for_good() const noexcept;
   double time_s() const noexcept { return kernel_->time_s(); }
+  // Between runs of a live session (at a cycle boundary, before this run's
+  // first cycle): each channel's axes homed as in run `before`. rt
+  void carry_homing(const DryRun& before) noexcept;
 
   std::size_t channel_count() const { return preps_.size(); }
   const prep::ChannelPrep& prep(std::size_t ch) const { return preps_.at(ch); }
@@ -167,6 +174,7 @@ class DryRun {
   };
   std::vector<ChannelQueues> queues_;
   void prepare_now();
+  static void name_unhomed_axes(DryRun& run, std::size_t ch);
   // Preparation has nothing to do now: no MDI line, no skip levels to hand
   // over, and in each channel nothing changed since a call that did nothing,
   // or its queue still holds more than the kernel looks ahead (as the

@@ -152,8 +152,13 @@ std::expected<PlannedBlock, Diagnostic> plan_homing(const nc::Block& b, const Pl
   PlannedCommand c = first;
   for (double g : groups) {
     motion::AxisVector target = mcs;
+    kernel::HomeAxes homes;  // the kernel marks these homed at the group's end
     for (std::size_t j = 0; j < ctx.n_axes; ++j)
-      if (b.axes[j] && order[j] == g) target[j] = ctx.axes.home_pos_mm(j);
+      if (b.axes[j] && order[j] == g) {
+        target[j] = ctx.axes.home_pos_mm(j);
+        homes.mask |= 1u << j;
+      }
+    c.attach(homes);
     auto seg = motion::make_line(mcs, target, ctx.n_axes);
     if (seg && seg->length() > 0) {
       c.kind = CommandKind::motion;

@@ -68,7 +68,7 @@ void wire(Cycle& c, Cells& k) {
   c.machine_pins = {k.bit(), k.bit(), k.bit(), k.bit(), k.u32(), k.u32(), k.s32(), k.flt()};
   **c.machine_pins.machine_on = true;
   for (std::size_t i = 0; i < c.axes().size(); ++i)
-    c.axis_pins.push_back({k.flt(), k.flt(), k.flt(), k.bit(), k.bit(), k.bit(), k.bit(), k.bit()});
+    c.axis_pins.push_back({k.flt(), k.flt(), k.flt(), k.bit(), k.bit(), k.bit(), k.bit(), k.bit(), k.bit()});
   for (std::size_t ch = 0; ch < c.channel_count(); ++ch)
     c.channel_pins.push_back({k.bit(), k.bit(), k.bit(), k.bit(), k.bit(), k.bit(), k.flt(100), k.flt(100), k.flt(),
                               k.u32(), k.s32(), k.s32(), k.s32()});
@@ -148,6 +148,7 @@ TEST_F(MillInHal, ContourRunsThroughTheComponentsFunctionWithoutAllocating) {
   EXPECT_TRUE(link_->channel_done[0].load()) << "after " << n << " cycles";
   EXPECT_EQ(**cycle_.machine_pins.error_id, 0u);
   EXPECT_NEAR(**cycle_.axis_pins[2].pos_cmd, 22.0, 1e-9);  // Z, as nck run ends
+  EXPECT_FALSE(**cycle_.axis_pins[2].homed);  // nck-hal starts unhomed; contour.nc homes nothing
 }
 
 // nck.tick-time is the tick's own clocks (one reading before, one after:

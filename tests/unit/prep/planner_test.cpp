@@ -278,6 +278,14 @@ TEST(Planner, HomingSplitsIntoOrderGroups) {
   // rapid along X and Z together: length sqrt(10^2 + 30^2)
   EXPECT_NEAR(c[1].segment.length(), std::hypot(10.0, 30.0), 1e-9);
   EXPECT_EQ(c[3].kind, CommandKind::end);
+  // Each group's command says which axes it homes (the kernel marks them
+  // homed at its end, P-AXIS-00277): X and Z, then Y.
+  const auto* first = c[1].find<kernel::HomeAxes>();
+  const auto* second = c[2].find<kernel::HomeAxes>();
+  ASSERT_TRUE(first && second);
+  EXPECT_EQ(first->mask, 0b101u);
+  EXPECT_EQ(second->mask, 0b010u);
+  EXPECT_FALSE(c[0].has<kernel::HomeAxes>());
 }
 
 TEST(Planner, M2AndM30EndTheProgramWithTheirReason) {
