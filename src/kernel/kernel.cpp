@@ -13,7 +13,7 @@ namespace nck::kernel {
 
 // An embedder keeps one of each outside the real-time thread's stack
 // (docs/embedding.md gives these sizes).
-static_assert(sizeof(TickInput) == 24384, "docs/embedding.md gives TickInput's size");
+static_assert(sizeof(TickInput) == 24576, "docs/embedding.md gives TickInput's size");
 static_assert(sizeof(TickOutput) == 35624, "docs/embedding.md gives TickOutput's size");
 
 namespace {
@@ -118,8 +118,12 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
     channels_.back()->set_rapid_override_mode(ch.rapid_override_mode);
     channels_.back()->setup_technologies(ch, cycle_s_);
     channels_.back()->set_emergency_decel(emergency_decel(*machine_, ch));
-    for (std::size_t j = 0; j < ch.axes.size() && j < kMaxAxes; ++j)
+    for (std::size_t j = 0; j < ch.axes.size() && j < kMaxAxes; ++j) {
       channels_.back()->set_jog_axis(j, jog_settings(*machine_, ch.axes[j]));
+      const int a = ch.axes[j].axis_index;
+      if (a >= 0 && static_cast<std::size_t>(a) < drives::kMaxDrives)
+        channels_.back()->set_machine_axis(j, static_cast<std::int8_t>(a));
+    }
     if (ch.c_axis >= 0)
       for (std::size_t k = 0; k < ch.spindles.size(); ++k)
         if (ch.spindles[k].axis_index == ch.axes[static_cast<std::size_t>(ch.c_axis)].axis_index)
@@ -197,6 +201,8 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   ChannelContext ctx{spindles_.data(), spindles_.size(), plc_outputs_.get(), &in.spindles};
   ctx.estop = in.machine.estop;
   ctx.machine_off = !in.machine.machine_on;
+  ctx.drives_enabled = machine_out_.drives_enabled;
+  ctx.axes = &in.axes;
   if (drive_units_ && !drive_units_->empty()) {
     for (const ChannelInput& c : in.channels)
       if (c.reset) drive_units_->on_reset();

@@ -66,6 +66,7 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
   operator_actions_.clear();
 
   in.machine = machine_;
+  in.axes = axes_;
   plc_.tick(t_s);
   plc_.drain_acks(acks_);
   in.acks.clear();
@@ -181,12 +182,25 @@ void MachineSim::apply(const sim::ScenarioAction& a, kernel::TickInput& in) noex
     }
     case K::estop: machine_.estop = as<act::Estop>(a).on; return;
     case K::machine_on: machine_.machine_on = as<act::MachineOn>(a).on; return;
+    case K::amp_fault: set_axis_input(c, as<act::AmpFault>(a).axis, &kernel::AxisSwitches::amp_fault, as<act::AmpFault>(a).on); return;
+    case K::limit_switch: {
+      const act::LimitSwitch& l = as<act::LimitSwitch>(a);
+      set_axis_input(c, l.axis, l.direction < 0 ? &kernel::AxisSwitches::neg_limit : &kernel::AxisSwitches::pos_limit, l.on);
+      return;
+    }
     case K::variable: set_variable(as<act::Variable>(a), in.channels[c]); return;
     case K::spindle_cmd:
       if (!in.ext_commands.push_back(as<act::SpindleCmd>(a).cmd)) ++in.ext_commands_lost;
       return;
     default: apply_to_spindle(a); return;
   }
+}
+
+void MachineSim::set_axis_input(std::size_t ch, const act::AxisRef& axis, bool kernel::AxisSwitches::*input,
+                                bool on) noexcept {
+  if (axis.index < 0) return;
+  const std::int16_t m = cia402_.machine_axis(ch, static_cast<std::size_t>(axis.index));
+  if (m >= 0 && static_cast<std::size_t>(m) < axes_.size()) axes_[static_cast<std::size_t>(m)].*input = on;
 }
 
 void MachineSim::set_variable(const act::Variable& v, kernel::ChannelInput& in) noexcept {
