@@ -22,13 +22,14 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
   path_.begin_cycle();
   hold_.begin_cycle();
   jog_.begin_cycle();
+  const bool was_error = state_ == ProgramState::error;  // before this cycle's machine inputs
   follow_machine(cy);
   const ErrorId refused = refusal(cy);  // E-stop or machine off: nothing starts
   if (in.reset) jog_.release_all();
   if (!in.jogs.empty()) take_jogs(cy);
   if (in.cycle_start && refused != ErrorId{}) {
     cy.emit(ev::Warning{{refused, {}, {}}});
-  } else if (in.cycle_start && state_ == ProgramState::error && !in.reset) {
+  } else if (in.cycle_start && was_error && state_ == ProgramState::error && !in.reset) {
     cy.emit(ev::Warning{{ErrorId::KernelCycleStartInError, {}, {}}});  // an operator action the state does not allow
   }
   if (done() && refused != ErrorId{}) refuse_mdi(refused, cy);

@@ -21,11 +21,6 @@ nlohmann::ordered_json RunNames::spindle(std::optional<std::int8_t> index) const
   return run->kernel().spindle_name(static_cast<std::size_t>(*index));
 }
 
-nlohmann::ordered_json RunNames::axis(std::optional<std::int8_t> index) const {
-  if (!index || *index < 0 || !run || static_cast<std::size_t>(*index) >= run->config().axes.size()) return nullptr;
-  return run->config().axes[static_cast<std::size_t>(*index)].name;
-}
-
 std::string dump_json(const nlohmann::ordered_json& j, int indent) {
   // Every string put in is UTF-8 already (to_utf8); replacing is the backstop.
   return j.dump(indent, ' ', false, nlohmann::ordered_json::error_handler_t::replace);

@@ -87,7 +87,7 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
     // The simulated operator presses cycle start for holds, never in error.
     const bool in_error = hli_.channel_state[ch].program_state == static_cast<std::uint8_t>(kernel::ProgramState::error);
     // Nor while E-stop or machine off refuses starts (each press would be refused).
-    const bool refused = machine_.estop || !machine_.machine_on;
+    const bool refused = machine_.estop || !machine_.machine_on || amp_fault_;
     ci.cycle_start = c.cycle_start || (auto_cycle_start_[ch] && !in_error && !refused);
     c.cycle_start = false;
     ci.stop = c.stop;
@@ -201,6 +201,8 @@ void MachineSim::set_axis_input(std::size_t ch, const act::AxisRef& axis, bool k
   if (axis.index < 0) return;
   const std::int16_t m = cia402_.machine_axis(ch, static_cast<std::size_t>(axis.index));
   if (m >= 0 && static_cast<std::size_t>(m) < axes_.size()) axes_[static_cast<std::size_t>(m)].*input = on;
+  amp_fault_ = false;
+  for (const kernel::AxisSwitches& s : axes_) amp_fault_ = amp_fault_ || s.amp_fault;
 }
 
 void MachineSim::set_variable(const act::Variable& v, kernel::ChannelInput& in) noexcept {

@@ -93,7 +93,6 @@ void write_json(Json& j, const Diagnosis& e, const EventHead& h, const Names& na
   j["file"] = names.file(h.channel_index(), h.at.file_id);
   j["msg"] = names.text(e.id, e.message);
   if (e.spindle) j["spindle"] = names.spindle(e.spindle);
-  if (e.axis) j["axis"] = names.axis(e.axis);
 }
 
 template <class Json, class Names>

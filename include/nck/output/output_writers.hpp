@@ -27,8 +27,6 @@ struct RunNames {
   std::string file(std::size_t ch, std::uint16_t id) const;
   // A spindle's designation, or null.
   nlohmann::ordered_json spindle(std::optional<std::int8_t> index) const;
-  // A machine axis's name (axis list index), or null.
-  nlohmann::ordered_json axis(std::optional<std::int8_t> index) const;
   // A diagnostic's message: its own text (Kernel::message), or the ID's text from the table.
   std::string text(ErrorId id, std::optional<std::uint32_t> message) const;
   const prep::LinkPayload& link(std::uint32_t index) const { return run->link(index); }

@@ -125,6 +125,7 @@ class MachineSim {
   std::array<bool, config::kMaxChannels> auto_cycle_start_{};  // all on (constructor)
   kernel::MachineInput machine_{};  // E-stop and machine on, as the scenario's lines set them
   std::array<kernel::AxisSwitches, drives::kMaxDrives> axes_{};  // amplifier faults and limit switches, likewise
+  bool amp_fault_ = false;  // one of axes_ reports an amplifier fault
   std::array<kernel::StopMark, config::kMaxChannels> stop_at_{};
   std::size_t channels_ = 0;
   std::size_t spindles_ = 0;
