@@ -51,7 +51,8 @@ bool Cycle::build(Link& link, std::string& error) {
       const int index = axes[j].axis_index;
       const bool cia = index >= 0 && static_cast<std::size_t>(index) < drives::kMaxDrives &&
                        machine_->axes[static_cast<std::size_t>(index)].is_cia402();
-      axes_.push_back({ch, j, axes[j].name, cia ? index : -1});
+      const bool listed = index >= 0 && static_cast<std::size_t>(index) < drives::kMaxDrives;
+      axes_.push_back({ch, j, axes[j].name, cia ? index : -1, listed ? index : -1});
     }
   }
   for (auto& s : plc_slots_) s.handle = plc::kNoHandle;
@@ -87,6 +88,7 @@ void Cycle::run(long period_ns) noexcept {
   out_->events_dropped = 0;
   tick_timed();
   write_pins();
+  show_nc_error();
   hand_to_plc();
   for (const auto& e : out_->events) {
     if (e.channel > 0 && e.at.line > 0 && e.channel <= channel_pins.size())
@@ -147,6 +149,15 @@ void Cycle::read_pins() noexcept {
   in_->machine.machine_on = **machine_pins.machine_on;
   in_->acks.clear();
   in_->ext_commands.clear();
+  // The kernel brakes on an amplifier fault or a limit switch itself (TickInput::axes).
+  for (std::size_t i = 0; i < axes_.size() && i < axis_pins.size(); ++i) {
+    if (axes_[i].machine < 0) continue;
+    const AxisPins& p = axis_pins[i];
+    kernel::AxisSwitches& s = in_->axes[static_cast<std::size_t>(axes_[i].machine)];
+    s.amp_fault = **p.amp_fault;
+    s.pos_limit = **p.limit_pos;
+    s.neg_limit = **p.limit_neg;
+  }
   for (std::size_t ch = 0; ch < channel_count(); ++ch) {
     const ChannelPins& p = channel_pins[ch];
     kernel::ChannelInput& c = in_->channels[ch];
@@ -197,6 +208,21 @@ void Cycle::relay_commands() noexcept {
       from.pop();
     }
   }
+}
+
+// nck.error / nck.error-id while nck.cycle runs: on with the last NC error
+// (an amplifier fault, a limit switch, a drive's fault ...) as long as a
+// channel is in error, off again after its reset. A stop of nck.cycle
+// itself (fail) keeps its own ID for good.
+void Cycle::show_nc_error() noexcept {
+  for (const kernel::Event& e : out_->events)
+    if (const auto* x = e.get<kernel::ev::Error>()) nc_error_id_ = static_cast<std::uint32_t>(x->id);
+  bool in_error = false;
+  for (std::size_t ch = 0; ch < channel_count(); ++ch)
+    in_error = in_error || out_->channels[ch].program_state == kernel::ProgramState::error;
+  if (!in_error) nc_error_id_ = 0;
+  **machine_pins.error = nc_error_id_ != 0;
+  **machine_pins.error_id = nc_error_id_;
 }
 
 void Cycle::write_pins() noexcept {

@@ -75,6 +75,7 @@ struct AxisRef {  // one nck.axis.* pin group: its channel and channel axis
   std::size_t channel = 0, axis = 0;
   std::string name;
   int drive = -1;  // its machine axis list (the drive slot) when the drive is CiA 402
+  int machine = -1;  // its machine axis list (TickInput::axes: amplifier fault, limit switches)
 };
 
 class Cycle {
@@ -108,6 +109,7 @@ class Cycle {
   void relay_commands() noexcept;
   void write_pins() noexcept;
   void hand_to_plc() noexcept;
+  void show_nc_error() noexcept;
   void tick_timed() noexcept;
 
   Link* link_ = nullptr;
@@ -121,6 +123,7 @@ class Cycle {
   long long first_clocks_ = 0, first_ns_ = 0;  // at the first timed cycle
   bool watchdog_ = false;
   bool failed_ = false;
+  std::uint32_t nc_error_id_ = 0;  // the last NC error event's ID while a channel is in error
   std::array<bool, config::kMaxChannels> cycle_start_was_{};
   std::array<bool, config::kMaxChannels> reset_was_{};
   std::array<bool, kPlcSlots> ack_was_{};

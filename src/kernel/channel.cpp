@@ -22,18 +22,19 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
   path_.begin_cycle();
   hold_.begin_cycle();
   jog_.begin_cycle();
+  const bool was_error = state_ == ProgramState::error;  // before this cycle's machine inputs
   follow_machine(cy);
   const ErrorId refused = refusal(cy);  // E-stop or machine off: nothing starts
   if (in.reset) jog_.release_all();
   if (!in.jogs.empty()) take_jogs(cy);
   if (in.cycle_start && refused != ErrorId{}) {
     cy.emit(ev::Warning{{refused, {}, {}}});
-  } else if (in.cycle_start && state_ == ProgramState::error && !in.reset) {
+  } else if (in.cycle_start && was_error && state_ == ProgramState::error && !in.reset) {
     cy.emit(ev::Warning{{ErrorId::KernelCycleStartInError, {}, {}}});  // an operator action the state does not allow
   }
   if (done() && refused != ErrorId{}) refuse_mdi(refused, cy);
   if (done()) take_mdi(cy);
-  if (in.reset && state_ == ProgramState::error && !cy.machine.estop) clear_error(cy);
+  if (in.reset && state_ == ProgramState::error && !cy.machine.estop && !amp_latched_) clear_error(cy);
   cause_ = done() ? CycleCause::none : CycleCause::transition;
   if (!done()) follow_stop(cy);
   if (!done()) follow_drives(cy);
@@ -128,6 +129,7 @@ void Channel::take_jogs(Cycle& cy) noexcept {
       cy.emit(ev::Warning{{refused, {}, {}}});
       continue;
     }
+    if (refuse_jog_into_switch(r, cy)) continue;
     if (jog_allowed(r)) {
       jog_.take(r, cy);
       continue;
@@ -232,6 +234,7 @@ void Channel::start(Cycle& cy) noexcept {
     raise(e->id, e->message, cy);
     return;
   }
+  if (refuse_into_switch(cy)) return;  // a limit switch is on where it goes
   // Each unit takes its part of the block; a fault ends the program.
   if (parts.cax && fail(cax_.start(*parts.cax, path_.position(), cy), cy)) return;
   if (parts.link && fail(ax_links_.start(*parts.link, path_.position(), cy), cy)) return;
@@ -478,7 +481,7 @@ void Channel::fail_mdi(Cycle& cy) noexcept {
   dropping_mdi_ = true;
   resetting_ = drive_failed_ = false;  // the braking that ended it is over
   // An E-stop leaves the channel in error until its reset, MDI or not.
-  set_state(estop_latched_ ? ProgramState::error : ProgramState::idle, StateReason::error, cy);
+  set_state(machine_error() ? ProgramState::error : ProgramState::idle, StateReason::error, cy);
   status_ = ChannelStatus::ended;
 }
 

@@ -18,6 +18,7 @@
 // The look-ahead lets the path pass only into blocks that do not wait;
 // preparation must keep the queue filled ahead of such a transition (the
 // dry run does: it prepares before every cycle).
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -104,6 +105,13 @@ class Channel {
   const HomingUnit& homing() const noexcept { return homing_; }
   // An E-stop came and this channel has not been reset since its release.
   bool estop_latched() const noexcept { return estop_latched_; }
+  // setup: channel axis j is machine axis `axis` (its amplifier fault and
+  // limit switches in TickInput::axes; -1: none).
+  void set_machine_axis(std::size_t j, std::int8_t axis) noexcept {
+    if (j < kMaxAxes) machine_axis_[j] = axis;
+  }
+  // An axis's amplifier fault came and the channel has not been reset since it went off.
+  bool amp_fault_latched() const noexcept { return amp_latched_; }
 
  private:
   enum class Phase : std::uint8_t { pre_wait, body, post_wait };
@@ -152,11 +160,25 @@ class Channel {
   // Starts are refused: E-stop latched or machine off (the ID that says so, or none).
   ErrorId refusal(const Cycle& cy) const noexcept;
   void refuse_mdi(ErrorId why, Cycle& cy) noexcept;
+  // Amplifier faults and limit switches (channel_switches.cpp): what they
+  // brake, and the moves into a switch that are refused.
+  void follow_switches(Cycle& cy) noexcept;
+  void brake_for_fault(ErrorId id, std::int8_t machine_axis, Cycle& cy) noexcept;
+  // The block that just started would move an axis further into its switch: ends it (true).
+  bool refuse_into_switch(Cycle& cy) noexcept;
+  // A jog towards a limit switch that is on is refused with a warning (true).
+  bool refuse_jog_into_switch(const JogRequest& r, Cycle& cy) const noexcept;
+  // The limit switch of channel axis j in direction dir (+1 / -1) is on (as of this cycle).
+  bool limit_on(std::size_t j, int dir) const noexcept {
+    return j < kMaxAxes && (((dir > 0 ? pos_was_ : neg_was_) >> j) & 1u) != 0;
+  }
+  // An error that holds the channel in error until a reset (E-stop, amplifier fault, limit switch).
+  bool machine_error() const noexcept { return estop_latched_ || amp_latched_ || limit_error_; }
   // CiA 402 drives: a drive's error brakes and aborts; the program waits for enable.
   void follow_drives(Cycle& cy) noexcept;
   bool drives_hold(Cycle& cy) noexcept;
   EndReason reset_reason() const noexcept {
-    return drive_failed_ || estop_latched_ ? EndReason::error : EndReason::reset;
+    return drive_failed_ || machine_error() ? EndReason::error : EndReason::reset;
   }
   bool continues_braking() const noexcept;
   void finish_mdi(Cycle& cy) noexcept;
@@ -190,6 +212,14 @@ class Channel {
   bool estop_latched_ = false; // an E-stop came: cleared by a reset once it is released
   bool machine_was_on_ = true; // the machine-on input of the last cycle
   double emergency_a_mm_s2_ = 0;  // the path's deceleration under E-stop
+  std::array<std::int8_t, kMaxAxes> machine_axis_ = [] {  // by channel axis, -1: none
+    std::array<std::int8_t, kMaxAxes> a{};
+    a.fill(-1);
+    return a;
+  }();
+  bool amp_latched_ = false;   // an amplifier fault came: cleared by a reset once it is gone
+  bool limit_error_ = false;   // a limit switch came on: cleared by a reset
+  std::uint32_t pos_was_ = 0, neg_was_ = 0;  // the limit switches of the last cycle, by channel axis
   // What this cycle went to (time by cause), set where the cycle stops.
   CycleCause cause_ = CycleCause::none;
   WaitReason wait_reason_ = WaitReason::plc_ack;

@@ -35,6 +35,7 @@ void Channel::follow_machine(Cycle& cy) noexcept {
     }
   }
   machine_was_on_ = on;
+  follow_switches(cy);
 }
 
 // The channel's spindles brake to standstill with their ramps (a tapping
@@ -53,6 +54,7 @@ void Channel::halt_spindles(Cycle& cy) noexcept {
 ErrorId Channel::refusal(const Cycle& cy) const noexcept {
   if (estop_latched_ || cy.machine.estop) return ErrorId::KernelEstopRefused;
   if (cy.machine.machine_off) return ErrorId::KernelMachineOffRefused;
+  if (amp_latched_) return ErrorId::KernelAmpFaultRefused;
   return ErrorId{};
 }
 

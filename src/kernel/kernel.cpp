@@ -13,7 +13,7 @@ namespace nck::kernel {
 
 // An embedder keeps one of each outside the real-time thread's stack
 // (docs/embedding.md gives these sizes).
-static_assert(sizeof(TickInput) == 24384, "docs/embedding.md gives TickInput's size");
+static_assert(sizeof(TickInput) == 24576, "docs/embedding.md gives TickInput's size");
 static_assert(sizeof(TickOutput) == 35720, "docs/embedding.md gives TickOutput's size");
 
 namespace {
@@ -123,6 +123,8 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
       const int a = ch.axes[j].axis_index;
       if (a >= 0 && machine_->axes[static_cast<std::size_t>(a)].prog_move_requires_homing)
         channels_.back()->homing().require(j, std::nullopt);
+      if (a >= 0 && static_cast<std::size_t>(a) < drives::kMaxDrives)
+        channels_.back()->set_machine_axis(j, static_cast<std::int8_t>(a));
     }
     if (ch.c_axis >= 0)
       for (std::size_t k = 0; k < ch.spindles.size(); ++k)
@@ -217,6 +219,8 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   ChannelContext ctx{spindles_.data(), spindles_.size(), plc_outputs_.get(), &in.spindles};
   ctx.estop = in.machine.estop;
   ctx.machine_off = !in.machine.machine_on;
+  ctx.drives_enabled = machine_out_.drives_enabled;
+  ctx.axes = &in.axes;
   if (drive_units_ && !drive_units_->empty()) {
     for (const ChannelInput& c : in.channels)
       if (c.reset) drive_units_->on_reset();

@@ -66,6 +66,7 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
   operator_actions_.clear();
 
   in.machine = machine_;
+  in.axes = axes_;
   plc_.tick(t_s);
   plc_.drain_acks(acks_);
   in.acks.clear();
@@ -86,7 +87,7 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
     // The simulated operator presses cycle start for holds, never in error.
     const bool in_error = hli_.channel_state[ch].program_state == static_cast<std::uint8_t>(kernel::ProgramState::error);
     // Nor while E-stop or machine off refuses starts (each press would be refused).
-    const bool refused = machine_.estop || !machine_.machine_on;
+    const bool refused = machine_.estop || !machine_.machine_on || amp_fault_;
     ci.cycle_start = c.cycle_start || (auto_cycle_start_[ch] && !in_error && !refused);
     c.cycle_start = false;
     ci.stop = c.stop;
@@ -181,12 +182,27 @@ void MachineSim::apply(const sim::ScenarioAction& a, kernel::TickInput& in) noex
     }
     case K::estop: machine_.estop = as<act::Estop>(a).on; return;
     case K::machine_on: machine_.machine_on = as<act::MachineOn>(a).on; return;
+    case K::amp_fault: set_axis_input(c, as<act::AmpFault>(a).axis, &kernel::AxisSwitches::amp_fault, as<act::AmpFault>(a).on); return;
+    case K::limit_switch: {
+      const act::LimitSwitch& l = as<act::LimitSwitch>(a);
+      set_axis_input(c, l.axis, l.direction < 0 ? &kernel::AxisSwitches::neg_limit : &kernel::AxisSwitches::pos_limit, l.on);
+      return;
+    }
     case K::variable: set_variable(as<act::Variable>(a), in.channels[c]); return;
     case K::spindle_cmd:
       if (!in.ext_commands.push_back(as<act::SpindleCmd>(a).cmd)) ++in.ext_commands_lost;
       return;
     default: apply_to_spindle(a); return;
   }
+}
+
+void MachineSim::set_axis_input(std::size_t ch, const act::AxisRef& axis, bool kernel::AxisSwitches::*input,
+                                bool on) noexcept {
+  if (axis.index < 0) return;
+  const std::int16_t m = cia402_.machine_axis(ch, static_cast<std::size_t>(axis.index));
+  if (m >= 0 && static_cast<std::size_t>(m) < axes_.size()) axes_[static_cast<std::size_t>(m)].*input = on;
+  amp_fault_ = false;
+  for (const kernel::AxisSwitches& s : axes_) amp_fault_ = amp_fault_ || s.amp_fault;
 }
 
 void MachineSim::set_variable(const act::Variable& v, kernel::ChannelInput& in) noexcept {

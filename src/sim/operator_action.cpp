@@ -69,7 +69,10 @@ std::string operator_words(const OperatorAction& op, Quoting q) {
         else if constexpr (std::is_same_v<T, act::JogIncrement>)
           return fmt::format(" {} {} {}", p.axis.view(), p.direction < 0 ? "-" : "+", shown(p.step_mm, q));
         else if constexpr (std::is_same_v<T, act::Mdi>) return " " + op.mdi_text;
-        else if constexpr (std::is_same_v<T, act::DriveFault>) return fmt::format(" {} {}", p.axis.view(), on_off(p.on));
+        else if constexpr (std::is_same_v<T, act::DriveFault> || std::is_same_v<T, act::AmpFault>)
+          return fmt::format(" {} {}", p.axis.view(), on_off(p.on));
+        else if constexpr (std::is_same_v<T, act::LimitSwitch>)
+          return fmt::format(" {} {} {}", p.axis.view(), p.direction < 0 ? "-" : "+", on_off(p.on));
         else if constexpr (requires { p.spindle; p.on; }) return fmt::format(" {} {}", p.spindle.view(), on_off(p.on));
         else if constexpr (requires { p.on; }) return fmt::format(" {}", on_off(p.on));
         else if constexpr (requires { p.spindle; }) return fmt::format(" {}", p.spindle.view());

@@ -57,6 +57,8 @@ constexpr std::array kActions = {
     ActionSpelling{"drive_fault", ActionKind::drive_fault},
     ActionSpelling{"estop", ActionKind::estop},
     ActionSpelling{"machine_on", ActionKind::machine_on},
+    ActionSpelling{"amp_fault", ActionKind::amp_fault},
+    ActionSpelling{"limit_switch", ActionKind::limit_switch},
 };
 
 // Parses one line; reports its first problem and returns nothing then.
@@ -235,7 +237,10 @@ bool LineParser::parse_args(ScenarioAction& a) {
         else if constexpr (std::is_same_v<T, act::Jog>) return take_jog(p);
         else if constexpr (std::is_same_v<T, act::JogIncrement>) return take_jog_increment(p);
         else if constexpr (std::is_same_v<T, act::Mode>) return take_mode(p);
-        else if constexpr (std::is_same_v<T, act::DriveFault>) return take_axis(p.axis) && take_switch(p.on);
+        else if constexpr (std::is_same_v<T, act::DriveFault> || std::is_same_v<T, act::AmpFault>)
+          return take_axis(p.axis) && take_switch(p.on);
+        else if constexpr (std::is_same_v<T, act::LimitSwitch>)
+          return take_axis(p.axis) && take_jog_direction(p.direction, false) && take_switch(p.on);
         else return true;  // reset, stop, cycle_start: no arguments
       },
       a.payload);

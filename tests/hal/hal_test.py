@@ -4,7 +4,7 @@ through scripts/hal-demo.sh and bounded in time. Exit 77 (skipped) when the
 HAL components are not built or unshare is not allowed.
 
   hal_test.py SOURCE BUILD CASE   CASE: contour | operator | plc | period | wrong-type | missing-machine | missing-program
-                                        | cia402 | cia402-fault
+                                        | cia402 | cia402-fault | amp-fault
 """
 import json, os, re, subprocess, sys, tempfile
 
@@ -219,7 +219,32 @@ stop
     words = [int(w, 16) for w in re.findall(r"^\s*\d+\s+u32\s+IN\s+(0x[0-9A-F]+)\s+nck\.axis\.Y\.cia-statusword", out, re.M)]
     check(len(words) == 2 and words[0] & 0x0008 and words[1] == OP_ENABLED,
           f"Y's statusword: fault (0x{words[0] if words else 0:04X}), then after the reset 0x{OP_ENABLED:04X}", out)
-    check(pins(out).get("nck.error-id") == "0x00000000", "nck.cycle itself never stopped (nck.error-id 0)", out)
+    check(pins(out).get("nck.error-id") == "0x00000000", "after the reset nck.error-id is 0 again (and nck.cycle never stopped)", out)
+elif case == "amp-fault":
+    # (issue 46) Y's amplifier fault while contour.nc runs: error 930750
+    # naming Y on nck.error-id, the channel brakes and its program ends in
+    # error (the session ends by itself), the enables go off at standstill.
+    head = example_text[:example_text.index("\nstart\n")]
+    tail = """
+start
+loadusr -w sleep 1
+setp nck.axis.Y.amp-fault-in 1
+waitusr nck-hal
+loadusr -w sleep 0.1
+show pin nck.axis.Y.enable
+show pin nck.channel.1.status
+show pin nck.error
+show pin nck.error-id
+stop
+"""
+    rc, out = run(head + "\n" + tail, timeout=60)
+    check(rc == 0 and "channel 1 done" in out, f"the session ended by itself (exit {rc})", out)
+    check(re.search(r"ev=error id=930750 axis=Y", out) is not None, "Y's amplifier fault is error 930750 naming Y", out)
+    v = pins(out)
+    check(v.get("nck.error-id") == "0x000E33BE" and v.get("nck.error") == "TRUE",
+          "nck.error / nck.error-id show 930750 (0xE33BE)", out)
+    check(v.get("nck.channel.1.status") == "4" and v.get("nck.axis.Y.enable") == "FALSE",
+          "the program was aborted (status 4) and the enables are off", out)
 else:
     print(f"unknown case {case}")
     sys.exit(2)

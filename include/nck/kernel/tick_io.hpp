@@ -113,6 +113,16 @@ struct MachineInput {
   bool machine_on = true;
 };
 
+// One machine axis's amplifier fault and limit switches (the HAL's pins,
+// the dry run's scenario lines), by machine axis list like `drives`. Read
+// for the channels' path axes (docs/decisions.md, "Amplifier faults and
+// limit switches"); software limits stay as they are.
+struct AxisSwitches {
+  bool amp_fault = false;  // the axis's drive reports a fault (any drive type)
+  bool pos_limit = false;  // the limit switch at the positive end of travel is on
+  bool neg_limit = false;  // the one at the negative end
+};
+
 struct TickInput {
   MachineInput machine{};
   std::array<ChannelInput, config::kMaxChannels> channels{};
@@ -130,6 +140,8 @@ struct TickInput {
   // What each axis's and spindle's drive reported (by machine axis list,
   // nck/drives/drive_io.hpp); read for CiA 402 and conventional drives only.
   std::array<drives::DriveFeedback, drives::kMaxDrives> drives{};
+  // Each axis's amplifier fault and limit switches (by machine axis list).
+  std::array<AxisSwitches, drives::kMaxDrives> axes{};
 };
 
 enum class ChannelStatus : std::uint8_t { idle, running, waiting, ended, aborted };

@@ -35,6 +35,13 @@ class Cia402Drives {
   std::array<std::uint8_t, drives::kMaxDrives> present_{};
   std::size_t present_count_ = 0;
   // Channel path axis -> machine axis list, for drive_fault lines.
+ public:
+  // Channel ch's path axis j as a machine axis list index (-1: none). rt
+  std::int16_t machine_axis(std::size_t ch, std::size_t j) const noexcept {
+    return ch < config::kMaxChannels && j < kMaxAxes ? axis_of_[ch][j] : std::int16_t{-1};
+  }
+
+ private:
   std::array<std::array<std::int16_t, kMaxAxes>, config::kMaxChannels> axis_of_{};
 };
 

@@ -100,6 +100,8 @@ class MachineSim {
  private:
   void apply(const sim::ScenarioAction& a, kernel::TickInput& in) noexcept;
   void apply_to_spindle(const sim::ScenarioAction& a) noexcept;
+  // amp_fault / limit_switch lines: one input of channel ch's path axis's machine axis.
+  void set_axis_input(std::size_t ch, const act::AxisRef& axis, bool kernel::AxisSwitches::*input, bool on) noexcept;
   plc::SpindleControl* spindle_control(const act::SpindleRef& s) noexcept;  // nullptr: no HLI spindle
   static void set_variable(const act::Variable& v, kernel::ChannelInput& in) noexcept;
   static kernel::JogRequest jog_request(const act::Jog& j) noexcept;
@@ -122,6 +124,8 @@ class MachineSim {
   std::array<bool, config::kMaxChannels> probe_switched_{};  // in the last cycle
   std::array<bool, config::kMaxChannels> auto_cycle_start_{};  // all on (constructor)
   kernel::MachineInput machine_{};  // E-stop and machine on, as the scenario's lines set them
+  std::array<kernel::AxisSwitches, drives::kMaxDrives> axes_{};  // amplifier faults and limit switches, likewise
+  bool amp_fault_ = false;  // one of axes_ reports an amplifier fault
   std::array<kernel::StopMark, config::kMaxChannels> stop_at_{};
   std::size_t channels_ = 0;
   std::size_t spindles_ = 0;

@@ -77,6 +77,10 @@ struct DriveFault { AxisRef axis; bool on = false; };
 // line's channel does not matter: they act on the whole machine).
 struct Estop { bool on = false; };
 struct MachineOn { bool on = false; };
+// The amplifier fault and the limit switches of a path axis's machine axis
+// (TickInput::axes): any drive type, as a HAL machine's pins set them.
+struct AmpFault { AxisRef axis; bool on = false; };
+struct LimitSwitch { AxisRef axis; std::int8_t direction = 1; bool on = false; };  // +1 positive end, -1 negative
 
 }  // namespace act
 
@@ -109,6 +113,8 @@ enum class ActionKind : std::uint8_t {
   drive_fault,          // drive_fault X on|off       (the simulated CiA 402 drive faults)
   estop,                // estop on|off               (the machine's E-stop input)
   machine_on,           // machine_on on|off          (the machine-on input)
+  amp_fault,            // amp_fault X on|off         (the axis's amplifier fault input)
+  limit_switch,         // limit_switch X + on|off    (the axis's limit switch at its + or - end)
 };
 
 using ActionPayload =
@@ -116,7 +122,8 @@ using ActionPayload =
                  act::SpindleFeedhold, act::SpindleStopAtEnd, act::Reset, act::SpindleReset, act::OptionalStop,
                  act::Silent, act::SpindleCmd, act::Handwheel, act::Variable, act::CycleStart, act::AutoCycleStart,
                  act::SingleStep, act::SkipMask, act::BlockSearch, act::Stop, act::Mdi, act::Jog,
-                 act::JogIncrement, act::Mode, act::DriveFault, act::Estop, act::MachineOn>;
+                 act::JogIncrement, act::Mode, act::DriveFault, act::Estop, act::MachineOn,
+                 act::AmpFault, act::LimitSwitch>;
 
 // The action's name as a scenario file writes it (the primary spelling).
 std::string_view action_name(ActionKind k) noexcept;
@@ -173,7 +180,9 @@ static_assert(action_kind_of<act::Mode>() == ActionKind::mode);
 static_assert(action_kind_of<act::DriveFault>() == ActionKind::drive_fault);
 static_assert(action_kind_of<act::Estop>() == ActionKind::estop);
 static_assert(action_kind_of<act::MachineOn>() == ActionKind::machine_on);
-static_assert(std::variant_size_v<ActionPayload> == static_cast<std::size_t>(ActionKind::machine_on) + 1);
+static_assert(action_kind_of<act::AmpFault>() == ActionKind::amp_fault);
+static_assert(action_kind_of<act::LimitSwitch>() == ActionKind::limit_switch);
+static_assert(std::variant_size_v<ActionPayload> == static_cast<std::size_t>(ActionKind::limit_switch) + 1);
 
 // Actions cross the live kernel's queue (LiveKernel::operate) and the
 // machine's fixed-size list of operator actions: copied as bytes.

@@ -27,6 +27,9 @@ struct ChannelContext {
   DriveReport drives{};  // the CiA 402 drives this cycle (all ready without any)
   bool estop = false;        // the E-stop input is on (TickInput::machine)
   bool machine_off = false;  // the machine-on input is off
+  bool drives_enabled = true;  // the NC let the drives be powered in the last cycle
+  // The axes' amplifier faults and limit switches (TickInput::axes).
+  const std::array<AxisSwitches, drives::kMaxDrives>* axes = nullptr;
 
   // Spindle s (kernel index), or nullptr for none / out of range. rt
   SpindleUnit* spindle(std::int8_t s) const noexcept {

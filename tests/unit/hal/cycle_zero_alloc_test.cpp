@@ -203,5 +203,38 @@ TEST_F(MillInHal, EstopPinBrakesEndsInErrorAndDisablesUntilReset) {
   EXPECT_EQ(g_allocations.load(), 0u);
 }
 
+// nck.axis.Y.amp-fault-in (issue 46): the contour brakes and ends in
+// error 930750, nck.error / nck.error-id show it, the enables go off at
+// standstill; after the fault's release and a reset the error pins clear
+// and the enables come back; nothing allocates.
+TEST_F(MillInHal, AmpFaultPinEndsInErrorShownOnTheErrorPinsUntilReset) {
+  g_allocations = 0;
+  cycles(3000);
+  **cycle_.axis_pins[1].amp_fault = true;
+  cycles(2000);
+  EXPECT_EQ(**cycle_.channel_pins[0].program_state, static_cast<std::int32_t>(kernel::ProgramState::error));
+  EXPECT_TRUE(link_->channel_done[0].load());
+  EXPECT_TRUE(**cycle_.machine_pins.error);
+  EXPECT_EQ(**cycle_.machine_pins.error_id, 930750u);
+  EXPECT_FALSE(**cycle_.axis_pins[0].enable);
+  **cycle_.axis_pins[1].amp_fault = false;
+  **cycle_.channel_pins[0].reset = true;
+  cycles(2);
+  EXPECT_EQ(**cycle_.channel_pins[0].program_state, static_cast<std::int32_t>(kernel::ProgramState::idle));
+  EXPECT_FALSE(**cycle_.machine_pins.error);
+  EXPECT_EQ(**cycle_.machine_pins.error_id, 0u);
+  EXPECT_TRUE(**cycle_.axis_pins[0].enable);
+  EXPECT_EQ(g_allocations.load(), 0u);
+}
+
+// A limit switch pin: error 930751 on the error pins; the drives stay enabled.
+TEST_F(MillInHal, LimitSwitchPinEndsInErrorNamingItsDirection) {
+  cycles(3000);
+  **cycle_.axis_pins[0].limit_pos = true;
+  cycles(2000);
+  EXPECT_EQ(**cycle_.machine_pins.error_id, 930751u);
+  EXPECT_TRUE(**cycle_.axis_pins[0].enable);
+}
+
 }  // namespace
 }  // namespace nck::hal

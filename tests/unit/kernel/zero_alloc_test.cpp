@@ -149,6 +149,9 @@ TEST(ZeroAllocation, WholeExamplesRunThroughTickWithoutHeap) {
       {"examples/mill", {"examples/mill/jog.nc"}, "examples/mill/jog.plc"},  // jog, handwheel in manual mode, soft limit
       // E-stop braking, refusals, reset, machine off and on
       {"examples/mill", {"examples/mill/contour.nc"}, "examples/mill/estop.plc", true},
+      // an amplifier fault and a limit switch: braking, refusals, reset, MDI refused and run
+      {"examples/mill", {"tests/scenarios/mill-amp-fault/prog.nc"}, "tests/scenarios/mill-amp-fault/amp.plc", true},
+      {"examples/mill", {"tests/scenarios/mill-limit-switch/prog.nc"}, "tests/scenarios/mill-limit-switch/limit.plc", true},
       {"examples/mill", {"examples/mill/caxis.nc"}},
       {"examples/mill", {"examples/mill/cylinder.nc"}},
       {"examples/mill", {"examples/mill/jumps.nc"}},
