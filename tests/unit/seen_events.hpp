@@ -26,4 +26,18 @@ inline ErrorId diagnosis_id(const kernel::Event& e) {
   return ErrorId{};
 }
 
+// Every cycle's events, kept (take() after each tick).
+struct EventLog {
+  std::vector<kernel::Event> events;
+  template <class Output>
+  void take(const Output& out) {
+    events.insert(events.end(), out.events.begin(), out.events.end());
+  }
+  int count(ErrorId id) const {
+    int n = 0;
+    for (const kernel::Event& e : events) n += diagnosis_id(e) == id;
+    return n;
+  }
+};
+
 }  // namespace nck::test

@@ -17,19 +17,11 @@ namespace {
 
 using testing::KernelRig;
 using testing::move;
-using testing::xyz_machine;
 
 constexpr double kDt = 0.001;
 constexpr double kVmax = 500, kAmax = 2000, kAemergency = 3000;
 
-struct Recorder {
-  std::vector<Event> events;
-  void take(const TickOutput& out) { events.insert(events.end(), out.events.begin(), out.events.end()); }
-  int count(ErrorId id) const {
-    int n = 0;
-    for (const Event& e : events) n += test::diagnosis_id(e) == id;
-    return n;
-  }
+struct Recorder : test::EventLog {
   // The axis the first diagnosis with this ID names (-2: none seen, -1: no axis).
   int axis_of(ErrorId id) const {
     for (const Event& e : events) {
@@ -41,12 +33,7 @@ struct Recorder {
   }
 };
 
-config::Machine machine() {
-  config::Machine m = xyz_machine(kVmax, kAmax);
-  for (auto& ax : m.axes)
-    for (auto& g : ax.gears) g.a_emergency = kAemergency;
-  return m;
-}
+config::Machine machine() { return testing::xyz_machine_with_emergency(kVmax, kAmax, kAemergency); }
 
 JogRequest jog(std::int8_t axis, std::int8_t direction) {
   JogRequest r;

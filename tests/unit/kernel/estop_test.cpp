@@ -19,22 +19,10 @@ using testing::xyz_machine;
 
 constexpr double kDt = 0.001;
 
-// Every cycle's events, kept.
-struct Recorder {
-  std::vector<Event> events;
-  void take(const TickOutput& out) { events.insert(events.end(), out.events.begin(), out.events.end()); }
-  int count(ErrorId id) const {
-    int n = 0;
-    for (const Event& e : events) n += test::diagnosis_id(e) == id;
-    return n;
-  }
-};
+using Recorder = test::EventLog;
 
 config::Machine machine_with_emergency(double a_emergency) {
-  config::Machine m = xyz_machine(500, 2000);
-  for (auto& ax : m.axes)
-    for (auto& g : ax.gears) g.a_emergency = a_emergency;
-  return m;
+  return testing::xyz_machine_with_emergency(500, 2000, a_emergency);
 }
 
 // Runs a diagonal move at speed, E-stops it and checks every cycle's axis

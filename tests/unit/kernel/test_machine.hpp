@@ -35,6 +35,15 @@ inline config::Machine xyz_machine(double vb_max_mm_s = 500, double a_mm_s2 = 20
   return m;
 }
 
+// xyz_machine whose axes brake with a_emergency_mm_s2 (P-AXIS-00003; 0:
+// a_max) on E-stop, an amplifier fault or a limit switch.
+inline config::Machine xyz_machine_with_emergency(double vb_max_mm_s, double a_mm_s2, double a_emergency_mm_s2) {
+  config::Machine m = xyz_machine(vb_max_mm_s, a_mm_s2);
+  for (auto& ax : m.axes)
+    for (auto& g : ax.gears) g.a_emergency = a_emergency_mm_s2;
+  return m;
+}
+
 // Adds spindle S1 (logical axis 6, 6000 deg/s = 1000 rpm top speed,
 // 60000 deg/s^2) to channel 1 as its main spindle; returns its axis.
 inline config::AxisConfig& add_spindle_s1(config::Machine& m) {
