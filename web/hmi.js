@@ -71,6 +71,7 @@
     for (const e of events) {
       if (e.ev === "wait" || e.ev === "wait_end") noteWait(e);
       if (e.ev === "link" && hmi.panels[e.ch - 1]) hmi.panels[e.ch - 1].noteLink(e);
+      if (e.ev === "offset" && (e.kind === "cs" || e.kind === "acs") && window.nckOffsets) window.nckOffsets.refresh();
       if (e.ev !== "error" && e.ev !== "warning") continue;
       const where = [e.ch ? "channel " + e.ch : "", e.file ? String(e.file).split("/").pop() + ":" + e.line : "",
         e.n != null ? "N" + e.n : "", e.t != null ? "t " + fixed(e.t, 3) + " s" : ""].filter(Boolean).join(" ");

@@ -83,6 +83,16 @@
     return el("table", { class: "offsets-table tools" }, el("thead", {}, head), el("tbody", {}, ...rows));
   }
 
+  // The #ACS / #CS the running program set: programmed, so shown, not edited.
+  function coordinateSystems(c) {
+    const systems = c.coordinate_systems || [];
+    if (!systems.length) return el("p", { class: "cs-none" }, "none set by the program (#ACS, #CS)");
+    const rows = systems.map((cs) => el("tr", { "data-cs": cs.kind },
+      el("th", {}, "#" + cs.kind.toUpperCase()),
+      el("td", { class: "cs-values" }, Object.entries(cs.values).map(([k, v]) => `${k} ${v}`).join("  "))));
+    return el("table", { class: "offsets-table cs" }, el("tbody", {}, ...rows));
+  }
+
   function draw(tables) {
     const parts = [];
     for (const c of tables.channels) {
@@ -90,6 +100,7 @@
       parts.push(el("div", { class: "offsets-channel", "data-channel": String(c.channel) },
         el("h3", {}, `Channel ${c.channel}` + (files ? ` (${files})` : "")),
         el("h4", {}, `Zero offsets (active: ${c.active_zero})`), zeroTable(c), touchOff(c),
+        el("h4", {}, "Coordinate systems (programmed)"), coordinateSystems(c),
         el("h4", {}, "Clamp offsets"), clampTable(c),
         el("h4", {}, "Tools"), c.tools.length ? toolTable(c) : el("p", {}, "no tool list")));
     }
@@ -115,6 +126,8 @@
     load();
   }
   view.reload = load;
+  // An #ACS / #CS of the program ran: the open panel shows it.
+  view.refresh = () => { if (document.getElementById("offsets-section").open) load(); };
   if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", start);
   else start();
 })();

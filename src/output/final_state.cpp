@@ -9,6 +9,7 @@
 #include "nck/output/output_writers.hpp"
 #include "nck/spindle/spindle_status.hpp"
 
+#include "nck/core/shown_number.hpp"
 #include "nck/core/utf8.hpp"
 #include "nck/core/version.hpp"
 
@@ -22,7 +23,7 @@ json tool_json(const config::Machine& m, std::size_t channel, std::int64_t d) {
   double radius_mm = 0;
   if (channel < m.channel_data.size() && d > 0 && static_cast<std::size_t>(d) < m.channel_data[channel].tools.size())
     radius_mm = m.channel_data[channel].tools[static_cast<std::size_t>(d)].radius_mm;
-  return json{{"d", d}, {"radius_mm", radius_mm}};
+  return json{{"d", d}, {"radius_mm", written(radius_mm)}};
 }
 
 }  // namespace
@@ -84,20 +85,20 @@ nlohmann::json final_json(const config::Machine& m, const sim::DryRun& run, doub
     const kernel::ChannelState homing = k.channel_state(c);
     json axes = json::object();
     for (std::size_t j = 0; j < m.channels[c].axes.size(); ++j) {
-      json axis{{"mcs", s.axis_mcs[j]}, {"pcs", s.axis_pcs[j]}};
+      json axis{{"mcs", written(s.axis_mcs[j])}, {"pcs", written(s.axis_pcs[j])}};
       // Homing only where the machine data require it (P-AXIS-00277): other
       // machines' final states stay as they were.
       if (homing.homing_required != 0) axis["homed"] = (homing.homed_axes >> j & 1u) != 0;
       // A face-turning axis also as the diameter G51 programs (the trace stays radius).
       const int list = m.channels[c].axes[j].axis_index;
       if (list >= 0 && m.axes[static_cast<std::size_t>(list)].is_face_turning())
-        axis["pcs_diameter"] = 2 * s.axis_pcs[j];
+        axis["pcs_diameter"] = written(2 * s.axis_pcs[j]);
       axes[m.channels[c].axes[j].name] = axis;
     }
     json offsets = json::object();
     for (const auto& [kind, values] : s.offsets) {
       json v = json::object();
-      for (const auto& [axis, value] : values) v[axis] = value;
+      for (const auto& [axis, value] : values) v[axis] = written(value);
       offsets[kind] = v;
     }
     channels.push_back(json{{"axes", axes},
@@ -110,15 +111,15 @@ nlohmann::json final_json(const config::Machine& m, const sim::DryRun& run, doub
       const kernel::ChannelState st = k.channel_state(c);
       channels.back()["dist_ctrl"] = json{
           {"state", distctrl::state_name(st.dist_state)},
-          {"offset", st.dist_offset_mm}};
+          {"offset", written(st.dist_offset_mm)}};
     }
   }
   json spindles = json::object();
   for (std::size_t i = 0; i < k.spindle_count(); ++i) {
     const spindle::SpindleStatus& st = k.spindle_status(i);
-    spindles[k.spindle_name(i)] = json{{"rpm", st.set_rpm},
-                                       {"pos", st.set_pos_deg},
-                                       {"act_rpm", st.act_rpm},
+    spindles[k.spindle_name(i)] = json{{"rpm", written(st.set_rpm)},
+                                       {"pos", written(st.set_pos_deg)},
+                                       {"act_rpm", written(st.act_rpm)},
                                        {"mode", std::string(spindle::mode_name(st.mode))},
                                        {"gear", st.gear_stage},
                                        {"homed", st.homed}};

@@ -252,8 +252,8 @@ ordered_json TimeByCause::tally_json(const Channel& ch, const Tally& t) const {
     else if (k.cause == CycleCause::hold) r["reason"] = k.detail == kFeedhold ? "feedhold" : "program";
     else if (k.detail >= 0 && d < ch.axis_names.size()) r["axis"] = ch.axis_names[d];
     r["name"] = class_name(ch, k);
-    r["time_s"] = seconds(n);
-    r["share"] = static_cast<double>(n) / total;
+    r["time_s"] = written_seconds(n);
+    r["share"] = written(static_cast<double>(n) / total);
     rows.push_back(std::move(r));
   }
   return rows;
@@ -262,14 +262,14 @@ ordered_json TimeByCause::tally_json(const Channel& ch, const Tally& t) const {
 ordered_json TimeByCause::channel_json(const Channel& ch) const {
   ordered_json tools = ordered_json::array();
   for (const auto& [tool, t] : ch.tools)
-    tools.push_back({{"tool", tool}, {"time_s", seconds(t.cycles())}, {"causes", tally_json(ch, t)}});
+    tools.push_back({{"tool", tool}, {"time_s", written_seconds(t.cycles())}, {"causes", tally_json(ch, t)}});
   ordered_json files = ordered_json::array();
   for (const auto& [id, t] : ch.files) {
     const std::string name = id < ch.file_names.size() ? ch.file_names[id] : std::string();
     files.push_back({{"file", name}, {"main", id == 0},
-                     {"time_s", seconds(t.cycles())}, {"causes", tally_json(ch, t)}});
+                     {"time_s", written_seconds(t.cycles())}, {"causes", tally_json(ch, t)}});
   }
-  return {{"time_s", seconds(ch.cycles)},
+  return {{"time_s", written_seconds(ch.cycles)},
           {"causes", tally_json(ch, ch.total)},
           {"tools", tools},
           {"subroutines", files},
@@ -302,10 +302,10 @@ ordered_json TimeByCause::blocks_json(const Channel& ch) const {
                     {"sub", ids[i].section},
                     {"pass", ids[i].pass},
                     {"runs", b.runs},
-                    {"time_s", seconds(b.cycles)},
-                    {"length_mm", b.length_mm},
-                    {"ideal_s", b.ideal_s},
-                    {"lost_s", lost(&b)},
+                    {"time_s", written_seconds(b.cycles)},
+                    {"length_mm", written(b.length_mm)},
+                    {"ideal_s", written(b.ideal_s)},
+                    {"lost_s", written(lost(&b))},
                     {"causes", tally_json(ch, b.tally)}});
   }
   return rows;

@@ -37,19 +37,26 @@ ChannelFrames::ChannelFrames(const config::ChannelConfig& ch, const config::Chan
   cfg.move_tool_offsets_directly = ch.move_tool_offsets_directly;
   chain_ = frames::OffsetChain(cfg);
 
-  zero_table_.g53_available = data.zero.g53_available;
-  zero_table_.default_index = static_cast<int>(data.zero.default_index);
-  if (zero_table_.groups.size() < data.zero.versch.size()) zero_table_.groups.resize(data.zero.versch.size());
-  for (std::size_t i = 0; i < data.zero.versch.size(); ++i) {
-    zero_table_.groups[i].offset_mm = to_chain_order(data.zero.versch[i]);
-    for (std::size_t j = 0; j < n_axes_; ++j)
-      if (i < data.zero.inaktiv.size() && data.zero.inaktiv[i][j])
-        zero_table_.groups[i].inactive_mask |= 1u << to_chain_[j];
-  }
+  set_zero_offsets(data.zero);
   if (zero_table_.default_index != 0) (void)chain_.select_zero_offset(zero_table_, zero_table_.default_index);
   if (clamp_index < data.clamp.versatz.size())
     (void)chain_.set_clamp_offsets(to_chain_order(data.clamp.versatz[clamp_index]));
   chain_.commit_all();
+}
+
+// The table a G54..G59 / G159 selects from. An offset in force keeps the
+// values it was selected with: a new value acts at the next selection.
+void ChannelFrames::set_zero_offsets(const config::ZeroOffsets& zero) {
+  zero_table_.g53_available = zero.g53_available;
+  zero_table_.default_index = static_cast<int>(zero.default_index);
+  if (zero_table_.groups.size() < zero.versch.size()) zero_table_.groups.resize(zero.versch.size());
+  for (std::size_t i = 0; i < zero.versch.size(); ++i) {
+    zero_table_.groups[i].offset_mm = to_chain_order(zero.versch[i]);
+    zero_table_.groups[i].inactive_mask = 0;
+    for (std::size_t j = 0; j < n_axes_; ++j)
+      if (i < zero.inaktiv.size() && zero.inaktiv[i][j])
+        zero_table_.groups[i].inactive_mask |= 1u << to_chain_[j];
+  }
 }
 
 frames::AxisValues ChannelFrames::to_chain_order(

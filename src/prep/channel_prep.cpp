@@ -59,6 +59,7 @@ bool ChannelPrep::feed(kernel::CommandQueue& commands, kernel::FeedbackQueue& fe
   // command or sent feedback, or the channel ended.
   if (idle(commands, feedback, channel_done)) return false;
   if (channel_done) take_stop(feedback);
+  take_zero_offsets();
   if (!in_mdi_ && done() && mdi_pending()) start_mdi();
   const std::uint64_t before = decoded_ + window_.released();
   feed_blocks(commands, feedback, channel_done);
@@ -334,6 +335,19 @@ void ChannelPrep::attach_warnings(PlannedCommand& c) {
   if (pending_warnings_.empty()) return;
   add_warnings(c, pending_warnings_, *store_);
   pending_warnings_.clear();
+}
+
+void ChannelPrep::offer_zero_offsets(config::ZeroOffsets zero) {
+  const std::lock_guard lock(zero_inbox_->mutex);
+  zero_inbox_->zero = std::move(zero);
+  zero_inbox_->offered.store(true, std::memory_order_release);
+}
+
+void ChannelPrep::take_zero_offsets() {
+  if (!zero_inbox_->offered.load(std::memory_order_acquire)) return;
+  const std::lock_guard lock(zero_inbox_->mutex);
+  planner_->set_zero_offsets(zero_inbox_->zero);
+  zero_inbox_->offered.store(false, std::memory_order_release);
 }
 
 void ChannelPrep::submit_mdi(std::string text) {

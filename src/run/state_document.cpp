@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "nck/core/shown_number.hpp"
 #include "nck/core/utf8.hpp"
 #include "nck/output/output_writers.hpp"
 #include "nck/output/time_by_cause.hpp"
@@ -26,14 +27,6 @@ motion::AxisVector to_pcs(const kernel::AffineMap& f, const motion::AxisVector& 
     pcs[static_cast<std::size_t>(f.main[i])] = v;
   }
   return pcs;
-}
-
-// A position (mm, °) or speed as a person reads it: at the control's
-// internal resolution, 0.1 µm / 0.0001° (TF5200's positions are integers of
-// it), so that the JSON shows 23.47, not 23.47000000000009 (issue 48 item 4).
-double shown(double v) {
-  const double r = std::round(v * 1e4) / 1e4;
-  return r == 0 ? 0.0 : r;  // no -0
 }
 
 bool face_turning(const config::Machine& m, const config::ChannelAxis& a) {
@@ -132,11 +125,18 @@ nlohmann::ordered_json state_json(const LiveSnapshot& s, const config::Machine& 
 }
 
 void note_block(ChannelFrames& frames, const kernel::Event& e, const sim::DryRun& run) {
+  if (e.channel < 1 || static_cast<std::size_t>(e.channel) > frames.size()) return;
+  BlockContext& b = frames[e.channel - 1u];
+  if (const auto* o = e.get<nck::frames::OffsetEvent>()) {
+    const std::string& kind = run.offset(o->index).kind;
+    if (kind == "acs") b.acs_offset = o->index;
+    if (kind == "cs") b.cs_offset = o->index;
+    return;
+  }
   const auto* block = e.get<kernel::ev::Block>();
-  if (!block || !block->frame_index || e.channel < 1 || static_cast<std::size_t>(e.channel) > frames.size()) return;
+  if (!block || !block->frame_index) return;
   const kernel::AffineMap* f = run.frame(*block->frame_index);
   if (!f) return;
-  BlockContext& b = frames[e.channel - 1u];
   b.frame = *f;
   if (const nc::ModalState* m = run.modal(*block->frame_index)) b.modal = *m;
 }

@@ -10,6 +10,7 @@
 #include "nck/config/list_reader.hpp"
 #include "nck/config/parameter_registry.hpp"
 #include "nck/core/path_within.hpp"
+#include "nck/core/shown_number.hpp"
 
 namespace nck::app::serve {
 namespace {
@@ -48,7 +49,7 @@ void for_each_sharing(config::Machine& m, fs::path config::ChannelConfig::*list,
 
 json axis_values(const config::ChannelConfig& c, const AxisArray& v) {
   json o = json::object();
-  for (std::size_t j = 0; j < c.axes.size() && j < v.size(); ++j) o[c.axes[j].name] = v[j];
+  for (std::size_t j = 0; j < c.axes.size() && j < v.size(); ++j) o[c.axes[j].name] = shown(v[j]);
   return o;
 }
 
@@ -110,9 +111,9 @@ json OffsetBook::tables_json(const config::Machine& m) const {
     for (std::size_t n = 1; n < d.tools.size(); ++n) {
       const config::ToolRecord& t = d.tools[n];
       if (!t.given) continue;
-      tools.push_back({{"tool", n}, {"length_mm", t.length_mm}, {"radius_mm", t.radius_mm},
-                       {"spindle", t.log_ax_nr_spdl}, {"vb_min_rpm", t.vb_min_rpm}, {"vb_max_rpm", t.vb_max_rpm},
-                       {"a_max_deg_s2", t.a_max_deg_s2}});
+      tools.push_back({{"tool", n}, {"length_mm", shown(t.length_mm)}, {"radius_mm", shown(t.radius_mm)},
+                       {"spindle", t.log_ax_nr_spdl}, {"vb_min_rpm", shown(t.vb_min_rpm)},
+                       {"vb_max_rpm", shown(t.vb_max_rpm)}, {"a_max_deg_s2", shown(t.a_max_deg_s2)}});
     }
     channels.push_back({{"channel", ch + 1}, {"axes", std::move(axes)}, {"zero", std::move(zero)},
                         {"clamp", std::move(clamp)}, {"tools", std::move(tools)},

@@ -2,14 +2,16 @@
 // the zero offsets, clamp offsets and tool table of the server's machine
 // copy, edited and touched off from the HMI, written back to the list files
 // on an explicit save. An edit takes effect at the next run the server
-// makes (a load, a cycle start, and at once when every channel is idle:
-// docs/decisions.md, "Offsets and tools from the HMI").
+// makes (a load, a cycle start, and at once when every channel is idle);
+// a zero offset also at its next selection in a running program
+// (docs/decisions.md, "Offsets and tools from the HMI").
 #include <cmath>
 #include <cstdlib>
 
 #include <fmt/format.h>
 
 #include "nck/config/load.hpp"
+#include "nck/core/shown_number.hpp"
 #include "nck/output/diagnostic_json.hpp"
 #include "nck/run/state_document.hpp"
 #include "nck/serve/serve_api.hpp"
@@ -47,6 +49,21 @@ HttpReply missing(std::string_view what) {
   return error_reply(400, ErrorId::ApiBadValue, fmt::format("'{}' is missing or of the wrong type (docs/api.md)", what));
 }
 
+// The #ACS and #CS the running program set, as its offset events give
+// them (X Y Z shifts and angle1..3; "2.X" ... for the second of a chain).
+// Programmed, not listed: shown, not edited.
+json coordinate_systems_json(const BlockContext& c, const sim::DryRun& run) {
+  json systems = json::array();
+  for (const auto& index : {c.acs_offset, c.cs_offset}) {
+    if (!index) continue;
+    const prep::OffsetPayload& o = run.offset(*index);
+    json values = json::object();
+    for (const auto& [name, v] : o.values) values[name] = shown(v);
+    systems.push_back({{"kind", o.kind}, {"values", std::move(values)}});
+  }
+  return systems;
+}
+
 }  // namespace
 
 std::optional<HttpReply> ServeApi::offsets_route(const HttpRequest& r) {
@@ -76,6 +93,7 @@ HttpReply ServeApi::offsets_page() const {
     c["active_zero"] = zero >= 1 && zero <= 6 ? json(fmt::format("G{}", 53 + zero)) : zero == 0 ? json("G53") : json(zero);
     c["active_tool"] = modal ? modal->d : 0;
     c["busy"] = ch < last_.channel_count && !channel_free(last_.channels[ch].program_state);
+    c["coordinate_systems"] = coordinate_systems_json(frames_[ch], *serving_);
   }
   return HttpReply{200, "application/json", dump_json(j), {}};
 }
@@ -158,9 +176,10 @@ HttpReply ServeApi::touch_off(std::size_t ch, const std::string& offset, const s
   return r;
 }
 
-// After an edit: the staged run is made again from the edited machine, and
-// an idle kernel gets a fresh run without programs, so that an MDI G54
-// selects the new value (as a program start would).
+// After an edit: the staged run is made again from the edited machine; an
+// idle kernel gets a fresh run without programs, so that an MDI G54 selects
+// the new value (as a program start would); a running program's next
+// selection of a zero offset takes it.
 HttpReply ServeApi::edited(std::optional<Diagnostic> refusal) {
   if (refusal) {
     const bool missing_thing = refusal->id == ErrorId::OffsetNotFound;
@@ -173,6 +192,9 @@ HttpReply ServeApi::edited(std::optional<Diagnostic> refusal) {
   }
   if (!busy_channel()) {
     if (auto run = make_run(std::nullopt, 0, false)) (void)kernel_.load(std::move(*run));
+  } else if (sim::DryRun* running = kernel_.current()) {  // its next G54..G59 selects the new values
+    for (std::size_t ch = 0; ch < machine_.channel_data.size(); ++ch)
+      running->offer_zero_offsets(ch, machine_.channel_data[ch].zero);
   }
   json j = offsets_.tables_json(machine_);
   return HttpReply{200, "application/json", dump_json(json{{"ok", true}, {"unsaved", j["unsaved"]}}), {}};

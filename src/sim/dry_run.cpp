@@ -199,6 +199,12 @@ std::optional<Diagnostic> DryRun::mdi(std::size_t ch, const std::string& text, k
   return std::nullopt;
 }
 
+void DryRun::offer_zero_offsets(std::size_t ch, const config::ZeroOffsets& zero) {
+  if (ch >= preps_.size()) return;
+  preps_[ch].offer_zero_offsets(zero);
+  if (prep_thread_) prep_thread_->wake();
+}
+
 std::optional<Diagnostic> DryRun::operate(const OperatorAction& op) {
   const SourceLoc loc{"operator", 1, 0};
   if (op.action.kind() == ActionKind::mdi) {

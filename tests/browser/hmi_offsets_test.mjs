@@ -2,7 +2,8 @@
 // `nck serve` on a copy of examples/mill in the out folder (examples/ is
 // never written), the panel opened in Debian's chromium; an out-of-range
 // edit shows its refusal with the ID, a touch-off of G54 Z makes Z read 0,
-// the save writes zero.lis with the value and keeps zero.lis.bak.
+// the save writes zero.lis with the value and keeps zero.lis.bak; an MDI
+// #CS ON shows in the panel's coordinate systems.
 // Usage: node tests/browser/hmi_offsets_test.mjs --nck BIN --source DIR --out DIR
 import { chromium } from "playwright-core";
 import fs from "node:fs";
@@ -63,6 +64,14 @@ async function check(page) {
   expect(fs.existsSync(zeroFile + ".bak") && fs.readFileSync(zeroFile + ".bak", "utf8") === old, "zero.lis.bak keeps the old file");
   const clean = await page.locator("#offsets-unsaved").waitFor({ state: "hidden", timeout: 5000 }).then(() => true).catch(() => false);
   expect(clean, "no unsaved edits after the save");
+  // A coordinate system the program sets (#CS ON) shows in the open panel,
+  // read only: it is programmed, not listed.
+  const csNone = await panel.locator(".cs-none").isVisible();
+  await page.evaluate(() => window.NckApi.command("mdi", 1, { text: "#CS ON [1][10,5,0,0,0,30]" }));
+  const csRow = panel.locator('table.cs tr[data-cs="cs"] td.cs-values');
+  const csText = await csRow.waitFor({ timeout: 10000 }).then(() => csRow.textContent()).catch(() => "");
+  expect(csNone && /X 10 .*Y 5 .*angle3 30/.test(csText) && !(await panel.locator("table.cs input").count()),
+    `#CS ON in MDI shows in the panel, without edit boxes: "${csText}"`, `#CS row: "${csText}" (none shown before: ${csNone})`);
 }
 
 const server = startServer(path.resolve(args.nck), src, [machine], 60);

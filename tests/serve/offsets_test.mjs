@@ -61,6 +61,32 @@ async function edits(s) {
   check("a clamp group the list does not have: 404 with 940330", noGroup.status === 404 && errorId(noGroup) === 940330);
 }
 
+// A running program takes an edited zero offset at its next selection (as
+// ISG does), not before: G54 X (100 in zero.lis) edited to 120 while the
+// program dwells leaves the axis at MCS 100 until the program selects G54
+// again and moves to X0, which is then MCS 120. The 1,000 dwell blocks keep
+// the second selection out of what preparation has decoded ahead.
+async function runningProgram(s) {
+  const dwell = Array.from({ length: 1000 }, () => "G04 X0.005").join("\n");
+  const text = `N10 G54 G90 G01 X0 Y0 F60000\n${dwell}\nN20 G54 G90 G01 X0 F60000\nN30 M30\n`;
+  const up = await request(s, "POST", "/api/v1/upload?name=reselect.nc", { body: text });
+  const load = await command(s, { command: "load", program: "reselect.nc" });
+  check("upload and load a program that selects G54 twice", up.status === 200 && load.status === 200, load.body);
+  await sleep(300);
+  await command(s, { command: "cycle_start" });
+  const first = await untilState(s, (st) => st.channels[0].state === "running" && Math.abs(st.channels[0].mcs.X - 100) < 1e-6,
+                                 10000, "the program stands at G54 X0 = MCS 100");
+  const r = await post(s, "/api/v1/offsets/zero", { offset: "G54", axis: "X", value_mm: 120 });
+  check("an edit of G54 X while the program runs is taken", r.status === 200, r.body);
+  const during = await state(s);
+  check("the G54 in force keeps its value: still MCS X 100", during.channels[0].state === "running" &&
+        Math.abs(during.channels[0].mcs.X - 100) < 1e-6, JSON.stringify(during.channels[0].mcs));
+  const end = await untilState(s, (st) => st.run === first.run && st.channels[0].state !== "running", 20000, "the program ends");
+  check("the next G54 selection takes the edit: X0 is MCS 120", Math.abs(end.channels[0].mcs.X - 120) < 1e-6 &&
+        Math.abs(end.channels[0].pcs.X) < 1e-6, JSON.stringify(end.channels[0].mcs) + JSON.stringify(end.channels[0].pcs));
+  await post(s, "/api/v1/offsets/zero", { offset: "G54", axis: "X", value_mm: 100 });  // as zero.lis has it
+}
+
 // G55 selected by MDI, the axes moved; touching off G54 X so that X reads 2
 // gives G54 X = MCS X - 2 (no tool, no clamp offset), and an MDI G54 X2
 // then does not move the axis.
@@ -124,6 +150,7 @@ async function save(s) {
 const s = await startServer(nck, src, [], machine);
 try {
   await edits(s);
+  await runningProgram(s);
   await touchOff(s);
   await save(s);
 } finally {

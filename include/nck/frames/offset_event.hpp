@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "nck/core/event_head.hpp"
+#include "nck/core/shown_number.hpp"
 
 namespace nck::frames {
 
@@ -18,7 +19,7 @@ void write_json(Json& j, const OffsetEvent& e, const EventHead& h, const Names& 
   const auto& offset = names.offset(e.index);
   j["kind"] = offset.kind;
   Json values = Json::object();
-  for (const auto& [axis, v] : offset.values) values[axis] = v;
+  for (const auto& [axis, v] : offset.values) values[axis] = written(v);
   j["values"] = values;
   j["line"] = h.at.line;
 }

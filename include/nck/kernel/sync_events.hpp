@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "nck/core/event_head.hpp"
+#include "nck/core/shown_number.hpp"
 #include "nck/plc/function_text.hpp"
 #include "nck/plc/hli.hpp"
 
@@ -82,7 +83,7 @@ template <class Json, class Names>
 void write_json(Json& j, const PlcOut& e, const EventHead&, const Names& names) {
   j["fn"] = plc::function_name(e.fn, e.number);
   j["spindle"] = names.spindle(e.spindle);
-  j["value"] = e.fn == plc::TechKind::s ? Json(e.s_rpm) : e.add_value != kNoAddValue ? Json(e.add_value) : Json(nullptr);
+  j["value"] = e.fn == plc::TechKind::s ? Json(written(e.s_rpm)) : e.add_value != kNoAddValue ? Json(e.add_value) : Json(nullptr);
   j["sync"] = plc::sync_name(e.sync);
 }
 

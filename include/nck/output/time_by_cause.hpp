@@ -17,6 +17,7 @@
 
 #include "nck/config/machine.hpp"
 #include "nck/core/kept_quotient.hpp"
+#include "nck/core/shown_number.hpp"
 #include "nck/kernel/tick_io.hpp"
 #include "nck/output/block_identity.hpp"
 #include "nck/output/line_ledger.hpp"
@@ -134,6 +135,7 @@ class TimeByCause {
 
   // n cycles in seconds, from the whole-µs cycle time (0.018, not 0.018000000000000002)
   double seconds(std::uint64_t n) const { return static_cast<double>(n) * static_cast<double>(cycle_us_) / 1e6; }
+  double written_seconds(std::uint64_t n) const { return written(seconds(n)); }  // in the JSON
 
   std::vector<Channel> channels_;
   bool by_line_ = true;

@@ -35,6 +35,9 @@ class ChannelFrames {
   // when the block starts. An error names what is wrong (ID, message).
   std::expected<FrameChanges, Diagnostic> apply(const nc::Block& b, const motion::AxisVector& mcs_now);
 
+  // The zero-offset list edited (nck serve): a G54..G59 / G159 selected
+  // after this takes the new values, the one in force keeps its own.
+  void set_zero_offsets(const config::ZeroOffsets& zero);
   // Axis j (channel index) is programmed absolutely: pending offsets act.
   void commit_axis(std::size_t j) {
     const int c = to_chain_[j];

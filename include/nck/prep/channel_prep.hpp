@@ -70,7 +70,8 @@ class ChannelPrep {
   // kernel takes one block while it runs for many cycles).
   bool idle(const kernel::CommandQueue& commands, const kernel::FeedbackQueue& feedback, bool channel_done) const {
     return idle_ && idle_->free_slots == commands.free_slots() && idle_->channel_done == channel_done &&
-           feedback.empty() && !(!in_mdi_ && done() && mdi_pending());
+           feedback.empty() && !(!in_mdi_ && done() && mdi_pending()) &&
+           !zero_inbox_->offered.load(std::memory_order_acquire);
   }
   // Plans one decoded block into the queue through the window (feed() uses
   // it; tests call it with blocks of their own). False when the queue has
@@ -92,6 +93,11 @@ class ChannelPrep {
   bool mdi_pending() const { return mdi_->pending.load(std::memory_order_acquire) > 0; }
   // Some MDI text was submitted in this run.
   bool mdi_used() const { return mdi_->used.load(std::memory_order_acquire); }
+  // Any thread: the zero-offset list was edited while the program runs
+  // (nck serve). Blocks decoded from now on select from it, as ISG takes a
+  // new value at the offset's next selection; preparation runs ahead of
+  // the kernel, so a selection it has already decoded keeps the old value.
+  void offer_zero_offsets(config::ZeroOffsets zero);
   // The HLI's block-skip levels (/1 = 0x1 ... /10 = 0x200): blocks decoded
   // from now on skip by them.
   void set_skip_mask(std::uint32_t mask) noexcept {
@@ -158,6 +164,14 @@ class ChannelPrep {
     std::atomic<bool> used{false};
   };
   std::unique_ptr<MdiInbox> mdi_ = std::make_unique<MdiInbox>();
+  // A zero-offset list offered by another thread, taken before decoding.
+  struct ZeroOffsetInbox {
+    std::mutex mutex;
+    config::ZeroOffsets zero;
+    std::atomic<bool> offered{false};
+  };
+  std::unique_ptr<ZeroOffsetInbox> zero_inbox_ = std::make_unique<ZeroOffsetInbox>();
+  void take_zero_offsets();
   bool in_mdi_ = false;
   // The kernel's `stopped` records taken: stamped on every MDI command
   // (kernel::CommandHead::stops_taken).

@@ -59,6 +59,8 @@ class Planner final : public nc::KernelStateReader {
   BlendAxes blend_axes() const { return corner_.blend_axes(axes_); }
   std::size_t axis_count() const { return n_axes_; }
   const ChannelFrames& frames() const { return frames_; }
+  // The zero-offset list edited while the program runs (ChannelPrep::offer_zero_offsets).
+  void set_zero_offsets(const config::ZeroOffsets& zero) { frames_.set_zero_offsets(zero); }
   // The technologies with a home of their own (technologies.hpp).
   const PrepTechnologies& technologies() const { return technologies_; }
   // Where the machine axes stand when everything planned so far has run.

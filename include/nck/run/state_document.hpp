@@ -21,11 +21,14 @@ namespace nck::app {
 struct BlockContext {
   kernel::AffineMap frame;
   std::optional<nc::ModalState> modal;
+  // The coordinate systems the program set (#ACS, #CS): the last `offset`
+  // event of each kind, as an index of the run's offsets (DryRun::offset).
+  std::optional<std::uint32_t> acs_offset, cs_offset;
 };
 using ChannelFrames = std::array<BlockContext, config::kMaxChannels>;
 
-// Takes a block event's map and modal state into its channel's context
-// (other events leave them).
+// Takes a block event's map and modal state, and an #ACS / #CS offset
+// event, into its channel's context (other events leave it).
 void note_block(ChannelFrames& frames, const kernel::Event& e, const sim::DryRun& run);
 
 // Per channel, where it stands in program coordinates and its modal state.

@@ -119,6 +119,9 @@ class DryRun {
   };
   bool has_refusals() const noexcept { return !refusals_.empty(); }
   std::vector<Refusal> take_refusals() { return std::exchange(refusals_, {}); }
+  // Any thread (nck serve's, while this run runs): channel ch's zero-offset
+  // list was edited; blocks preparation decodes from now on select from it.
+  void offer_zero_offsets(std::size_t ch, const config::ZeroOffsets& zero);
   // An operator's action (the Python session; from the thread that runs
   // the cycles): MDI text goes to its channel's preparation when the
   // channel may take it, the rest to the simulated machine's next cycle.

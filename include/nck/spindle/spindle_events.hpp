@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "nck/core/event_head.hpp"
+#include "nck/core/shown_number.hpp"
 #include "nck/spindle/spindle_status.hpp"
 
 namespace nck::spindle {
@@ -33,14 +34,14 @@ template <class Json, class Names>
 void write_json(Json& j, const ModeEvent& e, const EventHead&, const Names& names) {
   j["spindle"] = names.spindle(e.spindle);
   j["mode"] = mode_name(e.mode);
-  j["rpm"] = e.cmd_rpm;
+  j["rpm"] = written(e.cmd_rpm);
   j["gear"] = e.gear;
 }
 
 template <class Json, class Names>
 void write_json(Json& j, const SpeedReachedEvent& e, const EventHead&, const Names& names) {
   j["spindle"] = names.spindle(e.spindle);
-  j["rpm"] = e.act_rpm;
+  j["rpm"] = written(e.act_rpm);
 }
 
 template <class Json, class Names>

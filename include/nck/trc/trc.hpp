@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "nck/core/event_head.hpp"
+#include "nck/core/shown_number.hpp"
 
 namespace nck::trc {
 
@@ -22,7 +23,7 @@ template <class Json, class Names>
 void write_json(Json& j, const TrcChange& e, const EventHead& h, const Names& names) {
   j["state"] = e.mode == RadiusComp::g41 ? "G41" : e.mode == RadiusComp::g42 ? "G42" : "G40";
   j["d"] = e.d;
-  j["radius_mm"] = e.radius_mm;
+  j["radius_mm"] = written(e.radius_mm);
   j["line"] = h.at.line;
   j["file"] = names.file(h.channel_index(), h.at.file_id);
 }

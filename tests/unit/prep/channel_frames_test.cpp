@@ -99,6 +99,22 @@ TEST(ChannelFrames, ZeroOffsetSelection) {
   expect_xyz(r.mcs(0, 0, 0), 0, 0, 0);
 }
 
+// The list edited while the program runs (nck serve): the G54 in force
+// keeps its value, its next selection takes the new one (TF5200: a zero
+// offset's new value acts when the offset is next selected).
+TEST(ChannelFrames, EditedZeroOffsetActsAtItsNextSelection) {
+  FramesRig r("mill");
+  r.load("G54\nG54\nM30\n");
+  r.next();
+  expect_xyz(r.mcs(0, 0, 0), 100, 50, -150);
+  config::ZeroOffsets edited = r.machine.channel_data[0].zero;
+  edited.versch[1][0] = 120;  // G54 X
+  r.frames.set_zero_offsets(edited);
+  expect_xyz(r.mcs(0, 0, 0), 100, 50, -150);
+  r.next();
+  expect_xyz(r.mcs(0, 0, 0), 120, 50, -150);
+}
+
 TEST(ChannelFrames, NewOffsetWaitsUntilItsAxisIsProgrammedAbsolutely) {
   FramesRig r("mill");
   r.load("G54\nM30\n");
