@@ -38,11 +38,15 @@
   }
 
   // The current run's waits from the stream's wait / wait_end events, for
-  // the timeline of who waits for whom (timeline.js). A new run's events
-  // come before the first state that names it (and its clock may start
-  // again at 0): it keeps the waits that arrived after the old run's last
-  // state.
-  let waitsRun = -1, waitsFrom = 0, waitsAtState = 0, timelineDrawn = 0;
+  // the timeline of who waits for whom (timeline.js). The stream's `run`
+  // frame comes before a new run's first event: its waits start afresh, and
+  // the timeline starts at the run's first state or wait (its clock may
+  // start again at 0).
+  let runStart = null, timelineDrawn = 0;
+  function onRun() {
+    hmi.waits.length = 0;
+    runStart = null;
+  }
   function noteWait(e) {
     const same = (w) => w.t1 == null && w.ch === e.ch && w.spindle === e.spindle && w.reason === e.reason && w.fn === e.fn;
     if (e.ev === "wait" && hmi.waits.length < MAX_WAITS)
@@ -53,18 +57,14 @@
     }
   }
   function drawTimeline(s) {
-    if (s.run !== waitsRun) {
-      waitsRun = s.run;
-      hmi.waits.splice(0, waitsAtState);
-      waitsFrom = Math.min(s.t_s, ...hmi.waits.map((w) => w.t0));
-    }
-    waitsAtState = hmi.waits.length;
+    if (runStart == null) runStart = s.t_s;
     const now = performance.now();
     if (now - timelineDrawn < TIMELINE_MS) return;
     timelineDrawn = now;
     $("timeline-section").hidden = !hmi.waits.length;
     if (!hmi.waits.length) return;
-    hmi.timeline = window.NckTimeline.draw($("timeline"), hmi.waits, s.t_s, hmi.panels.map((p) => "channel " + p.n), waitsFrom);
+    const from = Math.min(runStart, ...hmi.waits.map((w) => w.t0));
+    hmi.timeline = window.NckTimeline.draw($("timeline"), hmi.waits, s.t_s, hmi.panels.map((p) => "channel " + p.n), from);
   }
 
   function onEvents(events) {
@@ -141,6 +141,7 @@
     const s = api.stream({
       state: onState,
       events: onEvents,
+      run: onRun,
       connection: (up) => { $("link").textContent = up ? "● live" : "● reconnecting…"; $("link").className = up ? "up" : "down"; },
     });
     hmi.stats = s.stats;

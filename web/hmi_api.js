@@ -54,7 +54,8 @@
     };
   }
 
-  // The stream: `machine` once, then `state` snapshots and `events` batches.
+  // The stream: `machine` once, then `state` snapshots and `events` batches;
+  // `run` before the first event of a new run.
   // Counts snapshots so the page (and its test) can tell the rate it gets.
   function stream(handlers) {
     const stats = { snapshots: 0, since: performance.now(), rate: 0, connected: false };
@@ -65,6 +66,7 @@
       handlers.state(JSON.parse(m.data));
     });
     es.addEventListener("events", (m) => handlers.events(JSON.parse(m.data)));
+    es.addEventListener("run", (m) => handlers.run && handlers.run(JSON.parse(m.data)));
     es.onopen = () => { stats.connected = true; handlers.connection && handlers.connection(true); };
     es.onerror = () => { stats.connected = false; handlers.connection && handlers.connection(false); };
     // the rate over the last second, once a second

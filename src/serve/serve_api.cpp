@@ -347,7 +347,10 @@ HttpReply ServeApi::upload(std::string_view target, std::string_view body) {
 
 // The kernel runs a newer run than the one the server names events with:
 // the old one goes (its preparation thread ends here, never in the kernel).
-void ServeApi::advance() {
+// The kernel took the next run: the server serves it from now on, and the
+// stream says so before any of its events (`event: run`), so a page knows
+// which run an event belongs to without guessing from the states.
+void ServeApi::advance(std::vector<std::string>& frames) {
   std::unique_ptr<sim::DryRun> old = kernel_.take_retired();
   old.reset();
   serving_ = kernel_.current();
@@ -355,21 +358,29 @@ void ServeApi::advance() {
   frames_ = ChannelFrames{};
   last_errors_ = LastErrors{};  // a new run starts without an error
   path_.clear();
+  frames.push_back(replay_.number(fmt::format("event: run\ndata: {{\"run\":{}}}\n\n", generation_), true));
 }
 
 void ServeApi::drain_events(std::vector<std::string>& frames) {
   std::string batch;
+  const auto flush = [&] {
+    if (!batch.empty()) frames.push_back(replay_.number(fmt::format("event: events\ndata: {}]\n\n", batch), true));
+    batch.clear();
+  };
   auto& q = kernel_.events();
   for (; !q.empty(); q.pop()) {
     const LiveEvent& le = q.front();
-    if (le.generation > generation_) advance();  // every event of the old run came before
+    if (le.generation > generation_) {  // every event of the old run came before
+      flush();
+      advance(frames);
+    }
     const kernel::Event& e = le.event;
     last_errors_.take(e, RunNames{serving_});
     note_block(frames_, e, *serving_);
     batch += batch.empty() ? "[" : ",";
     batch += EventWriter::line(e, RunNames{serving_});
   }
-  if (!batch.empty()) frames.push_back(replay_.number(fmt::format("event: events\ndata: {}]\n\n", batch), true));
+  flush();
 }
 
 void ServeApi::collect(std::vector<std::string>& frames) {
@@ -377,7 +388,7 @@ void ServeApi::collect(std::vector<std::string>& frames) {
   if (!kernel_.take_snapshot()) return;
   if (kernel_.snapshot().generation > generation_) {
     drain_events(frames);  // the old run's last events first
-    if (kernel_.snapshot().generation > generation_) advance();
+    if (kernel_.snapshot().generation > generation_) advance(frames);
   }
   last_ = kernel_.snapshot();
   path_.take(last_, machine_, channel_places(last_, machine_, frames_));

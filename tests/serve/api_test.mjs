@@ -348,6 +348,26 @@ async function streamIds(s) {
         replayed[0].data === last.data, again.text.slice(0, 300));
 }
 
+// A new run is announced before its first event (`event: run`), so a page
+// knows which run an event belongs to: its number is the one the states
+// name from then on, and the program's first block event comes after it.
+async function runFrames(s) {
+  await request(s, "POST", "/api/v1/upload?name=runframe.nc", { body: "N10 G91 G1 X1 F6000\nN20 M30\n" });
+  const load = await command(s, { command: "load", program: "runframe.nc" });
+  const stream = readStream(s, 1500);
+  await sleep(200);
+  const start = await command(s, { command: "cycle_start" });
+  const seen = frames((await stream).text);
+  const at = seen.findIndex((f) => f.event === "run");
+  const run = at >= 0 ? JSON.parse(seen[at].data.split("data: ")[1]).run : null;
+  const after = seen.slice(at + 1);
+  const state = after.find((f) => f.event === "state");
+  const block = after.findIndex((f) => f.event === "events" && f.data.includes('"ev":"block"'));
+  check("a cycle start's run is announced: event run, then its events, states name it",
+        load.status === 200 && start.status === 200 && Number.isInteger(run) && block >= 0 && !Number.isNaN(seen[at].id) &&
+        state && JSON.parse(state.data.split("data: ")[1]).run === run, seen.map((f) => f.event).join(","));
+}
+
 // Issue 48 item 6: the loaded program's path before cycle start. An
 // uploaded square with a G0 approach and a half circle: its points in
 // machine and program coordinates, the G0 marked, each with its line.
@@ -439,6 +459,7 @@ async function main() {
     await origins(s);
     await files(s);
     await preview(s);
+    await runFrames(s);
     await rate(s);
     freshAgent();
     await clients(s);

@@ -74,7 +74,7 @@ class ServeApi : public ApiHandler {
   std::optional<std::size_t> busy_channel() const;
   std::string state_frame();
   void drain_events(std::vector<std::string>& frames);
-  void advance();
+  void advance(std::vector<std::string>& frames);
   void seed_state();
 
   config::Machine machine_;  // the server's copy: offset and tool edits change it, the next run takes it
