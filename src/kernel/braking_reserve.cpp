@@ -24,11 +24,11 @@ double entry_speed(const Motion& m, double v_exit_mm_s, double dt_s) noexcept {
 // lower what it cannot brake from, back along the queue until a planned
 // end speed holds again (usually one or two blocks).
 double jerk_reserve_end_speed(const Motion& current, const CommandQueue& queued, double dt_s,
-                              std::size_t first) noexcept {
+                              std::size_t first, std::size_t end) noexcept {
   const double planned = current.v_end_mm_s;
   std::array<const Motion*, kCommandQueueLength> chain{};
   std::size_t n = 0;
-  for (std::size_t i = first; i < queued.size() && n < chain.size(); ++i) {
+  for (std::size_t i = first; i < end && n < chain.size(); ++i) {
     const Command& c = queued.at(i);
     if (c.is<Nop>()) continue;
     const Motion* m = c.as<Motion>();
@@ -47,18 +47,19 @@ double jerk_reserve_end_speed(const Motion& current, const CommandQueue& queued,
 
 }  // namespace
 
-double reserve_end_speed(const Motion& current, const CommandQueue& queued, double dt_s, std::size_t first) noexcept {
+double reserve_end_speed(const Motion& current, const CommandQueue& queued, double dt_s, std::size_t first,
+                         std::size_t end) noexcept {
   const double planned = current.v_end_mm_s;
   if (!(planned > 0.0)) return 0.0;
-  if (jerk_limited(current.limits.slope)) return jerk_reserve_end_speed(current, queued, dt_s, first);
+  end = std::min(end, queued.size());
+  if (jerk_limited(current.limits.slope)) return jerk_reserve_end_speed(current, queued, dt_s, first, end);
   double a_mm_s2 = current.limits.a_dec_mm_s2;  // the gentlest deceleration of the chain
   double length_mm = 0.0;                       // queued path to stop within
   // Braking across its end, the path passes on no faster than its staircase allows there.
   const double passing = current.brake_beyond_mm > 0.0
                              ? std::min(planned, motion::discrete_brake_velocity(current.brake_beyond_mm, a_mm_s2, dt_s))
                              : planned;
-  const std::size_t n = queued.size();
-  for (std::size_t i = first; i < n; ++i) {
+  for (std::size_t i = first; i < end; ++i) {
     const Command& c = queued.at(i);
     if (c.is<Nop>()) continue;  // a block without motion: the path passes through it
     // Anything else than a motion was planned with a stop before it.

@@ -41,13 +41,14 @@ motion::PathLimits merged(const motion::PathLimits& a, const motion::PathLimits&
 
 HscChain hsc_chain(const Motion& current, double length_mm, const CommandQueue& queued, double dt_s) noexcept {
   HscChain h;
-  h.queued_seen = queued.size();
+  const std::size_t seen = chain_view(queued);
+  h.queued_seen = seen;
   const double v_cruise = cruise_of(current);
   motion::PathChain c{length_mm, current.limits, 0.0};
   const Motion* last = &current;
   std::size_t after_last = 0;  // index in queued of the first command after `last`
   std::size_t members = 1;
-  for (std::size_t i = 0; i < queued.size(); ++i) {
+  for (std::size_t i = 0; i < seen; ++i) {
     const Command& cmd = queued.at(i);
     if (cmd.is<Nop>()) continue;
     const Motion* m = cmd.as<Motion>();
@@ -61,10 +62,10 @@ HscChain hsc_chain(const Motion& current, double length_mm, const CommandQueue& 
   // Everything queued after `last` is blocks without motion (or nothing):
   // the queue ends inside the chain's reach, a stop until more comes.
   bool more = false;
-  for (std::size_t i = after_last; i < queued.size() && !more; ++i) more = !queued.at(i).is<Nop>();
+  for (std::size_t i = after_last; i < seen && !more; ++i) more = !queued.at(i).is<Nop>();
   h.open = !more;
   if (members == 1) return h;  // nothing joins (yet): the motion's own plan
-  c.v_end_mm_s = more ? std::min(last->v_end_mm_s, reserve_end_speed(*last, queued, dt_s, after_last)) : 0.0;
+  c.v_end_mm_s = more ? std::min(last->v_end_mm_s, reserve_end_speed(*last, queued, dt_s, after_last, seen)) : 0.0;
   // Lowered by the braking reserve: raised again as preparation queues more.
   h.open = h.open || c.v_end_mm_s < last->v_end_mm_s;
   h.chain = c;

@@ -16,8 +16,10 @@ namespace nck::kernel {
 // to standstill within them; otherwise the speed from which the path stops
 // within the queued motions (0 without any). rt
 // `first`: where in `queued` the commands after `current` begin (HSC asks
-// for the last motion of a chain, which is queued itself).
+// for the last motion of a chain, which is queued itself); `end`: the
+// commands looked at end there (a chain's horizon; past the queue's end:
+// the whole queue).
 double reserve_end_speed(const Motion& current, const CommandQueue& queued, double dt_s,
-                         std::size_t first = 0) noexcept;
+                         std::size_t first = 0, std::size_t end = kCommandQueueLength) noexcept;
 
 }  // namespace nck::kernel

@@ -7,6 +7,7 @@
 // Under TRAPEZ the spans of one smoothed polyline chain the same
 // way (docs/decisions.md, "Smoothing fine chords"): together they are one
 // curve, as a spline through the programmed points is on an ISG control.
+#include <algorithm>
 #include <cstddef>
 
 #include "nck/kernel/command.hpp"
@@ -15,13 +16,22 @@
 
 namespace nck::kernel {
 
+// How far into the queue a chain looks (commands). Preparation keeps at
+// least kMaxLookAheadDepth commands queued before each cycle whether it
+// runs in its own thread or not, but how many more it has queued depends
+// on when it ran; a chain that looked at all of them would differ between
+// the two (`--prep-thread` equals the plain run). The margin covers the
+// commands a cycle takes before a chain is planned (blocks without motion
+// take no cycle of their own).
+inline constexpr std::size_t kChainHorizon = kMaxLookAheadDepth - 16;
+
 struct HscChain {
   motion::PathChain chain{};  // length 0: the motion alone (no successor joins)
   // The chain reaches the end of the queue: more queued commands may make
   // it longer (and its end faster), so it is looked at again when the
   // queue grows (also while no motion has joined yet).
   bool open = false;
-  std::size_t queued_seen = 0;  // queued.size() when it was built
+  std::size_t queued_seen = 0;  // the commands it looked at: queued.size(), at most kChainHorizon
 };
 
 // The chain that starts with `current` (length_mm of its segment, cruise
@@ -39,5 +49,7 @@ bool chains_as_spline(const Motion& m) noexcept;
 bool chains(const Motion& m) noexcept;
 
 HscChain hsc_chain(const Motion& current, double length_mm, const CommandQueue& queued, double dt_s) noexcept;
+// The commands of `queued` a chain looks at. rt
+inline std::size_t chain_view(const CommandQueue& queued) noexcept { return std::min(queued.size(), kChainHorizon); }
 
 }  // namespace nck::kernel

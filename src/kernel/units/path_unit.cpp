@@ -106,7 +106,7 @@ void PathUnit::reset() noexcept {
 // HSC chain that reaches the end of the queue grows the same way.
 void PathUnit::keep_braking_reserve(const Motion& m, const CommandQueue& queued, double dt_s) noexcept {
   if (hsc_open_) {
-    if (queued.size() == hsc_seen_) return;  // nothing new: the chain stays
+    if (chain_view(queued) == hsc_seen_) return;  // nothing new within its view: the chain stays
     const bool was_chained = hsc_chained_;
     const HscChain h = hsc_chain(m, segment_.length(), queued, dt_s);  // more queued: it may reach further
     note_chain(h);
