@@ -56,9 +56,11 @@ TEST(DiffPath, DifferenceAtARevisitedPlaceIsFound) {
   EXPECT_EQ(path["largest"][0]["line_a"], 5) << path.dump(1);
   EXPECT_NEAR(path["largest"][0]["a"][2].get<double>(), -3, 1e-3) << path.dump(1);
   EXPECT_NEAR(path["largest"][0]["b"][2].get<double>(), -2.5, 1e-3) << path.dump(1);
-  for (std::size_t i = 1; i < path["largest"].size(); ++i)  // the other lines of A: on B's path
-    if (path["largest"][i]["line_a"] != 7 && path["largest"][i]["line_a"] != 6)
+  for (std::size_t i = 1; i < path["largest"].size(); ++i) {  // the other lines of A: on B's path
+    if (path["largest"][i]["line_a"] != 7 && path["largest"][i]["line_a"] != 6) {
       EXPECT_LE(path["largest"][i]["distance_mm"].get<double>(), 1e-3) << path.dump(1);
+    }
+  }
 }
 
 }  // namespace
