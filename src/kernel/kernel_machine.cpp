@@ -33,4 +33,8 @@ bool Kernel::estop_latched(std::size_t ch) const noexcept {
   return ch < channels_.size() && channels_[ch]->estop_latched();
 }
 
+bool Kernel::amp_fault_latched(std::size_t ch) const noexcept {
+  return ch < channels_.size() && channels_[ch]->amp_fault_latched();
+}
+
 }  // namespace nck::kernel

@@ -181,12 +181,15 @@ std::optional<Diagnostic> DryRun::mdi(std::size_t ch, const std::string& text, k
   auto refused = [&](std::string_view why) {
     return make_diagnostic(ErrorId::KernelMdiRefused, loc, fmt::format("MDI '{}' refused: channel {} {}", text, ch + 1, why));
   };
-  // E-stop or machine off: refused with their IDs (the kernel would drop it).
+  // E-stop, machine off or an amplifier fault: refused with their IDs (the kernel would drop it).
   const kernel::MachineOutput& machine = kernel_->machine_state();
   if (machine.estop || kernel_->estop_latched(ch))
     return make_diagnostic(ErrorId::KernelEstopRefused, loc, fmt::format("MDI '{}' refused: the E-stop is active or not reset", text));
   if (!machine.machine_on)
     return make_diagnostic(ErrorId::KernelMachineOffRefused, loc, fmt::format("MDI '{}' refused: the machine is off", text));
+  if (kernel_->amp_fault_latched(ch))
+    return make_diagnostic(ErrorId::KernelAmpFaultRefused, loc,
+                           fmt::format("MDI '{}' refused: an amplifier fault is on or not reset", text));
   braking_[ch] = braking_[ch] && !kernel_->channel_done(ch);
   if (braking_[ch]) return refused("brakes after a reset");
   const bool idle = st == kernel::ProgramState::idle || st == kernel::ProgramState::ended;

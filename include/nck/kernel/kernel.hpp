@@ -106,6 +106,8 @@ class Kernel {
   const MachineOutput& machine_state() const noexcept { return machine_out_; }
   // Channel ch keeps an E-stop latched until its reset after the release.
   bool estop_latched(std::size_t ch) const noexcept;
+  // Channel ch keeps an amplifier fault latched until its reset after it went off.
+  bool amp_fault_latched(std::size_t ch) const noexcept;
   // Simulated time at the start of the next cycle.
   double time_s() const noexcept { return time_s_; }
 
