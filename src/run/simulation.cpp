@@ -235,7 +235,7 @@ void Simulation::record_events(const kernel::TickOutput& o) {
   for (const kernel::Event& e : o.events) {
     out_.summary.take(e);
     out_.last_errors.take(e, names_);
-    note_block(out_.blocks, e, *run_);
+    note_event(out_.blocks, e, *run_);
     if (out_.wants_events()) {
       if (e.kind() == kernel::EventKind::block) out_.event_line(e, block_text_.line(e, names_), names_);
       else out_.event(e, names_);

@@ -124,7 +124,7 @@ nlohmann::ordered_json state_json(const LiveSnapshot& s, const config::Machine& 
           {"last_error", errors ? errors->latest() : json()}};
 }
 
-void note_block(ChannelFrames& frames, const kernel::Event& e, const sim::DryRun& run) {
+void note_event(ChannelFrames& frames, const kernel::Event& e, const sim::DryRun& run) {
   if (e.channel < 1 || static_cast<std::size_t>(e.channel) > frames.size()) return;
   BlockContext& b = frames[e.channel - 1u];
   if (const auto* o = e.get<nck::frames::OffsetEvent>()) {

@@ -376,7 +376,7 @@ void ServeApi::drain_events(std::vector<std::string>& frames) {
     }
     const kernel::Event& e = le.event;
     last_errors_.take(e, RunNames{serving_});
-    note_block(frames_, e, *serving_);
+    note_event(frames_, e, *serving_);
     batch += batch.empty() ? "[" : ",";
     batch += EventWriter::line(e, RunNames{serving_});
   }

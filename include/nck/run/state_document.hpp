@@ -29,7 +29,7 @@ using ChannelFrames = std::array<BlockContext, config::kMaxChannels>;
 
 // Takes a block event's map and modal state, and an #ACS / #CS offset
 // event, into its channel's context (other events leave it).
-void note_block(ChannelFrames& frames, const kernel::Event& e, const sim::DryRun& run);
+void note_event(ChannelFrames& frames, const kernel::Event& e, const sim::DryRun& run);
 
 // Per channel, where it stands in program coordinates and its modal state.
 struct ChannelPlace {
