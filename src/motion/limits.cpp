@@ -89,25 +89,19 @@ void add_cubic_curve(PathLimits& out, const Segment& seg, std::span<const AxisDy
   }
   std::array<double, kSamples + 1> kappa{};
   AxisVector t0{}, t1{};
-  auto unit_tangent = [&](double s, AxisVector& t) {
+  auto tangent_length = [&](double s, AxisVector& t) {
     seg.tangent_at(s, t);
-    double sq = 0;
-    for (std::size_t k = 0; k < 3; ++k)
-      if (!seg.cubic_axis_repeats(k)) sq += t[seg.cubic_axis(k)] * t[seg.cubic_axis(k)];
-    return std::sqrt(sq);
+    return seg.cubic_norm([&](std::size_t k) { return t[seg.cubic_axis(k)]; });
   };
   for (int n = 0; n <= kSamples; ++n) {
     const double s = n * step, h = 0.25 * step;
     const double a = std::max(s - h, 0.0), b = std::min(s + h, len);
-    const double speed0 = unit_tangent(a, t0), speed1 = unit_tangent(b, t1);
-    double sq = 0;
-    for (std::size_t k = 0; k < 3; ++k) {
-      if (seg.cubic_axis_repeats(k)) continue;
+    const double speed0 = tangent_length(a, t0), speed1 = tangent_length(b, t1);
+    const double turn = seg.cubic_norm([&](std::size_t k) {
       const std::size_t i = seg.cubic_axis(k);
-      const double d = t1[i] / speed1 - t0[i] / speed0;
-      sq += d * d;
-    }
-    kappa[static_cast<std::size_t>(n)] = std::sqrt(sq) / (0.5 * (speed0 + speed1) * (b - a));
+      return t1[i] / speed1 - t0[i] / speed0;
+    });
+    kappa[static_cast<std::size_t>(n)] = turn / (0.5 * (speed0 + speed1) * (b - a));
   }
   double kappa_max = 0, jerk_shape = 0;  // max kappa, max sqrt(kappa'^2 + kappa^4)
   for (std::size_t n = 0; n <= kSamples; ++n) {

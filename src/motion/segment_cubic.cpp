@@ -31,15 +31,9 @@ struct Bezier {
 
 double Segment::cubic_parameter(double f, double* slope) const noexcept {
   // |B'(0)| = 3 |P1 - P0|, |B'(1)| = 3 |P3 - P2| over the distinct axes.
-  double start_sq = 0, end_sq = 0;
-  for (std::size_t k = 0; k < 3; ++k) {
-    if (cubic_axis_repeats(k)) continue;
-    const std::size_t i = cubic_axis(k);
-    const double a = cubic_p1(k) - start_[i], b = end_[i] - cubic_p2(k);
-    start_sq += a * a;
-    end_sq += b * b;
-  }
-  const double h0 = length_mm_ / (3.0 * std::sqrt(start_sq)), h1 = length_mm_ / (3.0 * std::sqrt(end_sq));
+  const double start_leg = cubic_norm([&](std::size_t k) { return cubic_p1(k) - start_[cubic_axis(k)]; });
+  const double end_leg = cubic_norm([&](std::size_t k) { return end_[cubic_axis(k)] - cubic_p2(k); });
+  const double h0 = length_mm_ / (3.0 * start_leg), h1 = length_mm_ / (3.0 * end_leg);
   const double g = 1.0 - f;
   // h(f) = f + (h0 - 1) f (1 - f)^2 - (h1 - 1) f^2 (1 - f)
   if (slope) *slope = 1.0 + (h0 - 1.0) * g * (1.0 - 3.0 * f) - (h1 - 1.0) * f * (2.0 - 3.0 * f);
@@ -102,14 +96,10 @@ std::optional<Segment> make_cubic(const AxisVector& start, const CubicControl& c
     if (c.axis[k] >= n_axes || !std::isfinite(c.p1[k]) || !std::isfinite(c.p2[k])) return std::nullopt;
   // |B'(u)| over the distinct axes.
   auto speed = [&](double u) {
-    double sq = 0;
-    for (std::size_t k = 0; k < 3; ++k) {
+    return seg.cubic_norm([&](std::size_t k) {
       const std::size_t i = c.axis[k];
-      if ((k > 0 && i == c.axis[0]) || (k > 1 && i == c.axis[1])) continue;
-      const double d = Bezier{start[i], c.p1[k], c.p2[k], end[i]}.slope(u);
-      sq += d * d;
-    }
-    return std::sqrt(sq);
+      return Bezier{start[i], c.p1[k], c.p2[k], end[i]}.slope(u);
+    });
   };
   // Arc length: Gauss-Legendre, five points on each half.
   static constexpr double kNode[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,

@@ -8,6 +8,7 @@
 // returns the programmed end point exactly, so the path ends where the
 // program says, bit for bit.
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <expected>
@@ -133,6 +134,18 @@ class Segment {
   // Whether cubic_axis(k) repeats an earlier one (fewer than three move).
   bool cubic_axis_repeats(std::size_t k) const noexcept {
     return (k > 0 && cubic_axis(k) == cubic_axis(0)) || (k > 1 && cubic_axis(k) == cubic_axis(1));
+  }
+  // Cubic: the length of the vector with component of_axis(k) on each of
+  // its distinct axes k (a repeated axis counts once).
+  template <class OfAxis>
+  double cubic_norm(OfAxis of_axis) const noexcept {
+    double sq = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (cubic_axis_repeats(k)) continue;
+      const double x = of_axis(k);
+      sq += x * x;
+    }
+    return std::sqrt(sq);
   }
 
  private:
