@@ -180,14 +180,12 @@ void Kernel::start_channel_at(std::size_t ch, const motion::AxisVector& path_mcs
   channels_.at(ch)->start_at(path_mcs);
 }
 
-void Kernel::set_homed_axes(std::size_t ch, std::uint32_t mask) { channels_.at(ch)->homing().set_homed(mask); }
+void Kernel::set_homed_axes(std::size_t ch, std::uint32_t mask) noexcept {
+  if (ch < channels_.size()) channels_[ch]->homing().set_homed(mask);
+}
 
 std::uint32_t Kernel::homed_axes(std::size_t ch) const noexcept {
   return ch < channels_.size() ? channels_[ch]->homing().homed() : 0u;
-}
-
-void Kernel::carry_homed_axes(std::size_t ch, std::uint32_t mask) noexcept {
-  if (ch < channels_.size()) channels_[ch]->homing().set_homed(mask);
 }
 
 void Kernel::name_unhomed_axis(std::size_t ch, std::size_t j, std::uint32_t message) {

@@ -57,7 +57,7 @@ std::expected<DryRun, Diagnostic> DryRun::create(const config::Machine& m,
 
 void DryRun::carry_homing(const DryRun& before) noexcept {
   const std::size_t n = std::min(kernel_->channel_count(), before.kernel_->channel_count());
-  for (std::size_t ch = 0; ch < n; ++ch) kernel_->carry_homed_axes(ch, before.kernel_->homed_axes(ch));
+  for (std::size_t ch = 0; ch < n; ++ch) kernel_->set_homed_axes(ch, before.kernel_->homed_axes(ch));
 }
 
 DryRun::~DryRun() { stop_preparation(); }

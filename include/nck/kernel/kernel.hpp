@@ -78,14 +78,12 @@ class Kernel {
   ChannelState channel_state(std::size_t ch) const;
   // setup: channel ch's path stands at path_mcs before its program starts.
   void start_channel_at(std::size_t ch, const motion::AxisVector& path_mcs);
-  // setup: which of channel ch's path axes are homed (bit j = axis j;
-  // without a call: all, as the dry run assumes).
-  void set_homed_axes(std::size_t ch, std::uint32_t mask);
+  // Which of channel ch's path axes are homed (bit j = axis j; without a
+  // call: all, as the dry run assumes; no such channel: nothing). At setup,
+  // or between runs of a live session before this kernel's first tick. rt
+  void set_homed_axes(std::size_t ch, std::uint32_t mask) noexcept;
   // Channel ch's homed axes (bit j = path axis j; 0 for no such channel). rt
   std::uint32_t homed_axes(std::size_t ch) const noexcept;
-  // Between runs of a live session, before this kernel's first tick: as
-  // set_homed_axes, without throwing (no such channel: nothing). rt
-  void carry_homed_axes(std::size_t ch, std::uint32_t mask) noexcept;
   // setup: the message (Kernel::message index) naming axis j of channel ch
   // when its unhomed motion is refused (930740); without it, the ID's text.
   void name_unhomed_axis(std::size_t ch, std::size_t j, std::uint32_t message);
