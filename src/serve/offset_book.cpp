@@ -111,9 +111,11 @@ json OffsetBook::tables_json(const config::Machine& m) const {
     for (std::size_t n = 1; n < d.tools.size(); ++n) {
       const config::ToolRecord& t = d.tools[n];
       if (!t.given) continue;
+      // The speeds at 1e-6 rpm: the list's unit, 0.001°/s, is 1/6000 rpm,
+      // finer than a position's step (a vb_max of 1 would read 0.0002).
       tools.push_back({{"tool", n}, {"length_mm", shown(t.length_mm)}, {"radius_mm", shown(t.radius_mm)},
-                       {"spindle", t.log_ax_nr_spdl}, {"vb_min_rpm", shown(t.vb_min_rpm)},
-                       {"vb_max_rpm", shown(t.vb_max_rpm)}, {"a_max_deg_s2", shown(t.a_max_deg_s2)}});
+                       {"spindle", t.log_ax_nr_spdl}, {"vb_min_rpm", written(t.vb_min_rpm)},
+                       {"vb_max_rpm", written(t.vb_max_rpm)}, {"a_max_deg_s2", shown(t.a_max_deg_s2)}});
     }
     channels.push_back({{"channel", ch + 1}, {"axes", std::move(axes)}, {"zero", std::move(zero)},
                         {"clamp", std::move(clamp)}, {"tools", std::move(tools)},

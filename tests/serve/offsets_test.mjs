@@ -51,6 +51,8 @@ async function edits(s) {
   const tool = await post(s, "/api/v1/tools/1", { length_mm: 101.25, radius_mm: 5.5 });
   const t1 = (await tables(s)).tools.find((t) => t.tool === 1);
   check("a tool edit: D1 length and radius", tool.status === 200 && t1.length_mm === 101.25 && t1.radius_mm === 5.5, tool.body);
+  check("D1's vb_max of 1 (0.001 deg/s) reads 1/6000 rpm, not rounded to 0.0002", Math.abs(t1.vb_max_rpm - 1 / 6000) < 1e-6,
+        JSON.stringify(t1));
   const t99 = await post(s, "/api/v1/tools/99", { length_mm: 1 });
   check("a tool the list does not have: 404 with 940330", t99.status === 404 && errorId(t99) === 940330, t99.body);
   const vb = await post(s, "/api/v1/tools/5", { vb_min_rpm: 900 });
