@@ -2,8 +2,9 @@
 // nck_cia402_sim count=N), so that nck's CiA 402 pins can be tried and
 // tested without EtherCAT hardware (lcec is not in Debian). Each instance is
 // a drives::IdealDrive, the simulated machine's drive: the controlword
-// steps its power state machine, and while operation is enabled it stands
-// exactly at the target position. Its `fault` input holds a drive fault.
+// steps its power state machine, and while operation is enabled it follows
+// its mode exactly (position, velocity, homing: nck/drives/ideal_drive.hpp).
+// Its `fault` input holds a drive fault.
 //
 //   nck-cia402-sim.K.controlword   u32   in   0x6040 from nck.axis.<A>.cia-controlword
 //   nck-cia402-sim.K.opmode        s32   in   0x6060
@@ -51,7 +52,7 @@ int comp_id = -1;
 SimDrive* pins = nullptr;  // in HAL's shared memory (hal_malloc)
 nck::drives::IdealDrive drives[kMaxCount];
 
-void update(void*, long) {
+void update(void*, long period_ns) {
   for (int k = 0; k < count; ++k) {
     SimDrive& p = pins[k];
     nck::drives::DriveCommand cmd;
@@ -59,7 +60,7 @@ void update(void*, long) {
     cmd.mode_of_operation = static_cast<std::int8_t>(*p.opmode);
     cmd.target_pos = *p.pos_cmd;
     cmd.target_vel = *p.vel_cmd;
-    const nck::drives::DriveFeedback& fb = drives[k].step(cmd, *p.fault);
+    const nck::drives::DriveFeedback& fb = drives[k].step(cmd, *p.fault, static_cast<double>(period_ns) * 1e-9);
     *p.statusword = fb.statusword;
     *p.opmode_display = fb.mode_display;
     *p.pos_fb = fb.actual_pos;

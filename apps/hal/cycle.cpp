@@ -49,10 +49,10 @@ bool Cycle::build(Link& link, std::string& error) {
     const auto& axes = machine_->channels[ch].axes;
     for (std::size_t j = 0; j < axes.size() && j < kMaxAxes; ++j) {
       const int index = axes[j].axis_index;
-      const bool cia = index >= 0 && static_cast<std::size_t>(index) < drives::kMaxDrives &&
-                       machine_->axes[static_cast<std::size_t>(index)].is_cia402();
       const bool listed = index >= 0 && static_cast<std::size_t>(index) < drives::kMaxDrives;
-      axes_.push_back({ch, j, axes[j].name, cia ? index : -1, listed ? index : -1});
+      const config::AxisConfig* ax = listed ? &machine_->axes[static_cast<std::size_t>(index)] : nullptr;
+      const bool talks = ax != nullptr && (ax->is_cia402() || ax->is_conventional());
+      axes_.push_back({ch, j, axes[j].name, talks ? index : -1, ax != nullptr && ax->is_cia402(), listed ? index : -1});
     }
   }
   for (auto& s : plc_slots_) s.handle = plc::kNoHandle;
@@ -132,12 +132,22 @@ void Cycle::read_drives() noexcept {
     if (axes_[i].drive < 0) continue;
     const CiaPins& c = cia_pins[i];
     drives::DriveFeedback& fb = in_->drives[static_cast<std::size_t>(axes_[i].drive)];
+    fb.actual_pos = **axis_pins[i].pos_fb;
+    if (!axes_[i].cia402) continue;  // a conventional drive reports its position only
     fb.statusword = static_cast<std::uint16_t>(**c.statusword);
     fb.mode_display = static_cast<std::int8_t>(**c.opmode_display);
     fb.fault = (fb.statusword & drives::cia402::sw::fault) != 0;
-    fb.actual_pos = **axis_pins[i].pos_fb;
     fb.actual_vel = **c.vel_fb;
     fb.following_error = **axis_pins[i].following_error;
+  }
+  for (const SpindleDrivePins& p : spindle_drive_pins) {
+    if (p.drive < 0) continue;
+    drives::DriveFeedback& fb = in_->drives[static_cast<std::size_t>(p.drive)];
+    fb.statusword = static_cast<std::uint16_t>(**p.words.statusword);
+    fb.mode_display = static_cast<std::int8_t>(**p.words.opmode_display);
+    fb.fault = (fb.statusword & drives::cia402::sw::fault) != 0;
+    fb.actual_pos = **p.pos_fb;
+    fb.actual_vel = **p.words.vel_fb;
   }
 }
 
@@ -179,6 +189,7 @@ void Cycle::read_pins() noexcept {
     f.valid = **p.feedback_valid;
     f.actual_speed_deg_s = **p.speed_in_rpm * 6.0;  // rpm -> deg/s
     f.actual_pos_deg = **p.revolutions * 360.0;
+    if (p.axis_list >= 0) in_->axes[static_cast<std::size_t>(p.axis_list)].amp_fault = **p.amp_fault;
   }
   for (std::size_t k = 0; k < kPlcSlots; ++k) {
     const PlcPins& p = plc_pins[k];
@@ -238,10 +249,11 @@ void Cycle::write_pins() noexcept {
     if (a.drive < 0 || i >= cia_pins.size()) continue;
     const drives::DriveCommand& d = out_->drives[static_cast<std::size_t>(a.drive)];
     const CiaPins& c = cia_pins[i];
-    **c.controlword = d.controlword;
-    **c.opmode = d.mode_of_operation;
     **c.vel_cmd = d.target_vel;
     **p.enable = on && d.enable;
+    if (!a.cia402) continue;
+    **c.controlword = d.controlword;
+    **c.opmode = d.mode_of_operation;
   }
   for (std::size_t ch = 0; ch < channel_count(); ++ch) {
     const kernel::ChannelOutput& o = out_->channels[ch];
@@ -256,6 +268,15 @@ void Cycle::write_pins() noexcept {
     **p.speed_cmd_rpm = out_->spindles[s].set_rpm;
     **p.pos_cmd_deg = out_->spindles[s].set_pos_deg;
     **p.at_speed = out_->hli_spindles[s].speed_reached;
+    **p.homed = kernel_.spindle_status(s).homed;
+  }
+  for (const SpindleDrivePins& p : spindle_drive_pins) {
+    if (p.drive < 0) continue;
+    const drives::DriveCommand& d = out_->drives[static_cast<std::size_t>(p.drive)];
+    **p.words.controlword = d.controlword;
+    **p.words.opmode = d.mode_of_operation;
+    **p.words.vel_cmd = d.target_vel;
+    **p.pos_cmd = d.target_pos;
   }
 }
 

@@ -46,6 +46,16 @@ struct ChannelPins {  // nck.channel.<n>.*
 struct SpindlePins {  // nck.spindle.<name>.*
   PinFloat speed_cmd_rpm, pos_cmd_deg, speed_in_rpm, revolutions;
   PinBit feedback_valid, orient, at_speed;
+  PinBit homed;  // out: the spindle's reference is known (G74)
+  PinBit amp_fault;  // in: its amplifier fault (TickInput::axes of its axis list)
+  int axis_list = -1;  // its machine axis list, -1 none
+};
+// A spindle whose drive is CiA 402: its words and the drive's own
+// (continuous, never wrapped) target and actual position, deg and deg/s.
+struct SpindleDrivePins {  // nck.spindle.<name>.cia-*, drive-*
+  CiaPins words;
+  PinFloat pos_cmd, pos_fb;
+  int drive = -1;  // its machine axis list (the drive slot); -1: no CiA 402 drive
 };
 inline constexpr std::size_t kPlcSlots = 8;
 struct PlcPins {  // nck.plc.<k>.*
@@ -74,7 +84,8 @@ struct CycleClocks {
 struct AxisRef {  // one nck.axis.* pin group: its channel and channel axis
   std::size_t channel = 0, axis = 0;
   std::string name;
-  int drive = -1;  // its machine axis list (the drive slot) when the drive is CiA 402
+  int drive = -1;  // its machine axis list (the drive slot) when the NC talks to its drive (antr_typ 8 or 1)
+  bool cia402 = false;  // that drive is CiA 402 (else conventional: a velocity set point only)
   int machine = -1;  // its machine axis list (TickInput::axes: amplifier fault, limit switches)
 };
 
@@ -89,12 +100,14 @@ class Cycle {
   std::size_t channel_count() const { return machine_->channels.size(); }
   std::size_t spindle_count() const { return kernel_.spindle_count(); }
   const std::string& spindle_name(std::size_t i) const { return kernel_.spindle_name(i); }
+  int spindle_axis_list(std::size_t i) const { return kernel_.spindle_axis_list(i); }
 
   // The pins, set before the first run().
   std::vector<AxisPins> axis_pins;
-  std::vector<CiaPins> cia_pins;  // beside axis_pins; set where AxisRef::drive >= 0
+  std::vector<CiaPins> cia_pins;  // beside axis_pins; words where AxisRef::cia402, vel_cmd where drive >= 0
   std::vector<ChannelPins> channel_pins;
   std::vector<SpindlePins> spindle_pins;
+  std::vector<SpindleDrivePins> spindle_drive_pins;  // beside spindle_pins
   std::array<PlcPins, kPlcSlots> plc_pins{};
   MachinePins machine_pins{};
   CycleClocks clocks{};

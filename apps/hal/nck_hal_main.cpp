@@ -35,7 +35,8 @@ int fail(nck::ErrorId id, const std::string& what) {
 }
 
 // One event as a line: its kind, and what a commissioning engineer needs
-// of a wait (the reason) and of an error or warning (the ID, the axis).
+// of a wait (the reason), of an error or warning (the ID, the axis) and of
+// a drive's mode (the axis, the mode).
 void print_event(const nck::kernel::Event& e, const nck::config::Machine& m) {
   std::string what = nck::kernel::event_name(e.kind());
   if (const auto* w = e.get<nck::kernel::ev::Wait>()) what = fmt::format("wait reason={}", nck::kernel::wait_reason_name(w->reason));
@@ -43,9 +44,11 @@ void print_event(const nck::kernel::Event& e, const nck::config::Machine& m) {
   if (!d) d = e.get<nck::kernel::ev::Warning>();
   if (d) {
     what += fmt::format(" id={}", static_cast<unsigned>(d->id));
-    if (d->axis && static_cast<std::size_t>(*d->axis) < m.axes.size())
-      what += " axis=" + m.axes[static_cast<std::size_t>(*d->axis)].name;
+    if (d->axis && *d->axis >= 0) what += " axis=" + nck::config::axis_list_name(m, static_cast<std::size_t>(*d->axis));
   }
+  if (const auto* dr = e.get<nck::drives::DriveEvent>(); dr && dr->axis >= 0)
+    what += fmt::format(" axis={} mode={}", nck::config::axis_list_name(m, static_cast<std::size_t>(dr->axis)),
+                        nck::drives::mode_short_name(dr->mode));
   std::printf("event t=%.4f ch=%u line=%u ev=%s\n", e.t_s, unsigned{e.channel}, e.at.line, what.c_str());
 }
 

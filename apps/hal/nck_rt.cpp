@@ -52,6 +52,18 @@ int s32(hal_pin_dir_t d, volatile std::int32_t**& to, const std::string& name) {
   return r;
 }
 
+// A CiA 402 drive's words and velocities, named after its axis or spindle `n`.
+int cia_pins(nck::hal::CiaPins& cia, const std::string& n) {
+  int r = 0;
+  r |= u32(HAL_OUT, cia.controlword, n + ".cia-controlword");
+  r |= s32(HAL_OUT, cia.opmode, n + ".cia-opmode");
+  r |= flt(HAL_OUT, cia.vel_cmd, n + ".vel-cmd");
+  r |= u32(HAL_IN, cia.statusword, n + ".cia-statusword");
+  r |= s32(HAL_IN, cia.opmode_display, n + ".cia-opmode-display");
+  r |= flt(HAL_IN, cia.vel_fb, n + ".vel-fb");
+  return r;
+}
+
 int make_pins(nck::hal::Cycle& c) {
   int r = 0;
   nck::hal::MachinePins& m = c.machine_pins;
@@ -78,14 +90,8 @@ int make_pins(nck::hal::Cycle& c) {
     r |= bit(HAL_OUT, p.homed, n + ".homed");
     c.axis_pins.push_back(p);
     nck::hal::CiaPins cia{};
-    if (a.drive >= 0) {  // a CiA 402 drive: its words
-      r |= u32(HAL_OUT, cia.controlword, n + ".cia-controlword");
-      r |= s32(HAL_OUT, cia.opmode, n + ".cia-opmode");
-      r |= flt(HAL_OUT, cia.vel_cmd, n + ".vel-cmd");
-      r |= u32(HAL_IN, cia.statusword, n + ".cia-statusword");
-      r |= s32(HAL_IN, cia.opmode_display, n + ".cia-opmode-display");
-      r |= flt(HAL_IN, cia.vel_fb, n + ".vel-fb");
-    }
+    if (a.cia402) r |= cia_pins(cia, n);  // a CiA 402 drive: its words
+    else if (a.drive >= 0) r |= flt(HAL_OUT, cia.vel_cmd, n + ".vel-cmd");  // a conventional drive's set point
     c.cia_pins.push_back(cia);
   }
   for (std::size_t ch = 0; ch < c.channel_count(); ++ch) {
@@ -120,7 +126,18 @@ int make_pins(nck::hal::Cycle& c) {
     r |= flt(HAL_IN, p.speed_in_rpm, n + ".speed-in");
     r |= flt(HAL_IN, p.revolutions, n + ".revs");
     r |= bit(HAL_IN, p.feedback_valid, n + ".feedback-valid");
+    r |= bit(HAL_OUT, p.homed, n + ".homed");
+    p.axis_list = c.spindle_axis_list(s);
+    if (p.axis_list >= 0) r |= bit(HAL_IN, p.amp_fault, n + ".amp-fault-in");
     c.spindle_pins.push_back(p);
+    nck::hal::SpindleDrivePins d{};
+    if (p.axis_list >= 0 && c.machine().axes[static_cast<std::size_t>(p.axis_list)].is_cia402()) d.drive = p.axis_list;
+    if (d.drive >= 0) {  // a CiA 402 drive: its words, and the drive's own positions
+      r |= cia_pins(d.words, n);
+      r |= flt(HAL_OUT, d.pos_cmd, n + ".drive-pos-cmd");
+      r |= flt(HAL_IN, d.pos_fb, n + ".drive-pos-fb");
+    }
+    c.spindle_drive_pins.push_back(d);
   }
   for (std::size_t k = 0; k < nck::hal::kPlcSlots; ++k) {
     nck::hal::PlcPins& p = c.plc_pins[k];

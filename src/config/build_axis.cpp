@@ -196,6 +196,7 @@ void read_head(const ParamList& l, AxisConfig& a) {
   a.drive_type = l.u32("kenngr.antr_typ", a.drive_type);
   a.drive_simulation = l.flag("kenngr.drive_simulation", a.drive_simulation);
   a.drive_enable_timeout_s = l.num("antr.enable_timeout_ms", a.drive_enable_timeout_s);
+  a.drive_homing_timeout_s = l.num("antr.homing_timeout_ms", a.drive_homing_timeout_s);
   a.sw_limit_neg = l.num("kenngr.swe_neg", a.sw_limit_neg);
   a.sw_limit_pos = l.num("kenngr.swe_pos", a.sw_limit_pos);
   a.initial_gear_stage = l.u32("kenngr.getriebe_stufe", a.initial_gear_stage);

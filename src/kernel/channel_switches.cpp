@@ -1,10 +1,11 @@
 // Amplifier faults and limit switches as a channel follows them
 // (TickInput::axes, by machine axis): an amplifier fault of an enabled
-// axis or a limit switch that comes on brakes every axis of the channel as
+// axis or spindle or a limit switch that comes on brakes every axis of the channel as
 // the E-stop does and ends the program in error; a move further into a
 // switch that is on is refused (docs/decisions.md, "Amplifier faults and
 // limit switches").
 #include "channel.hpp"
+#include "spindle_unit.hpp"
 
 namespace nck::kernel {
 
@@ -39,6 +40,13 @@ void Channel::follow_switches(Cycle& cy) noexcept {
   }
   pos_was_ = pos;
   neg_was_ = neg;
+  // A spindle's drive fails as an axis's does (its axis list's input).
+  for (std::int8_t k : spindles_) {
+    const SpindleUnit* u = cy.machine.spindle(k);
+    if (amp_axis >= 0) break;
+    if (u && u->axis_list >= 0 && axes[static_cast<std::size_t>(u->axis_list)].amp_fault)
+      amp_axis = static_cast<std::int8_t>(u->axis_list);
+  }
   if (cy.in.reset && amp_axis < 0) amp_latched_ = false;
   if (amp_axis >= 0 && !amp_latched_ && cy.machine.drives_enabled) {
     amp_latched_ = true;

@@ -7,12 +7,25 @@
 // drive problem of the cycle: a drive that does not reach operation
 // enabled in its time (antr.enable_timeout_ms), or a fault of a drive
 // that was enabled. Set points are copied after the channels ran.
+//
+// A conventional drive (kenngr.antr_typ 1) has no state machine: it is
+// always ready, and its velocity set point closes the position loop in
+// the NC, the set point's velocity plus kv (P-AXIS-00099) times the
+// following error of the last set point.
+//
+// A spindle's drive changes its mode with the spindle (the state graph of
+// FCT-S1 for digital drives): cyclic synchronous velocity while a
+// speed-controlled spindle turns or stops, cyclic synchronous position
+// while it positions (M19, gear change, C axis), and homing mode while G74
+// lets the drive home (cia402::DriveHoming).
+#include <array>
 #include <cstdint>
 #include <vector>
 
 #include "nck/config/machine.hpp"
 #include "nck/core/diagnostic.hpp"
 #include "nck/drives/cia402.hpp"
+#include "nck/drives/cia402_homing.hpp"
 #include "nck/kernel/tick_io.hpp"
 
 namespace nck::kernel {
@@ -32,22 +45,59 @@ class DriveUnits {
   // Before the channels: the state machines' step. enabled false (E-stop
   // or machine off at standstill): every drive is taken out of operation,
   // which is no fault; the programs wait for enable again. rt
+  // A drive that reports another mode of operation is a `drive` event.
   DriveReport step(const TickInput& in, TickOutput& out, bool enabled = true) noexcept;
-  // After the channels: the set points (machine axis positions, mm / deg). rt
-  void write_set_point(std::size_t axis_index, double pos, double vel, TickOutput& out) const noexcept;
+  // After the channels: the set points (machine axis positions, mm / deg;
+  // vel the set point's own velocity). rt
+  void write_set_point(std::size_t axis_index, double pos, double vel, const TickInput& in,
+                       TickOutput& out) noexcept;
+
+  // A spindle's drive (machine axis list index; nothing for another).
+  struct SpindleCycle {
+    drives::cia402::Mode mode;  // what the spindle's state asks for (CSV or CSP)
+    double step_deg;            // its set point's increment this cycle (drive sense)
+    double cycle_s;
+    bool wants_homing;          // G74: the spindle stands and waits for its drive to home
+  };
+  // After the spindles ticked: mode, controlword's homing start and set
+  // points. The target position is the drive's own, continuous (never
+  // wrapped): it moves by the spindle's increments from where the drive
+  // stood at enable or where it homed. rt
+  void write_spindle(std::size_t axis_index, const SpindleCycle& c, const TickInput& in, TickOutput& out) noexcept;
+  // The drive homed in this cycle's step: its actual position is the
+  // spindle's from now on. rt
+  bool homing_attained(std::size_t axis_index) const noexcept;
+  // How far the drive is behind its target (its following error as the
+  // NC sees it, drive sense), for the spindle's feedback. rt
+  double lag(std::size_t axis_index, const TickInput& in) const noexcept;
   // The operator's reset: a drive at fault is reset (the goal asks for power again). rt
   void on_reset() noexcept;
 
  private:
   struct Slot {
     std::uint8_t axis = 0;                   // machine axis list index
+    bool conventional = false;               // antr_typ 1: velocity set point, loop closed here
+    double kv_1_s = 0;                       // conventional: position-loop gain
     drives::cia402::Master master;
     drives::cia402::Mode mode = drives::cia402::Mode::cyclic_sync_position;
     std::uint32_t timeout_cycles = 1000;
     bool reached = false;                    // operation enabled was reached since the last power-up
     bool reported = false;                   // its problem was reported (once until a reset)
+    // A spindle's drive only:
+    drives::cia402::DriveHoming homing;
+    bool wants_homing = false;               // last written: G74 waits for the drive
+    bool homing_attained = false;            // in this cycle's step
+    std::uint32_t homing_timeout_cycles = 0;
+    // Every drive:
+    double target_pos = 0;                   // the last set point written (a spindle drive's own count, deg)
+    std::int8_t mode_shown = 0;              // the last mode_display reported in an event
   };
+  Slot* slot_of(std::size_t axis_index) noexcept;
+  const Slot* slot_of(std::size_t axis_index) const noexcept;
+  ErrorId step_homing(Slot& s, const drives::DriveFeedback& fb, bool in_operation) noexcept;
+
   std::vector<Slot> slots_;
+  std::array<std::int8_t, drives::kMaxDrives> slot_index_{};  // axis list -> slots_, -1 none
 };
 
 }  // namespace nck::kernel

@@ -99,6 +99,10 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
       u.plc_spindle = config::is_plc_spindle(*machine_, sp);
       u.channel = static_cast<std::uint8_t>(c + 1);
       u.channel_index = static_cast<std::int8_t>(i);
+      if (ax != nullptr && static_cast<std::size_t>(sp.axis_index) < drives::kMaxDrives) {
+        u.axis_list = static_cast<std::int16_t>(sp.axis_index);
+        if (ax->is_cia402()) u.cia402_axis = u.axis_list;
+      }
       u.last_gear = u.axis.status().gear_stage;
       spindle_names_[static_cast<std::size_t>(k)] = sp.name;
     }
@@ -139,6 +143,7 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
 std::size_t Kernel::channel_count() const { return channels_.size(); }
 std::size_t Kernel::spindle_count() const { return spindles_.size(); }
 const std::string& Kernel::spindle_name(std::size_t index) const { return spindle_names_.at(index); }
+int Kernel::spindle_axis_list(std::size_t index) const { return spindles_.at(index).axis_list; }
 plc::SpindleStatus Kernel::hli_spindle_status(std::size_t index) const {
   plc::SpindleStatus h;
   fill_hli_status(spindles_.at(index), h);
@@ -151,22 +156,7 @@ const spindle::SpindleStatus& Kernel::spindle_status(std::size_t index) const {
 const plc::SpindleMap& Kernel::spindle_map() const { return spindle_map_; }
 const std::string& Kernel::axis_name(std::size_t index) const {
   static const std::string none;
-  return machine_ && index < machine_->axes.size() ? machine_->axes[index].name : none;
-}
-
-// The CiA 402 drives' set points: each channel path axis's machine set
-// point, and its velocity from the last one (mm, mm/s). rt
-void Kernel::write_drive_set_points(TickOutput& out) noexcept {
-  for (std::size_t c = 0; c < machine_->channels.size(); ++c) {
-    const config::ChannelConfig& ch = machine_->channels[c];
-    for (std::size_t j = 0; j < ch.axes.size() && j < kMaxAxes; ++j) {
-      const int a = ch.axes[j].axis_index;
-      if (a < 0 || static_cast<std::size_t>(a) >= drives::kMaxDrives) continue;
-      const double pos = out.channels[c].axis_mcs[j];
-      const double vel = (pos - out.drives[static_cast<std::size_t>(a)].target_pos) / cycle_s_;
-      drive_units_->write_set_point(static_cast<std::size_t>(a), pos, vel, out);
-    }
-  }
+  return machine_ ? config::axis_list_name(*machine_, index) : none;
 }
 
 std::vector<std::uint32_t> Kernel::active_links(std::size_t ch) const {
@@ -223,6 +213,7 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
     for (const ChannelInput& c : in.channels)
       if (c.reset) drive_units_->on_reset();
     ctx.drives = drive_units_->step(in, out, machine_out_.drives_enabled);
+    take_drive_homing(in);
   }
   for (std::size_t i = 0; i < channels_.size(); ++i) {
     channels_[i]->tick(t_s, cycle_s_, in.channels[i], out.channels[i], out, ctx);
@@ -230,7 +221,7 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   }
   tick_spindles(t_s, out);
   follow_machine(in, t_s, out);
-  if (drive_units_ && !drive_units_->empty()) write_drive_set_points(out);
+  if (drive_units_ && !drive_units_->empty()) write_drive_set_points(in, out);
   ++cycles_;
   time_s_ = static_cast<double>(cycles_ * cycle_us_) / 1e6;
 }

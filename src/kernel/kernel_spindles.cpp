@@ -30,10 +30,12 @@ void Kernel::take_spindle_controls(const TickInput& in) noexcept {
 }
 
 // A real machine's measured spindle values, taken at the start of the
-// cycle so that the channels judge the freshest ones.
+// cycle so that the channels judge the freshest ones: a CiA 402 drive's
+// actual values, else the spindle's own measured inputs.
 void Kernel::take_spindle_measured(const TickInput& in) noexcept {
   if (drives_ != nullptr) return;  // the attached drives answer in tick_spindles
   for (std::size_t i = 0; i < spindles_.size(); ++i) {
+    if (take_spindle_drive(spindles_[i], in)) continue;
     const spindle::DriveFeedback& m = in.spindle_measured[i];
     const spindle::DriveFeedback& last = spindles_[i].axis.feedback();
     if (m.valid || last.valid) spindles_[i].axis.take_feedback(m);

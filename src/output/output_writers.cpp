@@ -21,6 +21,11 @@ nlohmann::ordered_json RunNames::spindle(std::optional<std::int8_t> index) const
   return run->kernel().spindle_name(static_cast<std::size_t>(*index));
 }
 
+nlohmann::ordered_json RunNames::axis(std::int8_t index) const {
+  if (index < 0 || !run) return nullptr;
+  return run->kernel().axis_name(static_cast<std::size_t>(index));
+}
+
 std::string dump_json(const nlohmann::ordered_json& j, int indent) {
   // Every string put in is UTF-8 already (to_utf8); replacing is the backstop.
   return j.dump(indent, ' ', false, nlohmann::ordered_json::error_handler_t::replace);

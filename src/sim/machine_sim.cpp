@@ -16,7 +16,7 @@ Probe make_probe(const config::Machine& m, std::size_t ch) {
 }  // namespace
 
 MachineSim::MachineSim(const config::Machine& m)
-    : plc_(m.sim), drives_(m), cia402_(m), hli_(plc::make_hli_image(m)), map_(plc::build_spindle_map(m)) {
+    : plc_(m.sim), drives_(m), drive_models_(m), hli_(plc::make_hli_image(m)), map_(plc::build_spindle_map(m)) {
   channels_ = std::min(m.channels.size(), config::kMaxChannels);
   spindles_ = std::min(map_.count, kernel::kMaxMachineSpindles);
   // A dry run has no operator: unless the scenario says otherwise, every
@@ -97,7 +97,7 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
     if (sensor_on_[ch]) sensors_[ch].sample(t_s, ci.dist_sensor_valid, ci.dist_sensor_mm);
     else ci.dist_sensor_valid = false;
   }
-  cia402_.read(in);
+  drive_models_.read(in);
   for (std::size_t i = 0; i < spindles_; ++i) {
     in.spindles[i] = hli_.spindle_control[i];
     hli_.spindle_control[i].reset = false;
@@ -105,7 +105,7 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
 }
 
 void MachineSim::write(const kernel::TickOutput& out) noexcept {
-  cia402_.write(out);
+  drive_models_.write(out);
   for (const kernel::TechRequest& r : out.tech_outputs) (void)plc_.submit(r.handle, r.output, t_s_);
   if (player_.has_triggers())  // lines waiting for a program state ('@hold cycle_start')
     for (const kernel::Event& e : out.events)
@@ -177,7 +177,7 @@ void MachineSim::apply(const sim::ScenarioAction& a, kernel::TickInput& in) noex
     case K::mode: ch.manual_mode = as<act::Mode>(a).manual; return;
     case K::drive_fault: {
       const act::DriveFault& f = as<act::DriveFault>(a);
-      if (f.axis.index >= 0) cia402_.set_fault(c, static_cast<std::size_t>(f.axis.index), f.on);
+      if (f.axis.index >= 0) drive_models_.set_fault(c, static_cast<std::size_t>(f.axis.index), f.on);
       return;
     }
     case K::estop: machine_.estop = as<act::Estop>(a).on; return;
@@ -199,7 +199,7 @@ void MachineSim::apply(const sim::ScenarioAction& a, kernel::TickInput& in) noex
 void MachineSim::set_axis_input(std::size_t ch, const act::AxisRef& axis, bool kernel::AxisSwitches::*input,
                                 bool on) noexcept {
   if (axis.index < 0) return;
-  const std::int16_t m = cia402_.machine_axis(ch, static_cast<std::size_t>(axis.index));
+  const std::int16_t m = drive_models_.machine_axis(ch, static_cast<std::size_t>(axis.index));
   if (m >= 0 && static_cast<std::size_t>(m) < axes_.size()) axes_[static_cast<std::size_t>(m)].*input = on;
   amp_fault_ = false;
   for (const kernel::AxisSwitches& s : axes_) amp_fault_ = amp_fault_ || s.amp_fault;

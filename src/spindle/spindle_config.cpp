@@ -72,7 +72,10 @@ SpindleConfig SpindleConfig::from(const config::AxisConfig* axis, const config::
   // Neither position nor speed feedback: the speed acknowledgement comes
   // from the interpolator's own command value (FCT-S1 2.2.4, case 3).
   c.sensorless = c.open_loop && !c.can_position && axis->drive_mode != config::DriveMode::open_loop_vel_feedback;
-  c.auto_homing = (axis->axis_mode & kNoAutomaticHoming) == 0;
+  // With a digital drive the drive homes on G74, and automatic homing is
+  // not possible (FCT-S1 2.7): it is off whatever achs_mode says.
+  c.drive_homing = axis->is_cia402();
+  c.auto_homing = (axis->axis_mode & kNoAutomaticHoming) == 0 && !c.drive_homing;
   c.drive_speed_scaling = SpeedScaling{axis->speed_increments_num, axis->speed_increments_denom, axis->speed_time_base};
   return c;
 }

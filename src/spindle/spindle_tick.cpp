@@ -213,6 +213,10 @@ bool SpindleAxis::crossed_mark(double from_deg, double step_deg) const noexcept 
 }
 
 void SpindleAxis::tick_homing(double dt) noexcept {
+  if (cfg_.drive_homing) {  // the drive homes once the set point stands (drive_homed)
+    ramp_to(0, dt);
+    return;
+  }
   if (homing_.mark_found) {  // reference set: position onto the reference position
     tick_position(dt);
     if (pos_.done) {
@@ -227,6 +231,17 @@ void SpindleAxis::tick_homing(double dt) noexcept {
   const double limit = gear().control_limit_deg_s;
   const bool encoder_valid = limit <= 0 || std::max(v_old, std::fabs(set_.vel_deg_s)) <= limit;
   if (encoder_valid && set_.step_deg * homing_.dir > 0 && crossed_mark(from, set_.step_deg)) on_reference();
+}
+
+void SpindleAxis::drive_homed(double drive_pos_deg) noexcept {
+  if (mode_ != SpindleMode::homing) return;
+  const Changed changed(*this);
+  set_.pos_deg = gear().wrap(drive_sense() * drive_pos_deg);
+  ref_.homed = true;
+  ref_.lost = false;
+  mode_ = SpindleMode::stop;
+  homing_.after = AfterHoming::none;
+  update_status();
 }
 
 void SpindleAxis::on_reference() noexcept {

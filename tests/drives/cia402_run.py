@@ -3,7 +3,9 @@
 the program waits for the CiA 402 drives (wait / wait_end drive_enable) and
 runs to M30; a fault injected by the scenario is 940501 naming Y and the
 other axes brake (X's speed falls by at most a_max per cycle in the trace);
-a drive that never enables is 940500 naming Z, not a hang."""
+a drive that never enables is 940500 naming Z, not a hang; spindle S1's
+drive follows the spindle through its modes (test c): velocity, homing for
+G74, velocity for M3, position for M19, velocity again."""
 import csv, json, os, subprocess, sys, tempfile
 
 nck, root = sys.argv[1], sys.argv[2]
@@ -11,10 +13,10 @@ ex = os.path.join(root, "examples/mill-cia402")
 failures = []
 
 
-def run(plc=None):
+def run(plc=None, program="enable.nc"):
     d = tempfile.mkdtemp()
     ev, tr = os.path.join(d, "ev.jsonl"), os.path.join(d, "tr.csv")
-    cmd = [nck, "run", ex, os.path.join(ex, "enable.nc"), "--events", ev, "--trace", tr]
+    cmd = [nck, "run", ex, os.path.join(ex, program), "--events", ev, "--trace", tr]
     if plc:
         cmd += ["--plc", os.path.join(ex, plc)]
     p = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
@@ -51,6 +53,20 @@ rc, events, _ = run("never_enables.plc")
 errors = [e for e in events if e["ev"] == "error"]
 check(len(errors) == 1 and errors[0]["id"] == 940500 and errors[0].get("axis") == "Z",
       f"never_enables.plc: one 940500 naming Z, got {errors}")
+
+rc, events, _ = run(program="spindle_modes.nc")
+check(rc == 0, f"spindle_modes.nc: exit {rc}")
+modes = [(e["mode"], e["opmode"]) for e in events if e["ev"] == "drive" and e["axis"] == "S1"]
+check(modes == [("csv", 9), ("homing", 6), ("csv", 9), ("csp", 8), ("csv", 9)],
+      f"spindle_modes.nc: S1's drive modes {modes}")
+# Each mode change comes after the spindle's own: homing with G74, 8 with M19, 9 with M3.
+spindle = [(e["t"], e["mode"]) for e in events if e["ev"] == "spindle" and e["spindle"] == "S1"]
+homing_t = next(t for t, m in spindle if m == "homing")
+position_t = next(t for t, m in spindle if m == "position")
+drive_t = {m: [e["t"] for e in events if e["ev"] == "drive" and e["axis"] == "S1" and e["mode"] == m] for m in ("homing", "csp")}
+check(drive_t["homing"] and 0 <= drive_t["homing"][0] - homing_t <= 0.005, "homing mode follows G74 within 5 cycles")
+check(drive_t["csp"] and 0 <= drive_t["csp"][0] - position_t <= 0.005, "position mode follows M19 within 5 cycles")
+check(not [e for e in events if e["ev"] == "error"], "spindle_modes.nc: no error")
 
 for f in failures:
     print("FAIL:", f)

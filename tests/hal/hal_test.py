@@ -220,6 +220,55 @@ stop
     check(len(words) == 2 and words[0] & 0x0008 and words[1] == OP_ENABLED,
           f"Y's statusword: fault (0x{words[0] if words else 0:04X}), then after the reset 0x{OP_ENABLED:04X}", out)
     check(pins(out).get("nck.error-id") == "0x00000000", "after the reset nck.error-id is 0 again (and nck.cycle never stopped)", out)
+elif case == "cia402-spindle":
+    # (c) spindle modes through HAL pins: S1's simulated CiA 402 drive runs
+    # homing mode for G74 (the drive homes itself), cyclic synchronous
+    # velocity for M3, position for M19 and velocity again, in the order
+    # `nck run` reports them (its `drive` events).
+    modes_nc = os.path.join(cia_machine, "spindle_modes.nc")
+    rc, out = run(cia_text, program=modes_nc, machine=cia_machine, timeout=60)
+    check(rc == 0 and "channel 1 done" in out, f"spindle_modes.nc ran to its end through nck_cia402_sim (exit {rc})", out)
+    hal_modes = re.findall(r"^event t=\S+ ch=0 line=\d+ ev=drive axis=S1 mode=(\S+)", out, re.M)
+    with tempfile.TemporaryDirectory() as d:
+        ev = os.path.join(d, "ev.jsonl")
+        subprocess.run([os.path.join(build, "nck"), "run", cia_machine, modes_nc, "--events", ev],
+                       check=True, capture_output=True, timeout=120)
+        run_modes = [j["mode"] for j in map(json.loads, open(ev)) if j.get("ev") == "drive" and j["axis"] == "S1"]
+    print("HAL S1 modes:", hal_modes)
+    print("nck run S1 modes:", run_modes)
+    check(run_modes == ["csv", "homing", "csv", "csp", "csv"], f"nck run: S1 homes, turns, positions, turns ({run_modes})", out)
+    check(hal_modes == run_modes, "through HAL the drive runs the same modes in the same order", out)
+    v = pins(out)
+    check(v.get("nck.spindle.S1.homed") == "TRUE", "nck.spindle.S1.homed after G74", out)
+    check(int(v.get("nck.spindle.S1.cia-statusword", "0"), 16) & 0x6F == 0x27 and v.get("nck.spindle.S1.cia-opmode") == "9",
+          "S1's drive is in operation enabled, in velocity mode at the end", out)
+elif case == "conventional":
+    # (issue 46 item 3) conventional velocity drives (kenngr.antr_typ 1):
+    # nck closes the position loops with kv through vel-cmd into the drive
+    # model of examples/hal/mill-velocity.hal (a lagging velocity loop and
+    # an integrating motor); the axes follow and end where `nck run` ends.
+    analog = os.path.join(src, "examples", "mill-analog")
+    text = open(os.path.join(src, "examples", "hal", "mill-velocity.hal")).read()
+    lines = ["loadrt minmax count=3"]
+    for i, a in enumerate("XYZ"):
+        lines += [f"addf minmax.{i} servo-thread", f"net {a.lower()}-ferr nck.axis.{a}.f-error => minmax.{i}.in"]
+    text = text.replace("\nstart\n", "\n" + "\n".join(lines) + "\nstart\n").replace(
+        "show pin nck.error\n", "show pin nck.error\nshow pin minmax\n")
+    rc, out = run(text, machine=analog, timeout=90)
+    check(rc == 0 and "channel 1 done" in out, f"contour.nc ran to its end on velocity drives (exit {rc})", out)
+    v = pins(out)
+    check(v.get("nck.channel.1.status") == "3" and v.get("nck.error-id") == "0x00000000", "ended, no error", out)
+    final = subprocess.run([os.path.join(build, "nck"), "run", analog, contour, "--final", "-"],
+                           capture_output=True, text=True, timeout=120)
+    axes = json.loads(final.stdout)["channels"][0]["axes"]
+    for i, a in enumerate("XYZ"):
+        fb = float(v[f"nck.axis.{a}.pos-fb"])
+        worst = max(abs(float(v[f"minmax.{i}.max"])), abs(float(v[f"minmax.{i}.min"])))
+        print(f"{a}: end {fb:.6f} (nck run {axes[a]['mcs']}); worst |pos-cmd - pos-fb| {worst:.4f} mm")
+        check(abs(fb - axes[a]["mcs"]) <= 0.001, f"{a}: the loop settles within 1 um of nck run's end", out)
+        # pos-cmd of this cycle against the position of the last: v*T (at most
+        # 500 mm/s * 1 ms = 0.5 mm) and the drive's lag that kv takes back.
+        check(worst <= 1.5, f"{a}: the axis follows (worst following {worst:.4f} mm <= 1.5 mm)", out)
 elif case == "amp-fault":
     # (issue 46) Y's amplifier fault while contour.nc runs: error 930750
     # naming Y on nck.error-id, the channel brakes and its program ends in
@@ -245,6 +294,25 @@ stop
           "nck.error / nck.error-id show 930750 (0xE33BE)", out)
     check(v.get("nck.channel.1.status") == "4" and v.get("nck.axis.Y.enable") == "FALSE",
           "the program was aborted (status 4) and the enables are off", out)
+elif case == "spindle-amp-fault":
+    # (issue 46) S1's amplifier fault while spindle.nc runs: error 930750
+    # naming S1 on nck.error-id; the program ends in error by itself.
+    head = example_text[:example_text.index("\nstart\n")]
+    tail = """
+start
+loadusr -w sleep 1
+setp nck.spindle.S1.amp-fault-in 1
+waitusr nck-hal
+show pin nck.channel.1.status
+show pin nck.error-id
+stop
+"""
+    rc, out = run(head + "\n" + tail, program=os.path.join(mill, "spindle.nc"), timeout=60)
+    check(rc == 0 and "channel 1 done" in out, f"the session ended by itself (exit {rc})", out)
+    check(re.search(r"ev=error id=930750 axis=S1", out) is not None, "S1's amplifier fault is error 930750 naming S1", out)
+    v = pins(out)
+    check(v.get("nck.error-id") == "0x000E33BE" and v.get("nck.channel.1.status") == "4",
+          "nck.error-id shows 930750, the program was aborted (status 4)", out)
 else:
     print(f"unknown case {case}")
     sys.exit(2)

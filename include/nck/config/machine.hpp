@@ -150,8 +150,12 @@ struct AxisConfig {
   std::uint32_t drive_type = 4;           // kenngr.antr_typ (1 conventional, 4 simulation, 8 CiA 402, 16 virtual)
   bool drive_simulation = false;          // P-AXIS-00790 (kenngr.drive_simulation): simulate whatever antr_typ says
   double drive_enable_timeout_s = 1.0;    // antr.enable_timeout_ms (nck): time to reach operation enabled
+  double drive_homing_timeout_s = 60.0;   // antr.homing_timeout_ms (nck): time a drive may take to home (G74)
   // The drive the NC talks to: antr_typ 8 is CiA 402 unless P-AXIS-00790 simulates it.
   bool is_cia402() const { return drive_type == 8 && !drive_simulation; }
+  // antr_typ 1: a conventional drive that takes a velocity set point (an
+  // analogue ±10 V input): the NC closes the position loop with kv.
+  bool is_conventional() const { return drive_type == 1 && !drive_simulation; }
   double sw_limit_neg = -10000, sw_limit_pos = 10000;  // kenngr.swe_neg/swe_pos software limits (mm / deg)
   std::uint32_t initial_gear_stage = 1; // kenngr.getriebe_stufe
   bool has_preferred_direction = false;       // P-AXIS-00224 (kenngr.vorz_richtung), spindle
@@ -428,6 +432,18 @@ inline bool is_plc_spindle(const Machine& m, const ChannelSpindle& sp) noexcept 
   if (sp.plc_control) return true;
   if (sp.axis_index < 0 || static_cast<std::size_t>(sp.axis_index) >= m.axes.size()) return false;
   return (m.axes[static_cast<std::size_t>(sp.axis_index)].axis_mode & 0x40000u) != 0;
+}
+
+// Axis list `index`'s name: its axis name, or for a spindle's list (which
+// has none) the name its channel gives the spindle; empty when neither.
+inline const std::string& axis_list_name(const Machine& m, std::size_t index) noexcept {
+  static const std::string none;
+  if (index >= m.axes.size()) return none;
+  if (!m.axes[index].name.empty()) return m.axes[index].name;
+  for (const ChannelConfig& ch : m.channels)
+    for (const ChannelSpindle& sp : ch.spindles)
+      if (sp.axis_index == static_cast<int>(index)) return sp.name;
+  return none;
 }
 
 }  // namespace nck::config

@@ -38,6 +38,8 @@ inline constexpr std::uint16_t switch_on_disabled = 1u << 6;
 inline constexpr std::uint16_t warning = 1u << 7;
 inline constexpr std::uint16_t remote = 1u << 9;
 inline constexpr std::uint16_t target_reached = 1u << 10;
+inline constexpr std::uint16_t homing_attained = 1u << 12;  // in homing mode (6)
+inline constexpr std::uint16_t homing_error = 1u << 13;     // in homing mode (6)
 }  // namespace sw
 
 // Controlword bits (0x6040) and the commands the profile defines.
@@ -46,6 +48,7 @@ inline constexpr std::uint16_t switch_on_bit = 1u << 0;
 inline constexpr std::uint16_t enable_voltage_bit = 1u << 1;
 inline constexpr std::uint16_t quick_stop_bit = 1u << 2;  // 0: quick stop
 inline constexpr std::uint16_t enable_operation_bit = 1u << 3;
+inline constexpr std::uint16_t homing_start_bit = 1u << 4;  // homing mode (6): starts on its rising edge
 inline constexpr std::uint16_t fault_reset_bit = 1u << 7;  // acts on its rising edge
 
 inline constexpr std::uint16_t shutdown = 0x0006;

@@ -9,7 +9,8 @@
 // order): path axes and spindles alike. Only a drive whose kenngr.antr_typ
 // is 8 (CANopen / CiA 402) and that P-AXIS-00790 does not switch to
 // simulation uses the CiA 402 words; a conventional drive (antr_typ 1)
-// uses the set points only; a simulated or virtual drive none of it.
+// takes target_vel, whose position loop the NC closes with kv (and reports
+// actual_pos); a simulated or virtual drive none of it.
 //
 // Units: positions in mm (deg for rotary axes and spindles), velocities in
 // mm/s (deg/s). The drive's own scaling (increments) is the integrator's.
@@ -28,7 +29,7 @@ inline constexpr std::size_t kMaxDrives = 64;
 enum class DriveKind : std::uint8_t {
   simulation,    // 4, or any with P-AXIS-00790 = 1: the NC simulates it
   virtual_,      // 16: no drive at all
-  conventional,  // 1: set point only (position or velocity)
+  conventional,  // 1: velocity set point; the NC closes the position loop
   cia402,        // 8: CANopen / EtherCAT drive profile
 };
 

@@ -10,6 +10,7 @@
 
 #include "nck/core/event_head.hpp"
 #include "nck/distctrl/dist_data.hpp"
+#include "nck/drives/drive_event.hpp"
 #include "nck/frames/offset_event.hpp"
 #include "nck/kernel/ax_link.hpp"
 #include "nck/kernel/channel_events.hpp"
@@ -40,18 +41,19 @@ enum class EventKind : std::uint8_t {
   trc,        // tool radius compensation selected, deselected or its D changed
   state,      // the channel's program state changed
   machine,    // E-stop / machine on changed what the machine does (channel 0)
+  drive,      // a CiA 402 drive reports another mode of operation (channel 0)
 };
 
 using EventPayload =
     std::variant<ev::Block, ev::PlcOut, ev::PlcAck, ev::Wait, ev::WaitEnd, spindle::ModeEvent,
                  spindle::SpeedReachedEvent, spindle::GearEvent, LinkEvent, frames::OffsetEvent, ev::Stop,
-                 ev::Warning, ev::Error, ev::End, distctrl::StateEvent, trc::TrcChange, ev::State, ev::Machine>;
+                 ev::Warning, ev::Error, ev::End, distctrl::StateEvent, trc::TrcChange, ev::State, ev::Machine, drives::DriveEvent>;
 
 // "block", "plc_out", ... as the events file writes them.
 constexpr const char* event_name(EventKind k) noexcept {
   constexpr const char* kNames[] = {"block", "plc_out", "plc_ack", "wait",    "wait_end", "spindle",
                                     "speed_reached", "gear", "link", "offset", "stop", "warning",
-                                    "error", "end", "dist_ctrl", "trc", "state", "machine"};
+                                    "error", "end", "dist_ctrl", "trc", "state", "machine", "drive"};
   static_assert(std::size(kNames) == std::variant_size_v<EventPayload>);
   return kNames[static_cast<std::size_t>(k)];
 }

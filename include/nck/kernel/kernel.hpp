@@ -63,6 +63,8 @@ class Kernel {
   // order of plc::build_spindle_map: kernel index = HLI spindle index.
   std::size_t spindle_count() const;
   const std::string& spindle_name(std::size_t index) const;
+  // The machine axis list of spindle `index` (< drives::kMaxDrives), -1 without one.
+  int spindle_axis_list(std::size_t index) const;
   const spindle::SpindleStatus& spindle_status(std::size_t index) const;
   // The spindle's HLI status object as the last tick wrote it to hli_spindles.
   plc::SpindleStatus hli_spindle_status(std::size_t index) const;
@@ -117,7 +119,10 @@ class Kernel {
   void run_external_commands(double t_s, TickOutput& out) noexcept;
   void hand_out_external_commands() noexcept;
   void tick_spindles(double t_s, TickOutput& out) noexcept;
-  void write_drive_set_points(TickOutput& out) noexcept;
+  // kernel_drives.cpp: the CiA 402 drives of path axes and spindles.
+  void write_drive_set_points(const TickInput& in, TickOutput& out) noexcept;
+  void take_drive_homing(const TickInput& in) noexcept;
+  bool take_spindle_drive(SpindleUnit& u, const TickInput& in) noexcept;
   // After the channels: standstill, the drives' enable, the `machine` event (kernel_machine.cpp).
   void follow_machine(const TickInput& in, double t_s, TickOutput& out) noexcept;
 

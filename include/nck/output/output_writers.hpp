@@ -27,6 +27,8 @@ struct RunNames {
   std::string file(std::size_t ch, std::uint16_t id) const;
   // A spindle's designation, or null.
   nlohmann::ordered_json spindle(std::optional<std::int8_t> index) const;
+  // A machine axis list's name (a CiA 402 drive's event).
+  nlohmann::ordered_json axis(std::int8_t index) const;
   // A diagnostic's message: its own text (Kernel::message), or the ID's text from the table.
   std::string text(ErrorId id, std::optional<std::uint32_t> message) const;
   const prep::LinkPayload& link(std::uint32_t index) const { return run->link(index); }

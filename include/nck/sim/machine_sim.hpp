@@ -20,7 +20,7 @@
 #include "nck/kernel/tick_io.hpp"
 #include "nck/plc/hli.hpp"
 #include "nck/sim/scenario.hpp"
-#include "nck/sim/cia402_drives.hpp"
+#include "nck/sim/drive_models.hpp"
 #include "nck/sim/distance_sensor.hpp"
 #include "nck/sim/plc_sim.hpp"
 #include "nck/sim/probe.hpp"
@@ -111,7 +111,7 @@ class MachineSim {
 
   PlcSim plc_;
   SpindleDrives drives_;
-  Cia402Drives cia402_;  // the simulated CiA 402 drives (kenngr.antr_typ 8)
+  DriveModels drive_models_;  // the drives the NC talks to (kenngr.antr_typ 8 and 1), simulated
   plc::HliImage hli_;
   plc::SpindleMap map_;
   ScenarioPlayer player_;

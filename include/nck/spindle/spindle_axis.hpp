@@ -80,6 +80,14 @@ class SpindleAxis {
   // the actual value. // rt
   void take_feedback(const DriveFeedback& feedback) noexcept;
   const DriveFeedback& feedback() const noexcept { return feedback_; }
+  // Drive-controlled homing (config().drive_homing): G74 brings the set
+  // point to a stop, then the spindle waits for its drive to home. // rt
+  bool awaits_drive_homing() const noexcept {
+    return mode_ == SpindleMode::homing && cfg_.drive_homing && set_.vel_deg_s == 0;
+  }
+  // The drive homed and stands at drive_pos_deg (drive sense): the
+  // spindle is homed there and stops. // rt
+  void drive_homed(double drive_pos_deg) noexcept;
 
   const SpindleStatus& status() const noexcept { return status_; }
   // How often the speed part of the status (mode, speeds, speed reached,

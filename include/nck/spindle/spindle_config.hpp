@@ -53,6 +53,7 @@ struct SpindleConfig {
   bool open_loop = false;       // speed-controlled (antr.operation_mode OPEN_POSITION_LOOP*)
   bool can_position = true;     // position feedback present (else 70252 on M19 / G74)
   bool auto_homing = true;      // home before M19 / M5 when unreferenced (not with achs_mode 0x100)
+  bool drive_homing = false;    // digital drive (CiA 402): G74 lets the drive home; never automatic
   bool sensorless = false;      // open loop without any feedback: acknowledge from the set speed
   bool plc_control = false;     // PLC spindle over the channel HLI (no axis list)
   SpeedScaling drive_speed_scaling{};   // antr.v_reso_num / v_reso_denom / v_time_base

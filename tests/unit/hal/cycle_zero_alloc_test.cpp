@@ -73,7 +73,7 @@ void wire(Cycle& c, Cells& k) {
     c.channel_pins.push_back({k.bit(), k.bit(), k.bit(), k.bit(), k.bit(), k.bit(), k.flt(100), k.flt(100), k.flt(),
                               k.u32(), k.s32(), k.s32(), k.s32()});
   for (std::size_t s = 0; s < c.spindle_count(); ++s)
-    c.spindle_pins.push_back({k.flt(), k.flt(), k.flt(), k.flt(), k.bit(), k.bit(), k.bit()});
+    c.spindle_pins.push_back({k.flt(), k.flt(), k.flt(), k.flt(), k.bit(), k.bit(), k.bit(), k.bit(), k.bit()});
   for (auto& p : c.plc_pins) p = {k.bit(), k.bit(), k.s32(), k.s32(), k.s32(), k.flt()};
 }
 
