@@ -127,6 +127,24 @@ void Cycle::tick_timed() noexcept {
 
 // The CiA 402 drives' statuswords and actual values, as the drive sent
 // them after the last cycle.
+namespace {
+
+// A CiA 402 drive's words and actual velocity, in and out (its positions
+// are the caller's: an axis's pos-* pins, a spindle's drive-pos-*).
+void read_words(const CiaPins& c, drives::DriveFeedback& fb) noexcept {
+  fb.statusword = static_cast<std::uint16_t>(**c.statusword);
+  fb.mode_display = static_cast<std::int8_t>(**c.opmode_display);
+  fb.fault = (fb.statusword & drives::cia402::sw::fault) != 0;
+  fb.actual_vel = **c.vel_fb;
+}
+void write_words(const drives::DriveCommand& d, const CiaPins& c) noexcept {
+  **c.controlword = d.controlword;
+  **c.opmode = d.mode_of_operation;
+  **c.vel_cmd = d.target_vel;
+}
+
+}  // namespace
+
 void Cycle::read_drives() noexcept {
   for (std::size_t i = 0; i < axes_.size() && i < cia_pins.size(); ++i) {
     if (axes_[i].drive < 0) continue;
@@ -134,20 +152,14 @@ void Cycle::read_drives() noexcept {
     drives::DriveFeedback& fb = in_->drives[static_cast<std::size_t>(axes_[i].drive)];
     fb.actual_pos = **axis_pins[i].pos_fb;
     if (!axes_[i].cia402) continue;  // a conventional drive reports its position only
-    fb.statusword = static_cast<std::uint16_t>(**c.statusword);
-    fb.mode_display = static_cast<std::int8_t>(**c.opmode_display);
-    fb.fault = (fb.statusword & drives::cia402::sw::fault) != 0;
-    fb.actual_vel = **c.vel_fb;
+    read_words(c, fb);
     fb.following_error = **axis_pins[i].following_error;
   }
   for (const SpindleDrivePins& p : spindle_drive_pins) {
     if (p.drive < 0) continue;
     drives::DriveFeedback& fb = in_->drives[static_cast<std::size_t>(p.drive)];
-    fb.statusword = static_cast<std::uint16_t>(**p.words.statusword);
-    fb.mode_display = static_cast<std::int8_t>(**p.words.opmode_display);
-    fb.fault = (fb.statusword & drives::cia402::sw::fault) != 0;
+    read_words(p.words, fb);
     fb.actual_pos = **p.pos_fb;
-    fb.actual_vel = **p.words.vel_fb;
   }
 }
 
@@ -249,11 +261,9 @@ void Cycle::write_pins() noexcept {
     if (a.drive < 0 || i >= cia_pins.size()) continue;
     const drives::DriveCommand& d = out_->drives[static_cast<std::size_t>(a.drive)];
     const CiaPins& c = cia_pins[i];
-    **c.vel_cmd = d.target_vel;
     **p.enable = on && d.enable;
-    if (!a.cia402) continue;
-    **c.controlword = d.controlword;
-    **c.opmode = d.mode_of_operation;
+    if (a.cia402) write_words(d, c);
+    else **c.vel_cmd = d.target_vel;  // a conventional drive: the velocity set point only
   }
   for (std::size_t ch = 0; ch < channel_count(); ++ch) {
     const kernel::ChannelOutput& o = out_->channels[ch];
@@ -273,9 +283,7 @@ void Cycle::write_pins() noexcept {
   for (const SpindleDrivePins& p : spindle_drive_pins) {
     if (p.drive < 0) continue;
     const drives::DriveCommand& d = out_->drives[static_cast<std::size_t>(p.drive)];
-    **p.words.controlword = d.controlword;
-    **p.words.opmode = d.mode_of_operation;
-    **p.words.vel_cmd = d.target_vel;
+    write_words(d, p.words);
     **p.pos_cmd = d.target_pos;
   }
 }

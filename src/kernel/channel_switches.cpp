@@ -41,9 +41,8 @@ void Channel::follow_switches(Cycle& cy) noexcept {
   pos_was_ = pos;
   neg_was_ = neg;
   // A spindle's drive fails as an axis's does (its axis list's input).
-  for (std::int8_t k : spindles_) {
-    const SpindleUnit* u = cy.machine.spindle(k);
-    if (amp_axis >= 0) break;
+  for (std::size_t i = 0; i < spindles_.size() && amp_axis < 0; ++i) {
+    const SpindleUnit* u = cy.machine.spindle(spindles_[i]);
     if (u && u->axis_list >= 0 && axes[static_cast<std::size_t>(u->axis_list)].amp_fault)
       amp_axis = static_cast<std::int8_t>(u->axis_list);
   }

@@ -9,6 +9,7 @@ namespace cia = drives::cia402;
 void DriveUnits::configure(const config::Machine& m, double cycle_s) {
   slots_.clear();
   slot_index_.fill(-1);
+  cycle_s_ = cycle_s;
   for (std::size_t i = 0; i < m.axes.size() && i < drives::kMaxDrives; ++i) {
     const config::AxisConfig& ax = m.axes[i];
     if (!ax.is_cia402() && !ax.is_conventional()) continue;
@@ -90,11 +91,11 @@ ErrorId DriveUnits::step_homing(Slot& s, const drives::DriveFeedback& fb, bool i
   return ErrorId{};
 }
 
-void DriveUnits::write_set_point(std::size_t axis_index, double pos, double vel, const TickInput& in,
-                                 TickOutput& out) noexcept {
+void DriveUnits::write_set_point(std::size_t axis_index, double pos, const TickInput& in, TickOutput& out) noexcept {
   Slot* s = slot_of(axis_index);
   if (s == nullptr) return;
   drives::DriveCommand& cmd = out.drives[axis_index];
+  double vel = (pos - s->target_pos) / cycle_s_;
   if (s->conventional) {
     // The drive's actual position answers the last set point (it was
     // written a cycle ago): its following error is measured against that.
@@ -124,7 +125,7 @@ void DriveUnits::write_spindle(std::size_t axis_index, const SpindleCycle& c, co
   else
     s->target_pos += c.step_deg;
   cmd.target_pos = s->target_pos;
-  cmd.target_vel = s->homing.active() ? 0.0 : c.step_deg / c.cycle_s;
+  cmd.target_vel = s->homing.active() ? 0.0 : c.step_deg / cycle_s_;
 }
 
 bool DriveUnits::homing_attained(std::size_t axis_index) const noexcept {

@@ -47,16 +47,14 @@ class DriveUnits {
   // which is no fault; the programs wait for enable again. rt
   // A drive that reports another mode of operation is a `drive` event.
   DriveReport step(const TickInput& in, TickOutput& out, bool enabled = true) noexcept;
-  // After the channels: the set points (machine axis positions, mm / deg;
-  // vel the set point's own velocity). rt
-  void write_set_point(std::size_t axis_index, double pos, double vel, const TickInput& in,
-                       TickOutput& out) noexcept;
+  // After the channels: a path axis's set point (machine position, mm /
+  // deg) and its velocity from the last one. rt
+  void write_set_point(std::size_t axis_index, double pos, const TickInput& in, TickOutput& out) noexcept;
 
   // A spindle's drive (machine axis list index; nothing for another).
   struct SpindleCycle {
     drives::cia402::Mode mode;  // what the spindle's state asks for (CSV or CSP)
     double step_deg;            // its set point's increment this cycle (drive sense)
-    double cycle_s;
     bool wants_homing;          // G74: the spindle stands and waits for its drive to home
   };
   // After the spindles ticked: mode, controlword's homing start and set
@@ -98,6 +96,7 @@ class DriveUnits {
 
   std::vector<Slot> slots_;
   std::array<std::int8_t, drives::kMaxDrives> slot_index_{};  // axis list -> slots_, -1 none
+  double cycle_s_ = 0.001;
 };
 
 }  // namespace nck::kernel

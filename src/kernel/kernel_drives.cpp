@@ -37,14 +37,12 @@ void Kernel::write_drive_set_points(const TickInput& in, TickOutput& out) noexce
     for (std::size_t j = 0; j < ch.axes.size() && j < kMaxAxes; ++j) {
       const int a = ch.axes[j].axis_index;
       if (a < 0 || static_cast<std::size_t>(a) >= drives::kMaxDrives) continue;
-      const double pos = out.channels[c].axis_mcs[j];
-      const double vel = (pos - out.drives[static_cast<std::size_t>(a)].target_pos) / cycle_s_;
-      drive_units_->write_set_point(static_cast<std::size_t>(a), pos, vel, in, out);
+      drive_units_->write_set_point(static_cast<std::size_t>(a), out.channels[c].axis_mcs[j], in, out);
     }
   }
   for (const SpindleUnit& u : spindles_) {
     if (u.cia402_axis < 0) continue;
-    const DriveUnits::SpindleCycle cycle{spindle_drive_mode(u.axis), u.axis.drive_command().step_deg, cycle_s_,
+    const DriveUnits::SpindleCycle cycle{spindle_drive_mode(u.axis), u.axis.drive_command().step_deg,
                                          u.axis.awaits_drive_homing()};
     drive_units_->write_spindle(static_cast<std::size_t>(u.cia402_axis), cycle, in, out);
   }
