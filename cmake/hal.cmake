@@ -9,6 +9,12 @@ if(NOT NCK_HAL)
   message(STATUS "NCK_HAL off: /usr/include/linuxcnc/hal.h not found (install linuxcnc-uspace-dev)")
   return()
 endif()
+# nck-hal serves the API (--serve) with the server's layers: the
+# kernel-only configuration (NCK_APPS off) has no HAL components.
+if(NOT NCK_APPS)
+  return()
+endif()
+find_package(CLI11 REQUIRED)
 find_library(NCK_LINUXCNC_HAL_LIB linuxcnchal PATHS /usr/lib REQUIRED)
 set(NCK_HAL_INCLUDE /usr/include/linuxcnc)
 
@@ -33,13 +39,14 @@ target_compile_definitions(nck_cia402_sim PRIVATE RTAPI __MODULE__ USPACE SIM _G
 target_include_directories(nck_cia402_sim SYSTEM PRIVATE ${NCK_HAL_INCLUDE})
 target_link_libraries(nck_cia402_sim PRIVATE nck_drives fmt::fmt)
 
-# nck-hal, the userspace component: decoder and preparation.
-add_executable(nck-hal ${PROJECT_SOURCE_DIR}/apps/hal/nck_hal_main.cpp)
+# nck-hal, the userspace component: decoder and preparation, and with
+# --serve the API and HMI (apps/hal/hal_api.cpp).
+add_executable(nck-hal ${PROJECT_SOURCE_DIR}/apps/hal/nck_hal_main.cpp ${PROJECT_SOURCE_DIR}/apps/hal/hal_api.cpp)
 set_target_properties(nck-hal PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/hal)
 target_compile_definitions(nck-hal PRIVATE ULAPI _GNU_SOURCE)
 target_include_directories(nck-hal SYSTEM PRIVATE ${NCK_HAL_INCLUDE})
 target_include_directories(nck-hal PRIVATE ${PROJECT_SOURCE_DIR}/apps)
-target_link_libraries(nck-hal PRIVATE nck_prep ${NCK_LINUXCNC_HAL_LIB})
+target_link_libraries(nck-hal PRIVATE nck_serve nck_run nck_prep CLI11::CLI11 ${NCK_LINUXCNC_HAL_LIB})
 
 # The nck-hal Debian package (component "hal", cmake/package.cmake): the
 # module where rtapi_app loads modules from, nck-hal beside halrun.

@@ -23,11 +23,17 @@ uid="$(id -u)"; [ "$uid" -eq 0 ] && uid=65534
 export RTAPI_UID="${RTAPI_UID:-$uid}"
 # rtapi_app's socket, in the private /dev/shm (it binds as RTAPI_UID).
 export RTAPI_FIFO_PATH=/dev/shm/rtapi_fifo
-exec timeout --kill-after=5 "$limit" unshare --mount --ipc --pid --net --fork --mount-proc \
+# NCK_HAL_SHARE_NET=1 keeps the host's network (a browser reaches nck-hal
+# --serve, examples/hal/mill-hmi.hal); the tests leave it unset.
+net=--net
+[ "${NCK_HAL_SHARE_NET:-0}" = 1 ] && net=
+exec timeout --kill-after=5 "$limit" unshare --mount --ipc --pid $net --fork --mount-proc \
   bash -c 'set -e
     mount -t tmpfs -o size=256m,mode=1777 tmpfs /dev/shm
+    # loopback up in this network namespace: nck-hal --serve listens there, unreachable from outside
+    if [ -n "$2" ]; then ip link set lo up; fi
     # rtapi_app loads modules by name from its own folder only: nck.so joins
     # it in this mount namespace (an overlay; the host folder is untouched).
     mods=/usr/lib/linuxcnc/modules
     mount -t overlay overlay -o "lowerdir=$mods:$1" "$mods"
-    halrun -f "$0"' "$hal_file" "$build/hal"
+    halrun -f "$0"' "$hal_file" "$build/hal" "$net"

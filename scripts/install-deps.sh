@@ -14,7 +14,8 @@ pkgs=(build-essential g++ cmake ninja-build pkg-config
       python3-matplotlib                       # examples/python/accel_sweep.py plots (CSV without it)
       python3-setuptools python3-wheel python3-build python3-venv python3-pip  # the wheel (python/pyproject.toml)
       python3-jsonschema                       # docs/openapi.json checked against the API tests
-      linuxcnc-uspace linuxcnc-uspace-dev)     # the HAL components nck.so / nck-hal (docs/hal.md)
+      linuxcnc-uspace linuxcnc-uspace-dev      # the HAL components nck.so / nck-hal (docs/hal.md)
+      iproute2)                                # scripts/hal-demo.sh: loopback up in its network namespace
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

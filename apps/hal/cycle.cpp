@@ -88,6 +88,7 @@ void Cycle::run(long period_ns) noexcept {
   out_->events_dropped = 0;
   tick_timed();
   write_pins();
+  publish_state();
   show_nc_error();
   hand_to_plc();
   for (const auto& e : out_->events) {
@@ -180,6 +181,7 @@ void Cycle::read_pins() noexcept {
     s.pos_limit = **p.limit_pos;
     s.neg_limit = **p.limit_neg;
   }
+  take_api_actions();
   for (std::size_t ch = 0; ch < channel_count(); ++ch) {
     const ChannelPins& p = channel_pins[ch];
     kernel::ChannelInput& c = in_->channels[ch];
@@ -194,6 +196,9 @@ void Cycle::read_pins() noexcept {
     c.optional_stop = **p.optional_stop;
     c.feed_override_pct = **p.feed_override;
     c.rapid_override_pct = **p.rapid_override;
+    c.stop = false;  // the API's NC stop only
+    api_[ch].merge_into(c);
+    link_->skip_mask[ch].store(api_[ch].skip_mask(**p.skip_mask), std::memory_order_relaxed);
   }
   for (std::size_t s = 0; s < spindle_pins.size(); ++s) {
     const SpindlePins& p = spindle_pins[s];
@@ -215,6 +220,28 @@ void Cycle::read_pins() noexcept {
     slot.handle = plc::kNoHandle;
     **p.request = false;
   }
+}
+
+// The operator's actions from nck-hal's API (only with --serve: the queue
+// stays empty otherwise), each to its channel's controls.
+void Cycle::take_api_actions() noexcept {
+  for (auto& q = link_->api_actions; !q.empty(); q.pop()) {
+    const sim::ScenarioAction& a = q.front();
+    if (a.channel >= 1 && a.channel <= channel_count()) api_[a.channel - 1u].take(a);
+  }
+}
+
+// With nck-hal --serve: the state after this cycle, for its API's state
+// document (a copy into the triple buffer's free slot).
+void Cycle::publish_state() noexcept {
+  if (link_->serving.load(std::memory_order_relaxed) == 0) return;
+  app::LiveSnapshot& s = link_->state.back();
+  app::fill_kernel_snapshot(kernel_, *out_, s);
+  for (std::size_t ch = 0; ch < s.channel_count && ch < s.channels.size(); ++ch)
+    s.channels[ch].hli = shown_controls(in_->channels[ch], link_->skip_mask[ch].load(std::memory_order_relaxed));
+  for (std::size_t i = 0; i < s.spindle_count && i < s.spindle_override_pct.size(); ++i) s.spindle_override_pct[i] = 100;
+  s.speed = 1;
+  link_->state.publish();
 }
 
 // Moves what nck-hal queued into the kernel's queues while they have room:
@@ -279,6 +306,7 @@ void Cycle::write_pins() noexcept {
     **p.pos_cmd_deg = out_->spindles[s].set_pos_deg;
     **p.at_speed = out_->hli_spindles[s].speed_reached;
     **p.homed = kernel_.spindle_status(s).homed;
+    **p.orient = kernel_.spindle_status(s).mode == spindle::SpindleMode::position;
   }
   for (const SpindleDrivePins& p : spindle_drive_pins) {
     if (p.drive < 0) continue;

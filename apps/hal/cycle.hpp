@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "hal/api_controls.hpp"
 #include "hal/link.hpp"
 #include "nck/config/machine.hpp"
 #include "nck/kernel/kernel.hpp"
@@ -124,6 +125,8 @@ class Cycle {
   void hand_to_plc() noexcept;
   void show_nc_error() noexcept;
   void tick_timed() noexcept;
+  void take_api_actions() noexcept;
+  void publish_state() noexcept;
 
   Link* link_ = nullptr;
   std::unique_ptr<config::Machine> machine_;
@@ -140,6 +143,7 @@ class Cycle {
   std::array<bool, config::kMaxChannels> cycle_start_was_{};
   std::array<bool, config::kMaxChannels> reset_was_{};
   std::array<bool, kPlcSlots> ack_was_{};
+  std::array<ApiChannelControls, config::kMaxChannels> api_{};  // nck-hal --serve's operator
 };
 
 }  // namespace nck::hal

@@ -7,7 +7,9 @@
 // nck-hal creates it (rtapi_shmem_new with kLinkKey), writes the machine's
 // lists as a text pack and then feeds the command queues; nck.so, loaded
 // after it, builds its kernel from the pack in its load function (never in
-// the thread) and relays commands into it every cycle.
+// the thread) and relays commands into it every cycle. With nck-hal
+// --serve, nck.cycle also publishes its state every cycle and takes the
+// operator's actions from the API.
 #include <atomic>
 #include <cstdint>
 #include <cstring>
@@ -17,16 +19,20 @@
 
 #include "nck/config/machine.hpp"
 #include "nck/core/spsc_queue.hpp"
+#include "nck/core/triple_buffer.hpp"
 #include "nck/kernel/event.hpp"
 #include "nck/kernel/queues.hpp"
+#include "nck/run/live_snapshot.hpp"
+#include "nck/sim/scenario_action.hpp"
 
 namespace nck::hal {
 
 inline constexpr int kLinkKey = 0x4E434B31;  // "NCK1"
 inline constexpr std::uint32_t kLinkMagic = 0x6E636B68;
-inline constexpr std::uint32_t kLinkVersion = 1;
+inline constexpr std::uint32_t kLinkVersion = 2;
 inline constexpr std::size_t kMachinePackBytes = 1u << 20;
 inline constexpr std::size_t kEventRingLength = 4096;
+inline constexpr std::size_t kApiActionSlots = 64;
 
 enum class RtState : std::uint32_t { absent = 0, configured = 1, running = 2, error = 3 };
 
@@ -42,9 +48,18 @@ struct Link {
   kernel::CommandQueue commands[config::kMaxChannels];
   kernel::FeedbackQueue feedback[config::kMaxChannels];
   SpscQueue<kernel::Event, kEventRingLength> events;  // nck.so -> nck-hal
+  // nck-hal --serve: set before nck.so is loaded; nck.cycle then publishes
+  // its state after every cycle and takes the API's operator actions.
+  std::atomic<std::uint32_t> serving{0};
+  TripleBuffer<app::LiveSnapshot> state;                        // nck.so -> nck-hal
+  SpscQueue<sim::ScenarioAction, kApiActionSlots> api_actions;  // nck-hal -> nck.so
+  // Per channel, the skip levels in force (nck.channel.N.skip-mask or the
+  // API's): nck-hal's preparation decodes with them (/1 = bit 0).
+  std::atomic<std::uint32_t> skip_mask[config::kMaxChannels]{};
   char pack[kMachinePackBytes];  // records: u32 name length, u32 text length, name, text
 };
 static_assert(std::is_trivially_copyable_v<kernel::Event>, "events cross the process boundary by copy");
+static_assert(std::is_trivially_copyable_v<sim::ScenarioAction>, "actions cross the process boundary by copy");
 static_assert(std::atomic<std::uint64_t>::is_always_lock_free, "lock-free across processes");
 
 // The machine's lists by path, as load_machine(…, {.read_text}) asks for them.

@@ -1,9 +1,12 @@
-// nck-hal: the userspace half of nck in HAL (loadusr -W nck-hal MACHINE PROGRAM).
+// nck-hal: the userspace half of nck in HAL
+//   loadusr -W nck-hal [--serve [--port N] [--bind ADDR] [--token-file F]] MACHINE PROGRAM
 // Runs as the invoking user: reads the machine folder and the program, packs
 // the machine's lists into the shared segment for loadrt nck, then decodes
 // and prepares the program into the shared command queues while nck.cycle
 // runs it, and prints the kernel's events. Ends when the channel is done,
 // the real-time side reports an error, or on SIGTERM (halcmd unloadusr).
+// With --serve it also serves nck serve's API and HMI for the kernel in the
+// HAL thread (hal_api.hpp) and keeps serving after the end until SIGTERM.
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -13,16 +16,20 @@
 #include <new>
 #include <thread>
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "hal.h"
 #include "rtapi.h"
 
+#include "hal/hal_api.hpp"
+#include "hal/hal_records.hpp"
 #include "hal/link.hpp"
 #include "nck/config/list_reader.hpp"
 #include "nck/config/load.hpp"
 #include "nck/prep/channel_prep.hpp"
 #include "nck/prep/plan_store.hpp"
+#include "nck/serve/access.hpp"
 
 namespace {
 
@@ -61,11 +68,93 @@ std::optional<std::string> read_text(const std::filesystem::path& p) {
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
+// Prepares the program into the Link while nck.cycle runs it, prints its
+// events (and hands them and its state to the API), until the channel is
+// done or nck.cycle stopped; with the API, on until SIGTERM.
+int feed_and_watch(nck::hal::Link& link, nck::prep::ChannelPrep& prep, const nck::config::Machine& machine,
+                   nck::hal::HalApi* api) {
+  int rc = 0;
+  bool finished = false;
+  std::uint64_t events = 0;
+  while (!stop_requested) {
+    const bool running = link.rt_state.load() == static_cast<std::uint32_t>(nck::hal::RtState::running);
+    const bool done = running && link.cycles.load() > 0 && link.channel_done[0].load() != 0;
+    // Decoding starts with nck.cycle's first cycle: the skip levels the HAL
+    // file set before `start` then rule the program's first blocks too.
+    if (!finished && running) {
+      prep.set_skip_mask(link.skip_mask[0].load(std::memory_order_relaxed));  // blocks decoded from now on
+      prep.feed(link.commands[0], link.feedback[0], done);
+    }
+    for (; !link.events.empty(); link.events.pop(), ++events) {
+      print_event(link.events.front(), machine);
+      if (api) api->take_event(link.events.front());
+    }
+    if (api) api->take_state();
+    if (!finished && link.rt_state.load() == static_cast<std::uint32_t>(nck::hal::RtState::error)) {
+      rc = fail(nck::ErrorId::HalRealtimeGone, fmt::format("nck.cycle stopped with error {}", link.rt_error_id.load()));
+      finished = true;
+    } else if (!finished && done && link.events.empty()) {
+      std::printf("nck-hal: channel 1 done after %llu cycles, %llu events (%u dropped)\n",
+                  static_cast<unsigned long long>(link.cycles.load()), static_cast<unsigned long long>(events),
+                  link.events_dropped.load());
+      std::fflush(stdout);
+      finished = true;
+    }
+    if (finished && !api) break;
+    std::this_thread::sleep_for(std::chrono::microseconds(finished ? 5000 : 500));
+  }
+  return rc;
+}
+
+struct Options {
+  std::filesystem::path folder, program;
+  bool serve = false;
+  std::string bind = "127.0.0.1";
+  std::uint16_t port = 8765;  // 0: a free one
+  std::string token_file;
+};
+
+// The server for --serve, bound before HAL is told nck-hal is ready (a port
+// in use fails the HAL file's loadusr -W), with the URL printed.
+std::unique_ptr<nck::app::serve::HttpServer> start_server(const Options& opt, nck::hal::HalApi& api, int& rc) {
+  std::string why;
+  const auto token = nck::app::serve::read_token(opt.token_file, opt.bind, why);
+  if (!token) {
+    rc = fail(nck::ErrorId::HalServeOptions, why);
+    return nullptr;
+  }
+  std::unique_ptr<nck::app::serve::HttpServer> server;
+  try {
+    server = std::make_unique<nck::app::serve::HttpServer>(api, opt.bind, opt.port, *token, nck::app::serve::HttpLimits{});
+  } catch (const std::exception& e) {
+    rc = fail(nck::ErrorId::HalServeOptions, fmt::format("cannot listen on {}:{}: {}", opt.bind, opt.port, e.what()));
+    return nullptr;
+  }
+  const std::string host = opt.bind.find(':') != std::string::npos ? fmt::format("[{}]", opt.bind) : opt.bind;
+  std::printf("nck-hal: http://%s:%u/?token=%s\n", host.c_str(), unsigned{server->port()}, token->c_str());
+  std::fflush(stdout);
+  return server;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 3) return fail(nck::ErrorId::HalUsage, "usage: nck-hal MACHINE_FOLDER PROGRAM");
-  const std::filesystem::path folder = argv[1], program = argv[2];
+  Options opt;
+  CLI::App cli{"nck-hal: the userspace half of nck in a LinuxCNC HAL session (docs/hal.md)", "nck-hal"};
+  cli.add_option("MACHINE_FOLDER", opt.folder)->required();
+  cli.add_option("PROGRAM", opt.program)->required();
+  cli.add_flag("--serve", opt.serve, "serve nck serve's API and HMI for the kernel in the HAL thread");
+  cli.add_option("--bind", opt.bind, "the server's address (loopback by default)");
+  cli.add_option("--port", opt.port, "the server's port (0: a free one)");
+  cli.add_option("--token-file", opt.token_file, "the API token (needed beyond loopback)");
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return cli.exit(e);
+    return fail(nck::ErrorId::HalUsage, fmt::format("{}; usage: nck-hal [--serve [--port N] [--bind ADDR] "
+                                                    "[--token-file FILE]] MACHINE_FOLDER PROGRAM", e.what()));
+  }
+  const std::filesystem::path folder = opt.folder, program = opt.program;
   std::error_code ec;
   if (!std::filesystem::is_directory(folder, ec))
     return fail(nck::ErrorId::HalUsage, fmt::format("the machine folder '{}' does not exist", folder.string()));
@@ -105,37 +194,35 @@ int main(int argc, char** argv) {
     hal_exit(comp);
     return fail(nck::ErrorId::HalSharedMemory, "the machine's lists are larger than the shared pack");
   }
+  link->serving.store(opt.serve ? 1 : 0);
   std::signal(SIGTERM, on_signal);
   std::signal(SIGINT, on_signal);
-  hal_ready(comp);
 
   int rc = 0;
   try {
     nck::prep::PlanStore store;
     nck::prep::ChannelPrep prep(machine, 0, program, store, nck::prep::PrepOptions{});
-    std::uint64_t events = 0;
-    while (!stop_requested) {
-      const bool running = link->rt_state.load() == static_cast<std::uint32_t>(nck::hal::RtState::running);
-      const bool done = running && link->cycles.load() > 0 && link->channel_done[0].load() != 0;
-      prep.feed(link->commands[0], link->feedback[0], done);
-      while (!link->events.empty()) {
-        print_event(link->events.front(), machine);
-        link->events.pop();
-        ++events;
+    const nck::hal::HalRecords records(machine, store, prep);
+    std::unique_ptr<nck::hal::HalApi> api;
+    std::unique_ptr<nck::app::serve::HttpServer> server;
+    std::jthread serving;
+    if (opt.serve) {
+      api = std::make_unique<nck::hal::HalApi>(machine, *link, records, program);
+      server = start_server(opt, *api, rc);
+      if (!server) {
+        hal_exit(comp);
+        return rc;
       }
-      if (link->rt_state.load() == static_cast<std::uint32_t>(nck::hal::RtState::error)) {
-        rc = fail(nck::ErrorId::HalRealtimeGone, fmt::format("nck.cycle stopped with error {}", link->rt_error_id.load()));
-        break;
-      }
-      if (done && link->events.empty()) {
-        std::printf("nck-hal: channel 1 done after %llu cycles, %llu events (%u dropped)\n",
-                    static_cast<unsigned long long>(link->cycles.load()), static_cast<unsigned long long>(events),
-                    link->events_dropped.load());
-        break;
-      }
-      std::this_thread::sleep_for(std::chrono::microseconds(500));
+      serving = std::jthread([&server] { server->run(stop_requested); });
     }
+    // Leaving this block (also by an exception) stops the server before its thread is joined.
+    const struct StopServer {
+      ~StopServer() { stop_requested = true; }
+    } stop_server;
+    hal_ready(comp);
+    rc = feed_and_watch(*link, prep, machine, api.get());
   } catch (const std::exception& e) {
+    stop_requested = true;
     rc = fail(nck::ErrorId::AppInternalError, e.what());
   }
   std::fflush(stdout);

@@ -26,33 +26,6 @@ int bad_options(const std::string& why) {
   return 2;
 }
 
-bool loopback(const std::string& address) {
-  return address == "127.0.0.1" || address == "::1" || address.starts_with("127.");
-}
-
-// The token: --token-file's first line (at least 128 bits: 32 characters),
-// or a fresh random one.
-std::optional<std::string> read_token(const ServeOptions& opt, std::string& why) {
-  if (opt.token_file.empty()) {
-    if (!loopback(opt.bind)) {
-      why = fmt::format("--bind {} reaches beyond this machine: give --token-file FILE with a secret of at least "
-                        "32 characters", opt.bind);
-      return std::nullopt;
-    }
-    return serve::make_token();
-  }
-  std::ifstream in(opt.token_file);
-  std::string token;
-  std::getline(in, token);
-  while (!token.empty() && (token.back() == '\r' || token.back() == ' ')) token.pop_back();
-  const bool printable = std::all_of(token.begin(), token.end(), [](char c) { return c > ' ' && c < 127 && c != ';'; });
-  if (!in.good() && token.empty()) why = fmt::format("--token-file {} cannot be read", opt.token_file);
-  else if (token.size() < 32 || !printable)
-    why = "the token in --token-file must be at least 32 printable characters (128 bits), without spaces or ';'";
-  if (!why.empty()) return std::nullopt;
-  return token;
-}
-
 std::optional<double> speed_of(const std::string& text) {
   if (text == "max") return serve::kSpeedMax;
   char* end = nullptr;
@@ -78,7 +51,7 @@ int serve_command(const ServeOptions& opt) {
     return bad_options(fmt::format("--speed '{}' is neither a number in {}..{} nor 'max'", opt.speed, serve::kMinSpeed,
                                    serve::kMaxSpeed));
   std::string why;
-  const auto token = read_token(opt, why);
+  const auto token = serve::read_token(opt.token_file, opt.bind, why);
   if (!token) return bad_options(why);
   config::LoadResult loaded =
       config::load_machine(opt.machine, {opt.strict_keys ? config::KeyPolicy::strict : config::KeyPolicy::lenient});
@@ -131,7 +104,7 @@ int serve_command(const ServeOptions& opt) {
     return bad_options(fmt::format("cannot listen on {}:{}: {}", opt.bind, opt.port, e.what()));
   }
   if (const std::string warning = kernel.start(opt.realtime); !warning.empty()) fmt::print(stderr, "{}\n", warning);
-  if (!loopback(opt.bind))
+  if (!serve::loopback(opt.bind))
     fmt::print(stderr, "nck serve: warning: plain HTTP on {} carries the token in clear; use it on a trusted network only\n",
                opt.bind);
   const std::string host = opt.bind.find(':') != std::string::npos ? fmt::format("[{}]", opt.bind) : opt.bind;

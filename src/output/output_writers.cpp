@@ -17,13 +17,14 @@ namespace nck::app {
 using json = nlohmann::ordered_json;
 
 nlohmann::ordered_json RunNames::spindle(std::optional<std::int8_t> index) const {
-  if (!index || *index < 0 || !run || static_cast<std::size_t>(*index) >= run->kernel().spindle_count()) return nullptr;
-  return run->kernel().spindle_name(static_cast<std::size_t>(*index));
+  const std::string* name = index && *index >= 0 && run ? run->spindle_name(static_cast<std::size_t>(*index)) : nullptr;
+  if (!name) return nullptr;
+  return *name;
 }
 
 nlohmann::ordered_json RunNames::axis(std::int8_t index) const {
   if (index < 0 || !run) return nullptr;
-  return run->kernel().axis_name(static_cast<std::size_t>(index));
+  return config::axis_list_name(run->config(), static_cast<std::size_t>(index));
 }
 
 std::string dump_json(const nlohmann::ordered_json& j, int indent) {
@@ -72,7 +73,7 @@ std::string RunNames::text(ErrorId id, std::optional<std::uint32_t> message) con
 }
 
 std::string RunNames::file(std::size_t ch, std::uint16_t id) const {
-  const nc::Decoder* d = run && ch < run->channel_count() ? run->prep(ch).decoder() : nullptr;
+  const nc::Decoder* d = run ? run->decoder(ch) : nullptr;
   return d ? to_utf8(d->file_name(id)) : std::string();
 }
 
@@ -130,10 +131,10 @@ void add_diagnosis_fields(nlohmann::ordered_json& j, const kernel::Event& e, con
   const SourceLoc loc{names.file(e.channel_index(), e.at.file_id), e.at.line, 0};
   std::string text = names.text(d->id, d->message);
   // A drive's diagnostic names its axis (CiA 402 drives, issue 46).
-  if (d->axis && names.run) text += fmt::format(" (axis {})", names.run->kernel().axis_name(static_cast<std::size_t>(*d->axis)));
+  if (d->axis && names.run) text += fmt::format(" (axis {})", config::axis_list_name(names.run->config(), static_cast<std::size_t>(*d->axis)));
   add_diagnostic_fields(j, diagnostic_json(d->id, text, loc, e.channel,
                                            e.get<kernel::ev::Warning>() ? Severity::warning : Severity::error));
-  if (d->axis && names.run) j["axis"] = names.run->kernel().axis_name(static_cast<std::size_t>(*d->axis));
+  if (d->axis && names.run) j["axis"] = config::axis_list_name(names.run->config(), static_cast<std::size_t>(*d->axis));
 }
 }  // namespace
 

@@ -284,13 +284,14 @@ void ReportWriter::add_mark(Mark m) {
 // A cycle is recorded as it comes (what it counts towards, after its own
 // events, and its plot values); ReportPlots folds the batches into the
 // plots on its own thread.
-void ReportWriter::sample(std::uint64_t cycle, const kernel::TickOutput& out, const RunNames& names) {
+void ReportWriter::sample(std::uint64_t cycle, const kernel::TickOutput& out, const RunNames& names,
+                          const plc::HliImage& hli) {
   if (!enabled_) return;
   for (const kernel::Event& e : out.events) {
     take(e, names);
     mark_spindle(e);
   }
-  watch_plc(out.t_s, names);
+  watch_plc(out.t_s, hli);
   record(cycle, out);
 }
 
@@ -367,9 +368,7 @@ void ReportWriter::take_frame(Channel& ch, std::uint32_t store_index, const RunN
 
 // The PLC's overrides and feedholds as the cycle just computed used them
 // (the simulated HLI image): each change a mark, each feedhold a shaded span.
-void ReportWriter::watch_plc(double t_s, const RunNames& names) {
-  if (!names.run) return;
-  const plc::HliImage& hli = names.run->machine().hli();
+void ReportWriter::watch_plc(double t_s, const plc::HliImage& hli) {
   // make_wait: called only when a hold starts (a Wait holds strings: not built every cycle)
   auto hold = [&](bool on, std::optional<std::size_t>& open, const auto& make_wait) {
     if (on && !open && waits_.size() < kMaxListed) {

@@ -267,7 +267,7 @@ void Simulation::cycle() {
   if (run_->has_refusals()) report_refusals(o);
   if (out_.trace.is_open()) out_.trace.write(index, o);
   if (!out_.trace_memory.write(index, o)) trace_full_ = true;
-  out_.report.sample(index, o, names_);
+  out_.report.sample(index, o, names_, run_->machine().hli());
   if (stop_at_ && stop_at_->reached(o)) stop_at_reached_ = true;
   if (out_.event_memory.take_dropped() > 0) report_events_dropped(o);
 }

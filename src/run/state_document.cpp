@@ -33,7 +33,7 @@ bool face_turning(const config::Machine& m, const config::ChannelAxis& a) {
   return a.axis_index >= 0 && m.axes[static_cast<std::size_t>(a.axis_index)].is_face_turning();
 }
 
-json channel_json(const LiveChannel& c, const config::Machine& m, const sim::DryRun& run, std::size_t ch,
+json channel_json(const LiveChannel& c, const config::Machine& m, const prep::RunRecords& run, std::size_t ch,
                   const ChannelPlace& place, const LastErrors* errors) {
   const config::ChannelConfig& cfg = m.channels[ch];
   json mcs = json::object(), pcs = json::object(), dtg = json::object(), axes = json::object();
@@ -80,10 +80,10 @@ json channel_json(const LiveChannel& c, const config::Machine& m, const sim::Dry
   return j;
 }
 
-json spindle_json(const LiveSnapshot& s, std::size_t i, const sim::DryRun& run) {
+json spindle_json(const LiveSnapshot& s, std::size_t i, const prep::RunRecords& run) {
   const kernel::SpindleOutput& o = s.spindles[i];
   const plc::SpindleStatus& h = s.hli_spindles[i];
-  return {{"name", run.kernel().spindle_name(i)},
+  return {{"name", run.spindle_name(i) ? *run.spindle_name(i) : std::string()},
           {"set_rpm", shown(o.set_rpm)},
           {"act_rpm", shown(o.act_rpm)},
           {"pos_deg", shown(o.set_pos_deg)},
@@ -95,7 +95,7 @@ json spindle_json(const LiveSnapshot& s, std::size_t i, const sim::DryRun& run) 
 
 }  // namespace
 
-nlohmann::ordered_json state_json(const LiveSnapshot& s, const config::Machine& m, const sim::DryRun& run,
+nlohmann::ordered_json state_json(const LiveSnapshot& s, const config::Machine& m, const prep::RunRecords& run,
                                   std::span<const ChannelPlace> places, const LastErrors* errors) {
   json channels = json::array();
   for (std::size_t ch = 0; ch < s.channel_count && ch < m.channels.size() && ch < places.size(); ++ch)
@@ -124,7 +124,7 @@ nlohmann::ordered_json state_json(const LiveSnapshot& s, const config::Machine& 
           {"last_error", errors ? errors->latest() : json()}};
 }
 
-void note_event(ChannelFrames& frames, const kernel::Event& e, const sim::DryRun& run) {
+void note_event(ChannelFrames& frames, const kernel::Event& e, const prep::RunRecords& run) {
   if (e.channel < 1 || static_cast<std::size_t>(e.channel) > frames.size()) return;
   BlockContext& b = frames[e.channel - 1u];
   if (const auto* o = e.get<nck::frames::OffsetEvent>()) {
@@ -154,7 +154,7 @@ std::array<ChannelPlace, config::kMaxChannels> channel_places(const LiveSnapshot
   return places;
 }
 
-nlohmann::ordered_json snapshot_json(const LiveSnapshot& s, const config::Machine& m, const sim::DryRun& run,
+nlohmann::ordered_json snapshot_json(const LiveSnapshot& s, const config::Machine& m, const prep::RunRecords& run,
                                      const ChannelFrames& frames, const LastErrors* errors) {
   return state_json(s, m, run, channel_places(s, m, frames), errors);
 }

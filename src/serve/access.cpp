@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <fstream>
 #include <random>
 
 #include <fmt/format.h>
@@ -86,6 +87,31 @@ bool RequestBudget::take(std::chrono::steady_clock::time_point now) noexcept {
   if (tokens_ < 1.0) return false;
   tokens_ -= 1.0;
   return true;
+}
+
+bool loopback(const std::string& address) {
+  return address == "127.0.0.1" || address == "::1" || address.starts_with("127.");
+}
+
+std::optional<std::string> read_token(const std::string& token_file, const std::string& bind, std::string& why) {
+  if (token_file.empty()) {
+    if (!loopback(bind)) {
+      why = fmt::format("--bind {} reaches beyond this machine: give --token-file FILE with a secret of at least "
+                        "32 characters", bind);
+      return std::nullopt;
+    }
+    return make_token();
+  }
+  std::ifstream in(token_file);
+  std::string token;
+  std::getline(in, token);
+  while (!token.empty() && (token.back() == '\r' || token.back() == ' ')) token.pop_back();
+  const bool printable = std::all_of(token.begin(), token.end(), [](char c) { return c > ' ' && c < 127 && c != ';'; });
+  if (!in.good() && token.empty()) why = fmt::format("--token-file {} cannot be read", token_file);
+  else if (token.size() < 32 || !printable)
+    why = "the token in --token-file must be at least 32 printable characters (128 bits), without spaces or ';'";
+  if (!why.empty()) return std::nullopt;
+  return token;
 }
 
 }  // namespace nck::app::serve

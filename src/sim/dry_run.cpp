@@ -261,27 +261,4 @@ ChannelSnapshot DryRun::snapshot(std::size_t ch) const {
   return s;
 }
 
-const std::string& DryRun::message(std::uint32_t index) const {
-  static const std::string none;
-  return index < store_->messages.size() ? store_->messages[index] : none;
-}
-
-const prep::OffsetPayload& DryRun::offset(std::uint32_t index) const {
-  static const prep::OffsetPayload none;
-  return index < store_->offsets.size() ? store_->offsets[index] : none;
-}
-
-const prep::LinkPayload& DryRun::link(std::uint32_t index) const {
-  static const prep::LinkPayload none;
-  return index < store_->links.size() ? store_->links[index] : none;
-}
-
-const nc::ModalState* DryRun::modal(std::uint32_t index) const {
-  return index < store_->frame_modals.size() ? &store_->frame_modals[index] : nullptr;
-}
-
-const kernel::AffineMap* DryRun::frame(std::uint32_t index) const {
-  return index < store_->frames.size() ? &store_->frames[index] : nullptr;
-}
-
 }  // namespace nck::sim

@@ -198,8 +198,9 @@ void MachineSim::apply(const sim::ScenarioAction& a, kernel::TickInput& in) noex
 
 void MachineSim::set_axis_input(std::size_t ch, const act::AxisRef& axis, bool kernel::AxisSwitches::*input,
                                 bool on) noexcept {
-  if (axis.index < 0) return;
-  const std::int16_t m = drive_models_.machine_axis(ch, static_cast<std::size_t>(axis.index));
+  const std::int16_t m = axis.spindle_axis_list >= 0 ? axis.spindle_axis_list
+                         : axis.index >= 0           ? drive_models_.machine_axis(ch, static_cast<std::size_t>(axis.index))
+                                                     : std::int16_t{-1};
   if (m >= 0 && static_cast<std::size_t>(m) < axes_.size()) axes_[static_cast<std::size_t>(m)].*input = on;
   amp_fault_ = false;
   for (const kernel::AxisSwitches& s : axes_) amp_fault_ = amp_fault_ || s.amp_fault;

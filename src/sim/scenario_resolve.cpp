@@ -22,14 +22,31 @@ std::int8_t find_spindle(const config::ChannelConfig& ch, std::string_view name)
   return plc::kNoSpindle;
 }
 
+std::int8_t find_axis(const config::ChannelConfig& ch, std::string_view name) {
+  for (std::size_t j = 0; j < ch.axes.size(); ++j)
+    if (detail::iequals(ch.axes[j].name, name)) return static_cast<std::int8_t>(j);
+  return -1;
+}
+
 bool resolve_axis(act::AxisRef& axis, const ScenarioAction& a, const config::ChannelConfig& ch,
                   const std::string& file, Diagnostics& diags) {
-  for (std::size_t j = 0; j < ch.axes.size(); ++j)
-    if (detail::iequals(ch.axes[j].name, axis.view())) axis.index = static_cast<std::int8_t>(j);
+  axis.index = find_axis(ch, axis.view());
   if (axis.index >= 0) return true;
   diags.add(ErrorId::PlcScenarioUnknownAxis, SourceLoc{file, a.line, 0},
             fmt::format("channel {} has no path axis '{}'", a.channel, axis.view()));
   return false;
+}
+
+// An amplifier fault's drive: a path axis's, or a spindle's that has an
+// axis list (its drive; a spindle without one has no amplifier the NC knows).
+bool resolve_drive(act::AxisRef& axis, const ScenarioAction& a, const config::ChannelConfig& ch,
+                   const std::string& file, Diagnostics& diags) {
+  const std::int8_t s = find_spindle(ch, axis.view());
+  if (find_axis(ch, axis.view()) < 0 && s != plc::kNoSpindle && ch.spindles[static_cast<std::size_t>(s)].axis_index >= 0) {
+    axis.spindle_axis_list = static_cast<std::int16_t>(ch.spindles[static_cast<std::size_t>(s)].axis_index);
+    return true;
+  }
+  return resolve_axis(axis, a, ch, file, diags);
 }
 
 // A spindle named, or none where the action allows none (spindle_stop_at_end).
@@ -63,7 +80,9 @@ bool resolve_action(ScenarioAction& a, const config::Machine& m, const plc::Spin
   const ScenarioAction& head = a;
   return std::visit(
       [&](auto& p) {
-        if constexpr (requires { p.axis; }) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(p)>, act::AmpFault>) {
+          return resolve_drive(p.axis, head, ch, file, diags);
+        } else if constexpr (requires { p.axis; }) {
           return resolve_axis(p.axis, head, ch, file, diags);
         } else if constexpr (requires { p.spindle; }) {
           if (!resolve_spindle(p.spindle, head, ch, map, file, diags)) return false;

@@ -4,7 +4,7 @@ through scripts/hal-demo.sh and bounded in time. Exit 77 (skipped) when the
 HAL components are not built or unshare is not allowed.
 
   hal_test.py SOURCE BUILD CASE   CASE: contour | operator | plc | period | wrong-type | missing-machine | missing-program
-                                        | cia402 | cia402-fault | amp-fault
+                                        | cia402 | cia402-fault | amp-fault | serve | skip
 """
 import json, os, re, subprocess, sys, tempfile
 
@@ -117,6 +117,44 @@ if case == "contour":
                   "the base thread misses periods")
             continue
         check(outside_s <= 0.01 * run_s, f"{a}: |fb - cmd| <= v*T + 1 step = {bound:.3f} mm in >= 99 % of the cycles", out)
+elif case == "serve":
+    # nck-hal --serve: nck serve's API for the kernel in the HAL thread. The
+    # operator (serve_client.py, inside the session's namespaces) holds the
+    # path with the API's feedhold, sets the override, is refused what the
+    # HAL file owns, and watches the program end in the state and stream.
+    with tempfile.NamedTemporaryFile("w", suffix=".token", delete=False) as t:
+        t.write("0123456789abcdef0123456789abcdef\n")
+    client = os.path.join(src, "tests", "hal", "serve_client.py")
+    text = example_text.replace("nck-hal $(NCK_MACHINE)", f"nck-hal --serve --port 8765 --token-file {t.name} $(NCK_MACHINE)")
+    text = text.replace("waitusr nck-hal\n", f"loadusr -w /usr/bin/python3 {client} 8765 {t.name}\nunloadusr nck-hal\n")
+    rc, out = run(text, timeout=150)
+    os.unlink(t.name)
+    print("\n".join(l for l in out.splitlines() if l.startswith(("ok:", "FAILED:", "nck-hal:"))))
+    check("serve client: done" in out and "FAILED" not in out, "every check of the API operator passed", out)
+    check("nck-hal: http://127.0.0.1:8765/?token=" in out, "nck-hal printed its URL", out)
+    check(pins(out).get("nck.channel.1.status") == "3", "the channel ended (status 3)", out)
+elif case == "skip":
+    # nck.channel.1.skip-mask reaches nck-hal's preparation (set before
+    # `start`, it rules the first blocks too): the /1 block is skipped, X
+    # never passes 10 (a minmax on pos-cmd); after M19 the orient pin is on.
+    head = example_text[:example_text.index("\nstart\n")]
+    tail = """
+loadrt minmax count=1
+addf minmax.0 servo-thread
+net x-cmd => minmax.0.in
+setp nck.channel.1.skip-mask 1
+start
+waitusr nck-hal
+show pin minmax.0.max
+show pin nck.spindle.S1.orient
+show pin nck.channel.1.status
+stop
+"""
+    rc, out = run(head + "\n" + tail, program=os.path.join(src, "tests", "hal", "skip.nc"), timeout=60)
+    v = pins(out)
+    check(rc == 0 and v.get("nck.channel.1.status") == "3", f"skip.nc ran to its end (exit {rc})", out)
+    check(float(v["minmax.0.max"]) == 10.0, f"the /1 block was skipped: X at most {v['minmax.0.max']}", out)
+    check(v.get("nck.spindle.S1.orient") == "TRUE", "nck.spindle.S1.orient is on after M19", out)
 elif case == "plc":
     # (d): spindle.nc with the example's plain-HAL PLC (timedelay acknowledges
     # each M/H function) waits where `nck run --plc spindle.plc` waits.

@@ -23,7 +23,7 @@ namespace nck::app {
 // names, spindle names, message texts, and the plan store's link and offset
 // payloads (the writers beside each payload, nck/kernel/event.hpp).
 struct RunNames {
-  const sim::DryRun* run = nullptr;
+  const prep::RunRecords* run = nullptr;  // a dry run, or nck-hal's records
   std::string file(std::size_t ch, std::uint16_t id) const;
   // A spindle's designation, or null.
   nlohmann::ordered_json spindle(std::optional<std::int8_t> index) const;

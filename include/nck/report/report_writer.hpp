@@ -22,6 +22,7 @@
 #include "nck/kernel/tick_io.hpp"
 #include "nck/output/line_ledger.hpp"
 #include "nck/output/trace_columns.hpp"
+#include "nck/plc/hli.hpp"
 #include "nck/report/backplot_axes.hpp"
 #include "nck/report/report_batch.hpp"
 #include "nck/report/report_contour.hpp"
@@ -53,7 +54,8 @@ class ReportWriter {
   // begins); the report watches each channel's decoded blocks from here on.
   void start(const config::Machine& m, const ReportInputs& inputs, sim::DryRun& run);
   // Once per cycle, after its events went to event().
-  void sample(std::uint64_t cycle, const kernel::TickOutput& out, const RunNames& names);
+  // `hli`: the simulated PLC's image (its overrides and feedholds are marked).
+  void sample(std::uint64_t cycle, const kernel::TickOutput& out, const RunNames& names, const plc::HliImage& hli);
   // One event of the log: its type says what it is, its JSON line goes
   // into the page's event table as it is.
   void event(const kernel::Event& e, const std::string& json_line, const RunNames& names);
@@ -147,7 +149,7 @@ class ReportWriter {
   void end_wait(Channel& ch, double t_s, const kernel::ev::Wait& wait, const std::string& spindle);
   void mark_spindle(const kernel::Event& e);
   void take_frame(Channel& ch, std::uint32_t store_index, const RunNames& names);
-  void watch_plc(double t_s, const RunNames& names);  // overrides and feedholds from the HLI
+  void watch_plc(double t_s, const plc::HliImage& hli);  // overrides and feedholds from the HLI
   std::string limits_json(const Channel& ch) const;
   std::string frames_json(const Channel& ch) const;
   std::string contour_json(const Channel& ch) const;

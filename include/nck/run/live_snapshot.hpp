@@ -6,11 +6,17 @@
 // (run/state_document.hpp).
 #include <array>
 #include <cstdint>
+#include <type_traits>
 
 #include "nck/config/machine.hpp"
 #include "nck/kernel/event.hpp"
 #include "nck/kernel/tick_io.hpp"
-#include "nck/sim/dry_run.hpp"
+#include "nck/kernel/kernel.hpp"
+#include "nck/plc/hli.hpp"
+
+namespace nck::sim {
+class DryRun;
+}
 
 namespace nck::app {
 
@@ -42,6 +48,7 @@ struct Lateness {
   double p50_us = 0, p99_us = 0;  // over the whole session
 };
 
+// Plain data: nck.so publishes one through HAL shared memory (apps/hal/link.hpp).
 struct LiveSnapshot {
   std::uint64_t generation = 0;  // which loaded run (LiveKernel::load)
   std::uint64_t cycle = 0;       // the run's cycles
@@ -58,6 +65,36 @@ struct LiveSnapshot {
   std::uint64_t events_lost = 0;  // the event ring was full (a server that fell behind)
   kernel::MachineOutput machine{};  // E-stop and machine on as the kernel follows them
 };
+static_assert(std::is_trivially_copyable_v<LiveSnapshot>);
+
+// The kernel's channels and spindles after the cycle that gave `out`
+// (real-time safe: copies only), not the operator's switches (each channel's
+// `hli`, the spindle overrides): their owner fills them. Inline: nck.so
+// (apps/hal) fills one in its HAL thread without linking this layer.
+inline void fill_kernel_snapshot(const kernel::Kernel& k, const kernel::TickOutput& out, LiveSnapshot& s) noexcept {
+  s.cycle = k.cycles();
+  s.t_s = k.time_s();
+  s.channel_count = k.channel_count();
+  s.spindle_count = k.spindle_count();
+  s.machine = out.machine;
+  for (std::size_t ch = 0; ch < s.channel_count && ch < config::kMaxChannels; ++ch) {
+    const kernel::ChannelOutput& o = out.channels[ch];
+    LiveChannel& c = s.channels[ch];
+    c.axis_mcs = o.axis_mcs;
+    c.path_velocity_mm_s = o.path_velocity_mm_s;
+    c.feed_mm_s = o.feed_mm_s;
+    c.distance_to_go_mm = o.distance_to_go_mm;
+    c.axis_dtg = o.axis_dtg;
+    c.program_state = k.program_state(ch);
+    c.cause = o.cause;
+    c.wait_reason = o.wait_reason;
+    c.homed_axes = o.homed_axes;
+    c.homing_required = o.homing_required;
+    c.at = k.channel_state(ch).at;
+  }
+  s.spindles = out.spindles;
+  s.hli_spindles = out.hli_spindles;
+}
 
 // The run's channels, spindles and operator switches after the cycle that
 // gave `out` (real-time safe: copies only). The fields of the server's own

@@ -11,7 +11,7 @@
 #include "nck/kernel/affine_map.hpp"
 #include "nck/output/last_errors.hpp"
 #include "nck/run/live_snapshot.hpp"
-#include "nck/sim/dry_run.hpp"
+#include "nck/prep/run_records.hpp"
 
 namespace nck::app {
 
@@ -22,14 +22,14 @@ struct BlockContext {
   kernel::AffineMap frame;
   std::optional<nc::ModalState> modal;
   // The coordinate systems the program set (#ACS, #CS): the last `offset`
-  // event of each kind, as an index of the run's offsets (DryRun::offset).
+  // event of each kind, as an index of the run's offsets (RunRecords::offset).
   std::optional<std::uint32_t> acs_offset, cs_offset;
 };
 using ChannelFrames = std::array<BlockContext, config::kMaxChannels>;
 
 // Takes a block event's map and modal state, and an #ACS / #CS offset
 // event, into its channel's context (other events leave it).
-void note_event(ChannelFrames& frames, const kernel::Event& e, const sim::DryRun& run);
+void note_event(ChannelFrames& frames, const kernel::Event& e, const prep::RunRecords& run);
 
 // Per channel, where it stands in program coordinates and its modal state.
 struct ChannelPlace {
@@ -40,7 +40,7 @@ struct ChannelPlace {
 // The document. `run`: the run the snapshot belongs to (names of files and
 // spindles); `places`: one per channel of the snapshot; `errors`: the last
 // errors (null fields without).
-nlohmann::ordered_json state_json(const LiveSnapshot& s, const config::Machine& m, const sim::DryRun& run,
+nlohmann::ordered_json state_json(const LiveSnapshot& s, const config::Machine& m, const prep::RunRecords& run,
                                   std::span<const ChannelPlace> places, const LastErrors* errors);
 
 // Per channel of the snapshot, its place from the block events' maps.
@@ -48,7 +48,7 @@ std::array<ChannelPlace, config::kMaxChannels> channel_places(const LiveSnapshot
                                                              const ChannelFrames& frames);
 
 // nck serve's: the places from the block events' maps.
-nlohmann::ordered_json snapshot_json(const LiveSnapshot& s, const config::Machine& m, const sim::DryRun& run,
+nlohmann::ordered_json snapshot_json(const LiveSnapshot& s, const config::Machine& m, const prep::RunRecords& run,
                                      const ChannelFrames& frames, const LastErrors* errors = nullptr);
 
 }  // namespace nck::app

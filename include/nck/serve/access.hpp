@@ -5,6 +5,7 @@
 // refused); a per-client request budget.
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,6 +14,12 @@ namespace nck::app::serve {
 
 // 128 random bits as 32 hexadecimal digits (the kernel's random source).
 std::string make_token();
+// An address of this machine only (127.0.0.0/8, ::1).
+bool loopback(const std::string& address);
+// The token a server started with: `token_file`'s first line (at least
+// 128 bits: 32 printable characters), or without a file a fresh random one
+// (loopback only: beyond it the secret must be chosen). Why not in `why`.
+std::optional<std::string> read_token(const std::string& token_file, const std::string& bind, std::string& why);
 // a == b, in a time that does not depend on where they differ.
 bool same_token(std::string_view a, std::string_view b) noexcept;
 // The value of cookie `name` in a Cookie header, or "".

@@ -24,6 +24,7 @@
 #include "nck/core/diagnostic.hpp"
 #include "nck/kernel/kernel.hpp"
 #include "nck/nc/modal.hpp"
+#include "nck/prep/run_records.hpp"
 #include "nck/sim/scenario.hpp"
 #include "nck/prep/channel_prep.hpp"
 #include "nck/prep/plan_store.hpp"
@@ -67,7 +68,7 @@ struct ChannelSnapshot {
   kernel::ChannelStatus status = kernel::ChannelStatus::idle;
 };
 
-class DryRun {
+class DryRun final : public prep::RunRecords {
  public:
   // setup: programs[i] runs in channel i; channels without one stay idle.
   static std::expected<DryRun, Diagnostic> create(const config::Machine& m,
@@ -147,23 +148,21 @@ class DryRun {
   const prep::ChannelPrep& prep(std::size_t ch) const { return preps_.at(ch); }
   const kernel::Kernel& kernel() const { return *kernel_; }
   // The machine this run was made with (its own copy: later edits of the server's do not reach it).
-  const config::Machine& config() const { return *machine_; }
+  const config::Machine& config() const override { return *machine_; }
   const MachineSim& machine() const { return *sim_; }
   MachineSim& machine() { return *sim_; }
   ChannelSnapshot snapshot(std::size_t ch) const;
-  // Texts and offset values that events refer to by message_index.
-  const std::string& message(std::uint32_t index) const;
-  const prep::OffsetPayload& offset(std::uint32_t index) const;
-  const prep::LinkPayload& link(std::uint32_t index) const;
-  // A block event's program -> machine map (record_frames; nullptr: none).
-  const kernel::AffineMap* frame(std::uint32_t index) const;
-  // The modal state recorded with that map (record_modal; nullptr: none).
-  const nc::ModalState* modal(std::uint32_t index) const;
+  // What events name (prep::RunRecords): files, spindles, the plan store.
+  const nc::Decoder* decoder(std::size_t ch) const override { return ch < preps_.size() ? preps_[ch].decoder() : nullptr; }
+  const std::string* spindle_name(std::size_t index) const override {
+    return index < kernel_->spindle_count() ? &kernel_->spindle_name(index) : nullptr;
+  }
   // setup: watches channel ch's decoded blocks (the report's programmed contour).
   void observe(std::size_t ch, prep::PrepObserver* o) { preps_.at(ch).set_observer(o); }
 
  private:
   DryRun() = default;
+  const prep::PlanStore& store() const override { return *store_; }
 
   std::unique_ptr<const config::Machine> machine_;
   std::unique_ptr<kernel::Kernel> kernel_;

@@ -34,6 +34,8 @@ struct SpindleRef {
 struct AxisRef {
   std::array<char, plc::kSpindleNameChars> name{};
   std::int8_t index = -1;  // resolve_action
+  // amp_fault naming a spindle (its drive): the spindle's machine axis list (resolve_action)
+  std::int16_t spindle_axis_list = -1;
   std::string_view view() const noexcept { return std::string_view(name.data()); }
 };
 

@@ -236,5 +236,48 @@ TEST_F(MillInHal, LimitSwitchPinEndsInErrorNamingItsDirection) {
   EXPECT_TRUE(**cycle_.axis_pins[0].enable);
 }
 
+// nck-hal --serve: nck.cycle publishes its state every cycle and takes the
+// API's actions beside the pins (api_controls.hpp), allocation-free. The
+// API's feedhold holds the path; the API's override holds until the pin
+// changes; the API's feedhold off lets the program run to its end.
+TEST_F(MillInHal, ApiActionsActBesideThePinsAndTheStateIsPublishedWithoutAllocating) {
+  link_->serving = 1;
+  const auto action = [this](sim::ActionPayload p) {
+    sim::ScenarioAction a;
+    a.payload = p;
+    ASSERT_TRUE(link_->api_actions.push(a));
+  };
+  const auto state = [this]() -> const app::LiveChannel& {  // the newest published
+    (void)link_->state.take();
+    return link_->state.front().channels[0];
+  };
+  g_allocations = 0;
+  cycles(3000);
+  EXPECT_GT(state().path_velocity_mm_s, 1.0);
+  action(sim::act::Feedhold{true});
+  action(sim::act::FeedOverride{50});
+  cycles(1000);
+  EXPECT_EQ(state().path_velocity_mm_s, 0.0);
+  EXPECT_EQ(**cycle_.channel_pins[0].path_velocity, 0.0);
+  EXPECT_TRUE(state().hli.feedhold);
+  EXPECT_EQ(state().hli.feed_override_percent, 50.0);
+  **cycle_.channel_pins[0].feed_override = 80;  // the pin changed last: it rules
+  action(sim::act::SkipMask{0x3});  // the skip levels for nck-hal's preparation
+  cycles(1);
+  EXPECT_EQ(state().hli.feed_override_percent, 80.0);
+  EXPECT_EQ(link_->skip_mask[0].load(), 0x3u);
+  EXPECT_EQ(state().hli.skip_mask, 0x3u);
+  **cycle_.channel_pins[0].skip_mask = 0x1;
+  cycles(1);
+  EXPECT_EQ(link_->skip_mask[0].load(), 0x1u);
+  action(sim::act::Feedhold{false});
+  std::size_t n = 0;
+  for (; n < 200000 && !link_->channel_done[0].load(); ++n) cycles(1);
+  EXPECT_TRUE(link_->channel_done[0].load());
+  EXPECT_EQ(state().program_state, kernel::ProgramState::ended);
+  EXPECT_NEAR(state().axis_mcs[2], 22.0, 1e-9);
+  EXPECT_EQ(g_allocations.load(), 0u);
+}
+
 }  // namespace
 }  // namespace nck::hal
