@@ -89,7 +89,7 @@
     const machine = window.NckControls.machinePanel((name, on) =>
       api.machineInput(name, on).catch((e) => reportRefusal(e, name)));
     hmi.bar = { speed, pause, machine };
-    $("run").append(machine.el, el("label", {}, "speed ", speed), pause.el, step,
+    $("run").append(machine.el, el("span", { class: "run-pace" }, el("label", {}, "speed ", speed), pause.el, step),
       el("span", { id: "clock" }), el("span", { id: "lateness", title: "how late the kernel's cycles woke up" }),
       el("span", { id: "rate" }), el("span", { id: "link" }));
   }
@@ -109,8 +109,22 @@
     $("lateness").className = l.late_cycles ? "warn" : "";
   }
 
+  // nck-hal --serve (docs/hal.md, "The HMI"): the kernel runs in a LinuxCNC
+  // HAL thread. What the HAL file owns (E-stop and machine on are pins, the
+  // thread sets the pace; another program, MDI, jog, homing and offsets
+  // would need another kernel) is shown, not offered (hmi.css, body.hal).
+  function halMode() {
+    document.body.classList.add("hal");
+    for (const id of ["estop", "machine-on"]) {
+      $(id).disabled = true;
+      $(id).title = "HAL pins drive the machine's inputs (nck.estop, nck.machine-on)";
+    }
+    $("run").prepend(el("span", { class: "hal-badge", title: "nck-hal --serve: the kernel runs in a LinuxCNC HAL thread" }, "HAL"));
+  }
+
   function onState(s) {
     hmi.state = s;
+    if (s.hal && !document.body.classList.contains("hal")) halMode();
     updateBar(s);
     for (const p of hmi.panels) p.update(s);
     drawTimeline(s);

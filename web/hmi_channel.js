@@ -111,8 +111,8 @@
       this.select = el("select", { "aria-label": "program of channel " + this.n });
       const file = el("input", { type: "file", accept: ".nc,.txt", hidden: true, onchange: () => this.uploadFile(file) });
       return el("div", { class: "picker" }, this.select,
-        button("Load", "load the chosen program into this channel", () => this.load(this.select.value)),
-        button("Upload…", "upload an NC program from this computer", () => file.click()), file);
+        button("Load", "load the chosen program into this channel", () => this.load(this.select.value), "load"),
+        button("Upload…", "upload an NC program from this computer", () => file.click(), "upload"), file);
     }
 
     programs(list) {

@@ -21,7 +21,7 @@
         hold,
         button("Stop", "NC stop: hold the program where it is (cycle start goes on, reset ends it)", () => send("stop"), "stop"),
         button("Reset", "reset the channel: the program ends, errors clear", () => send("reset"), "reset")),
-      el("div", { class: "switches" }, step.el, opt.el, el("label", { class: "check" }, "mode ", mode)));
+      el("div", { class: "switches" }, step.el, opt.el, el("label", { class: "check mode-choice" }, "mode ", mode)));
     return {
       el: panel,
       update(c) {

@@ -7,7 +7,7 @@ only when all passed. Every wait is bounded.
 
   serve_client.py PORT TOKEN_FILE
 """
-import json, subprocess, sys, time, urllib.error, urllib.request
+import json, os, subprocess, sys, time, urllib.error, urllib.request
 
 port, token = int(sys.argv[1]), open(sys.argv[2]).read().strip()
 base = f"http://127.0.0.1:{port}"
@@ -76,6 +76,16 @@ check(status == 200 and m["channels"][0]["axes"][:3] == ["X", "Y", "Z"], "GET /a
 
 c = wait_for(lambda c: c["state"] == "running" and c["path_velocity_mm_s"] > 1, "the program runs and moves")
 check(c["block"]["file"].endswith("/contour.nc") and c["block"]["line"] > 0, f"the state names the block: {c['block']}")
+
+# The HMI page in a browser (tests/hal/hal_hmi_check.mjs), while the program runs.
+here = os.path.dirname(os.path.abspath(__file__))
+if os.path.isdir(os.path.join(here, "..", "..", "node_modules", "playwright-core")):
+    page = subprocess.run(["node", os.path.join(here, "hal_hmi_check.mjs"), f"{base}/?token={token}"],
+                          capture_output=True, text=True, timeout=90)
+    print(page.stdout.strip(), flush=True)
+    check(page.returncode == 0, f"the HMI page works against nck-hal ({page.stderr.strip()[-500:]})")
+else:
+    print("skipped: the HMI page check (node_modules/playwright-core missing: npm ci)", flush=True)
 
 status, r = request("/api/v1/command", {"command": "feedhold", "on": True})
 check(status == 200 and r.get("ok"), f"feedhold on through the API: {status} {r}")
