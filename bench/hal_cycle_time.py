@@ -7,7 +7,10 @@ tick's own clocks, the same clock) and nck.clocks-per-us with the `sampler`
 component, and prints the component's own share, time - tick, in
 microseconds: median, 99th percentile and maximum, over RUNS runs.
 
-  bench/hal_cycle_time.py SOURCE BUILD [--runs 2]
+  bench/hal_cycle_time.py SOURCE BUILD [--runs 2] [--serve]
+
+--serve starts nck-hal with its API (nck.cycle then also publishes its
+state every cycle, docs/hal.md "The HMI") and unloads it after the samples.
 
 Needs root (unshare) and the HAL components (NCK_HAL). The maximum on a
 host without PREEMPT_RT says more about the host than about nck.
@@ -20,8 +23,11 @@ ap = argparse.ArgumentParser()
 ap.add_argument("source")
 ap.add_argument("build")
 ap.add_argument("--runs", type=int, default=2)
+ap.add_argument("--serve", action="store_true")
 a = ap.parse_args()
 example = open(os.path.join(a.source, "examples", "hal", "mill-stepgen.hal")).read()
+if a.serve:
+    example = example.replace("nck-hal $(NCK_MACHINE)", "nck-hal --serve --port 8765 $(NCK_MACHINE)")
 head = example[:example.index("\nstart\n")]
 tail = f"""
 loadrt sampler depth=16384 cfg=ssf
@@ -31,7 +37,7 @@ net tick-time nck.tick-time => sampler.0.pin.1
 net clock-rate nck.clocks-per-us => sampler.0.pin.2
 start
 loadusr -w halsampler -n {SAMPLES}
-waitusr nck-hal
+{"unloadusr" if a.serve else "waitusr"} nck-hal
 stop
 """
 own_us, tick_us = [], []
