@@ -157,7 +157,7 @@ void Cycle::read_drives() noexcept {
     fb.following_error = **axis_pins[i].following_error;
   }
   for (const SpindleDrivePins& p : spindle_drive_pins) {
-    if (p.drive < 0) continue;
+    if (!p.cia402) continue;  // a conventional spindle measures through speed-in / revs
     drives::DriveFeedback& fb = in_->drives[static_cast<std::size_t>(p.drive)];
     read_words(p.words, fb);
     fb.actual_pos = **p.pos_fb;
@@ -311,6 +311,10 @@ void Cycle::write_pins() noexcept {
   for (const SpindleDrivePins& p : spindle_drive_pins) {
     if (p.drive < 0) continue;
     const drives::DriveCommand& d = out_->drives[static_cast<std::size_t>(p.drive)];
+    if (!p.cia402) {
+      **p.words.vel_cmd = d.target_vel;  // a conventional drive: the velocity set point only
+      continue;
+    }
     write_words(d, p.words);
     **p.pos_cmd = d.target_pos;
   }

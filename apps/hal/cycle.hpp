@@ -53,10 +53,12 @@ struct SpindlePins {  // nck.spindle.<name>.*
 };
 // A spindle whose drive is CiA 402: its words and the drive's own
 // (continuous, never wrapped) target and actual position, deg and deg/s.
-struct SpindleDrivePins {  // nck.spindle.<name>.cia-*, drive-*
+// A conventional drive (antr_typ 1): its velocity set point only.
+struct SpindleDrivePins {  // nck.spindle.<name>.cia-*, drive-*, vel-cmd
   CiaPins words;
   PinFloat pos_cmd, pos_fb;
-  int drive = -1;  // its machine axis list (the drive slot); -1: no CiA 402 drive
+  int drive = -1;  // its machine axis list (the drive slot); -1: no drive the NC talks to
+  bool cia402 = false;  // that drive is CiA 402 (else conventional)
 };
 inline constexpr std::size_t kPlcSlots = 8;
 struct PlcPins {  // nck.plc.<k>.*

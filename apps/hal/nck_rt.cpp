@@ -131,11 +131,15 @@ int make_pins(nck::hal::Cycle& c) {
     if (p.axis_list >= 0) r |= bit(HAL_IN, p.amp_fault, n + ".amp-fault-in");
     c.spindle_pins.push_back(p);
     nck::hal::SpindleDrivePins d{};
-    if (p.axis_list >= 0 && c.machine().axes[static_cast<std::size_t>(p.axis_list)].is_cia402()) d.drive = p.axis_list;
-    if (d.drive >= 0) {  // a CiA 402 drive: its words, and the drive's own positions
+    const nck::config::AxisConfig* ax = p.axis_list >= 0 ? &c.machine().axes[static_cast<std::size_t>(p.axis_list)] : nullptr;
+    if (ax && (ax->is_cia402() || ax->is_conventional())) d.drive = p.axis_list;
+    d.cia402 = ax && ax->is_cia402();
+    if (d.cia402) {  // a CiA 402 drive: its words, and the drive's own positions
       r |= cia_pins(d.words, n);
       r |= flt(HAL_OUT, d.pos_cmd, n + ".drive-pos-cmd");
       r |= flt(HAL_IN, d.pos_fb, n + ".drive-pos-fb");
+    } else if (d.drive >= 0) {  // a conventional drive: its velocity set point (deg/s)
+      r |= flt(HAL_OUT, d.words.vel_cmd, n + ".vel-cmd");
     }
     c.spindle_drive_pins.push_back(d);
   }

@@ -108,6 +108,15 @@ void DriveUnits::write_set_point(std::size_t axis_index, double pos, const TickI
   cmd.target_vel = vel;
 }
 
+void DriveUnits::write_spindle_velocity(std::size_t axis_index, double pos_deg, double vel_deg_s, TickOutput& out) noexcept {
+  Slot* s = slot_of(axis_index);
+  if (s == nullptr) return;
+  drives::DriveCommand& cmd = out.drives[axis_index];
+  s->target_pos = pos_deg;
+  cmd.target_pos = pos_deg;
+  cmd.target_vel = cmd.enable ? vel_deg_s : 0.0;  // not powered: no loop to close
+}
+
 void DriveUnits::write_spindle(std::size_t axis_index, const SpindleCycle& c, const TickInput& in,
                                TickOutput& out) noexcept {
   Slot* s = slot_of(axis_index);

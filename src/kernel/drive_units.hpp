@@ -57,6 +57,10 @@ class DriveUnits {
     double step_deg;            // its set point's increment this cycle (drive sense)
     bool wants_homing;          // G74: the spindle stands and waits for its drive to home
   };
+  // A spindle's conventional drive, after the spindles ticked: its velocity
+  // set point (deg/s, drive sense; the kernel closes the position loop in
+  // it) and the set-point position beside it; 0 while not powered. rt
+  void write_spindle_velocity(std::size_t axis_index, double pos_deg, double vel_deg_s, TickOutput& out) noexcept;
   // After the spindles ticked: mode, controlword's homing start and set
   // points. The target position is the drive's own, continuous (never
   // wrapped): it moves by the spindle's increments from where the drive

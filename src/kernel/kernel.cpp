@@ -102,6 +102,7 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
       if (ax != nullptr && static_cast<std::size_t>(sp.axis_index) < drives::kMaxDrives) {
         u.axis_list = static_cast<std::int16_t>(sp.axis_index);
         if (ax->is_cia402()) u.cia402_axis = u.axis_list;
+        if (ax->is_conventional()) u.conventional_axis = u.axis_list;
       }
       u.last_gear = u.axis.status().gear_stage;
       spindle_names_[static_cast<std::size_t>(k)] = sp.name;

@@ -30,7 +30,7 @@ cia::Mode spindle_drive_mode(const spindle::SpindleAxis& a) noexcept {
 
 // The drives' set points: each channel path axis's machine set point, and
 // its velocity from the last one (mm, mm/s); each CiA 402 spindle's mode
-// and increments. rt
+// and increments; each conventional spindle's velocity. rt
 void Kernel::write_drive_set_points(const TickInput& in, TickOutput& out) noexcept {
   for (std::size_t c = 0; c < machine_->channels.size(); ++c) {
     const config::ChannelConfig& ch = machine_->channels[c];
@@ -41,6 +41,19 @@ void Kernel::write_drive_set_points(const TickInput& in, TickOutput& out) noexce
     }
   }
   for (const SpindleUnit& u : spindles_) {
+    if (u.conventional_axis >= 0) {
+      // The position loop is the NC's while the spindle is position-controlled
+      // (FCT-S1's modes: M19, gear change approach, C axis, a closed-loop
+      // spindle), with the kv of the gear stage in force; else the drive
+      // controls the speed itself.
+      const auto a = static_cast<std::size_t>(u.conventional_axis);
+      const spindle::DriveCommand c = u.axis.drive_command();
+      double vel_deg_s = c.step_deg / cycle_s_;
+      if (spindle_drive_mode(u.axis) == cia::Mode::cyclic_sync_position)
+        vel_deg_s += machine_->axes[a].gear(c.gear_stage).position_gain_1_s * u.axis.drive_following_error_deg();
+      drive_units_->write_spindle_velocity(a, c.pos_deg, vel_deg_s, out);
+      continue;
+    }
     if (u.cia402_axis < 0) continue;
     const DriveUnits::SpindleCycle cycle{spindle_drive_mode(u.axis), u.axis.drive_command().step_deg,
                                          u.axis.awaits_drive_homing()};

@@ -74,6 +74,12 @@ class SpindleAxis {
     const double sense = drive_sense();
     return DriveCommand{sense * set_.step_deg, sense * set_.pos_deg, ff_.on ? ff_.weight : 0.0, gear_};
   }
+  // The following error of the last cycle's set point, drive sense: that
+  // set point (this cycle's less its step) minus the measured position. A
+  // conventional drive's position loop closes on it. // rt
+  double drive_following_error_deg() const noexcept {
+    return drive_sense() * status_.lag_deg - drive_command().step_deg;
+  }
   // The drive's measured actual values (drive sense); the status (actual
   // speed and position, speed reached, standstill, in position) follows
   // from them and the set point. Invalid feedback: the set point counts as

@@ -20,6 +20,7 @@ namespace cia = drives::cia402;
 using testing::add_spindle_s1;
 using testing::end_block;
 using testing::KernelRig;
+using testing::spindle_block;
 using testing::xyz_machine;
 
 constexpr std::size_t kS1 = 3;  // S1's axis list (after X, Y, Z)
@@ -31,22 +32,6 @@ config::Machine machine() {
   s1.drive_mode = config::DriveMode::open_loop_pos_feedback;  // speed-controlled, knows its position
   s1.drive_homing_timeout_s = 0.5;
   return m;
-}
-
-nc::Block spindle_block(std::uint32_t line, nc::SpindleM m, std::optional<double> rpm = {},
-                        std::optional<double> pos = {}, bool g74 = false) {
-  nc::Block b;
-  b.line = line;
-  nc::SpindleCommand c;
-  c.name = "S1";
-  c.target = "S1";
-  c.spindle_index = 0;
-  c.m = m;
-  c.rev_rpm = rpm;
-  c.pos_deg = pos;
-  c.g74 = g74;
-  b.spindles.push_back(c);
-  return b;
 }
 
 // The kernel and S1's drive; `homing_fault` makes the drive answer a

@@ -78,6 +78,24 @@ inline nc::Block move(std::uint32_t line, nc::Motion motion, std::optional<doubl
   return b;
 }
 
+// A block with one command for add_spindle_s1's S1: M3/M4/M5/M19, its
+// speed, its M19 position, or G74 (homing).
+inline nc::Block spindle_block(std::uint32_t line, nc::SpindleM m, std::optional<double> rpm = {},
+                        std::optional<double> pos = {}, bool g74 = false) {
+  nc::Block b;
+  b.line = line;
+  nc::SpindleCommand c;
+  c.name = "S1";
+  c.target = "S1";
+  c.spindle_index = 0;
+  c.m = m;
+  c.rev_rpm = rpm;
+  c.pos_deg = pos;
+  c.g74 = g74;
+  b.spindles.push_back(c);
+  return b;
+}
+
 inline nc::Block end_block(std::uint32_t line) {
   nc::Block b;
   b.line = line;
