@@ -35,10 +35,12 @@ void Kernel::take_spindle_controls(const TickInput& in) noexcept {
 void Kernel::take_spindle_measured(const TickInput& in) noexcept {
   if (drives_ != nullptr) return;  // the attached drives answer in tick_spindles
   for (std::size_t i = 0; i < spindles_.size(); ++i) {
-    if (take_spindle_drive(spindles_[i], in)) continue;
-    const spindle::DriveFeedback& m = in.spindle_measured[i];
-    const spindle::DriveFeedback& last = spindles_[i].axis.feedback();
-    if (m.valid || last.valid) spindles_[i].axis.take_feedback(m);
+    SpindleUnit& u = spindles_[i];
+    if (!take_spindle_drive(u, in)) {
+      const spindle::DriveFeedback& m = in.spindle_measured[i];
+      if (m.valid || u.axis.feedback().valid) u.axis.take_feedback(m);
+    }
+    u.machine_measured = u.axis.feedback().valid;
   }
 }
 

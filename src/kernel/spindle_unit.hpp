@@ -26,6 +26,9 @@ struct SpindleUnit {
   std::int16_t axis_list = -1;   // its machine axis list index (TickInput::axes: amplifier fault), -1 none
   std::int16_t cia402_axis = -1; // the same when its drive is CiA 402, else -1
   std::int16_t conventional_axis = -1;  // the same when its drive is conventional (antr_typ 1), else -1
+  // The machine measures it (TickInput: spindle_measured, its CiA 402
+  // drive's actual values), not a simulated drive attached to the kernel.
+  bool machine_measured = false;
   // Synchronous operation: the channel whose enabled coupling groups hold
   // this spindle as master or slave (0 = none), and in how many groups.
   std::uint8_t link_channel = 0;

@@ -41,6 +41,15 @@ void SpindlePathUnit::release_tap_spindle(ChannelContext& ctx) noexcept {
 // Tapping makes the spindle a tracking axis (it must stand still, 950008),
 // G95/G33 need a turning spindle (60131), G33 waits for the spindle's start
 // angle.
+// The spindle angle G33 starts on: the measured one where the machine
+// measures the spindle (an encoder's angle: every pass meets the groove the
+// spindle cut, whatever its drive's speed error or lag), else the set point
+// (the dry run: docs/decisions.md, "G33 on the measured angle"). rt
+double SpindlePathUnit::thread_angle_deg(const SpindleUnit& u) noexcept {
+  const spindle::SpindleStatus& st = u.axis.status();
+  return u.machine_measured ? st.act_pos_deg : st.set_pos_deg;
+}
+
 Fault SpindlePathUnit::start_motion(motion::PathProfile& path, ChannelContext& ctx) noexcept {
   const FeedLink& f = link_;
   thread_waiting_ = false;
@@ -60,7 +69,7 @@ Fault SpindlePathUnit::start_motion(motion::PathProfile& path, ChannelContext& c
   if (!f.use_programmed && !turning) return {ErrorId::KernelFeedPerRevSpindleStopped};
   if (f.kind == FeedLinkKind::thread) {
     thread_waiting_ = !f.chained;  // a chained block goes on in the groove of the first
-    thread_last_deg_ = st.set_pos_deg;
+    thread_last_deg_ = thread_angle_deg(*u);
   }
   path.set_override_ignored(f.kind == FeedLinkKind::thread && f.ignore_override);
   return {};
@@ -80,10 +89,11 @@ void SpindlePathUnit::limit_path(motion::PathProfile& path, ChannelContext& ctx)
     case FeedLinkKind::thread: {
       if (thread_waiting_) {
         // Start on the zero mark + OFFSET, so every pass meets the same groove.
-        const double step = st.set_pos_deg - thread_last_deg_;
+        const double angle_deg = thread_angle_deg(*u);
+        const double step = angle_deg - thread_last_deg_;
         const double fwd = st.set_rpm >= 0 ? std::fmod(step + 720.0, 360.0) : -std::fmod(-step + 720.0, 360.0);
         thread_waiting_ = !passes_angle(thread_last_deg_, fwd, f.start_deg);
-        thread_last_deg_ = st.set_pos_deg;
+        thread_last_deg_ = angle_deg;
       }
       path.set_velocity_limit(thread_waiting_ ? 0.0 : link_velocity_mm_s(st.act_rpm, f.mm_per_rev));
       break;

@@ -45,6 +45,7 @@ class SpindlePathUnit {
 
  private:
   void release_tap_spindle(ChannelContext& ctx) noexcept;
+  static double thread_angle_deg(const SpindleUnit& u) noexcept;
 
   std::int8_t tap_spindle_ = -1;  // the spindle tracking the path (G63/G331/G332), -1 none
   double tap_start_deg_ = 0;      // its set point when the block's motion began

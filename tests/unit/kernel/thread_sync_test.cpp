@@ -1,0 +1,61 @@
+// G33 starts on the spindle's zero mark (+ OFFSET), so that every pass
+// meets the groove the first one cut. On a real machine the spindle's
+// angle is what its encoder measures (TickInput::spindle_measured, HAL's
+// revs), not the NC's set point: a VFD runs a little slow or lags, and the
+// groove is where the spindle really was. Here the measured angle trails
+// the set point by 45 deg: the thread must start when the *measured* angle
+// passes 0.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "test_machine.hpp"
+
+namespace nck::kernel {
+namespace {
+
+using testing::KernelRig;
+
+constexpr double kTrailDeg = 45;
+
+double wrapped(double deg) { return deg - 360.0 * std::floor(deg / 360.0); }
+
+// The measured angle (deg, in [0, 360)) in the cycle the thread's path began to move.
+double measured_angle_at_thread_start(bool measured) {
+  config::Machine m = testing::xyz_machine(500, 5000);
+  testing::add_spindle_s1(m);
+  KernelRig rig(m);
+  auto in = std::make_unique<TickInput>();
+  auto out = std::make_unique<TickOutput>();
+  rig.push_block(0, testing::spindle_block(1, nc::SpindleM::m3, 600.0));
+  nc::Block thread = testing::move(2, nc::Motion::thread, {}, {}, -10.0);
+  thread.modal.thread_pitch_mm = 1.0;
+  rig.push_block(0, thread);
+  double set_deg = 0, vel_deg_s = 0;
+  for (int i = 0; i < 20000; ++i) {
+    in->spindle_measured[0] = {vel_deg_s, set_deg - kTrailDeg, measured};
+    rig.k.tick(*in, *out);
+    set_deg = out->spindles[0].set_pos_deg;
+    vel_deg_s = out->spindles[0].set_rpm * 6.0;
+    if (out->channels[0].path_velocity_mm_s > 0) return wrapped(set_deg - kTrailDeg);
+  }
+  ADD_FAILURE() << "the thread never started";
+  return -1;
+}
+
+TEST(ThreadSync, G33StartsOnTheMeasuredZeroMark) {
+  const double step_deg = 600 * 6 * 0.001;  // the spindle turns 3.6 deg a cycle
+  const double angle = measured_angle_at_thread_start(true);
+  EXPECT_LT(std::min(angle, 360 - angle), 2 * step_deg) << "measured angle " << angle;
+}
+
+// Without a measured spindle the set point is the angle: the same start
+// lies 45 deg behind on the (not measured) trailing angle.
+TEST(ThreadSync, WithoutMeasuringTheSetPointIsTheAngle) {
+  const double angle = measured_angle_at_thread_start(false);
+  EXPECT_NEAR(angle, 360 - kTrailDeg, 2 * 3.6);
+}
+
+}  // namespace
+}  // namespace nck::kernel
