@@ -4,7 +4,7 @@ through scripts/hal-demo.sh and bounded in time. Exit 77 (skipped) when the
 HAL components are not built or unshare is not allowed.
 
   hal_test.py SOURCE BUILD CASE   CASE: contour | operator | plc | period | wrong-type | missing-machine | missing-program
-                                        | cia402 | cia402-fault | amp-fault | serve | skip | vfd-spindle
+                                        | cia402 | cia402-fault | amp-fault | serve | serve-bad-option | skip | vfd-spindle
 """
 import json, math, os, re, subprocess, sys, tempfile
 
@@ -133,6 +133,17 @@ elif case == "serve":
     check("serve client: done" in out and "FAILED" not in out, "every check of the API operator passed", out)
     check("nck-hal: http://127.0.0.1:8765/?token=" in out, "nck-hal printed its URL", out)
     check(pins(out).get("nck.channel.1.status") == "3", "the channel ended (status 3)", out)
+elif case == "serve-bad-option":
+    # A token file too short and an unknown option: nck-hal refuses with an
+    # ID before HAL sees it ready, so loadusr -W fails and the file stops.
+    with tempfile.NamedTemporaryFile("w", suffix=".token", delete=False) as t:
+        t.write("short\n")
+    text = example_text.replace("nck-hal $(NCK_MACHINE)", f"nck-hal --serve --token-file {t.name} $(NCK_MACHINE)")
+    rc, out = run(text, timeout=30)
+    os.unlink(t.name)
+    check(rc != 0 and "error 940408" in out and "at least 32" in out, f"a short token: error 940408, the file stops (exit {rc})", out)
+    rc, out = run(example_text.replace("nck-hal $(NCK_MACHINE)", "nck-hal --sreve $(NCK_MACHINE)"), timeout=30)
+    check(rc != 0 and "error 940403" in out, f"an unknown option: error 940403 with the usage (exit {rc})", out)
 elif case == "skip":
     # nck.channel.1.skip-mask reaches nck-hal's preparation (set before
     # `start`, it rules the first blocks too): the /1 block is skipped, X
