@@ -94,6 +94,7 @@ void Cycle::run(long period_ns) noexcept {
   for (const auto& e : out_->events) {
     if (e.channel > 0 && e.at.line > 0 && e.channel <= channel_pins.size())
       **channel_pins[e.channel - 1u].block_line = static_cast<std::int32_t>(e.at.line);
+    ask_for_index(e);
     if (!link_->events.push(e)) link_->events_dropped.fetch_add(1, std::memory_order_relaxed);
   }
   if (out_->events_dropped) link_->events_dropped.fetch_add(out_->events_dropped, std::memory_order_relaxed);
@@ -206,6 +207,7 @@ void Cycle::read_pins() noexcept {
     f.valid = **p.feedback_valid;
     f.actual_speed_deg_s = **p.speed_in_rpm * 6.0;  // rpm -> deg/s
     f.actual_pos_deg = **p.revolutions * 360.0;
+    f.index_reset_pending = p.index_wired() && **p.index_enable;
     if (p.axis_list >= 0) in_->axes[static_cast<std::size_t>(p.axis_list)].amp_fault = **p.amp_fault;
   }
   for (std::size_t k = 0; k < kPlcSlots; ++k) {
@@ -258,6 +260,15 @@ void Cycle::relay_commands() noexcept {
       from.pop();
     }
   }
+}
+
+// G33 waits for a spindle's zero mark: its encoder (index-enable netted)
+// resets its count at the next index pulse, which is the zero mark.
+void Cycle::ask_for_index(const kernel::Event& e) noexcept {
+  const auto* w = e.get<kernel::ev::Wait>();
+  if (!w || w->reason != kernel::WaitReason::zero_mark || !w->spindle || *w->spindle < 0) return;
+  const auto s = static_cast<std::size_t>(*w->spindle);
+  if (s < spindle_pins.size() && spindle_pins[s].index_wired()) **spindle_pins[s].index_enable = true;
 }
 
 // nck.error / nck.error-id while nck.cycle runs: on with the last NC error

@@ -50,6 +50,12 @@ struct SpindlePins {  // nck.spindle.<name>.*
   PinBit homed;  // out: the spindle's reference is known (G74)
   PinBit amp_fault;  // in: its amplifier fault (TickInput::axes of its axis list)
   int axis_list = -1;  // its machine axis list, -1 none
+  // io: nck asks the encoder to reset at its next index (G33 waits for the
+  // zero mark), the encoder clears it. Used only while netted: the pin then
+  // no longer points at its own storage, `unwired` (taken when it was made).
+  PinBit index_enable = nullptr;
+  const volatile bool* unwired = nullptr;
+  bool index_wired() const noexcept { return index_enable != nullptr && *index_enable != unwired; }
 };
 // A spindle whose drive is CiA 402: its words and the drive's own
 // (continuous, never wrapped) target and actual position, deg and deg/s.
@@ -128,6 +134,7 @@ class Cycle {
   void show_nc_error() noexcept;
   void tick_timed() noexcept;
   void take_api_actions() noexcept;
+  void ask_for_index(const kernel::Event& e) noexcept;
   void publish_state() noexcept;
 
   Link* link_ = nullptr;

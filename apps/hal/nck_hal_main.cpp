@@ -47,6 +47,8 @@ int fail(nck::ErrorId id, const std::string& what) {
 void print_event(const nck::kernel::Event& e, const nck::config::Machine& m) {
   std::string what = nck::kernel::event_name(e.kind());
   if (const auto* w = e.get<nck::kernel::ev::Wait>()) what = fmt::format("wait reason={}", nck::kernel::wait_reason_name(w->reason));
+  if (const auto* w = e.get<nck::kernel::ev::WaitEnd>())
+    what = fmt::format("wait_end reason={}", nck::kernel::wait_reason_name(w->reason));
   const nck::kernel::ev::Diagnosis* d = e.get<nck::kernel::ev::Error>();
   if (!d) d = e.get<nck::kernel::ev::Warning>();
   if (d) {

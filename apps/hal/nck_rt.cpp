@@ -127,6 +127,8 @@ int make_pins(nck::hal::Cycle& c) {
     r |= flt(HAL_IN, p.revolutions, n + ".revs");
     r |= bit(HAL_IN, p.feedback_valid, n + ".feedback-valid");
     r |= bit(HAL_OUT, p.homed, n + ".homed");
+    r |= bit(HAL_IO, p.index_enable, n + ".index-enable");
+    if (r == 0) p.unwired = *p.index_enable;  // not netted yet: HAL's own storage of the pin
     p.axis_list = c.spindle_axis_list(s);
     if (p.axis_list >= 0) r |= bit(HAL_IN, p.amp_fault, n + ".amp-fault-in");
     c.spindle_pins.push_back(p);

@@ -4,7 +4,7 @@ through scripts/hal-demo.sh and bounded in time. Exit 77 (skipped) when the
 HAL components are not built or unshare is not allowed.
 
   hal_test.py SOURCE BUILD CASE   CASE: contour | operator | plc | period | wrong-type | missing-machine | missing-program
-                                        | cia402 | cia402-fault | amp-fault | serve | serve-bad-option | skip | vfd-spindle
+                                        | cia402 | cia402-fault | amp-fault | serve | serve-bad-option | skip | vfd-spindle | thread-index
 """
 import json, math, os, re, subprocess, sys, tempfile
 
@@ -308,6 +308,43 @@ elif case == "vfd-spindle":
     angle = (revs - math.floor(revs)) * 360
     check(abs(angle - 90) < 0.05, f"the encoder reads S1 at {angle:.4f} deg (M19 to 90)", out)
     check(v.get("nck.spindle.S1.orient") == "TRUE", "nck.spindle.S1.orient is on", out)
+elif case == "thread-index":
+    # G33 with the spindle encoder's index: mill-velocity.hal's S1 VFD
+    # drives LinuxCNC's sim_encoder (25 lines, A/B/Z), read by its encoder
+    # component; nck.spindle.S1.index-enable <=> encoder.0.index-enable.
+    # Each G33 pass asks for the reset, the encoder resets its count at the
+    # index and clears the pin, the pass starts on it.
+    analog = os.path.join(src, "examples", "mill-analog")
+    text = open(os.path.join(src, "examples", "hal", "mill-velocity.hal")).read()
+    for old, new in (
+        ("loadrt threads name1=servo-thread period1=1000000 fp1=1",
+         "loadrt threads name1=base-thread period1=100000 fp1=0 name2=servo-thread period2=1000000 fp2=1\n"
+         "loadrt sim_encoder num_chan=1\nloadrt encoder num_chan=1"),
+        ("addf nck.cycle servo-thread\n",
+         "addf sim-encoder.make-pulses base-thread\naddf encoder.update-counters base-thread\n"
+         "addf encoder.capture-position servo-thread\naddf nck.cycle servo-thread\naddf sim-encoder.update-speed servo-thread\n"),
+        ("setp scale.4.gain 0.002777777777777778", "setp scale.4.gain 0.002777777777777778\nsetp sim-encoder.0.ppr 25\n"
+         "setp encoder.0.position-scale 100"),
+        ("net s1-motor lowpass.3.out => integ.3.in scale.5.in", "net s1-motor lowpass.3.out => integ.3.in scale.5.in scale.4.in"),
+        ("net s1-deg integ.3.out => scale.4.in\n", ""),
+        ("net s1-revs scale.4.out => nck.spindle.S1.revs",
+         "net s1-rps scale.4.out => sim-encoder.0.speed\nnet s1-a sim-encoder.0.phase-A => encoder.0.phase-A\n"
+         "net s1-b sim-encoder.0.phase-B => encoder.0.phase-B\nnet s1-z sim-encoder.0.phase-Z => encoder.0.phase-Z\n"
+         "net s1-revs encoder.0.position => nck.spindle.S1.revs\n"
+         "net s1-index nck.spindle.S1.index-enable <=> encoder.0.index-enable"),
+        ("show pin nck.error\n", "show pin nck.error\nshow pin encoder.0\nshow pin integ.3\nshow pin nck.spindle.S1\n")):
+        assert old in text, old
+        text = text.replace(old, new)
+    rc, out = run(text, program=os.path.join(src, "tests", "hal", "thread_index.nc"), machine=analog, timeout=60)
+    check(rc == 0 and "channel 1 done" in out, f"thread_index.nc ran to its end (exit {rc})", out)
+    waits = re.findall(r"ev=(wait|wait_end) reason=zero_mark", out)
+    check(waits == ["wait", "wait_end", "wait", "wait_end"], f"both passes waited for the zero mark and started ({waits})", out)
+    v = pins(out)
+    turned = float(v["integ.3.out"]) / 360
+    count = float(v["encoder.0.position"])
+    print(f"S1 turned {turned:.2f} revolutions; the encoder counts {count:.2f} since its last index reset")
+    check(v.get("nck.spindle.S1.index-enable") == "FALSE", "the encoder cleared index-enable (it reset at the index)", out)
+    check(0 < count < turned - 5, "the encoder's count restarted at an index after the start (the 2nd pass)", out)
 elif case == "conventional":
     # (issue 46 item 3) conventional velocity drives (kenngr.antr_typ 1):
     # nck closes the position loops with kv through vel-cmd into the drive

@@ -28,6 +28,10 @@ struct DriveFeedback {
   double actual_speed_deg_s = 0;
   double actual_pos_deg = 0;  // need not be wrapped: the NC wraps it
   bool valid = false;         // false: nothing measured; the NC takes its own set point
+  // The encoder resets its count at the next index pulse (HAL's
+  // index-enable, asked for when G33 waits for the zero mark): until then
+  // its angle is no zero-mark reference.
+  bool index_reset_pending = false;
 };
 
 }  // namespace nck::spindle

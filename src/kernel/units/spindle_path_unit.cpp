@@ -88,11 +88,14 @@ void SpindlePathUnit::limit_path(motion::PathProfile& path, ChannelContext& ctx)
       break;
     case FeedLinkKind::thread: {
       if (thread_waiting_) {
-        // Start on the zero mark + OFFSET, so every pass meets the same groove.
+        // Start on the zero mark + OFFSET, so every pass meets the same
+        // groove; while the encoder's index reset is pending its angle is
+        // no reference yet (its reset is the zero mark passing).
         const double angle_deg = thread_angle_deg(*u);
         const double step = angle_deg - thread_last_deg_;
         const double fwd = st.set_rpm >= 0 ? std::fmod(step + 720.0, 360.0) : -std::fmod(-step + 720.0, 360.0);
-        thread_waiting_ = !passes_angle(thread_last_deg_, fwd, f.start_deg);
+        const bool index_pending = u->machine_measured && u->axis.feedback().index_reset_pending;
+        thread_waiting_ = index_pending || !passes_angle(thread_last_deg_, fwd, f.start_deg);
         thread_last_deg_ = angle_deg;
       }
       path.set_velocity_limit(thread_waiting_ ? 0.0 : link_velocity_mm_s(st.act_rpm, f.mm_per_rev));

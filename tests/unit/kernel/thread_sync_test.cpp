@@ -57,5 +57,33 @@ TEST(ThreadSync, WithoutMeasuringTheSetPointIsTheAngle) {
   EXPECT_NEAR(angle, 360 - kTrailDeg, 2 * 3.6);
 }
 
+// An encoder that resets at its index (HAL's index-enable): while the
+// reset is pending the angle is no reference, so G33 does not start even
+// when it passes 0; the reset itself (the count back to 0) is the zero
+// mark, and the thread starts in that cycle.
+TEST(ThreadSync, G33WaitsForThePendingIndexResetAndStartsOnIt) {
+  config::Machine m = testing::xyz_machine(500, 5000);
+  testing::add_spindle_s1(m);
+  KernelRig rig(m);
+  auto in = std::make_unique<TickInput>();
+  auto out = std::make_unique<TickOutput>();
+  rig.push_block(0, testing::spindle_block(1, nc::SpindleM::m3, 600.0));
+  nc::Block thread = testing::move(2, nc::Motion::thread, {}, {}, -10.0);
+  thread.modal.thread_pitch_mm = 1.0;
+  rig.push_block(0, thread);
+  constexpr int kResetCycle = 1500;  // the index comes 1.5 s in (the spindle turned 9 turns)
+  double set_deg = 0, vel_deg_s = 0, reset_at_deg = 0;  // the encoder counts from reset_at_deg
+  int started = -1;
+  for (int i = 0; i < 5000 && started < 0; ++i) {
+    if (i == kResetCycle) reset_at_deg = set_deg - 1.0;  // the index passed 1 deg ago: the count restarted there
+    in->spindle_measured[0] = {vel_deg_s, set_deg - reset_at_deg, true, i < kResetCycle};
+    rig.k.tick(*in, *out);
+    set_deg = out->spindles[0].set_pos_deg;  // the NC wraps what it measures
+    vel_deg_s = out->spindles[0].set_rpm * 6.0;
+    if (out->channels[0].path_velocity_mm_s > 0) started = i;
+  }
+  EXPECT_EQ(started, kResetCycle);
+}
+
 }  // namespace
 }  // namespace nck::kernel
