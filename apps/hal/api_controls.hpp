@@ -63,6 +63,24 @@ struct ApiChannelControls {
   }
 };
 
+// A spindle's controls from the API (spindle_override, spindle_feedhold),
+// beside its pins the same way.
+struct ApiSpindleControls {
+  LastChanged<double> override_pct;
+  bool feedhold = false;
+
+  void take(const sim::ScenarioAction& a) noexcept {
+    if (const auto* o = a.get<sim::act::SpindleOverride>()) override_pct.api = o->percent;
+    if (const auto* f = a.get<sim::act::SpindleFeedhold>()) feedhold = f->on;
+  }
+  // `in` holds what the pins say; afterwards what the kernel is given.
+  void merge_into(plc::SpindleControl& in) noexcept {
+    in.override_percent = override_pct(in.override_percent);
+    in.override_valid = true;
+    in.feedhold = in.feedhold || feedhold;
+  }
+};
+
 // The operator's controls as the state document shows them (its `hli`).
 inline plc::ChannelControl shown_controls(const kernel::ChannelInput& in, std::uint32_t skip_mask) noexcept {
   plc::ChannelControl c;

@@ -209,6 +209,13 @@ void Cycle::read_pins() noexcept {
     f.actual_pos_deg = **p.revolutions * 360.0;
     f.index_reset_pending = p.index_wired() && **p.index_enable;
     if (p.axis_list >= 0) in_->axes[static_cast<std::size_t>(p.axis_list)].amp_fault = **p.amp_fault;
+    plc::SpindleControl& c = in_->spindles[s];
+    if (p.override_pct) {  // a test's cells may leave them out
+      c.override_percent = **p.override_pct;
+      c.feedhold = **p.feedhold;
+      c.stop_at_program_end = **p.stop_at_end;
+    }
+    api_spindles_[s].merge_into(c);
   }
   for (std::size_t k = 0; k < kPlcSlots; ++k) {
     const PlcPins& p = plc_pins[k];
@@ -230,6 +237,11 @@ void Cycle::take_api_actions() noexcept {
   for (auto& q = link_->api_actions; !q.empty(); q.pop()) {
     const sim::ScenarioAction& a = q.front();
     if (a.channel >= 1 && a.channel <= channel_count()) api_[a.channel - 1u].take(a);
+    const sim::act::SpindleRef* s = nullptr;
+    if (const auto* o = a.get<sim::act::SpindleOverride>()) s = &o->spindle;
+    if (const auto* f = a.get<sim::act::SpindleFeedhold>()) s = &f->spindle;
+    if (s && s->hli >= 0 && static_cast<std::size_t>(s->hli) < api_spindles_.size())
+      api_spindles_[static_cast<std::size_t>(s->hli)].take(a);
   }
 }
 
@@ -241,7 +253,8 @@ void Cycle::publish_state() noexcept {
   app::fill_kernel_snapshot(kernel_, *out_, s);
   for (std::size_t ch = 0; ch < s.channel_count && ch < s.channels.size(); ++ch)
     s.channels[ch].hli = shown_controls(in_->channels[ch], link_->skip_mask[ch].load(std::memory_order_relaxed));
-  for (std::size_t i = 0; i < s.spindle_count && i < s.spindle_override_pct.size(); ++i) s.spindle_override_pct[i] = 100;
+  for (std::size_t i = 0; i < s.spindle_count && i < s.spindle_override_pct.size(); ++i)
+    s.spindle_override_pct[i] = in_->spindles[i].effective_override_percent();
   s.speed = 1;
   link_->state.publish();
 }

@@ -56,6 +56,9 @@ struct SpindlePins {  // nck.spindle.<name>.*
   PinBit index_enable = nullptr;
   const volatile bool* unwired = nullptr;
   bool index_wired() const noexcept { return index_enable != nullptr && *index_enable != unwired; }
+  // in: the PLC's controls of the spindle (the HLI's spindle control)
+  PinFloat override_pct = nullptr;  // %, 100 unless set
+  PinBit feedhold = nullptr, stop_at_end = nullptr;
 };
 // A spindle whose drive is CiA 402: its words and the drive's own
 // (continuous, never wrapped) target and actual position, deg and deg/s.
@@ -153,6 +156,7 @@ class Cycle {
   std::array<bool, config::kMaxChannels> reset_was_{};
   std::array<bool, kPlcSlots> ack_was_{};
   std::array<ApiChannelControls, config::kMaxChannels> api_{};  // nck-hal --serve's operator
+  std::array<ApiSpindleControls, kernel::kMaxMachineSpindles> api_spindles_{};
 };
 
 }  // namespace nck::hal

@@ -39,7 +39,8 @@ std::size_t channel_of(std::string_view target) {
 bool passed_on(sim::ActionKind k) {
   using K = sim::ActionKind;
   return k == K::cycle_start || k == K::reset || k == K::stop || k == K::feedhold || k == K::single_step ||
-         k == K::optional_stop || k == K::feed_override || k == K::rapid_override || k == K::skip_mask;
+         k == K::optional_stop || k == K::feed_override || k == K::rapid_override || k == K::skip_mask ||
+         k == K::spindle_override || k == K::spindle_feedhold;
 }
 
 }  // namespace

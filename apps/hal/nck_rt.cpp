@@ -129,6 +129,10 @@ int make_pins(nck::hal::Cycle& c) {
     r |= bit(HAL_OUT, p.homed, n + ".homed");
     r |= bit(HAL_IO, p.index_enable, n + ".index-enable");
     if (r == 0) p.unwired = *p.index_enable;  // not netted yet: HAL's own storage of the pin
+    r |= flt(HAL_IN, p.override_pct, n + ".override");
+    r |= bit(HAL_IN, p.feedhold, n + ".feedhold");
+    r |= bit(HAL_IN, p.stop_at_end, n + ".stop-at-end");
+    if (r == 0) **p.override_pct = 100.0;  // an unconnected input keeps its value
     p.axis_list = c.spindle_axis_list(s);
     if (p.axis_list >= 0) r |= bit(HAL_IN, p.amp_fault, n + ".amp-fault-in");
     c.spindle_pins.push_back(p);

@@ -4,7 +4,7 @@ through scripts/hal-demo.sh and bounded in time. Exit 77 (skipped) when the
 HAL components are not built or unshare is not allowed.
 
   hal_test.py SOURCE BUILD CASE   CASE: contour | operator | plc | period | wrong-type | missing-machine | missing-program
-                                        | cia402 | cia402-fault | amp-fault | serve | serve-bad-option | skip | vfd-spindle | thread-index
+                                        | cia402 | cia402-fault | amp-fault | serve | serve-bad-option | skip | vfd-spindle | thread-index | spindle-controls
 """
 import json, math, os, re, subprocess, sys, tempfile
 
@@ -308,6 +308,31 @@ elif case == "vfd-spindle":
     angle = (revs - math.floor(revs)) * 360
     check(abs(angle - 90) < 0.05, f"the encoder reads S1 at {angle:.4f} deg (M19 to 90)", out)
     check(v.get("nck.spindle.S1.orient") == "TRUE", "nck.spindle.S1.orient is on", out)
+elif case == "spindle-controls":
+    # The HLI's spindle control as pins: the override at 50 % runs M3 S1000
+    # at 500 rpm; the spindle's feedhold brings its set point to 0; released,
+    # it runs up again and the program ends.
+    head = example_text[:example_text.index("\nstart\n")]
+    tail = """
+setp nck.spindle.S1.override 50
+start
+loadusr -w sleep 1.2
+show pin nck.spindle.S1.speed-cmd-rpm
+setp nck.spindle.S1.feedhold 1
+loadusr -w sleep 0.8
+show pin nck.spindle.S1.speed-cmd-rpm
+setp nck.spindle.S1.feedhold 0
+waitusr nck-hal
+show pin nck.channel.1.status
+show pin nck.error-id
+stop
+"""
+    rc, out = run(head + "\n" + tail, program=os.path.join(src, "tests", "hal", "spindle_controls.nc"), timeout=60)
+    rpm = [float(m) for m in re.findall(r"^\s*\d+\s+float\s+OUT\s+(\S+)\s+nck.spindle.S1.speed-cmd-rpm", out, re.M)]
+    check(rc == 0 and "channel 1 done" in out and len(rpm) == 2, f"spindle_controls.nc ran to its end (exit {rc})", out)
+    check(abs(rpm[0] - 500) < 1e-6, f"override 50 %: M3 S1000 runs at {rpm[0]} rpm", out)
+    check(rpm[1] == 0, f"the spindle's feedhold: its set point is {rpm[1]} rpm", out)
+    check(pins(out).get("nck.error-id") == "0x00000000", "no error", out)
 elif case == "thread-index":
     # G33 with the spindle encoder's index: mill-velocity.hal's S1 VFD
     # drives LinuxCNC's sim_encoder (25 lines, A/B/Z), read by its encoder

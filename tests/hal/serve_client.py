@@ -99,6 +99,13 @@ status, r = request("/api/v1/command", {"command": "feed_override", "percent": 5
 check(status == 200, "feed_override 50 through the API")
 wait_for(lambda c: c["feed_override_pct"] == 50, "the state shows the API's override", 5)
 
+status, r = request("/api/v1/command", {"command": "spindle_override", "spindle": "S1", "percent": 70})
+check(status == 200, f"spindle_override S1 70 through the API ({status} {r})")
+end = time.monotonic() + 5
+while request("/api/v1/state")[1]["spindles"][0]["override_pct"] != 70 and time.monotonic() < end:
+    time.sleep(0.05)
+check(request("/api/v1/state")[1]["spindles"][0]["override_pct"] == 70, "the state shows S1's override from the API")
+
 for body, what in (({"command": "mdi", "text": "G0 X0"}, "MDI"), ({"command": "load", "program": "x.nc"}, "load"),
                    ({"command": "jog", "axis": "X", "direction": "+"}, "jog")):
     status, r = request("/api/v1/command", body)
