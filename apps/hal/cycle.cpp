@@ -95,6 +95,7 @@ void Cycle::run(long period_ns) noexcept {
     if (e.channel > 0 && e.at.line > 0 && e.channel <= channel_pins.size())
       **channel_pins[e.channel - 1u].block_line = static_cast<std::int32_t>(e.at.line);
     ask_for_index(e);
+    note_plc_spindle_done(e);
     if (!link_->events.push(e)) link_->events_dropped.fetch_add(1, std::memory_order_relaxed);
   }
   if (out_->events_dropped) link_->events_dropped.fetch_add(out_->events_dropped, std::memory_order_relaxed);
@@ -173,6 +174,7 @@ void Cycle::read_pins() noexcept {
   in_->machine.machine_on = **machine_pins.machine_on;
   in_->acks.clear();
   in_->ext_commands.clear();
+  in_->ext_commands_lost = 0;
   // The kernel brakes on an amplifier fault or a limit switch itself (TickInput::axes).
   for (std::size_t i = 0; i < axes_.size() && i < axis_pins.size(); ++i) {
     if (axes_[i].machine < 0) continue;
@@ -217,6 +219,7 @@ void Cycle::read_pins() noexcept {
     }
     api_spindles_[s].merge_into(c);
   }
+  take_plc_spindle_commands();
   for (std::size_t k = 0; k < kPlcSlots; ++k) {
     const PlcPins& p = plc_pins[k];
     kernel::TechRequest& slot = plc_slots_[k];
@@ -273,6 +276,48 @@ void Cycle::relay_commands() noexcept {
       from.pop();
     }
   }
+}
+
+// The PLC's spindle commands (FCT-S1 2.9): a rising request hands the
+// command over to the spindle's channel (the one that lists it first);
+// an M function other than 3, 4, 5, 19 is no command.
+void Cycle::take_plc_spindle_commands() noexcept {
+  const plc::SpindleMap& map = kernel_.spindle_map();
+  for (std::size_t s = 0; s < plc_command_pins.size() && s < plc_request_was_.size(); ++s) {
+    const PlcSpindleCommandPins& p = plc_command_pins[s];
+    const bool request = **p.request, rose = request && !plc_request_was_[s];
+    plc_request_was_[s] = request;
+    const std::int32_t m = **p.m;
+    if (!rose || (m != 3 && m != 4 && m != 5 && m != 19)) continue;
+    plc::ExtSpindleCommand c;
+    for (std::size_t ch = 1; ch <= channel_count() && c.spindle == plc::kNoSpindle; ++ch)
+      for (std::int32_t i = 0; i < static_cast<std::int32_t>(config::kMaxSpindles); ++i)
+        if (map.at(ch, i) == static_cast<std::int8_t>(s)) {
+          c.channel = static_cast<std::uint8_t>(ch);
+          c.spindle = static_cast<std::int8_t>(i);
+          break;
+        }
+    if (c.spindle == plc::kNoSpindle) continue;
+    c.fn = static_cast<plc::ExtFunction>(m);
+    c.has_rev = **p.rpm > 0;
+    c.rev_rpm = c.has_rev ? **p.rpm : 0.0;
+    c.has_pos = m == 19;
+    c.pos_deg = **p.pos_deg;
+    **p.done = false;
+    plc_command_pending_[s] = true;
+    if (!in_->ext_commands.push_back(c)) ++in_->ext_commands_lost;
+  }
+}
+
+// The kernel acknowledges a PLC spindle command as done (speed reached,
+// standstill, in position) with a plc_ack event naming the spindle.
+void Cycle::note_plc_spindle_done(const kernel::Event& e) noexcept {
+  const auto* a = e.get<kernel::ev::PlcAck>();
+  if (!a || !a->spindle || *a->spindle < 0 || static_cast<std::size_t>(*a->spindle) >= plc_command_pins.size()) return;
+  const auto s = static_cast<std::size_t>(*a->spindle);
+  if (!plc_command_pending_[s]) return;  // the PLC's acknowledgement of a program's M function
+  plc_command_pending_[s] = false;
+  **plc_command_pins[s].done = true;
 }
 
 // G33 waits for a spindle's zero mark: its encoder (index-enable netted)

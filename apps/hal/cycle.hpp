@@ -60,6 +60,14 @@ struct SpindlePins {  // nck.spindle.<name>.*
   PinFloat override_pct = nullptr;  // %, 100 unless set
   PinBit feedhold = nullptr, stop_at_end = nullptr;
 };
+// A spindle command from the PLC past the NC program (FCT-S1 2.9, the HLI's
+// ext_to_ipo): M3/M4/M5/M19 with its speed and position, handed over on
+// the request's rising edge; `done` once the kernel acknowledged it.
+struct PlcSpindleCommandPins {  // nck.spindle.<name>.plc-cmd-*
+  PinS32 m;
+  PinFloat rpm, pos_deg;
+  PinBit request, done;
+};
 // A spindle whose drive is CiA 402: its words and the drive's own
 // (continuous, never wrapped) target and actual position, deg and deg/s.
 // A conventional drive (antr_typ 1): its velocity set point only.
@@ -120,6 +128,7 @@ class Cycle {
   std::vector<ChannelPins> channel_pins;
   std::vector<SpindlePins> spindle_pins;
   std::vector<SpindleDrivePins> spindle_drive_pins;  // beside spindle_pins
+  std::vector<PlcSpindleCommandPins> plc_command_pins;  // beside spindle_pins (may be empty: a test's cells)
   std::array<PlcPins, kPlcSlots> plc_pins{};
   MachinePins machine_pins{};
   CycleClocks clocks{};
@@ -138,6 +147,8 @@ class Cycle {
   void tick_timed() noexcept;
   void take_api_actions() noexcept;
   void ask_for_index(const kernel::Event& e) noexcept;
+  void take_plc_spindle_commands() noexcept;
+  void note_plc_spindle_done(const kernel::Event& e) noexcept;
   void publish_state() noexcept;
 
   Link* link_ = nullptr;
@@ -157,6 +168,7 @@ class Cycle {
   std::array<bool, kPlcSlots> ack_was_{};
   std::array<ApiChannelControls, config::kMaxChannels> api_{};  // nck-hal --serve's operator
   std::array<ApiSpindleControls, kernel::kMaxMachineSpindles> api_spindles_{};
+  std::array<bool, kernel::kMaxMachineSpindles> plc_request_was_{}, plc_command_pending_{};
 };
 
 }  // namespace nck::hal

@@ -148,6 +148,13 @@ int make_pins(nck::hal::Cycle& c) {
       r |= flt(HAL_OUT, d.words.vel_cmd, n + ".vel-cmd");
     }
     c.spindle_drive_pins.push_back(d);
+    nck::hal::PlcSpindleCommandPins k{};
+    r |= s32(HAL_IN, k.m, n + ".plc-cmd-m");
+    r |= flt(HAL_IN, k.rpm, n + ".plc-cmd-rpm");
+    r |= flt(HAL_IN, k.pos_deg, n + ".plc-cmd-pos");
+    r |= bit(HAL_IN, k.request, n + ".plc-cmd-request");
+    r |= bit(HAL_OUT, k.done, n + ".plc-cmd-done");
+    c.plc_command_pins.push_back(k);
   }
   for (std::size_t k = 0; k < nck::hal::kPlcSlots; ++k) {
     nck::hal::PlcPins& p = c.plc_pins[k];

@@ -311,7 +311,8 @@ elif case == "vfd-spindle":
 elif case == "spindle-controls":
     # The HLI's spindle control as pins: the override at 50 % runs M3 S1000
     # at 500 rpm; the spindle's feedhold brings its set point to 0; released,
-    # it runs up again and the program ends.
+    # it runs up again and the program ends. Then a spindle command from the
+    # PLC (plc-cmd-*) turns S1 again.
     head = example_text[:example_text.index("\nstart\n")]
     tail = """
 setp nck.spindle.S1.override 50
@@ -323,15 +324,23 @@ loadusr -w sleep 0.8
 show pin nck.spindle.S1.speed-cmd-rpm
 setp nck.spindle.S1.feedhold 0
 waitusr nck-hal
+setp nck.spindle.S1.plc-cmd-m 3
+setp nck.spindle.S1.plc-cmd-rpm 300
+setp nck.spindle.S1.plc-cmd-request 1
+loadusr -w sleep 0.8
+show pin nck.spindle.S1.speed-cmd-rpm
+show pin nck.spindle.S1.plc-cmd-done
 show pin nck.channel.1.status
 show pin nck.error-id
 stop
 """
     rc, out = run(head + "\n" + tail, program=os.path.join(src, "tests", "hal", "spindle_controls.nc"), timeout=60)
     rpm = [float(m) for m in re.findall(r"^\s*\d+\s+float\s+OUT\s+(\S+)\s+nck.spindle.S1.speed-cmd-rpm", out, re.M)]
-    check(rc == 0 and "channel 1 done" in out and len(rpm) == 2, f"spindle_controls.nc ran to its end (exit {rc})", out)
+    check(rc == 0 and "channel 1 done" in out and len(rpm) == 3, f"spindle_controls.nc ran to its end (exit {rc})", out)
     check(abs(rpm[0] - 500) < 1e-6, f"override 50 %: M3 S1000 runs at {rpm[0]} rpm", out)
     check(rpm[1] == 0, f"the spindle's feedhold: its set point is {rpm[1]} rpm", out)
+    check(abs(rpm[2] - 150) < 1e-6 and pins(out).get("nck.spindle.S1.plc-cmd-done") == "TRUE",
+          f"after the program the PLC's command M3 REV300 (FCT-S1 2.9) runs S1 at {rpm[2]} rpm (override 50 %), done", out)
     check(pins(out).get("nck.error-id") == "0x00000000", "no error", out)
 elif case == "thread-index":
     # G33 with the spindle encoder's index: mill-velocity.hal's S1 VFD
