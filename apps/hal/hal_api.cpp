@@ -14,6 +14,7 @@
 
 namespace nck::hal {
 
+using app::serve::channel_of;
 using app::serve::error_reply;
 using app::serve::HttpReply;
 using app::serve::ok_json;
@@ -27,12 +28,6 @@ constexpr std::uint64_t kRun = 1;
 
 HttpReply not_offered(std::string_view what, std::string_view instead) {
   return error_reply(409, ErrorId::HalApiNotOffered, fmt::format("nck-hal does not offer {}: {}", what, instead));
-}
-
-// The channel of a GET's query (1 without one; 0 when it is no number).
-std::size_t channel_of(std::string_view target) {
-  const std::string_view text = app::serve::query_value(target, "channel");
-  return text.empty() ? 1 : static_cast<std::size_t>(std::atoi(std::string(text).c_str()));
 }
 
 // The actions nck.cycle merges with the channel's pins (api_controls.hpp).

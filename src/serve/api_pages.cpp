@@ -1,6 +1,7 @@
 #include "nck/serve/api_pages.hpp"
 
 #include <cmath>
+#include <cstdlib>
 
 #include "nck/config/parameter_registry.hpp"
 #include "nck/core/version.hpp"
@@ -8,6 +9,7 @@
 #include "nck/output/output_writers.hpp"
 #include "nck/report/backplot_axes.hpp"
 #include "nck/report/embedded_files.hpp"
+#include "nck/serve/access.hpp"
 
 namespace nck::app::serve {
 
@@ -67,6 +69,11 @@ json parameters_json() {
     all.push_back(std::move(j));
   }
   return all;
+}
+
+std::size_t channel_of(std::string_view target) {
+  const std::string_view text = query_value(target, "channel");
+  return text.empty() ? 1 : static_cast<std::size_t>(std::atoi(std::string(text).c_str()));
 }
 
 std::optional<HttpReply> fixed_answer(std::string_view path) {

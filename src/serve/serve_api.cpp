@@ -229,14 +229,6 @@ std::expected<std::unique_ptr<sim::DryRun>, Diagnostic> ServeApi::make_run(
   return live;
 }
 
-namespace {
-// The `channel` of a GET's query (1 without one; 0 when it is no number).
-std::size_t channel_of(std::string_view target) {
-  const std::string_view text = query_value(target, "channel");
-  return text.empty() ? 1 : static_cast<std::size_t>(std::atoi(std::string(text).c_str()));
-}
-}  // namespace
-
 HttpReply ServeApi::program_text(std::string_view target) const {
   const std::size_t ch = channel_of(target);
   if (ch < 1 || ch > programs_.size()) return error_reply(400, ErrorId::ApiBadValue, "'channel' is no channel of the machine");

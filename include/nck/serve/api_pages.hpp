@@ -20,6 +20,8 @@ std::optional<HttpReply> page_file(std::string_view path);
 nlohmann::ordered_json machine_json(const config::Machine& m);
 // GET /api/v1/parameters: every list key nck accepts (as `nck params`).
 nlohmann::ordered_json parameters_json();
+// The `channel` of a GET's query: 1 without one, 0 when it is no number.
+std::size_t channel_of(std::string_view target);
 // The GETs every server answers alike: errors, parameters, openapi.json,
 // version (nullopt: another path).
 std::optional<HttpReply> fixed_answer(std::string_view path);

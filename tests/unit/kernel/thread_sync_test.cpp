@@ -21,25 +21,39 @@ constexpr double kTrailDeg = 45;
 
 double wrapped(double deg) { return deg - 360.0 * std::floor(deg / 360.0); }
 
+// S1 turning at 600 rpm (M3 S600) and a G33 pass of pitch 1 mm queued
+// behind it; each cycle the test says what the spindle's encoder measured.
+struct ThreadRig {
+  static config::Machine machine() {
+    config::Machine m = testing::xyz_machine(500, 5000);
+    testing::add_spindle_s1(m);
+    return m;
+  }
+  ThreadRig() : rig(machine()) {
+    rig.push_block(0, testing::spindle_block(1, nc::SpindleM::m3, 600.0));
+    nc::Block thread = testing::move(2, nc::Motion::thread, {}, {}, -10.0);
+    thread.modal.thread_pitch_mm = 1.0;
+    rig.push_block(0, thread);
+  }
+  // One cycle with this measurement; true once the thread's path moves.
+  bool cycle(const spindle::DriveFeedback& measured) {
+    in->spindle_measured[0] = measured;
+    rig.k.tick(*in, *out);
+    set_deg = out->spindles[0].set_pos_deg;  // the NC wraps what it measures
+    vel_deg_s = out->spindles[0].set_rpm * 6.0;
+    return out->channels[0].path_velocity_mm_s > 0;
+  }
+  KernelRig rig;
+  std::unique_ptr<TickInput> in = std::make_unique<TickInput>();
+  std::unique_ptr<TickOutput> out = std::make_unique<TickOutput>();
+  double set_deg = 0, vel_deg_s = 0;  // the set point after the last cycle
+};
+
 // The measured angle (deg, in [0, 360)) in the cycle the thread's path began to move.
 double measured_angle_at_thread_start(bool measured) {
-  config::Machine m = testing::xyz_machine(500, 5000);
-  testing::add_spindle_s1(m);
-  KernelRig rig(m);
-  auto in = std::make_unique<TickInput>();
-  auto out = std::make_unique<TickOutput>();
-  rig.push_block(0, testing::spindle_block(1, nc::SpindleM::m3, 600.0));
-  nc::Block thread = testing::move(2, nc::Motion::thread, {}, {}, -10.0);
-  thread.modal.thread_pitch_mm = 1.0;
-  rig.push_block(0, thread);
-  double set_deg = 0, vel_deg_s = 0;
-  for (int i = 0; i < 20000; ++i) {
-    in->spindle_measured[0] = {vel_deg_s, set_deg - kTrailDeg, measured};
-    rig.k.tick(*in, *out);
-    set_deg = out->spindles[0].set_pos_deg;
-    vel_deg_s = out->spindles[0].set_rpm * 6.0;
-    if (out->channels[0].path_velocity_mm_s > 0) return wrapped(set_deg - kTrailDeg);
-  }
+  ThreadRig t;
+  for (int i = 0; i < 20000; ++i)
+    if (t.cycle({t.vel_deg_s, t.set_deg - kTrailDeg, measured})) return wrapped(t.set_deg - kTrailDeg);
   ADD_FAILURE() << "the thread never started";
   return -1;
 }
@@ -62,25 +76,13 @@ TEST(ThreadSync, WithoutMeasuringTheSetPointIsTheAngle) {
 // when it passes 0; the reset itself (the count back to 0) is the zero
 // mark, and the thread starts in that cycle.
 TEST(ThreadSync, G33WaitsForThePendingIndexResetAndStartsOnIt) {
-  config::Machine m = testing::xyz_machine(500, 5000);
-  testing::add_spindle_s1(m);
-  KernelRig rig(m);
-  auto in = std::make_unique<TickInput>();
-  auto out = std::make_unique<TickOutput>();
-  rig.push_block(0, testing::spindle_block(1, nc::SpindleM::m3, 600.0));
-  nc::Block thread = testing::move(2, nc::Motion::thread, {}, {}, -10.0);
-  thread.modal.thread_pitch_mm = 1.0;
-  rig.push_block(0, thread);
+  ThreadRig t;
   constexpr int kResetCycle = 1500;  // the index comes 1.5 s in (the spindle turned 9 turns)
-  double set_deg = 0, vel_deg_s = 0, reset_at_deg = 0;  // the encoder counts from reset_at_deg
+  double reset_at_deg = 0;           // the encoder counts from here
   int started = -1;
   for (int i = 0; i < 5000 && started < 0; ++i) {
-    if (i == kResetCycle) reset_at_deg = set_deg - 1.0;  // the index passed 1 deg ago: the count restarted there
-    in->spindle_measured[0] = {vel_deg_s, set_deg - reset_at_deg, true, i < kResetCycle};
-    rig.k.tick(*in, *out);
-    set_deg = out->spindles[0].set_pos_deg;  // the NC wraps what it measures
-    vel_deg_s = out->spindles[0].set_rpm * 6.0;
-    if (out->channels[0].path_velocity_mm_s > 0) started = i;
+    if (i == kResetCycle) reset_at_deg = t.set_deg - 1.0;  // the index passed 1 deg ago: the count restarted there
+    if (t.cycle({t.vel_deg_s, t.set_deg - reset_at_deg, true, i < kResetCycle})) started = i;
   }
   EXPECT_EQ(started, kResetCycle);
 }
