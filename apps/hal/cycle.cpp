@@ -175,7 +175,8 @@ void Cycle::read_pins() noexcept {
   in_->acks.clear();
   in_->ext_commands.clear();
   in_->ext_commands_lost = 0;
-  // The kernel brakes on an amplifier fault or a limit switch itself (TickInput::axes).
+  // The kernel brakes on an amplifier fault or a limit switch itself, and
+  // G74 searches the home switch (TickInput::axes).
   for (std::size_t i = 0; i < axes_.size() && i < axis_pins.size(); ++i) {
     if (axes_[i].machine < 0) continue;
     const AxisPins& p = axis_pins[i];
@@ -183,6 +184,7 @@ void Cycle::read_pins() noexcept {
     s.amp_fault = **p.amp_fault;
     s.pos_limit = **p.limit_pos;
     s.neg_limit = **p.limit_neg;
+    s.home_cam = **p.home_sw;
   }
   take_api_actions();
   for (std::size_t ch = 0; ch < channel_count(); ++ch) {
@@ -216,6 +218,9 @@ void Cycle::read_pins() noexcept {
       c.override_percent = **p.override_pct;
       c.feedhold = **p.feedhold;
       c.stop_at_program_end = **p.stop_at_end;
+      const bool reset = **p.reset;  // a button: one request per press
+      c.reset = reset && !spindle_reset_was_[s];
+      spindle_reset_was_[s] = reset;
     }
     api_spindles_[s].merge_into(c);
   }
@@ -349,7 +354,9 @@ void Cycle::write_pins() noexcept {
   for (std::size_t i = 0; i < axes_.size(); ++i) {
     const AxisRef& a = axes_[i];
     const AxisPins& p = axis_pins[i];
-    const double cmd = out_->channels[a.channel].axis_mcs[a.axis];
+    // The drive's coordinates: the machine set point plus what homing set.
+    const kernel::ChannelOutput& o = out_->channels[a.channel];
+    const double cmd = o.axis_mcs[a.axis] + o.axis_drive_offset[a.axis];
     **p.pos_cmd = cmd;
     **p.following_error = cmd - **p.pos_fb;
     **p.enable = on;

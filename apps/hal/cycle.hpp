@@ -59,6 +59,7 @@ struct SpindlePins {  // nck.spindle.<name>.*
   // in: the PLC's controls of the spindle (the HLI's spindle control)
   PinFloat override_pct = nullptr;  // %, 100 unless set
   PinBit feedhold = nullptr, stop_at_end = nullptr;
+  PinBit reset = nullptr;  // the HLI's spdl_reset: its rising edge resets the spindle
 };
 // A spindle command from the PLC past the NC program (FCT-S1 2.9, the HLI's
 // ext_to_ipo): M3/M4/M5/M19 with its speed and position, handed over on
@@ -165,6 +166,7 @@ class Cycle {
   std::uint32_t nc_error_id_ = 0;  // the last NC error event's ID while a channel is in error
   std::array<bool, config::kMaxChannels> cycle_start_was_{};
   std::array<bool, config::kMaxChannels> reset_was_{};
+  std::array<bool, kernel::kMaxMachineSpindles> spindle_reset_was_{};
   std::array<bool, kPlcSlots> ack_was_{};
   std::array<ApiChannelControls, config::kMaxChannels> api_{};  // nck-hal --serve's operator
   std::array<ApiSpindleControls, kernel::kMaxMachineSpindles> api_spindles_{};

@@ -132,6 +132,7 @@ int make_pins(nck::hal::Cycle& c) {
     r |= flt(HAL_IN, p.override_pct, n + ".override");
     r |= bit(HAL_IN, p.feedhold, n + ".feedhold");
     r |= bit(HAL_IN, p.stop_at_end, n + ".stop-at-end");
+    r |= bit(HAL_IN, p.reset, n + ".reset");
     if (r == 0) **p.override_pct = 100.0;  // an unconnected input keeps its value
     p.axis_list = c.spindle_axis_list(s);
     if (p.axis_list >= 0) r |= bit(HAL_IN, p.amp_fault, n + ".amp-fault-in");

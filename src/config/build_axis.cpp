@@ -49,6 +49,9 @@ void read_gear(const ParamList& l, std::size_t g, GearStage& s, Diagnostics& d) 
   s.control_limit_deg_s = l.num(k("vb_regelgrenze"), s.control_limit_deg_s);
   s.gear_change_pos_deg = l.num(k("getr_schalt_pos"), s.gear_change_pos_deg);
   s.reference_pos = l.num(k("pos_refpkt"), s.reference_pos);
+  s.homing_fast_mm_s = l.num(k("vb_refmax"), s.homing_fast_mm_s);
+  s.homing_slow_mm_s = l.num(k("vb_reflow"), s.homing_slow_mm_s);
+  s.homing_accel_mm_s2 = l.num(k("a_ref"), s.homing_accel_mm_s2);
   s.encoder_ratio_num = encoder_part(l, k("wegaufz"), ErrorId::ConfigWegaufzZero, d);
   s.encoder_ratio_denom = encoder_part(l, k("wegaufn"), ErrorId::ConfigWegaufnZero, d);
   s.reverse_sense = l.flag(k("reverse"), s.reverse_sense);
@@ -159,7 +162,10 @@ void check_gear(const ParamList& l, const AxisConfig& a, std::size_t g, Diagnost
   cross_check(l, k("vb_eilgang"), k("dynamik.vb_max"), s.rapid_mm_s <= s.max_speed_mm_s,
               fmt::format("{} must not exceed {}", show(k("vb_eilgang"), s.rapid_mm_s),
                           show(k("dynamik.vb_max"), s.max_speed_mm_s)), d);
-  for (auto [key, v] : {std::pair{k("slope_profil.a_beschl"), s.accel_mm_s2}, {k("slope_profil.a_brems"), s.decel_mm_s2},
+  cross_check(l, k("vb_reflow"), k("vb_refmax"), s.homing_slow_mm_s <= s.homing_fast_mm_s,
+              fmt::format("{} must not exceed {}", show(k("vb_reflow"), s.homing_slow_mm_s),
+                          show(k("vb_refmax"), s.homing_fast_mm_s)), d);
+  for (auto [key, v] : {std::pair{k("slope_profil.a_beschl"), s.accel_mm_s2}, {k("a_ref"), s.homing_accel_mm_s2}, {k("slope_profil.a_brems"), s.decel_mm_s2},
                         {k("slope_profil.a_grenz"), s.rapid_accel_mm_s2}, {k("beschl_kennlinie.a_max"), s.curve.a_max_deg_s2}})
     cross_check(l, key, amax, v <= s.a_max,
                 fmt::format("{} must not exceed {}", show(key, v), show(amax, s.a_max)), d);
@@ -205,6 +211,8 @@ void read_head(const ParamList& l, AxisConfig& a) {
   a.speed_reached_tolerance_permille = l.num("kenngr.vb_prozent", a.speed_reached_tolerance_permille);
   a.homing_without_cam = l.flag("kenngr.ref_ohne_nocken", a.homing_without_cam);
   a.homing_without_reversal = l.flag("kenngr.ref_ohne_rev", a.homing_without_reversal);
+  a.homing_positive = l.flag("kenngr.ref_richt", a.homing_positive);
+  a.drive_controlled_homing = l.text("kenngr.homing.homing_type", "CNC_CONTROLLED") == "DRIVE_CONTROLLED";
   a.prog_move_requires_homing = l.flag("kenngr.prog_move_requires_homing", a.prog_move_requires_homing);
   a.no_stop_by_channel_reset = l.flag("kenngr.no_stop_by_channel_reset", a.no_stop_by_channel_reset);
   a.cax_gear_stage = l.u32("kenngr.def_cax_gear_st", a.cax_gear_stage);

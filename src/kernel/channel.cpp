@@ -49,6 +49,7 @@ void Channel::tick(double t_s, double dt_s, const ChannelInput& in, ChannelOutpu
     }
   }
   if (jog_.moving()) move_jogged(cy);
+  if (search_.active() || search_.moving()) step_homing_search(cy);
   ax_links_.follow(path_.position());
   cax_.follow(dt_s, path_.position(), ctx);
   (void)fail(handwheel_.follow(cy, in.manual_mode && refused == ErrorId{} ? manual_axes(in) : 0u), cy);
@@ -80,6 +81,7 @@ void Channel::run_blocks(Cycle& cy) noexcept {
         break;
       }
       if (drives_hold(cy)) break;
+      if (search_.moving()) break;  // a homing search cut short still brakes
       if (state_ == ProgramState::idle && manual_blocks_program(cy.in)) {
         cause_ = CycleCause::hold;  // manual mode keeps the program from starting
         break;
@@ -111,6 +113,8 @@ void Channel::write_output(ChannelOutput& out, const ChannelContext& ctx) const 
   out.wait_reason = wait_reason_;
   out.homed_axes = homing_.homed();
   out.homing_required = homing_.required();
+  out.axis_drive_offset = search_.drive_offsets();
+  out.drive_homing_axes = search_.drive_homing();
 }
 
 motion::AxisVector Channel::machine_position() const noexcept {
@@ -191,6 +195,7 @@ void Channel::start(Cycle& cy) noexcept {
     return;
   }
   if (refuse_into_switch(cy)) return;  // a limit switch is on where it goes
+  begin_homing_search(parts.home, cy);
   // Each unit takes its part of the block; a fault ends the program.
   if (parts.cax && fail(cax_.start(*parts.cax, path_.position(), cy), cy)) return;
   if (parts.link && fail(ax_links_.start(*parts.link, path_.position(), cy), cy)) return;
@@ -224,6 +229,11 @@ bool Channel::begin_body(Cycle& cy) noexcept {
     if (!sync_.actions_left()) break;
     (void)fail(sync_.issue_spindle_actions(SyncPoint::before, cy), cy);
     if (done()) return false;
+  }
+  if (search_.active()) {  // G74 on a real drive: its motion waits for the reference
+    cause_ = CycleCause::wait;
+    wait_reason_ = WaitReason::homing;
+    return false;
   }
   phase_ = Phase::body;
   if (const Motion* m = current_.as<Motion>()) {
@@ -369,7 +379,7 @@ void Channel::follow_reset(Cycle& cy) noexcept {
   }
   // A thread's path is not braked on its own: it follows its spindle down.
   cy.resetting = resetting_ && !spindle_path_.threading();
-  if (resetting_ && !path_.moving()) end_program(reset_reason(), cy);
+  if (resetting_ && !path_.moving() && !search_.moving()) end_program(reset_reason(), cy);
 }
 
 // A drive's error (its ID names the axis) brakes the path within its
@@ -432,6 +442,7 @@ void Channel::fail_mdi(Cycle& cy) noexcept {
   active_ = false;
   path_.reset();
   homing_.reset();
+  search_.abort();
   hold_.reset();
   sync_.clear();
   dropping_mdi_ = true;
@@ -509,6 +520,7 @@ void Channel::end_program(EndReason reason, Cycle& cy) noexcept {
   active_ = false;
   path_.reset();
   homing_.reset();
+  search_.abort();
   if (!ok) {  // preparation may be ahead: it learns where the path stands (MDI plans from there)
     Feedback f;
     f.kind = FeedbackKind::stopped;

@@ -34,6 +34,7 @@
 #include "units/cycle.hpp"
 #include "units/dwell_unit.hpp"
 #include "units/handwheel_unit.hpp"
+#include "units/homing_search.hpp"
 #include "units/homing_unit.hpp"
 #include "units/hold_unit.hpp"
 #include "units/jog_unit.hpp"
@@ -103,6 +104,8 @@ class Channel {
   // Homing (P-AXIS-00277): the axes that require it, the axes homed.
   HomingUnit& homing() noexcept { return homing_; }
   const HomingUnit& homing() const noexcept { return homing_; }
+  // setup: channel axis j's homing on a real drive (cam search, drive homing).
+  void set_homing_search(std::size_t j, const HomingSearchSettings& s) noexcept { search_.setup(j, s); }
   // An E-stop came and this channel has not been reset since its release.
   bool estop_latched() const noexcept { return estop_latched_; }
   // setup: channel axis j is machine axis `axis` (its amplifier fault and
@@ -135,6 +138,9 @@ class Channel {
   bool manual_blocks_program(const ChannelInput& in) const noexcept { return in.manual_mode || jog_.moving(); }
   // Axes the handwheel moves without G201: all, in manual mode while the program does not move.
   std::uint32_t manual_axes(const ChannelInput& in) const noexcept;
+  // G74 on a real drive (channel_homing.cpp): the search's cycle, and its start.
+  void step_homing_search(Cycle& cy) noexcept;
+  void begin_homing_search(const HomeAxes* home, Cycle& cy) noexcept;
   // the program
   void end_program(EndReason reason, Cycle& cy) noexcept;
   // keep: a spindle that follows the path and stops with it (-1 none).
@@ -237,6 +243,7 @@ class Channel {
   HoldUnit hold_;              // single step, stop at
   JogUnit jog_;                // manual mode: jog
   HomingUnit homing_;          // homed axes, P-AXIS-00277's refusal, G74 marks
+  HomingSearch search_;        // G74 on real drives: the cam search, drive homing, drive offsets
 };
 
 }  // namespace nck::kernel

@@ -63,6 +63,7 @@ DriveReport DriveUnits::step(const TickInput& in, TickOutput& out, bool enabled)
     if (!in_operation) r.ready = false;
     if (!enabled) s.reached = false;  // switched off on purpose: its enable starts anew
     ErrorId id = step_homing(s, fb, in_operation && !s.reported && enabled);
+    if (s.homing_attained) r.homed |= std::uint64_t{1} << s.axis;
     if (s.reported || !enabled) continue;
     if (s.reached && (now == cia::State::fault || now == cia::State::fault_reaction_active))
       id = ErrorId::KernelDriveFault;
@@ -91,10 +92,24 @@ ErrorId DriveUnits::step_homing(Slot& s, const drives::DriveFeedback& fb, bool i
   return ErrorId{};
 }
 
-void DriveUnits::write_set_point(std::size_t axis_index, double pos, const TickInput& in, TickOutput& out) noexcept {
+bool DriveUnits::command_homing(Slot& s, bool wants_homing, cia::Mode follow, drives::DriveCommand& cmd) noexcept {
+  s.wants_homing = wants_homing;
+  s.mode = s.homing.active() ? cia::Mode::homing : follow;
+  cmd.mode_of_operation = static_cast<std::int8_t>(s.mode);
+  cmd.controlword = static_cast<std::uint16_t>(cmd.controlword | s.homing.start_bit());
+  return s.homing.active();
+}
+
+void DriveUnits::write_set_point(std::size_t axis_index, double pos, bool wants_homing, const TickInput& in,
+                                 TickOutput& out) noexcept {
   Slot* s = slot_of(axis_index);
   if (s == nullptr) return;
   drives::DriveCommand& cmd = out.drives[axis_index];
+  if (!s->conventional && command_homing(*s, wants_homing, cia::Mode::cyclic_sync_position, cmd)) {
+    s->target_pos = cmd.target_pos = in.drives[axis_index].actual_pos;  // the drive moves on its own
+    cmd.target_vel = 0;
+    return;
+  }
   double vel = (pos - s->target_pos) / cycle_s_;
   if (s->conventional) {
     // The drive's actual position answers the last set point (it was
@@ -123,10 +138,7 @@ void DriveUnits::write_spindle(std::size_t axis_index, const SpindleCycle& c, co
   if (s == nullptr) return;
   const drives::DriveFeedback& fb = in.drives[axis_index];
   drives::DriveCommand& cmd = out.drives[axis_index];
-  s->wants_homing = c.wants_homing;
-  s->mode = s->homing.active() ? cia::Mode::homing : c.mode;
-  cmd.mode_of_operation = static_cast<std::int8_t>(s->mode);
-  cmd.controlword = static_cast<std::uint16_t>(cmd.controlword | s->homing.start_bit());
+  command_homing(*s, c.wants_homing, c.mode, cmd);
   // Not following the NC (off, or homing on its own): the set point stays
   // where the drive is, so that enabling or the next mode starts there.
   if (cia::decode(fb.statusword) != cia::State::operation_enabled || s->homing.active())

@@ -35,6 +35,7 @@ struct DriveReport {
   bool ready = true;            // every CiA 402 drive is in operation enabled
   ErrorId error{};              // valid when axis >= 0
   std::int8_t axis = -1;        // machine axis list index of the drive at fault, -1 none
+  std::uint64_t homed = 0;      // bit i: axis list i's drive ended its homing in this cycle
 };
 
 class DriveUnits {
@@ -47,9 +48,12 @@ class DriveUnits {
   // which is no fault; the programs wait for enable again. rt
   // A drive that reports another mode of operation is a `drive` event.
   DriveReport step(const TickInput& in, TickOutput& out, bool enabled = true) noexcept;
-  // After the channels: a path axis's set point (machine position, mm /
-  // deg) and its velocity from the last one. rt
-  void write_set_point(std::size_t axis_index, double pos, const TickInput& in, TickOutput& out) noexcept;
+  // After the channels: a path axis's set point (drive position, mm /
+  // deg) and its velocity from the last one; wants_homing: G74 lets its
+  // CiA 402 drive home itself (the set point then stays at the drive's
+  // actual position). rt
+  void write_set_point(std::size_t axis_index, double pos, bool wants_homing, const TickInput& in,
+                       TickOutput& out) noexcept;
 
   // A spindle's drive (machine axis list index; nothing for another).
   struct SpindleCycle {
@@ -85,7 +89,7 @@ class DriveUnits {
     std::uint32_t timeout_cycles = 1000;
     bool reached = false;                    // operation enabled was reached since the last power-up
     bool reported = false;                   // its problem was reported (once until a reset)
-    // A spindle's drive only:
+    // Drive-controlled homing (G74):
     drives::cia402::DriveHoming homing;
     bool wants_homing = false;               // last written: G74 waits for the drive
     bool homing_attained = false;            // in this cycle's step
@@ -97,6 +101,9 @@ class DriveUnits {
   Slot* slot_of(std::size_t axis_index) noexcept;
   const Slot* slot_of(std::size_t axis_index) const noexcept;
   ErrorId step_homing(Slot& s, const drives::DriveFeedback& fb, bool in_operation) noexcept;
+  // The cycle's mode and homing start bit: homing mode while the drive
+  // homes (true), else `follow` (the mode that follows the NC's set point).
+  bool command_homing(Slot& s, bool wants_homing, drives::cia402::Mode follow, drives::DriveCommand& cmd) noexcept;
 
   std::vector<Slot> slots_;
   std::array<std::int8_t, drives::kMaxDrives> slot_index_{};  // axis list -> slots_, -1 none

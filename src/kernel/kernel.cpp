@@ -1,6 +1,7 @@
 #include "nck/kernel/kernel.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -13,8 +14,8 @@ namespace nck::kernel {
 
 // An embedder keeps one of each outside the real-time thread's stack
 // (docs/embedding.md gives these sizes).
-static_assert(sizeof(TickInput) == 24576, "docs/embedding.md gives TickInput's size");
-static_assert(sizeof(TickOutput) == 35720, "docs/embedding.md gives TickOutput's size");
+static_assert(sizeof(TickInput) == 24640, "docs/embedding.md gives TickInput's size");
+static_assert(sizeof(TickOutput) == 38888, "docs/embedding.md gives TickOutput's size");
 
 namespace {
 
@@ -34,6 +35,23 @@ JogAxisSettings jog_settings(const config::Machine& m, const config::ChannelAxis
     s.sw_limit_neg_mm = ax.sw_limit_neg;
     s.sw_limit_pos_mm = ax.sw_limit_pos;
   }
+  return s;
+}
+
+// G74 of a path axis on a real drive (config::HomingMethod): the cam
+// search's directions, speeds (at most vb_max) and acceleration, the
+// reference at the cam's edge, and its time.
+HomingSearchSettings homing_search_settings(const config::AxisConfig& ax, double cycle_s) {
+  const config::GearStage& g = ax.gear(ax.initial_gear_stage);
+  HomingSearchSettings s;
+  s.method = ax.homing_method();
+  s.to_cam = ax.homing_positive ? 1 : -1;
+  s.off_cam = static_cast<std::int8_t>(ax.homing_without_reversal ? s.to_cam : -s.to_cam);
+  s.fast_mm_s = std::min(g.homing_fast_mm_s, g.max_speed_mm_s);
+  s.off_cam_mm_s = std::min(ax.fast_from_cam ? g.homing_fast_mm_s : g.homing_slow_mm_s, g.max_speed_mm_s);
+  s.a_mm_s2 = g.homing_accel();
+  s.reference_mm = g.reference_pos;
+  s.timeout_cycles = static_cast<std::uint32_t>(std::ceil(ax.drive_homing_timeout_s / cycle_s));
   return s;
 }
 
@@ -128,8 +146,10 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
       const int a = ch.axes[j].axis_index;
       if (a >= 0 && machine_->axes[static_cast<std::size_t>(a)].prog_move_requires_homing)
         channels_.back()->homing().require(j, std::nullopt);
-      if (a >= 0 && static_cast<std::size_t>(a) < drives::kMaxDrives)
+      if (a >= 0 && static_cast<std::size_t>(a) < drives::kMaxDrives) {
         channels_.back()->set_machine_axis(j, static_cast<std::int8_t>(a));
+        channels_.back()->set_homing_search(j, homing_search_settings(machine_->axes[static_cast<std::size_t>(a)], cycle_s_));
+      }
     }
     if (ch.c_axis >= 0)
       for (std::size_t k = 0; k < ch.spindles.size(); ++k)
@@ -210,6 +230,7 @@ void Kernel::tick(const TickInput& in, TickOutput& out) noexcept {
   ctx.machine_off = !in.machine.machine_on;
   ctx.drives_enabled = machine_out_.drives_enabled;
   ctx.axes = &in.axes;
+  ctx.drive_feedback = &in.drives;
   if (drive_units_ && !drive_units_->empty()) {
     for (const ChannelInput& c : in.channels)
       if (c.reset) drive_units_->on_reset();

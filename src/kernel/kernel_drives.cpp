@@ -28,8 +28,10 @@ cia::Mode spindle_drive_mode(const spindle::SpindleAxis& a) noexcept {
 
 }  // namespace
 
-// The drives' set points: each channel path axis's machine set point, and
-// its velocity from the last one (mm, mm/s); each CiA 402 spindle's mode
+// The drives' set points: each channel path axis's set point in its drive's
+// coordinates (the machine set point plus homing's drive offset) with its
+// velocity from the last one (mm, mm/s) and whether G74 lets its CiA 402
+// drive home; each CiA 402 spindle's mode
 // and increments; each conventional spindle's velocity. rt
 void Kernel::write_drive_set_points(const TickInput& in, TickOutput& out) noexcept {
   for (std::size_t c = 0; c < machine_->channels.size(); ++c) {
@@ -37,7 +39,9 @@ void Kernel::write_drive_set_points(const TickInput& in, TickOutput& out) noexce
     for (std::size_t j = 0; j < ch.axes.size() && j < kMaxAxes; ++j) {
       const int a = ch.axes[j].axis_index;
       if (a < 0 || static_cast<std::size_t>(a) >= drives::kMaxDrives) continue;
-      drive_units_->write_set_point(static_cast<std::size_t>(a), out.channels[c].axis_mcs[j], in, out);
+      const ChannelOutput& o = out.channels[c];
+      drive_units_->write_set_point(static_cast<std::size_t>(a), o.axis_mcs[j] + o.axis_drive_offset[j],
+                                    (o.drive_homing_axes >> j & 1u) != 0, in, out);
     }
   }
   for (const SpindleUnit& u : spindles_) {

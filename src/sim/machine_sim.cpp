@@ -16,7 +16,12 @@ Probe make_probe(const config::Machine& m, std::size_t ch) {
 }  // namespace
 
 MachineSim::MachineSim(const config::Machine& m)
-    : plc_(m.sim), drives_(m), drive_models_(m), hli_(plc::make_hli_image(m)), map_(plc::build_spindle_map(m)) {
+    : plc_(m.sim),
+      drives_(m),
+      drive_models_(m),
+      hli_(plc::make_hli_image(m)),
+      map_(plc::build_spindle_map(m)),
+      home_cams_(m) {
   channels_ = std::min(m.channels.size(), config::kMaxChannels);
   spindles_ = std::min(map_.count, kernel::kMaxMachineSpindles);
   // A dry run has no operator: unless the scenario says otherwise, every
@@ -106,6 +111,7 @@ void MachineSim::read(double t_s, kernel::TickInput& in) noexcept {
 
 void MachineSim::write(const kernel::TickOutput& out) noexcept {
   drive_models_.write(out);
+  home_cams_.watch(out, axes_);
   for (const kernel::TechRequest& r : out.tech_outputs) (void)plc_.submit(r.handle, r.output, t_s_);
   if (player_.has_triggers())  // lines waiting for a program state ('@hold cycle_start')
     for (const kernel::Event& e : out.events)

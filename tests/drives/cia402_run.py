@@ -5,7 +5,11 @@ runs to M30; a fault injected by the scenario is 940501 naming Y and the
 other axes brake (X's speed falls by at most a_max per cycle in the trace);
 a drive that never enables is 940500 naming Z, not a hang; spindle S1's
 drive follows the spindle through its modes (test c): velocity, homing for
-G74, velocity for M3, position for M19, velocity again."""
+G74, velocity for M3, position for M19, velocity again; G74 of path axes
+on DRIVE_CONTROLLED drives (home.nc): each drive homes in mode 6 while the
+block waits (wait homing), its position is the axis's, the axis ends at
+pos_refpkt (0) and the set point never moves faster than the axis may
+except where the reference is taken."""
 import csv, json, os, subprocess, sys, tempfile
 
 nck, root = sys.argv[1], sys.argv[2]
@@ -67,6 +71,22 @@ drive_t = {m: [e["t"] for e in events if e["ev"] == "drive" and e["axis"] == "S1
 check(drive_t["homing"] and 0 <= drive_t["homing"][0] - homing_t <= 0.005, "homing mode follows G74 within 5 cycles")
 check(drive_t["csp"] and 0 <= drive_t["csp"][0] - position_t <= 0.005, "position mode follows M19 within 5 cycles")
 check(not [e for e in events if e["ev"] == "error"], "spindle_modes.nc: no error")
+
+rc, events, rows = run(program="home.nc")
+check(rc == 0 and not [e for e in events if e["ev"] == "error"], f"home.nc: exit {rc}, no error")
+drive = [(e["axis"], e["mode"]) for e in events if e["ev"] == "drive" and e["axis"] in "XYZ"]
+check(drive[3:] == [("Z", "homing"), ("Z", "csp"), ("X", "homing"), ("Y", "homing"), ("X", "csp"), ("Y", "csp")],
+      f"home.nc: Z's drive homes, then X's and Y's: {drive}")
+waits = [e["ev"] for e in events if e["ev"] in ("wait", "wait_end") and e.get("reason") == "homing"]
+check(waits == ["wait", "wait_end"] * 2, f"home.nc: the homing block waits for its drives: {waits}")
+# Z stood at 10 when its drive homed (the simulated drive homes to 0): the
+# trace's Z takes the drive's 0 in one cycle and stays there.
+zcol = next(k for k in rows[0] if k.strip().upper().startswith("Z"))
+zs = [float(r[zcol]) for r in rows]
+jumps = [i for i, (a, b) in enumerate(zip(zs, zs[1:])) if abs(b - a) > 500 * 0.001 + 1e-9]
+check(len(jumps) == 1 and abs(zs[jumps[0]] - 10) < 1e-9 and zs[jumps[0] + 1] == 0.0,
+      f"home.nc: Z's reference taken once, from 10 to the drive's 0: {[(zs[i], zs[i + 1]) for i in jumps]}")
+check(abs(zs[-1]) < 1e-9, f"home.nc: Z ends at pos_refpkt 0, got {zs[-1]}")
 
 for f in failures:
     print("FAIL:", f)

@@ -4,7 +4,7 @@ through scripts/hal-demo.sh and bounded in time. Exit 77 (skipped) when the
 HAL components are not built or unshare is not allowed.
 
   hal_test.py SOURCE BUILD CASE   CASE: contour | operator | plc | period | wrong-type | missing-machine | missing-program
-                                        | cia402 | cia402-fault | amp-fault | serve | serve-bad-option | skip | vfd-spindle | thread-index | spindle-controls
+                                        | cia402 | cia402-fault | amp-fault | homing | serve | serve-bad-option | skip | vfd-spindle | thread-index | spindle-controls
 """
 import json, math, os, re, subprocess, sys, tempfile
 
@@ -312,7 +312,7 @@ elif case == "spindle-controls":
     # The HLI's spindle control as pins: the override at 50 % runs M3 S1000
     # at 500 rpm; the spindle's feedhold brings its set point to 0; released,
     # it runs up again and the program ends. Then a spindle command from the
-    # PLC (plc-cmd-*) turns S1 again.
+    # PLC (plc-cmd-*) turns S1 again, and its reset pin stops it.
     head = example_text[:example_text.index("\nstart\n")]
     tail = """
 setp nck.spindle.S1.override 50
@@ -330,17 +330,21 @@ setp nck.spindle.S1.plc-cmd-request 1
 loadusr -w sleep 0.8
 show pin nck.spindle.S1.speed-cmd-rpm
 show pin nck.spindle.S1.plc-cmd-done
+setp nck.spindle.S1.reset 1
+loadusr -w sleep 0.8
+show pin nck.spindle.S1.speed-cmd-rpm
 show pin nck.channel.1.status
 show pin nck.error-id
 stop
 """
     rc, out = run(head + "\n" + tail, program=os.path.join(src, "tests", "hal", "spindle_controls.nc"), timeout=60)
     rpm = [float(m) for m in re.findall(r"^\s*\d+\s+float\s+OUT\s+(\S+)\s+nck.spindle.S1.speed-cmd-rpm", out, re.M)]
-    check(rc == 0 and "channel 1 done" in out and len(rpm) == 3, f"spindle_controls.nc ran to its end (exit {rc})", out)
+    check(rc == 0 and "channel 1 done" in out and len(rpm) == 4, f"spindle_controls.nc ran to its end (exit {rc})", out)
     check(abs(rpm[0] - 500) < 1e-6, f"override 50 %: M3 S1000 runs at {rpm[0]} rpm", out)
     check(rpm[1] == 0, f"the spindle's feedhold: its set point is {rpm[1]} rpm", out)
     check(abs(rpm[2] - 150) < 1e-6 and pins(out).get("nck.spindle.S1.plc-cmd-done") == "TRUE",
           f"after the program the PLC's command M3 REV300 (FCT-S1 2.9) runs S1 at {rpm[2]} rpm (override 50 %), done", out)
+    check(rpm[3] == 0, f"the spindle's reset pin (spdl_reset) stops it: {rpm[3]} rpm", out)
     check(pins(out).get("nck.error-id") == "0x00000000", "no error", out)
 elif case == "thread-index":
     # G33 with the spindle encoder's index: mill-velocity.hal's S1 VFD
@@ -406,6 +410,24 @@ elif case == "conventional":
         # pos-cmd of this cycle against the position of the last: v*T (at most
         # 500 mm/s * 1 ms = 0.5 mm) and the drive's lag that kv takes back.
         check(worst <= 1.5, f"{a}: the axis follows (worst following {worst:.4f} mm <= 1.5 mm)", out)
+elif case == "homing":
+    # (issue 46) G74 on conventional drives: each axis of
+    # examples/hal/mill-velocity.hal searches its home cam (wcomp on the
+    # motor position: X <= -25, Y <= -15, Z >= +5 mm from power-up) and the
+    # cam's edge becomes pos_refpkt (0); home.nc then moves to X20 Y10 Z5,
+    # which are the motors' -5, -5 and 10 mm.
+    analog = os.path.join(src, "examples", "mill-analog")
+    text = open(os.path.join(src, "examples", "hal", "mill-velocity.hal")).read()
+    rc, out = run(text, program=os.path.join(analog, "home.nc"), machine=analog, timeout=90)
+    check(rc == 0 and "channel 1 done" in out, f"home.nc ran to its end (exit {rc})", out)
+    v = pins(out)
+    check(v.get("nck.channel.1.status") == "3" and v.get("nck.error-id") == "0x00000000", "ended, no error", out)
+    for a, motor in (("X", -5.0), ("Y", -5.0), ("Z", 10.0)):
+        fb = float(v[f"nck.axis.{a}.pos-fb"])
+        print(f"{a}: motor at {fb:.4f} mm (cam edge + programmed position {motor})")
+        check(v.get(f"nck.axis.{a}.homed") == "TRUE", f"{a} is homed", out)
+        # The edge is taken one cycle late at 5 mm/s, plus the drive's lag.
+        check(abs(fb - motor) <= 0.1, f"{a}: the cam's edge is pos_refpkt within 0.1 mm", out)
 elif case == "amp-fault":
     # (issue 46) Y's amplifier fault while contour.nc runs: error 930750
     # naming Y on nck.error-id, the channel brakes and its program ends in

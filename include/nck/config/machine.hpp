@@ -4,6 +4,7 @@
 // deg/s^2; spindle speeds in rpm at the user edge). Immutable while running.
 //
 // Fields may be added; existing names are an interface other layers use.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -76,6 +77,11 @@ struct GearStage {
   double control_limit_deg_s = 200;   // P-AXIS-00220 (vb_regelgrenze): position loop opens above
   double gear_change_pos_deg = 0;     // P-AXIS-00078 (getr_schalt_pos)
   double reference_pos = 0;              // P-AXIS-00152 (pos_refpkt)
+  // Homing on a real drive, the NC's search for the cam (path axes):
+  double homing_fast_mm_s = 83.333;   // P-AXIS-00219 (vb_refmax): towards the cam
+  double homing_slow_mm_s = 16.666;   // P-AXIS-00218 (vb_reflow): off the cam (fast_from_cam 0)
+  double homing_accel_mm_s2 = 0;      // P-AXIS-00285 (a_ref), 0: min(a_grenz, a_max)
+  double homing_accel() const { return homing_accel_mm_s2 > 0 ? homing_accel_mm_s2 : std::min(rapid_accel_mm_s2, a_max); }
   std::uint32_t encoder_ratio_num = 1, encoder_ratio_denom = 1;  // wegaufz / wegaufn
   bool reverse_sense = false;         // P-AXIS-00159 (reverse)
   double a_emergency = 0;             // P-AXIS-00003, 0 = use a_max
@@ -140,6 +146,12 @@ constexpr bool is_open_loop(DriveMode m) noexcept { return m >= DriveMode::open_
 // The mode an antr.operation_mode symbol names, or nullopt (setup).
 std::optional<DriveMode> drive_mode_from(std::string_view symbol) noexcept;
 
+// How G74 homes a path axis: `direct` moves it to pos_refpkt (a simulated
+// drive, or homing without cam); `cam`: the NC searches the home cam
+// through the axis's home switch and sets the position at its edge; `drive`:
+// a CiA 402 drive homes itself (mode 6) and the NC takes its position.
+enum class HomingMethod : std::uint8_t { direct, cam, drive };
+
 // One axis list (achs_mds[i]): a path axis or a spindle.
 struct AxisConfig {
   SourceRef source;
@@ -162,6 +174,14 @@ struct AxisConfig {
   bool preferred_direction_positive = false;  // P-AXIS-00031 (kenngr.beweg_richt), spindle
   double speed_reached_tolerance_permille = 100;  // P-AXIS-00217 (kenngr.vb_prozent), spindle
   bool homing_without_cam = false, homing_without_reversal = false;  // kenngr.ref_ohne_nocken/_rev
+  bool homing_positive = false;         // P-AXIS-00158 (kenngr.ref_richt): the cam lies that way
+  bool drive_controlled_homing = false; // P-AXIS-00299 (kenngr.homing.homing_type DRIVE_CONTROLLED)
+  // How G74 homes this path axis (docs/decisions.md "Homing on a real drive").
+  HomingMethod homing_method() const {
+    if (drive_controlled_homing && is_cia402()) return HomingMethod::drive;
+    if ((is_cia402() || is_conventional()) && !homing_without_cam) return HomingMethod::cam;
+    return HomingMethod::direct;
+  }
   bool prog_move_requires_homing = false;  // P-AXIS-00277: programmed motion refused until homed (G74)
   bool no_stop_by_channel_reset = false;  // P-AXIS-00455
   DriveMode drive_mode = DriveMode::drive_default;  // antr.operation_mode

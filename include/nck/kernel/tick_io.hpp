@@ -121,6 +121,7 @@ struct AxisSwitches {
   bool amp_fault = false;  // the axis's drive reports a fault (any drive type)
   bool pos_limit = false;  // the limit switch at the positive end of travel is on
   bool neg_limit = false;  // the one at the negative end
+  bool home_cam = false;   // the home switch: the axis stands on its home cam (G74 on a real drive)
 };
 
 struct TickInput {
@@ -185,6 +186,11 @@ struct ChannelOutput {
   WaitReason wait_reason = WaitReason::plc_ack;  // cause == wait: for what
   // Homing (P-AXIS-00277), bit j = path axis j: homed, and requiring homing.
   std::uint32_t homed_axes = 0, homing_required = 0;
+  // G74 on a real drive: drive position minus machine position per path
+  // axis (what homing set; the drive's set point is axis_mcs plus it), and
+  // the axes whose CiA 402 drive is asked to home itself (bit j).
+  AxisArray axis_drive_offset{};
+  std::uint32_t drive_homing_axes = 0;
 };
 
 struct SpindleOutput {

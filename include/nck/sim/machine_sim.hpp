@@ -23,6 +23,7 @@
 #include "nck/sim/drive_models.hpp"
 #include "nck/sim/distance_sensor.hpp"
 #include "nck/sim/plc_sim.hpp"
+#include "nck/sim/home_cams.hpp"
 #include "nck/sim/probe.hpp"
 #include "nck/sim/scenario_player.hpp"
 #include "nck/sim/spindle_drives.hpp"
@@ -119,6 +120,7 @@ class MachineSim {
   FixedVector<MdiRequest, 64> mdi_requests_;
   FixedVector<sim::ScenarioAction, 32> operator_actions_;
   std::array<Probe, config::kMaxChannels> probes_{};
+  HomeCams home_cams_;
   std::array<DistanceSensor, config::kMaxChannels> sensors_{};
   std::array<bool, config::kMaxChannels> sensor_on_{};  // sampled only once a program needs it
   std::array<bool, config::kMaxChannels> probe_switched_{};  // in the last cycle

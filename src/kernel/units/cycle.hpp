@@ -30,6 +30,8 @@ struct ChannelContext {
   bool drives_enabled = true;  // the NC let the drives be powered in the last cycle
   // The axes' amplifier faults and limit switches (TickInput::axes).
   const std::array<AxisSwitches, drives::kMaxDrives>* axes = nullptr;
+  // What the drives reported at the start of this cycle (TickInput::drives).
+  const std::array<drives::DriveFeedback, drives::kMaxDrives>* drive_feedback = nullptr;
 
   // Spindle s (kernel index), or nullptr for none / out of range. rt
   SpindleUnit* spindle(std::int8_t s) const noexcept {

@@ -33,6 +33,9 @@ class PathUnit {
   // motion's segment starts where the one before ended, or at `start`;
   // `map` maps it from program coordinates. rt
   void start_block(const Command& c, const StartPoint* start, const ProgramMap* map) noexcept;
+  // Before its body: motion m starts where the set point stands now (after
+  // a homing search moved the axes). rt
+  void rejoin(const Motion& m) noexcept { segment_ = motion::Segment::joined(pos_, m.path); }
   // The body of motion m begins: its profile, ending no faster than the
   // queued commands leave room to brake in (braking_reserve.hpp). rt
   void start_motion(const Motion& m, const CommandQueue& queued, double dt_s) noexcept;

@@ -42,6 +42,7 @@ AxisTable::AxisTable(const config::Machine& machine, const config::ChannelConfig
     sw_pos_mm_[j] = ax.sw_limit_pos;
     home_pos_mm_[j] = g.reference_pos;
     if (idx >= 0 && ax.is_face_turning()) face_axes_ |= 1u << j;
+    if (idx >= 0 && ax.homing_method() != config::HomingMethod::direct) searching_home_ |= 1u << j;
   }
   if (c_axis >= 0 && c_list) make_c_axis(static_cast<std::size_t>(c_axis), *c_list);
 }

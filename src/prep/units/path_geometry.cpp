@@ -160,11 +160,17 @@ std::expected<PlannedBlock, Diagnostic> plan_homing(const nc::Block& b, const Pl
       }
     c.attach(homes);
     auto seg = motion::make_line(mcs, target, ctx.n_axes);
-    if (seg && seg->length() > 0) {
+    // An axis that searches its reference on a real drive (the kernel's
+    // HomingSearch) starts this motion wherever the search left it: the
+    // motion is always there, and its limits hold in every direction.
+    const bool searches = (homes.mask & ctx.axes.searching_home()) != 0;
+    if (seg && (seg->length() > 0 || searches)) {
+      const std::span<const motion::AxisDynamics> dyn(rapid.data(), ctx.n_axes);
       c.kind = CommandKind::motion;
       c.segment = *seg;
       c.detach<kernel::ProgramMap>();
-      c.limits = motion::path_limits(c.segment, std::span<const motion::AxisDynamics>(rapid.data(), ctx.n_axes));
+      c.limits = searches ? motion::path_limits(*motion::make_line(mcs, mcs, ctx.n_axes), dyn)
+                          : motion::path_limits(c.segment, dyn);
       c.v_cmd_mm_s = c.limits.v_max_mm_s;
       c.exact_stop = true;  // each homing group ends at its home position
     }

@@ -44,6 +44,9 @@ class AxisTable {
   const WeightLimits& weight_limits(std::size_t j) const { return weight_limits_[j]; }
   // Bit j: axis j is a face-turning axis (kenngr.achs_mode 0x40).
   std::uint32_t face_axes() const { return face_axes_; }
+  // Bit j: G74 of axis j searches its reference on a real drive (the
+  // kernel's HomingSearch) before its motion to pos_refpkt.
+  std::uint32_t searching_home() const { return searching_home_; }
 
  private:
   void make_c_axis(std::size_t j, const config::AxisConfig& list);
@@ -56,6 +59,7 @@ class AxisTable {
   AxisArray home_pos_mm_{};      // where G74 homes the axis (reference_pos)
   std::array<WeightLimits, kMaxAxes> weight_limits_{};
   std::uint32_t face_axes_ = 0;
+  std::uint32_t searching_home_ = 0;
 };
 
 }  // namespace nck::prep
