@@ -4,7 +4,7 @@ through scripts/hal-demo.sh and bounded in time. Exit 77 (skipped) when the
 HAL components are not built or unshare is not allowed.
 
   hal_test.py SOURCE BUILD CASE   CASE: contour | operator | plc | period | wrong-type | missing-machine | missing-program
-                                        | cia402 | cia402-fault | amp-fault | homing | serve | serve-bad-option | skip | vfd-spindle | thread-index | spindle-controls
+                                        | cia402 | cia402-fault | cia402-home | amp-fault | homing | plc-silent | serve | serve-bad-option | skip | vfd-spindle | thread-index | spindle-controls
 """
 import json, math, os, re, subprocess, sys, tempfile
 
@@ -291,6 +291,40 @@ elif case == "cia402-spindle":
     check(v.get("nck.spindle.S1.homed") == "TRUE", "nck.spindle.S1.homed after G74", out)
     check(int(v.get("nck.spindle.S1.cia-statusword", "0"), 16) & 0x6F == 0x27 and v.get("nck.spindle.S1.cia-opmode") == "9",
           "S1's drive is in operation enabled, in velocity mode at the end", out)
+elif case == "cia402-home":
+    # G74 of path axes on DRIVE_CONTROLLED CiA 402 drives (home.nc): each
+    # nck_cia402_sim drive runs homing mode while its block waits, in the
+    # order `nck run` reports; the axes end homed at the program's places.
+    home_nc = os.path.join(cia_machine, "home.nc")
+    rc, out = run(cia_text, program=home_nc, machine=cia_machine, timeout=60)
+    check(rc == 0 and "channel 1 done" in out, f"home.nc ran to its end through nck_cia402_sim (exit {rc})", out)
+    hal_modes = re.findall(r"^event t=\S+ ch=0 line=\d+ ev=drive axis=([XYZ]) mode=(\S+)", out, re.M)
+    with tempfile.TemporaryDirectory() as d:
+        ev = os.path.join(d, "ev.jsonl")
+        subprocess.run([os.path.join(build, "nck"), "run", cia_machine, home_nc, "--events", ev],
+                       check=True, capture_output=True, timeout=120)
+        run_modes = [(j["axis"], j["mode"]) for j in map(json.loads, open(ev))
+                     if j.get("ev") == "drive" and j["axis"] in ("X", "Y", "Z")]
+    print("HAL modes:", hal_modes)
+    print("nck run modes:", run_modes)
+    check(("Z", "homing") in run_modes and ("X", "homing") in run_modes, f"nck run: the drives home ({run_modes})", out)
+    check(hal_modes == run_modes, "through HAL the drives run the same modes in the same order", out)
+    v = pins(out)
+    for a, at in (("X", 20.0), ("Y", 10.0), ("Z", 0.0)):
+        check(v.get(f"nck.axis.{a}.homed") == "TRUE", f"{a} is homed", out)
+        check(abs(float(v[f"nck.axis.{a}.pos-fb"]) - at) <= 1e-6, f"{a} ends at {at} (the drive's reference is the machine's)", out)
+    check(v.get("nck.error-id") == "0x00000000", "no error", out)
+elif case == "plc-silent":
+    # Bad input: a PLC that never acknowledges. mill-stepgen.hal without its
+    # acknowledgements runs spindle.nc: M3 waits for its ack for
+    # m3_prozess_zeit (2 s, examples/mill/channel1.lis), then error 960021
+    # on nck.error-id; the program ends and the session ends by itself.
+    text = re.sub(r"^net plc-ack-\d+ .*$", "", example_text, flags=re.M)
+    rc, out = run(text, program=os.path.join(mill, "spindle.nc"), timeout=60)
+    check(rc == 0 and "channel 1 done" in out, f"the session ended by itself (exit {rc})", out)
+    check(re.search(r"ev=error id=960021", out) is not None, "the missing acknowledgement is error 960021", out)
+    v = pins(out)
+    check(v.get("nck.error") == "TRUE" and v.get("nck.error-id") == "0x000EA615", "nck.error-id shows 960021", out)
 elif case == "vfd-spindle":
     # (issue 46 item 3) a spindle on a conventional drive: S1 of
     # examples/mill-analog through mill-velocity.hal's VFD model (5 % slow,

@@ -133,6 +133,8 @@ TEST(ZeroAllocation, WholeExamplesRunThroughTickWithoutHeap) {
   const Example examples[] = {
       {"examples/mill", {"examples/mill/contour.nc"}},
       {"examples/mill-cia402", {"examples/mill-cia402/enable.nc"}},  // CiA 402 drives: enable, set points
+      {"examples/mill-cia402", {"examples/mill-cia402/home.nc"}},  // G74: the drives home (mode 6)
+      {"examples/mill-analog", {"examples/mill-analog/home.nc"}},  // G74: the NC's cam search
       {"examples/mill", {"examples/mill/contour.nc"}, "examples/mill/single_step.plc"},  // hold and release
       {"examples/mill", {}, "examples/mill/mdi.plc"},                                    // MDI
       {"examples/mill", {"examples/mill/contour_blend.nc"}},
