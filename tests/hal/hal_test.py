@@ -81,6 +81,24 @@ def with_monitor(text):
 example_text = open(example).read()
 cia_machine = os.path.join(src, "examples", "mill-cia402")
 cia_text = open(os.path.join(src, "examples", "hal", "mill-cia402.hal")).read()
+
+
+def drive_modes_both_ways(program, axes):
+    """Runs examples/mill-cia402's `program` through mill-cia402.hal (to its
+    end) and through `nck run`: the HAL session's output and each run's
+    (axis, mode) of the `drive` events of `axes`, in order."""
+    path = os.path.join(cia_machine, program)
+    rc, out = run(cia_text, program=path, machine=cia_machine, timeout=60)
+    check(rc == 0 and "channel 1 done" in out, f"{program} ran to its end through nck_cia402_sim (exit {rc})", out)
+    hal = [(a, m) for a, m in re.findall(r"^event t=\S+ ch=0 line=\d+ ev=drive axis=(\S+) mode=(\S+)", out, re.M) if a in axes]
+    with tempfile.TemporaryDirectory() as d:
+        ev = os.path.join(d, "ev.jsonl")
+        subprocess.run([os.path.join(build, "nck"), "run", cia_machine, path, "--events", ev],
+                       check=True, capture_output=True, timeout=120)
+        ran = [(j["axis"], j["mode"]) for j in map(json.loads, open(ev)) if j.get("ev") == "drive" and j["axis"] in axes]
+    return out, hal, ran
+
+
 cia_enable = os.path.join(cia_machine, "enable.nc")
 OP_ENABLED = 0x0637  # CiA 402 statusword: operation enabled, remote, target reached
 
@@ -274,15 +292,8 @@ elif case == "cia402-spindle":
     # homing mode for G74 (the drive homes itself), cyclic synchronous
     # velocity for M3, position for M19 and velocity again, in the order
     # `nck run` reports them (its `drive` events).
-    modes_nc = os.path.join(cia_machine, "spindle_modes.nc")
-    rc, out = run(cia_text, program=modes_nc, machine=cia_machine, timeout=60)
-    check(rc == 0 and "channel 1 done" in out, f"spindle_modes.nc ran to its end through nck_cia402_sim (exit {rc})", out)
-    hal_modes = re.findall(r"^event t=\S+ ch=0 line=\d+ ev=drive axis=S1 mode=(\S+)", out, re.M)
-    with tempfile.TemporaryDirectory() as d:
-        ev = os.path.join(d, "ev.jsonl")
-        subprocess.run([os.path.join(build, "nck"), "run", cia_machine, modes_nc, "--events", ev],
-                       check=True, capture_output=True, timeout=120)
-        run_modes = [j["mode"] for j in map(json.loads, open(ev)) if j.get("ev") == "drive" and j["axis"] == "S1"]
+    out, hal_modes, run_modes = drive_modes_both_ways("spindle_modes.nc", ("S1",))
+    hal_modes, run_modes = [m for _, m in hal_modes], [m for _, m in run_modes]
     print("HAL S1 modes:", hal_modes)
     print("nck run S1 modes:", run_modes)
     check(run_modes == ["csv", "homing", "csv", "csp", "csv"], f"nck run: S1 homes, turns, positions, turns ({run_modes})", out)
@@ -295,16 +306,7 @@ elif case == "cia402-home":
     # G74 of path axes on DRIVE_CONTROLLED CiA 402 drives (home.nc): each
     # nck_cia402_sim drive runs homing mode while its block waits, in the
     # order `nck run` reports; the axes end homed at the program's places.
-    home_nc = os.path.join(cia_machine, "home.nc")
-    rc, out = run(cia_text, program=home_nc, machine=cia_machine, timeout=60)
-    check(rc == 0 and "channel 1 done" in out, f"home.nc ran to its end through nck_cia402_sim (exit {rc})", out)
-    hal_modes = re.findall(r"^event t=\S+ ch=0 line=\d+ ev=drive axis=([XYZ]) mode=(\S+)", out, re.M)
-    with tempfile.TemporaryDirectory() as d:
-        ev = os.path.join(d, "ev.jsonl")
-        subprocess.run([os.path.join(build, "nck"), "run", cia_machine, home_nc, "--events", ev],
-                       check=True, capture_output=True, timeout=120)
-        run_modes = [(j["axis"], j["mode"]) for j in map(json.loads, open(ev))
-                     if j.get("ev") == "drive" and j["axis"] in ("X", "Y", "Z")]
+    out, hal_modes, run_modes = drive_modes_both_ways("home.nc", ("X", "Y", "Z"))
     print("HAL modes:", hal_modes)
     print("nck run modes:", run_modes)
     check(("Z", "homing") in run_modes and ("X", "homing") in run_modes, f"nck run: the drives home ({run_modes})", out)
