@@ -294,15 +294,10 @@ void Cycle::take_plc_spindle_commands() noexcept {
     plc_request_was_[s] = request;
     const std::int32_t m = **p.m;
     if (!rose || (m != 3 && m != 4 && m != 5 && m != 19)) continue;
-    plc::ExtSpindleCommand c;
-    for (std::size_t ch = 1; ch <= channel_count() && c.spindle == plc::kNoSpindle; ++ch)
-      for (std::int32_t i = 0; i < static_cast<std::int32_t>(config::kMaxSpindles); ++i)
-        if (map.at(ch, i) == static_cast<std::int8_t>(s)) {
-          c.channel = static_cast<std::uint8_t>(ch);
-          c.spindle = static_cast<std::int8_t>(i);
-          break;
-        }
-    if (c.spindle == plc::kNoSpindle) continue;
+    if (s >= map.count) continue;
+    plc::ExtSpindleCommand c;  // to the first channel that lists the spindle
+    c.channel = map.first[s].channel;
+    c.spindle = map.first[s].index;
     c.fn = static_cast<plc::ExtFunction>(m);
     c.has_rev = **p.rpm > 0;
     c.rev_rpm = c.has_rev ? **p.rpm : 0.0;

@@ -108,7 +108,8 @@ std::expected<void, Diagnostic> Kernel::configure(const config::Machine& machine
     for (std::size_t i = 0; i < ch.spindles.size(); ++i) {
       const std::int8_t k = spindle_map_.at(c + 1, static_cast<std::int32_t>(i));
       per_channel[c].push_back(k);
-      if (k < 0 || !spindle_names_[static_cast<std::size_t>(k)].empty()) continue;
+      const plc::ChannelSpindleRef here{static_cast<std::uint8_t>(c + 1), static_cast<std::int8_t>(i)};
+      if (k < 0 || spindle_map_.first[static_cast<std::size_t>(k)] != here) continue;  // set up by its first listing
       const config::ChannelSpindle& sp = ch.spindles[i];
       const config::AxisConfig* ax =
           sp.axis_index >= 0 ? &machine_->axes[static_cast<std::size_t>(sp.axis_index)] : nullptr;

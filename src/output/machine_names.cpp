@@ -26,15 +26,12 @@ std::vector<std::string> path_axis_columns(const config::Machine& m) {
 std::vector<SpindleName> machine_spindles(const config::Machine& m) {
   const plc::SpindleMap map = plc::build_spindle_map(m);
   std::vector<SpindleName> out(map.count);
-  for (std::size_t c = 0; c < m.channels.size(); ++c)
-    for (std::size_t i = 0; i < m.channels[c].spindles.size(); ++i) {
-      const std::int8_t k = map.at(c + 1, static_cast<std::int32_t>(i));
-      if (k < 0 || !out[static_cast<std::size_t>(k)].name.empty()) continue;
-      const config::ChannelSpindle& s = m.channels[c].spindles[i];
-      const bool open_loop =
-          s.axis_index >= 0 && m.axes[static_cast<std::size_t>(s.axis_index)].is_speed_controlled();
-      out[static_cast<std::size_t>(k)] = {s.name, s.log_axis_nr, c, open_loop};
-    }
+  for (std::size_t k = 0; k < map.count; ++k) {
+    const std::size_t c = map.first[k].channel - 1u;
+    const config::ChannelSpindle& s = m.channels[c].spindles[static_cast<std::size_t>(map.first[k].index)];
+    const bool open_loop = s.axis_index >= 0 && m.axes[static_cast<std::size_t>(s.axis_index)].is_speed_controlled();
+    out[k] = {s.name, s.log_axis_nr, c, open_loop};
+  }
   return out;
 }
 

@@ -19,6 +19,7 @@ SpindleMap build_spindle_map(const config::Machine& m) {
         if (nr != 0 && owner_nr[k] == nr) found = static_cast<std::int8_t>(k);
       if (found == kNoSpindle && map.count < kMaxHliSpindles) {
         owner_nr[map.count] = nr;
+        map.first[map.count] = {static_cast<std::uint8_t>(c + 1), static_cast<std::int8_t>(i)};
         found = static_cast<std::int8_t>(map.count++);
       }
       map.index[c][i] = found;

@@ -133,9 +133,19 @@ constexpr bool is_gear_function(const TechOutput& o) noexcept {
 // Which HLI spindle object belongs to a channel's spindle. Built at setup:
 // spindles of all channels in channel order; a spindle that another channel
 // already listed (same logical axis number) reuses that object.
+// A channel's spindle: its channel (1-based) and its index in the channel's list.
+struct ChannelSpindleRef {
+  std::uint8_t channel = 0;
+  std::int8_t index = kNoSpindle;
+  bool operator==(const ChannelSpindleRef&) const = default;
+};
+
 struct SpindleMap {
   std::array<std::array<std::int8_t, config::kMaxSpindles>, kMaxHliChannels> index{};
   std::size_t count = 0;  // number of HLI spindle objects in use
+  // Each HLI spindle's first listing (the lowest channel, then index): its
+  // settings are the ones that count when several channels list it.
+  std::array<ChannelSpindleRef, kMaxHliSpindles> first{};
   // HLI index of spindle i of channel ch (1-based), kNoSpindle if none.
   std::int8_t at(std::size_t ch, std::int32_t i) const noexcept {
     if (ch < 1 || ch > kMaxHliChannels || i < 0 || i >= static_cast<std::int32_t>(config::kMaxSpindles))
