@@ -349,9 +349,7 @@ void Cycle::write_pins() noexcept {
   for (std::size_t i = 0; i < axes_.size(); ++i) {
     const AxisRef& a = axes_[i];
     const AxisPins& p = axis_pins[i];
-    // The drive's coordinates: the machine set point plus what homing set.
-    const kernel::ChannelOutput& o = out_->channels[a.channel];
-    const double cmd = o.axis_mcs[a.axis] + o.axis_drive_offset[a.axis];
+    const double cmd = out_->channels[a.channel].drive_pos(a.axis);  // what homing set included
     **p.pos_cmd = cmd;
     **p.following_error = cmd - **p.pos_fb;
     **p.enable = on;

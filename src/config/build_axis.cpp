@@ -165,8 +165,9 @@ void check_gear(const ParamList& l, const AxisConfig& a, std::size_t g, Diagnost
   cross_check(l, k("vb_reflow"), k("vb_refmax"), s.homing_slow_mm_s <= s.homing_fast_mm_s,
               fmt::format("{} must not exceed {}", show(k("vb_reflow"), s.homing_slow_mm_s),
                           show(k("vb_refmax"), s.homing_fast_mm_s)), d);
-  for (auto [key, v] : {std::pair{k("slope_profil.a_beschl"), s.accel_mm_s2}, {k("a_ref"), s.homing_accel_mm_s2}, {k("slope_profil.a_brems"), s.decel_mm_s2},
-                        {k("slope_profil.a_grenz"), s.rapid_accel_mm_s2}, {k("beschl_kennlinie.a_max"), s.curve.a_max_deg_s2}})
+  for (auto [key, v] : {std::pair{k("slope_profil.a_beschl"), s.accel_mm_s2}, {k("slope_profil.a_brems"), s.decel_mm_s2},
+                        {k("slope_profil.a_grenz"), s.rapid_accel_mm_s2}, {k("beschl_kennlinie.a_max"), s.curve.a_max_deg_s2},
+                        {k("a_ref"), s.homing_accel_mm_s2}})
     cross_check(l, key, amax, v <= s.a_max,
                 fmt::format("{} must not exceed {}", show(key, v), show(amax, s.a_max)), d);
   check_ramp_times(l, g, s, d);

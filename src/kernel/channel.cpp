@@ -571,10 +571,12 @@ bool Channel::fail(const Fault& f, Cycle& cy) noexcept {
   return true;
 }
 
-void Channel::raise(ErrorId id, std::optional<std::uint32_t> message, Cycle& cy) noexcept {
+void Channel::raise(ErrorId id, std::optional<std::uint32_t> message, Cycle& cy, std::optional<std::int8_t> axis) noexcept {
   // The state changes first, so that the error stays right before its end.
   set_state(ProgramState::error, StateReason::error, cy);
-  cy.emit(ev::Error{{id, message, {}}});
+  ev::Error e{{id, message, {}}};
+  e.axis = axis;
+  cy.emit(e);
   end_program(EndReason::error, cy);
 }
 

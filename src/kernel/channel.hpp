@@ -148,7 +148,8 @@ class Channel {
   // Raises what a unit reported (nothing once the channel is done); true
   // when it was a fault.
   bool fail(const Fault& f, Cycle& cy) noexcept;
-  void raise(ErrorId id, std::optional<std::uint32_t> message, Cycle& cy) noexcept;
+  // axis: the machine axis the error names (none: no axis).
+  void raise(ErrorId id, std::optional<std::uint32_t> message, Cycle& cy, std::optional<std::int8_t> axis = {}) noexcept;
   // Enters program state `to` (a `state` event when it changes).
   void set_state(ProgramState to, StateReason why, Cycle& cy) noexcept;
   // MDI: the operator's text wakes a channel that is done; its end or an

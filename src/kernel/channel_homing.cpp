@@ -33,11 +33,7 @@ void Channel::step_homing_search(Cycle& cy) noexcept {
   motion::AxisVector& pos = path_.position();
   for (std::size_t j = 0; j < n_axes_ && j < kMaxAxes; ++j) pos[j] += shift_mm[j];
   if (error != ErrorId{}) {
-    ev::Error e{{error, {}, {}}};
-    e.axis = machine_axis_[static_cast<std::size_t>(search_.failed_axis())];
-    set_state(ProgramState::error, StateReason::error, cy);
-    cy.emit(e);
-    end_program(EndReason::error, cy);
+    raise(error, std::nullopt, cy, machine_axis_[static_cast<std::size_t>(search_.failed_axis())]);
     return;
   }
   if (!was_active || search_.active() || !active_) return;

@@ -40,8 +40,8 @@ void Kernel::write_drive_set_points(const TickInput& in, TickOutput& out) noexce
       const int a = ch.axes[j].axis_index;
       if (a < 0 || static_cast<std::size_t>(a) >= drives::kMaxDrives) continue;
       const ChannelOutput& o = out.channels[c];
-      drive_units_->write_set_point(static_cast<std::size_t>(a), o.axis_mcs[j] + o.axis_drive_offset[j],
-                                    (o.drive_homing_axes >> j & 1u) != 0, in, out);
+      drive_units_->write_set_point(static_cast<std::size_t>(a), o.drive_pos(j), (o.drive_homing_axes >> j & 1u) != 0,
+                                    in, out);
     }
   }
   for (const SpindleUnit& u : spindles_) {

@@ -21,15 +21,6 @@ void limit_by_share(PathLimits& out, const AxisDynamics& ax, double share) noexc
   out.a_dec_mm_s2 = std::min(out.a_dec_mm_s2, ax.a_dec_mm_s2 / share);
 }
 
-// Segment of length 0: nothing moves; report the smallest axis limits so the
-// result is still finite and usable.
-PathLimits standstill_limits(const Segment& seg, std::span<const AxisDynamics> axes) noexcept {
-  PathLimits out{kInf, kInf, kInf};
-  const std::size_t n = std::min(seg.axis_count(), axes.size());
-  for (std::size_t i = 0; i < n; ++i) limit_by_share(out, axes[i], 1.0);
-  if (!std::isfinite(out.v_max_mm_s)) out = PathLimits{};
-  return out;
-}
 
 void add_arc_plane(PathLimits& out, const Segment& seg, std::span<const AxisDynamics> axes,
                    SlopeProfile slope) noexcept {
@@ -153,10 +144,18 @@ bool valid(const PathLimits& l) noexcept {
   return ok(l.v_max_mm_s) && ok(l.a_acc_mm_s2) && ok(l.a_dec_mm_s2);
 }
 
+PathLimits any_direction_limits(std::span<const AxisDynamics> axes) noexcept {
+  PathLimits out{kInf, kInf, kInf};
+  for (const AxisDynamics& a : axes) limit_by_share(out, a, 1.0);
+  if (!std::isfinite(out.v_max_mm_s)) out = PathLimits{};
+  return out;
+}
+
 PathLimits path_limits(const Segment& seg, std::span<const AxisDynamics> axes, SlopeProfile slope,
                        double v_cap_mm_s) noexcept {
   const double len = seg.length();
-  if (!(len > 0.0)) return standstill_limits(seg, axes);
+  // Length 0: nothing moves; the smallest axis limits keep the result usable.
+  if (!(len > 0.0)) return any_direction_limits(axes.first(std::min(seg.axis_count(), axes.size())));
   PathLimits out{kInf, kInf, kInf};
   out.slope = slope;
   const bool arc = seg.kind() == SegmentKind::arc;

@@ -20,9 +20,7 @@ HomeCams::HomeCams(const config::Machine& m) {
 void HomeCams::watch(const kernel::TickOutput& out,
                      std::array<kernel::AxisSwitches, drives::kMaxDrives>& axes) const noexcept {
   for (const Cam& c : cams_) {
-    const kernel::ChannelOutput& o = out.channels[c.channel];
-    const double drive_mm = o.axis_mcs[c.axis] + o.axis_drive_offset[c.axis];
-    axes[c.list].home_cam = c.towards * (drive_mm - c.edge_mm) >= 0;
+    axes[c.list].home_cam = c.towards * (out.channels[c.channel].drive_pos(c.axis) - c.edge_mm) >= 0;
   }
 }
 

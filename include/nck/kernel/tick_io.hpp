@@ -191,6 +191,8 @@ struct ChannelOutput {
   // the axes whose CiA 402 drive is asked to home itself (bit j).
   AxisArray axis_drive_offset{};
   std::uint32_t drive_homing_axes = 0;
+  // Path axis j's set point in its drive's coordinates. rt
+  double drive_pos(std::size_t j) const noexcept { return axis_mcs[j] + axis_drive_offset[j]; }
 };
 
 struct SpindleOutput {

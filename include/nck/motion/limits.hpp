@@ -70,4 +70,9 @@ PathLimits path_limits(const Segment& seg, std::span<const AxisDynamics> axes,
                        SlopeProfile slope = SlopeProfile::step,
                        double v_cap_mm_s = std::numeric_limits<double>::infinity()) noexcept;
 
+// Limits that hold for a line in any direction through `axes`: each the
+// smallest of the axes' (what path_limits gives a segment that does not
+// move). For a motion whose start is known only when it runs. setup or rt
+PathLimits any_direction_limits(std::span<const AxisDynamics> axes) noexcept;
+
 }  // namespace nck::motion

@@ -130,9 +130,6 @@ constexpr bool is_gear_function(const TechOutput& o) noexcept {
   return o.kind == TechKind::m && o.number >= 40 && o.number <= 45;
 }
 
-// Which HLI spindle object belongs to a channel's spindle. Built at setup:
-// spindles of all channels in channel order; a spindle that another channel
-// already listed (same logical axis number) reuses that object.
 // A channel's spindle: its channel (1-based) and its index in the channel's list.
 struct ChannelSpindleRef {
   std::uint8_t channel = 0;
@@ -140,6 +137,9 @@ struct ChannelSpindleRef {
   bool operator==(const ChannelSpindleRef&) const = default;
 };
 
+// Which HLI spindle object belongs to a channel's spindle. Built at setup:
+// spindles of all channels in channel order; a spindle that another channel
+// already listed (same logical axis number) reuses that object.
 struct SpindleMap {
   std::array<std::array<std::int8_t, config::kMaxSpindles>, kMaxHliChannels> index{};
   std::size_t count = 0;  // number of HLI spindle objects in use

@@ -169,8 +169,7 @@ std::expected<PlannedBlock, Diagnostic> plan_homing(const nc::Block& b, const Pl
       c.kind = CommandKind::motion;
       c.segment = *seg;
       c.detach<kernel::ProgramMap>();
-      c.limits = searches ? motion::path_limits(*motion::make_line(mcs, mcs, ctx.n_axes), dyn)
-                          : motion::path_limits(c.segment, dyn);
+      c.limits = searches ? motion::any_direction_limits(dyn) : motion::path_limits(c.segment, dyn);
       c.v_cmd_mm_s = c.limits.v_max_mm_s;
       c.exact_stop = true;  // each homing group ends at its home position
     }

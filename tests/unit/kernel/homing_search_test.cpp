@@ -49,8 +49,6 @@ nc::Block g74_x(std::uint32_t line) {
   return b;
 }
 
-// Where the drive of X stands after a cycle.
-double drive_x(const TickOutput& out) { return out.channels[0].axis_mcs[0] + out.channels[0].axis_drive_offset[0]; }
 
 struct Homing {
   test::EventLog log;
@@ -73,7 +71,7 @@ Homing run_g74(KernelRig& rig, double cam_edge, int cycles, int reset_after = -1
     in.channels[0].reset = i == reset_after;
     rig.k.tick(in, out);
     h.log.take(out);
-    h.drive.push_back(drive_x(out));
+    h.drive.push_back(out.channels[0].drive_pos(0));
     h.searching.push_back(out.channels[0].cause == CycleCause::wait &&
                           out.channels[0].wait_reason == WaitReason::homing);
   }
