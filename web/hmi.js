@@ -42,7 +42,7 @@
   // frame comes before a new run's first event: its waits start afresh, and
   // the timeline starts at the run's first state or wait (its clock may
   // start again at 0).
-  let runStart = null, timelineDrawn = 0;
+  let runStart = null, timelineDrawn = 0, timelineTimer = null;
   function onRun() {
     hmi.waits.length = 0;
     runStart = null;
@@ -58,9 +58,12 @@
   }
   function drawTimeline(s) {
     if (runStart == null) runStart = s.t_s;
-    const now = performance.now();
-    if (now - timelineDrawn < TIMELINE_MS) return;
-    timelineDrawn = now;
+    const early_ms = TIMELINE_MS - (performance.now() - timelineDrawn);
+    if (early_ms > 0) {  // drawn a moment ago: draw the latest snapshot later, so a run's last waits are never left out
+      timelineTimer ||= setTimeout(() => { timelineTimer = null; drawTimeline(hmi.state); }, early_ms);
+      return;
+    }
+    timelineDrawn = performance.now();
     $("timeline-section").hidden = !hmi.waits.length;
     if (!hmi.waits.length) return;
     const from = Math.min(runStart, ...hmi.waits.map((w) => w.t0));

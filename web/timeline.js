@@ -27,10 +27,11 @@
     if (w.reason === "drive_enable") return "drives";
     return "spindle";
   }
-  // "S1 speed reached (M3)", "the PLC's acknowledgement of M8", "dwell".
+  // "S1 speed reached (M3)", "the PLC's acknowledgement of M8", "the PLC's
+  // acknowledgement of M3 for S2" (a linked spindle's M3 waits once per spindle), "dwell".
   function whom(w) {
     const what = REASONS[w.reason] || w.reason;
-    if (w.reason === "plc_ack") return what + (w.fn ? " of " + w.fn : "");
+    if (w.reason === "plc_ack") return what + (w.fn ? " of " + w.fn : "") + (w.spindle ? " for " + w.spindle : "");
     return (w.spindle ? w.spindle + " " : "") + what + (w.fn ? " (" + w.fn + ")" : "");
   }
   const rowOf = (w) => (w.ch ? "channel " + w.ch : "spindle " + (w.spindle || "?"));

@@ -410,10 +410,12 @@ async function checkTwoChannels(browser) {
     expect(columns.length === 2 && columns.join() === machine.join(), `two channels side by side: axes ${columns.join(" | ")}`,
       `columns ${JSON.stringify(columns)} for the channels ${JSON.stringify(machine)}`);
     for (const ch of [1, 2]) await page.locator(`section.channel[data-channel="${ch}"]`).getByRole("button", { name: "Cycle start", exact: true }).click();
+    // the timeline is drawn at most twice a second: wait for the drawing that holds both spindle waits, ended
     const bars = await page.waitForFunction(() => {
       const s = window.nckHmi.state, t = window.nckHmi.timeline;
-      return s.channels.every((c) => c.state === "ended") && t.length >= 4 && t.every((b) => b.t1 <= s.t_s) && t;
-    }, null, { timeout: 15000 }).then((v) => v.jsonValue()).catch(() => []);
+      const spindleWaits = t.filter((b) => b.party === "spindle" && /S1 standstill \(M5\)|S2 speed reached \(M3\)/.test(b.text));
+      return s.channels.every((c) => c.state === "ended") && spindleWaits.length >= 2 && t.every((b) => b.t1 <= s.t_s) && t;
+    }, null, { timeout: 15000 }).then((v) => v.jsonValue()).catch(() => page.evaluate(() => window.nckHmi.timeline));  // the failure shows what was drawn
     const m5 = bars.find((b) => b.row === "channel 2" && b.party === "spindle" && /S1 standstill \(M5\)/.test(b.text));
     const m3 = bars.find((b) => b.row === "channel 1" && b.party === "spindle" && /S2 speed reached \(M3\)/.test(b.text));
     expect(m5 && m3 && Math.abs(m3.t1 - m3.t0 - 0.316) < 2e-3 && (await page.locator("#timeline rect.tl-bar").count()) === bars.length,
