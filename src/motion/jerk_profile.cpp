@@ -164,6 +164,12 @@ double JerkPlan::braking_from_s() const noexcept {
   return t_[i];
 }
 
+bool ramp_outruns(const Kinematics& k, const JerkLimits& l, double v_max_mm_s) noexcept {
+  const double a = k.a_mm_s2;
+  if (a < 0.0) return k.v_mm_s - a * a / (2.0 * down_side(l).j_out) < 0.0;
+  return a > 0.0 && k.v_mm_s + a * a / (2.0 * up_side(l).j_out) > v_max_mm_s;
+}
+
 double change_distance(double v0, double a0, double v1, const JerkLimits& l) noexcept {
   JerkPlan p;
   p.reset(Kinematics{0.0, v0, a0}, l.sin2);

@@ -49,6 +49,15 @@ void PathProfile::replan_jerk(double target_mm_s, bool may_keep) noexcept {
   const double length_mm = chain ? chain_.length_mm : length_mm_;
   const double v_end = chain ? std::min(chain_.v_end_mm_s, target_mm_s) : v_end_mm_s_;
   const Kinematics now{0.0, v_mm_s_, a_mm_s2_};
+  // A new target late in a ramp that the slope could not take back before
+  // the speed passes 0 or the limit (a feedhold released late in its
+  // braking, an override lowered late in a speed-up; SIN2 ramps so, since a
+  // ramp planned anew starts at jerk 0 where the one under way is at its
+  // peak): the plan in force goes on within the limits, and the new target
+  // is tried again from the next cycle's state (a plan from here would
+  // reverse, overshoot or step the acceleration).
+  const double v_max = (chain ? chain_.limits : limits_).v_max_mm_s;
+  if (may_keep && ramp_outruns(now, l, v_max)) return;
   // Past the end only with a successor to go on braking in.
   JerkPlan next;
   const BlockPlanKind kind = plan_block(next, now, length_mm - s_mm_, target_mm_s, v_end, l, v_end > 0.0);

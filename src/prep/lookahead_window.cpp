@@ -76,13 +76,22 @@ std::optional<motion::CornerBlend> sized_for_feed(Make make, LimitsOf limits_of,
 }
 
 // Under a jerk-limited slope the acceleration across the path steps by
-// v^2/r within a cycle where a fillet meets its blocks (it is tangent to
-// them, not curvature-continuous). Like a kink's velocity step (the kink
-// rule, CornerUnit), that step stays within what the slope's jerk allows
-// in a cycle, a / tr * dt, on each plane axis (TF5200 P-AXIS-00154
-// r_trans_weight at its 100 %): v <= sqrt(a / tr * dt * r).
-double curvature_step_speed(const motion::Segment& fillet, const BlendDynamics& d, double cycle_s) {
-  const double r = std::min(fillet.radius_start(), fillet.radius_end());
+// v^2 |dk| within a cycle where a fillet meets a block (it is tangent to
+// them, not curvature-continuous): dk the change of the curvature vector
+// there, 1/r beside a line, more or less beside an arc that turns the
+// other or the same way. Like a kink's velocity step (the kink rule,
+// CornerUnit), that step stays within what the slope's jerk allows in a
+// cycle, a / tr * dt, on each plane axis (TF5200 P-AXIS-00154
+// r_trans_weight at its 100 %): v <= sqrt(a / tr * dt / |dk|).
+double curvature_step_speed(const motion::Segment& fillet, const motion::AxisVector& k_before,
+                            const motion::AxisVector& k_after, const BlendDynamics& d, double cycle_s) {
+  const motion::AxisVector k_start = motion::end_curvature(fillet, false), k_end = motion::end_curvature(fillet, true);
+  double start_sq = 0, end_sq = 0;
+  for (std::size_t j = 0; j < fillet.axis_count(); ++j) {
+    start_sq += (k_start[j] - k_before[j]) * (k_start[j] - k_before[j]);
+    end_sq += (k_end[j] - k_after[j]) * (k_end[j] - k_after[j]);
+  }
+  const double bend_sq = std::max(start_sq, end_sq);
   double step_mm_s2 = std::numeric_limits<double>::infinity();
   for (const std::size_t j : {fillet.plane_a(), fillet.plane_b()}) {
     if (j >= d.feed.size()) continue;
@@ -90,7 +99,8 @@ double curvature_step_speed(const motion::Segment& fillet, const BlendDynamics& 
     const double tr_s = std::max({ax.tr.acc_up_s, ax.tr.acc_down_s, ax.tr.dec_up_s, ax.tr.dec_down_s});
     if (tr_s > 0) step_mm_s2 = std::min(step_mm_s2, std::min(ax.a_acc_mm_s2, ax.a_dec_mm_s2) / tr_s * cycle_s);
   }
-  return std::isfinite(step_mm_s2) ? std::sqrt(step_mm_s2 * r) : step_mm_s2;
+  if (!std::isfinite(step_mm_s2) || !(bend_sq > 0)) return std::numeric_limits<double>::infinity();
+  return std::sqrt(step_mm_s2 / std::sqrt(bend_sq));
 }
 
 }  // namespace
@@ -311,9 +321,11 @@ std::optional<motion::CornerBlend> LookAheadWindow::corner_blend(const Entry& p,
   const auto bounds = [&](double share) { return motion::BlendBounds{p.command.blend_dev_mm, trim_a, trim_b, share}; };
   // Sized with the fillet's least share for speeding up and braking, run
   // with what its turn at the feed leaves (fillet_limits).
+  const motion::AxisVector k_before = motion::end_curvature(p.command.segment, true);
+  const motion::AxisVector k_after = motion::end_curvature(next.segment, false);
   const auto fillet_limits_of = [&](const motion::Segment& f, double feed_mm_s) {
     motion::PathLimits l = jerk_fillet_limits(f, dyn, p.command.limits, feed_mm_s);
-    if (jerk_limited(l.slope)) l.v_max_mm_s = std::min(l.v_max_mm_s, curvature_step_speed(f, dyn, cycle_s_));
+    if (jerk_limited(l.slope)) l.v_max_mm_s = std::min(l.v_max_mm_s, curvature_step_speed(f, k_before, k_after, dyn, cycle_s_));
     return l;
   };
   auto cb = sized_for_feed([&](double share) { return motion::blend_corner(p.command.segment, next.segment, bounds(share)); },

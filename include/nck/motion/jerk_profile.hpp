@@ -90,6 +90,12 @@ BlockPlanKind plan_block(JerkPlan& plan, const Kinematics& start, double length_
 // Distance of the fastest change from (v0, a0) to v1 with acceleration 0. rt
 double change_distance(double v0_mm_s, double a0_mm_s2, double v1_mm_s, const JerkLimits& l) noexcept;
 
+// An acceleration under way that the slope's ramp could not take back to 0
+// before the speed passes 0 (braking) or v_max (speeding up): every plan
+// from this state reverses, runs too fast, or takes the acceleration back
+// faster than the slope allows. rt
+bool ramp_outruns(const Kinematics& k, const JerkLimits& l, double v_max_mm_s) noexcept;
+
 // The highest speed (acceleration 0) at the start of a block of length_mm
 // from which it can still slow down to v_exit at its end. rt
 double jerk_entry_velocity(double length_mm, double v_exit_mm_s, const JerkLimits& l) noexcept;

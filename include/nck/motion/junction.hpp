@@ -25,6 +25,19 @@ double corner_velocity(const AxisVector& t_in, const AxisVector& t_out, std::spa
 double transition_velocity(const AxisVector& t_in, const AxisVector& t_out, std::span<const double> dv_mm_s,
                            double braking_step_mm_s, double cruise_in_mm_s, double cruise_out_mm_s) noexcept;
 
+// The curvature vector (1/mm, towards the centre; 0 on a line) of seg at
+// its start or end: how its tangent turns over a thousandth of its length.
+AxisVector end_curvature(const Segment& seg, bool at_end) noexcept;
+
+// Under a jerk-limited slope: the largest path velocity at which passing
+// from (t_in, k_in) into (t_out, k_out) (unit tangents and curvature
+// vectors, 1/mm, per axis) steps no axis's acceleration by more than
+// dv_mm_s[j] / dt_s within a cycle: a kink steps it by v |t_out - t_in| /
+// dt, a change of curvature (a tangent arc into a line) by v^2 |k_out -
+// k_in|. +infinity where neither changes.
+double curvature_step_velocity(const AxisVector& t_in, const AxisVector& k_in, const AxisVector& t_out,
+                               const AxisVector& k_out, std::span<const double> dv_mm_s, double dt_s) noexcept;
+
 // The highest velocity at the start of a path of length_mm from which
 // PathProfile, braking with a_dec_mm_s2 in cycles of dt_s, still reaches
 // v_exit_mm_s at its end (the same discrete braking law, so the profile

@@ -33,8 +33,10 @@ void HomingSearch::abort() noexcept {
   drive_homing_ = timed_out_ = 0;
 }
 
+// Only an axis whose search is not over moves (the common case, no search,
+// costs one test per cycle).
 bool HomingSearch::moving() const noexcept {
-  return std::any_of(axes_.begin(), axes_.end(), [](const AxisSearch& a) { return a.v_mm_s != 0; });
+  return active_ != 0 && std::any_of(axes_.begin(), axes_.end(), [](const AxisSearch& a) { return a.v_mm_s != 0; });
 }
 
 ErrorId HomingSearch::step(const std::array<HomingAxisInput, kMaxAxes>& in, bool hold, double dt_s,

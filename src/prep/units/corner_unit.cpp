@@ -86,10 +86,9 @@ BlendAxes CornerUnit::blend_axes(const AxisTable& axes) const {
   return a;
 }
 
-// The unit direction of c's path at its start or end, in machine axes.
-motion::AxisVector CornerUnit::machine_tangent(const PlannedCommand& c, bool at_end, std::size_t n_axes) const {
-  motion::AxisVector t{};
-  c.segment.tangent_at(at_end ? c.segment.length() : 0.0, t);
+namespace {
+// A program map (rotation, mirroring, scaling) applied to a direction.
+motion::AxisVector mapped_direction(const PlannedCommand& c, const motion::AxisVector& t, std::size_t n_axes) {
   const auto* map = c.find<kernel::ProgramMap>();
   if (!map) return t;
   motion::AxisVector mapped{}, origin{}, zero{};
@@ -97,6 +96,19 @@ motion::AxisVector CornerUnit::machine_tangent(const PlannedCommand& c, bool at_
   map->map.apply(zero, origin, n_axes);
   for (std::size_t j = 0; j < n_axes; ++j) mapped[j] -= origin[j];
   return mapped;
+}
+}  // namespace
+
+// The unit direction of c's path at its start or end, in machine axes.
+motion::AxisVector CornerUnit::machine_tangent(const PlannedCommand& c, bool at_end, std::size_t n_axes) const {
+  motion::AxisVector t{};
+  c.segment.tangent_at(at_end ? c.segment.length() : 0.0, t);
+  return mapped_direction(c, t, n_axes);
+}
+
+// The curvature vector of c's path at its start or end, in machine axes.
+motion::AxisVector CornerUnit::machine_curvature(const PlannedCommand& c, bool at_end, std::size_t n_axes) const {
+  return mapped_direction(c, motion::end_curvature(c.segment, at_end), n_axes);
 }
 
 // Coming from an exact stop, the last step into it (at most a_dec * dt
@@ -159,8 +171,15 @@ void CornerUnit::note_transition(const nc::Block& b, PlannedCommand& c, bool rap
   // one step faster than planned; a jerk-limited slope ends its braking with
   // the deceleration ramped down to 0, at the planned speed.
   const double braking_step_mm_s = jerk ? 0.0 : c.limits.a_dec_mm_s2 * cycle_s_;
-  last_ = {true,        machine_tangent(c, true, ctx.n_axes), dv, through_dv, cruise_mm_s, c.limits.a_dec_mm_s2,
-           braking_step_mm_s, thread_chain};
+  last_ = {true,
+           machine_tangent(c, true, ctx.n_axes),
+           jerk ? machine_curvature(c, true, ctx.n_axes) : motion::AxisVector{},
+           dv,
+           through_dv,
+           cruise_mm_s,
+           c.limits.a_dec_mm_s2,
+           braking_step_mm_s,
+           thread_chain};
 }
 
 // The entry limits of c from the last motion: passing at speed and braking
@@ -169,11 +188,19 @@ void CornerUnit::note_transition(const nc::Block& b, PlannedCommand& c, bool rap
 void CornerUnit::pass_kink(PlannedCommand& c, const Budget& dv, const Budget& through_dv, double cruise_mm_s,
                            bool jerk, const PlanContext& ctx) {
   const motion::AxisVector t_out = machine_tangent(c, false, ctx.n_axes);
+  // Under a jerk-limited slope a change of curvature steps the axes'
+  // acceleration as a kink does (TF5200 P-AXIS-00154 at its 100 %): a
+  // tangent arc into a line at speed stepped an axis's acceleration by
+  // v^2/r in a cycle.
+  const motion::AxisVector k_out = jerk ? machine_curvature(c, false, ctx.n_axes) : motion::AxisVector{};
   const auto entry = [&](const Budget& mine, const Budget& last) {
     Budget budget{};
     for (std::size_t j = 0; j < ctx.n_axes; ++j) budget[j] = std::min(mine[j], last[j]);
-    return motion::transition_velocity(last_.tangent, t_out, std::span<const double>(budget.data(), ctx.n_axes),
-                                       last_.braking_step_mm_s, last_.cruise_mm_s, cruise_mm_s);
+    const std::span<const double> dv(budget.data(), ctx.n_axes);
+    const double v = motion::transition_velocity(last_.tangent, t_out, dv, last_.braking_step_mm_s, last_.cruise_mm_s,
+                                                 cruise_mm_s);
+    if (!jerk) return v;
+    return std::min(v, motion::curvature_step_velocity(last_.tangent, last_.curvature, t_out, k_out, dv, cycle_s_));
   };
   c.v_entry_max_mm_s = entry(dv, last_.corner_dv);
   c.v_entry_through_max_mm_s = entry(through_dv, last_.through_dv);

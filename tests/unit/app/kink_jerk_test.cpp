@@ -113,6 +113,39 @@ TEST(KinkJerk, FilletsStepTheAccelerationAcrossThePathWithinTheJerk) {
   EXPECT_LE(largest(r, 2), 2500 + kAccelRoundingMmS2);
 }
 
+// Where a tangent arc meets a line the curvature steps: at speed v the
+// acceleration across the path steps by v^2/r within a cycle. Like a kink's,
+// that step stays within a / tr * dt (CornerUnit: 5 mm/s^2 here, so the
+// transitions into and out of r = 10 pass at about 7 mm/s); before, the path
+// passed them at the arc's speed and stepped X's and Y's acceleration by
+// up to 1,000 mm/s^2 in a cycle.
+TEST(KinkJerk, ATangentArcMeetsItsLinesWithinTheJerk) {
+  const PathRun r = run_text(kink_machine("tangent_arc", "").string(),
+                             "%tangent\nN10 #SLOPE [TYPE=TRAPEZ]\nN20 G90 G17 G1 X10 F6000\nN30 G3 X20 Y10 I0 J10\n"
+                             "N40 G1 Y40\nN50 M30\n",
+                             "tangent_arc_run");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  EXPECT_LE(largest(r, 3), 1000 / 0.2 + kJerkRoundingMmS3);
+}
+
+// A fillet between two arcs meets each with the difference of their
+// curvatures, not its own: a fillet of nearly no curvature between arcs of
+// r = 10.3 and 19.6 mm (a 7 degree kink under HSC, PATH_DEV 0.05, F6000) left
+// the first arc at 100 mm/s and stepped X's acceleration by 719 mm/s^2 in a
+// cycle (found by the property test, seed 78). Every cycle now keeps a / tr
+// (2,500 / 0.05 on the mill) from the first arc on.
+TEST(KinkJerk, AFilletBetweenTwoArcsStepsTheAccelerationWithinTheJerk) {
+  const PathRun r = run_text("mill",
+                             "N1 G90 G17 F6000\n#SLOPE [TYPE=HSC]\n#CONTOUR MODE [DEV PATH_DEV=0.05]\nG261\n"
+                             "G0 X28.217 Y-17.305 Z0\nG1 Z-1\nG3 X16.6018 Y-26.6304 I-1.3247 J-10.2463\n"
+                             "G3 X22.524 Y-45.2231 I19.1548 J-4.1384\nM30\n",
+                             "arc_fillet_arc");
+  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+  const std::size_t first_arc = r.index(r.line_t(7));
+  ASSERT_GT(first_arc, 100u);
+  EXPECT_LE(largest(r, 3, first_arc + 3), 2500 / 0.05 + kJerkRoundingMmS3);
+}
+
 // A blend is made only where it saves time (issue 43, D3): at a right angle
 // under TRAPEZ a fillet within PATH_DEV 0.01 admits about 1 mm/s (its
 // curvature step within a / tr * dt), slower to crawl through than stopping

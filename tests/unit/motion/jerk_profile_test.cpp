@@ -161,5 +161,31 @@ TEST(JerkProfile, OverrideChangeMidRampKeepsTheAccelerationContinuous) {
   EXPECT_NEAR(p.s(), 500.0, 1e-9);
 }
 
+// A feedhold (override 0) released at any cycle of its braking under SIN2:
+// late in the braking a ramp planned anew (starting at jerk 0) cannot take
+// the deceleration back before the path stands; the braking in force goes
+// on and the path rises again from a later state. Before, the plan from
+// there kept the speed and dropped the deceleration (1,793 mm/s^2) within
+// one cycle (found by the property test, seed 78).
+TEST(JerkProfile, AFeedholdReleasedLateInItsBrakingKeepsTheJerk) {
+  const PathLimits l = test_limits(SlopeProfile::sin2);
+  const double j_limit = kPi / 2.0 * std::max({l.a_acc_mm_s2 / l.tr.acc_up_s, l.a_acc_mm_s2 / l.tr.acc_down_s,
+                                                l.a_dec_mm_s2 / l.tr.dec_up_s, l.a_dec_mm_s2 / l.tr.dec_down_s});
+  for (int release = 101; release < 260; ++release) {
+    PathProfile p;
+    ASSERT_TRUE(p.start(500.0, 300.0, l));
+    double a_prev = 0, v_prev = 0;
+    for (int k = 0; k < 100000; ++k) {
+      const ProfileSample st = p.step(kDt, k >= 100 && k < release ? 0.0 : 1.0);
+      ASSERT_LE(std::abs(st.a_mm_s2 - a_prev) / kDt, j_limit * 1.000001 + 1e-6) << release << " " << k;
+      ASSERT_GE(st.v_mm_s, 0.0) << release << " " << k;
+      ASSERT_LE(std::abs(st.v_mm_s - v_prev) / kDt, l.a_acc_mm_s2 * 1.000001 + 1e-6) << release << " " << k;
+      a_prev = st.a_mm_s2, v_prev = st.v_mm_s;
+      if (st.finished) break;
+    }
+    EXPECT_NEAR(p.s(), 500.0, 1e-9) << release;
+  }
+}
+
 }  // namespace
 }  // namespace nck::motion

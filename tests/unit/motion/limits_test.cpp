@@ -8,6 +8,8 @@
 #include <limits>
 #include <numbers>
 
+#include "nck/motion/jerk_profile.hpp"
+
 namespace nck::motion {
 namespace {
 
@@ -67,6 +69,36 @@ TEST(PathLimits, ArcCentripetal) {
   EXPECT_NEAR(l.v_max_mm_s, std::sqrt(10000.0 / kSqrt2), 1e-9);
   EXPECT_NEAR(l.v_max_mm_s, 84.0896, 1e-4);
   EXPECT_NEAR(l.a_acc_mm_s2, 1000.0 / kSqrt2, 1e-9);
+}
+
+// A small arc under TRAPEZ (common program's semicircles: r = 0.25 mm, a
+// 2,500 mm/s^2, 50 ms ramps): its turn holds speed and tangential
+// acceleration down (v^3/r^2 and 3 v a_t / r each within j_geom, 0.259 of
+// a/tr, so that the jerk's length (j_t - v^3/r^2, 3 v a_t / r) stays
+// within a/tr), but the path's own jerk keeps a / sqrt2 / tr: the ramps of
+// the smaller acceleration are shorter. With the full ramp time and the
+// three terms summed, the arc ramped at 1,584 mm/s^3 and took 0.254 s.
+TEST(PathLimits, SmallArcUnderTrapezKeepsThePathsJerk) {
+  const RampTimes tr{0.05, 0.05, 0.05, 0.05};
+  const std::array<AxisDynamics, 2> ax{{{500, 2500, 2500, tr}, {500, 2500, 2500, tr}}};
+  auto seg = make_arc_center(pt(0, 0), pt(0, 0.5), 2, 0, 1, 0, 0.25, false);
+  ASSERT_TRUE(seg);
+  const PathLimits l = path_limits(*seg, ax, SlopeProfile::trapez);
+  const double j_axis = 2500 / 0.05, j_geom = (std::sqrt(6.0) - kSqrt2) / 4 * j_axis;  // 12,941 mm/s^3
+  EXPECT_NEAR(std::hypot(j_axis / kSqrt2 + j_geom, j_geom), j_axis, 1e-6);
+  const double v_arc = std::cbrt(j_geom * 0.25 * 0.25);
+  EXPECT_NEAR(l.v_max_mm_s, v_arc, 1e-9);
+  EXPECT_NEAR(l.v_max_mm_s, 9.3171, 1e-4);
+  EXPECT_NEAR(l.a_acc_mm_s2, j_geom * 0.25 / (3 * v_arc), 1e-9);
+  EXPECT_NEAR(l.a_acc_mm_s2, 115.745, 1e-3);
+  const JerkLimits j = jerk_limits(l);
+  for (const double t : {j.tr_acc_up_s, j.tr_acc_down_s})
+    EXPECT_NEAR(l.a_acc_mm_s2 / t, 2500 / kSqrt2 / 0.05, 1e-6);  // 35,355 mm/s^3, as on a line
+  for (const double t : {j.tr_dec_up_s, j.tr_dec_down_s}) EXPECT_NEAR(l.a_dec_mm_s2 / t, 2500 / kSqrt2 / 0.05, 1e-6);
+  // A large arc keeps its ramp times (nothing holds its acceleration down).
+  auto big = make_arc_center(pt(0, 0), pt(0, 2000), 2, 0, 1, 0, 1000, false);
+  ASSERT_TRUE(big);
+  EXPECT_EQ(path_limits(*big, ax, SlopeProfile::trapez).tr, tr);
 }
 
 TEST(PathLimits, ArcBigRadiusTakesSlowerPlaneAxis) {

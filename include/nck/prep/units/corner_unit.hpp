@@ -27,6 +27,7 @@ class CornerUnit {
 
  private:
   motion::AxisVector machine_tangent(const PlannedCommand& c, bool at_end, std::size_t n_axes) const;
+  motion::AxisVector machine_curvature(const PlannedCommand& c, bool at_end, std::size_t n_axes) const;
   double start_acceleration(const PlannedCommand& c, const PlanContext& ctx) const;
   using Budget = std::array<double, kMaxAxes>;
   void pass_kink(PlannedCommand& c, const Budget& dv, const Budget& through_dv, double cruise_mm_s, bool jerk,
@@ -38,6 +39,7 @@ class CornerUnit {
   struct LastMotion {
     bool valid = false;
     motion::AxisVector tangent{};  // at its end, machine axes
+    motion::AxisVector curvature{};  // there too (1/mm, towards the centre)
     std::array<double, kMaxAxes> corner_dv{}, through_dv{};
     double cruise_mm_s = 0;
     double a_dec_mm_s2 = 0;  // along its path
