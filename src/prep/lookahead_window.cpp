@@ -251,12 +251,19 @@ double LookAheadWindow::cruise(const PlannedCommand& c) const { return std::min(
 // The velocity limit at a transition the blend made tangent: what is left
 // of a kink (an arc's end radius rounding) by the planner's corner rule,
 // and neither side's cruise velocity exceeded.
+// Under a jerk-limited slope with the kink rule's budget (CornerUnit), as
+// the transition was planned before its blocks were reshaped (a chord
+// smoothed into a span turns its start too: with STEP's budget the kink
+// at a sharp vertex after a span was passed at 2.5 mm/s, stepping Z's
+// acceleration by 440 mm/s^2 in a cycle: property test, seed 80).
 double LookAheadWindow::tangent_cap(const PlannedCommand& from, const PlannedCommand& to, const BlendAxes& ax) const {
   motion::AxisVector t_in{}, t_out{};
   from.segment.tangent_at(from.segment.length(), t_in);
   to.segment.tangent_at(0.0, t_out);
-  return motion::transition_velocity(t_in, t_out, std::span<const double>(ax.corner_dv_mm_s.data(), ax.n_axes),
-                                     from.limits.a_dec_mm_s2 * cycle_s_, cruise(from), cruise(to));
+  const bool jerk = jerk_limited(from.limits.slope) || jerk_limited(to.limits.slope);
+  const auto& dv = jerk ? ax.jerk_corner_dv_mm_s : ax.corner_dv_mm_s;
+  return motion::transition_velocity(t_in, t_out, std::span<const double>(dv.data(), ax.n_axes),
+                                     jerk ? 0.0 : from.limits.a_dec_mm_s2 * cycle_s_, cruise(from), cruise(to));
 }
 
 // The weightings a fillet between two blocks must hold: the lower
@@ -280,6 +287,8 @@ const BlendAxes& LookAheadWindow::weighted_axes(const WeightScale& w) {
     weighted_.a_max_mm_s2[j] *= less;
     if (w.acc_max > 1.0)
       weighted_.corner_dv_mm_s[j] = std::max(weighted_.corner_dv_mm_s[j] - (w.acc_max - 1.0) * a_along * cycle_s_, 0.0);
+    // a / tr: the lower acceleration over the longer ramp
+    weighted_.jerk_corner_dv_mm_s[j] = std::min(weighted_.corner_dv_mm_s[j], axes_.jerk_corner_dv_mm_s[j] * less / ramp);
   }
   return weighted_;
 }

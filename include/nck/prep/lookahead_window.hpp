@@ -54,7 +54,8 @@ using PlannedBlock = FixedVector<PlannedCommand, kernel::kMaxCommandsPerBlock>;
 struct BlendAxes {
   std::size_t n_axes = 0;
   std::array<motion::AxisDynamics, kMaxAxes> feed_dyn{};  // G1/G2/G3 dynamics per axis
-  std::array<double, kMaxAxes> corner_dv_mm_s{};           // kink budget per axis and cycle
+  std::array<double, kMaxAxes> corner_dv_mm_s{};           // kink budget per axis and cycle (STEP)
+  std::array<double, kMaxAxes> jerk_corner_dv_mm_s{};      // the same under a jerk-limited slope
   std::array<double, kMaxAxes> a_max_mm_s2{};              // hard cap of every acceleration per axis
 };
 

@@ -82,6 +82,7 @@ BlendAxes CornerUnit::blend_axes(const AxisTable& axes) const {
   a.n_axes = axes.count();
   a.feed_dyn = axes.feed();
   a.corner_dv_mm_s = feed_.step_mm_s;
+  a.jerk_corner_dv_mm_s = feed_.jerk_limited_mm_s;
   for (std::size_t j = 0; j < a.n_axes; ++j) a.a_max_mm_s2[j] = axes.accel_cap_mm_s2(j);
   return a;
 }
