@@ -44,12 +44,20 @@ double difference(const PathRun& r, const std::string& col, std::size_t i, int o
   return (p(i) - 3 * p(i - 1) + 3 * p(i - 2) - p(i - 3)) / (kDt * kDt * kDt);
 }
 
-// The largest |difference| of the given order of X and Y over rows [from, to).
+// The largest |difference| of the given order of X, Y and Z over rows [from, to).
 double largest(const PathRun& r, int order, std::size_t from = 3, std::size_t to = SIZE_MAX) {
   double worst = 0;
   for (std::size_t i = std::max<std::size_t>(from, 3); i < std::min(to, r.rows.size()); ++i)
-    for (const char* axis : {"X", "Y"}) worst = std::max(worst, std::abs(difference(r, axis, i, order)));
+    for (const char* axis : {"X", "Y", "Z"}) worst = std::max(worst, std::abs(difference(r, axis, i, order)));
   return worst;
+}
+
+// The largest jerk from the start of the block on `line` on (after a rapid
+// under its own dynamics).
+double largest_jerk_from(const PathRun& r, long line) {
+  const std::size_t from = r.index(r.line_t(line));
+  EXPECT_GT(from, 100u) << "the block on line " << line << " starts after the rapid";
+  return largest(r, 3, from + 3);
 }
 
 // The row nearest to (x, y), and its distance (mm). An unblended corner
@@ -128,44 +136,33 @@ TEST(KinkJerk, ATangentArcMeetsItsLinesWithinTheJerk) {
   EXPECT_LE(largest(r, 3), 1000 / 0.2 + kJerkRoundingMmS3);
 }
 
-// A fillet between two arcs meets each with the difference of their
-// curvatures, not its own: a fillet of nearly no curvature between arcs of
-// r = 10.3 and 19.6 mm (a 7 degree kink under HSC, PATH_DEV 0.05, F6000) left
-// the first arc at 100 mm/s and stepped X's acceleration by 719 mm/s^2 in a
-// cycle (found by the property test, seed 78). Every cycle now keeps a / tr
-// (2,500 / 0.05 on the mill) from the first arc on.
-TEST(KinkJerk, AFilletBetweenTwoArcsStepsTheAccelerationWithinTheJerk) {
-  const PathRun r = run_text("mill",
-                             "N1 G90 G17 F6000\n#SLOPE [TYPE=HSC]\n#CONTOUR MODE [DEV PATH_DEV=0.05]\nG261\n"
-                             "G0 X28.217 Y-17.305 Z0\nG1 Z-1\nG3 X16.6018 Y-26.6304 I-1.3247 J-10.2463\n"
-                             "G3 X22.524 Y-45.2231 I19.1548 J-4.1384\nM30\n",
-                             "arc_fillet_arc");
-  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
-  const std::size_t first_arc = r.index(r.line_t(7));
-  ASSERT_GT(first_arc, 100u);
-  EXPECT_LE(largest(r, 3, first_arc + 3), 2500 / 0.05 + kJerkRoundingMmS3);
-}
-
-// A sharp vertex after smoothed chords: smoothing the vertex after a chord
-// reshapes its span, the kink at its start is planned again, and under a
-// jerk-limited slope with the kink rule's budget, not STEP's (which let
-// HSC pass this 12 degree kink at 2.5 mm/s and step Z's acceleration by
-// 440 mm/s^2 in a cycle: property test, seed 80). Every cycle after the
-// rapid keeps a / tr (2,500 / 0.05 on the mill).
-TEST(KinkJerk, AKinkAfterSmoothedChordsKeepsTheJerk) {
-  const PathRun r = run_text("mill",
-                             "N1 G90 G17 F600\n#SLOPE [TYPE=HSC]\n#CONTOUR MODE [DEV PATH_DEV=0.05]\nG261\n"
-                             "G0 X-55.5508 Y47.9207 Z3.6065\nF15000\nG1 X-55.6095 Y47.8397 Z3.5899\n"
-                             "G1 X-55.6603 Y47.7535 Z3.6005\nG1 X-55.7035 Y47.6633 Z3.6195\n"
-                             "G1 X-55.7381 Y47.5695 Z3.6204\nG1 X-56.7874 Y45.8669 Z3.2486\n"
-                             "G1 X-57.96 Y44.2467 Z2.9399\nG1 X-58.9838 Y42.5286 Z3.1409\nM30\n",
-                             "smoothed_kink");
-  ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
-  const std::size_t feed = r.index(r.line_t(7));
-  ASSERT_GT(feed, 100u);
-  double worst = 0;
-  for (std::size_t i = feed + 3; i < r.rows.size(); ++i) worst = std::max(worst, std::abs(difference(r, "Z", i, 3)));
-  EXPECT_LE(std::max(worst, largest(r, 3, feed + 3)), 2500 / 0.05 + kJerkRoundingMmS3);
+// Two programs from the jerk property test (issue 43) on the mill under
+// HSC with PATH_DEV 0.05: every cycle from the feed block on keeps a / tr
+// (2,500 / 0.05).
+// - A fillet between two arcs meets each with the difference of their
+//   curvatures, not its own: a fillet of nearly no curvature between arcs of
+//   r = 10.3 and 19.6 mm (a 7 degree kink at F6000) left the first arc at
+//   100 mm/s and stepped X's acceleration by 719 mm/s^2 in a cycle (seed 78).
+// - A sharp vertex after smoothed chords: smoothing the vertex after a chord
+//   reshapes its span and the kink at its start is planned again, with the
+//   kink rule's budget, not STEP's (which passed this 12 degree kink at
+//   2.5 mm/s and stepped Z's acceleration by 440 mm/s^2 in a cycle, seed 80).
+TEST(KinkJerk, FilletsBetweenArcsAndKinksAfterSmoothedChordsKeepTheJerk) {
+  const std::string head = "N1 G90 G17 F6000\n#SLOPE [TYPE=HSC]\n#CONTOUR MODE [DEV PATH_DEV=0.05]\nG261\n";
+  const std::pair<const char*, std::string> cases[] = {
+      {"arc_fillet_arc",
+       "G0 X28.217 Y-17.305 Z0\nG1 Z-1\nG3 X16.6018 Y-26.6304 I-1.3247 J-10.2463\n"
+       "G3 X22.524 Y-45.2231 I19.1548 J-4.1384\nM30\n"},
+      {"smoothed_kink",
+       "G0 X-55.5508 Y47.9207 Z3.6065\nF15000\nG1 X-55.6095 Y47.8397 Z3.5899\nG1 X-55.6603 Y47.7535 Z3.6005\n"
+       "G1 X-55.7035 Y47.6633 Z3.6195\nG1 X-55.7381 Y47.5695 Z3.6204\nG1 X-56.7874 Y45.8669 Z3.2486\n"
+       "G1 X-57.96 Y44.2467 Z2.9399\nG1 X-58.9838 Y42.5286 Z3.1409\nM30\n"},
+  };
+  for (const auto& [name, program] : cases) {
+    const PathRun r = run_text("mill", head + program, name);
+    ASSERT_EQ(r.cli.exit_code, 0) << r.cli.output;
+    EXPECT_LE(largest_jerk_from(r, 7), 2500 / 0.05 + kJerkRoundingMmS3) << name;
+  }
 }
 
 // A blend is made only where it saves time (issue 43, D3): at a right angle
