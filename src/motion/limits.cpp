@@ -64,14 +64,18 @@ void add_arc_plane(PathLimits& out, const Segment& seg, std::span<const AxisDyna
     const double a_t = v_arc > 0 ? j_geom * r / (3.0 * v_arc) : kInf;
     acc_t = std::min(acc_t, a_t);
     dec_t = std::min(dec_t, a_t);
-    // The path's own jerk keeps its share (a / split / tr): a tangential
-    // acceleration the turn holds down ramps in a shorter time, not over
-    // the whole ramp time (a small arc would take ten times as long).
-    out.tr = scaled(out.tr, acc_t / (acc_plane / split), dec_t / (dec_plane / split));
   }
+  // The path's accelerations without the turn's hold on them (the axes' own).
+  const double acc_free = std::min(out.a_acc_mm_s2, acc_plane / split / plane_share);
+  const double dec_free = std::min(out.a_dec_mm_s2, dec_plane / split / plane_share);
   out.v_max_mm_s = std::min(out.v_max_mm_s, v_arc / plane_share);
   out.a_acc_mm_s2 = std::min(out.a_acc_mm_s2, acc_t / plane_share);
   out.a_dec_mm_s2 = std::min(out.a_dec_mm_s2, dec_t / plane_share);
+  // The path's own jerk keeps what the axes allow (a / tr): an acceleration
+  // the turn holds down ramps in a shorter time, not over the whole ramp
+  // time (a small arc took ten times as long). Where an axis's own limit
+  // binds (a helix's slow axis), nothing changes.
+  if (jerk_limited(slope)) out.tr = scaled(out.tr, out.a_acc_mm_s2 / acc_free, out.a_dec_mm_s2 / dec_free);
 }
 
 // A cubic span (a smoothed chord): its tangent turns within the span and

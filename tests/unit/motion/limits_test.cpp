@@ -99,6 +99,14 @@ TEST(PathLimits, SmallArcUnderTrapezKeepsThePathsJerk) {
   auto big = make_arc_center(pt(0, 0), pt(0, 2000), 2, 0, 1, 0, 1000, false);
   ASSERT_TRUE(big);
   EXPECT_EQ(path_limits(*big, ax, SlopeProfile::trapez).tr, tr);
+  // So does a helix whose slow third axis binds the path's acceleration
+  // (its own jerk stays a / tr).
+  const std::array<AxisDynamics, 3> slow_z{{ax[0], ax[1], {500, 10, 10, tr}}};
+  auto helix = make_arc_center(pt(0, 0, 0), pt(0, 0.5, 0.5), 3, 0, 1, 0, 0.25, false);
+  ASSERT_TRUE(helix);
+  const PathLimits h = path_limits(*helix, slow_z, SlopeProfile::trapez);
+  EXPECT_LT(h.a_acc_mm_s2, 79.0);
+  EXPECT_EQ(h.tr, tr);
 }
 
 TEST(PathLimits, ArcBigRadiusTakesSlowerPlaneAxis) {
