@@ -58,9 +58,9 @@
   }
   function drawTimeline(s) {
     if (runStart == null) runStart = s.t_s;
-    const early_ms = TIMELINE_MS - (performance.now() - timelineDrawn);
-    if (early_ms > 0) {  // drawn a moment ago: draw the latest snapshot later, so a run's last waits are never left out
-      timelineTimer ||= setTimeout(() => { timelineTimer = null; drawTimeline(hmi.state); }, early_ms);
+    const waitMs = TIMELINE_MS - (performance.now() - timelineDrawn);
+    if (waitMs > 0) {  // drawn a moment ago: draw the latest snapshot later, so a run's last waits are never left out
+      timelineTimer ||= setTimeout(() => { timelineTimer = null; drawTimeline(hmi.state); }, waitMs);
       return;
     }
     timelineDrawn = performance.now();
